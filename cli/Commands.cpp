@@ -1,0 +1,210 @@
+#include "cli/Commands.h"
+#include "exact/Exact_instantiation.h"
+#include "float/Double_instantiation.h"
+#include "scene/Input_error.h"
+#include "scene/Scene_reader.h"
+
+#include <CLI/CLI.hpp>
+#include <ostream>
+
+namespace clash4d {
+namespace {
+
+constexpr int CLASH4D_EXIT_INTERNAL = 4;
+using json = nlohmann::ordered_json;
+
+const char* const about =
+    "clash4d: exact collision detection by four-dimensional intersection testing\n"
+    "(Cameron 1990). Objects are CSG solids of linear half-spaces under piecewise-\n"
+    "constant velocities; two objects collide when the regularised intersection\n"
+    "of their space-time extrusions is non-empty, so touching is not a collision.\n"
+    "\nExit status: 0 no collision / valid, 1 collision, 2 invalid input or usage,\n"
+    "3 a resource limit was reached, 4 internal error.";
+
+// Reads a scene, or prints why not; returns the exit status (0 when read).
+int load(const std::string& file, Scene& scene, std::ostream& err)
+{
+  try {
+    scene = read_scene_file(file);
+    return 0;
+  } catch (const Input_error& e) {
+    err << e.format(file) << "\n";
+    return e.exit_code();
+  }
+}
+
+// Runs an instantiation, turning its failures into messages and statuses.
+template <class Run>
+int guarded(const std::string& file, std::ostream& err, Run run)
+{
+  try {
+    return run();
+  } catch (const Input_error& e) {
+    err << e.format(file) << "\n";
+    return e.exit_code();
+  } catch (const std::range_error& e) {
+    err << file << ": " << e.what() << " (the double instantiation cannot read this scene)\n";
+    return CLASH4D_EXIT_INVALID;
+  } catch (const std::bad_alloc&) {
+    err << file << ": out of memory\n";
+    return CLASH4D_EXIT_LIMIT;
+  } catch (const std::logic_error& e) {
+    err << file << ": " << e.what() << "\n";
+    return CLASH4D_EXIT_INTERNAL;
+  }
+}
+
+int validate(const std::vector<std::string>& files, std::ostream& out, std::ostream& err)
+{
+  int status = 0;
+  for (const auto& f : files) {
+    Scene scene;
+    int s = load(f, scene, err);
+    if (s == 0) out << f << ": valid\n";
+    else if (status == 0 || s == CLASH4D_EXIT_INVALID) status = s;
+  }
+  return status;
+}
+
+void print_extrusion_text(const json& report, std::ostream& out)
+{
+  out << "number: " << report["number"].get<std::string>() << "\n";
+  std::function<void(const json&, int)> tree = [&](const json& node, int depth) {
+    std::string pad(2 * depth, ' ');
+    if (node.contains("primitive")) {
+      out << pad << "primitive " << node["primitive"].get<std::string>() << ": intersection of\n";
+      for (const auto& h : node["halfspaces"]) out << pad << "  " << h["text"].get<std::string>() << "\n";
+    } else if (node.contains("time")) {
+      out << pad << "time slab:\n";
+      for (const auto& h : node["time"]) out << pad << "  " << h["text"].get<std::string>() << "\n";
+    } else {
+      const auto& item = *node.begin();
+      out << pad << node.begin().key() << " of\n";
+      for (const auto& c : item) tree(c, depth + 1);
+    }
+  };
+  for (const auto& span : report["spans"]) {
+    out << "sub-span " << span["t"][0].get<std::string>() << " <= t <= " << span["t"][1].get<std::string>() << "\n";
+    for (const auto& o : span["objects"]) {
+      const auto &v = o["velocity"], &c = o["offset"];
+      out << "  object " << o["name"].get<std::string>() << ": D(t) = (" << v[0].get<std::string>() << ", "
+          << v[1].get<std::string>() << ", " << v[2].get<std::string>() << ") t + (" << c[0].get<std::string>()
+          << ", " << c[1].get<std::string>() << ", " << c[2].get<std::string>() << ")\n";
+      tree(o["tree"], 2);
+    }
+  }
+}
+
+json stats_json(const Check_stats& s)
+{
+  return {{"pairs", s.pairs},
+          {"sub_spans", s.sub_spans},
+          {"sub_spans_pruned_by_sbounds", s.sub_spans_pruned},
+          {"sbound_passes", s.sbound_passes},
+          {"primitives", s.primitives},
+          {"primitives_pruned", s.primitives_pruned},
+          {"span_before", s.span_before},
+          {"span_after", s.span_after},
+          {"regions_per_depth", s.regions_per_depth},
+          {"conquers", s.conquers},
+          {"leaves_at_conquer", s.leaves_at_conquer},
+          {"max_leaves_at_conquer", s.max_leaves_at_conquer},
+          {"lines", s.lines},
+          {"points_classified", s.points_classified},
+          {"cells_tested", s.cells_tested},
+          {"seconds", {{"model", s.seconds_model}, {"sbounds", s.seconds_sbounds},
+                       {"divide_and_conquer", s.seconds_divide}, {"witness", s.seconds_witness}}}};
+}
+
+void print_check(const Check_answer& a, bool as_json, bool all_pairs, bool stats, double tolerance, std::ostream& out)
+{
+  if (as_json) {
+    json j = {{"collide", a.collide}, {"number", a.number}};
+    if (a.number == "double") j["tolerance"] = tolerance;
+    auto pair_json = [](const Pair_answer& p) {
+      return json{{"objects", {p.a, p.b}}, {"point", p.witness}, {"verified", p.witness_verified}};
+    };
+    if (a.collide) j["witness"] = pair_json(a.pairs.front());
+    if (all_pairs) {
+      j["pairs"] = json::array();
+      for (const auto& p : a.pairs) j["pairs"].push_back({{"objects", {p.a, p.b}}, {"witness", pair_json(p)}});
+    }
+    if (stats) j["stats"] = stats_json(a.stats);
+    out << j.dump(2) << "\n";
+    return;
+  }
+  if (!a.collide) out << "no collision (" << a.number << ")\n";
+  for (const auto& p : a.pairs) {
+    out << "collision: " << p.a << " and " << p.b << " (" << a.number << ")\n";
+    out << "  witness: x = " << p.witness[0] << ", y = " << p.witness[1] << ", z = " << p.witness[2]
+        << ", t = " << p.witness[3] << (p.witness_verified ? "" : "  [NOT verified: fails the strict check]") << "\n";
+  }
+  if (stats) {
+    out << "stats:\n";
+    json s = stats_json(a.stats);
+    for (const auto& item : s.items()) out << "  " << item.key() << ": " << item.value().dump() << "\n";
+  }
+}
+
+} // namespace
+
+int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
+{
+  CLI::App app(about, "clash4d");
+  app.require_subcommand(1);
+  app.failure_message(CLI::FailureMessage::help);
+
+  std::vector<std::string> validate_files;
+  auto* validate_cmd = app.add_subcommand("validate", "Check scene files against the scene format; exit 0 when all are valid, 2 otherwise.");
+  validate_cmd->add_option("SCENE", validate_files, "scene files")->required();
+
+  std::string file, number = "exact";
+  bool as_json = false, all_pairs = false, stats = false;
+  double tolerance = 0;
+  auto* extrude_cmd = app.add_subcommand("extrude", "Print every object's space-time half-space tree per constant-velocity time sub-span (paper §2-3).");
+  extrude_cmd->add_option("SCENE", file, "scene file")->required();
+  extrude_cmd->add_option("--number", number, "number type: exact (rationals) or double")->check(CLI::IsMember({"exact", "double"}));
+  extrude_cmd->add_flag("--json", as_json, "print JSON (numbers as exact strings)");
+
+  auto* check_cmd = app.add_subcommand("check", "Decide whether any pair of objects collides (regularised: touching is not a collision).");
+  check_cmd->add_option("SCENE", file, "scene file")->required();
+  check_cmd->add_option("--number", number, "number type: exact (default) or double")->check(CLI::IsMember({"exact", "double"}));
+  check_cmd->add_option("--tolerance", tolerance, "double only: treat |value| <= EPS as zero (default 0)")->check(CLI::NonNegativeNumber);
+  check_cmd->add_flag("--all-pairs", all_pairs, "list every colliding pair instead of stopping at the first");
+  check_cmd->add_flag("--json", as_json, "print one JSON object (spec: check)");
+  check_cmd->add_flag("--stats", stats, "report what each stage did");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) {   // --help
+      out << (app.get_subcommands().empty() ? app.help() : app.get_subcommands().front()->help());
+      return 0;
+    }
+    err << "clash4d: " << e.what() << "\n" << "run 'clash4d --help' or 'clash4d COMMAND --help'\n";
+    return CLASH4D_EXIT_INVALID;
+  }
+
+  if (validate_cmd->parsed()) return validate(validate_files, out, err);
+  if (check_cmd->parsed() && tolerance != 0 && number != "double") {
+    err << "clash4d: --tolerance applies to --number double only\n";
+    return CLASH4D_EXIT_INVALID;
+  }
+  Scene scene;
+  if (int s = load(file, scene, err)) return s;
+  if (extrude_cmd->parsed())
+    return guarded(file, err, [&] {
+      json report = number == "exact" ? extrude_exact(scene) : extrude_double(scene);
+      if (as_json) out << report.dump(2) << "\n"; else print_extrusion_text(report, out);
+      return 0;
+    });
+  return guarded(file, err, [&] {
+    Check_options options;
+    options.all_pairs = all_pairs;
+    Check_answer a = number == "exact" ? check_exact(scene, options) : check_double(scene, tolerance, options);
+    print_check(a, as_json, all_pairs, stats, tolerance, out);
+    return a.collide ? 1 : 0;
+  });
+}
+
+} // namespace clash4d

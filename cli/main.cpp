@@ -1,0 +1,7 @@
+#include "cli/Commands.h"
+#include <iostream>
+
+int main(int argc, char** argv)
+{
+  return clash4d::run_cli(argc, argv, std::cout, std::cerr);
+}

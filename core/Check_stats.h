@@ -1,0 +1,34 @@
+// What each stage of the cascade did (`clash4d check --stats`).
+#ifndef CLASH4D_CORE_CHECK_STATS_H
+#define CLASH4D_CORE_CHECK_STATS_H
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace clash4d {
+
+struct Check_stats {
+  // S-bounds (§4.3)
+  std::size_t pairs = 0, sub_spans = 0, sub_spans_pruned = 0;
+  std::size_t sbound_passes = 0;
+  std::size_t primitives = 0, primitives_pruned = 0;
+  std::string span_before, span_after;     // first examined sub-span, as text
+  // Divide-and-conquer (§4.1)
+  std::vector<std::size_t> regions_per_depth;
+  std::size_t conquers = 0, leaves_at_conquer = 0, max_leaves_at_conquer = 0;
+  // Generate-and-test (§4.2, Appendix A)
+  std::size_t lines = 0, points_classified = 0, cells_tested = 0;
+  // Time per stage, seconds
+  double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
+
+  void visit(std::size_t depth)
+  {
+    if (regions_per_depth.size() <= depth) regions_per_depth.resize(depth + 1, 0);
+    ++regions_per_depth[depth];
+  }
+};
+
+} // namespace clash4d
+
+#endif

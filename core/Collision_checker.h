@@ -1,0 +1,314 @@
+// The cascade of §4 for one pair of objects: S-bounds per constant-velocity
+// sub-span (§4.3), divide-and-conquer (§4.1) on the region chosen by
+// Appendix B's optimal fitting, generate-and-test (§4.2), and a witness
+// stepped off every hyperplane and checked against the scene.
+#ifndef CLASH4D_CORE_COLLISION_CHECKER_H
+#define CLASH4D_CORE_COLLISION_CHECKER_H
+
+#include "core/Divide_and_conquer.h"
+#include "core/Point_classifier.h"
+#include "core/S_bounds.h"
+#include "core/Scene_model.h"
+#include "scene/Input_error.h"
+#include <chrono>
+
+namespace clash4d {
+
+template <class FT>
+struct Pair_result {
+  int a = -1, b = -1;
+  bool collide = false;
+  Vector4<FT> witness{};          // (x, y, z, t), generic, strictly inside both
+  bool witness_verified = false;  // checked with strict signs against the scene
+};
+
+template <class K>
+class Collision_checker {
+public:
+  using FT = typename K::FT;
+  using H = Hyperplane4<FT>;
+  using Box3 = Box<FT, 3>;
+  using Box4 = Box<FT, 4>;
+  using V4 = Vector4<FT>;
+
+  static constexpr int max_sbound_passes = 16;
+
+  Collision_checker(const K& k, const Scene_model<K>& model, Check_stats& stats)
+    : k_(k), model_(model), stats_(stats), sb_(k)
+  {
+    auto start = std::chrono::steady_clock::now();
+    for (const auto& o : model_.objects) {
+      settled_.push_back(sb_.initial(o.csg));
+      stats_.sbound_passes += sb_.settle(o.csg, settled_.back(), max_sbound_passes);
+    }
+    stats_.seconds_sbounds += seconds_since(start);
+  }
+
+  Pair_result<FT> check_pair(int a, int b)
+  {
+    ++stats_.pairs;
+    Pair_result<FT> r;
+    r.a = a;
+    r.b = b;
+    for (const auto& span : model_.sub_spans({a, b})) {
+      ++stats_.sub_spans;
+      if (check_span(a, b, span, r)) return r;
+    }
+    return r;
+  }
+
+private:
+  const K& k_;
+  const Scene_model<K>& model_;
+  Check_stats& stats_;
+  S_bounds<K> sb_;
+  std::vector<typename S_bounds<K>::Bounds> settled_;
+
+  struct Moving {
+    const Object_model<FT>* object;
+    Vector3<FT> v, o;                        // D(t) = v t + o on the sub-span
+    typename S_bounds<K>::Bounds beta;
+  };
+
+  static double seconds_since(std::chrono::steady_clock::time_point s)
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - s).count();
+  }
+
+  Moving moving(int i, const Time_span<FT>& span) const
+  {
+    const Object_model<FT>& obj = model_.objects[i];
+    std::size_t seg = model_.segment_on(i, span);
+    return {&obj, obj.motion.velocity[seg], obj.motion.offset[seg], settled_[i]};
+  }
+
+  bool check_span(int a, int b, const Time_span<FT>& span, Pair_result<FT>& r)
+  {
+    auto start = std::chrono::steady_clock::now();
+    Moving A = moving(a, span), B = moving(b, span);
+    FT tl = span.lo, th = span.hi;
+    bool alive = four_d_bounds(A, B, tl, th);
+    count_pruned(A);
+    count_pruned(B);
+    if (stats_.span_before.empty()) {
+      stats_.span_before = "[" + k_.to_text(span.lo) + ", " + k_.to_text(span.hi) + "]";
+      stats_.span_after = alive ? "[" + k_.to_text(tl) + ", " + k_.to_text(th) + "]" : "empty";
+    }
+    stats_.seconds_sbounds += seconds_since(start);
+    if (!alive) { ++stats_.sub_spans_pruned; return false; }
+
+    start = std::chrono::steady_clock::now();
+    Vector3<FT> shear;
+    Box4 region = fitted_region(A, B, tl, th, shear);
+    std::vector<H> table;
+    add_planes(A, shear, table);
+    std::size_t offset_b = table.size();
+    add_planes(B, shear, table);
+    Formula::Builder builder;
+    std::size_t mark = builder.open();
+    std::size_t next = 0;
+    emit(A, 0, false, builder, next);
+    next = offset_b;
+    emit(B, 0, false, builder, next);
+    builder.close(Formula::Op::And, mark);
+    Formula formula = builder.finish();
+    Divide_and_conquer<K> dc(k_, table, stats_);
+    auto found = dc.search(region, formula);
+    stats_.seconds_divide += seconds_since(start);
+    if (!found) return false;
+
+    start = std::chrono::steady_clock::now();
+    r.collide = true;
+    r.witness = witness(*found, table, region, shear, A, B, span);
+    r.witness_verified = verify(r.witness, a, b);
+    stats_.seconds_witness += seconds_since(start);
+    if (K::is_exact && !r.witness_verified)
+      throw std::logic_error("internal error: the exact witness failed its check; please report this scene");
+    return true;
+  }
+
+  // §4.3.2: 3D Up/Down passes in each object, and the closed form of
+  // Appendix B at the root, repeated until nothing shrinks.
+  bool four_d_bounds(Moving& A, Moving& B, FT& tl, FT& th)
+  {
+    for (int pass = 0; pass < max_sbound_passes; ++pass) {
+      ++stats_.sbound_passes;
+      Box3 ra = A.beta[0], rb = B.beta[0];
+      FT l0 = tl, h0 = th;
+      typename S_bounds<K>::Moving_box ma{&A.beta[0], &A.v, &A.o}, mb{&B.beta[0], &B.v, &B.o};
+      if (!sb_.meet_moving(ma, mb, tl, th)) return false;
+      sb_.settle(A.object->csg, A.beta, max_sbound_passes);
+      sb_.settle(B.object->csg, B.beta, max_sbound_passes);
+      if (A.beta[0].empty || B.beta[0].empty) return false;
+      if (same_box(ra, A.beta[0]) && same_box(rb, B.beta[0]) && l0 == tl && h0 == th) break;
+    }
+    return true;
+  }
+
+  void count_pruned(const Moving& m)
+  {
+    const auto& nodes = m.object->csg.nodes;
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      if (nodes[i].op == Csg_node::Op::Primitive) {
+        ++stats_.primitives;
+        stats_.primitives_pruned += m.beta[i].empty;
+      }
+  }
+
+  // Appendix B, "optimal fitting": per axis, measure q in the frame of the
+  // object whose bound is narrower there (q' = q - w t with w its velocity).
+  Box4 fitted_region(const Moving& A, const Moving& B, const FT& tl, const FT& th, Vector3<FT>& shear) const
+  {
+    Box4 region;
+    const char* axis = "xyz";
+    for (int q = 0; q < 3; ++q) {
+      const Box3 &ba = A.beta[0], &bb = B.beta[0];
+      bool fa = ba.has_lo[q] && ba.has_hi[q], fb = bb.has_lo[q] && bb.has_hi[q];
+      if (!fa && !fb)
+        throw Input_error("", std::string("both objects are unbounded along ") + axis[q] +
+                              ": this version needs one of each pair bounded", CLASH4D_EXIT_LIMIT);
+      bool use_a = fa && (!fb || !(bb.hi[q] - bb.lo[q] < ba.hi[q] - ba.lo[q]));
+      const Moving& m = use_a ? A : B;
+      const Box3& bm = use_a ? ba : bb;
+      shear[q] = m.v[q];
+      region.set(q, bm.lo[q] + m.o[q], bm.hi[q] + m.o[q]);
+    }
+    region.set(3, tl, th);
+    return region;
+  }
+
+  // Every plane of every primitive, extruded (eq. 4) and sheared, followed by
+  // its complement: table[2i] is plane i, table[2i + 1] its complement.
+  void add_planes(const Moving& m, const Vector3<FT>& shear, std::vector<H>& table) const
+  {
+    for (const auto& p : m.object->csg.primitives)
+      for (const auto& plane : p.planes) {
+        H h = extrude(plane, m.v, m.o);
+        // x = x' + w t: n.x + e t + c = n.x' + (e + n.w) t + c.
+        h.n[3] += h.n[0] * shear[0] + h.n[1] * shear[1] + h.n[2] * shear[2];
+        table.push_back(h);
+        table.push_back(h.complement());
+      }
+  }
+
+  // The object's tree in negation normal form; pruned nodes (empty S-bound)
+  // are the null set. `next` walks the table in primitive order.
+  void emit(const Moving& m, int node, bool negated, Formula::Builder& b, std::size_t& next) const
+  {
+    const Csg_model<FT>& csg = m.object->csg;
+    const Csg_node& n = csg.nodes[node];
+    if (m.beta[node].empty) {
+      skip_planes(csg, node, next);
+      b.constant(negated);
+      return;
+    }
+    std::size_t mark = b.open();
+    switch (n.op) {
+      case Csg_node::Op::Primitive:
+        for (std::size_t i = 0; i < csg.primitives[n.primitive].planes.size(); ++i, next += 2)
+          b.leaf(static_cast<std::uint32_t>(negated ? next + 1 : next));
+        b.close(negated ? Formula::Op::Or : Formula::Op::And, mark);
+        return;
+      case Csg_node::Op::Union:
+      case Csg_node::Op::Intersection: {
+        for (int c : n.children) emit(m, c, negated, b, next);
+        bool conj = (n.op == Csg_node::Op::Intersection) != negated;
+        b.close(conj ? Formula::Op::And : Formula::Op::Or, mark);
+        return;
+      }
+      case Csg_node::Op::Difference:
+        // L - R1 - ... = L and not R1 and ...; its negation is not L or R1 or ...
+        for (std::size_t i = 0; i < n.children.size(); ++i) emit(m, n.children[i], i == 0 ? negated : !negated, b, next);
+        b.close(negated ? Formula::Op::Or : Formula::Op::And, mark);
+        return;
+    }
+  }
+
+  void skip_planes(const Csg_model<FT>& csg, int node, std::size_t& next) const
+  {
+    const Csg_node& n = csg.nodes[node];
+    if (n.op == Csg_node::Op::Primitive) { next += 2 * csg.primitives[n.primitive].planes.size(); return; }
+    for (int c : n.children) skip_planes(csg, c, next);
+  }
+
+  FT abs(const FT& x) const { return x < FT(0) ? -x : x; }
+
+  // Largest step (halved) along d from p that crosses no hyperplane not
+  // already through p.
+  FT safe_step(const V4& p, const V4& d, const std::vector<H>& planes) const
+  {
+    bool any = false;
+    FT best(1);
+    for (const H& h : planes) {
+      FT v = h.value(p), nd = dot(h.n, d);
+      if (k_.sign(v) == CGAL::ZERO || k_.sign(nd) == CGAL::ZERO) continue;
+      FT s = abs(v) / abs(nd);
+      if (!any || s < best) { best = s; any = true; }
+    }
+    return any ? best / FT(2) : FT(1);
+  }
+
+  // regularised-semantics.md item 3: step from the point into the open cell
+  // found inside, then off every remaining hyperplane, without crossing any.
+  V4 witness(const Inside_point<FT>& in, const std::vector<H>& table, const Box4& region,
+             const Vector3<FT>& shear, const Moving& A, const Moving& B, const Time_span<FT>& span) const
+  {
+    std::vector<H> planes = table;
+    for (int a = 0; a < 4; ++a) {
+      V4 e{FT(0), FT(0), FT(0), FT(0)};
+      e[a] = FT(-1);
+      planes.push_back({e, region.lo[a]});
+      e[a] = FT(1);
+      planes.push_back({e, -region.hi[a]});
+    }
+    V4 p = in.point;
+    if (!k_.is_zero(in.direction)) p = point_along(p, safe_step(p, in.direction, planes), in.direction);
+    for (int q = 0; q < 3; ++q) p[q] += shear[q] * p[3];
+    // Now in world coordinates: the objects' hyperplanes and the span's ends.
+    std::vector<H> world;
+    for (const Moving* m : {&A, &B})
+      for (const auto& prim : m->object->csg.primitives)
+        for (const auto& plane : prim.planes) world.push_back(extrude(plane, m->v, m->o));
+    world.push_back(time_at_least(span.lo));
+    world.push_back(time_at_most(span.hi));
+    return make_generic(p, world);
+  }
+
+  V4 make_generic(const V4& p, const std::vector<H>& planes) const
+  {
+    std::vector<const H*> through;
+    for (const H& h : planes)
+      if (k_.sign(h.value(p)) == CGAL::ZERO) through.push_back(&h);
+    if (through.empty()) return p;
+    // d = (1, j, j^2, j^3) is orthogonal to a given normal for at most three
+    // values of j, so some j <= 3 * |through| + 1 avoids all of them.
+    for (int j = 1;; ++j) {
+      V4 d{FT(1), FT(j), FT(j * j), FT(j * j * j)};
+      bool ok = true;
+      for (const H* h : through) ok = ok && k_.dot_sign(h->n, d) != CGAL::ZERO;
+      if (ok) return point_along(p, safe_step(p, d, planes), d);
+      if (j > 3 * static_cast<int>(through.size()) + 1) return p;   // only with a tolerance
+    }
+  }
+
+  // Strictly inside both objects at time t, with tL < t < tH, evaluated on the
+  // 3D solids moved back by D(t): independent of the extrusion.
+  bool verify(const V4& w, int a, int b) const
+  {
+    if (!(k_.less(model_.t_lo, w[3]) && k_.less(w[3], model_.t_hi))) return false;
+    for (int i : {a, b}) {
+      const Object_model<FT>& o = model_.objects[i];
+      Vector3<FT> d = o.motion.displacement(w[3]);
+      Vector3<FT> y{w[0] - d[0], w[1] - d[1], w[2] - d[2]};
+      if (classify_point(k_, o.csg, y) != Truth::True) return false;
+      for (const auto& prim : o.csg.primitives)
+        for (const auto& pl : prim.planes)
+          if (k_.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], y) == CGAL::ZERO) return false;
+    }
+    return true;
+  }
+};
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,87 @@
+// Divide-and-conquer over 4D boxes (§4.1): simplify the formula against the
+// region, decide at once when it folds to a constant, conquer with
+// generate-and-test when it is small (fewer leaves than kappa(d) = 2d + 6),
+// otherwise bisect every axis into 16 sub-regions. Depth-first, so memory is
+// proportional to the depth; stops at the first region found inside.
+#ifndef CLASH4D_CORE_DIVIDE_AND_CONQUER_H
+#define CLASH4D_CORE_DIVIDE_AND_CONQUER_H
+
+#include "core/Generate_and_test.h"
+
+namespace clash4d {
+
+template <class K>
+class Divide_and_conquer {
+public:
+  using FT = typename K::FT;
+  using H = Hyperplane4<FT>;
+  using Box4 = Box<FT, 4>;
+
+  // Past this depth the region is conquered whatever its size: a depth limit
+  // costs time, never a wrong answer.
+  static constexpr std::size_t max_depth = 8;
+
+  Divide_and_conquer(const K& k, const std::vector<H>& table, Check_stats& stats)
+    : k_(k), table_(table), stats_(stats), conquer_(k, table, stats) {}
+
+  static std::size_t kappa(std::size_t d) { return 2 * d + 6; }
+
+  std::optional<Inside_point<FT>> search(const Box4& region, const Formula& formula, std::size_t depth = 0)
+  {
+    stats_.visit(depth);
+    Formula f = formula.simplified([&](std::uint32_t h) { return status(table_[h], region); });
+    if (f.value() == Truth::False) return std::nullopt;
+    if (f.value() == Truth::True) return Inside_point<FT>{centre(region), zero()};
+    std::size_t leaves = f.leaf_count();
+    if (leaves < kappa(depth) || depth >= max_depth) {
+      ++stats_.conquers;
+      stats_.leaves_at_conquer += leaves;
+      stats_.max_leaves_at_conquer = std::max(stats_.max_leaves_at_conquer, leaves);
+      return conquer_.run(f, region);
+    }
+    // Sixteen sub-regions, earliest in time first (t is the slowest bit).
+    for (int child = 0; child < 16; ++child) {
+      Box4 sub = region;
+      for (int a = 0; a < 4; ++a) {
+        FT mid = (region.lo[a] + region.hi[a]) / FT(2);
+        bool upper = (child >> a) & 1;
+        (upper ? sub.lo[a] : sub.hi[a]) = mid;
+      }
+      if (auto found = search(sub, f, depth + 1)) return found;
+    }
+    return std::nullopt;
+  }
+
+  // Over a closed box, min h >= 0 means the leaf is empty there and max h <= 0
+  // that it is everything, up to the boundary that regularisation ignores
+  // (regularised-semantics.md, item 4).
+  Truth status(const H& h, const Box4& b) const
+  {
+    FT lo = h.c, hi = h.c;
+    for (int a = 0; a < 4; ++a) {
+      FT x = h.n[a] * b.lo[a], y = h.n[a] * b.hi[a];
+      if (x < y) { lo += x; hi += y; } else { lo += y; hi += x; }
+    }
+    if (k_.sign(lo) != CGAL::NEGATIVE) return Truth::False;
+    if (k_.sign(hi) != CGAL::POSITIVE) return Truth::True;
+    return Truth::Unknown;
+  }
+
+private:
+  const K& k_;
+  const std::vector<H>& table_;
+  Check_stats& stats_;
+  Generate_and_test<K> conquer_;
+
+  static Vector4<FT> zero() { return {FT(0), FT(0), FT(0), FT(0)}; }
+  static Vector4<FT> centre(const Box4& b)
+  {
+    Vector4<FT> c;
+    for (int a = 0; a < 4; ++a) c[a] = (b.lo[a] + b.hi[a]) / FT(2);
+    return c;
+  }
+};
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,195 @@
+// Generate-and-test (§4.2): every line shared by three hyperplanes with
+// independent normals, cut at every other hyperplane, and the midpoint of each
+// resulting edge inside the region classified with the regularised
+// neighbourhood test of Appendix A. Every open cell of the arrangement inside
+// a bounded region is a polytope with an edge, and the midpoint of that edge
+// sees the cell, so the search is complete.
+#ifndef CLASH4D_CORE_GENERATE_AND_TEST_H
+#define CLASH4D_CORE_GENERATE_AND_TEST_H
+
+#include "core/Box.h"
+#include "core/Check_stats.h"
+#include "core/Formula.h"
+#include "core/Hyperplane4.h"
+#include "core/Neighbourhood.h"
+#include <algorithm>
+#include <optional>
+#include <vector>
+
+namespace clash4d {
+
+// A point of the region and a direction into an open cell inside the formula
+// next to it (zero when the point is already inside an open cell).
+template <class FT>
+struct Inside_point {
+  Vector4<FT> point;
+  Vector4<FT> direction;
+};
+
+template <class K>
+class Generate_and_test {
+public:
+  using FT = typename K::FT;
+  using H = Hyperplane4<FT>;
+  using V = Vector4<FT>;
+
+  Generate_and_test(const K& k, const std::vector<H>& table, Check_stats& stats) : k_(k), table_(table), stats_(stats) {}
+
+  std::optional<Inside_point<FT>> run(const Formula& f, const Box<FT, 4>& region)
+  {
+    collect_planes(f, region);
+    std::size_t n = planes_.size();
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j)
+        for (std::size_t m = j + 1; m < n; ++m)
+          if (auto found = on_line(f, i, j, m)) return found;
+    return std::nullopt;
+  }
+
+private:
+  const K& k_;
+  const std::vector<H>& table_;
+  Check_stats& stats_;
+  std::vector<H> planes_;                 // distinct hyperplanes, region faces last
+  std::size_t first_face_ = 0;
+  std::vector<std::pair<std::size_t, int>> leaf_plane_;   // table index -> (plane, orientation)
+  std::vector<FT> at_base_, along_;       // per plane: value at the base point, slope along l
+  std::vector<int> sign_;                 // per plane at the current test point: -1, 0, +1
+
+  // Index of h among planes_ (appending it if new) and its orientation.
+  std::pair<std::size_t, int> intern(const H& h)
+  {
+    for (std::size_t p = 0; p < planes_.size(); ++p)
+      if (int o = proportional(h, planes_[p])) return {p, o};
+    planes_.push_back(h);
+    return {planes_.size() - 1, 1};
+  }
+
+  // +1 when h = lambda g with lambda > 0, -1 when lambda < 0, 0 otherwise.
+  int proportional(const H& h, const H& g) const
+  {
+    int j = 0;
+    while (j < 4 && k_.sign(g.n[j]) == CGAL::ZERO) ++j;
+    if (j == 4 || k_.sign(h.n[j]) == CGAL::ZERO) return 0;
+    for (int i = 0; i < 4; ++i)
+      if (k_.sign(h.n[i] * g.n[j] - g.n[i] * h.n[j]) != CGAL::ZERO) return 0;
+    if (k_.sign(h.c * g.n[j] - g.c * h.n[j]) != CGAL::ZERO) return 0;
+    return k_.sign(h.n[j]) == k_.sign(g.n[j]) ? 1 : -1;
+  }
+
+  void collect_planes(const Formula& f, const Box<FT, 4>& region)
+  {
+    planes_.clear();
+    leaf_plane_.assign(table_.size(), {0, 0});
+    for (const auto& t : f.code())
+      if (t.op == Formula::Op::Leaf && leaf_plane_[t.arg].second == 0) leaf_plane_[t.arg] = intern(table_[t.arg]);
+    // Region faces, inside <= 0; they may coincide with leaves, so intern too.
+    first_face_ = planes_.size();
+    face_plane_.clear();
+    for (int a = 0; a < 4; ++a) {
+      V e{FT(0), FT(0), FT(0), FT(0)};
+      e[a] = FT(-1);
+      face_plane_.push_back(intern({e, region.lo[a]}));
+      e[a] = FT(1);
+      face_plane_.push_back(intern({e, -region.hi[a]}));
+    }
+    at_base_.resize(planes_.size());
+    along_.resize(planes_.size());
+    sign_.resize(planes_.size());
+  }
+  std::vector<std::pair<std::size_t, int>> face_plane_;
+
+  Truth leaf_truth(std::uint32_t h) const
+  {
+    int s = sign_[leaf_plane_[h].first] * leaf_plane_[h].second;
+    return s < 0 ? Truth::True : s > 0 ? Truth::False : Truth::Unknown;
+  }
+  bool inside_region() const
+  {
+    for (const auto& fp : face_plane_)
+      if (sign_[fp.first] * fp.second >= 0) return false;
+    return true;
+  }
+
+  std::optional<Inside_point<FT>> on_line(const Formula& f, std::size_t i, std::size_t j, std::size_t m)
+  {
+    const H &a = planes_[i], &b = planes_[j], &c = planes_[m];
+    V l = generalised_cross(a.n, b.n, c.n);
+    if (k_.is_zero(l)) return std::nullopt;
+    ++stats_.lines;
+    V base = base_point(a, b, c, l);
+    for (std::size_t p = 0; p < planes_.size(); ++p) {
+      at_base_[p] = planes_[p].value(base);
+      along_[p] = dot(planes_[p].n, l);
+    }
+    // The parameter range of the line inside the region.
+    bool has_lo = false, has_hi = false;
+    FT s_lo(0), s_hi(0);
+    for (const auto& fp : face_plane_) {
+      std::size_t p = fp.first;
+      int e = k_.sign(along_[p]) * fp.second;
+      if (e == 0) {
+        if (k_.sign(at_base_[p]) * fp.second > 0) return std::nullopt;
+        continue;
+      }
+      FT cut = -at_base_[p] / along_[p];
+      if (e > 0) { if (!has_hi || cut < s_hi) s_hi = cut; has_hi = true; }
+      else { if (!has_lo || s_lo < cut) s_lo = cut; has_lo = true; }
+    }
+    if (!has_lo || !has_hi || k_.compare(s_hi, s_lo) != CGAL::POSITIVE) return std::nullopt;
+    std::vector<FT> cuts{s_lo, s_hi};
+    for (std::size_t p = 0; p < planes_.size(); ++p) {
+      if (k_.sign(along_[p]) == CGAL::ZERO) continue;
+      FT cut = -at_base_[p] / along_[p];
+      if (k_.less(s_lo, cut) && k_.less(cut, s_hi)) cuts.push_back(cut);
+    }
+    std::sort(cuts.begin(), cuts.end());
+    for (std::size_t q = 0; q + 1 < cuts.size(); ++q) {
+      if (k_.compare(cuts[q + 1], cuts[q]) == CGAL::ZERO) continue;
+      FT mid = (cuts[q] + cuts[q + 1]) / FT(2);
+      if (auto found = classify(f, base, l, mid)) return found;
+    }
+    return std::nullopt;
+  }
+
+  // The point on a, b and c orthogonal to l: a sum of the dual vectors
+  // g_a = l x b x c (orthogonal to b, c and l), scaled to meet a.
+  V base_point(const H& a, const H& b, const H& c, const V& l) const
+  {
+    const H* hs[3] = {&a, &b, &c};
+    V p{FT(0), FT(0), FT(0), FT(0)};
+    for (int i = 0; i < 3; ++i) {
+      V g = generalised_cross(hs[(i + 1) % 3]->n, hs[(i + 2) % 3]->n, l);
+      FT s = -hs[i]->c / dot(hs[i]->n, g);
+      p = point_along(p, s, g);
+    }
+    return p;
+  }
+
+  std::optional<Inside_point<FT>> classify(const Formula& f, const V& base, const V& l, const FT& s)
+  {
+    ++stats_.points_classified;
+    std::vector<std::size_t> through;
+    for (std::size_t p = 0; p < planes_.size(); ++p) {
+      sign_[p] = static_cast<int>(k_.sign(at_base_[p] + s * along_[p]));
+      if (sign_[p] == 0) through.push_back(p);
+    }
+    // Cheap rejection: false whatever the planes through the point do.
+    if (f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) == Truth::False) return std::nullopt;
+    std::vector<V> normals;
+    for (std::size_t p : through) normals.push_back(planes_[p].n);
+    Neighbourhood<K> hood(k_);
+    auto inside = [&](const std::vector<int>& signs) {
+      for (std::size_t i = 0; i < through.size(); ++i) sign_[through[i]] = signs[i];
+      return inside_region() && f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) == Truth::True;
+    };
+    std::optional<V> d = hood.find_inside(l, normals, inside);
+    stats_.cells_tested += hood.cells_tested();
+    if (!d) return std::nullopt;
+    return Inside_point<FT>{point_along(base, s, l), *d};
+  }
+};
+
+} // namespace clash4d
+
+#endif

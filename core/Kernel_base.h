@@ -1,0 +1,55 @@
+// What every kernel provides, written once. A kernel bundles a number type
+// with its sign decision; the stages ask the kernel for every sign, never the
+// number type directly, so a filtered kernel (interval arithmetic with an
+// exact fallback, as CGAL's Filtered_predicate) can override the predicates
+// below without touching a stage.
+#ifndef CLASH4D_CORE_KERNEL_BASE_H
+#define CLASH4D_CORE_KERNEL_BASE_H
+
+#include "core/kernel_ft4.h"
+#include <CGAL/enum.h>
+
+namespace clash4d {
+
+template <class Derived, class FT_>
+class Kernel_base {
+public:
+  using FT = FT_;
+
+  const Derived& derived() const { return static_cast<const Derived&>(*this); }
+
+  CGAL::Sign compare(const FT& a, const FT& b) const { return derived().sign(a - b); }
+  bool less(const FT& a, const FT& b) const { return compare(a, b) == CGAL::NEGATIVE; }
+
+  // Sign of n.p + c: which side of a hyperplane a point lies on.
+  template <std::size_t N>
+  CGAL::Sign side(const std::array<FT, N>& n, const FT& c, const std::array<FT, N>& p) const
+  {
+    return derived().sign(dot(n, p) + c);
+  }
+
+  // Sign of a dot product: orientation of a direction against a normal.
+  template <std::size_t N>
+  CGAL::Sign dot_sign(const std::array<FT, N>& a, const std::array<FT, N>& b) const
+  {
+    return derived().sign(dot(a, b));
+  }
+
+  CGAL::Sign orientation4(const Vector4<FT>& a, const Vector4<FT>& b, const Vector4<FT>& c, const Vector4<FT>& d) const
+  {
+    return derived().sign(determinant4(a, b, c, d));
+  }
+
+  // Zero vector test, as a predicate so tolerances apply consistently.
+  template <std::size_t N>
+  bool is_zero(const std::array<FT, N>& v) const
+  {
+    for (const FT& x : v)
+      if (derived().sign(x) != CGAL::ZERO) return false;
+    return true;
+  }
+};
+
+} // namespace clash4d
+
+#endif

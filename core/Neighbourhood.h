@@ -1,0 +1,191 @@
+// Regularised neighbourhood classification of a point on a line in space-time
+// (Appendix A). All hyperplanes through the point contain the line direction l,
+// so the neighbourhood is a central arrangement in the 3D quotient by l. We
+// enumerate one direction inside every open cell of that arrangement and ask
+// the caller whether the formula holds there.
+//
+// Square-root free: Appendix A's orthonormal basis and Gram-Schmidt are
+// replaced by generalised cross products, which span the same subspaces.
+//  - no plane through the point: the point itself is generic (step 0 of A);
+//  - three planes with independent normals: the 8 sign vectors (A.2);
+//  - all normals parallel: the two directions +-n (A.2, n <= 2 in effect);
+//  - otherwise every cell is a cone with an extreme ray r = l x n_i x n_j
+//    (A.4 and A.5: "crawling along all possible edges leading from that
+//    vertex"); around r the planes through r cut sectors, and r + eps * s with
+//    s the sum of two consecutive sector rays lies inside one cell. Every cell
+//    has an extreme ray, so every cell is visited (A.3's counting shortcut is
+//    subsumed: it is this enumeration for coplanar normals).
+#ifndef CLASH4D_CORE_NEIGHBOURHOOD_H
+#define CLASH4D_CORE_NEIGHBOURHOOD_H
+
+#include "core/kernel_ft4.h"
+#include <algorithm>
+#include <optional>
+#include <vector>
+
+namespace clash4d {
+
+template <class K>
+class Neighbourhood {
+public:
+  using FT = typename K::FT;
+  using V = Vector4<FT>;
+
+  explicit Neighbourhood(const K& k) : k_(k) {}
+
+  // normals: the planes through the point. inside(signs) says whether the
+  // formula holds in the open cell where plane i has sign signs[i] (+1/-1).
+  // Returns a direction into the first cell found inside, or nothing.
+  template <class Inside>
+  std::optional<V> find_inside(const V& l, const std::vector<V>& normals, Inside inside)
+  {
+    std::size_t n = normals.size();
+    std::vector<int> signs(n);
+    if (n == 0) {
+      if (inside(signs)) return V{FT(0), FT(0), FT(0), FT(0)};
+      return std::nullopt;
+    }
+    if (n == 3 && k_.orientation4(l, normals[0], normals[1], normals[2]) != CGAL::ZERO)
+      return three_independent(l, normals, inside);
+    if (all_parallel(normals)) {
+      for (int s : {1, -1}) {
+        V d = scaled(normals[0], s);
+        if (test(normals, d, signs, inside)) return d;
+      }
+      return std::nullopt;
+    }
+    return around_extreme_rays(l, normals, inside);
+  }
+
+  std::size_t cells_tested() const { return tested_; }
+
+private:
+  const K& k_;
+  std::size_t tested_ = 0;
+
+  static V scaled(const V& v, int s) { return {v[0] * FT(s), v[1] * FT(s), v[2] * FT(s), v[3] * FT(s)}; }
+  static V sum(const V& a, const V& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]}; }
+
+  template <class Inside>
+  bool test(const std::vector<V>& normals, const V& d, std::vector<int>& signs, Inside& inside)
+  {
+    for (std::size_t i = 0; i < normals.size(); ++i) signs[i] = static_cast<int>(k_.dot_sign(normals[i], d));
+    ++tested_;
+    return inside(signs);
+  }
+
+  template <class Inside>
+  std::optional<V> three_independent(const V& l, const std::vector<V>& N, Inside& inside)
+  {
+    // g_i is orthogonal to l and the other two normals, oriented so n_i.g_i > 0:
+    // sum sigma_i g_i has sign sigma_i against n_i.
+    V g[3];
+    for (int i = 0; i < 3; ++i) {
+      g[i] = generalised_cross(l, N[(i + 1) % 3], N[(i + 2) % 3]);
+      if (k_.dot_sign(N[i], g[i]) == CGAL::NEGATIVE) g[i] = scaled(g[i], -1);
+    }
+    std::vector<int> signs(3);
+    for (int mask = 0; mask < 8; ++mask) {
+      for (int i = 0; i < 3; ++i) signs[i] = (mask >> i & 1) ? -1 : 1;
+      ++tested_;
+      if (!inside(signs)) continue;
+      V d = scaled(g[0], signs[0]);
+      d = sum(d, scaled(g[1], signs[1]));
+      return sum(d, scaled(g[2], signs[2]));
+    }
+    return std::nullopt;
+  }
+
+  bool parallel(const V& a, const V& b) const
+  {
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        if (k_.sign(minor2(a, b, i, j)) != CGAL::ZERO) return false;
+    return true;
+  }
+  bool same_direction(const V& a, const V& b) const { return parallel(a, b) && k_.dot_sign(a, b) == CGAL::POSITIVE; }
+  bool all_parallel(const std::vector<V>& N) const
+  {
+    for (const V& v : N)
+      if (!parallel(N[0], v)) return false;
+    return true;
+  }
+
+  template <class Inside>
+  std::optional<V> around_extreme_rays(const V& l, const std::vector<V>& N, Inside& inside)
+  {
+    std::vector<V> rays;
+    for (std::size_t i = 0; i < N.size(); ++i)
+      for (std::size_t j = i + 1; j < N.size(); ++j) {
+        V r = generalised_cross(l, N[i], N[j]);
+        if (k_.is_zero(r)) continue;
+        for (int s : {1, -1}) {
+          V rs = scaled(r, s);
+          bool seen = false;
+          for (const V& q : rays) seen = seen || same_direction(q, rs);
+          if (!seen) rays.push_back(rs);
+        }
+      }
+    std::vector<int> signs(N.size());
+    for (const V& r : rays) {
+      std::vector<V> sector = sector_rays(l, r, N);
+      for (std::size_t a = 0; a < sector.size(); ++a) {
+        V s = sum(sector[a], sector[(a + 1) % sector.size()]);
+        V d = sum(r, scaled_by(s, epsilon(r, s, N)));
+        if (test(N, d, signs, inside)) return d;
+      }
+    }
+    return std::nullopt;
+  }
+
+  // The rays in the planes through r, orthogonal to r (and l), sorted by angle
+  // around r, duplicates removed.
+  std::vector<V> sector_rays(const V& l, const V& r, const std::vector<V>& N) const
+  {
+    std::vector<V> out;
+    for (const V& n : N) {
+      if (k_.dot_sign(n, r) != CGAL::ZERO) continue;
+      V rho = generalised_cross(l, r, n);
+      for (int s : {1, -1}) {
+        V v = scaled(rho, s);
+        bool seen = false;
+        for (const V& q : out) seen = seen || same_direction(q, v);
+        if (!seen) out.push_back(v);
+      }
+    }
+    const V ref = out[0];
+    auto angle_class = [&](const V& a) {
+      CGAL::Sign o = k_.orientation4(l, r, ref, a);
+      if (o == CGAL::POSITIVE) return 1;
+      if (o == CGAL::NEGATIVE) return 3;
+      return k_.dot_sign(ref, a) == CGAL::POSITIVE ? 0 : 2;
+    };
+    std::sort(out.begin(), out.end(), [&](const V& a, const V& b) {
+      int ca = angle_class(a), cb = angle_class(b);
+      if (ca != cb) return ca < cb;
+      return k_.orientation4(l, r, a, b) == CGAL::POSITIVE;
+    });
+    return out;
+  }
+
+  V scaled_by(const V& v, const FT& e) const { return {v[0] * e, v[1] * e, v[2] * e, v[3] * e}; }
+
+  // Small enough that no plane off r changes sign between r and r + eps s.
+  FT epsilon(const V& r, const V& s, const std::vector<V>& N) const
+  {
+    bool any = false;
+    FT best(1);
+    for (const V& n : N) {
+      FT nr = dot(n, r), ns = dot(n, s);
+      if (k_.sign(nr) == CGAL::ZERO || k_.sign(ns) == CGAL::ZERO) continue;
+      FT q = nr / ns;
+      if (q < FT(0)) q = -q;
+      if (!any || q < best) { best = q; any = true; }
+    }
+    return any ? best / FT(2) : FT(1);
+  }
+};
+
+} // namespace clash4d
+
+#endif

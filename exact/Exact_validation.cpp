@@ -1,0 +1,166 @@
+#include "exact/Exact_validation.h"
+
+#include <CGAL/Cartesian.h>
+#include <CGAL/QP_functions.h>
+#include <CGAL/QP_models.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/convex_hull_3.h>
+#include <map>
+#include <stdexcept>
+
+namespace clash4d {
+namespace {
+
+using Exact_geometry = CGAL::Cartesian<Rational>;
+using Point_2 = Exact_geometry::Point_2;
+using Point_3 = Exact_geometry::Point_3;
+using Program = CGAL::Quadratic_program<Rational>;
+using Solution = CGAL::Quadratic_program_solution<Rational>;
+
+Point_3 to_point(const Rational3& p) { return Point_3(p[0], p[1], p[2]); }
+
+Rational det3(const Rational3& a, const Rational3& b, const Rational3& c)
+{
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+         a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+// Linear program over (x, y, z, s): a.x + d + w*s <= 0 for each half-space.
+Program make_program(const std::vector<Rational4>& planes, const Rational& w)
+{
+  Program lp(CGAL::SMALLER, false, 0, false, 0);
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    int row = static_cast<int>(i);
+    for (int k = 0; k < 3; ++k) lp.set_a(k, row, planes[i][k]);
+    lp.set_a(3, row, w);
+    lp.set_b(row, -planes[i][3]);
+  }
+  lp.set_l(3, true, 0);
+  lp.set_u(3, true, 1);
+  return lp;
+}
+
+} // namespace
+
+std::string prism_base_problem(const std::vector<std::array<Rational, 2>>& base)
+{
+  std::size_t n = base.size();
+  if (n < 3) return "polygon needs at least 3 vertices, found " + std::to_string(n);
+  bool all_right = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    Point_2 p(base[i][0], base[i][1]), q(base[(i + 1) % n][0], base[(i + 1) % n][1]);
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == i || j == (i + 1) % n) continue;
+      CGAL::Orientation o = CGAL::orientation(p, q, Point_2(base[j][0], base[j][1]));
+      if (o == CGAL::COLLINEAR)
+        return "polygon is not strictly convex: vertices " + std::to_string(i) + ", " + std::to_string((i + 1) % n) +
+               " and " + std::to_string(j) + " are collinear";
+      if (o == CGAL::LEFT_TURN) all_right = false;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    Point_2 p(base[i][0], base[i][1]), q(base[(i + 1) % n][0], base[(i + 1) % n][1]);
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == i || j == (i + 1) % n) continue;
+      if (CGAL::orientation(p, q, Point_2(base[j][0], base[j][1])) != CGAL::LEFT_TURN)
+        return all_right ? "polygon is clockwise; list the vertices counter-clockwise"
+                         : "polygon is not strictly convex";
+    }
+  }
+  return "";
+}
+
+std::vector<std::array<int, 3>> hull_facets(const std::vector<Rational3>& points)
+{
+  std::vector<Point_3> pts;
+  for (const auto& p : points) pts.push_back(to_point(p));
+  bool solid = false;
+  for (std::size_t i = 1; i < pts.size() && !solid; ++i)
+    for (std::size_t j = i + 1; j < pts.size() && !solid; ++j)
+      if (!CGAL::collinear(pts[0], pts[i], pts[j]))
+        for (std::size_t k = j + 1; k < pts.size() && !solid; ++k)
+          solid = CGAL::orientation(pts[0], pts[i], pts[j], pts[k]) != CGAL::COPLANAR;
+  if (!solid) throw std::invalid_argument("all points lie in one plane: the hull has no interior");
+
+  std::map<Point_3, int> index;
+  for (std::size_t i = 0; i < pts.size(); ++i) index.emplace(pts[i], static_cast<int>(i));
+  CGAL::Surface_mesh<Point_3> mesh;
+  CGAL::convex_hull_3(pts.begin(), pts.end(), mesh);
+  std::vector<std::array<int, 3>> facets;
+  for (auto f : mesh.faces()) {
+    std::array<int, 3> t;
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      if (k < 3) t[k] = index.at(mesh.point(v));
+      ++k;
+    }
+    // One triple per facet plane: triangles of the same facet repeat it.
+    bool repeated = false;
+    for (const auto& g : facets) {
+      repeated = true;
+      for (int i = 0; i < 3 && repeated; ++i)
+        repeated = CGAL::orientation(pts[g[0]], pts[g[1]], pts[g[2]], pts[t[i]]) == CGAL::COPLANAR;
+      if (repeated) break;
+    }
+    if (!repeated) facets.push_back(t);
+  }
+  return facets;
+}
+
+std::string convex_problem(const std::vector<Rational4>& planes)
+{
+  // Interior: maximise s with a.x + d + s <= 0, 0 <= s <= 1 (no square roots:
+  // the slack is not normalised, which is fine for a sign decision).
+  Program interior = make_program(planes, Rational(1));
+  interior.set_c(3, Rational(-1));
+  Solution sol = CGAL::solve_linear_program(interior, Rational());
+  if (sol.is_infeasible()) return "the half-spaces have no common point: the convex solid is empty";
+  if (!CGAL::is_negative(sol.objective_value()))
+    return "the convex solid has no interior (it is flat)";
+  // Bounded: every coordinate is bounded above and below.
+  const char* axis = "xyz";
+  for (int k = 0; k < 3; ++k)
+    for (int sign : {1, -1}) {
+      Program extent = make_program(planes, Rational(0));
+      extent.set_u(3, true, 0);
+      extent.set_c(k, Rational(sign));
+      if (CGAL::solve_linear_program(extent, Rational()).is_unbounded())
+        return std::string("the convex solid is unbounded in the ") + (sign > 0 ? "-" : "+") + axis[k] + " direction";
+    }
+  return "";
+}
+
+std::vector<std::array<int, 3>> convex_vertex_triples(const std::vector<Rational4>& planes)
+{
+  std::vector<std::array<int, 3>> out;
+  std::vector<Rational3> seen;
+  int m = static_cast<int>(planes.size());
+  auto normal = [&](int i) { return Rational3{planes[i][0], planes[i][1], planes[i][2]}; };
+  for (int i = 0; i < m; ++i)
+    for (int j = i + 1; j < m; ++j)
+      for (int k = j + 1; k < m; ++k) {
+        Rational3 a = normal(i), b = normal(j), c = normal(k);
+        Rational det = det3(a, b, c);
+        if (CGAL::is_zero(det)) continue;
+        // Cramer's rule for a.x = -d on the three planes.
+        Rational3 rhs{-planes[i][3], -planes[j][3], -planes[k][3]};
+        Rational3 p;
+        for (int axis = 0; axis < 3; ++axis) {
+          Rational3 ca = a, cb = b, cc = c;
+          ca[axis] = rhs[0]; cb[axis] = rhs[1]; cc[axis] = rhs[2];
+          p[axis] = det3(ca, cb, cc) / det;
+        }
+        bool inside = true;
+        for (int h = 0; h < m && inside; ++h)
+          inside = !CGAL::is_positive(planes[h][0] * p[0] + planes[h][1] * p[1] + planes[h][2] * p[2] + planes[h][3]);
+        if (!inside) continue;
+        bool repeated = false;
+        for (const auto& q : seen) repeated = repeated || q == p;
+        if (repeated) continue;
+        seen.push_back(p);
+        out.push_back({i, j, k});
+      }
+  return out;
+}
+
+} // namespace clash4d

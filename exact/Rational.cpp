@@ -1,0 +1,29 @@
+#include "exact/Rational.h"
+
+#include <mpfr.h>
+
+namespace clash4d {
+
+std::string to_string(const Rational& q)
+{
+  // Gmpq is always canonical (lowest terms, positive denominator), and GMP
+  // prints "p" when q = 1 and "p/q" otherwise: exactly the spec's form.
+  char* text = mpq_get_str(nullptr, 10, q.mpq());
+  std::string out(text);
+  void (*free_fn)(void*, size_t);
+  mp_get_memory_functions(nullptr, nullptr, &free_fn);
+  free_fn(text, out.size() + 1);
+  return out;
+}
+
+double round_to_nearest(const Rational& q)
+{
+  mpfr_t r;
+  mpfr_init2(r, 53);
+  mpfr_set_q(r, q.mpq(), MPFR_RNDN);
+  double d = mpfr_get_d(r, MPFR_RNDN);
+  mpfr_clear(r);
+  return d;
+}
+
+} // namespace clash4d

@@ -1,0 +1,25 @@
+// The exact number type of the toolkit and its text conversions.
+#ifndef CLASH4D_EXACT_RATIONAL_H
+#define CLASH4D_EXACT_RATIONAL_H
+
+#include <CGAL/Gmpq.h>
+#include <string>
+
+namespace clash4d {
+
+// CGAL's exact rational over GMP. CGAL::Exact_rational is Gmpq or mpq_class
+// depending on how CGAL was configured; we pin Gmpq so the exact type does not
+// change with the build and carries no expression templates into generic code.
+using Rational = CGAL::Gmpq;
+
+// "p/q" in lowest terms, or "p" when q = 1 (the spec's output form).
+std::string to_string(const Rational& q);
+
+// The double nearest to q (ties to even), via MPFR: Gmpq's own to_double
+// truncates, which would make the double instantiation read a different scene
+// than "the nearest double" the spec promises. Returns +-inf on overflow.
+double round_to_nearest(const Rational& q);
+
+} // namespace clash4d
+
+#endif

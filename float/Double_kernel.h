@@ -1,0 +1,36 @@
+// The double kernel: the same stages on IEEE doubles, with plain comparisons
+// against zero, or |value| <= tolerance treated as zero the way float
+// collision code is usually written.
+#ifndef CLASH4D_FLOAT_DOUBLE_KERNEL_H
+#define CLASH4D_FLOAT_DOUBLE_KERNEL_H
+
+#include "core/Kernel_base.h"
+#include "exact/Rational.h"
+#include <string>
+
+namespace clash4d {
+
+class Double_kernel : public Kernel_base<Double_kernel, double> {
+public:
+  explicit Double_kernel(double tolerance = 0) : tolerance_(tolerance) {}
+  static constexpr const char* name() { return "double"; }
+  static constexpr bool is_exact = false;
+  double tolerance() const { return tolerance_; }
+  CGAL::Sign sign(double x) const
+  {
+    return x > tolerance_ ? CGAL::POSITIVE : (x < -tolerance_ ? CGAL::NEGATIVE : CGAL::ZERO);
+  }
+  // The scene's rational rounded to the nearest double; a number beyond the
+  // double range cannot be read by this instantiation (std::range_error).
+  double from_rational(const Rational& q) const;
+  Rational to_rational(double x) const { return Rational(x); }
+  // The shortest decimal that reads back to the same double (spec: output).
+  std::string to_text(double x) const;
+
+private:
+  double tolerance_;
+};
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,32 @@
+// The one exception type for bad input: where, what, and which exit status.
+#ifndef CLASH4D_SCENE_INPUT_ERROR_H
+#define CLASH4D_SCENE_INPUT_ERROR_H
+
+#include <stdexcept>
+#include <string>
+
+namespace clash4d {
+
+// Exit status 2 for invalid input, 3 for a resource limit (spec: check).
+constexpr int CLASH4D_EXIT_INVALID = 2;
+constexpr int CLASH4D_EXIT_LIMIT = 3;
+
+class Input_error : public std::runtime_error {
+public:
+  Input_error(std::string place, const std::string& message, int exit_code = CLASH4D_EXIT_INVALID)
+    : std::runtime_error(message), place_(std::move(place)), exit_code_(exit_code) {}
+  const std::string& place() const { return place_; }
+  int exit_code() const { return exit_code_; }
+  // "file: place: message", the form every command prints.
+  std::string format(const std::string& file) const
+  {
+    return file + ": " + (place_.empty() ? "" : place_ + ": ") + what();
+  }
+private:
+  std::string place_;
+  int exit_code_;
+};
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,144 @@
+#include "scene/Json_reader.h"
+#include "scene/Input_error.h"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace clash4d {
+
+const char* kind_name(Json_value::Kind k)
+{
+  switch (k) {
+    case Json_value::Kind::Null: return "null";
+    case Json_value::Kind::Boolean: return "a boolean";
+    case Json_value::Kind::Number: return "a number";
+    case Json_value::Kind::String: return "a string";
+    case Json_value::Kind::Array: return "an array";
+    case Json_value::Kind::Object: return "an object";
+  }
+  return "?";
+}
+
+namespace {
+
+std::string line_column(const std::string& text, std::size_t byte)
+{
+  std::size_t line = 1, col = 1;
+  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') { ++line; col = 1; } else ++col;
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(col);
+}
+
+// Builds a Json_value tree; open containers live on an explicit stack.
+class Builder : public nlohmann::json_sax<nlohmann::json> {
+public:
+  explicit Builder(const std::string& text) : text_(text) {}
+  Json_value result;
+  std::string error, place;
+  int exit_code = CLASH4D_EXIT_INVALID;
+
+  bool null() override { return add(Json_value{}); }
+  bool boolean(bool b) override { Json_value v; v.kind = Json_value::Kind::Boolean; v.boolean = b; return add(std::move(v)); }
+  bool number_integer(number_integer_t n) override { return number(std::to_string(n)); }
+  bool number_unsigned(number_unsigned_t n) override { return number(std::to_string(n)); }
+  // The text s, never the double: numbers are read exactly later.
+  bool number_float(number_float_t, const string_t& s) override { return number(s); }
+  bool string(string_t& s) override { Json_value v; v.kind = Json_value::Kind::String; v.text = s; return add(std::move(v)); }
+  bool binary(binary_t&) override { return fail("binary values are not JSON"); }
+  bool start_object(std::size_t) override { return open(Json_value::Kind::Object); }
+  bool key(string_t& k) override
+  {
+    Json_value& obj = stack_.back();
+    for (const auto& m : obj.members)
+      if (m.first == k) return fail("duplicate key \"" + k + "\"");
+    keys_.back() = k;
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(Json_value::Kind::Array); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t position, const std::string& token, const nlohmann::detail::exception& ex) override
+  {
+    std::string what = ex.what();
+    // nlohmann says "number overflow" for JSON numbers beyond double's range;
+    // they are exact rationals to us, but the reader cannot hold their text.
+    if (what.find("number overflow") != std::string::npos)
+      return fail("number " + token + " is too large for a JSON number here; write it as a string, e.g. \"" + token + "\"", position);
+    std::size_t colon = what.find("syntax error");
+    return fail(colon == std::string::npos ? what : what.substr(colon), position);
+  }
+
+private:
+  const std::string& text_;
+  std::vector<Json_value> stack_;
+  std::vector<std::string> keys_;   // the pending key of each open container
+
+  bool fail(const std::string& why, std::size_t position = std::string::npos)
+  {
+    if (error.empty()) {
+      error = why;
+      if (position != std::string::npos) place = line_column(text_, position);
+    }
+    return false;
+  }
+  bool number(const std::string& s) { Json_value v; v.kind = Json_value::Kind::Number; v.text = s; return add(std::move(v)); }
+  bool open(Json_value::Kind k)
+  {
+    if (stack_.size() >= CLASH4D_MAX_JSON_DEPTH) {
+      exit_code = CLASH4D_EXIT_LIMIT;
+      return fail("nesting deeper than the limit of " + std::to_string(CLASH4D_MAX_JSON_DEPTH) + " levels");
+    }
+    Json_value v;
+    v.kind = k;
+    stack_.push_back(std::move(v));
+    keys_.emplace_back();
+    return true;
+  }
+  bool close()
+  {
+    Json_value v = std::move(stack_.back());
+    stack_.pop_back();
+    keys_.pop_back();
+    return add(std::move(v));
+  }
+  bool add(Json_value v)
+  {
+    if (stack_.empty()) { result = std::move(v); return true; }
+    Json_value& top = stack_.back();
+    if (top.kind == Json_value::Kind::Array) top.items.push_back(std::move(v));
+    else top.members.emplace_back(keys_.back(), std::move(v));
+    return true;
+  }
+};
+
+} // namespace
+
+Json_value read_json_text(const std::string& text)
+{
+  Builder builder(text);
+  bool ok = nlohmann::json::sax_parse(text, &builder, nlohmann::json::input_format_t::json, true, false);
+  if (!ok || !builder.error.empty()) {
+    std::string why = builder.error.empty() ? "not valid JSON" : builder.error;
+    throw Input_error(builder.place, why, builder.exit_code);
+  }
+  return std::move(builder.result);
+}
+
+Json_value read_json_file(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Input_error("", "cannot open the file");
+  in.seekg(0, std::ios::end);
+  std::streamoff size = in.tellg();
+  if (size < 0) throw Input_error("", "cannot read the file");
+  if (static_cast<std::size_t>(size) > CLASH4D_MAX_FILE_BYTES)
+    throw Input_error("", "file larger than the limit of " + std::to_string(CLASH4D_MAX_FILE_BYTES >> 20) + " MiB", CLASH4D_EXIT_LIMIT);
+  in.seekg(0);
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return read_json_text(buffer.str());
+}
+
+} // namespace clash4d

@@ -1,0 +1,57 @@
+// A scene as written in the file: exact rationals, no number-type choice yet.
+#ifndef CLASH4D_SCENE_SCENE_H
+#define CLASH4D_SCENE_SCENE_H
+
+#include "exact/Rational.h"
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace clash4d {
+
+struct Solid {
+  enum class Kind { Halfspace, Block, Convex, Prism, Hull, Union, Intersection, Difference, Translate, Rotate };
+  Kind kind = Kind::Halfspace;
+  std::string path;                    // JSON path of the solid, for messages
+  // Kind-dependent numbers, flat: halfspace a b c d; block min max; convex
+  // 4 per half-space; prism x y per vertex then z0 z1; hull x y z per point;
+  // translate dx dy dz; rotate w x y z.
+  std::vector<Rational> numbers;
+  std::vector<Solid> children;
+  // Exact combinatorics found by validation, so every number type builds the
+  // same polytope: hull facets as point triples (outward by right-hand rule),
+  // convex vertices as triples of half-space indices.
+  std::vector<std::array<int, 3>> triples;
+};
+
+struct Motion {
+  std::vector<Rational> times;                    // strictly increasing breakpoints
+  std::vector<std::array<Rational, 3>> velocities; // times.size() + 1 segments
+};
+
+struct Scene_object {
+  std::string name;
+  Solid shape;
+  Motion motion;
+};
+
+struct Scene {
+  std::string name;
+  Rational t_lo, t_hi;
+  std::vector<Scene_object> objects;
+  std::vector<std::pair<int, int>> ignore;        // object indices, i < j
+
+  bool ignored(int i, int j) const
+  {
+    for (const auto& p : ignore)
+      if ((p.first == i && p.second == j) || (p.first == j && p.second == i)) return true;
+    return false;
+  }
+};
+
+const char* solid_key(Solid::Kind k);
+
+} // namespace clash4d
+
+#endif

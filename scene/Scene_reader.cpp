@@ -1,0 +1,368 @@
+#include "scene/Scene_reader.h"
+#include "exact/Exact_validation.h"
+#include "scene/Input_error.h"
+#include "scene/Json_reader.h"
+#include "scene/Number_text.h"
+
+#include <set>
+#include <sstream>
+
+namespace clash4d {
+
+const char* solid_key(Solid::Kind k)
+{
+  switch (k) {
+    case Solid::Kind::Halfspace: return "halfspace";
+    case Solid::Kind::Block: return "block";
+    case Solid::Kind::Convex: return "convex";
+    case Solid::Kind::Prism: return "prism";
+    case Solid::Kind::Hull: return "hull";
+    case Solid::Kind::Union: return "union";
+    case Solid::Kind::Intersection: return "intersection";
+    case Solid::Kind::Difference: return "difference";
+    case Solid::Kind::Translate: return "translate";
+    case Solid::Kind::Rotate: return "rotate";
+  }
+  return "?";
+}
+
+namespace {
+
+using Kind = Json_value::Kind;
+
+std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+std::string dot(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+
+void expect_kind(const Json_value& v, Kind k, const std::string& path)
+{
+  if (v.kind != k)
+    throw Input_error(path, std::string("expected ") + kind_name(k) + ", found " + kind_name(v.kind));
+}
+
+// Every key must be one of `allowed`: a typo must not silently change a verdict.
+void expect_keys(const Json_value& obj, std::initializer_list<const char*> allowed, const std::string& path)
+{
+  for (const auto& m : obj.members) {
+    bool known = false;
+    for (const char* a : allowed) known = known || m.first == a;
+    if (!known) {
+      std::string list;
+      for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
+      throw Input_error(path, "unknown key \"" + m.first + "\" (expected " + list + ")");
+    }
+  }
+}
+
+const Json_value& required(const Json_value& obj, const char* key, const std::string& path)
+{
+  const Json_value* v = obj.find(key);
+  if (!v) throw Input_error(path, std::string("missing key \"") + key + "\"");
+  return *v;
+}
+
+Rational number_from_text(const std::string& text, bool is_string, const std::string& path)
+{
+  Number_parse p = parse_number_text(text, is_string);
+  if (!p.ok) {
+    std::string shown = text.size() > 40 ? text.substr(0, 40) + "..." : text;
+    throw Input_error(path, "'" + shown + "' is not a number: " + p.error,
+                      p.limit ? CLASH4D_EXIT_LIMIT : CLASH4D_EXIT_INVALID);
+  }
+  return p.value;
+}
+
+Rational read_number(const Json_value& v, const std::string& path)
+{
+  if (v.kind != Kind::Number && v.kind != Kind::String)
+    throw Input_error(path, std::string("expected a number, found ") + kind_name(v.kind));
+  return number_from_text(v.text, v.kind == Kind::String, path);
+}
+
+std::vector<Rational> read_numbers(const Json_value& v, std::size_t count, const std::string& path)
+{
+  expect_kind(v, Kind::Array, path);
+  if (v.items.size() != count)
+    throw Input_error(path, "expected " + std::to_string(count) + " numbers, found " + std::to_string(v.items.size()));
+  std::vector<Rational> out;
+  for (std::size_t i = 0; i < count; ++i) out.push_back(read_number(v.items[i], at(path, i)));
+  return out;
+}
+
+template <std::size_t N>
+std::array<Rational, N> read_array(const Json_value& v, const std::string& path)
+{
+  std::vector<Rational> xs = read_numbers(v, N, path);
+  std::array<Rational, N> out;
+  for (std::size_t i = 0; i < N; ++i) out[i] = xs[i];
+  return out;
+}
+
+Solid read_solid(const Json_value& v, const std::string& path);
+
+void read_children(const Json_value& list, Solid& s, std::size_t min_count, const std::string& path)
+{
+  expect_kind(list, Kind::Array, path);
+  if (list.items.size() < min_count)
+    throw Input_error(path, "expected at least " + std::to_string(min_count) + " solid" + (min_count > 1 ? "s" : "") +
+                                ", found " + std::to_string(list.items.size()));
+  for (std::size_t i = 0; i < list.items.size(); ++i) s.children.push_back(read_solid(list.items[i], at(path, i)));
+}
+
+void read_block(const Json_value& v, Solid& s, const std::string& path)
+{
+  expect_kind(v, Kind::Object, path);
+  expect_keys(v, {"min", "max"}, path);
+  auto lo = read_array<3>(required(v, "min", path), dot(path, "min"));
+  auto hi = read_array<3>(required(v, "max", path), dot(path, "max"));
+  const char* axis = "xyz";
+  for (int k = 0; k < 3; ++k)
+    if (!(lo[k] < hi[k]))
+      throw Input_error(path, std::string("min must be less than max on every axis (") + axis[k] +
+                                  ": " + to_string(lo[k]) + " >= " + to_string(hi[k]) + ")");
+  s.numbers.assign(lo.begin(), lo.end());
+  s.numbers.insert(s.numbers.end(), hi.begin(), hi.end());
+}
+
+void read_halfspace(const Json_value& v, Solid& s, const std::string& path)
+{
+  auto h = read_array<4>(v, path);
+  if (CGAL::is_zero(h[0]) && CGAL::is_zero(h[1]) && CGAL::is_zero(h[2]))
+    throw Input_error(path, "normal (a,b,c) must not be all zero");
+  s.numbers.assign(h.begin(), h.end());
+}
+
+void read_convex(const Json_value& v, Solid& s, const std::string& path)
+{
+  expect_kind(v, Kind::Array, path);
+  if (v.items.size() > CLASH4D_MAX_CONVEX_HALFSPACES)
+    throw Input_error(path, "more than the limit of " + std::to_string(CLASH4D_MAX_CONVEX_HALFSPACES) + " half-spaces", CLASH4D_EXIT_LIMIT);
+  std::vector<Rational4> planes;
+  for (std::size_t i = 0; i < v.items.size(); ++i) {
+    Solid h;
+    read_halfspace(v.items[i], h, at(path, i));
+    planes.push_back({h.numbers[0], h.numbers[1], h.numbers[2], h.numbers[3]});
+    s.numbers.insert(s.numbers.end(), h.numbers.begin(), h.numbers.end());
+  }
+  if (planes.size() < 4) throw Input_error(path, "a bounded convex solid needs at least 4 half-spaces, found " + std::to_string(planes.size()));
+  std::string problem = convex_problem(planes);
+  if (!problem.empty()) throw Input_error(path, problem);
+  s.triples = convex_vertex_triples(planes);
+}
+
+void read_prism(const Json_value& v, Solid& s, const std::string& path)
+{
+  expect_kind(v, Kind::Object, path);
+  expect_keys(v, {"base", "z"}, path);
+  const Json_value& base = required(v, "base", path);
+  std::string base_path = dot(path, "base");
+  expect_kind(base, Kind::Array, base_path);
+  if (base.items.size() > CLASH4D_MAX_HULL_POINTS)
+    throw Input_error(base_path, "more than the limit of " + std::to_string(CLASH4D_MAX_HULL_POINTS) + " vertices", CLASH4D_EXIT_LIMIT);
+  std::vector<std::array<Rational, 2>> polygon;
+  for (std::size_t i = 0; i < base.items.size(); ++i) polygon.push_back(read_array<2>(base.items[i], at(base_path, i)));
+  std::string problem = prism_base_problem(polygon);
+  if (!problem.empty()) throw Input_error(base_path, problem);
+  auto z = read_array<2>(required(v, "z", path), dot(path, "z"));
+  if (!(z[0] < z[1])) throw Input_error(dot(path, "z"), "z0 must be less than z1");
+  for (const auto& p : polygon) s.numbers.insert(s.numbers.end(), p.begin(), p.end());
+  s.numbers.insert(s.numbers.end(), z.begin(), z.end());
+}
+
+void read_hull(const Json_value& v, Solid& s, const std::string& path)
+{
+  expect_kind(v, Kind::Array, path);
+  if (v.items.size() > CLASH4D_MAX_HULL_POINTS)
+    throw Input_error(path, "more than the limit of " + std::to_string(CLASH4D_MAX_HULL_POINTS) + " points", CLASH4D_EXIT_LIMIT);
+  std::vector<Rational3> points;
+  for (std::size_t i = 0; i < v.items.size(); ++i) points.push_back(read_array<3>(v.items[i], at(path, i)));
+  if (points.size() < 4) throw Input_error(path, "a hull needs at least 4 points not in one plane, found " + std::to_string(points.size()));
+  try {
+    s.triples = hull_facets(points);
+  } catch (const std::invalid_argument& e) {
+    throw Input_error(path, e.what());
+  }
+  for (const auto& p : points) s.numbers.insert(s.numbers.end(), p.begin(), p.end());
+}
+
+Solid read_solid(const Json_value& v, const std::string& path)
+{
+  expect_kind(v, Kind::Object, path);
+  static const std::pair<const char*, Solid::Kind> kinds[] = {
+      {"halfspace", Solid::Kind::Halfspace}, {"block", Solid::Kind::Block}, {"convex", Solid::Kind::Convex},
+      {"prism", Solid::Kind::Prism}, {"hull", Solid::Kind::Hull}, {"union", Solid::Kind::Union},
+      {"intersection", Solid::Kind::Intersection}, {"difference", Solid::Kind::Difference},
+      {"translate", Solid::Kind::Translate}, {"rotate", Solid::Kind::Rotate}};
+  Solid s;
+  s.path = path;
+  const Json_value* body = nullptr;
+  std::string key;
+  for (const auto& m : v.members) {
+    for (const auto& k : kinds) {
+      if (m.first != k.first) continue;
+      if (body) throw Input_error(path, "a solid has exactly one kind, found \"" + key + "\" and \"" + m.first + "\"");
+      body = &m.second;
+      key = m.first;
+      s.kind = k.second;
+    }
+  }
+  if (!body) {
+    if (v.members.empty()) throw Input_error(path, "empty solid: expected one of halfspace, block, convex, prism, hull, union, intersection, difference, translate, rotate");
+    throw Input_error(path, "unknown solid \"" + v.members.front().first + "\" (expected halfspace, block, convex, prism, hull, union, intersection, difference, translate or rotate)");
+  }
+  std::string body_path = dot(path, key);
+  bool transform = s.kind == Solid::Kind::Translate || s.kind == Solid::Kind::Rotate;
+  if (transform) expect_keys(v, {key.c_str(), "solid"}, path);
+  else expect_keys(v, {key.c_str()}, path);
+  switch (s.kind) {
+    case Solid::Kind::Halfspace: read_halfspace(*body, s, body_path); break;
+    case Solid::Kind::Block: read_block(*body, s, body_path); break;
+    case Solid::Kind::Convex: read_convex(*body, s, body_path); break;
+    case Solid::Kind::Prism: read_prism(*body, s, body_path); break;
+    case Solid::Kind::Hull: read_hull(*body, s, body_path); break;
+    case Solid::Kind::Union:
+    case Solid::Kind::Intersection: read_children(*body, s, 1, body_path); break;
+    case Solid::Kind::Difference: read_children(*body, s, 2, body_path); break;
+    case Solid::Kind::Translate: {
+      auto d = read_array<3>(*body, body_path);
+      s.numbers.assign(d.begin(), d.end());
+      s.children.push_back(read_solid(required(v, "solid", path), dot(path, "solid")));
+      break;
+    }
+    case Solid::Kind::Rotate: {
+      auto q = read_array<4>(*body, body_path);
+      if (CGAL::is_zero(q[0]) && CGAL::is_zero(q[1]) && CGAL::is_zero(q[2]) && CGAL::is_zero(q[3]))
+        throw Input_error(body_path, "the quaternion must not be zero");
+      s.numbers.assign(q.begin(), q.end());
+      s.children.push_back(read_solid(required(v, "solid", path), dot(path, "solid")));
+      break;
+    }
+  }
+  return s;
+}
+
+std::vector<std::string> tokens_of(const std::string& text)
+{
+  std::istringstream in(text);
+  std::vector<std::string> out;
+  std::string t;
+  while (in >> t) out.push_back(t);
+  return out;
+}
+
+} // namespace
+
+Motion parse_motion(const std::string& text, const std::string& place)
+{
+  // Grammar: segment ("until" T segment)*, segment = "rest" | "vel" vx vy vz.
+  std::vector<std::string> tok = tokens_of(text);
+  Motion m;
+  std::size_t i = 0;
+  auto where = [&](std::size_t k) { return " at word " + std::to_string(k + 1) + " of \"" + text + "\""; };
+  auto number = [&](const std::string& what) {
+    if (i >= tok.size()) throw Input_error(place, "expected " + what + where(i));
+    Number_parse p = parse_number_text(tok[i], true);
+    if (!p.ok) throw Input_error(place, "expected " + what + ", found '" + tok[i] + "'" + where(i) + ": " + p.error,
+                                 p.limit ? CLASH4D_EXIT_LIMIT : CLASH4D_EXIT_INVALID);
+    ++i;
+    return p.value;
+  };
+  auto segment = [&]() {
+    if (i >= tok.size()) throw Input_error(place, "expected \"rest\" or \"vel\"" + where(i));
+    std::array<Rational, 3> v{Rational(0), Rational(0), Rational(0)};
+    if (tok[i] == "rest") ++i;
+    else if (tok[i] == "vel") {
+      ++i;
+      for (int k = 0; k < 3; ++k) v[k] = number("a velocity component");
+    } else throw Input_error(place, "expected \"rest\" or \"vel\", found '" + tok[i] + "'" + where(i));
+    m.velocities.push_back(v);
+  };
+  if (tok.empty()) throw Input_error(place, "empty motion: expected e.g. \"rest\" or \"vel 1 0 0\"");
+  segment();
+  while (i < tok.size()) {
+    if (tok[i] != "until") throw Input_error(place, "expected \"until\", found '" + tok[i] + "'" + where(i));
+    ++i;
+    std::size_t at_time = i;
+    Rational t = number("a time after \"until\"");
+    if (!m.times.empty() && !(m.times.back() < t))
+      throw Input_error(place, "times must be strictly increasing" + where(at_time));
+    m.times.push_back(t);
+    if (m.times.size() > CLASH4D_MAX_MOTION_SEGMENTS)
+      throw Input_error(place, "more than the limit of " + std::to_string(CLASH4D_MAX_MOTION_SEGMENTS) + " motion segments", CLASH4D_EXIT_LIMIT);
+    segment();
+  }
+  return m;
+}
+
+Scene read_scene(const Json_value& root)
+{
+  expect_kind(root, Kind::Object, "");
+  expect_keys(root, {"format", "name", "time", "objects", "ignore"}, "");
+  Scene scene;
+  const Json_value& format = required(root, "format", "");
+  expect_kind(format, Kind::String, "format");
+  if (format.text != "clash4d-scene/1")
+    throw Input_error("format", "expected \"clash4d-scene/1\", found \"" + format.text + "\"");
+  if (const Json_value* name = root.find("name")) {
+    expect_kind(*name, Kind::String, "name");
+    scene.name = name->text;
+  }
+  auto span = read_array<2>(required(root, "time", ""), "time");
+  if (!(span[0] < span[1])) throw Input_error("time", "expected [tL, tH] with tL < tH");
+  scene.t_lo = span[0];
+  scene.t_hi = span[1];
+
+  const Json_value& objects = required(root, "objects", "");
+  expect_kind(objects, Kind::Array, "objects");
+  if (objects.items.size() < 2)
+    throw Input_error("objects", "expected at least two objects, found " + std::to_string(objects.items.size()));
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < objects.items.size(); ++i) {
+    std::string path = at("objects", i);
+    const Json_value& o = objects.items[i];
+    expect_kind(o, Kind::Object, path);
+    expect_keys(o, {"name", "shape", "motion"}, path);
+    Scene_object obj;
+    const Json_value& name = required(o, "name", path);
+    expect_kind(name, Kind::String, dot(path, "name"));
+    if (name.text.empty()) throw Input_error(dot(path, "name"), "the name must not be empty");
+    if (!names.insert(name.text).second) throw Input_error(dot(path, "name"), "duplicate object name \"" + name.text + "\"");
+    obj.name = name.text;
+    obj.shape = read_solid(required(o, "shape", path), dot(path, "shape"));
+    if (const Json_value* motion = o.find("motion")) {
+      expect_kind(*motion, Kind::String, dot(path, "motion"));
+      obj.motion = parse_motion(motion->text, dot(path, "motion"));
+    } else {
+      obj.motion.velocities.push_back({Rational(0), Rational(0), Rational(0)});
+    }
+    scene.objects.push_back(std::move(obj));
+  }
+
+  if (const Json_value* ignore = root.find("ignore")) {
+    expect_kind(*ignore, Kind::Array, "ignore");
+    for (std::size_t i = 0; i < ignore->items.size(); ++i) {
+      std::string path = at("ignore", i);
+      const Json_value& pair = ignore->items[i];
+      expect_kind(pair, Kind::Array, path);
+      if (pair.items.size() != 2) throw Input_error(path, "expected a pair of object names");
+      int idx[2];
+      for (int k = 0; k < 2; ++k) {
+        std::string p = at(path, static_cast<std::size_t>(k));
+        expect_kind(pair.items[k], Kind::String, p);
+        idx[k] = -1;
+        for (std::size_t j = 0; j < scene.objects.size(); ++j)
+          if (scene.objects[j].name == pair.items[k].text) idx[k] = static_cast<int>(j);
+        if (idx[k] < 0) throw Input_error(p, "no object is named \"" + pair.items[k].text + "\"");
+      }
+      if (idx[0] == idx[1]) throw Input_error(path, "an object cannot be ignored against itself");
+      scene.ignore.emplace_back(std::min(idx[0], idx[1]), std::max(idx[0], idx[1]));
+    }
+  }
+  return scene;
+}
+
+Scene read_scene_file(const std::string& path)
+{
+  return read_scene(read_json_file(path));
+}
+
+} // namespace clash4d
