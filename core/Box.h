@@ -3,6 +3,7 @@
 #ifndef CLASH4D_CORE_BOX_H
 #define CLASH4D_CORE_BOX_H
 
+#include <CGAL/enum.h>
 #include <array>
 #include <cstddef>
 

@@ -52,7 +52,10 @@ public:
   {
     Json_value& obj = stack_.back();
     for (const auto& m : obj.members)
-      if (m.first == k) return fail("duplicate key \"" + k + "\"");
+      if (m.first == k) {
+        place = container_path();
+        return fail("duplicate key \"" + k + "\"");
+      }
     keys_.back() = k;
     return true;
   }
@@ -82,6 +85,16 @@ private:
       if (position != std::string::npos) place = line_column(text_, position);
     }
     return false;
+  }
+  // The JSON path of the innermost open container, e.g. objects[1].shape.
+  std::string container_path() const
+  {
+    std::string path;
+    for (std::size_t i = 0; i + 1 < stack_.size(); ++i) {
+      if (stack_[i].kind == Json_value::Kind::Array) path += "[" + std::to_string(stack_[i].items.size()) + "]";
+      else path += (path.empty() ? "" : ".") + keys_[i];
+    }
+    return path;
   }
   bool number(const std::string& s) { Json_value v; v.kind = Json_value::Kind::Number; v.text = s; return add(std::move(v)); }
   bool open(Json_value::Kind k)

@@ -1,0 +1,79 @@
+#include "scene/Scene_writer.h"
+
+#include <nlohmann/json.hpp>
+
+namespace clash4d {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json numbers(const std::vector<Rational>& xs, std::size_t from, std::size_t count)
+{
+  json a = json::array();
+  for (std::size_t i = from; i < from + count; ++i) a.push_back(to_string(xs[i]));
+  return a;
+}
+
+json solid_json(const Solid& s)
+{
+  const char* key = solid_key(s.kind);
+  const auto& n = s.numbers;
+  switch (s.kind) {
+    case Solid::Kind::Halfspace: return {{key, numbers(n, 0, 4)}};
+    case Solid::Kind::Block: return {{key, {{"min", numbers(n, 0, 3)}, {"max", numbers(n, 3, 3)}}}};
+    case Solid::Kind::Convex: {
+      json a = json::array();
+      for (std::size_t i = 0; i < n.size(); i += 4) a.push_back(numbers(n, i, 4));
+      return {{key, a}};
+    }
+    case Solid::Kind::Prism: {
+      json base = json::array();
+      for (std::size_t i = 0; i + 2 < n.size(); i += 2) base.push_back(numbers(n, i, 2));
+      return {{key, {{"base", base}, {"z", numbers(n, n.size() - 2, 2)}}}};
+    }
+    case Solid::Kind::Hull: {
+      json a = json::array();
+      for (std::size_t i = 0; i < n.size(); i += 3) a.push_back(numbers(n, i, 3));
+      return {{key, a}};
+    }
+    case Solid::Kind::Translate:
+    case Solid::Kind::Rotate:
+      return {{key, numbers(n, 0, n.size())}, {"solid", solid_json(s.children[0])}};
+    default: {
+      json a = json::array();
+      for (const Solid& c : s.children) a.push_back(solid_json(c));
+      return {{key, a}};
+    }
+  }
+}
+
+} // namespace
+
+std::string motion_text(const Motion& m)
+{
+  std::string out;
+  for (std::size_t i = 0; i < m.velocities.size(); ++i) {
+    if (i > 0) out += " until " + to_string(m.times[i - 1]) + " ";
+    const auto& v = m.velocities[i];
+    if (CGAL::is_zero(v[0]) && CGAL::is_zero(v[1]) && CGAL::is_zero(v[2])) out += "rest";
+    else out += "vel " + to_string(v[0]) + " " + to_string(v[1]) + " " + to_string(v[2]);
+  }
+  return out;
+}
+
+std::string write_scene(const Scene& scene)
+{
+  json j = {{"format", "clash4d-scene/1"}};
+  if (!scene.name.empty()) j["name"] = scene.name;
+  j["time"] = {to_string(scene.t_lo), to_string(scene.t_hi)};
+  j["objects"] = json::array();
+  for (const auto& o : scene.objects)
+    j["objects"].push_back({{"name", o.name}, {"shape", solid_json(o.shape)}, {"motion", motion_text(o.motion)}});
+  if (!scene.ignore.empty()) {
+    j["ignore"] = json::array();
+    for (const auto& p : scene.ignore) j["ignore"].push_back({scene.objects[p.first].name, scene.objects[p.second].name});
+  }
+  return j.dump(2) + "\n";
+}
+
+} // namespace clash4d

@@ -1,0 +1,140 @@
+#define BOOST_TEST_MODULE check
+#include <boost/test/unit_test.hpp>
+
+#include "cli/Commands.h"
+#include "scene/Number_text.h"
+#include <nlohmann/json.hpp>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+using namespace clash4d;
+
+struct Run {
+  int status;
+  std::string out, err;
+};
+
+static Run run(std::vector<std::string> args)
+{
+  args.insert(args.begin(), "clash4d");
+  std::vector<const char*> argv;
+  for (const auto& a : args) argv.push_back(a.c_str());
+  std::ostringstream out, err;
+  int status = run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
+  return {status, out.str(), err.str()};
+}
+
+static std::string scene_file(const std::string& name, const std::string& text)
+{
+  std::string path = "/tmp/clash4d_test_check_" + name + ".json";
+  std::ofstream(path) << text;
+  return path;
+}
+
+// The spec's own example: ram moves from x in [3,4] at -1 per unit for 5
+// units, so it overlaps the box for 2 < t < 5 (t = 5 leaves x in [-2,-1]).
+static const std::string spec_example = R"({"format":"clash4d-scene/1","name":"two blocks, one moving","time":[0,10],"objects":[
+  {"name":"box","shape":{"block":{"min":[0,0,0],"max":[1,1,1]}}},
+  {"name":"ram","shape":{"block":{"min":[3,0,0],"max":[4,1,1]}},"motion":"rest until 0 vel -1 0 0 until 5 rest"}]})";
+
+static Rational q(const nlohmann::json& s)
+{
+  Number_parse p = parse_number_text(s.get<std::string>(), true);
+  BOOST_TEST_REQUIRE(p.ok);
+  return p.value;
+}
+
+BOOST_AUTO_TEST_CASE(spec_example_collides_with_a_checkable_witness)
+{
+  Run r = run({"check", scene_file("spec", spec_example), "--json"});
+  BOOST_TEST(r.status == 1);
+  auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j["collide"] == true);
+  BOOST_TEST(j["number"] == "exact");
+  BOOST_TEST(j["witness"]["objects"] == nlohmann::json::array({"box", "ram"}));
+  auto p = j["witness"]["point"];
+  Rational x = q(p[0]), y = q(p[1]), z = q(p[2]), t = q(p[3]);
+  // Strictly inside the box, and inside ram at time t (x - (3 - t) in (0,1)).
+  BOOST_TEST((Rational(0) < t && t < Rational(10)));
+  for (const Rational& c : {x, y, z}) BOOST_TEST((Rational(0) < c && c < Rational(1)));
+  BOOST_TEST((Rational(0) < t && t < Rational(5)));
+  Rational ram_lo = Rational(3) - t;
+  BOOST_TEST((ram_lo < x && x < ram_lo + Rational(1)));
+  // Exact strings are in lowest terms: no "2/4".
+  for (const auto& s : p) BOOST_TEST(to_string(q(s)) == s.get<std::string>());
+}
+
+BOOST_AUTO_TEST_CASE(touching_is_not_a_collision_and_exits_zero)
+{
+  std::string text = spec_example;
+  text.replace(text.find("until 5 rest"), 12, "until 2 rest");   // stops with ram's face at x = 1
+  Run r = run({"check", scene_file("touch", text), "--json"});
+  BOOST_TEST(r.status == 0);
+  auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j["collide"] == false);
+  BOOST_TEST(!j.contains("witness"));
+}
+
+BOOST_AUTO_TEST_CASE(double_output_is_shortest_decimal)
+{
+  Run r = run({"check", scene_file("spec", spec_example), "--json", "--number", "double"});
+  BOOST_TEST(r.status == 1);
+  auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j["number"] == "double");
+  for (const auto& s : j["witness"]["point"]) BOOST_TEST(std::to_string(std::stod(s.get<std::string>())).size() > 0u);
+}
+
+BOOST_AUTO_TEST_CASE(usage_and_input_errors_exit_two)
+{
+  BOOST_TEST(run({}).status == 2);
+  BOOST_TEST(run({"frobnicate"}).status == 2);
+  BOOST_TEST(run({"check"}).status == 2);
+  BOOST_TEST(run({"check", "/nonexistent.json"}).status == 2);
+  BOOST_TEST(run({"check", scene_file("spec", spec_example), "--number", "float"}).status == 2);
+  BOOST_TEST(run({"check", scene_file("spec", spec_example), "--tolerance", "1e-9"}).status == 2);
+  Run bad = run({"check", scene_file("bad", R"({"format":"clash4d-scene/1","time":[0,1],"objects":[]})")});
+  BOOST_TEST(bad.status == 2);
+  BOOST_TEST(bad.err.find("clash4d_test_check_bad.json: objects: expected at least two objects") != std::string::npos, bad.err);
+  BOOST_TEST(bad.out.empty());
+}
+
+BOOST_AUTO_TEST_CASE(help_exits_zero)
+{
+  for (auto args : std::vector<std::vector<std::string>>{{"--help"}, {"check", "--help"}, {"validate", "--help"}, {"extrude", "--help"}}) {
+    Run r = run(args);
+    BOOST_TEST(r.status == 0);
+    BOOST_TEST(r.out.find("Usage") != std::string::npos, r.out);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(validate_reports_each_bad_file)
+{
+  std::string good = scene_file("spec", spec_example);
+  std::string bad = scene_file("bad2", "{");
+  Run r = run({"validate", good, bad});
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.out.find(good + ": valid") != std::string::npos);
+  BOOST_TEST(r.err.find(bad + ": line 1") != std::string::npos, r.err);
+  BOOST_TEST(run({"validate", good}).status == 0);
+}
+
+BOOST_AUTO_TEST_CASE(stats_report_every_stage)
+{
+  Run r = run({"check", scene_file("spec", spec_example), "--json", "--stats"});
+  auto s = nlohmann::json::parse(r.out)["stats"];
+  for (const char* key : {"sbound_passes", "primitives_pruned", "span_before", "span_after", "regions_per_depth",
+                          "leaves_at_conquer", "points_classified", "seconds"})
+    BOOST_TEST(s.contains(key), key);
+  // Appendix B narrows [0, 5] (ram moving) to the times the boxes overlap: [2, 4]... 
+  // ram's x-range [3 - t, 4 - t] meets [0, 1] for 2 <= t <= 4.
+  BOOST_TEST(s["span_before"] == "[0, 5]");
+  BOOST_TEST(s["span_after"] == "[2, 4]");
+}
+
+BOOST_AUTO_TEST_CASE(ignored_pairs_are_not_tested)
+{
+  std::string text = spec_example;
+  text.replace(text.find("\"objects\""), 9, "\"ignore\":[[\"ram\",\"box\"]],\"objects\"");
+  BOOST_TEST(run({"check", scene_file("ignore", text)}).status == 0);
+}

@@ -1,0 +1,73 @@
+#define BOOST_TEST_MODULE fixtures
+#include <boost/test/data/test_case.hpp>
+#include <boost/test/unit_test.hpp>
+
+#include "exact/Exact_instantiation.h"
+#include "float/Double_instantiation.h"
+#include "scene/Input_error.h"
+#include "scene/Json_reader.h"
+#include "scene/Scene_reader.h"
+#include <fstream>
+
+using namespace clash4d;
+namespace data = boost::unit_test::data;
+using json = nlohmann::json;
+
+// Each family folder has expected.json: file -> {collide, why} for scenes,
+// file -> {exit, place, why} for bad input. Verdicts were derived by hand.
+static json manifest(const std::string& family)
+{
+  std::ifstream in(std::string(CLASH4D_FIXTURES) + "/" + family + "/expected.json");
+  return in ? json::parse(in) : json::object();
+}
+
+static std::vector<std::string> entries(const std::string& family)
+{
+  std::vector<std::string> out;
+  for (const auto& item : manifest(family).items()) out.push_back(family + "/" + item.key());
+  return out;
+}
+
+static std::string path_of(const std::string& entry) { return std::string(CLASH4D_FIXTURES) + "/" + entry; }
+
+static json expectation(const std::string& entry)
+{
+  std::size_t slash = entry.find('/');
+  return manifest(entry.substr(0, slash))[entry.substr(slash + 1)];
+}
+
+static void check_scene(const std::string& entry)
+{
+  json expected = expectation(entry);
+  Scene scene = read_scene_file(path_of(entry));
+  Check_options opts;
+  opts.all_pairs = true;
+  Check_answer exact = check_exact(scene, opts);
+  BOOST_TEST(exact.collide == expected["collide"].get<bool>(), entry << ": " << expected["why"]);
+  for (const auto& p : exact.pairs) BOOST_TEST(p.witness_verified, entry << " witness " << p.a << "/" << p.b);
+  // The double instantiation runs the same code; its verdict may differ on
+  // contact (that is what the comparer measures), but it must not fail.
+  BOOST_CHECK_NO_THROW(check_double(scene, 0, opts));
+}
+
+BOOST_DATA_TEST_CASE(contact_fixture_verdicts, data::make(entries("contact")), entry) { check_scene(entry); }
+BOOST_DATA_TEST_CASE(paper_fixture_verdicts, data::make(entries("paper")), entry) { check_scene(entry); }
+
+BOOST_DATA_TEST_CASE(bad_fixtures_are_refused_with_their_place, data::make(entries("bad")), entry)
+{
+  json expected = expectation(entry);
+  try {
+    read_scene_file(path_of(entry));
+    BOOST_FAIL(entry << " was accepted");
+  } catch (const Input_error& e) {
+    BOOST_TEST(e.exit_code() == expected["exit"].get<int>(), entry << ": " << e.format(entry));
+    BOOST_TEST(e.place() == expected["place"].get<std::string>(), entry << ": " << e.format(entry));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(manifests_are_not_empty)
+{
+  BOOST_TEST(entries("contact").size() >= 20u);
+  BOOST_TEST(entries("paper").size() >= 4u);
+  BOOST_TEST(entries("bad").size() >= 20u);
+}

@@ -1,0 +1,137 @@
+#define BOOST_TEST_MODULE model
+#include <boost/test/unit_test.hpp>
+
+#include "core/Scene_model.h"
+#include "exact/Exact_kernel.h"
+#include "float/Double_kernel.h"
+#include "scene/Json_reader.h"
+#include "scene/Scene_reader.h"
+
+using namespace clash4d;
+using Q = Rational;
+
+static Scene scene_with(const std::string& shape_a, const std::string& motion_a = "rest")
+{
+  std::string text = R"({"format":"clash4d-scene/1","time":[0,10],"objects":[{"name":"a","shape":)" + shape_a +
+                     R"(,"motion":")" + motion_a + R"("},{"name":"b","shape":{"block":{"min":[0,0,0],"max":[1,1,1]}}}]})";
+  return read_scene(read_json_text(text));
+}
+
+static Csg_model<Q> model_of(const std::string& shape)
+{
+  Exact_kernel k;
+  return Scene_model<Exact_kernel>::build(k, scene_with(shape)).objects[0].csg;
+}
+
+static void check_box(const Box<Q, 3>& b, std::array<Q, 3> lo, std::array<Q, 3> hi)
+{
+  for (int a = 0; a < 3; ++a) {
+    BOOST_TEST_REQUIRE((b.has_lo[a] && b.has_hi[a]));
+    BOOST_TEST(b.lo[a] == lo[a]);
+    BOOST_TEST(b.hi[a] == hi[a]);
+  }
+}
+
+// Every vertex lies on at least three planes and inside all of them.
+static void check_vertices_on_planes(const Primitive<Q>& p)
+{
+  for (const auto& v : p.vertices) {
+    int on = 0;
+    for (const auto& h : p.planes) {
+      Q value = h[0] * v[0] + h[1] * v[1] + h[2] * v[2] + h[3];
+      BOOST_TEST(value <= Q(0));
+      on += value == Q(0);
+    }
+    BOOST_TEST(on >= 3);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(block_is_six_halfspaces_with_its_box)
+{
+  auto m = model_of(R"({"block":{"min":[0,"0.5",-1],"max":[1,2,"1/3"]}})");
+  BOOST_TEST_REQUIRE(m.primitives.size() == 1u);
+  BOOST_TEST(m.primitives[0].planes.size() == 6u);
+  check_box(m.primitives[0].box, {Q(0), Q(1, 2), Q(-1)}, {Q(1), Q(2), Q(1, 3)});
+  check_vertices_on_planes(m.primitives[0]);
+}
+
+BOOST_AUTO_TEST_CASE(rotation_matrices_are_exactly_orthogonal)
+{
+  for (auto w : {std::array<int, 4>{3, 0, 0, 4}, {1, 1, 1, 1}, {1, 2, 3, 4}, {7, -1, 5, 2}, {0, 0, 0, 9}}) {
+    auto R = rotation_matrix(Q(w[0]), Q(w[1]), Q(w[2]), Q(w[3]));
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) BOOST_TEST(dot(R[i], R[j]) == Q(i == j ? 1 : 0));
+    BOOST_TEST(determinant3(R[0], R[1], R[2]) == Q(1));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(rotated_block_box_is_the_box_of_its_rotated_corners)
+{
+  // q = (3,0,0,4): about z by the angle with cos = -7/25, sin = 24/25.
+  auto m = model_of(R"({"rotate":[3,0,0,4],"solid":{"block":{"min":[-1,-1,-1],"max":[1,1,1]}}})");
+  check_box(m.primitives[0].box, {Q(-31, 25), Q(-31, 25), Q(-1)}, {Q(31, 25), Q(31, 25), Q(1)});
+  check_vertices_on_planes(m.primitives[0]);
+}
+
+BOOST_AUTO_TEST_CASE(translate_then_rotate_composes)
+{
+  // rotate by 90 degrees about z (q = (1,0,0,1)) a block translated by (2,0,0):
+  // the block [2,3]x[0,1]x[0,1] goes to [-1,0]x[2,3]x[0,1].
+  auto m = model_of(R"({"rotate":[1,0,0,1],"solid":{"translate":[2,0,0],"solid":{"block":{"min":[0,0,0],"max":[1,1,1]}}}})");
+  check_box(m.primitives[0].box, {Q(-1), Q(2), Q(0)}, {Q(0), Q(3), Q(1)});
+  check_vertices_on_planes(m.primitives[0]);
+}
+
+BOOST_AUTO_TEST_CASE(prism_hull_and_convex)
+{
+  auto prism = model_of(R"({"prism":{"base":[[0,0],[2,0],[1,1]],"z":[0,"0.5"]}})");
+  BOOST_TEST(prism.primitives[0].planes.size() == 5u);
+  check_box(prism.primitives[0].box, {Q(0), Q(0), Q(0)}, {Q(2), Q(1), Q(1, 2)});
+  check_vertices_on_planes(prism.primitives[0]);
+
+  auto cube = model_of(R"({"hull":[[0,0,0],[1,0,0],[0,1,0],[1,1,0],[0,0,1],[1,0,1],[0,1,1],[1,1,1],["1/2","1/2","1/2"]]})");
+  BOOST_TEST(cube.primitives[0].planes.size() == 6u);   // one plane per facet, not per triangle
+  check_box(cube.primitives[0].box, {Q(0), Q(0), Q(0)}, {Q(1), Q(1), Q(1)});
+  check_vertices_on_planes(Primitive<Q>{"", cube.primitives[0].planes, {{Q(0), Q(0), Q(0)}, {Q(1), Q(1), Q(1)}}, {}});
+
+  auto octa = model_of(R"({"convex":[[1,1,1,-1],[1,1,-1,-1],[1,-1,1,-1],[1,-1,-1,-1],[-1,1,1,-1],[-1,1,-1,-1],[-1,-1,1,-1],[-1,-1,-1,-1],[1,0,0,-5]]})");
+  BOOST_TEST(octa.primitives[0].vertices.size() == 6u);
+  check_box(octa.primitives[0].box, {Q(-1), Q(-1), Q(-1)}, {Q(1), Q(1), Q(1)});
+  check_vertices_on_planes(octa.primitives[0]);
+}
+
+BOOST_AUTO_TEST_CASE(halfspace_box_is_omega_unless_axis_aligned)
+{
+  auto slanted = model_of(R"({"intersection":[{"halfspace":[1,1,0,-1]},{"block":{"min":[0,0,0],"max":[1,1,1]}}]})");
+  BOOST_TEST(!slanted.primitives[0].box.has_hi[0]);
+  BOOST_TEST(!slanted.primitives[0].box.has_lo[0]);
+  auto axis = model_of(R"({"intersection":[{"halfspace":[-2,0,0,1]},{"block":{"min":[0,0,0],"max":[1,1,1]}}]})");
+  BOOST_TEST(axis.primitives[0].box.has_lo[0]);
+  BOOST_TEST(axis.primitives[0].box.lo[0] == Q(1, 2));
+  BOOST_TEST(!axis.primitives[0].box.has_hi[0]);
+}
+
+BOOST_AUTO_TEST_CASE(motion_displacement_is_continuous_with_zero_at_zero)
+{
+  Exact_kernel k;
+  Motion m = parse_motion("vel 1 0 0 until -2 rest until 0 vel 0 1 2 until 5 vel -1 -1 0 until 7 rest", "motion");
+  auto p = Motion_path<Q>::build(k, m);
+  BOOST_TEST(p.displacement(Q(0)) == (Vector3<Q>{Q(0), Q(0), Q(0)}));
+  for (std::size_t i = 0; i < p.times.size(); ++i) {
+    const Q& T = p.times[i];
+    for (int a = 0; a < 3; ++a)
+      BOOST_TEST(p.velocity[i][a] * T + p.offset[i][a] == p.velocity[i + 1][a] * T + p.offset[i + 1][a]);
+  }
+  BOOST_TEST(p.displacement(Q(5)) == (Vector3<Q>{Q(0), Q(5), Q(10)}));
+  BOOST_TEST(p.displacement(Q(6)) == (Vector3<Q>{Q(-1), Q(4), Q(10)}));
+  BOOST_TEST(p.displacement(Q(100)) == (Vector3<Q>{Q(-2), Q(3), Q(10)}));
+  BOOST_TEST(p.displacement(Q(-3)) == (Vector3<Q>{Q(-1), Q(0), Q(0)}));   // vel 1 before -2
+}
+
+BOOST_AUTO_TEST_CASE(double_model_reads_rounded_numbers)
+{
+  Double_kernel k;
+  auto m = Scene_model<Double_kernel>::build(k, scene_with(R"({"block":{"min":["0.1",0,0],"max":["1/3",1,1]}})"));
+  BOOST_TEST(m.objects[0].csg.primitives[0].box.lo[0] == 0.1);
+  BOOST_TEST(m.objects[0].csg.primitives[0].box.hi[0] == 1.0 / 3.0);
+}

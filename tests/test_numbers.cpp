@@ -1,0 +1,78 @@
+#define BOOST_TEST_MODULE numbers
+#include <boost/test/unit_test.hpp>
+
+#include "float/Double_kernel.h"
+#include "scene/Number_text.h"
+#include <cmath>
+
+using namespace clash4d;
+
+static Rational q(const std::string& text)
+{
+  Number_parse p = parse_number_text(text, true);
+  BOOST_TEST_REQUIRE(p.ok, text << ": " << p.error);
+  return p.value;
+}
+
+BOOST_AUTO_TEST_CASE(decimals_are_read_exactly)
+{
+  BOOST_TEST(q("0.1") == Rational(1, 10));
+  BOOST_TEST(q("-2.5e-3") == Rational(-1, 400));
+  BOOST_TEST(q("1E2") == Rational(100));
+  BOOST_TEST(q("0.1") + q("0.2") == q("0.3"));      // false in doubles
+  BOOST_TEST(q("3/6") == Rational(1, 2));
+  BOOST_TEST(q("-7/14") == Rational(-1, 2));
+  BOOST_TEST(q("123456789012345678901234567890") * Rational(10) == q("1234567890123456789012345678900"));
+}
+
+BOOST_AUTO_TEST_CASE(malformed_numbers_are_refused)
+{
+  for (const char* bad : {"1.2.3", "0x10", "1/2/3", " 1", "1 ", "01", "+1", ".5", "1.", "1e", "NaN", "inf", "", "-", "1/-2", "1/0", "0/0"}) {
+    Number_parse p = parse_number_text(bad, true);
+    BOOST_TEST(!p.ok, "accepted '" << bad << "'");
+    BOOST_TEST(!p.limit);
+  }
+  BOOST_TEST(parse_number_text("1/0", true).error.find("zero denominator") != std::string::npos);
+  BOOST_TEST(!parse_number_text("1/2", false).ok);   // JSON numbers are never fractions
+}
+
+BOOST_AUTO_TEST_CASE(absurd_numbers_hit_a_named_limit)
+{
+  Number_parse p = parse_number_text("1e1000000", true);
+  BOOST_TEST(!p.ok);
+  BOOST_TEST(p.limit);
+  BOOST_TEST(p.error.find("1000") != std::string::npos);
+  BOOST_TEST(parse_number_text(std::string(2000, '9'), true).limit);
+  BOOST_TEST(parse_number_text("1e1000", true).ok);
+}
+
+BOOST_AUTO_TEST_CASE(exact_output_is_lowest_terms)
+{
+  BOOST_TEST(to_string(Rational(6, 4)) == "3/2");
+  BOOST_TEST(to_string(Rational(-5)) == "-5");
+  BOOST_TEST(to_string(Rational(0)) == "0");
+  BOOST_TEST(to_string(Rational(-2, -4)) == "1/2");
+}
+
+BOOST_AUTO_TEST_CASE(double_reading_rounds_to_nearest)
+{
+  Double_kernel k;
+  BOOST_TEST(k.from_rational(q("0.1")) == 0.1);
+  BOOST_TEST(k.from_rational(q("1/3")) == 1.0 / 3.0);
+  // 2^53 + 1 is a tie: to even, 2^53. 2^53 + 3 ties up to 2^53 + 4.
+  BOOST_TEST(k.from_rational(q("9007199254740993")) == 9007199254740992.0);
+  BOOST_TEST(k.from_rational(q("9007199254740995")) == 9007199254740996.0);
+  // Truncation (what mpq_get_d does) would give the smaller neighbour here.
+  Rational just_below_one = Rational(1) - Rational(1, 1) / q("1e30");
+  BOOST_TEST(k.from_rational(just_below_one) == 1.0);
+  BOOST_CHECK_THROW(k.from_rational(q("1e400")), std::range_error);
+}
+
+BOOST_AUTO_TEST_CASE(double_output_is_shortest_round_trip)
+{
+  Double_kernel k;
+  BOOST_TEST(k.to_text(0.1) == "0.1");
+  BOOST_TEST(k.to_text(0.1 + 0.2) == "0.30000000000000004");
+  BOOST_TEST(k.to_text(2.0) == "2");
+  BOOST_TEST(std::stod(k.to_text(1.0 / 3.0)) == 1.0 / 3.0);
+}

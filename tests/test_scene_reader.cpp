@@ -1,0 +1,136 @@
+#define BOOST_TEST_MODULE scene_reader
+#include <boost/test/unit_test.hpp>
+
+#include "scene/Input_error.h"
+#include "scene/Json_reader.h"
+#include "scene/Number_text.h"
+#include "scene/Scene_reader.h"
+#include "scene/Scene_writer.h"
+
+using namespace clash4d;
+
+static const std::string two_blocks = R"({"format":"clash4d-scene/1","name":"n","time":[0,"10"],"objects":[
+  {"name":"box","shape":{"block":{"min":[0,0,0],"max":[1,1,1]}}},
+  {"name":"ram","shape":{"block":{"min":[3,0,0],"max":[4,1,1]}},"motion":"rest until 0 vel -1 0 0 until 5 rest"}]})";
+
+// Replaces the first occurrence of `from` in the valid scene.
+static std::string edited(const std::string& from, const std::string& to)
+{
+  std::string s = two_blocks;
+  std::size_t at = s.find(from);
+  BOOST_TEST_REQUIRE(at != std::string::npos, from);
+  return s.replace(at, from.size(), to);
+}
+
+// The error for a text: its place, message and exit code.
+static Input_error error_of(const std::string& text)
+{
+  try {
+    read_scene(read_json_text(text));
+  } catch (const Input_error& e) {
+    return e;
+  }
+  BOOST_FAIL("accepted: " << text);
+  return Input_error("", "");
+}
+
+static void expect_error(const std::string& text, const std::string& place, const std::string& words, int code = 2)
+{
+  Input_error e = error_of(text);
+  BOOST_TEST(e.place() == place, "message: " << e.format("f"));
+  BOOST_TEST(std::string(e.what()).find(words) != std::string::npos, "message: " << e.format("f"));
+  BOOST_TEST(e.exit_code() == code);
+}
+
+BOOST_AUTO_TEST_CASE(valid_scene_is_read_exactly)
+{
+  Scene s = read_scene(read_json_text(two_blocks));
+  BOOST_TEST(s.objects.size() == 2u);
+  BOOST_TEST(s.t_hi == Rational(10));
+  BOOST_TEST(s.objects[1].motion.times.size() == 2u);
+  BOOST_TEST(s.objects[1].motion.velocities[1][0] == Rational(-1));
+}
+
+BOOST_AUTO_TEST_CASE(round_trip_through_the_writer)
+{
+  std::string text = edited(R"("min":[0,0,0])", R"("min":["0.1","-1/3","2.5e-3"])");
+  Scene a = read_scene(read_json_text(text));
+  Scene b = read_scene(read_json_text(write_scene(a)));
+  BOOST_TEST(write_scene(a) == write_scene(b));
+  BOOST_TEST(b.objects[0].shape.numbers[0] == Rational(1, 10));
+  BOOST_TEST(b.objects[0].shape.numbers[1] == Rational(-1, 3));
+  BOOST_TEST(b.objects[0].shape.numbers[2] == Rational(1, 400));
+}
+
+BOOST_AUTO_TEST_CASE(json_numbers_keep_their_text)
+{
+  // 0.1 as a JSON number must be 1/10, not the double nearest to it.
+  Scene s = read_scene(read_json_text(edited(R"("min":[0,0,0])", R"("min":[0.1,1e-20,-123456789012345678901234567890])")));
+  BOOST_TEST(s.objects[0].shape.numbers[0] == Rational(1, 10));
+  BOOST_TEST(s.objects[0].shape.numbers[1] * Rational(100000) == parse_number_text("1e-15", false).value);
+  BOOST_TEST(-s.objects[0].shape.numbers[2] / Rational(1000000000) > Rational(1000000000) * Rational(1000000000));
+}
+
+BOOST_AUTO_TEST_CASE(errors_name_the_place)
+{
+  expect_error(edited(R"("min":[0,0,0])", R"("min":[0,0])"), "objects[0].shape.block.min", "expected 3 numbers");
+  expect_error(edited(R"("min":[3,0,0])", R"("min":[4,0,0])"), "objects[1].shape.block", "min must be less than max");
+  expect_error(edited(R"("name":"n",)", R"("name":"n","colour":1,)"), "", "unknown key \"colour\"");
+  expect_error(edited(R"("max":[1,1,1]}})", R"("max":[1,1,1]},"spin":1})"), "objects[0].shape", "unknown key \"spin\"");
+  expect_error(edited(R"({"block":{"min":[0,0,0])", R"({"block":{"min":[0,0,0],"mid":[0,0,0])"), "objects[0].shape.block", "unknown key \"mid\"");
+  expect_error(edited(R"("format":"clash4d-scene/1")", R"("format":"clash4d-scene/2")"), "format", "clash4d-scene/1");
+  expect_error(edited(R"("time":[0,"10"])", R"("time":[10,10])"), "time", "tL < tH");
+  expect_error(edited(R"("time":[0,"10"])", R"("time":[0,"1/0"])"), "time[1]", "zero denominator");
+  expect_error(edited(R"("time":[0,"10"])", R"("time":[0,"NaN"])"), "time[1]", "not a number");
+  expect_error(edited(R"("name":"ram")", R"("name":"box")"), "objects[1].name", "duplicate object name");
+  expect_error(edited(R"("name":"ram")", R"("name":"")"), "objects[1].name", "must not be empty");
+  expect_error(edited(R"("name":"ram")", R"("name":7)"), "objects[1].name", "expected a string");
+  expect_error(edited("until 5 rest", "until 5 fly"), "objects[1].motion", "'fly'");
+  expect_error(edited("until 5 rest", "until -1 rest"), "objects[1].motion", "strictly increasing");
+  expect_error(edited("vel -1 0 0", "vel -1 0"), "objects[1].motion", "expected");
+  expect_error(edited("rest until 0", "rest until"), "objects[1].motion", "expected a time");
+  expect_error(edited(R"("name":"n",)", R"("name":"n","ignore":[["box","rom"]],)"), "ignore[0][1]", "no object is named \"rom\"");
+  expect_error(edited(R"("name":"n",)", R"("name":"n","ignore":[["box","box"]],)"), "ignore[0]", "itself");
+  expect_error(edited(R"("name":"n",)", R"("name":"n","ignore":[["box"]],)"), "ignore[0]", "pair");
+  expect_error(edited(R"({"block":{"min":[0,0,0],"max":[1,1,1]}})", R"({"rotate":[0,0,0,0],"solid":{"block":{"min":[0,0,0],"max":[1,1,1]}}})"),
+               "objects[0].shape.rotate", "quaternion must not be zero");
+  expect_error(edited(R"({"block":{"min":[0,0,0],"max":[1,1,1]}})", R"({"halfspace":[0,0,0,1]})"),
+               "objects[0].shape.halfspace", "must not be all zero");
+  expect_error(edited(R"({"block":{"min":[0,0,0],"max":[1,1,1]}})", R"({"union":[]})"), "objects[0].shape.union", "at least 1");
+  expect_error(edited(R"({"block":{"min":[0,0,0],"max":[1,1,1]}})", R"({"difference":[{"block":{"min":[0,0,0],"max":[1,1,1]}}]})"),
+               "objects[0].shape.difference", "at least 2");
+}
+
+BOOST_AUTO_TEST_CASE(degenerate_solids_are_refused)
+{
+  auto shape = [](const std::string& s) { return edited(R"({"block":{"min":[0,0,0],"max":[1,1,1]}})", s); };
+  expect_error(shape(R"({"prism":{"base":[[0,0],[0,1],[1,0]],"z":[0,1]}})"), "objects[0].shape.prism.base", "clockwise");
+  expect_error(shape(R"({"prism":{"base":[[0,0],[1,0],[2,0],[1,1]],"z":[0,1]}})"), "objects[0].shape.prism.base", "collinear");
+  expect_error(shape(R"({"prism":{"base":[[0,0],[2,0],[1,1],[1,3]],"z":[0,1]}})"), "objects[0].shape.prism.base", "not strictly convex");
+  expect_error(shape(R"({"prism":{"base":[[0,0],[1,0],[0,1]],"z":[1,1]}})"), "objects[0].shape.prism.z", "z0 must be less");
+  expect_error(shape(R"({"hull":[[0,0,0],[1,0,0],[0,1,0],[1,1,0]]})"), "objects[0].shape.hull", "one plane");
+  expect_error(shape(R"({"hull":[[0,0,0],[1,0,0],[0,1,0]]})"), "objects[0].shape.hull", "at least 4");
+  expect_error(shape(R"({"convex":[[1,0,0,-1],[-1,0,0,0],[0,1,0,-1],[0,-1,0,0]]})"), "objects[0].shape.convex", "unbounded");
+  expect_error(shape(R"({"convex":[[1,0,0,1],[-1,0,0,0],[0,1,0,-1],[0,-1,0,0],[0,0,1,-1],[0,0,-1,0]]})"), "objects[0].shape.convex", "empty");
+  expect_error(shape(R"({"convex":[[1,0,0,0],[-1,0,0,0],[0,1,0,-1],[0,-1,0,0],[0,0,1,-1],[0,0,-1,0]]})"), "objects[0].shape.convex", "no interior");
+}
+
+BOOST_AUTO_TEST_CASE(malformed_json_is_refused_with_a_position)
+{
+  expect_error("{\"format\": ", "line 1, column 12", "syntax error");
+  expect_error("not json", "line 1, column 3", "syntax error");
+  expect_error(R"({"format":"clash4d-scene/1","format":"clash4d-scene/1"})", "", "duplicate key \"format\"");
+  expect_error(edited(R"("max":[1,1,1]}})", R"("max":[1,1,1],"max":[2,2,2]}})"), "objects[0].shape.block", "duplicate key \"max\"");
+  expect_error("[1,2]", "", "expected an object");
+  expect_error(R"({"time": NaN})", "line 1, column 11", "syntax error");
+}
+
+BOOST_AUTO_TEST_CASE(absurd_input_hits_a_named_limit)
+{
+  std::string deep = R"({"format":"clash4d-scene/1","time":[0,1],"objects":[{"name":"a","shape":)";
+  for (int i = 0; i < 100000; ++i) deep += R"({"union":[)";
+  Input_error e = error_of(deep);
+  BOOST_TEST(e.exit_code() == 3);
+  BOOST_TEST(std::string(e.what()).find("256") != std::string::npos);
+  expect_error(edited(R"("time":[0,"10"])", R"("time":[0,"1e1000000"])"), "time[1]", "exponent", 3);
+}
