@@ -97,6 +97,10 @@ void print_extrusion_text(const json& report, std::ostream& out)
 
 json stats_json(const Check_stats& s)
 {
+  json spans = json::array();
+  for (const auto& p : s.spans)
+    spans.push_back({{"pair", p.pair}, {"span", p.span}, {"narrowed", p.narrowed}, {"primitives", p.primitives},
+                     {"primitives_alive", p.primitives_alive}, {"leaves", p.leaves}, {"region", p.region}, {"frame", p.frame}});
   return {{"pairs", s.pairs},
           {"sub_spans", s.sub_spans},
           {"sub_spans_pruned_by_sbounds", s.sub_spans_pruned},
@@ -105,7 +109,9 @@ json stats_json(const Check_stats& s)
           {"primitives_pruned", s.primitives_pruned},
           {"span_before", s.span_before},
           {"span_after", s.span_after},
+          {"spans", spans},
           {"regions_per_depth", s.regions_per_depth},
+          {"conquered_box", s.conquered_box},
           {"conquers", s.conquers},
           {"leaves_at_conquer", s.leaves_at_conquer},
           {"max_leaves_at_conquer", s.max_leaves_at_conquer},
@@ -173,6 +179,9 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   check_cmd->add_flag("--all-pairs", all_pairs, "list every colliding pair instead of stopping at the first");
   check_cmd->add_flag("--json", as_json, "print one JSON object (spec: check)");
   check_cmd->add_flag("--stats", stats, "report what each stage did");
+  bool no_sbounds = false;
+  check_cmd->add_flag("--no-sbounds", no_sbounds,
+                      "bound by the paper's original procedure (boxes at velocity changes) instead of S-bounds; for reproducing §4.1");
 
   try {
     app.parse(argc, argv);
@@ -201,6 +210,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   return guarded(file, err, [&] {
     Check_options options;
     options.all_pairs = all_pairs;
+    options.sbounds = !no_sbounds;
     Check_answer a = number == "exact" ? check_exact(scene, options) : check_double(scene, tolerance, options);
     print_check(a, as_json, all_pairs, stats, tolerance, out);
     return a.collide ? 1 : 0;

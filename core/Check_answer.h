@@ -11,6 +11,9 @@ namespace clash4d {
 
 struct Check_options {
   bool all_pairs = false;     // examine every pair instead of stopping at the first collision
+  // false: the paper's "original" bounding (the objects' boxes at the
+  // velocity changes, intersected; §4.1) instead of S-bounds. Reproduction only.
+  bool sbounds = true;
 };
 
 struct Pair_answer {

@@ -16,7 +16,7 @@ Check_answer run_check(const K& k, const Scene& scene, const Check_options& opti
   auto start = std::chrono::steady_clock::now();
   Scene_model<K> model = Scene_model<K>::build(k, scene);
   answer.stats.seconds_model = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  Collision_checker<K> checker(k, model, answer.stats);
+  Collision_checker<K> checker(k, model, answer.stats, options.sbounds);
   int n = static_cast<int>(model.objects.size());
   for (int a = 0; a < n; ++a)
     for (int b = a + 1; b < n; ++b) {

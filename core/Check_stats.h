@@ -8,15 +8,25 @@
 
 namespace clash4d {
 
+// One constant-velocity sub-span of one pair, as the S-bound stage left it.
+struct Span_stats {
+  std::string pair, span, narrowed;       // narrowed: "empty" when pruned
+  std::size_t primitives = 0, primitives_alive = 0, leaves = 0;
+  std::string region;                     // the box handed to division, per axis
+  std::string frame;                      // per axis, whose velocity measures it
+};
+
 struct Check_stats {
   // S-bounds (§4.3)
   std::size_t pairs = 0, sub_spans = 0, sub_spans_pruned = 0;
   std::size_t sbound_passes = 0;
   std::size_t primitives = 0, primitives_pruned = 0;
   std::string span_before, span_after;     // first examined sub-span, as text
+  std::vector<Span_stats> spans;
   // Divide-and-conquer (§4.1)
   std::vector<std::size_t> regions_per_depth;
   std::size_t conquers = 0, leaves_at_conquer = 0, max_leaves_at_conquer = 0;
+  std::string conquered_box;               // hull of the regions conquered (last span)
   // Generate-and-test (§4.2, Appendix A)
   std::size_t lines = 0, points_classified = 0, cells_tested = 0;
   // Time per stage, seconds

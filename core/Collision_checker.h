@@ -33,13 +33,13 @@ public:
 
   static constexpr int max_sbound_passes = 16;
 
-  Collision_checker(const K& k, const Scene_model<K>& model, Check_stats& stats)
-    : k_(k), model_(model), stats_(stats), sb_(k)
+  Collision_checker(const K& k, const Scene_model<K>& model, Check_stats& stats, bool use_sbounds = true)
+    : k_(k), model_(model), stats_(stats), sb_(k), use_sbounds_(use_sbounds)
   {
     auto start = std::chrono::steady_clock::now();
     for (const auto& o : model_.objects) {
       settled_.push_back(sb_.initial(o.csg));
-      stats_.sbound_passes += sb_.settle(o.csg, settled_.back(), max_sbound_passes);
+      if (use_sbounds_) stats_.sbound_passes += sb_.settle(o.csg, settled_.back(), max_sbound_passes);
     }
     stats_.seconds_sbounds += seconds_since(start);
   }
@@ -62,6 +62,7 @@ private:
   const Scene_model<K>& model_;
   Check_stats& stats_;
   S_bounds<K> sb_;
+  bool use_sbounds_;
   std::vector<typename S_bounds<K>::Bounds> settled_;
 
   struct Moving {
@@ -87,19 +88,35 @@ private:
     auto start = std::chrono::steady_clock::now();
     Moving A = moving(a, span), B = moving(b, span);
     FT tl = span.lo, th = span.hi;
-    bool alive = four_d_bounds(A, B, tl, th);
-    count_pruned(A);
-    count_pruned(B);
+    bool alive = use_sbounds_ ? four_d_bounds(A, B, tl, th) : true;
+    Span_stats ss;
+    ss.pair = A.object->name + "/" + B.object->name;
+    ss.span = interval_text(span.lo, span.hi);
+    ss.narrowed = alive ? interval_text(tl, th) : "empty";
+    count_pruned(A, ss);
+    count_pruned(B, ss);
     if (stats_.span_before.empty()) {
-      stats_.span_before = "[" + k_.to_text(span.lo) + ", " + k_.to_text(span.hi) + "]";
-      stats_.span_after = alive ? "[" + k_.to_text(tl) + ", " + k_.to_text(th) + "]" : "empty";
+      stats_.span_before = ss.span;
+      stats_.span_after = ss.narrowed;
     }
     stats_.seconds_sbounds += seconds_since(start);
-    if (!alive) { ++stats_.sub_spans_pruned; return false; }
+    if (!alive) {
+      ++stats_.sub_spans_pruned;
+      stats_.spans.push_back(ss);
+      return false;
+    }
 
     start = std::chrono::steady_clock::now();
     Vector3<FT> shear;
-    Box4 region = fitted_region(A, B, tl, th, shear);
+    stats_.conquered_box.clear();
+    Box4 region = use_sbounds_ ? fitted_region(A, B, tl, th, shear) : original_region(A, B, span, shear);
+    for (int q = 0; q < 4; ++q) ss.region += std::string(q ? " x " : "") + interval_text(region.lo[q], region.hi[q]);
+    if (has_no_interior(k_, region)) {
+      ss.narrowed = "empty";
+      stats_.spans.push_back(ss);
+      return false;
+    }
+    for (int q = 0; q < 3; ++q) ss.frame += std::string(q ? " " : "") + k_.to_text(shear[q]);
     std::vector<H> table;
     add_planes(A, shear, table);
     std::size_t offset_b = table.size();
@@ -112,9 +129,14 @@ private:
     emit(B, 0, false, builder, next);
     builder.close(Formula::Op::And, mark);
     Formula formula = builder.finish();
+    ss.leaves = formula.leaf_count();
+    stats_.spans.push_back(ss);
     Divide_and_conquer<K> dc(k_, table, stats_);
     auto found = dc.search(region, formula);
     stats_.seconds_divide += seconds_since(start);
+    if (!dc.conquered().empty)
+      for (int q = 0; q < 4; ++q)
+        stats_.conquered_box += std::string(q ? " x " : "") + interval_text(dc.conquered().lo[q], dc.conquered().hi[q]);
     if (!found) return false;
 
     start = std::chrono::steady_clock::now();
@@ -145,14 +167,45 @@ private:
     return true;
   }
 
-  void count_pruned(const Moving& m)
+  void count_pruned(const Moving& m, Span_stats& ss)
   {
     const auto& nodes = m.object->csg.nodes;
     for (std::size_t i = 0; i < nodes.size(); ++i)
       if (nodes[i].op == Csg_node::Op::Primitive) {
         ++stats_.primitives;
+        ++ss.primitives;
         stats_.primitives_pruned += m.beta[i].empty;
+        ss.primitives_alive += !m.beta[i].empty;
       }
+  }
+
+  std::string interval_text(const FT& lo, const FT& hi) const { return "[" + k_.to_text(lo) + ", " + k_.to_text(hi) + "]"; }
+
+  // §4.1's original bound: each object's box at the span's ends (its swept box
+  // under one velocity), intersected, with the span's times; no shear.
+  Box4 original_region(const Moving& A, const Moving& B, const Time_span<FT>& span, Vector3<FT>& shear) const
+  {
+    Box3 sweep[2];
+    int i = 0;
+    for (const Moving* m : {&A, &B}) {
+      Box3 at_lo = m->beta[0], at_hi = m->beta[0];
+      for (int q = 0; q < 3; ++q) {
+        FT dlo = m->v[q] * span.lo + m->o[q], dhi = m->v[q] * span.hi + m->o[q];
+        at_lo.lo[q] += dlo; at_lo.hi[q] += dlo;
+        at_hi.lo[q] += dhi; at_hi.hi[q] += dhi;
+      }
+      sweep[i++] = join(at_lo, at_hi);
+    }
+    Box3 both = meet(sweep[0], sweep[1]);
+    Box4 region;
+    for (int q = 0; q < 3; ++q) {
+      if (!both.has_lo[q] || !both.has_hi[q])
+        throw Input_error("", "the original bounding procedure needs bounded objects", CLASH4D_EXIT_LIMIT);
+      region.set(q, both.lo[q], both.hi[q]);
+      shear[q] = FT(0);
+    }
+    region.set(3, span.lo, span.hi);
+    return region;
   }
 
   // Appendix B, "optimal fitting": per axis, measure q in the frame of the

@@ -35,6 +35,7 @@ public:
     std::size_t leaves = f.leaf_count();
     if (leaves < kappa(depth) || depth >= max_depth) {
       ++stats_.conquers;
+      conquered_ = join(conquered_, region);
       stats_.leaves_at_conquer += leaves;
       stats_.max_leaves_at_conquer = std::max(stats_.max_leaves_at_conquer, leaves);
       return conquer_.run(f, region);
@@ -67,9 +68,13 @@ public:
     return Truth::Unknown;
   }
 
+  // The smallest box holding every region handed to generate-and-test.
+  const Box4& conquered() const { return conquered_; }
+
 private:
   const K& k_;
   const std::vector<H>& table_;
+  Box4 conquered_ = Box4::nothing();
   Check_stats& stats_;
   Generate_and_test<K> conquer_;
 

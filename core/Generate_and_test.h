@@ -138,11 +138,20 @@ private:
     }
     if (!has_lo || !has_hi || k_.compare(s_hi, s_lo) != CGAL::POSITIVE) return std::nullopt;
     std::vector<FT> cuts{s_lo, s_hi};
+    FT centre = (s_lo + s_hi) / FT(2);
     for (std::size_t p = 0; p < planes_.size(); ++p) {
-      if (k_.sign(along_[p]) == CGAL::ZERO) continue;
+      sign_[p] = 0;   // Unknown on the segment unless constant there
+      if (k_.sign(along_[p]) == CGAL::ZERO) {
+        sign_[p] = static_cast<int>(k_.sign(at_base_[p]));
+        continue;
+      }
       FT cut = -at_base_[p] / along_[p];
       if (k_.less(s_lo, cut) && k_.less(cut, s_hi)) cuts.push_back(cut);
+      else sign_[p] = static_cast<int>(k_.sign(at_base_[p] + centre * along_[p]));
     }
+    // Cheap rejection of the whole segment: false whatever the planes that
+    // cut it (or contain it) do, hence false at every midpoint on it.
+    if (f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) == Truth::False) return std::nullopt;
     std::sort(cuts.begin(), cuts.end());
     for (std::size_t q = 0; q + 1 < cuts.size(); ++q) {
       if (k_.compare(cuts[q + 1], cuts[q]) == CGAL::ZERO) continue;

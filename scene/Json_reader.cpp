@@ -1,5 +1,6 @@
 #include "scene/Json_reader.h"
 #include "scene/Input_error.h"
+#include "scene/Number_text.h"
 
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -67,8 +68,15 @@ public:
     std::string what = ex.what();
     // nlohmann says "number overflow" for JSON numbers beyond double's range;
     // they are exact rationals to us, but the reader cannot hold their text.
-    if (what.find("number overflow") != std::string::npos)
+    if (what.find("number overflow") != std::string::npos) {
+      Number_parse p = parse_number_text(token, false);
+      if (p.limit) {
+        exit_code = CLASH4D_EXIT_LIMIT;
+        place = value_path();
+        return fail("number " + token.substr(0, 40) + ": " + p.error);
+      }
       return fail("number " + token + " is too large for a JSON number here; write it as a string, e.g. \"" + token + "\"", position);
+    }
     std::size_t colon = what.find("syntax error");
     return fail(colon == std::string::npos ? what : what.substr(colon), position);
   }
@@ -86,16 +94,18 @@ private:
     }
     return false;
   }
-  // The JSON path of the innermost open container, e.g. objects[1].shape.
-  std::string container_path() const
+  // The JSON path of the innermost open container, e.g. objects[1].shape,
+  // or with the value being read, of that value (e.g. objects[1].shape.block).
+  std::string container_path(bool with_value = false) const
   {
     std::string path;
-    for (std::size_t i = 0; i + 1 < stack_.size(); ++i) {
+    for (std::size_t i = 0; i + (with_value ? 0 : 1) < stack_.size(); ++i) {
       if (stack_[i].kind == Json_value::Kind::Array) path += "[" + std::to_string(stack_[i].items.size()) + "]";
       else path += (path.empty() ? "" : ".") + keys_[i];
     }
     return path;
   }
+  std::string value_path() const { return container_path(true); }
   bool number(const std::string& s) { Json_value v; v.kind = Json_value::Kind::Number; v.text = s; return add(std::move(v)); }
   bool open(Json_value::Kind k)
   {

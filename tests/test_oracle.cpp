@@ -1,0 +1,392 @@
+#define BOOST_TEST_MODULE oracle
+#include <boost/test/unit_test.hpp>
+
+// The pipeline (run_check: S-bounds, divide-and-conquer, generate-and-test)
+// held against an independent brute-force oracle (support/Brute_force_oracle.h)
+// on thousands of small random scenes where contact is frequent.
+//
+// CLASH4D_SEED overrides the campaign seed, CLASH4D_ORACLE_CASES the number of
+// exact cases, CLASH4D_ORACLE_DOUBLE_CASES the number of double cases.
+
+#include "core/Check_runner.h"
+#include "exact/Exact_kernel.h"
+#include "float/Double_kernel.h"
+#include "scene/Json_reader.h"
+#include "scene/Number_text.h"
+#include "scene/Scene_reader.h"
+#include "support/Brute_force_oracle.h"
+#include "support/Random_scene.h"
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+using namespace clash4d;
+using oracle::Q;
+using oracle::Vec3;
+
+namespace {
+
+std::uint64_t env_number(const char* name, std::uint64_t fallback)
+{
+  const char* v = std::getenv(name);
+  if (!v || !*v) return fallback;
+  return std::strtoull(v, nullptr, 10);
+}
+
+std::uint64_t campaign_seed() { return env_number("CLASH4D_SEED", 20261121ull); }
+
+// One engine per case, so a case is reproducible from its own seed.
+std::uint64_t case_seed(std::uint64_t seed, std::uint64_t index)
+{
+  std::uint64_t z = seed + 0x9e3779b97f4a7c15ull * (index + 1);   // splitmix64
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+// --- Strict membership, evaluated in each primitive's own frame -------------
+// Kleene logic: a point on a plane of a primitive makes that primitive Unknown.
+// `zero` records whether any plane of any primitive vanishes at the point.
+
+enum class Tri { False, True, Unknown };
+Tri tri_not(Tri a) { return a == Tri::Unknown ? a : (a == Tri::True ? Tri::False : Tri::True); }
+Tri tri_and(Tri a, Tri b)
+{
+  if (a == Tri::False || b == Tri::False) return Tri::False;
+  return (a == Tri::True && b == Tri::True) ? Tri::True : Tri::Unknown;
+}
+Tri tri_or(Tri a, Tri b) { return tri_not(tri_and(tri_not(a), tri_not(b))); }
+
+// Signs of the primitive's defining expressions at local point q: negative
+// means inside. Written from the spec's definitions, not from any pipeline code.
+std::vector<Q> primitive_values(const Solid& s, const Vec3& q)
+{
+  using K = Solid::Kind;
+  const auto& v = s.numbers;
+  std::vector<Q> out;
+  switch (s.kind) {
+    case K::Halfspace: out.push_back(v[0] * q[0] + v[1] * q[1] + v[2] * q[2] + v[3]); break;
+    case K::Block:
+      for (int a = 0; a < 3; ++a) {
+        out.push_back(v[a] - q[a]);
+        out.push_back(q[a] - v[3 + a]);
+      }
+      break;
+    case K::Convex:
+      for (std::size_t i = 0; i < v.size(); i += 4) out.push_back(v[i] * q[0] + v[i + 1] * q[1] + v[i + 2] * q[2] + v[i + 3]);
+      break;
+    case K::Prism: {
+      std::size_t n = (v.size() - 2) / 2;
+      for (std::size_t i = 0; i < n; ++i) {
+        std::size_t j = (i + 1) % n;
+        // left of the directed edge (counter-clockwise base) is inside
+        Q cross = (v[2 * j] - v[2 * i]) * (q[1] - v[2 * i + 1]) - (v[2 * j + 1] - v[2 * i + 1]) * (q[0] - v[2 * i]);
+        out.push_back(-cross);
+      }
+      out.push_back(v[2 * n] - q[2]);
+      out.push_back(q[2] - v[2 * n + 1]);
+      break;
+    }
+    case K::Hull:
+      // the validated facets: outward by the right-hand rule
+      for (const auto& t : s.triples) {
+        Vec3 a{v[3 * t[0]], v[3 * t[0] + 1], v[3 * t[0] + 2]};
+        Vec3 b{v[3 * t[1]], v[3 * t[1] + 1], v[3 * t[1] + 2]};
+        Vec3 c{v[3 * t[2]], v[3 * t[2] + 1], v[3 * t[2] + 2]};
+        out.push_back(oracle::dot3(oracle::cross3(oracle::sub3(b, a), oracle::sub3(c, a)), oracle::sub3(q, a)));
+      }
+      break;
+    default: break;
+  }
+  return out;
+}
+
+Tri classify(const Solid& s, const Vec3& q, bool& zero)
+{
+  using K = Solid::Kind;
+  switch (s.kind) {
+    case K::Translate: return classify(s.children[0], {q[0] - s.numbers[0], q[1] - s.numbers[1], q[2] - s.numbers[2]}, zero);
+    case K::Rotate: {
+      // q = R q' with R orthogonal, so q' = R^T q
+      oracle::Mat3 R = oracle::quaternion_matrix(s.numbers[0], s.numbers[1], s.numbers[2], s.numbers[3]);
+      Vec3 local;
+      for (int j = 0; j < 3; ++j) local[j] = R[0][j] * q[0] + R[1][j] * q[1] + R[2][j] * q[2];
+      return classify(s.children[0], local, zero);
+    }
+    case K::Union: {
+      Tri r = Tri::False;
+      for (const Solid& c : s.children) r = tri_or(r, classify(c, q, zero));
+      return r;
+    }
+    case K::Intersection: {
+      Tri r = Tri::True;
+      for (const Solid& c : s.children) r = tri_and(r, classify(c, q, zero));
+      return r;
+    }
+    case K::Difference: {
+      Tri r = classify(s.children[0], q, zero);
+      for (std::size_t i = 1; i < s.children.size(); ++i) r = tri_and(r, tri_not(classify(s.children[i], q, zero)));
+      return r;
+    }
+    default: {
+      Tri r = Tri::True;
+      for (const Q& h : primitive_values(s, q)) {
+        CGAL::Sign sg = CGAL::sign(h);
+        if (sg == CGAL::ZERO) zero = true;
+        r = tri_and(r, sg == CGAL::NEGATIVE ? Tri::True : sg == CGAL::POSITIVE ? Tri::False : Tri::Unknown);
+      }
+      return r;
+    }
+  }
+}
+
+// Is (x, t) strictly inside object i at time t? `zero` as above.
+Tri inside_at(const Scene& scene, int i, const std::array<Q, 4>& p, bool& zero)
+{
+  Vec3 d = oracle::displacement(scene.objects[i].motion, p[3]);
+  return classify(scene.objects[i].shape, {p[0] - d[0], p[1] - d[1], p[2] - d[2]}, zero);
+}
+
+std::string point_text(const std::array<Q, 4>& p)
+{
+  return "(" + to_string(p[0]) + ", " + to_string(p[1]) + ", " + to_string(p[2]) + ", t=" + to_string(p[3]) + ")";
+}
+
+int object_index(const Scene& scene, const std::string& name)
+{
+  for (std::size_t i = 0; i < scene.objects.size(); ++i)
+    if (scene.objects[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+// A witness as the pipeline prints it: checkable by sign evaluation alone.
+std::string witness_problem(const Scene& scene, const Pair_answer& p, bool exact_text = true)
+{
+  std::array<Q, 4> w;
+  for (int k = 0; k < 4; ++k) {
+    Number_parse n = parse_number_text(p.witness[k], true);
+    if (!n.ok) return "witness coordinate '" + p.witness[k] + "' does not parse: " + n.error;
+    if (exact_text && to_string(n.value) != p.witness[k]) return "witness coordinate '" + p.witness[k] + "' is not in lowest terms p/q";
+    w[k] = n.value;
+  }
+  if (!(scene.t_lo < w[3] && w[3] < scene.t_hi)) return "witness time outside (tL, tH): " + point_text(w);
+  for (const std::string& name : {p.a, p.b}) {
+    int i = object_index(scene, name);
+    if (i < 0) return "witness names unknown object '" + name + "'";
+    bool zero = false;
+    Tri in = inside_at(scene, i, w, zero);
+    if (in != Tri::True) return "witness " + point_text(w) + " is not strictly inside '" + name + "'";
+    if (zero) return "witness " + point_text(w) + " lies on a plane of a primitive of '" + name + "'";
+  }
+  return "";
+}
+
+struct Verdicts {
+  std::vector<std::pair<int, int>> colliding;   // pairs, in order
+  bool touch = false;                            // no collision, closures meet
+  std::size_t lps = 0;
+};
+
+Verdicts oracle_verdicts(const Scene& scene, bool want_touch, std::string& problem)
+{
+  Verdicts v;
+  int n = static_cast<int>(scene.objects.size());
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) {
+      if (scene.ignored(a, b)) continue;
+      oracle::Pair_verdict pv = oracle::oracle_pair(scene, a, b, want_touch);
+      v.lps += pv.lps;
+      if (pv.collide) {
+        v.colliding.push_back({a, b});
+        // Self-check: the oracle's own witness satisfies both strict formulas
+        // as evaluated in the primitives' frames.
+        bool zero = false;
+        if (!(scene.t_lo < pv.witness[3] && pv.witness[3] < scene.t_hi) ||
+            inside_at(scene, a, pv.witness, zero) != Tri::True || inside_at(scene, b, pv.witness, zero) != Tri::True)
+          problem += "oracle witness " + point_text(pv.witness) + " for " + scene.objects[a].name + "/" +
+                     scene.objects[b].name + " fails the independent membership check; ";
+      }
+      v.touch = v.touch || pv.touch;
+    }
+  if (!v.colliding.empty()) v.touch = false;
+  return v;
+}
+
+std::string pairs_text(const Scene& scene, const std::vector<std::pair<int, int>>& ps)
+{
+  std::string s = "[";
+  for (const auto& p : ps) s += (s.size() > 1 ? ", " : "") + scene.objects[p.first].name + "/" + scene.objects[p.second].name;
+  return s + "]";
+}
+
+void save_case(const std::string& tag, std::uint64_t index, const std::string& json)
+{
+  std::ofstream("/tmp/clash4d_oracle_" + tag + "_" + std::to_string(index) + ".json") << json << "\n";
+}
+
+double since(std::chrono::steady_clock::time_point s)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - s).count();
+}
+
+} // namespace
+
+// A few hand-made contact cases the oracle itself must get right, so that a
+// broken oracle cannot pass the campaign by agreeing with a broken pipeline.
+BOOST_AUTO_TEST_CASE(oracle_knows_contact_from_collision)
+{
+  auto scene = [](const std::string& a, const std::string& b, const std::string& motion, const char* span = "[0,4]") {
+    return read_scene(read_json_text(std::string("{\"format\":\"clash4d-scene/1\",\"time\":") + span + ",\"objects\":[" +
+                                     "{\"name\":\"a\",\"shape\":" + a + "},{\"name\":\"b\",\"shape\":" + b +
+                                     ",\"motion\":\"" + motion + "\"}]}"));
+  };
+  const std::string unit = R"({"block":{"min":[0,0,0],"max":[1,1,1]}})";
+  // face contact at rest
+  BOOST_TEST(!oracle_collide(scene(unit, R"({"block":{"min":[1,0,0],"max":[2,1,1]}})", "rest"), 0, 1));
+  // overlap at rest
+  BOOST_TEST(oracle_collide(scene(unit, R"({"block":{"min":["1/2",0,0],"max":[2,1,1]}})", "rest"), 0, 1));
+  // sliding along a face
+  BOOST_TEST(!oracle_collide(scene(unit, R"({"block":{"min":[-2,1,0],"max":[-1,2,1]}})", "vel 1 0 0"), 0, 1));
+  // touching for one instant: b comes to x=1 at t=1 and goes back
+  BOOST_TEST(!oracle_collide(scene(unit, R"({"block":{"min":[2,0,0],"max":[3,1,1]}})", "vel -1 0 0 until 1 vel 1 0 0"), 0, 1));
+  // ... one unit further in: overlap
+  BOOST_TEST(oracle_collide(scene(unit, R"({"block":{"min":[2,0,0],"max":[3,1,1]}})", "vel -1 0 0 until 2 vel 1 0 0"), 0, 1));
+  // overlap only at the end of the span
+  BOOST_TEST(!oracle_collide(scene(unit, R"({"block":{"min":[5,0,0],"max":[6,1,1]}})", "vel -1 0 0"), 0, 1));
+  BOOST_TEST(oracle_collide(scene(unit, R"({"block":{"min":[5,0,0],"max":[6,1,1]}})", "vel -1 0 0", "[0,5]"), 0, 1));
+  // edge against edge
+  BOOST_TEST(!oracle_collide(scene(unit, R"({"block":{"min":[1,1,0],"max":[2,2,1]}})", "rest"), 0, 1));
+  // a union seam is not a gap: a block straddling the seam collides
+  const std::string two = R"({"union":[{"block":{"min":[0,0,0],"max":[1,1,1]}},{"block":{"min":[1,0,0],"max":[2,1,1]}}]})";
+  BOOST_TEST(oracle_collide(scene(two, R"({"block":{"min":["1/2",0,1],"max":["3/2",1,2]}})", "vel 0 0 -1"), 0, 1));
+  // a difference leaves a slot exactly as wide as b: sliding in is contact only
+  const std::string slot = R"({"difference":[{"block":{"min":[0,0,0],"max":[3,1,1]}},{"block":{"min":[1,0,0],"max":[2,1,1]}}]})";
+  BOOST_TEST(!oracle_collide(scene(slot, R"({"block":{"min":[1,0,2],"max":[2,1,3]}})", "vel 0 0 -1"), 0, 1));
+  // a tetrahedron's face x+y+z=1 against a block corner at (1/3,1/3,1/3) + ...
+  const std::string tet = R"({"hull":[[0,0,0],[1,0,0],[0,1,0],[0,0,1]]})";
+  BOOST_TEST(!oracle_collide(scene(tet, R"({"block":{"min":["1/3","1/3","1/3"],"max":[1,1,1]}})", "rest"), 0, 1));
+  BOOST_TEST(oracle_collide(scene(tet, R"({"block":{"min":["1/4","1/4","1/4"],"max":[1,1,1]}})", "rest"), 0, 1));
+  // touch detection
+  oracle::Pair_verdict v = oracle::oracle_pair(scene(unit, R"({"block":{"min":[1,1,1],"max":[2,2,2]}})", "rest"), 0, 1, true);
+  BOOST_TEST((!v.collide && v.touch));
+  v = oracle::oracle_pair(scene(unit, R"({"block":{"min":[3,0,0],"max":[4,1,1]}})", "vel -1 0 0", "[0,1]"), 0, 1, true);
+  BOOST_TEST((!v.collide && !v.touch));
+}
+
+BOOST_AUTO_TEST_CASE(exact_pipeline_agrees_with_oracle)
+{
+  std::uint64_t seed = campaign_seed();
+  std::uint64_t cases = env_number("CLASH4D_ORACLE_CASES", 2000);
+  BOOST_TEST_MESSAGE("oracle campaign (exact): seed " << seed << ", " << cases << " scenes (CLASH4D_SEED, CLASH4D_ORACLE_CASES)");
+  std::size_t collide = 0, touch = 0, miss = 0, mismatches = 0, lps = 0, witnesses = 0, three = 0, max_terms = 0;
+  double t_oracle = 0, t_pipeline = 0, slowest = 0;
+  std::uint64_t slowest_case = 0;
+  for (std::uint64_t i = 0; i < cases; ++i) {
+    std::mt19937_64 rng(case_seed(seed, i));
+    Random_scene rs = random_scene_with_text(rng);
+    const Scene& scene = rs.scene;
+    three += scene.objects.size() > 2;
+    for (std::size_t k = 0; k < scene.objects.size(); ++k)
+      max_terms = std::max(max_terms, oracle::term_count(oracle::nnf_of(scene.objects[k].shape, oracle::Frame(), false)));
+    std::string where = "case " + std::to_string(i) + " (seed " + std::to_string(seed) + "):\n" + rs.json;
+
+    std::string oracle_problem;
+    auto start = std::chrono::steady_clock::now();
+    Verdicts v;
+    try {
+      v = oracle_verdicts(scene, true, oracle_problem);
+    } catch (const std::exception& e) {
+      BOOST_ERROR("oracle failed on " << where << "\n" << e.what());
+      continue;
+    }
+    t_oracle += since(start);
+    lps += v.lps;
+    if (!oracle_problem.empty()) BOOST_ERROR(oracle_problem << "\n" << where);
+    bool expect = !v.colliding.empty();
+    (expect ? collide : v.touch ? touch : miss)++;
+
+    Check_options opts;
+    opts.all_pairs = i % 2 == 1;
+    start = std::chrono::steady_clock::now();
+    Check_answer ans;
+    try {
+      ans = run_check(Exact_kernel(), scene, opts);
+    } catch (const std::exception& e) {
+      ++mismatches;
+      save_case("exact", i, rs.json);
+      BOOST_ERROR("pipeline threw on " << where << "\n" << e.what());
+      continue;
+    }
+    double took = since(start);
+    t_pipeline += took;
+    if (took > slowest) { slowest = took; slowest_case = i; }
+
+    std::vector<std::pair<int, int>> got;
+    for (const auto& p : ans.pairs) got.push_back({object_index(scene, p.a), object_index(scene, p.b)});
+    std::vector<std::pair<int, int>> want = v.colliding;
+    if (!opts.all_pairs && !want.empty()) want.resize(1);
+    if (ans.collide != expect || got != want) {
+      ++mismatches;
+      save_case("exact", i, rs.json);
+      BOOST_ERROR("pipeline and oracle disagree on " << where << "\noracle: colliding pairs " << pairs_text(scene, v.colliding)
+                  << (v.touch ? " (closures touch)" : "") << "; pipeline: collide=" << ans.collide << " pairs "
+                  << pairs_text(scene, got) << (opts.all_pairs ? " (all pairs)" : " (first pair)"));
+      continue;
+    }
+    for (const auto& p : ans.pairs) {
+      ++witnesses;
+      std::string problem = witness_problem(scene, p);
+      if (!problem.empty()) {
+        ++mismatches;
+        save_case("witness", i, rs.json);
+        BOOST_ERROR("bad witness for " << p.a << "/" << p.b << ": " << problem << "\n" << where);
+      }
+      if (!p.witness_verified) BOOST_ERROR("exact witness not marked verified: " << where);
+    }
+  }
+  std::size_t total = collide + touch + miss;
+  BOOST_TEST_MESSAGE("oracle campaign (exact): " << total << " scenes (" << three << " with three objects): " << collide
+                     << " collide, " << touch << " touch without colliding, " << miss << " miss; " << mismatches
+                     << " disagreements; " << witnesses << " witnesses checked; oracle " << lps << " LPs in " << t_oracle
+                     << " s (largest object DNF: " << max_terms << " terms)"
+                      << ", pipeline " << t_pipeline << " s (slowest: case " << slowest_case << ", " << slowest << " s)");
+  BOOST_TEST(mismatches == 0u);
+  BOOST_TEST(total == cases);
+  BOOST_TEST(collide * 5 >= total, "collisions are " << collide << " of " << total << ", want >= 20%");
+  BOOST_TEST((touch + miss) * 5 >= total, "non-collisions are " << touch + miss << " of " << total << ", want >= 20%");
+  BOOST_TEST(touch * 10 >= total, "contact cases are " << touch << " of " << total << ", want >= 10%");
+}
+
+BOOST_AUTO_TEST_CASE(double_pipeline_runs)
+{
+  std::uint64_t seed = campaign_seed() + 1;
+  std::uint64_t cases = env_number("CLASH4D_ORACLE_DOUBLE_CASES", 500);
+  BOOST_TEST_MESSAGE("oracle campaign (double): seed " << seed << ", " << cases << " scenes");
+  std::size_t disagree = 0, false_collide = 0, missed = 0, bad_witness = 0, collide = 0;
+  double t_pipeline = 0;
+  for (std::uint64_t i = 0; i < cases; ++i) {
+    std::mt19937_64 rng(case_seed(seed, i));
+    Random_scene rs = random_scene_with_text(rng);
+    std::string problem;
+    Verdicts v = oracle_verdicts(rs.scene, false, problem);
+    bool expect = !v.colliding.empty();
+    collide += expect;
+    auto start = std::chrono::steady_clock::now();
+    Check_answer ans;
+    BOOST_CHECK_NO_THROW(ans = run_check(Double_kernel(), rs.scene, Check_options()));
+    t_pipeline += since(start);
+    if (ans.collide != expect) {
+      ++disagree;
+      (ans.collide ? false_collide : missed)++;
+    } else if (ans.collide) {
+      // a double witness is text for a double; check it exactly anyway (informative)
+      if (!witness_problem(rs.scene, ans.pairs[0], false).empty()) ++bad_witness;
+    }
+  }
+  BOOST_TEST_MESSAGE("oracle campaign (double): " << cases << " scenes, " << collide << " collide by the oracle; double disagrees on "
+                     << disagree << " (" << false_collide << " false collisions, " << missed << " missed); " << bad_witness
+                     << " agreeing collisions with a witness that fails the exact check; pipeline " << t_pipeline << " s");
+}
