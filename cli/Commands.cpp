@@ -122,18 +122,32 @@ json stats_json(const Check_stats& s)
                        {"divide_and_conquer", s.seconds_divide}, {"witness", s.seconds_witness}}}};
 }
 
-void print_check(const Check_answer& a, bool as_json, bool all_pairs, bool stats, double tolerance, std::ostream& out)
+void print_check(const Check_answer& a, const Check_options& o, bool stats, double tolerance, std::ostream& out)
 {
-  if (as_json) {
+  // The earliest pair's witness is the one shown when --earliest is given.
+  const Pair_answer* main = nullptr;
+  if (a.collide) main = &a.pairs[o.earliest ? a.earliest_pair : 0];
+  if (o.json) {
     json j = {{"collide", a.collide}, {"number", a.number}};
     if (a.number == "double") j["tolerance"] = tolerance;
-    auto pair_json = [](const Pair_answer& p) {
+    auto witness_json = [](const Pair_answer& p) {
       return json{{"objects", {p.a, p.b}}, {"point", p.witness}, {"verified", p.witness_verified}};
     };
-    if (a.collide) j["witness"] = pair_json(a.pairs.front());
-    if (all_pairs) {
+    auto earliest_json = [](const Pair_answer& p) {
+      return json{{"t", p.t_star}, {"point", p.contact}, {"at_start", p.at_start}};
+    };
+    if (main) j["witness"] = witness_json(*main);
+    if (main && o.earliest) {
+      j["earliest"] = earliest_json(*main);
+      j["earliest"]["objects"] = {main->a, main->b};
+    }
+    if (o.all_pairs) {
       j["pairs"] = json::array();
-      for (const auto& p : a.pairs) j["pairs"].push_back({{"objects", {p.a, p.b}}, {"witness", pair_json(p)}});
+      for (const auto& p : a.pairs) {
+        json e = {{"objects", {p.a, p.b}}, {"witness", witness_json(p)}};
+        if (o.earliest) e["earliest"] = earliest_json(p);
+        j["pairs"].push_back(e);
+      }
     }
     if (stats) j["stats"] = stats_json(a.stats);
     out << j.dump(2) << "\n";
@@ -141,10 +155,15 @@ void print_check(const Check_answer& a, bool as_json, bool all_pairs, bool stats
   }
   if (!a.collide) out << "no collision (" << a.number << ")\n";
   for (const auto& p : a.pairs) {
+    if (!o.all_pairs && &p != main) continue;
     out << "collision: " << p.a << " and " << p.b << " (" << a.number << ")\n";
     out << "  witness: x = " << p.witness[0] << ", y = " << p.witness[1] << ", z = " << p.witness[2]
         << ", t = " << p.witness[3] << (p.witness_verified ? "" : "  [NOT verified: fails the strict check]") << "\n";
+    if (p.earliest)
+      out << "  earliest: t* = " << p.t_star << " at x = " << p.contact[0] << ", y = " << p.contact[1]
+          << ", z = " << p.contact[2] << (p.at_start ? "  (already overlapping at the start of the span)" : "") << "\n";
   }
+  if (o.earliest && main && o.all_pairs) out << "earliest pair: " << main->a << " and " << main->b << "\n";
   if (stats) {
     out << "stats:\n";
     json s = stats_json(a.stats);
@@ -177,6 +196,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   check_cmd->add_option("--number", number, "number type: exact (default) or double")->check(CLI::IsMember({"exact", "double"}));
   check_cmd->add_option("--tolerance", tolerance, "double only: treat |value| <= EPS as zero (default 0)")->check(CLI::NonNegativeNumber);
   check_cmd->add_flag("--all-pairs", all_pairs, "list every colliding pair instead of stopping at the first");
+  bool earliest = false;
+  check_cmd->add_flag("--earliest", earliest, "find the earliest collision time t* (exact) and a contact point (§5)");
   check_cmd->add_flag("--json", as_json, "print one JSON object (spec: check)");
   check_cmd->add_flag("--stats", stats, "report what each stage did");
   bool no_sbounds = false;
@@ -211,8 +232,10 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     Check_options options;
     options.all_pairs = all_pairs;
     options.sbounds = !no_sbounds;
+    options.earliest = earliest;
+    options.json = as_json;
     Check_answer a = number == "exact" ? check_exact(scene, options) : check_double(scene, tolerance, options);
-    print_check(a, as_json, all_pairs, stats, tolerance, out);
+    print_check(a, options, stats, tolerance, out);
     return a.collide ? 1 : 0;
   });
 }

@@ -11,21 +11,28 @@ namespace clash4d {
 
 struct Check_options {
   bool all_pairs = false;     // examine every pair instead of stopping at the first collision
+  bool earliest = false;      // find each pair's earliest collision time t* (§5)
   // false: the paper's "original" bounding (the objects' boxes at the
   // velocity changes, intersected; §4.1) instead of S-bounds. Reproduction only.
   bool sbounds = true;
+  bool json = false;          // output form (used by the command line only)
 };
 
 struct Pair_answer {
   std::string a, b;                      // object names
   std::array<std::string, 4> witness;    // x, y, z, t
   bool witness_verified = false;
+  bool earliest = false;                 // the three below are set
+  std::string t_star;                    // exact t* (or the double's)
+  std::array<std::string, 4> contact;    // (x*, t*) in the closure of the collision region
+  bool at_start = false;                 // t* = tL: already overlapping when the span starts
 };
 
 struct Check_answer {
   std::string number;                    // "exact" or "double"
   bool collide = false;
   std::vector<Pair_answer> pairs;        // colliding pairs, in pair order
+  int earliest_pair = -1;                // index in pairs of the smallest t* (--earliest)
   Check_stats stats;
 };
 

@@ -20,6 +20,9 @@ struct Pair_result {
   bool collide = false;
   Vector4<FT> witness{};          // (x, y, z, t), generic, strictly inside both
   bool witness_verified = false;  // checked with strict signs against the scene
+  bool earliest = false;          // t_star and contact are set (--earliest)
+  FT t_star{};                    // inf of the collision times (§5)
+  Vector4<FT> contact{};          // (x*, t*) in the closure of the collision region
 };
 
 template <class K>
@@ -44,16 +47,24 @@ public:
     stats_.seconds_sbounds += seconds_since(start);
   }
 
-  Pair_result<FT> check_pair(int a, int b)
+  // earliest: find t* (§5) rather than stopping at the first witness;
+  // ceiling: in that mode, ignore collisions that start at or after it.
+  Pair_result<FT> check_pair(int a, int b, bool earliest = false, const FT* ceiling = nullptr)
   {
     ++stats_.pairs;
     Pair_result<FT> r;
     r.a = a;
     r.b = b;
+    Search_goal<FT> goal;
+    goal.earliest = earliest;
+    if (ceiling) { goal.has_ceiling = true; goal.ceiling = *ceiling; }
     for (const auto& span : model_.sub_spans({a, b})) {
+      if (!goal.can_improve(span.lo)) break;   // spans come in time order
       ++stats_.sub_spans;
-      if (check_span(a, b, span, r)) return r;
+      check_span(a, b, span, r, goal);
+      if (goal.done()) break;
     }
+    r.earliest = earliest && r.collide;
     return r;
   }
 
@@ -83,12 +94,13 @@ private:
     return {&obj, obj.motion.velocity[seg], obj.motion.offset[seg], settled_[i]};
   }
 
-  bool check_span(int a, int b, const Time_span<FT>& span, Pair_result<FT>& r)
+  void check_span(int a, int b, const Time_span<FT>& span, Pair_result<FT>& r, Search_goal<FT>& goal)
   {
     auto start = std::chrono::steady_clock::now();
     Moving A = moving(a, span), B = moving(b, span);
     FT tl = span.lo, th = span.hi;
     bool alive = use_sbounds_ ? four_d_bounds(A, B, tl, th) : true;
+    alive = alive && goal.can_improve(tl);
     Span_stats ss;
     ss.pair = A.object->name + "/" + B.object->name;
     ss.span = interval_text(span.lo, span.hi);
@@ -103,7 +115,7 @@ private:
     if (!alive) {
       ++stats_.sub_spans_pruned;
       stats_.spans.push_back(ss);
-      return false;
+      return;
     }
 
     start = std::chrono::steady_clock::now();
@@ -114,7 +126,7 @@ private:
     if (has_no_interior(k_, region)) {
       ss.narrowed = "empty";
       stats_.spans.push_back(ss);
-      return false;
+      return;
     }
     for (int q = 0; q < 3; ++q) ss.frame += std::string(q ? " " : "") + k_.to_text(shear[q]);
     std::vector<H> table;
@@ -132,21 +144,26 @@ private:
     ss.leaves = formula.leaf_count();
     stats_.spans.push_back(ss);
     Divide_and_conquer<K> dc(k_, table, stats_);
-    auto found = dc.search(region, formula);
+    goal.improved = false;
+    dc.search(region, formula, goal);
     stats_.seconds_divide += seconds_since(start);
     if (!dc.conquered().empty)
       for (int q = 0; q < 4; ++q)
         stats_.conquered_box += std::string(q ? " x " : "") + interval_text(dc.conquered().lo[q], dc.conquered().hi[q]);
-    if (!found) return false;
+    if (!goal.improved) return;
 
+    // Found here (or, earliest mode, earlier than before): the witness and
+    // contact point are made with this span's planes and frame.
     start = std::chrono::steady_clock::now();
     r.collide = true;
-    r.witness = witness(*found, table, region, shear, A, B, span);
+    r.witness = witness(goal.inside, table, region, shear, A, B, span);
     r.witness_verified = verify(r.witness, a, b);
+    r.t_star = goal.t_star;
+    r.contact = goal.contact;
+    for (int q = 0; q < 3; ++q) r.contact[q] += shear[q] * r.contact[3];
     stats_.seconds_witness += seconds_since(start);
     if (K::is_exact && !r.witness_verified)
       throw std::logic_error("internal error: the exact witness failed its check; please report this scene");
-    return true;
   }
 
   // §4.3.2: 3D Up/Down passes in each object, and the closed form of

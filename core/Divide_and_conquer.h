@@ -26,31 +26,39 @@ public:
 
   static std::size_t kappa(std::size_t d) { return 2 * d + 6; }
 
-  std::optional<Inside_point<FT>> search(const Box4& region, const Formula& formula, std::size_t depth = 0)
+  // Depth-first, earliest times first; the goal says when to stop.
+  void search(const Box4& region, const Formula& formula, Search_goal<FT>& goal, std::size_t depth = 0)
   {
+    if (!goal.can_improve(region.lo[3])) return;
     stats_.visit(depth);
     Formula f = formula.simplified([&](std::uint32_t h) { return status(table_[h], region); });
-    if (f.value() == Truth::False) return std::nullopt;
-    if (f.value() == Truth::True) return Inside_point<FT>{centre(region), zero()};
+    if (f.value() == Truth::False) return;
+    if (f.value() == Truth::True) {
+      // Every interior point is inside; the earliest is on the face t = lo.
+      Vector4<FT> c = centre(region), low = c;
+      low[3] = region.lo[3];
+      goal.record({c, zero()}, low);
+      return;
+    }
     std::size_t leaves = f.leaf_count();
     if (leaves < kappa(depth) || depth >= max_depth) {
       ++stats_.conquers;
       conquered_ = join(conquered_, region);
       stats_.leaves_at_conquer += leaves;
       stats_.max_leaves_at_conquer = std::max(stats_.max_leaves_at_conquer, leaves);
-      return conquer_.run(f, region);
+      conquer_.run(f, region, goal);
+      return;
     }
     // Sixteen sub-regions, earliest in time first (t is the slowest bit).
-    for (int child = 0; child < 16; ++child) {
+    for (int child = 0; child < 16 && !goal.done(); ++child) {
       Box4 sub = region;
       for (int a = 0; a < 4; ++a) {
         FT mid = (region.lo[a] + region.hi[a]) / FT(2);
         bool upper = (child >> a) & 1;
         (upper ? sub.lo[a] : sub.hi[a]) = mid;
       }
-      if (auto found = search(sub, f, depth + 1)) return found;
+      search(sub, f, goal, depth + 1);
     }
-    return std::nullopt;
   }
 
   // Over a closed box, min h >= 0 means the leaf is empty there and max h <= 0

@@ -12,19 +12,12 @@
 #include "core/Formula.h"
 #include "core/Hyperplane4.h"
 #include "core/Neighbourhood.h"
+#include "core/Search_goal.h"
 #include <algorithm>
 #include <optional>
 #include <vector>
 
 namespace clash4d {
-
-// A point of the region and a direction into an open cell inside the formula
-// next to it (zero when the point is already inside an open cell).
-template <class FT>
-struct Inside_point {
-  Vector4<FT> point;
-  Vector4<FT> direction;
-};
 
 template <class K>
 class Generate_and_test {
@@ -35,15 +28,16 @@ public:
 
   Generate_and_test(const K& k, const std::vector<H>& table, Check_stats& stats) : k_(k), table_(table), stats_(stats) {}
 
-  std::optional<Inside_point<FT>> run(const Formula& f, const Box<FT, 4>& region)
+  // Records what it finds in the goal; in earliest mode it examines every
+  // edge that could hold an earlier point (the least time over an edge is at
+  // one of its ends, and every vertex of a cell's closure ends such an edge).
+  void run(const Formula& f, const Box<FT, 4>& region, Search_goal<FT>& goal)
   {
     collect_planes(f, region);
     std::size_t n = planes_.size();
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = i + 1; j < n; ++j)
-        for (std::size_t m = j + 1; m < n; ++m)
-          if (auto found = on_line(f, i, j, m)) return found;
-    return std::nullopt;
+    for (std::size_t i = 0; i < n && !goal.done(); ++i)
+      for (std::size_t j = i + 1; j < n && !goal.done(); ++j)
+        for (std::size_t m = j + 1; m < n && !goal.done(); ++m) on_line(f, i, j, m, goal);
   }
 
 private:
@@ -111,32 +105,36 @@ private:
     return true;
   }
 
-  std::optional<Inside_point<FT>> on_line(const Formula& f, std::size_t i, std::size_t j, std::size_t m)
+  void on_line(const Formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<FT>& goal)
   {
     const H &a = planes_[i], &b = planes_[j], &c = planes_[m];
     V l = generalised_cross(a.n, b.n, c.n);
-    if (k_.is_zero(l)) return std::nullopt;
+    if (k_.is_zero(l)) return;
     ++stats_.lines;
     V base = base_point(a, b, c, l);
-    for (std::size_t p = 0; p < planes_.size(); ++p) {
-      at_base_[p] = planes_[p].value(base);
-      along_[p] = dot(planes_[p].n, l);
-    }
-    // The parameter range of the line inside the region.
+    // The parameter range of the line inside the region first: most lines of
+    // a conquer miss the region, and then no other plane need be evaluated.
     bool has_lo = false, has_hi = false;
     FT s_lo(0), s_hi(0);
     for (const auto& fp : face_plane_) {
       std::size_t p = fp.first;
+      at_base_[p] = planes_[p].value(base);
+      along_[p] = dot(planes_[p].n, l);
       int e = k_.sign(along_[p]) * fp.second;
       if (e == 0) {
-        if (k_.sign(at_base_[p]) * fp.second > 0) return std::nullopt;
+        if (k_.sign(at_base_[p]) * fp.second > 0) return;
         continue;
       }
       FT cut = -at_base_[p] / along_[p];
       if (e > 0) { if (!has_hi || cut < s_hi) s_hi = cut; has_hi = true; }
       else { if (!has_lo || s_lo < cut) s_lo = cut; has_lo = true; }
     }
-    if (!has_lo || !has_hi || k_.compare(s_hi, s_lo) != CGAL::POSITIVE) return std::nullopt;
+    if (!has_lo || !has_hi || k_.compare(s_hi, s_lo) != CGAL::POSITIVE) return;
+    if (!goal.can_improve(std::min(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
+    for (std::size_t p = 0; p < first_face_; ++p) {
+      at_base_[p] = planes_[p].value(base);
+      along_[p] = dot(planes_[p].n, l);
+    }
     std::vector<FT> cuts{s_lo, s_hi};
     FT centre = (s_lo + s_hi) / FT(2);
     for (std::size_t p = 0; p < planes_.size(); ++p) {
@@ -151,14 +149,17 @@ private:
     }
     // Cheap rejection of the whole segment: false whatever the planes that
     // cut it (or contain it) do, hence false at every midpoint on it.
-    if (f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) == Truth::False) return std::nullopt;
+    if (f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) == Truth::False) return;
     std::sort(cuts.begin(), cuts.end());
-    for (std::size_t q = 0; q + 1 < cuts.size(); ++q) {
+    for (std::size_t q = 0; q + 1 < cuts.size() && !goal.done(); ++q) {
       if (k_.compare(cuts[q + 1], cuts[q]) == CGAL::ZERO) continue;
+      // The edge's earlier end (time is linear along it).
+      const FT& s_early = l[3] < FT(0) ? cuts[q + 1] : cuts[q];
+      V early = point_along(base, s_early, l);
+      if (!goal.can_improve(early[3])) continue;
       FT mid = (cuts[q] + cuts[q + 1]) / FT(2);
-      if (auto found = classify(f, base, l, mid)) return found;
+      if (auto in = classify(f, base, l, mid)) goal.record(*in, early);
     }
-    return std::nullopt;
   }
 
   // The point on a, b and c orthogonal to l: a sum of the dual vectors

@@ -74,13 +74,13 @@ std::vector<std::array<int, 3>> hull_facets(const std::vector<Rational3>& points
 {
   std::vector<Point_3> pts;
   for (const auto& p : points) pts.push_back(to_point(p));
-  bool solid = false;
-  for (std::size_t i = 1; i < pts.size() && !solid; ++i)
-    for (std::size_t j = i + 1; j < pts.size() && !solid; ++j)
-      if (!CGAL::collinear(pts[0], pts[i], pts[j]))
-        for (std::size_t k = j + 1; k < pts.size() && !solid; ++k)
-          solid = CGAL::orientation(pts[0], pts[i], pts[j], pts[k]) != CGAL::COPLANAR;
-  if (!solid) throw std::invalid_argument("all points lie in one plane: the hull has no interior");
+  // Linear scans for a non-degenerate tetrahedron: a second point, then one
+  // off their line, then one off their plane.
+  std::size_t i = 1, j, k;
+  while (i < pts.size() && pts[i] == pts[0]) ++i;
+  for (j = i + 1; j < pts.size() && CGAL::collinear(pts[0], pts[i], pts[j]); ++j) {}
+  for (k = j + 1; k < pts.size() && CGAL::coplanar(pts[0], pts[i], pts[j], pts[k]); ++k) {}
+  if (k >= pts.size()) throw std::invalid_argument("all points lie in one plane: the hull has no interior");
 
   std::map<Point_3, int> index;
   for (std::size_t i = 0; i < pts.size(); ++i) index.emplace(pts[i], static_cast<int>(i));

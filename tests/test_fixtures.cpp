@@ -46,6 +46,16 @@ static void check_scene(const std::string& entry)
   Check_answer exact = check_exact(scene, opts);
   BOOST_TEST(exact.collide == expected["collide"].get<bool>(), entry << ": " << expected["why"]);
   for (const auto& p : exact.pairs) BOOST_TEST(p.witness_verified, entry << " witness " << p.a << "/" << p.b);
+  if (expected.contains("earliest")) {
+    opts.earliest = true;
+    Check_answer first = check_exact(scene, opts);
+    BOOST_TEST_REQUIRE(first.earliest_pair >= 0);
+    const Pair_answer& p = first.pairs[first.earliest_pair];
+    BOOST_TEST(p.t_star == expected["earliest"].get<std::string>(), entry << ": t* " << p.t_star);
+    BOOST_TEST(p.contact[3] == p.t_star);
+    BOOST_TEST(p.witness_verified);
+    opts.earliest = false;
+  }
   // The double instantiation runs the same code; its verdict may differ on
   // contact (that is what the comparer measures), but it must not fail.
   BOOST_CHECK_NO_THROW(check_double(scene, 0, opts));

@@ -1,0 +1,57 @@
+// What the division and generate-and-test stages look for: any point inside
+// the collision region (stop at the first), or the earliest one (§5: examine
+// the earliest regions first and stop only when no earlier point can have
+// been missed).
+#ifndef CLASH4D_CORE_SEARCH_GOAL_H
+#define CLASH4D_CORE_SEARCH_GOAL_H
+
+#include "core/kernel_ft4.h"
+
+namespace clash4d {
+
+// A point of the region and a direction into an open cell inside the formula
+// next to it (zero when the point is already inside an open cell).
+template <class FT>
+struct Inside_point {
+  Vector4<FT> point;
+  Vector4<FT> direction;
+};
+
+template <class FT>
+struct Search_goal {
+  bool earliest = false;
+  bool found = false;
+  bool improved = false;        // set whenever a better point is recorded
+  Inside_point<FT> inside;      // where the witness is stepped from
+  // Earliest mode: the least time seen so far over the closure of the
+  // collision region (regularised-semantics item 5: a vertex of the
+  // arrangement), and the point there.
+  FT t_star{};
+  Vector4<FT> contact{};
+
+  // Earliest mode across pairs: a pair whose collision cannot start before
+  // the best time of the pairs already examined need not be searched.
+  bool has_ceiling = false;
+  FT ceiling{};
+
+  bool done() const { return found && !earliest; }
+  // Could a region or edge whose times start at t_from hold a better point?
+  bool can_improve(const FT& t_from) const
+  {
+    if (has_ceiling && !(t_from < ceiling)) return false;
+    return !found || (earliest && t_from < t_star);
+  }
+
+  void record(const Inside_point<FT>& in, const Vector4<FT>& lowest)
+  {
+    if (found && !(lowest[3] < t_star)) return;
+    found = improved = true;
+    inside = in;
+    t_star = lowest[3];
+    contact = lowest;
+  }
+};
+
+} // namespace clash4d
+
+#endif
