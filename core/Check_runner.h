@@ -5,6 +5,11 @@
 
 #include "core/Check_answer.h"
 #include "core/Collision_checker.h"
+#include "core/Pair_sweep.h"
+#include <atomic>
+#include <mutex>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 namespace clash4d {
 
@@ -25,36 +30,81 @@ Pair_answer pair_answer(const K& k, const Scene_model<K>& model, const Pair_resu
   return p;
 }
 
+// Pairs are independent, so they are checked in parallel (TBB); results are
+// kept per pair and merged in pair order, so the answer is the one a single
+// thread gives: the first colliding pair in order, or the smallest t* with
+// the first pair in order among equals.
 template <class K>
 Check_answer run_check(const K& k, const Scene& scene, const Check_options& options)
 {
   using FT = typename K::FT;
+  using Checker = Collision_checker<K>;
   Check_answer answer;
   answer.number = K::name();
   auto start = std::chrono::steady_clock::now();
   Scene_model<K> model = Scene_model<K>::build(k, scene);
   answer.stats.seconds_model = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  Collision_checker<K> checker(k, model, answer.stats, options.sbounds);
-  int n = static_cast<int>(model.objects.size());
+  auto settled = Checker::settle_all(k, model, answer.stats, options.sbounds);
+
+  start = std::chrono::steady_clock::now();
+  std::vector<Box<FT, 3>> roots;
+  for (const auto& b : settled) roots.push_back(b[0]);
+  std::vector<std::pair<int, int>> pairs = Pair_sweep<K>(k).candidates(model, roots, scene);
+  std::size_t n = model.objects.size();
+  answer.stats.object_pairs = n * (n - 1) / 2 - scene.ignore.size();
+  answer.stats.candidate_pairs = pairs.size();
+  answer.stats.seconds_sweep = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::vector<Pair_result<FT>> results(pairs.size());
+  std::vector<Check_stats> stats(pairs.size());
+  std::atomic<std::size_t> first_hit{pairs.size()};      // any-collision mode: lowest colliding index
+  std::mutex best_mutex;
   bool have_best = false;
   FT best{};
-  for (int a = 0; a < n; ++a)
-    for (int b = a + 1; b < n; ++b) {
-      if (scene.ignored(a, b)) continue;
-      // Without --all-pairs only the earliest pair is reported, so a pair
-      // need not be searched past the best time found so far.
-      const FT* ceiling = options.earliest && !options.all_pairs && have_best ? &best : nullptr;
-      Pair_result<FT> r = checker.check_pair(a, b, options.earliest, ceiling);
-      if (!r.collide) continue;
-      answer.collide = true;
-      answer.pairs.push_back(pair_answer(k, model, r));
-      if (options.earliest && (!have_best || r.t_star < best)) {
-        have_best = true;
-        best = r.t_star;
-        answer.earliest_pair = static_cast<int>(answer.pairs.size()) - 1;
-      }
-      if (!options.all_pairs && !options.earliest) return answer;
+  auto check_one = [&](std::size_t i) {
+    if (!options.all_pairs && !options.earliest && i > first_hit.load()) return;
+    FT ceiling{};
+    bool use_ceiling = false;
+    if (options.earliest && !options.all_pairs) {
+      std::lock_guard<std::mutex> lock(best_mutex);
+      use_ceiling = have_best;
+      ceiling = best;
     }
+    Checker checker(k, model, settled, stats[i], options.sbounds);
+    results[i] = checker.check_pair(pairs[i].first, pairs[i].second, options.earliest, use_ceiling ? &ceiling : nullptr);
+    if (!results[i].collide) return;
+    if (options.earliest) {
+      std::lock_guard<std::mutex> lock(best_mutex);
+      if (!have_best || results[i].t_star < best) { have_best = true; best = results[i].t_star; }
+    }
+    std::size_t seen = first_hit.load();
+    while (i < seen && !first_hit.compare_exchange_weak(seen, i)) {}
+  };
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) check_one(i);
+  });
+
+  bool merged = false;
+  FT merged_best{};
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    answer.stats.add(stats[i]);
+    const Pair_result<FT>& r = results[i];
+    if (!r.collide) continue;
+    if (!options.all_pairs && !options.earliest && answer.collide) break;
+    answer.collide = true;
+    answer.pairs.push_back(pair_answer(k, model, r));
+    if (options.earliest && (!merged || r.t_star < merged_best)) {
+      merged = true;
+      merged_best = r.t_star;
+      answer.earliest_pair = static_cast<int>(answer.pairs.size()) - 1;
+    }
+  }
+  if (options.earliest && !options.all_pairs && answer.earliest_pair >= 0) {
+    // Report only the earliest pair (others may have been cut short by the ceiling).
+    Pair_answer p = answer.pairs[answer.earliest_pair];
+    answer.pairs = {p};
+    answer.earliest_pair = 0;
+  }
   return answer;
 }
 

@@ -17,6 +17,9 @@ struct Span_stats {
 };
 
 struct Check_stats {
+  // Many objects (§6): pairs in the scene, and those the sweep kept
+  std::size_t object_pairs = 0, candidate_pairs = 0;
+  double seconds_sweep = 0;
   // S-bounds (§4.3)
   std::size_t pairs = 0, sub_spans = 0, sub_spans_pruned = 0;
   std::size_t sbound_passes = 0;
@@ -31,6 +34,22 @@ struct Check_stats {
   std::size_t lines = 0, points_classified = 0, cells_tested = 0;
   // Time per stage, seconds
   double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
+
+  // Adds another run's counts (pairs checked in parallel, merged in order).
+  void add(const Check_stats& o)
+  {
+    pairs += o.pairs; sub_spans += o.sub_spans; sub_spans_pruned += o.sub_spans_pruned;
+    sbound_passes += o.sbound_passes; primitives += o.primitives; primitives_pruned += o.primitives_pruned;
+    if (span_before.empty()) { span_before = o.span_before; span_after = o.span_after; }
+    spans.insert(spans.end(), o.spans.begin(), o.spans.end());
+    if (regions_per_depth.size() < o.regions_per_depth.size()) regions_per_depth.resize(o.regions_per_depth.size(), 0);
+    for (std::size_t d = 0; d < o.regions_per_depth.size(); ++d) regions_per_depth[d] += o.regions_per_depth[d];
+    conquers += o.conquers; leaves_at_conquer += o.leaves_at_conquer;
+    if (o.max_leaves_at_conquer > max_leaves_at_conquer) max_leaves_at_conquer = o.max_leaves_at_conquer;
+    if (!o.conquered_box.empty()) conquered_box = o.conquered_box;
+    lines += o.lines; points_classified += o.points_classified; cells_tested += o.cells_tested;
+    seconds_sbounds += o.seconds_sbounds; seconds_divide += o.seconds_divide; seconds_witness += o.seconds_witness;
+  }
 
   void visit(std::size_t depth)
   {

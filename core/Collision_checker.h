@@ -36,16 +36,27 @@ public:
 
   static constexpr int max_sbound_passes = 16;
 
-  Collision_checker(const K& k, const Scene_model<K>& model, Check_stats& stats, bool use_sbounds = true)
-    : k_(k), model_(model), stats_(stats), sb_(k), use_sbounds_(use_sbounds)
+  using Bounds = typename S_bounds<K>::Bounds;
+
+  // The 3D S-bounds of every object on its own (§4.3.1), computed once and
+  // shared by every pair: §6's per-partner arrays start from these, and each
+  // pair narrows its own copies (the j-th element for partner j).
+  static std::vector<Bounds> settle_all(const K& k, const Scene_model<K>& model, Check_stats& stats, bool use_sbounds)
   {
     auto start = std::chrono::steady_clock::now();
-    for (const auto& o : model_.objects) {
-      settled_.push_back(sb_.initial(o.csg));
-      if (use_sbounds_) stats_.sbound_passes += sb_.settle(o.csg, settled_.back(), max_sbound_passes);
+    S_bounds<K> sb(k);
+    std::vector<Bounds> settled;
+    for (const auto& o : model.objects) {
+      settled.push_back(sb.initial(o.csg));
+      if (use_sbounds) stats.sbound_passes += sb.settle(o.csg, settled.back(), max_sbound_passes);
     }
-    stats_.seconds_sbounds += seconds_since(start);
+    stats.seconds_sbounds += seconds_since(start);
+    return settled;
   }
+
+  Collision_checker(const K& k, const Scene_model<K>& model, const std::vector<Bounds>& settled, Check_stats& stats,
+                    bool use_sbounds = true)
+    : k_(k), model_(model), stats_(stats), sb_(k), use_sbounds_(use_sbounds), settled_(settled) {}
 
   // earliest: find t* (§5) rather than stopping at the first witness;
   // ceiling: in that mode, ignore collisions that start at or after it.
@@ -74,7 +85,7 @@ private:
   Check_stats& stats_;
   S_bounds<K> sb_;
   bool use_sbounds_;
-  std::vector<typename S_bounds<K>::Bounds> settled_;
+  const std::vector<Bounds>& settled_;
 
   struct Moving {
     const Object_model<FT>* object;

@@ -38,7 +38,9 @@ struct Search_goal {
   // Could a region or edge whose times start at t_from hold a better point?
   bool can_improve(const FT& t_from) const
   {
-    if (has_ceiling && !(t_from < ceiling)) return false;
+    // Not strict: a pair that ties the best must still be found, so that the
+    // first pair in order wins ties whatever order the threads ran in.
+    if (has_ceiling && ceiling < t_from) return false;
     return !found || (earliest && t_from < t_star);
   }
 

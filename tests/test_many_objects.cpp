@@ -1,0 +1,124 @@
+#define BOOST_TEST_MODULE many_objects
+#include <boost/test/unit_test.hpp>
+
+#include "exact/Exact_instantiation.h"
+#include "float/Double_instantiation.h"
+#include "scene/Grid_scene.h"
+#include "scene/Json_reader.h"
+#include "scene/Scene_reader.h"
+#include <random>
+#include <set>
+#include <tbb/global_control.h>
+
+using namespace clash4d;
+
+static Scene parse(const std::string& text) { return read_scene(read_json_text(text)); }
+
+static std::set<std::pair<std::string, std::string>> pair_set(const Check_answer& a)
+{
+  std::set<std::pair<std::string, std::string>> s;
+  for (const auto& p : a.pairs) s.insert({p.a, p.b});
+  return s;
+}
+
+BOOST_AUTO_TEST_CASE(grid_scenes_report_exactly_the_pairs_built_to_collide)
+{
+  for (int n : {10, 100, 1000}) {
+    Grid_scene g = make_grid_scene(n, n >= 100 ? 7 : 2, 42);
+    Scene scene = parse(g.json);
+    Check_options opts;
+    opts.all_pairs = true;
+    opts.earliest = true;
+    Check_answer a = check_exact(scene, opts);
+    std::set<std::pair<std::string, std::string>> expected;
+    for (const auto& p : g.colliding) expected.insert({"b" + std::to_string(p.first), "b" + std::to_string(p.second)});
+    BOOST_TEST(pair_set(a) == expected, "n = " << n);
+    // Gap 3 closed at relative speed 3/5: contact at t* = 5.
+    for (const auto& p : a.pairs) {
+      BOOST_TEST(p.t_star == "5");
+      BOOST_TEST(p.witness_verified);
+    }
+    BOOST_TEST(a.stats.candidate_pairs < a.stats.object_pairs / 10 + 20, "the sweep must prune most pairs, n = " << n);
+    BOOST_TEST(pair_set(check_double(scene, 0, opts)) == expected);
+  }
+}
+
+// A scene of several blocks in random motion; returns its JSON.
+static std::string random_cluster(std::mt19937_64& rng, int n)
+{
+  std::uniform_int_distribution<int> pos(0, 6), vel(-2, 2);
+  std::string objects;
+  for (int i = 0; i < n; ++i) {
+    int x = pos(rng), y = pos(rng) / 2, z = 0;
+    objects += std::string(i ? "," : "") + R"({"name":"o)" + std::to_string(i) + R"(","shape":{"block":{"min":[)" +
+               std::to_string(x) + "," + std::to_string(y) + "," + std::to_string(z) + R"(],"max":[)" +
+               std::to_string(x + 1) + "," + std::to_string(y + 1) + "," + std::to_string(z + 1) + R"(]}},"motion":"vel )" +
+               std::to_string(vel(rng)) + "/2 " + std::to_string(vel(rng)) + "/2 0 until 2 rest\"}";
+  }
+  return R"({"format":"clash4d-scene/1","time":[0,4],"objects":[)" + objects + "]}";
+}
+
+BOOST_AUTO_TEST_CASE(many_objects_equal_the_union_of_pairwise_checks)
+{
+  std::uint64_t seed = 6061990;
+  BOOST_TEST_MESSAGE("seed " << seed);
+  std::mt19937_64 rng(seed);
+  int collisions = 0;
+  for (int round = 0; round < 30; ++round) {
+    std::string text = random_cluster(rng, 6);
+    Scene scene = parse(text);
+    Check_options all;
+    all.all_pairs = true;
+    auto together = pair_set(check_exact(scene, all));
+    std::set<std::pair<std::string, std::string>> pairwise;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+      for (std::size_t j = i + 1; j < scene.objects.size(); ++j) {
+        Scene two = scene;
+        two.objects = {scene.objects[i], scene.objects[j]};
+        if (check_exact(two, Check_options()).collide) pairwise.insert({scene.objects[i].name, scene.objects[j].name});
+      }
+    BOOST_TEST(together == pairwise, "round " << round << ": " << text);
+    collisions += static_cast<int>(pairwise.size());
+  }
+  BOOST_TEST(collisions > 10);   // the campaign exercises collisions at all
+}
+
+BOOST_AUTO_TEST_CASE(parallel_answers_equal_single_threaded_answers)
+{
+  std::mt19937_64 rng(77);
+  for (int round = 0; round < 10; ++round) {
+    Scene scene = parse(random_cluster(rng, 8));
+    for (bool all_pairs : {false, true})
+      for (bool earliest : {false, true}) {
+        Check_options o;
+        o.all_pairs = all_pairs;
+        o.earliest = earliest;
+        Check_answer parallel = check_exact(scene, o);
+        Check_answer single;
+        {
+          tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+          single = check_exact(scene, o);
+        }
+        BOOST_TEST(parallel.collide == single.collide);
+        BOOST_TEST_REQUIRE(parallel.pairs.size() == single.pairs.size());
+        for (std::size_t i = 0; i < parallel.pairs.size(); ++i) {
+          BOOST_TEST(parallel.pairs[i].a == single.pairs[i].a);
+          BOOST_TEST(parallel.pairs[i].b == single.pairs[i].b);
+          BOOST_TEST((parallel.pairs[i].witness == single.pairs[i].witness));
+          BOOST_TEST(parallel.pairs[i].t_star == single.pairs[i].t_star);
+        }
+      }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(ignored_pairs_get_the_empty_bound)
+{
+  Grid_scene g = make_grid_scene(20, 2, 5);
+  Scene scene = parse(g.json);
+  scene.ignore.push_back(g.colliding[0]);
+  Check_options opts;
+  opts.all_pairs = true;
+  Check_answer a = check_exact(scene, opts);
+  BOOST_TEST(a.pairs.size() == 1u);
+  BOOST_TEST(a.pairs[0].a == "b" + std::to_string(g.colliding[1].first));
+}
