@@ -176,6 +176,23 @@ void print_check(const Check_answer& a, const Check_options& o, bool stats, doub
   }
 }
 
+void print_skeleton(const Skeleton_answer& a, bool as_json, std::ostream& out)
+{
+  if (as_json) {
+    json pairs = json::array();
+    for (const auto& p : a.pairs) pairs.push_back({{"objects", {p.a, p.b}}, {"edges", p.edges}});
+    out << json{{"number", a.number}, {"collide", !a.pairs.empty()}, {"pairs", pairs}}.dump(2) << "\n";
+    return;
+  }
+  if (a.pairs.empty()) out << "no collision (" << a.number << "): the collision region is empty\n";
+  for (const auto& p : a.pairs) {
+    out << "collision region of " << p.a << " and " << p.b << " (" << a.number << "): " << p.edges.size() << " edges\n";
+    for (const auto& e : p.edges)
+      out << "  (" << e[0][0] << ", " << e[0][1] << ", " << e[0][2] << ", " << e[0][3] << ") -- (" << e[1][0] << ", "
+          << e[1][1] << ", " << e[1][2] << ", " << e[1][3] << ")\n";
+  }
+}
+
 // Writes to a temporary name and renames, so no half-written scene is left.
 int generate(int n, int colliding, std::uint64_t seed, const std::string& file, std::ostream& out, std::ostream& err)
 {
@@ -242,6 +259,11 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   check_cmd->add_flag("--no-sbounds", no_sbounds,
                       "bound by the paper's original procedure (boxes at velocity changes) instead of S-bounds; for reproducing §4.1");
 
+  auto* skeleton_cmd = app.add_subcommand("skeleton", "Print every edge of the boundary of each colliding pair's collision region in space-time (§5; a full search, slower than check).");
+  skeleton_cmd->add_option("SCENE", file, "scene file")->required();
+  skeleton_cmd->add_option("--number", number, "number type: exact (default) or double")->check(CLI::IsMember({"exact", "double"}));
+  skeleton_cmd->add_flag("--json", as_json, "print JSON (numbers as exact strings)");
+
   int grid_n = 0, grid_colliding = 0;
   std::uint64_t grid_seed = 1;
   std::string grid_out;
@@ -270,6 +292,12 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   }
   Scene scene;
   if (int s = load(file, scene, err)) return s;
+  if (skeleton_cmd->parsed())
+    return guarded(file, err, [&] {
+      Skeleton_answer a = number == "exact" ? skeleton_exact(scene) : skeleton_double(scene);
+      print_skeleton(a, as_json, out);
+      return a.pairs.empty() ? 0 : 1;
+    });
   if (extrude_cmd->parsed())
     return guarded(file, err, [&] {
       json report = number == "exact" ? extrude_exact(scene) : extrude_double(scene);

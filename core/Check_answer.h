@@ -36,6 +36,17 @@ struct Check_answer {
   Check_stats stats;
 };
 
+// `skeleton`: the edges of each colliding pair's collision region.
+struct Skeleton_answer {
+  std::string number;
+  struct Pair {
+    std::string a, b;
+    std::vector<std::array<std::array<std::string, 4>, 2>> edges;   // (x, y, z, t) ends
+  };
+  std::vector<Pair> pairs;                // pairs with a non-empty region, in pair order
+  Check_stats stats;
+};
+
 } // namespace clash4d
 
 #endif

@@ -108,6 +108,38 @@ Check_answer run_check(const K& k, const Scene& scene, const Check_options& opti
   return answer;
 }
 
+template <class K>
+Skeleton_answer run_skeleton(const K& k, const Scene& scene)
+{
+  using FT = typename K::FT;
+  Skeleton_answer answer;
+  answer.number = K::name();
+  Scene_model<K> model = Scene_model<K>::build(k, scene);
+  auto settled = Collision_checker<K>::settle_all(k, model, answer.stats, true);
+  std::vector<Box<FT, 3>> roots;
+  for (const auto& b : settled) roots.push_back(b[0]);
+  std::vector<std::pair<int, int>> pairs = Pair_sweep<K>(k).candidates(model, roots, scene);
+  std::vector<std::vector<typename Collision_checker<K>::Segment>> edges(pairs.size());
+  std::vector<Check_stats> stats(pairs.size());
+  tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t i) {
+    Collision_checker<K> checker(k, model, settled, stats[i]);
+    edges[i] = checker.skeleton_pair(pairs[i].first, pairs[i].second);
+  });
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    answer.stats.add(stats[i]);
+    if (edges[i].empty()) continue;
+    Skeleton_answer::Pair p{model.objects[pairs[i].first].name, model.objects[pairs[i].second].name, {}};
+    for (const auto& e : edges[i]) {
+      std::array<std::array<std::string, 4>, 2> text;
+      for (int end = 0; end < 2; ++end)
+        for (int q = 0; q < 4; ++q) text[end][q] = k.to_text(e[end][q]);
+      p.edges.push_back(text);
+    }
+    answer.pairs.push_back(p);
+  }
+  return answer;
+}
+
 } // namespace clash4d
 
 #endif

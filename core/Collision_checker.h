@@ -11,6 +11,7 @@
 #include "core/Scene_model.h"
 #include "scene/Input_error.h"
 #include <chrono>
+#include <map>
 
 namespace clash4d {
 
@@ -77,6 +78,43 @@ public:
     }
     r.earliest = earliest && r.collide;
     return r;
+  }
+
+  using Segment = std::array<V4, 2>;
+
+  // §5 skeleton: every edge of the boundary of the pair's regularised
+  // collision region, in world coordinates, collinear pieces merged. The
+  // full, non-terminating search. Each sub-span is searched in its S-bound
+  // region, but with the formula of the whole extrusions (every motion
+  // segment with its time slab, §3), so that edges on a velocity change are
+  // classified with both segments and the span's ends tL, tH are real faces.
+  std::vector<Segment> skeleton_pair(int a, int b)
+  {
+    ++stats_.pairs;
+    std::vector<Segment> edges;
+    for (const auto& span : model_.sub_spans({a, b})) {
+      ++stats_.sub_spans;
+      Moving A = moving(a, span), B = moving(b, span);
+      FT tl = span.lo, th = span.hi;
+      if (!four_d_bounds(A, B, tl, th)) { ++stats_.sub_spans_pruned; continue; }
+      Vector3<FT> shear;
+      Box4 region = fitted_region(A, B, tl, th, shear);
+      std::vector<H> table;
+      Formula::Builder builder;
+      std::size_t mark = builder.open();
+      for (const H& h : {time_at_least(model_.t_lo), time_at_most(model_.t_hi)}) slab_leaf(h, table, builder);
+      whole_extrusion(a, shear, table, builder);
+      whole_extrusion(b, shear, table, builder);
+      builder.close(Formula::Op::And, mark);
+      Formula formula = builder.finish();
+      std::vector<Segment> pieces;
+      Divide_and_conquer<K>(k_, table, stats_).skeleton(region, formula, pieces);
+      for (Segment& e : pieces)
+        for (V4& p : e)
+          for (int q = 0; q < 3; ++q) p[q] += shear[q] * p[3];
+      edges.insert(edges.end(), pieces.begin(), pieces.end());
+    }
+    return merge_collinear(edges);
   }
 
 private:
@@ -303,6 +341,75 @@ private:
         b.close(negated ? Formula::Op::Or : Formula::Op::And, mark);
         return;
     }
+  }
+
+  void slab_leaf(const H& h, std::vector<H>& table, Formula::Builder& b) const
+  {
+    b.leaf(static_cast<std::uint32_t>(table.size()));
+    table.push_back(h);
+    table.push_back(h.complement());
+  }
+
+  // The object over all time: the union over its motion segments of the
+  // segment's tree within the segment's time slab (§3).
+  void whole_extrusion(int i, const Vector3<FT>& shear, std::vector<H>& table, Formula::Builder& b) const
+  {
+    const Object_model<FT>& obj = model_.objects[i];
+    const Motion_path<FT>& m = obj.motion;
+    std::size_t mark = b.open();
+    for (std::size_t s = 0; s < m.velocity.size(); ++s) {
+      if (s > 0 && !(m.times[s - 1] < model_.t_hi)) continue;
+      if (s < m.times.size() && !(model_.t_lo < m.times[s])) continue;
+      Moving seg{&obj, m.velocity[s], m.offset[s], settled_[i]};
+      std::size_t seg_mark = b.open();
+      if (s > 0) slab_leaf(time_at_least(m.times[s - 1]), table, b);
+      if (s < m.times.size()) slab_leaf(time_at_most(m.times[s]), table, b);
+      std::size_t next = table.size();
+      add_planes(seg, shear, table);
+      emit(seg, 0, false, b, next);
+      b.close(Formula::Op::And, seg_mark);
+    }
+    b.close(Formula::Op::Or, mark);
+  }
+
+  // Pieces found in neighbouring regions (or split at cuts) are joined when
+  // they lie on one line and overlap or meet end to end.
+  std::vector<Segment> merge_collinear(const std::vector<Segment>& pieces) const
+  {
+    // Key: the direction scaled so its first non-zero coordinate k is 1, and
+    // the line's point with coordinate k = 0; a piece is then [p_k, q_k].
+    std::map<std::array<FT, 8>, std::vector<std::pair<FT, FT>>> lines;
+    for (const Segment& e : pieces) {
+      V4 d;
+      for (int q = 0; q < 4; ++q) d[q] = e[1][q] - e[0][q];
+      int k = 0;
+      while (k < 4 && k_.sign(d[k]) == CGAL::ZERO) ++k;
+      if (k == 4) continue;
+      std::array<FT, 8> key;
+      for (int q = 0; q < 4; ++q) key[q] = d[q] / d[k];
+      for (int q = 0; q < 4; ++q) key[4 + q] = e[0][q] - e[0][k] * key[q];
+      FT s0 = e[0][k], s1 = e[1][k];
+      lines[key].emplace_back(s0 < s1 ? s0 : s1, s0 < s1 ? s1 : s0);
+    }
+    std::vector<Segment> out;
+    for (auto& [key, spans] : lines) {
+      std::sort(spans.begin(), spans.end());
+      std::vector<std::pair<FT, FT>> merged;
+      for (const auto& sp : spans) {
+        if (!merged.empty() && !(merged.back().second < sp.first)) {
+          if (merged.back().second < sp.second) merged.back().second = sp.second;
+        } else merged.push_back(sp);
+      }
+      for (const auto& sp : merged) {
+        Segment e;
+        for (int q = 0; q < 4; ++q) {
+          e[0][q] = key[4 + q] + sp.first * key[q];
+          e[1][q] = key[4 + q] + sp.second * key[q];
+        }
+        out.push_back(e);
+      }
+    }
+    return out;
   }
 
   void skip_planes(const Csg_model<FT>& csg, int node, std::size_t& next) const

@@ -61,6 +61,45 @@ public:
     }
   }
 
+  // Skeleton mode (§5): the full search, never stopping. Simplification is
+  // strict here (min > 0, max < 0), so a plane touching the region's boundary
+  // stays, and regions with no plane of the formula through them are skipped:
+  // they hold no boundary.
+  void skeleton(const Box4& region, const Formula& formula, std::vector<std::array<Vector4<FT>, 2>>& out,
+                std::size_t depth = 0)
+  {
+    stats_.visit(depth);
+    Formula f = formula.simplified([&](std::uint32_t h) { return strict_status(table_[h], region); });
+    if (f.value() != Truth::Unknown) return;
+    std::size_t leaves = f.leaf_count();
+    if (leaves < kappa(depth) || depth >= max_depth) {
+      ++stats_.conquers;
+      stats_.leaves_at_conquer += leaves;
+      conquer_.skeleton(f, region, out);
+      return;
+    }
+    for (int child = 0; child < 16; ++child) {
+      Box4 sub = region;
+      for (int a = 0; a < 4; ++a) {
+        FT mid = (region.lo[a] + region.hi[a]) / FT(2);
+        ((child >> a) & 1 ? sub.lo[a] : sub.hi[a]) = mid;
+      }
+      skeleton(sub, f, out, depth + 1);
+    }
+  }
+
+  Truth strict_status(const H& h, const Box4& b) const
+  {
+    FT lo = h.c, hi = h.c;
+    for (int a = 0; a < 4; ++a) {
+      FT x = h.n[a] * b.lo[a], y = h.n[a] * b.hi[a];
+      if (x < y) { lo += x; hi += y; } else { lo += y; hi += x; }
+    }
+    if (k_.sign(lo) == CGAL::POSITIVE) return Truth::False;
+    if (k_.sign(hi) == CGAL::NEGATIVE) return Truth::True;
+    return Truth::Unknown;
+  }
+
   // Over a closed box, min h >= 0 means the leaf is empty there and max h <= 0
   // that it is everything, up to the boundary that regularisation ignores
   // (regularised-semantics.md, item 4).

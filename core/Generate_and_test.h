@@ -40,6 +40,20 @@ public:
         for (std::size_t m = j + 1; m < n && !goal.done(); ++m) on_line(f, i, j, m, goal);
   }
 
+  // Skeleton (§5): every edge of the boundary of the region the formula
+  // describes, inside this closed region, as segments (p, q). Lines come from
+  // formula planes only (the region's faces are artificial); an edge is kept
+  // when the planes that separate inside from outside around it (the
+  // essential ones) span the whole 3D neighbourhood, so it is a 1-face and not
+  // a point of a 2- or 3-face.
+  void skeleton(const Formula& f, const Box<FT, 4>& region, std::vector<std::array<V, 2>>& out)
+  {
+    collect_planes(f, region);
+    for (std::size_t i = 0; i < first_face_; ++i)
+      for (std::size_t j = i + 1; j < first_face_; ++j)
+        for (std::size_t m = j + 1; m < first_face_; ++m) skeleton_line(f, i, j, m, out);
+  }
+
 private:
   const K& k_;
   const std::vector<H>& table_;
@@ -160,6 +174,96 @@ private:
       FT mid = (cuts[q] + cuts[q + 1]) / FT(2);
       if (auto in = classify(f, base, l, mid)) goal.record(*in, early);
     }
+  }
+
+  // The segment of the line through planes i, j, m inside the closed region,
+  // and every cut by another plane in it, sorted; empty when it misses.
+  std::vector<FT> cuts_in_region(std::size_t i, std::size_t j, std::size_t m, V& base, V& l)
+  {
+    l = generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n);
+    if (k_.is_zero(l)) return {};
+    base = base_point(planes_[i], planes_[j], planes_[m], l);
+    bool has_lo = false, has_hi = false;
+    FT s_lo(0), s_hi(0);
+    for (std::size_t p = 0; p < planes_.size(); ++p) {
+      at_base_[p] = planes_[p].value(base);
+      along_[p] = dot(planes_[p].n, l);
+    }
+    for (const auto& fp : face_plane_) {
+      std::size_t p = fp.first;
+      int e = k_.sign(along_[p]) * fp.second;
+      if (e == 0) {
+        if (k_.sign(at_base_[p]) * fp.second > 0) return {};
+        continue;
+      }
+      FT cut = -at_base_[p] / along_[p];
+      if (e > 0) { if (!has_hi || cut < s_hi) s_hi = cut; has_hi = true; }
+      else { if (!has_lo || s_lo < cut) s_lo = cut; has_lo = true; }
+    }
+    if (!has_lo || !has_hi || k_.compare(s_hi, s_lo) != CGAL::POSITIVE) return {};
+    std::vector<FT> cuts{s_lo, s_hi};
+    for (std::size_t p = 0; p < first_face_; ++p) {
+      if (k_.sign(along_[p]) == CGAL::ZERO) continue;
+      FT cut = -at_base_[p] / along_[p];
+      if (k_.less(s_lo, cut) && k_.less(cut, s_hi)) cuts.push_back(cut);
+    }
+    std::sort(cuts.begin(), cuts.end());
+    return cuts;
+  }
+
+  void skeleton_line(const Formula& f, std::size_t i, std::size_t j, std::size_t m, std::vector<std::array<V, 2>>& out)
+  {
+    V base, l;
+    std::vector<FT> cuts = cuts_in_region(i, j, m, base, l);
+    if (!cuts.empty()) ++stats_.lines;
+    for (std::size_t q = 0; q + 1 < cuts.size(); ++q) {
+      if (k_.compare(cuts[q + 1], cuts[q]) == CGAL::ZERO) continue;
+      FT mid = (cuts[q] + cuts[q + 1]) / FT(2);
+      if (is_edge(f, l, mid)) out.push_back({point_along(base, cuts[q], l), point_along(base, cuts[q + 1], l)});
+    }
+  }
+
+  bool is_edge(const Formula& f, const V& l, const FT& s)
+  {
+    ++stats_.points_classified;
+    std::vector<std::size_t> through;
+    for (std::size_t p = 0; p < first_face_; ++p) {
+      sign_[p] = static_cast<int>(k_.sign(at_base_[p] + s * along_[p]));
+      if (sign_[p] == 0) through.push_back(p);
+    }
+    if (f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) != Truth::Unknown) return false;
+    std::vector<V> normals;
+    for (std::size_t p : through) normals.push_back(planes_[p].n);
+    // Every cell around the point, by its sign vector, inside or not.
+    std::vector<std::pair<std::vector<int>, bool>> cells;
+    Neighbourhood<K> hood(k_);
+    hood.find_inside(l, normals, [&](const std::vector<int>& signs) {
+      for (std::size_t t = 0; t < through.size(); ++t) sign_[through[t]] = signs[t];
+      bool in = f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) == Truth::True;
+      bool seen = false;
+      for (const auto& c : cells) seen = seen || c.first == signs;
+      if (!seen) cells.emplace_back(signs, in);
+      return false;
+    });
+    stats_.cells_tested += hood.cells_tested();
+    // Essential planes: some pair of cells adjacent across it differ.
+    std::vector<V> essential;
+    for (std::size_t t = 0; t < through.size(); ++t) {
+      bool found = false;
+      for (std::size_t a = 0; a < cells.size() && !found; ++a)
+        for (std::size_t b = a + 1; b < cells.size() && !found; ++b) {
+          if (cells[a].second == cells[b].second || cells[a].first[t] == cells[b].first[t]) continue;
+          bool one_apart = true;
+          for (std::size_t u = 0; u < through.size() && one_apart; ++u) one_apart = u == t || cells[a].first[u] == cells[b].first[u];
+          found = one_apart;
+        }
+      if (found) essential.push_back(normals[t]);
+    }
+    for (std::size_t a = 0; a < essential.size(); ++a)
+      for (std::size_t b = a + 1; b < essential.size(); ++b)
+        for (std::size_t c = b + 1; c < essential.size(); ++c)
+          if (k_.orientation4(l, essential[a], essential[b], essential[c]) != CGAL::ZERO) return true;
+    return false;
   }
 
   // The point on a, b and c orthogonal to l: a sum of the dual vectors

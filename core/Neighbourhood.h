@@ -114,7 +114,11 @@ private:
   template <class Inside>
   std::optional<V> around_extreme_rays(const V& l, const std::vector<V>& N, Inside& inside)
   {
-    std::vector<V> rays;
+    struct Ray {
+      V r;
+      std::size_t i, j;   // two planes known to contain it
+    };
+    std::vector<Ray> rays;
     for (std::size_t i = 0; i < N.size(); ++i)
       for (std::size_t j = i + 1; j < N.size(); ++j) {
         V r = generalised_cross(l, N[i], N[j]);
@@ -122,13 +126,15 @@ private:
         for (int s : {1, -1}) {
           V rs = scaled(r, s);
           bool seen = false;
-          for (const V& q : rays) seen = seen || same_direction(q, rs);
-          if (!seen) rays.push_back(rs);
+          for (const Ray& q : rays) seen = seen || same_direction(q.r, rs);
+          if (!seen) rays.push_back({rs, i, j});
         }
       }
     std::vector<int> signs(N.size());
-    for (const V& r : rays) {
-      std::vector<V> sector = sector_rays(l, r, N);
+    for (const Ray& ray : rays) {
+      const V& r = ray.r;
+      std::vector<V> sector = sector_rays(l, r, N, ray.i, ray.j);
+      if (sector.size() < 3) continue;   // only when rounding (double) breaks the geometry
       for (std::size_t a = 0; a < sector.size(); ++a) {
         V s = sum(sector[a], sector[(a + 1) % sector.size()]);
         V d = sum(r, scaled_by(s, epsilon(r, s, N)));
@@ -140,11 +146,13 @@ private:
 
   // The rays in the planes through r, orthogonal to r (and l), sorted by angle
   // around r, duplicates removed.
-  std::vector<V> sector_rays(const V& l, const V& r, const std::vector<V>& N) const
+  // Planes i and j define r, so they contain it whatever rounding says.
+  std::vector<V> sector_rays(const V& l, const V& r, const std::vector<V>& N, std::size_t i, std::size_t j) const
   {
     std::vector<V> out;
-    for (const V& n : N) {
-      if (k_.dot_sign(n, r) != CGAL::ZERO) continue;
+    for (std::size_t t = 0; t < N.size(); ++t) {
+      const V& n = N[t];
+      if (t != i && t != j && k_.dot_sign(n, r) != CGAL::ZERO) continue;
       V rho = generalised_cross(l, r, n);
       for (int s : {1, -1}) {
         V v = scaled(rho, s);

@@ -15,4 +15,9 @@ nlohmann::ordered_json extrude_exact(const Scene& scene)
   return Extrusion_report<Exact_kernel>(Exact_kernel()).make(scene);
 }
 
+Skeleton_answer skeleton_exact(const Scene& scene)
+{
+  return run_skeleton(Exact_kernel(), scene);
+}
+
 } // namespace clash4d

@@ -11,6 +11,8 @@ namespace clash4d {
 Check_answer check_exact(const Scene& scene, const Check_options& options);
 nlohmann::ordered_json extrude_exact(const Scene& scene);
 
+Skeleton_answer skeleton_exact(const Scene& scene);
+
 } // namespace clash4d
 
 #endif

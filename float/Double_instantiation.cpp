@@ -15,4 +15,9 @@ nlohmann::ordered_json extrude_double(const Scene& scene)
   return Extrusion_report<Double_kernel>(Double_kernel()).make(scene);
 }
 
+Skeleton_answer skeleton_double(const Scene& scene)
+{
+  return run_skeleton(Double_kernel(), scene);
+}
+
 } // namespace clash4d

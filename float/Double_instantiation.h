@@ -12,6 +12,8 @@ namespace clash4d {
 Check_answer check_double(const Scene& scene, double tolerance, const Check_options& options);
 nlohmann::ordered_json extrude_double(const Scene& scene);
 
+Skeleton_answer skeleton_double(const Scene& scene);
+
 } // namespace clash4d
 
 #endif
