@@ -418,3 +418,35 @@ BOOST_AUTO_TEST_CASE(double_kernel_survives_tilted_contact)
   Check_answer d;
   BOOST_CHECK_NO_THROW(d = run_check(Double_kernel(), scene, Check_options()));
 }
+
+// §5: the exact earliest time t* of every colliding pair equals the oracle's
+// minimum of t over the closures of the non-empty open DNF terms.
+BOOST_AUTO_TEST_CASE(earliest_time_agrees_with_oracle)
+{
+  std::uint64_t seed = campaign_seed() + 5;
+  std::uint64_t cases = env_number("CLASH4D_ORACLE_CASES", 2000) / 4;
+  BOOST_TEST_MESSAGE("earliest campaign: seed " << seed << ", " << cases << " scenes");
+  std::size_t compared = 0;
+  for (std::uint64_t i = 0; i < cases; ++i) {
+    std::mt19937_64 rng(case_seed(seed, i));
+    Random_scene rs = random_scene_with_text(rng);
+    Check_options opts;
+    opts.all_pairs = true;
+    opts.earliest = true;
+    Check_answer a = run_check(Exact_kernel(), rs.scene, opts);
+    for (const auto& p : a.pairs) {
+      int ia = -1, ib = -1;
+      for (std::size_t k = 0; k < rs.scene.objects.size(); ++k) {
+        if (rs.scene.objects[k].name == p.a) ia = static_cast<int>(k);
+        if (rs.scene.objects[k].name == p.b) ib = static_cast<int>(k);
+      }
+      Rational t_oracle;
+      BOOST_TEST_REQUIRE(oracle::oracle_earliest(rs.scene, ia, ib, t_oracle), "case " << i << ":\n" << rs.json);
+      BOOST_TEST(p.t_star == to_string(t_oracle), "case " << i << " pair " << p.a << "/" << p.b << ":\n" << rs.json);
+      BOOST_TEST(p.contact[3] == p.t_star);
+      ++compared;
+    }
+  }
+  BOOST_TEST_MESSAGE("earliest times compared: " << compared);
+  BOOST_TEST(compared > cases / 5);
+}

@@ -438,6 +438,48 @@ inline Pair_verdict oracle_pair(const Scene& scene, int a, int b, bool want_touc
   return out;
 }
 
+// The least t over the closure of [tL, tH] x rows (an LP; rows feasible).
+inline Q min_time(const std::vector<Row>& rows, const Q& lo, const Q& hi, std::size_t& lp_count)
+{
+  ++lp_count;
+  CGAL::Quadratic_program<Q> lp(CGAL::SMALLER, false, 0, false, 0);
+  int r = 0;
+  for (const Row& row : rows) {
+    for (int k = 0; k < 4; ++k) lp.set_a(k, r, row.a[k]);
+    lp.set_b(r, -row.c);
+    ++r;
+  }
+  lp.set_l(3, true, lo);
+  lp.set_u(3, true, hi);
+  lp.set_c(3, Q(1));
+  CGAL::Quadratic_program_solution<Q> sol = CGAL::solve_linear_program(lp, Q());
+  if (!sol.is_optimal()) throw std::logic_error("oracle: earliest-time LP not optimal");
+  auto ov = sol.objective_value();
+  return Q(ov.numerator()) / Q(ov.denominator());
+}
+
+// §5 earliest time t*, independently: the minimum of t over the closure of
+// every non-empty open DNF term of a and b (regularised-semantics item 5).
+// Returns false when they do not collide.
+inline bool oracle_earliest(const Scene& scene, int a, int b, Q& t_star)
+{
+  std::size_t lps = 0;
+  bool found = false;
+  Object_formula A = object_formula(scene, a), B = object_formula(scene, b);
+  for (const auto& span : slabs(scene, *A.motion, *B.motion)) {
+    Linear_motion ma = linear_on(*A.motion, span.first, span.second);
+    Linear_motion mb = linear_on(*B.motion, span.first, span.second);
+    Term_search search(span.first, span.second, false, lps);
+    search.run({}, {{&A.formula, &ma}, {&B.formula, &mb}}, [&](const std::vector<Row>& rows, const Lp_answer&) {
+      Q t = min_time(rows, span.first, span.second, lps);
+      if (!found || t < t_star) t_star = t;
+      found = true;
+      return false;
+    });
+  }
+  return found;
+}
+
 inline bool oracle_collide(const Scene& scene, int a, int b) { return oracle_pair(scene, a, b).collide; }
 
 // Every pair not ignored, in order; the first colliding pair (or -1, -1).
