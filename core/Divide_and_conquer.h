@@ -49,16 +49,8 @@ public:
       conquer_.run(f, region, goal);
       return;
     }
-    // Sixteen sub-regions, earliest in time first (t is the slowest bit).
-    for (int child = 0; child < 16 && !goal.done(); ++child) {
-      Box4 sub = region;
-      for (int a = 0; a < 4; ++a) {
-        FT mid = (region.lo[a] + region.hi[a]) / FT(2);
-        bool upper = (child >> a) & 1;
-        (upper ? sub.lo[a] : sub.hi[a]) = mid;
-      }
-      search(sub, f, goal, depth + 1);
-    }
+    // Sixteen sub-regions, earliest in time first.
+    for (int child = 0; child < 16 && !goal.done(); ++child) search(sub_region(region, child), f, goal, depth + 1);
   }
 
   // Skeleton mode (§5): the full search, never stopping. Simplification is
@@ -69,7 +61,7 @@ public:
                 std::size_t depth = 0)
   {
     stats_.visit(depth);
-    Formula f = formula.simplified([&](std::uint32_t h) { return strict_status(table_[h], region); });
+    Formula f = formula.simplified([&](std::uint32_t h) { return status(table_[h], region, true); });
     if (f.value() != Truth::Unknown) return;
     std::size_t leaves = f.leaf_count();
     if (leaves < kappa(depth) || depth >= max_depth) {
@@ -78,41 +70,36 @@ public:
       conquer_.skeleton(f, region, out);
       return;
     }
-    for (int child = 0; child < 16; ++child) {
-      Box4 sub = region;
-      for (int a = 0; a < 4; ++a) {
-        FT mid = (region.lo[a] + region.hi[a]) / FT(2);
-        ((child >> a) & 1 ? sub.lo[a] : sub.hi[a]) = mid;
-      }
-      skeleton(sub, f, out, depth + 1);
-    }
-  }
-
-  Truth strict_status(const H& h, const Box4& b) const
-  {
-    FT lo = h.c, hi = h.c;
-    for (int a = 0; a < 4; ++a) {
-      FT x = h.n[a] * b.lo[a], y = h.n[a] * b.hi[a];
-      if (x < y) { lo += x; hi += y; } else { lo += y; hi += x; }
-    }
-    if (k_.sign(lo) == CGAL::POSITIVE) return Truth::False;
-    if (k_.sign(hi) == CGAL::NEGATIVE) return Truth::True;
-    return Truth::Unknown;
+    for (int child = 0; child < 16; ++child) skeleton(sub_region(region, child), f, out, depth + 1);
   }
 
   // Over a closed box, min h >= 0 means the leaf is empty there and max h <= 0
   // that it is everything, up to the boundary that regularisation ignores
-  // (regularised-semantics.md, item 4).
-  Truth status(const H& h, const Box4& b) const
+  // (regularised-semantics.md, item 4). Strict (min > 0, max < 0) keeps the
+  // planes that touch the box, which the skeleton needs.
+  Truth status(const H& h, const Box4& b, bool strict = false) const
   {
     FT lo = h.c, hi = h.c;
     for (int a = 0; a < 4; ++a) {
       FT x = h.n[a] * b.lo[a], y = h.n[a] * b.hi[a];
       if (x < y) { lo += x; hi += y; } else { lo += y; hi += x; }
     }
-    if (k_.sign(lo) != CGAL::NEGATIVE) return Truth::False;
-    if (k_.sign(hi) != CGAL::POSITIVE) return Truth::True;
+    CGAL::Sign slo = k_.sign(lo), shi = k_.sign(hi);
+    if (slo == CGAL::POSITIVE || (!strict && slo == CGAL::ZERO)) return Truth::False;
+    if (shi == CGAL::NEGATIVE || (!strict && shi == CGAL::ZERO)) return Truth::True;
     return Truth::Unknown;
+  }
+
+  // Child `child` of the 16-way bisection; bit a set: upper half of axis a.
+  // t is the slowest bit, so the earliest halves come first.
+  static Box4 sub_region(const Box4& region, int child)
+  {
+    Box4 sub = region;
+    for (int a = 0; a < 4; ++a) {
+      FT mid = (region.lo[a] + region.hi[a]) / FT(2);
+      ((child >> a) & 1 ? sub.lo[a] : sub.hi[a]) = mid;
+    }
+    return sub;
   }
 
   // The smallest box holding every region handed to generate-and-test.

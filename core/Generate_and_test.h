@@ -126,29 +126,10 @@ private:
     if (k_.is_zero(l)) return;
     ++stats_.lines;
     V base = base_point(a, b, c, l);
-    // The parameter range of the line inside the region first: most lines of
-    // a conquer miss the region, and then no other plane need be evaluated.
-    bool has_lo = false, has_hi = false;
     FT s_lo(0), s_hi(0);
-    for (const auto& fp : face_plane_) {
-      std::size_t p = fp.first;
-      at_base_[p] = planes_[p].value(base);
-      along_[p] = dot(planes_[p].n, l);
-      int e = k_.sign(along_[p]) * fp.second;
-      if (e == 0) {
-        if (k_.sign(at_base_[p]) * fp.second > 0) return;
-        continue;
-      }
-      FT cut = -at_base_[p] / along_[p];
-      if (e > 0) { if (!has_hi || cut < s_hi) s_hi = cut; has_hi = true; }
-      else { if (!has_lo || s_lo < cut) s_lo = cut; has_lo = true; }
-    }
-    if (!has_lo || !has_hi || k_.compare(s_hi, s_lo) != CGAL::POSITIVE) return;
+    if (!range_in_region(base, l, s_lo, s_hi)) return;
     if (!goal.can_improve(std::min(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
-    for (std::size_t p = 0; p < first_face_; ++p) {
-      at_base_[p] = planes_[p].value(base);
-      along_[p] = dot(planes_[p].n, l);
-    }
+    evaluate_planes(base, l, first_face_);
     std::vector<FT> cuts{s_lo, s_hi};
     FT centre = (s_lo + s_hi) / FT(2);
     for (std::size_t p = 0; p < planes_.size(); ++p) {
@@ -178,29 +159,46 @@ private:
 
   // The segment of the line through planes i, j, m inside the closed region,
   // and every cut by another plane in it, sorted; empty when it misses.
-  std::vector<FT> cuts_in_region(std::size_t i, std::size_t j, std::size_t m, V& base, V& l)
+  // The line's parameter range inside the closed region, from the faces
+  // only: most lines of a conquer miss the region, and then no other plane
+  // need be evaluated.
+  bool range_in_region(const V& base, const V& l, FT& s_lo, FT& s_hi)
   {
-    l = generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n);
-    if (k_.is_zero(l)) return {};
-    base = base_point(planes_[i], planes_[j], planes_[m], l);
     bool has_lo = false, has_hi = false;
-    FT s_lo(0), s_hi(0);
-    for (std::size_t p = 0; p < planes_.size(); ++p) {
-      at_base_[p] = planes_[p].value(base);
-      along_[p] = dot(planes_[p].n, l);
-    }
     for (const auto& fp : face_plane_) {
       std::size_t p = fp.first;
+      at_base_[p] = planes_[p].value(base);
+      along_[p] = dot(planes_[p].n, l);
       int e = k_.sign(along_[p]) * fp.second;
       if (e == 0) {
-        if (k_.sign(at_base_[p]) * fp.second > 0) return {};
+        if (k_.sign(at_base_[p]) * fp.second > 0) return false;
         continue;
       }
       FT cut = -at_base_[p] / along_[p];
       if (e > 0) { if (!has_hi || cut < s_hi) s_hi = cut; has_hi = true; }
       else { if (!has_lo || s_lo < cut) s_lo = cut; has_lo = true; }
     }
-    if (!has_lo || !has_hi || k_.compare(s_hi, s_lo) != CGAL::POSITIVE) return {};
+    return has_lo && has_hi && k_.compare(s_hi, s_lo) == CGAL::POSITIVE;
+  }
+
+  void evaluate_planes(const V& base, const V& l, std::size_t count)
+  {
+    for (std::size_t p = 0; p < count; ++p) {
+      at_base_[p] = planes_[p].value(base);
+      along_[p] = dot(planes_[p].n, l);
+    }
+  }
+
+  // The segment of the line through planes i, j, m inside the closed region,
+  // and every cut by a formula plane in it, sorted; empty when it misses.
+  std::vector<FT> cuts_in_region(std::size_t i, std::size_t j, std::size_t m, V& base, V& l)
+  {
+    l = generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n);
+    if (k_.is_zero(l)) return {};
+    base = base_point(planes_[i], planes_[j], planes_[m], l);
+    FT s_lo(0), s_hi(0);
+    if (!range_in_region(base, l, s_lo, s_hi)) return {};
+    evaluate_planes(base, l, first_face_);
     std::vector<FT> cuts{s_lo, s_hi};
     for (std::size_t p = 0; p < first_face_; ++p) {
       if (k_.sign(along_[p]) == CGAL::ZERO) continue;
