@@ -1,4 +1,5 @@
 #include "cli/Commands.h"
+#include "compare/Comparer.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
 #include "scene/Input_error.h"
@@ -193,6 +194,40 @@ void print_skeleton(const Skeleton_answer& a, bool as_json, std::ostream& out)
   }
 }
 
+void print_comparison(const json& c, std::ostream& out)
+{
+  out << c["file"].get<std::string>() << (c["disagreements"].empty() ? ": all subjects agree\n" : ": DISAGREEMENT\n");
+  for (const auto& s : c["subjects"]) {
+    out << "  " << s["subject"].get<std::string>() << ": ";
+    if (!s["ok"].get<bool>()) { out << "failed: " << s["error"].get<std::string>() << "\n"; continue; }
+    out << (s["collide"].get<bool>() ? "collision" : "no collision");
+    if (!s["witness_valid"].is_null()) out << (s["witness_valid"].get<bool>() ? ", witness valid" : ", witness INVALID");
+    if (!s["earliest"].is_null()) out << ", t* = " << s["earliest"]["t"].get<std::string>();
+    if (!s["t_error"].is_null()) out << " (error " << s["t_error"].get<std::string>() << ")";
+    if (!s["cause"].is_null()) out << "  <- " << s["cause"].get<std::string>();
+    out << "\n";
+  }
+}
+
+int compare(const std::vector<std::string>& files, const Compare_options& o, bool as_json, std::ostream& out, std::ostream& err)
+{
+  int status = 0;
+  json all = json::array();
+  for (const auto& f : files) {
+    Scene scene;
+    if (int s = load(f, scene, err)) { status = CLASH4D_EXIT_INVALID; (void)s; continue; }
+    int s = guarded(f, err, [&] {
+      json c = compare_scene(scene, f, o);
+      if (as_json) all.push_back(c); else print_comparison(c, out);
+      return c["disagreements"].empty() ? 0 : 1;
+    });
+    if (s == 1 && status == 0) status = 1;
+    if (s > 1) status = s;
+  }
+  if (as_json) out << all.dump(2) << "\n";
+  return status;
+}
+
 // Writes to a temporary name and renames, so no half-written scene is left.
 int generate(int n, int colliding, std::uint64_t seed, const std::string& file, std::ostream& out, std::ostream& err)
 {
@@ -264,6 +299,15 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   skeleton_cmd->add_option("--number", number, "number type: exact (default) or double")->check(CLI::IsMember({"exact", "double"}));
   skeleton_cmd->add_flag("--json", as_json, "print JSON (numbers as exact strings)");
 
+  std::vector<std::string> compare_files;
+  std::vector<double> compare_tolerances;
+  bool compare_earliest = false;
+  auto* compare_cmd = app.add_subcommand("compare", "Run exact, double, double with tolerances and exact-on-rounded-input on each scene; flag and classify every disagreement with exact (exit 1 when any).");
+  compare_cmd->add_option("SCENE", compare_files, "scene files")->required();
+  compare_cmd->add_option("--tolerance", compare_tolerances, "a double subject treating |value| <= EPS as zero; repeatable (default 1e-9)")->check(CLI::PositiveNumber);
+  compare_cmd->add_flag("--earliest", compare_earliest, "also compare earliest collision times t*");
+  compare_cmd->add_flag("--json", as_json, "print one JSON object per scene in a list");
+
   int grid_n = 0, grid_colliding = 0;
   std::uint64_t grid_seed = 1;
   std::string grid_out;
@@ -286,6 +330,12 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
 
   if (validate_cmd->parsed()) return validate(validate_files, out, err);
   if (generate_cmd->parsed()) return generate(grid_n, grid_colliding, grid_seed, grid_out, out, err);
+  if (compare_cmd->parsed()) {
+    Compare_options o;
+    if (!compare_tolerances.empty()) o.tolerances = compare_tolerances;
+    o.earliest = compare_earliest;
+    return compare(compare_files, o, as_json, out, err);
+  }
   if (check_cmd->parsed() && tolerance != 0 && number != "double") {
     err << "clash4d: --tolerance applies to --number double only\n";
     return CLASH4D_EXIT_INVALID;

@@ -479,22 +479,7 @@ private:
     }
   }
 
-  // Strictly inside both objects at time t, with tL < t < tH, evaluated on the
-  // 3D solids moved back by D(t): independent of the extrusion.
-  bool verify(const V4& w, int a, int b) const
-  {
-    if (!(k_.less(model_.t_lo, w[3]) && k_.less(w[3], model_.t_hi))) return false;
-    for (int i : {a, b}) {
-      const Object_model<FT>& o = model_.objects[i];
-      Vector3<FT> d = o.motion.displacement(w[3]);
-      Vector3<FT> y{w[0] - d[0], w[1] - d[1], w[2] - d[2]};
-      if (classify_point(k_, o.csg, y) != Truth::True) return false;
-      for (const auto& prim : o.csg.primitives)
-        for (const auto& pl : prim.planes)
-          if (k_.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], y) == CGAL::ZERO) return false;
-    }
-    return true;
-  }
+  bool verify(const V4& w, int a, int b) const { return is_valid_witness(k_, model_, a, b, w); }
 };
 
 } // namespace clash4d

@@ -7,6 +7,7 @@
 
 #include "core/Csg_model.h"
 #include "core/Formula.h"
+#include "core/Scene_model.h"
 
 namespace clash4d {
 
@@ -49,6 +50,26 @@ Truth classify_point(const K& k, const Csg_model<typename K::FT>& m, const Vecto
     }
   }
   return Truth::Unknown;
+}
+
+// A witness (x, y, z, t) of a collision of objects a and b: tL < t < tH, and
+// x - D(t) strictly inside both solids and on none of their planes. Evaluated
+// on the 3D solids moved back by D(t), independently of the extrusion.
+template <class K>
+bool is_valid_witness(const K& k, const Scene_model<K>& model, int a, int b, const Vector4<typename K::FT>& w)
+{
+  using FT = typename K::FT;
+  if (!(k.less(model.t_lo, w[3]) && k.less(w[3], model.t_hi))) return false;
+  for (int i : {a, b}) {
+    const Object_model<FT>& o = model.objects[i];
+    Vector3<FT> d = o.motion.displacement(w[3]);
+    Vector3<FT> y{w[0] - d[0], w[1] - d[1], w[2] - d[2]};
+    if (classify_point(k, o.csg, y) != Truth::True) return false;
+    for (const auto& prim : o.csg.primitives)
+      for (const auto& pl : prim.planes)
+        if (k.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], y) == CGAL::ZERO) return false;
+  }
+  return true;
 }
 
 } // namespace clash4d

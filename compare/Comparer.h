@@ -1,0 +1,48 @@
+// The comparer: runs every subject on a scene and holds it against the exact
+// answer, in the spirit of CGAL's Kernel_checker (run two kernels side by
+// side; on mismatch report both answers and the inputs). Subjects:
+//   exact            the reference (rationals);
+//   double           the same pipeline on doubles, plain sign tests;
+//   double tol=EPS   the same with |value| <= EPS treated as zero;
+//   exact-rounded    exact arithmetic on the scene with every number rounded
+//                    to the nearest double (separates input rounding from
+//                    arithmetic, regularised-semantics item 8).
+// Every disagreement is classified by its cause:
+//   input rounding   exact on the rounded scene already disagrees;
+//   contact          the exact verdict flips when one of the two objects is
+//                    moved by a tiny amount (2^-20 of the scene's scale) along
+//                    an axis: the closed objects touch or nearly do, so the case
+//                    hinges on regularisation;
+//   arithmetic       otherwise: the subject's own rounding or tolerance;
+//   invalid witness  verdicts agree but the subject's witness is not strictly
+//                    inside both objects of the true scene (checked exactly).
+#ifndef CLASH4D_COMPARE_COMPARER_H
+#define CLASH4D_COMPARE_COMPARER_H
+
+#include "scene/Scene.h"
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace clash4d {
+
+struct Compare_options {
+  std::vector<double> tolerances{1e-9};   // one "double tol=EPS" subject each
+  bool earliest = false;                  // also compare t* (and report its error)
+  bool rounded = true;                    // run the exact-rounded subject
+};
+
+// One comparison object (schema in compare/README.md).
+nlohmann::ordered_json compare_scene(const Scene& scene, const std::string& file, const Compare_options& options);
+
+// The scene with every number replaced by the exact value of its nearest
+// double, re-validated; throws Input_error when the rounded scene is invalid
+// and std::range_error when a number has no double.
+Scene rounded_scene(const Scene& scene);
+
+// The disagreements of a comparison object, as "subject: cause" strings.
+std::vector<std::string> disagreement_keys(const nlohmann::ordered_json& comparison);
+
+} // namespace clash4d
+
+#endif
