@@ -1,4 +1,5 @@
 #include "cli/Commands.h"
+#include "cli/Campaign_commands.h"
 #include "compare/Comparer.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
@@ -8,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <unistd.h>
 #include <fstream>
 #include <ostream>
 
@@ -308,6 +310,24 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   compare_cmd->add_flag("--earliest", compare_earliest, "also compare earliest collision times t*");
   compare_cmd->add_flag("--json", as_json, "print one JSON object per scene in a list");
 
+  Fuzz_options fuzz;
+  std::string shard = "1/1";
+  std::vector<std::string> merge_dirs;
+  std::vector<double> fuzz_tolerances;
+  auto* fuzz_cmd = app.add_subcommand("fuzz", "A deterministic campaign of contact cases against exact arithmetic; saves and shrinks every disagreement in DIR (resumable; exit 1 when any finding).");
+  fuzz_cmd->add_option("--seed", fuzz.seed, "campaign seed");
+  fuzz_cmd->add_option("--cases", fuzz.cases, "number of cases in the whole campaign");
+  fuzz_cmd->add_option("--shard", shard, "K/S: run the K-th of S disjoint parts (default 1/1)");
+  fuzz_cmd->add_option("--out", fuzz.out, "output folder")->required();
+  fuzz_cmd->add_option("--tolerance", fuzz_tolerances, "double subjects with tolerance EPS (default 1e-9)")->check(CLI::PositiveNumber);
+  fuzz_cmd->add_option("--merge", merge_dirs, "join these fuzz output folders into --out instead of running");
+
+  std::vector<std::string> report_inputs;
+  std::string report_out;
+  auto* report_cmd = app.add_subcommand("report", "Compare scenes (files, folders, fuzz outputs) and write DIR/index.html, report.json and junit.xml.");
+  report_cmd->add_option("INPUT", report_inputs, "scene files, folders of scenes, or fuzz output folders")->required();
+  report_cmd->add_option("--out", report_out, "output folder")->required();
+
   int grid_n = 0, grid_colliding = 0;
   std::uint64_t grid_seed = 1;
   std::string grid_out;
@@ -330,6 +350,28 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
 
   if (validate_cmd->parsed()) return validate(validate_files, out, err);
   if (generate_cmd->parsed()) return generate(grid_n, grid_colliding, grid_seed, grid_out, out, err);
+  if (fuzz_cmd->parsed()) {
+    if (!merge_dirs.empty()) return merge_command(merge_dirs, fuzz.out, out, err);
+    auto slash = shard.find('/');
+    try {
+      fuzz.shard = std::stoull(shard.substr(0, slash));
+      fuzz.shards = slash == std::string::npos ? 0 : std::stoull(shard.substr(slash + 1));
+    } catch (const std::exception&) {
+      fuzz.shards = 0;
+    }
+    if (fuzz.shards == 0 || fuzz.shard == 0 || fuzz.shard > fuzz.shards) {
+      err << "clash4d fuzz: --shard expects K/S with 1 <= K <= S, found '" << shard << "'\n";
+      return CLASH4D_EXIT_INVALID;
+    }
+    if (!fuzz_tolerances.empty()) fuzz.compare.tolerances = fuzz_tolerances;
+    fuzz.progress = isatty(fileno(stderr)) != 0;
+    return fuzz_command(fuzz, out, err);
+  }
+  if (report_cmd->parsed()) {
+    Compare_options o;
+    o.earliest = true;
+    return report_command(report_inputs, report_out, o, out, err);
+  }
   if (compare_cmd->parsed()) {
     Compare_options o;
     if (!compare_tolerances.empty()) o.tolerances = compare_tolerances;

@@ -143,11 +143,8 @@ json compare_scene(const Scene& scene, const std::string& file, const Compare_op
   std::vector<Run> runs;
   runs.push_back(timed("exact", true, [&] { return check_exact(scene, co); }));
   runs.push_back(timed("double", false, [&] { return check_double(scene, 0, co); }));
-  for (double tol : options.tolerances) {
-    std::ostringstream name;
-    name << "double tol=" << tol;
-    runs.push_back(timed(name.str(), false, [&] { return check_double(scene, tol, co); }));
-  }
+  for (double tol : options.tolerances)
+    runs.push_back(timed(tolerance_subject(tol), false, [&] { return check_double(scene, tol, co); }));
   if (options.rounded)
     runs.push_back(timed("exact-rounded", true, [&] { return check_exact(rounded_scene(scene), co); }));
 
@@ -206,6 +203,13 @@ json compare_scene(const Scene& scene, const std::string& file, const Compare_op
   out["subjects"] = subjects;
   out["disagreements"] = disagreements;
   return out;
+}
+
+std::string tolerance_subject(double tol)
+{
+  std::ostringstream name;
+  name << "double tol=" << tol;
+  return name.str();
 }
 
 std::vector<std::string> disagreement_keys(const json& comparison)

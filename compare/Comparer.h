@@ -40,6 +40,9 @@ nlohmann::ordered_json compare_scene(const Scene& scene, const std::string& file
 // and std::range_error when a number has no double.
 Scene rounded_scene(const Scene& scene);
 
+// The name of the double subject with tolerance tol ("double tol=1e-09").
+std::string tolerance_subject(double tol);
+
 // The disagreements of a comparison object, as "subject: cause" strings.
 std::vector<std::string> disagreement_keys(const nlohmann::ordered_json& comparison);
 

@@ -1,0 +1,102 @@
+#include "cli/Campaign_commands.h"
+#include "compare/Report_writer.h"
+#include "scene/Input_error.h"
+#include "scene/Json_reader.h"
+#include "scene/Scene_reader.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+
+namespace clash4d {
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+
+int fuzz_command(const Fuzz_options& options, std::ostream& out, std::ostream& err)
+{
+  try {
+    Fuzz_summary s = run_fuzz(options, err);
+    out << options.out << ": shard " << options.shard << "/" << options.shards << ", " << s.done << " cases"
+        << (s.resumed_from ? " (resumed at case " + std::to_string(s.resumed_from) + ")" : "") << ", " << s.findings
+        << " findings in " << (fs::path(options.out) / "findings").string() << "\n";
+    return s.findings ? 1 : 0;
+  } catch (const std::exception& e) {
+    err << "clash4d fuzz: " << e.what() << "\n";
+    return CLASH4D_EXIT_INVALID;
+  }
+}
+
+int merge_command(const std::vector<std::string>& dirs, const std::string& out_dir, std::ostream& out, std::ostream& err)
+{
+  try {
+    Fuzz_summary s = merge_fuzz(dirs, out_dir);
+    out << out_dir << ": " << s.findings << " findings merged from " << dirs.size() << " folders\n";
+    return 0;
+  } catch (const std::exception& e) {
+    err << "clash4d fuzz --merge: " << e.what() << "\n";
+    return CLASH4D_EXIT_INVALID;
+  }
+}
+
+namespace {
+
+json read_plain(const fs::path& p)
+{
+  std::ifstream in(p);
+  return json::parse(in);
+}
+
+// Saved findings carry their scene and comparison: no need to rerun them.
+void add_fuzz_folder(const fs::path& dir, std::vector<Report_case>& cases)
+{
+  std::vector<fs::path> files;
+  for (const auto& f : fs::directory_iterator(dir / "findings"))
+    if (f.path().extension() == ".json") files.push_back(f.path());
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) {
+    json finding = read_plain(f);
+    cases.push_back({f.string(), read_scene(read_json_text(finding["scene"].dump())), finding["comparison"]});
+  }
+}
+
+void add_scene_file(const fs::path& file, const Compare_options& compare, std::vector<Report_case>& cases)
+{
+  Scene scene;
+  try {
+    scene = read_scene_file(file.string());
+  } catch (const Input_error& e) {
+    throw std::runtime_error(e.format(file.string()));
+  }
+  cases.push_back({file.string(), scene, compare_scene(scene, file.string(), compare)});
+}
+
+} // namespace
+
+int report_command(const std::vector<std::string>& inputs, const std::string& out_dir, const Compare_options& compare,
+                   std::ostream& out, std::ostream& err)
+{
+  try {
+    std::vector<Report_case> cases;
+    for (const auto& input : inputs) {
+      fs::path p(input);
+      if (fs::is_directory(p / "findings")) { add_fuzz_folder(p, cases); continue; }
+      if (!fs::is_directory(p)) { add_scene_file(p, compare, cases); continue; }
+      std::vector<fs::path> files;
+      for (const auto& f : fs::directory_iterator(p))
+        if (f.path().extension() == ".json" && f.path().filename() != "expected.json") files.push_back(f.path());
+      std::sort(files.begin(), files.end());
+      for (const auto& f : files) add_scene_file(f, compare, cases);
+    }
+    write_report(cases, out_dir);
+    std::size_t disagreeing = 0;
+    for (const auto& c : cases) disagreeing += !c.comparison["disagreements"].empty();
+    out << out_dir << ": " << cases.size() << " cases, " << disagreeing << " with disagreements (index.html, report.json, junit.xml)\n";
+    return disagreeing ? 1 : 0;
+  } catch (const std::exception& e) {
+    err << "clash4d report: " << e.what() << "\n";
+    return CLASH4D_EXIT_INVALID;
+  }
+}
+
+} // namespace clash4d

@@ -1,0 +1,188 @@
+#include "compare/Fuzz_campaign.h"
+#include "compare/Contact_families.h"
+#include "compare/Shrinker.h"
+#include "scene/Json_reader.h"
+#include "scene/Scene_reader.h"
+#include "scene/Scene_writer.h"
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <ostream>
+#include <sstream>
+#include <tbb/parallel_for.h>
+
+namespace clash4d {
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+
+void write_file_atomically(const std::string& path, const std::string& text)
+{
+  std::string tmp = path + ".tmp";
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    f << text;
+    f.flush();
+    if (!f) throw std::runtime_error(tmp + ": cannot write");
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error(path + ": cannot rename " + tmp + " to it");
+}
+
+namespace {
+
+json read_json_file_plain(const std::string& path)
+{
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot read");
+  try {
+    return json::parse(in);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path + ": not valid JSON (" + e.what() + ")");
+  }
+}
+
+// Timings differ from run to run; findings keep only what is reproducible.
+json reproducible(json comparison)
+{
+  for (auto& s : comparison["subjects"]) s.erase("seconds");
+  return comparison;
+}
+
+json campaign_json(const Fuzz_options& o)
+{
+  return {{"format", "clash4d-fuzz/1"}, {"seed", o.seed}, {"cases", o.cases}, {"tolerances", o.compare.tolerances}};
+}
+
+// The campaign folder: created, or checked to hold this very campaign.
+void prepare(const Fuzz_options& o)
+{
+  fs::create_directories(fs::path(o.out) / "findings");
+  std::string path = (fs::path(o.out) / "campaign.json").string();
+  json want = campaign_json(o);
+  if (fs::exists(path)) {
+    if (read_json_file_plain(path) != want)
+      throw std::runtime_error(path + ": this folder holds another campaign (seed, cases or tolerances differ)");
+  } else {
+    write_file_atomically(path, want.dump(2) + "\n");
+  }
+}
+
+std::string progress_path(const Fuzz_options& o)
+{
+  return (fs::path(o.out) / ("progress-" + std::to_string(o.shard) + "-of-" + std::to_string(o.shards) + ".json")).string();
+}
+
+std::string finding_path(const Fuzz_options& o, std::uint64_t index, const char* suffix)
+{
+  return (fs::path(o.out) / "findings" / ("case-" + std::to_string(index) + suffix)).string();
+}
+
+// Compares one case; on disagreement saves it, shrinks it, saves the minimum.
+bool run_case(const Fuzz_options& o, std::uint64_t index)
+{
+  Fuzz_case c = make_fuzz_case(o.seed, index);
+  Scene scene = read_scene(read_json_text(c.json));
+  json comparison = compare_scene(scene, "case-" + std::to_string(index), o.compare);
+  std::vector<std::string> keys = disagreement_keys(comparison);
+  if (keys.empty()) return false;
+  json finding = {{"family", c.family}, {"seed", o.seed}, {"index", index},
+                  {"scene", json::parse(write_scene(scene))}, {"comparison", reproducible(comparison)}};
+  write_file_atomically(finding_path(o, index, ".json"), finding.dump(2) + "\n");
+  // Shrink while the first disagreement (same subject, same cause) persists,
+  // running only the subjects that decide it.
+  const json& first = comparison["disagreements"][0];
+  std::string key = keys.front(), subject = first["subject"];
+  Compare_options narrow = o.compare;
+  narrow.tolerances.clear();
+  for (double tol : o.compare.tolerances)
+    if (subject == tolerance_subject(tol)) narrow.tolerances.push_back(tol);
+  auto still_fails = [&](const Scene& candidate) {
+    std::vector<std::string> k = disagreement_keys(compare_scene(candidate, "", narrow));
+    return std::find(k.begin(), k.end(), key) != k.end();
+  };
+  Scene small = shrink_scene(scene, still_fails, o.max_shrink_checks);
+  json shrunk = {{"family", c.family}, {"seed", o.seed}, {"index", index}, {"disagreement", key},
+                 {"scene", json::parse(write_scene(small))},
+                 {"comparison", reproducible(compare_scene(small, "case-" + std::to_string(index) + ".min", o.compare))}};
+  write_file_atomically(finding_path(o, index, ".min.json"), shrunk.dump(2) + "\n");
+  return true;
+}
+
+void show_progress(std::ostream& err, std::uint64_t done, std::uint64_t total, std::uint64_t findings, double seconds)
+{
+  double rate = seconds > 0 ? done / seconds : 0;
+  double eta = rate > 0 ? (total - done) / rate : 0;
+  err << "\r" << done << "/" << total << " cases, " << static_cast<int>(rate * 10) / 10.0 << "/s, " << findings
+      << " findings, ETA " << static_cast<long>(eta) << " s   " << std::flush;
+}
+
+} // namespace
+
+Fuzz_summary run_fuzz(const Fuzz_options& o, std::ostream& err)
+{
+  if (o.shards == 0 || o.shard == 0 || o.shard > o.shards) throw std::runtime_error("--shard K/S needs 1 <= K <= S");
+  prepare(o);
+  // The cases of this shard: indices i with i mod S = K - 1, in order.
+  std::vector<std::uint64_t> mine;
+  for (std::uint64_t i = o.shard - 1; i < o.cases; i += o.shards) mine.push_back(i);
+  Fuzz_summary s;
+  std::string progress = progress_path(o);
+  if (fs::exists(progress)) s.resumed_from = read_json_file_plain(progress).value("next", 0u);
+  std::size_t start = 0;
+  while (start < mine.size() && mine[start] < s.resumed_from) ++start;
+  std::atomic<std::uint64_t> findings{0};
+  for (const auto& f : fs::directory_iterator(fs::path(o.out) / "findings"))
+    findings += f.path().string().find(".min.json") == std::string::npos && f.path().extension() == ".json";
+  auto began = std::chrono::steady_clock::now();
+  const std::size_t batch = 16;
+  for (std::size_t b = start; b < mine.size(); b += batch) {
+    std::size_t end = std::min(mine.size(), b + batch);
+    tbb::parallel_for(b, end, [&](std::size_t k) {
+      bool known = fs::exists(finding_path(o, mine[k], ".json"));   // redone after an interruption
+      if (run_case(o, mine[k]) && !known) ++findings;
+    });
+    // Only after the whole batch is saved does the progress move past it.
+    std::uint64_t next = end < mine.size() ? mine[end] : o.cases;
+    write_file_atomically(progress, json{{"next", next}}.dump() + "\n");
+    s.done = end;
+    if (o.progress)
+      show_progress(err, end, mine.size(), findings,
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count());
+  }
+  if (o.progress) err << "\n";
+  s.done = mine.size();
+  s.findings = findings;
+  return s;
+}
+
+Fuzz_summary merge_fuzz(const std::vector<std::string>& dirs, const std::string& out)
+{
+  fs::create_directories(fs::path(out) / "findings");
+  Fuzz_summary s;
+  std::map<std::string, std::size_t> by_family, by_subject_cause;
+  for (const auto& d : dirs) {
+    fs::path findings = fs::path(d) / "findings";
+    if (!fs::is_directory(findings)) throw std::runtime_error(d + ": not a fuzz output folder (no findings/)");
+    for (const auto& f : fs::directory_iterator(findings)) {
+      if (f.path().extension() != ".json") continue;
+      std::string name = f.path().filename().string();
+      json finding = read_json_file_plain(f.path().string());
+      fs::path target = fs::path(out) / "findings" / name;
+      if (fs::exists(target) && read_json_file_plain(target.string()) != finding)
+        throw std::runtime_error(target.string() + ": two campaigns disagree on this finding (different seeds?)");
+      write_file_atomically(target.string(), finding.dump(2) + "\n");
+      if (name.find(".min.json") != std::string::npos) continue;
+      ++s.findings;
+      ++by_family[finding["family"].get<std::string>()];
+      for (const auto& k : disagreement_keys(finding["comparison"])) ++by_subject_cause[k];
+    }
+  }
+  json summary = {{"findings", s.findings}, {"by_family", by_family}, {"by_subject_and_cause", by_subject_cause}};
+  write_file_atomically((fs::path(out) / "summary.json").string(), summary.dump(2) + "\n");
+  return s;
+}
+
+} // namespace clash4d

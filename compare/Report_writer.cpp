@@ -1,0 +1,769 @@
+#include "compare/Report_writer.h"
+
+#include "core/Scene_model.h"
+#include "float/Double_kernel.h"
+#include "scene/Number_text.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace clash4d {
+namespace {
+
+using json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+
+const char* const all_causes[] = {"contact", "input rounding", "arithmetic", "invalid witness"};
+const char* const palette[] = {"#4e79a7", "#f28e2b", "#59a14f", "#b07aa1", "#76b7b2",
+                               "#edc948", "#9c755f", "#ff9da7", "#e15759", "#bab0ac"};
+constexpr std::size_t max_drawn_objects = 24;
+
+// ---------------------------------------------------------------- text
+
+// Escapes for HTML text and attributes and for XML; control characters that
+// XML 1.0 forbids become U+FFFD.
+std::string escape(const std::string& s)
+{
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') out += "\xEF\xBF\xBD";
+        else out += c;
+    }
+  }
+  return out;
+}
+
+std::string format(const char* spec, double x)
+{
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, spec, x);
+  return buffer;
+}
+
+std::string seconds_text(double s)
+{
+  return s < 1 ? format("%.3g ms", s * 1000) : format("%.3g s", s);
+}
+
+// ---------------------------------------------------------------- comparison fields
+
+const json& field(const json& j, const char* key)
+{
+  static const json null;
+  if (!j.is_object()) return null;
+  auto it = j.find(key);
+  return it == j.end() ? null : *it;
+}
+
+// The string value of a field, "" when missing or null.
+std::string text(const json& j, const char* key)
+{
+  const json& v = field(j, key);
+  if (v.is_string()) return v.get<std::string>();
+  return v.is_null() ? "" : v.dump();
+}
+
+// 1 true, 0 false, -1 missing or null.
+int flag(const json& j, const char* key)
+{
+  const json& v = field(j, key);
+  return v.is_boolean() ? (v.get<bool>() ? 1 : 0) : -1;
+}
+
+const json& subjects_of(const json& comparison)
+{
+  static const json none = json::array();
+  const json& s = field(comparison, "subjects");
+  return s.is_array() ? s : none;
+}
+
+bool failed(const json& s) { return flag(s, "ok") == 0; }
+bool is_reference(const json& s) { return flag(s, "reference") == 1; }
+bool disagrees(const json& s) { return !failed(s) && !text(s, "cause").empty(); }
+
+const json& reference_of(const json& comparison)
+{
+  static const json null;
+  for (const json& s : subjects_of(comparison))
+    if (is_reference(s)) return s;
+  for (const json& s : subjects_of(comparison))
+    if (text(s, "subject") == "exact") return s;
+  return null;
+}
+
+// The detail of a subject's disagreement, from the comparison's list.
+std::string detail_of(const json& comparison, const json& subject)
+{
+  const json& list = field(comparison, "disagreements");
+  if (list.is_array())
+    for (const json& d : list)
+      if (text(d, "subject") == text(subject, "subject")) return text(d, "detail");
+  return text(subject, "subject") + " disagrees with exact (" + text(subject, "cause") + ")";
+}
+
+bool case_disagrees(const json& comparison)
+{
+  for (const json& s : subjects_of(comparison))
+    if (disagrees(s)) return true;
+  return false;
+}
+
+bool case_has_errors(const json& comparison)
+{
+  for (const json& s : subjects_of(comparison))
+    if (failed(s)) return true;
+  return false;
+}
+
+std::string verdict_text(const json& s)
+{
+  int c = flag(s, "collide");
+  return c < 0 ? "\xE2\x80\x94" : (c ? "collision" : "no collision");
+}
+
+std::string yes_no(int f, const char* unknown = "\xE2\x80\x94") { return f < 0 ? unknown : (f ? "yes" : "no"); }
+
+std::string join_strings(const json& a, const char* separator)
+{
+  std::string out;
+  if (!a.is_array()) return out;
+  for (const json& e : a) out += (out.empty() ? "" : separator) + (e.is_string() ? e.get<std::string>() : e.dump());
+  return out;
+}
+
+// "a, b at (x, y, z, t)" for a witness or earliest object.
+std::string located_text(const json& w)
+{
+  if (!w.is_object()) return "\xE2\x80\x94";
+  return join_strings(field(w, "objects"), ", ") + " at (" + join_strings(field(w, "point"), ", ") + ")";
+}
+
+// ---------------------------------------------------------------- summary
+
+struct Tally {
+  int answers = 0, agreements = 0, disagreements = 0, errors = 0;
+  json by_cause = json::object();
+
+  Tally() { for (const char* c : all_causes) by_cause[c] = 0; }
+  void add(const json& s)
+  {
+    ++answers;
+    if (failed(s)) ++errors;
+    else if (disagrees(s)) {
+      ++disagreements;
+      std::string c = text(s, "cause");
+      by_cause[c] = by_cause.value(c, 0) + 1;
+    } else ++agreements;
+  }
+  json to_json() const
+  {
+    return {{"answers", answers}, {"agreements", agreements}, {"disagreements", disagreements},
+            {"errors", errors}, {"by_cause", by_cause}};
+  }
+};
+
+// Scene counts; answer counts over the non-reference subjects, in total and
+// per subject; failures of the reference counted apart.
+json summary_of(const std::vector<Report_case>& cases)
+{
+  int agreeing = 0, disagreeing = 0, with_errors = 0, reference_errors = 0;
+  Tally total;
+  json by_subject = json::object();
+  std::vector<std::string> order;
+  std::vector<Tally> tallies;
+  for (const Report_case& c : cases) {
+    bool d = case_disagrees(c.comparison), e = case_has_errors(c.comparison);
+    agreeing += !d && !e;
+    disagreeing += d;
+    with_errors += e;
+    for (const json& s : subjects_of(c.comparison)) {
+      if (is_reference(s)) { reference_errors += failed(s); continue; }
+      std::string name = text(s, "subject");
+      auto it = std::find(order.begin(), order.end(), name);
+      if (it == order.end()) { order.push_back(name); tallies.emplace_back(); it = order.end() - 1; }
+      tallies[it - order.begin()].add(s);
+      total.add(s);
+    }
+  }
+  for (std::size_t i = 0; i < order.size(); ++i) by_subject[order[i]] = tallies[i].to_json();
+  json t = total.to_json();
+  return {{"scenes", cases.size()}, {"scenes_agreeing", agreeing}, {"scenes_disagreeing", disagreeing},
+          {"scenes_with_errors", with_errors}, {"answers", t["answers"]}, {"agreements", t["agreements"]},
+          {"disagreements", t["disagreements"]}, {"errors", t["errors"]}, {"reference_errors", reference_errors},
+          {"by_cause", t["by_cause"]}, {"by_subject", by_subject}};
+}
+
+std::string report_json(const std::vector<Report_case>& cases, const json& summary)
+{
+  json out = {{"format", "clash4d-report/1"}, {"summary", summary}, {"cases", json::array()}};
+  for (const Report_case& c : cases) out["cases"].push_back(c.comparison);
+  return out.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+}
+
+// ---------------------------------------------------------------- JUnit
+
+std::string junit_case(const Report_case& c, const json& s)
+{
+  std::ostringstream out;
+  const json& seconds = field(s, "seconds");
+  out << "  <testcase classname=\"" << escape(c.file) << "\" name=\"" << escape(text(s, "subject")) << "\"";
+  if (seconds.is_number()) out << " time=\"" << format("%.6f", seconds.get<double>()) << "\"";
+  if (failed(s)) {
+    std::string e = text(s, "error");
+    out << ">\n    <error message=\"" << escape(e) << "\" type=\"error\">" << escape(e) << "</error>\n  </testcase>\n";
+  } else if (disagrees(s)) {
+    out << ">\n    <failure message=\"" << escape(text(s, "cause")) << "\" type=\"disagreement\">"
+        << escape(detail_of(c.comparison, s)) << "</failure>\n  </testcase>\n";
+  } else out << "/>\n";
+  return out.str();
+}
+
+std::string junit_xml(const std::vector<Report_case>& cases)
+{
+  int tests = 0, failures = 0, errors = 0;
+  double seconds = 0;
+  std::string body;
+  for (const Report_case& c : cases)
+    for (const json& s : subjects_of(c.comparison)) {
+      ++tests;
+      failures += disagrees(s);
+      errors += failed(s);
+      if (field(s, "seconds").is_number()) seconds += field(s, "seconds").get<double>();
+      body += junit_case(c, s);
+    }
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuite name=\"clash4d\" tests=\"" << tests
+      << "\" failures=\"" << failures << "\" errors=\"" << errors << "\" time=\"" << format("%.6f", seconds)
+      << "\">\n" << body << "</testsuite>\n";
+  return out.str();
+}
+
+// ---------------------------------------------------------------- drawing data
+
+struct Marker {
+  enum class Kind { Witness, Earliest, Other };
+  Kind kind;
+  std::array<double, 4> point;      // x, y, z, t
+  std::string title;
+};
+
+struct Drawn_object {
+  std::string name, colour;
+  Box<double, 3> box;
+  Motion_path<double> motion;
+};
+
+struct Drawing {
+  double t_lo = 0, t_hi = 1;
+  std::vector<Drawn_object> objects;
+  std::size_t object_count = 0;
+  std::vector<Marker> markers;
+  std::string error;                // why nothing can be drawn
+};
+
+// A bound of the solid of a CSG node: join for union, meet for intersection,
+// the first child for difference.
+Box<double, 3> node_box(const Csg_model<double>& m, int i)
+{
+  const Csg_node& n = m.nodes[i];
+  if (n.op == Csg_node::Op::Primitive) return m.primitives[n.primitive].box;
+  Box<double, 3> b = node_box(m, n.children[0]);
+  if (n.op == Csg_node::Op::Difference) return b;
+  for (std::size_t k = 1; k < n.children.size(); ++k)
+    b = n.op == Csg_node::Op::Union ? join(b, node_box(m, n.children[k])) : meet(b, node_box(m, n.children[k]));
+  return b;
+}
+
+std::optional<double> number_of(const json& v)
+{
+  if (v.is_number()) return v.get<double>();
+  if (!v.is_string()) return std::nullopt;
+  Number_parse p = parse_number_text(v.get<std::string>(), true);
+  if (!p.ok) return std::nullopt;
+  double d = round_to_nearest(p.value);
+  if (!std::isfinite(d)) return std::nullopt;
+  return d;
+}
+
+void add_marker(std::vector<Marker>& out, Marker::Kind kind, const json& located, const std::string& title)
+{
+  const json& p = field(located, "point");
+  if (!p.is_array() || p.size() != 4) return;
+  Marker m{kind, {}, title + ": " + located_text(located)};
+  for (std::size_t i = 0; i < 4; ++i) {
+    std::optional<double> d = number_of(p[i]);
+    if (!d) return;
+    m.point[i] = *d;
+  }
+  out.push_back(m);
+}
+
+std::vector<Marker> markers_of(const json& comparison)
+{
+  std::vector<Marker> out;
+  const json& ref = reference_of(comparison);
+  add_marker(out, Marker::Kind::Witness, field(ref, "witness"), text(ref, "subject") + " witness");
+  add_marker(out, Marker::Kind::Earliest, field(ref, "earliest"), text(ref, "subject") + " earliest contact, t* = " + text(field(ref, "earliest"), "t"));
+  for (const json& s : subjects_of(comparison))
+    if (!is_reference(s)) add_marker(out, Marker::Kind::Other, field(s, "witness"), text(s, "subject") + " witness");
+  return out;
+}
+
+// Every object when there are few; otherwise those named by some answer.
+std::vector<std::size_t> objects_to_draw(const Report_case& c)
+{
+  std::vector<std::size_t> all;
+  for (std::size_t i = 0; i < c.scene.objects.size(); ++i) all.push_back(i);
+  if (all.size() <= max_drawn_objects) return all;
+  std::vector<std::string> named;
+  for (const json& s : subjects_of(c.comparison))
+    for (const char* key : {"witness", "earliest"}) {
+      const json& names = field(field(s, key), "objects");
+      if (names.is_array())
+        for (const json& n : names)
+          if (n.is_string()) named.push_back(n.get<std::string>());
+    }
+  std::vector<std::size_t> chosen;
+  for (std::size_t i : all)
+    if (std::find(named.begin(), named.end(), c.scene.objects[i].name) != named.end()) chosen.push_back(i);
+  if (chosen.empty()) chosen.assign(all.begin(), all.begin() + max_drawn_objects);
+  return chosen;
+}
+
+Drawing drawing_of(const Report_case& c)
+{
+  Drawing d;
+  d.object_count = c.scene.objects.size();
+  d.markers = markers_of(c.comparison);
+  try {
+    Double_kernel k;
+    Scene_model<Double_kernel> m = Scene_model<Double_kernel>::build(k, c.scene);
+    d.t_lo = m.t_lo;
+    d.t_hi = m.t_hi;
+    for (std::size_t i : objects_to_draw(c)) {
+      const Object_model<double>& o = m.objects[i];
+      d.objects.push_back({o.name, palette[d.objects.size() % std::size(palette)], node_box(o.csg, 0), o.motion});
+    }
+  } catch (const std::exception& e) {
+    d.error = e.what();
+    d.objects.clear();
+  }
+  return d;
+}
+
+// ---------------------------------------------------------------- q-t diagrams
+
+// The plot: q horizontal, t vertical upwards (as in the paper's figures).
+struct Frame {
+  double q_lo, q_hi, t_lo, t_hi;
+  static constexpr double width = 360, height = 330, left = 56, right = 14, top = 24, bottom = 42;
+  double x(double q) const { return left + (q - q_lo) / (q_hi - q_lo) * (width - left - right); }
+  double y(double t) const { return top + (t_hi - t) / (t_hi - t_lo) * (height - top - bottom); }
+};
+
+// tL, the motion's breakpoints inside (tL, tH), tH.
+std::vector<double> band_times(const Motion_path<double>& m, double t_lo, double t_hi)
+{
+  std::vector<double> ts{t_lo};
+  for (double t : m.times)
+    if (t_lo < t && t < t_hi) ts.push_back(t);
+  ts.push_back(t_hi);
+  return ts;
+}
+
+bool drawable(const Box<double, 3>& b, int axis)
+{
+  return !b.empty && !(b.has_lo[axis] && b.has_hi[axis] && b.hi[axis] < b.lo[axis]);
+}
+
+// The range of q over every bounded band edge and marker, padded.
+Frame frame_of(const Drawing& d, int axis)
+{
+  double lo = INFINITY, hi = -INFINITY;
+  auto take = [&](double q) { if (std::isfinite(q)) { lo = std::min(lo, q); hi = std::max(hi, q); } };
+  for (const Drawn_object& o : d.objects) {
+    if (!drawable(o.box, axis)) continue;
+    for (double t : band_times(o.motion, d.t_lo, d.t_hi)) {
+      double shift = o.motion.displacement(t)[axis];
+      if (o.box.has_lo[axis]) take(o.box.lo[axis] + shift);
+      if (o.box.has_hi[axis]) take(o.box.hi[axis] + shift);
+    }
+  }
+  for (const Marker& m : d.markers) take(m.point[axis]);
+  if (lo > hi) { lo = -1; hi = 1; }
+  double pad = hi - lo > 0 ? 0.06 * (hi - lo) : std::max(1.0, std::abs(lo));
+  double t_pad = 0.05 * (d.t_hi - d.t_lo);
+  return {lo - pad, hi + pad, d.t_lo - t_pad, d.t_hi + t_pad};
+}
+
+std::string coordinate(double v) { return format("%.2f", v); }
+
+// An object's space-time extent along the axis: a polygon through tL, every
+// breakpoint and tH, lower edge upwards then upper edge downwards.
+std::string band_polygon(const Drawn_object& o, int axis, const Frame& f, double t_lo, double t_hi)
+{
+  std::vector<double> ts = band_times(o.motion, t_lo, t_hi);
+  std::string points;
+  auto edge = [&](double t, bool upper) {
+    bool bounded = upper ? o.box.has_hi[axis] : o.box.has_lo[axis];
+    double q = bounded ? (upper ? o.box.hi[axis] : o.box.lo[axis]) + o.motion.displacement(t)[axis]
+                       : (upper ? f.q_hi : f.q_lo);
+    points += coordinate(f.x(q)) + "," + coordinate(f.y(t)) + " ";
+  };
+  for (double t : ts) edge(t, false);
+  for (auto it = ts.rbegin(); it != ts.rend(); ++it) edge(*it, true);
+  return "<polygon points=\"" + points + "\" fill=\"" + o.colour + "\" fill-opacity=\"0.35\" stroke=\"" +
+         o.colour + "\" stroke-width=\"1.5\"><title>" + escape(o.name) + (o.box.bounded() ? "" : " (unbounded, clipped)") +
+         "</title></polygon>\n";
+}
+
+double nice_step(double span)
+{
+  double raw = span / 5, p = std::pow(10.0, std::floor(std::log10(raw))), m = raw / p;
+  return p * (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10);
+}
+
+// The tick values of [lo, hi] (the near-zero one printed as 0).
+std::vector<double> ticks(double lo, double hi)
+{
+  double step = nice_step(hi - lo);
+  std::vector<double> out;
+  for (double k = std::ceil(lo / step); k * step <= hi && out.size() < 20; ++k)
+    out.push_back(std::abs(k) < 0.5 ? 0.0 : k * step);
+  return out;
+}
+
+std::string svg_text(double x, double y, const std::string& anchor, const std::string& s, const char* cls = "")
+{
+  return "<text x=\"" + coordinate(x) + "\" y=\"" + coordinate(y) + "\" text-anchor=\"" + anchor +
+         "\" class=\"" + cls + "\">" + escape(s) + "</text>\n";
+}
+
+std::string svg_line(double x1, double y1, double x2, double y2, const char* cls)
+{
+  return "<line x1=\"" + coordinate(x1) + "\" y1=\"" + coordinate(y1) + "\" x2=\"" + coordinate(x2) +
+         "\" y2=\"" + coordinate(y2) + "\" class=\"" + cls + "\"/>\n";
+}
+
+std::string svg_axes(const Frame& f, const std::string& q_name)
+{
+  std::string out;
+  double x0 = Frame::left, x1 = Frame::width - Frame::right, y0 = Frame::top, y1 = Frame::height - Frame::bottom;
+  for (double q : ticks(f.q_lo, f.q_hi)) {
+    out += svg_line(f.x(q), y0, f.x(q), y1, "grid");
+    out += svg_text(f.x(q), y1 + 14, "middle", format("%g", q));
+  }
+  for (double t : ticks(f.t_lo, f.t_hi)) {
+    out += svg_line(x0, f.y(t), x1, f.y(t), "grid");
+    out += svg_text(x0 - 5, f.y(t) + 4, "end", format("%g", t));
+  }
+  out += "<rect x=\"" + coordinate(x0) + "\" y=\"" + coordinate(y0) + "\" width=\"" + coordinate(x1 - x0) +
+         "\" height=\"" + coordinate(y1 - y0) + "\" class=\"frame\"/>\n";
+  out += svg_text((x0 + x1) / 2, Frame::height - 6, "middle", q_name, "axis");
+  out += svg_text(14, (y0 + y1) / 2, "middle", "t", "axis");
+  out += svg_text(x0, 15, "start", q_name + "\xE2\x80\x93t: extent along " + q_name + " over time", "heading");
+  return out;
+}
+
+// The searched span [tL, tH] as dashed lines.
+std::string svg_span(const Frame& f, double t_lo, double t_hi)
+{
+  double x0 = Frame::left, x1 = Frame::width - Frame::right;
+  return svg_line(x0, f.y(t_lo), x1, f.y(t_lo), "span") + svg_line(x0, f.y(t_hi), x1, f.y(t_hi), "span") +
+         svg_text(x1 - 3, f.y(t_lo) + 12, "end", "tL = " + format("%g", t_lo), "span-label") +
+         svg_text(x1 - 3, f.y(t_hi) - 4, "end", "tH = " + format("%g", t_hi), "span-label");
+}
+
+std::string svg_marker(const Marker& m, int axis, const Frame& f)
+{
+  std::string x = coordinate(f.x(m.point[axis])), y = coordinate(f.y(m.point[3]));
+  double cx = f.x(m.point[axis]), cy = f.y(m.point[3]);
+  std::string title = "<title>" + escape(m.title) + "</title>";
+  switch (m.kind) {
+    case Marker::Kind::Witness:
+      return "<circle cx=\"" + x + "\" cy=\"" + y + "\" r=\"4\" class=\"witness\">" + title + "</circle>\n";
+    case Marker::Kind::Earliest:
+      return svg_line(Frame::left, cy, Frame::width - Frame::right, cy, "earliest-line") +
+             "<polygon points=\"" + coordinate(cx) + "," + coordinate(cy - 8) + " " + coordinate(cx + 8) + "," + y +
+             " " + coordinate(cx) + "," + coordinate(cy + 8) + " " + coordinate(cx - 8) + "," + y +
+             "\" class=\"earliest\">" + title + "</polygon>\n";
+    default:
+      return "<path d=\"M" + coordinate(cx - 5) + " " + coordinate(cy - 5) + "L" + coordinate(cx + 5) + " " +
+             coordinate(cy + 5) + "M" + coordinate(cx - 5) + " " + coordinate(cy + 5) + "L" + coordinate(cx + 5) +
+             " " + coordinate(cy - 5) + "\" class=\"other\">" + title + "</path>\n";
+  }
+}
+
+std::string svg_diagram(const Drawing& d, int axis, const std::string& id)
+{
+  const std::string q_name(1, "xyz"[axis]);
+  std::ostringstream out;
+  out << "<svg class=\"qt\" width=\"" << Frame::width << "\" height=\"" << Frame::height << "\" viewBox=\"0 0 "
+      << Frame::width << " " << Frame::height << "\" role=\"img\" aria-label=\"" << q_name << "-t diagram\">\n";
+  if (!d.error.empty()) {
+    out << svg_text(Frame::width / 2, Frame::height / 2, "middle", "cannot draw: " + d.error) << "</svg>\n";
+    return out.str();
+  }
+  Frame f = frame_of(d, axis);
+  double x0 = Frame::left, y0 = Frame::top;
+  out << "<clipPath id=\"" << id << "\"><rect x=\"" << x0 << "\" y=\"" << y0 << "\" width=\""
+      << Frame::width - Frame::left - Frame::right << "\" height=\"" << Frame::height - Frame::top - Frame::bottom
+      << "\"/></clipPath>\n" << svg_axes(f, q_name) << "<g clip-path=\"url(#" << id << ")\">\n";
+  for (const Drawn_object& o : d.objects)
+    if (drawable(o.box, axis)) out << band_polygon(o, axis, f, d.t_lo, d.t_hi);
+  out << "</g>\n" << svg_span(f, d.t_lo, d.t_hi);
+  // Markers unclipped, the exact witness last so nothing hides it.
+  for (Marker::Kind kind : {Marker::Kind::Other, Marker::Kind::Earliest, Marker::Kind::Witness})
+    for (const Marker& m : d.markers)
+      if (m.kind == kind) out << svg_marker(m, axis, f);
+  out << "</svg>\n";
+  return out.str();
+}
+
+std::string legend(const Drawing& d)
+{
+  std::string out = "<div class=\"legend\">";
+  for (const Drawn_object& o : d.objects)
+    out += "<span class=\"item\"><span class=\"swatch\" style=\"background:" + o.colour + "\"></span>" +
+           escape(o.name) + (o.box.bounded() ? "" : " (unbounded, clipped)") + "</span>";
+  bool kinds[3] = {false, false, false};
+  for (const Marker& m : d.markers) kinds[static_cast<int>(m.kind)] = true;
+  if (kinds[0]) out += "<span class=\"item\"><span class=\"mark-witness\">\xE2\x97\x8F</span>exact witness</span>";
+  if (kinds[1]) out += "<span class=\"item\"><span class=\"mark-earliest\">\xE2\x97\x86</span>exact earliest contact (t* dotted)</span>";
+  if (kinds[2]) out += "<span class=\"item\"><span class=\"mark-other\">\xE2\x9C\x95</span>another subject's witness</span>";
+  out += "<span class=\"item\"><span class=\"mark-span\">- -</span>searched span [tL, tH]</span>";
+  if (d.objects.size() < d.object_count)
+    out += "<span class=\"item\">" + std::to_string(d.objects.size()) + " of " + std::to_string(d.object_count) +
+           " objects drawn (those named by an answer)</span>";
+  return out + "</div>\n";
+}
+
+// ---------------------------------------------------------------- HTML
+
+const char* const page_style = R"(
+body{font-family:system-ui,-apple-system,"Segoe UI",Roboto,"DejaVu Sans",sans-serif;font-size:14px;color:#222;max-width:1220px;margin:16px auto;padding:0 12px}
+h1{font-size:22px;margin:8px 0}h2{font-size:17px;margin:0 0 4px;word-break:break-all}
+table{border-collapse:collapse;margin:8px 0}th,td{border:1px solid #ccc;padding:3px 7px;text-align:left;vertical-align:top}
+th{background:#f2f2f2}td.n{text-align:right;font-variant-numeric:tabular-nums}
+code,.mono{font-family:"DejaVu Sans Mono",Menlo,Consolas,monospace;font-size:12px;word-break:break-all}
+.case{border:1px solid #ddd;border-radius:6px;padding:10px 14px;margin:18px 0}
+.case.bad{border-left:6px solid #d9534f}.case.good{border-left:6px solid #5cb85c}.case.err{border-left:6px solid #f0ad4e}
+.bad-cell{background:#fde2e1}.good-cell{background:#e6f4e4}.err-cell{background:#fff1c2}
+.name{color:#555;margin:0 0 8px}dl{display:grid;grid-template-columns:max-content auto;gap:2px 12px;margin:6px 0}dt{color:#666}dd{margin:0}
+.diagrams{display:flex;flex-wrap:wrap;gap:8px}svg.qt{background:#fff;font-family:inherit;font-size:11px}
+svg .grid{stroke:#eee;stroke-width:1}svg .frame{fill:none;stroke:#888}svg .axis{font-size:13px;font-style:italic;fill:#333}
+svg .heading{font-size:12px;fill:#333}svg .span{stroke:#333;stroke-dasharray:6 4;stroke-width:1.2}svg .span-label{fill:#333;font-size:10px}
+svg .witness{fill:#111;stroke:#fff;stroke-width:1.5}svg .earliest{fill:#ffd400;stroke:#111;stroke-width:1.5}
+svg .earliest-line{stroke:#111;stroke-dasharray:1 3;stroke-width:1.2}svg .other{stroke:#d62728;stroke-width:2.2;fill:none}
+.legend{display:flex;flex-wrap:wrap;gap:4px 16px;margin:4px 0 0}.item{white-space:nowrap}
+.swatch{display:inline-block;width:14px;height:10px;margin-right:5px;border:1px solid #888;opacity:.7;vertical-align:middle}
+.mark-witness{color:#111;margin-right:4px}.mark-earliest{color:#d4a800;margin-right:4px}.mark-other{color:#d62728;margin-right:4px;font-weight:bold}.mark-span{margin-right:4px}
+ul.details{margin:4px 0;padding-left:20px}
+code.whole,.whole{white-space:nowrap;word-break:normal}
+)";
+
+std::string cell(const std::string& content, const char* cls = "")
+{
+  return std::string("<td") + (*cls ? std::string(" class=\"") + cls + "\"" : "") + ">" + content + "</td>";
+}
+
+std::string number_cell(long n) { return cell(std::to_string(n), "n"); }
+
+std::string summary_html(const json& s)
+{
+  std::ostringstream out;
+  out << "<h2>Summary</h2>\n<table>\n<tr><th>scenes</th><th>all agree</th><th>some disagreement</th><th>some error</th>"
+      << "<th>answers compared</th><th>agreements</th><th>disagreements</th><th>errors</th></tr>\n<tr>";
+  for (const char* k : {"scenes", "scenes_agreeing", "scenes_disagreeing", "scenes_with_errors", "answers",
+                        "agreements", "disagreements", "errors"})
+    out << number_cell(s[k].get<long>());
+  out << "</tr>\n</table>\n<table>\n<tr><th>subject</th><th>answers</th><th>agreements</th>";
+  for (const auto& c : s["by_cause"].items()) out << "<th>" << escape(c.key()) << "</th>";
+  out << "<th>errors</th></tr>\n";
+  auto row = [&](const std::string& name, const json& t) {
+    out << "<tr><td>" << name << "</td>" << number_cell(t["answers"].get<long>()) << number_cell(t["agreements"].get<long>());
+    for (const auto& c : s["by_cause"].items()) out << number_cell(t["by_cause"].value(c.key(), 0L));
+    out << number_cell(t["errors"].get<long>()) << "</tr>\n";
+  };
+  for (const auto& t : s["by_subject"].items()) row(escape(t.key()), t.value());
+  row("<b>all</b>", s);
+  out << "</table>\n";
+  return out.str();
+}
+
+std::string status_text(const json& comparison)
+{
+  std::string out;
+  for (const json& s : subjects_of(comparison)) {
+    if (disagrees(s)) out += (out.empty() ? "" : "; ") + text(s, "subject") + ": " + text(s, "cause");
+    else if (failed(s)) out += (out.empty() ? "" : "; ") + text(s, "subject") + ": error";
+  }
+  return out.empty() ? "all agree" : out;
+}
+
+const char* case_class(const json& comparison)
+{
+  return case_disagrees(comparison) ? "bad" : case_has_errors(comparison) ? "err" : "good";
+}
+
+std::string index_html(const std::vector<Report_case>& cases, const std::vector<std::size_t>& order)
+{
+  std::ostringstream out;
+  out << "<h2>Scenes</h2>\n<table>\n<tr><th>file</th><th>name</th><th>exact</th><th>result</th></tr>\n";
+  for (std::size_t i : order) {
+    const json& c = cases[i].comparison;
+    std::string cls = std::string(case_class(c)) + "-cell";
+    out << "<tr><td><a href=\"#case-" << i << "\"><code>" << escape(cases[i].file) << "</code></a></td>"
+        << cell(escape(text(c, "name"))) << cell(verdict_text(reference_of(c)))
+        << cell(escape(status_text(c)), cls.c_str()) << "</tr>\n";
+  }
+  return out.str() + "</table>\n";
+}
+
+std::string result_cell(const json& s)
+{
+  if (failed(s)) return cell("error: " + escape(text(s, "error")), "err-cell");
+  if (disagrees(s)) return cell("disagrees: " + escape(text(s, "cause")), "bad-cell");
+  if (is_reference(s)) return cell("reference");
+  return cell(flag(s, "agrees") == 0 ? "disagrees" : "agrees", flag(s, "agrees") == 0 ? "bad-cell" : "good-cell");
+}
+
+// A number kept on one line unless long (a break in "31/4" would read "3 1/4").
+std::string number_html(const std::string& s)
+{
+  return std::string(s.size() <= 24 ? "<code class=\"whole\">" : "<code>") + escape(s) + "</code>";
+}
+
+std::string subject_row(const json& s)
+{
+  const json& seconds = field(s, "seconds");
+  const json& earliest = field(s, "earliest");
+  std::string t_star = earliest.is_object() ? number_html(text(earliest, "t")) : "\xE2\x80\x94";
+  std::string t_error = text(s, "t_error");
+  return "<tr>" + cell(escape(text(s, "subject"))) + cell(verdict_text(s)) +
+         cell("<span class=\"mono\">" + escape(located_text(field(s, "witness"))) + "</span>") +
+         cell(yes_no(flag(s, "witness_valid"))) + cell(t_star) +
+         cell(t_error.empty() ? "\xE2\x80\x94" : number_html(t_error)) +
+         cell(seconds.is_number() ? seconds_text(seconds.get<double>()) : "\xE2\x80\x94", "n whole") + result_cell(s) + "</tr>\n";
+}
+
+std::string details_html(const json& comparison)
+{
+  std::string out;
+  const json& list = field(comparison, "disagreements");
+  if (list.is_array())
+    for (const json& d : list)
+      out += "<li><b>" + escape(text(d, "subject")) + "</b> (" + escape(text(d, "cause")) + "): " + escape(text(d, "detail")) + "</li>\n";
+  for (const json& s : subjects_of(comparison))
+    if (failed(s)) out += "<li><b>" + escape(text(s, "subject")) + "</b> failed: " + escape(text(s, "error")) + "</li>\n";
+  return out.empty() ? "" : "<ul class=\"details\">\n" + out + "</ul>\n";
+}
+
+std::string facts_html(const Report_case& rc)
+{
+  const json& c = rc.comparison;
+  const json& ref = reference_of(c);
+  const json& earliest = field(ref, "earliest");
+  std::string out = "<dl>\n<dt>exact verdict</dt><dd><b>" + verdict_text(ref) + "</b></dd>\n";
+  out += "<dt>exact witness</dt><dd class=\"mono\">" + escape(located_text(field(ref, "witness"))) + "</dd>\n";
+  out += "<dt>exact earliest</dt><dd class=\"mono\">" +
+         (earliest.is_object() ? "t* = " + escape(text(earliest, "t")) + ", " + escape(located_text(earliest)) : "\xE2\x80\x94") + "</dd>\n";
+  out += "<dt>time span</dt><dd class=\"mono\">[" + to_string(rc.scene.t_lo) + ", " + to_string(rc.scene.t_hi) + "]</dd>\n";
+  out += "<dt>closed objects touch</dt><dd>" + yes_no(flag(c, "closed_touch"), "not determined") + "</dd>\n";
+  return out + "</dl>\n";
+}
+
+std::string case_html(const Report_case& rc, std::size_t index)
+{
+  const json& c = rc.comparison;
+  std::ostringstream out;
+  out << "<section class=\"case " << case_class(c) << "\" id=\"case-" << index << "\">\n<h2><code>"
+      << escape(rc.file) << "</code></h2>\n<p class=\"name\">" << escape(text(c, "name")) << "</p>\n" << facts_html(rc)
+      << "<table>\n<tr><th>subject</th><th>verdict</th><th>witness</th><th>witness valid</th><th>t*</th>"
+      << "<th>t error</th><th>time</th><th>result</th></tr>\n";
+  for (const json& s : subjects_of(c)) out << subject_row(s);
+  out << "</table>\n" << details_html(c);
+  Drawing d = drawing_of(rc);
+  out << "<div class=\"diagrams\">\n";
+  for (int axis = 0; axis < 3; ++axis) out << svg_diagram(d, axis, "clip-" + std::to_string(index) + "-" + "xyz"[axis]);
+  out << "</div>\n" << legend(d) << "</section>\n";
+  return out.str();
+}
+
+std::string page_html(const std::vector<Report_case>& cases, const json& summary)
+{
+  std::vector<std::size_t> order(cases.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    auto rank = [&](std::size_t i) { return case_disagrees(cases[i].comparison) ? 0 : case_has_errors(cases[i].comparison) ? 1 : 2; };
+    return rank(a) < rank(b);
+  });
+  std::ostringstream out;
+  out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>clash4d verification report</title>\n"
+      << "<style>" << page_style << "</style>\n</head>\n<body>\n<h1>clash4d verification report</h1>\n"
+      << "<p>Every subject's answer held against the exact one (regularised semantics: touching is not a collision). "
+      << "Diagrams: each object's extent along one axis over time; doubles, for presentation only.</p>\n"
+      << summary_html(summary) << index_html(cases, order);
+  for (std::size_t i : order) out << case_html(cases[i], i);
+  out << "</body>\n</html>\n";
+  return out.str();
+}
+
+// ---------------------------------------------------------------- files
+
+// Writes DIR/.NAME.PID.tmp, then renames it to DIR/NAME.
+void write_atomically(const fs::path& dir, const std::string& name, const std::string& content)
+{
+  fs::path target = dir / name, temporary = dir / ("." + name + "." + std::to_string(::getpid()) + ".tmp");
+  std::error_code ec;
+  {
+    std::ofstream f(temporary, std::ios::binary | std::ios::trunc);
+    if (!f) throw std::runtime_error(temporary.string() + ": cannot write: " + std::strerror(errno));
+    f << content;
+    f.close();
+    if (!f) {
+      fs::remove(temporary, ec);
+      throw std::runtime_error(temporary.string() + ": cannot write (disk full?)");
+    }
+  }
+  fs::rename(temporary, target, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw std::runtime_error(target.string() + ": cannot rename " + temporary.string() + " to it: " + ec.message());
+  }
+}
+
+} // namespace
+
+void write_report(const std::vector<Report_case>& cases, const std::string& dir)
+{
+  json summary = summary_of(cases);
+  std::string report = report_json(cases, summary), junit = junit_xml(cases), page = page_html(cases, summary);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw std::runtime_error(dir + ": cannot create the report directory" + (ec ? ": " + ec.message() : ""));
+  write_atomically(dir, "report.json", report);
+  write_atomically(dir, "junit.xml", junit);
+  write_atomically(dir, "index.html", page);
+}
+
+} // namespace clash4d

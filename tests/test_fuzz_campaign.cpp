@@ -1,0 +1,107 @@
+#define BOOST_TEST_MODULE fuzz_campaign
+#include <boost/test/unit_test.hpp>
+
+#include "cli/Commands.h"
+#include "compare/Fuzz_campaign.h"
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+using namespace clash4d;
+namespace fs = std::filesystem;
+
+static fs::path fresh(const std::string& name)
+{
+  fs::path p = fs::temp_directory_path() / ("clash4d_test_fuzz_" + name);
+  fs::remove_all(p);
+  return p;
+}
+
+static Fuzz_options campaign(const fs::path& out, std::uint64_t shard = 1, std::uint64_t shards = 1)
+{
+  Fuzz_options o;
+  o.seed = 20261122;
+  o.cases = 24;
+  o.shard = shard;
+  o.shards = shards;
+  o.out = out.string();
+  o.max_shrink_checks = 8;   // the shrinker has its own tests; here only the files matter
+  return o;
+}
+
+// Every file of a folder (relative name -> contents).
+static std::map<std::string, std::string> contents(const fs::path& dir)
+{
+  std::map<std::string, std::string> out;
+  for (const auto& f : fs::directory_iterator(dir)) {
+    std::ifstream in(f.path());
+    std::ostringstream s;
+    s << in.rdbuf();
+    out[f.path().filename().string()] = s.str();
+  }
+  return out;
+}
+
+BOOST_AUTO_TEST_CASE(same_seed_same_findings_and_shards_cover_the_campaign)
+{
+  std::ostringstream err;
+  fs::path whole = fresh("whole"), a = fresh("a"), b = fresh("b"), merged = fresh("merged");
+  Fuzz_summary s = run_fuzz(campaign(whole), err);
+  BOOST_TEST_MESSAGE("seed 20261122: " << s.findings << " findings in 24 cases");
+  BOOST_TEST(s.findings > 0u);   // the families do find float errors
+  run_fuzz(campaign(a, 1, 2), err);
+  run_fuzz(campaign(b, 2, 2), err);
+  merge_fuzz({a.string(), b.string()}, merged.string());
+  BOOST_TEST((contents(whole / "findings") == contents(merged / "findings")));
+  // A rerun of the finished campaign changes nothing.
+  auto before = contents(whole / "findings");
+  run_fuzz(campaign(whole), err);
+  BOOST_TEST((contents(whole / "findings") == before));
+}
+
+BOOST_AUTO_TEST_CASE(an_interrupted_campaign_resumes_and_loses_nothing)
+{
+  std::ostringstream err;
+  fs::path full = fresh("full"), cut = fresh("cut");
+  run_fuzz(campaign(full), err);
+  // Simulate a kill in the middle of the second batch: progress still says
+  // 16, some later findings were written, one rename never happened.
+  run_fuzz(campaign(cut), err);
+  for (const auto& f : fs::directory_iterator(cut / "findings")) {
+    std::string name = f.path().filename().string();
+    if (std::stoi(name.substr(5)) >= 20) fs::remove(f.path());
+  }
+  std::ofstream(cut / "progress-1-of-1.json") << "{\"next\":16}\n";
+  std::ofstream(cut / "findings" / "case-17.json.tmp") << "{\"half";
+  Fuzz_summary s = run_fuzz(campaign(cut), err);
+  BOOST_TEST(s.resumed_from == 16u);
+  fs::remove(cut / "findings" / "case-17.json.tmp");
+  BOOST_TEST((contents(cut / "findings") == contents(full / "findings")));
+}
+
+BOOST_AUTO_TEST_CASE(a_folder_holds_one_campaign)
+{
+  std::ostringstream err;
+  fs::path dir = fresh("other");
+  run_fuzz(campaign(dir), err);
+  Fuzz_options other = campaign(dir);
+  other.seed = 1;
+  BOOST_CHECK_THROW(run_fuzz(other, err), std::runtime_error);
+}
+
+BOOST_AUTO_TEST_CASE(command_line_checks_its_arguments)
+{
+  auto run = [](std::vector<std::string> args) {
+    args.insert(args.begin(), "clash4d");
+    std::vector<const char*> argv;
+    for (const auto& a : args) argv.push_back(a.c_str());
+    std::ostringstream out, err;
+    return run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
+  };
+  std::string dir = fresh("cli").string();
+  BOOST_TEST(run({"fuzz", "--seed", "1", "--cases", "2", "--shard", "3/2", "--out", dir}) == 2);
+  BOOST_TEST(run({"fuzz", "--seed", "1", "--cases", "2", "--shard", "x", "--out", dir}) == 2);
+  BOOST_TEST(run({"fuzz", "--merge", "/nonexistent", "--out", dir}) == 2);
+  BOOST_TEST(run({"report", "/nonexistent.json", "--out", dir}) == 2);
+}
