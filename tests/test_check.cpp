@@ -138,3 +138,21 @@ BOOST_AUTO_TEST_CASE(ignored_pairs_are_not_tested)
   text.replace(text.find("\"objects\""), 9, "\"ignore\":[[\"ram\",\"box\"]],\"objects\"");
   BOOST_TEST(run({"check", scene_file("ignore", text)}).status == 0);
 }
+
+BOOST_AUTO_TEST_CASE(earliest_reports_overlap_at_the_start)
+{
+  // ram already overlaps the box at t = 0 = tL when it starts inside it.
+  std::string text = spec_example;
+  text.replace(text.find(R"("min":[3,0,0],"max":[4,1,1])"), 27, R"("min":["1/2",0,0],"max":[4,1,1])");
+  Run r = run({"check", scene_file("start", text), "--json", "--earliest"});
+  BOOST_TEST(r.status == 1);
+  auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j["earliest"]["t"] == "0");
+  BOOST_TEST(j["earliest"]["at_start"] == true);
+  BOOST_TEST(j["earliest"]["objects"] == nlohmann::json::array({"box", "ram"}));
+  // The spec's example: ram's face reaches x = 1 at t = 2.
+  auto e = nlohmann::json::parse(run({"check", scene_file("spec", spec_example), "--json", "--earliest"}).out)["earliest"];
+  BOOST_TEST(e["t"] == "2");
+  BOOST_TEST(e["at_start"] == false);
+  BOOST_TEST(e["point"][0] == "1");
+}
