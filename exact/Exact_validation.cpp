@@ -6,6 +6,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 namespace clash4d {
@@ -87,6 +88,7 @@ std::vector<std::array<int, 3>> hull_facets(const std::vector<Rational3>& points
   CGAL::Surface_mesh<Point_3> mesh;
   CGAL::convex_hull_3(pts.begin(), pts.end(), mesh);
   std::vector<std::array<int, 3>> facets;
+  std::set<std::array<Rational, 4>> planes;
   for (auto f : mesh.faces()) {
     std::array<int, 3> t;
     int k = 0;
@@ -94,14 +96,15 @@ std::vector<std::array<int, 3>> hull_facets(const std::vector<Rational3>& points
       if (k < 3) t[k] = index.at(mesh.point(v));
       ++k;
     }
-    // One triple per facet plane: triangles of the same facet repeat it.
-    bool repeated = false;
-    for (const auto& g : facets) {
-      repeated = true;
-      for (int i = 0; i < 3 && repeated; ++i)
-        repeated = CGAL::orientation(pts[g[0]], pts[g[1]], pts[g[2]], pts[t[i]]) == CGAL::COPLANAR;
-      if (repeated) break;
-    }
+    // One triple per facet plane: triangles of the same facet repeat it. The
+    // plane, scaled so its first non-zero coefficient is +-1 (keeping its
+    // orientation), is the key.
+    Exact_geometry::Plane_3 h(pts[t[0]], pts[t[1]], pts[t[2]]);
+    std::array<Rational, 4> key{h.a(), h.b(), h.c(), h.d()};
+    Rational lead = CGAL::is_zero(key[0]) ? (CGAL::is_zero(key[1]) ? key[2] : key[1]) : key[0];
+    if (lead < 0) lead = -lead;
+    for (auto& x : key) x /= lead;
+    bool repeated = !planes.insert(key).second;
     if (!repeated) facets.push_back(t);
   }
   return facets;
