@@ -65,8 +65,8 @@ Rational number_from_text(const std::string& text, bool is_string, const std::st
   Number_parse p = parse_number_text(text, is_string);
   if (!p.ok) {
     std::string shown = text.size() > 40 ? text.substr(0, 40) + "..." : text;
-    throw Input_error(path, "'" + shown + "' is not a number: " + p.error,
-                      p.limit ? CLASH4D_EXIT_LIMIT : CLASH4D_EXIT_INVALID);
+    if (p.limit) throw Input_error(path, "'" + shown + "' is refused: " + p.error, CLASH4D_EXIT_LIMIT);
+    throw Input_error(path, "'" + shown + "' is not a number: " + p.error);
   }
   return p.value;
 }
