@@ -156,3 +156,17 @@ BOOST_AUTO_TEST_CASE(earliest_reports_overlap_at_the_start)
   BOOST_TEST(e["at_start"] == false);
   BOOST_TEST(e["point"][0] == "1");
 }
+
+BOOST_AUTO_TEST_CASE(generate_writes_a_valid_scene)
+{
+  std::string path = "/tmp/clash4d_test_check_grid.json";
+  std::remove(path.c_str());
+  Run r = run({"generate", "--n", "30", "--colliding", "2", "--seed", "3", "--out", path});
+  BOOST_TEST(r.status == 0);
+  BOOST_TEST(r.out.find("colliding by construction") != std::string::npos);
+  BOOST_TEST(run({"validate", path}).status == 0);
+  BOOST_TEST(run({"check", path}).status == 1);
+  BOOST_TEST(!std::ifstream(path + ".tmp").good());
+  BOOST_TEST(run({"generate", "--n", "4", "--colliding", "9"}).status == 2);   // does not fit
+  BOOST_TEST(run({"generate", "--n", "1"}).status == 2);
+}
