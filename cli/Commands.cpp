@@ -133,8 +133,7 @@ json stats_json(const Check_stats& s)
 void print_check(const Check_answer& a, const Check_options& o, bool stats, double tolerance, std::ostream& out)
 {
   // The earliest pair's witness is the one shown when --earliest is given.
-  const Pair_answer* main = nullptr;
-  if (a.collide) main = &a.pairs[o.earliest ? a.earliest_pair : 0];
+  const Pair_answer* main = a.reported();
   if (o.json) {
     json j = {{"collide", a.collide}, {"number", a.number}};
     if (a.number == "double") j["tolerance"] = tolerance;

@@ -61,7 +61,7 @@ int object_index(const Scene& s, const std::string& name)
 
 bool witness_valid(const Scene_model<Exact_kernel>& model, const Scene& scene, const Run& r)
 {
-  const Pair_answer& p = r.answer.pairs[r.answer.earliest_pair >= 0 ? r.answer.earliest_pair : 0];
+  const Pair_answer& p = *r.answer.reported();
   Vector4<Rational> w;
   for (int i = 0; i < 4; ++i) w[i] = value_of(p.witness[i], r.exact_numbers);
   return is_valid_witness(Exact_kernel(), model, object_index(scene, p.a), object_index(scene, p.b), w);
@@ -160,12 +160,12 @@ json compare_scene(const Scene& scene, const std::string& file, const Compare_op
     json s = {{"subject", r.subject}, {"reference", &r == &exact}, {"ok", r.ok}, {"error", r.error}};
     const Check_answer& a = r.answer;
     s["collide"] = r.ok ? json(a.collide) : json();
-    const Pair_answer* main = a.collide ? &a.pairs[a.earliest_pair >= 0 ? a.earliest_pair : 0] : nullptr;
+    const Pair_answer* main = a.reported();
     s["witness"] = main ? json{{"objects", {main->a, main->b}}, {"point", point_json(main->witness)}} : json();
     s["witness_valid"] = main ? json(witness_valid(model, scene, r)) : json();
     s["earliest"] = main && main->earliest ? json{{"objects", {main->a, main->b}}, {"t", main->t_star}, {"point", point_json(main->contact)}} : json();
     s["t_error"] = json();
-    const Pair_answer* ref = exact.answer.collide ? &exact.answer.pairs[exact.answer.earliest_pair >= 0 ? exact.answer.earliest_pair : 0] : nullptr;
+    const Pair_answer* ref = exact.answer.reported();
     if (main && ref && main->earliest && ref->earliest) {
       Rational e = value_of(main->t_star, r.exact_numbers) - value_of(ref->t_star, true);
       s["t_error"] = decimal(e < 0 ? Rational(-e) : e);

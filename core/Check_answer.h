@@ -33,6 +33,14 @@ struct Check_answer {
   bool collide = false;
   std::vector<Pair_answer> pairs;        // colliding pairs, in pair order
   int earliest_pair = -1;                // index in pairs of the smallest t* (--earliest)
+
+  // The pair whose witness is reported: the earliest one with --earliest,
+  // else the first; null when nothing collides.
+  const Pair_answer* reported() const
+  {
+    if (pairs.empty()) return nullptr;
+    return &pairs[earliest_pair >= 0 ? earliest_pair : 0];
+  }
   Check_stats stats;
 };
 

@@ -60,13 +60,6 @@ public:
     std::vector<Result> results_;
   };
 
-  static Formula constant(bool v)
-  {
-    Formula f;
-    f.value_ = v ? Truth::True : Truth::False;
-    return f;
-  }
-
   // True or False when the formula folded to a constant, else Unknown.
   Truth value() const { return value_; }
   const std::vector<Token>& code() const { return code_; }

@@ -63,14 +63,6 @@ FT determinant4(const Vector4<FT>& a, const Vector4<FT>& b, const Vector4<FT>& c
   return dot(generalised_cross(a, b, c), d);
 }
 
-template <class FT, std::size_t N>
-bool is_zero_vector(const std::array<FT, N>& v)
-{
-  for (const FT& x : v)
-    if (x != FT(0)) return false;
-  return true;
-}
-
 // p + s * d
 template <class FT, std::size_t N>
 std::array<FT, N> point_along(const std::array<FT, N>& p, const FT& s, const std::array<FT, N>& d)
