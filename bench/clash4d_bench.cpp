@@ -1,5 +1,7 @@
 // `check` per-query time on the paper scenes, the contact fixtures and seeded
-// random general-position scenes, exact beside double, with their ratio.
+// random general-position scenes: exact (the filtered kernel), rational (the
+// pure rational kernel) and double side by side in one run, with the ratios
+// exact/double and rational/double (issue 6's targets: 1.5 general, 3 contact).
 //   clash4d_bench [--seed N] [--random M] [--min-seconds S]
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
@@ -68,16 +70,30 @@ Scene random_scene(std::mt19937_64& rng)
   return read_scene(read_json_text(text));
 }
 
-void row(const std::string& name, const Scene& scene, double min_seconds, double& log_sum, int& count,
+// Geometric means of the two ratios over one family of scenes.
+struct Means {
+  double log_exact = 0, log_rational = 0;
+  int count = 0;
+  void print(const char* family) const
+  {
+    std::printf("geometric mean over %s: exact/double %.2f, rational/double %.2f\n\n", family,
+                std::exp(log_exact / count), std::exp(log_rational / count));
+  }
+};
+
+void row(const std::string& name, const Scene& scene, double min_seconds, Means& means,
          Check_options opts = Check_options())
 {
   Timing e = time_it([&] { return check_exact(scene, opts); }, min_seconds);
+  Timing r = time_it([&] { return check_rational(scene, opts); }, min_seconds);
   Timing d = time_it([&] { return check_double(scene, 0, opts); }, min_seconds);
-  double ratio = e.seconds_per_query / d.seconds_per_query;
-  log_sum += std::log(ratio);
-  ++count;
-  std::printf("%-58s %12.1f %12.1f %8.2f  %s%s\n", name.c_str(), e.seconds_per_query * 1e6, d.seconds_per_query * 1e6, ratio,
-              e.collide ? "collide" : "no", e.collide == d.collide ? "" : " (double differs)");
+  double ratio = e.seconds_per_query / d.seconds_per_query, rational_ratio = r.seconds_per_query / d.seconds_per_query;
+  means.log_exact += std::log(ratio);
+  means.log_rational += std::log(rational_ratio);
+  ++means.count;
+  std::printf("%-58s %11.1f %11.1f %11.1f %8.2f %8.2f  %s%s%s\n", name.c_str(), e.seconds_per_query * 1e6,
+              r.seconds_per_query * 1e6, d.seconds_per_query * 1e6, ratio, rational_ratio, e.collide ? "collide" : "no",
+              e.collide == d.collide ? "" : " (double differs)", e.collide == r.collide ? "" : " (RATIONAL DIFFERS)");
 }
 
 } // namespace
@@ -93,34 +109,32 @@ int main(int argc, char** argv)
     else if (a == "--random") random_count = std::stoi(argv[i + 1]);
     else if (a == "--min-seconds") min_seconds = std::stod(argv[i + 1]);
   }
-  std::printf("%-58s %12s %12s %8s  %s\n", "scene", "exact us", "double us", "ratio", "exact verdict");
+  std::printf("%-58s %11s %11s %11s %8s %8s  %s\n", "scene", "exact us", "rational us", "double us", "ex/dbl", "rat/dbl",
+              "exact verdict");
   for (const char* family : {"paper", "contact"}) {
-    double log_sum = 0;
-    int count = 0;
+    Means means;
     std::vector<std::filesystem::path> files;
     for (const auto& f : std::filesystem::directory_iterator(std::string(CLASH4D_FIXTURES) + "/" + family))
       if (f.path().extension() == ".json" && f.path().filename() != "expected.json") files.push_back(f.path());
     std::sort(files.begin(), files.end());
-    for (const auto& f : files) row(std::string(family) + "/" + f.filename().string(), read_scene_file(f.string()), min_seconds, log_sum, count);
-    std::printf("geometric mean exact/double ratio over %s: %.2f\n\n", family, std::exp(log_sum / count));
+    for (const auto& f : files) row(std::string(family) + "/" + f.filename().string(), read_scene_file(f.string()), min_seconds, means);
+    means.print(family);
   }
   // §6 scaling: check --all-pairs on n blocks, 5 colliding pairs (reading
   // the scene excluded: it is the same for both number types).
   {
-    double log_sum = 0;
-    int count = 0;
+    Means means;
     Check_options all;
     all.all_pairs = true;
     for (int n : {100, 1000, 10000}) {
       Scene grid = read_scene(read_json_text(make_grid_scene(n, 5, seed).json));
-      row("grid n=" + std::to_string(n) + " --all-pairs", grid, min_seconds, log_sum, count, all);
+      row("grid n=" + std::to_string(n) + " --all-pairs", grid, min_seconds, means, all);
     }
-    std::printf("geometric mean exact/double ratio over grid: %.2f\n\n", std::exp(log_sum / count));
+    means.print("grid");
   }
   std::mt19937_64 rng(seed);
   std::printf("random general-position scenes, seed %lu\n", seed);
-  double log_sum = 0;
-  int count = 0;
-  for (int i = 0; i < random_count; ++i) row("random #" + std::to_string(i), random_scene(rng), min_seconds, log_sum, count);
-  if (count > 0) std::printf("geometric mean exact/double ratio over random: %.2f\n", std::exp(log_sum / count));
+  Means means;
+  for (int i = 0; i < random_count; ++i) row("random #" + std::to_string(i), random_scene(rng), min_seconds, means);
+  if (means.count > 0) means.print("random");
 }

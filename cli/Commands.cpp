@@ -126,6 +126,8 @@ json stats_json(const Check_stats& s)
           {"lines", s.lines},
           {"points_classified", s.points_classified},
           {"cells_tested", s.cells_tested},
+          {"exact_fallbacks", s.exact_fallbacks},
+          {"exact_witness_runs", s.exact_witness_runs},
           {"seconds", {{"model", s.seconds_model}, {"sweep", s.seconds_sweep}, {"sbounds", s.seconds_sbounds},
                        {"divide_and_conquer", s.seconds_divide}, {"witness", s.seconds_witness}}}};
 }
@@ -275,16 +277,19 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   validate_cmd->add_option("SCENE", validate_files, "scene files")->required();
 
   std::string file, number = "exact";
+  const char* number_help =
+      "number type: exact (default; interval filter with exact rational fallback), rational (every sign in "
+      "rationals: the reference, same answers, slower) or double";
   bool as_json = false, all_pairs = false, stats = false;
   double tolerance = 0;
   auto* extrude_cmd = app.add_subcommand("extrude", "Print every object's space-time half-space tree per constant-velocity time sub-span (paper §2-3).");
   extrude_cmd->add_option("SCENE", file, "scene file")->required();
-  extrude_cmd->add_option("--number", number, "number type: exact (rationals) or double")->check(CLI::IsMember({"exact", "double"}));
+  extrude_cmd->add_option("--number", number, number_help)->check(CLI::IsMember({"exact", "rational", "double"}));
   extrude_cmd->add_flag("--json", as_json, "print JSON (numbers as exact strings)");
 
   auto* check_cmd = app.add_subcommand("check", "Decide whether any pair of objects collides (regularised: touching is not a collision).");
   check_cmd->add_option("SCENE", file, "scene file")->required();
-  check_cmd->add_option("--number", number, "number type: exact (default) or double")->check(CLI::IsMember({"exact", "double"}));
+  check_cmd->add_option("--number", number, number_help)->check(CLI::IsMember({"exact", "rational", "double"}));
   check_cmd->add_option("--tolerance", tolerance, "double only: treat |value| <= EPS as zero (default 0)")->check(CLI::NonNegativeNumber);
   check_cmd->add_flag("--all-pairs", all_pairs, "list every colliding pair instead of stopping at the first");
   bool earliest = false;
@@ -297,7 +302,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
 
   auto* skeleton_cmd = app.add_subcommand("skeleton", "Print every edge of the boundary of each colliding pair's collision region in space-time (§5; a full search, slower than check).");
   skeleton_cmd->add_option("SCENE", file, "scene file")->required();
-  skeleton_cmd->add_option("--number", number, "number type: exact (default) or double")->check(CLI::IsMember({"exact", "double"}));
+  skeleton_cmd->add_option("--number", number, number_help)->check(CLI::IsMember({"exact", "rational", "double"}));
   skeleton_cmd->add_flag("--json", as_json, "print JSON (numbers as exact strings)");
 
   std::vector<std::string> compare_files;
@@ -385,13 +390,15 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   if (int s = load(file, scene, err)) return s;
   if (skeleton_cmd->parsed())
     return guarded(file, err, [&] {
-      Skeleton_answer a = number == "exact" ? skeleton_exact(scene) : skeleton_double(scene);
+      Skeleton_answer a = number == "exact" ? skeleton_exact(scene)
+                         : number == "rational" ? skeleton_rational(scene) : skeleton_double(scene);
       print_skeleton(a, as_json, out);
       return a.pairs.empty() ? 0 : 1;
     });
   if (extrude_cmd->parsed())
     return guarded(file, err, [&] {
-      json report = number == "exact" ? extrude_exact(scene) : extrude_double(scene);
+      json report = number == "exact" ? extrude_exact(scene)
+                  : number == "rational" ? extrude_rational(scene) : extrude_double(scene);
       if (as_json) out << report.dump(2) << "\n"; else print_extrusion_text(report, out);
       return 0;
     });
@@ -401,7 +408,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     options.sbounds = !no_sbounds;
     options.earliest = earliest;
     options.json = as_json;
-    Check_answer a = number == "exact" ? check_exact(scene, options) : check_double(scene, tolerance, options);
+    Check_answer a = number == "exact" ? check_exact(scene, options)
+                     : number == "rational" ? check_rational(scene, options) : check_double(scene, tolerance, options);
     print_check(a, options, stats, tolerance, out);
     return a.collide ? 1 : 0;
   });

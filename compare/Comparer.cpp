@@ -1,7 +1,7 @@
 #include "compare/Comparer.h"
 #include "core/Point_classifier.h"
 #include "exact/Exact_instantiation.h"
-#include "exact/Exact_kernel.h"
+#include "exact/Rational_kernel.h"
 #include "float/Double_instantiation.h"
 #include "scene/Input_error.h"
 #include "scene/Json_reader.h"
@@ -59,12 +59,12 @@ int object_index(const Scene& s, const std::string& name)
   return -1;
 }
 
-bool witness_valid(const Scene_model<Exact_kernel>& model, const Scene& scene, const Run& r)
+bool witness_valid(const Scene_model<Rational_kernel>& model, const Scene& scene, const Run& r)
 {
   const Pair_answer& p = *r.answer.reported();
   Vector4<Rational> w;
   for (int i = 0; i < 4; ++i) w[i] = value_of(p.witness[i], r.exact_numbers);
-  return is_valid_witness(Exact_kernel(), model, object_index(scene, p.a), object_index(scene, p.b), w);
+  return is_valid_witness(Rational_kernel(), model, object_index(scene, p.a), object_index(scene, p.b), w);
 }
 
 void map_numbers(Solid& s, const std::function<Rational(const Rational&)>& f)
@@ -150,7 +150,7 @@ json compare_scene(const Scene& scene, const std::string& file, const Compare_op
 
   const Run& exact = runs[0];
   if (!exact.ok) throw std::runtime_error("the exact subject failed: " + exact.error);
-  Scene_model<Exact_kernel> model = Scene_model<Exact_kernel>::build(Exact_kernel(), scene);
+  Scene_model<Rational_kernel> model = Scene_model<Rational_kernel>::build(Rational_kernel(), scene);
   const Run* rounded = options.rounded ? &runs.back() : nullptr;
   bool rounding_differs = rounded && (!rounded->ok || rounded->answer.collide != exact.answer.collide);
   int contact = -1;   // computed on first need

@@ -3,6 +3,7 @@
 #ifndef CLASH4D_CORE_BOX_H
 #define CLASH4D_CORE_BOX_H
 
+#include "core/Number_ops.h"
 #include <CGAL/enum.h>
 #include <array>
 #include <cstddef>
@@ -39,8 +40,10 @@ Box<FT, D> meet(const Box<FT, D>& a, const Box<FT, D>& b)
   if (a.empty || b.empty) return Box<FT, D>::nothing();
   Box<FT, D> r = a;
   for (std::size_t i = 0; i < D; ++i) {
-    if (b.has_lo[i] && (!r.has_lo[i] || r.lo[i] < b.lo[i])) { r.lo[i] = b.lo[i]; r.has_lo[i] = true; }
-    if (b.has_hi[i] && (!r.has_hi[i] || b.hi[i] < r.hi[i])) { r.hi[i] = b.hi[i]; r.has_hi[i] = true; }
+    if (b.has_lo[i]) r.lo[i] = r.has_lo[i] ? Number_ops<FT>::upper(r.lo[i], b.lo[i]) : b.lo[i];
+    if (b.has_hi[i]) r.hi[i] = r.has_hi[i] ? Number_ops<FT>::lower(r.hi[i], b.hi[i]) : b.hi[i];
+    r.has_lo[i] = r.has_lo[i] || b.has_lo[i];
+    r.has_hi[i] = r.has_hi[i] || b.has_hi[i];
   }
   return r;
 }
@@ -54,8 +57,8 @@ Box<FT, D> join(const Box<FT, D>& a, const Box<FT, D>& b)
   for (std::size_t i = 0; i < D; ++i) {
     r.has_lo[i] = a.has_lo[i] && b.has_lo[i];
     r.has_hi[i] = a.has_hi[i] && b.has_hi[i];
-    if (r.has_lo[i] && b.lo[i] < r.lo[i]) r.lo[i] = b.lo[i];
-    if (r.has_hi[i] && r.hi[i] < b.hi[i]) r.hi[i] = b.hi[i];
+    if (r.has_lo[i]) r.lo[i] = Number_ops<FT>::lower(r.lo[i], b.lo[i]);
+    if (r.has_hi[i]) r.hi[i] = Number_ops<FT>::upper(r.hi[i], b.hi[i]);
   }
   return r;
 }
@@ -79,8 +82,8 @@ bool same_box(const Box<FT, D>& a, const Box<FT, D>& b)
   if (a.empty || b.empty) return a.empty == b.empty;
   for (std::size_t i = 0; i < D; ++i) {
     if (a.has_lo[i] != b.has_lo[i] || a.has_hi[i] != b.has_hi[i]) return false;
-    if (a.has_lo[i] && !(a.lo[i] == b.lo[i])) return false;
-    if (a.has_hi[i] && !(a.hi[i] == b.hi[i])) return false;
+    if (a.has_lo[i] && !Number_ops<FT>::same(a.lo[i], b.lo[i])) return false;
+    if (a.has_hi[i] && !Number_ops<FT>::same(a.hi[i], b.hi[i])) return false;
   }
   return true;
 }

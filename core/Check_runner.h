@@ -33,28 +33,13 @@ Pair_answer pair_answer(const K& k, const Scene_model<K>& model, const Pair_resu
 // Pairs are independent, so they are checked in parallel (TBB); results are
 // kept per pair and merged in pair order, so the answer is the one a single
 // thread gives: the first colliding pair in order, or the smallest t* with
-// the first pair in order among equals.
-template <class K>
-Check_answer run_check(const K& k, const Scene& scene, const Check_options& options)
+// the first pair in order among equals. check(i, ceiling, stats) decides pair
+// i (a filtered run may decide it in two kernels; results are in K's numbers).
+template <class K, class Check_one>
+void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::pair<int, int>>& pairs,
+               const Check_options& options, Check_one check, Check_answer& answer)
 {
   using FT = typename K::FT;
-  using Checker = Collision_checker<K>;
-  Check_answer answer;
-  answer.number = K::name();
-  auto start = std::chrono::steady_clock::now();
-  Scene_model<K> model = Scene_model<K>::build(k, scene);
-  answer.stats.seconds_model = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  auto settled = Checker::settle_all(k, model, answer.stats, options.sbounds);
-
-  start = std::chrono::steady_clock::now();
-  std::vector<Box<FT, 3>> roots;
-  for (const auto& b : settled) roots.push_back(b[0]);
-  std::vector<std::pair<int, int>> pairs = Pair_sweep<K>(k).candidates(model, roots, scene);
-  std::size_t n = model.objects.size();
-  answer.stats.object_pairs = n * (n - 1) / 2 - scene.ignore.size();
-  answer.stats.candidate_pairs = pairs.size();
-  answer.stats.seconds_sweep = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
   std::vector<Pair_result<FT>> results(pairs.size());
   std::vector<Check_stats> stats(pairs.size());
   std::atomic<std::size_t> first_hit{pairs.size()};      // any-collision mode: lowest colliding index
@@ -70,12 +55,11 @@ Check_answer run_check(const K& k, const Scene& scene, const Check_options& opti
       use_ceiling = have_best;
       ceiling = best;
     }
-    Checker checker(k, model, settled, stats[i], options.sbounds);
-    results[i] = checker.check_pair(pairs[i].first, pairs[i].second, options.earliest, use_ceiling ? &ceiling : nullptr);
+    results[i] = check(i, use_ceiling ? &ceiling : nullptr, stats[i]);
     if (!results[i].collide) return;
     if (options.earliest) {
       std::lock_guard<std::mutex> lock(best_mutex);
-      if (!have_best || results[i].t_star < best) { have_best = true; best = results[i].t_star; }
+      if (!have_best || k.less(results[i].t_star, best)) { have_best = true; best = results[i].t_star; }
     }
     std::size_t seen = first_hit.load();
     while (i < seen && !first_hit.compare_exchange_weak(seen, i)) {}
@@ -93,7 +77,7 @@ Check_answer run_check(const K& k, const Scene& scene, const Check_options& opti
     if (!options.all_pairs && !options.earliest && answer.collide) break;
     answer.collide = true;
     answer.pairs.push_back(pair_answer(k, model, r));
-    if (options.earliest && (!merged || r.t_star < merged_best)) {
+    if (options.earliest && (!merged || k.less(r.t_star, merged_best))) {
       merged = true;
       merged_best = r.t_star;
       answer.earliest_pair = static_cast<int>(answer.pairs.size()) - 1;
@@ -105,26 +89,52 @@ Check_answer run_check(const K& k, const Scene& scene, const Check_options& opti
     answer.pairs = {p};
     answer.earliest_pair = 0;
   }
-  return answer;
+}
+
+// Object pairs the sweep keeps (§6), with the sweep's counts and time.
+template <class K>
+std::vector<std::pair<int, int>> candidate_pairs(const K& k, const Scene_model<K>& model,
+                                                 const std::vector<typename Collision_checker<K>::Bounds>& settled,
+                                                 const Scene& scene, Check_stats& stats)
+{
+  auto start = std::chrono::steady_clock::now();
+  std::vector<Box<typename K::FT, 3>> roots;
+  for (const auto& b : settled) roots.push_back(b[0]);
+  std::vector<std::pair<int, int>> pairs = Pair_sweep<K>(k).candidates(model, roots, scene);
+  std::size_t n = model.objects.size();
+  stats.object_pairs = n * (n - 1) / 2 - scene.ignore.size();
+  stats.candidate_pairs = pairs.size();
+  stats.seconds_sweep = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return pairs;
 }
 
 template <class K>
-Skeleton_answer run_skeleton(const K& k, const Scene& scene)
+Check_answer run_check(const K& k, const Scene& scene, const Check_options& options)
 {
-  using FT = typename K::FT;
-  Skeleton_answer answer;
+  using Checker = Collision_checker<K>;
+  Check_answer answer;
   answer.number = K::name();
+  auto start = std::chrono::steady_clock::now();
   Scene_model<K> model = Scene_model<K>::build(k, scene);
-  auto settled = Collision_checker<K>::settle_all(k, model, answer.stats, true);
-  std::vector<Box<FT, 3>> roots;
-  for (const auto& b : settled) roots.push_back(b[0]);
-  std::vector<std::pair<int, int>> pairs = Pair_sweep<K>(k).candidates(model, roots, scene);
+  answer.stats.seconds_model = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  auto settled = Checker::settle_all(k, model, answer.stats, options.sbounds);
+  std::vector<std::pair<int, int>> pairs = candidate_pairs(k, model, settled, scene, answer.stats);
+  auto check = [&](std::size_t i, const typename K::FT* ceiling, Check_stats& stats) {
+    Checker checker(k, model, settled, stats, options.sbounds);
+    return checker.check_pair(pairs[i].first, pairs[i].second, options.earliest, ceiling);
+  };
+  run_pairs(k, model, pairs, options, check, answer);
+  return answer;
+}
+
+// skeleton(i, stats): the collision-region edges of pair i, in K's numbers.
+template <class K, class Skeleton_one>
+void run_skeleton_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::pair<int, int>>& pairs,
+                        Skeleton_one skeleton, Skeleton_answer& answer)
+{
   std::vector<std::vector<typename Collision_checker<K>::Segment>> edges(pairs.size());
   std::vector<Check_stats> stats(pairs.size());
-  tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t i) {
-    Collision_checker<K> checker(k, model, settled, stats[i]);
-    edges[i] = checker.skeleton_pair(pairs[i].first, pairs[i].second);
-  });
+  tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t i) { edges[i] = skeleton(i, stats[i]); });
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     answer.stats.add(stats[i]);
     if (edges[i].empty()) continue;
@@ -137,6 +147,19 @@ Skeleton_answer run_skeleton(const K& k, const Scene& scene)
     }
     answer.pairs.push_back(p);
   }
+}
+
+template <class K>
+Skeleton_answer run_skeleton(const K& k, const Scene& scene)
+{
+  Skeleton_answer answer;
+  answer.number = K::name();
+  Scene_model<K> model = Scene_model<K>::build(k, scene);
+  auto settled = Collision_checker<K>::settle_all(k, model, answer.stats, true);
+  std::vector<std::pair<int, int>> pairs = candidate_pairs(k, model, settled, scene, answer.stats);
+  run_skeleton_pairs(k, model, pairs, [&](std::size_t i, Check_stats& stats) {
+    return Collision_checker<K>(k, model, settled, stats).skeleton_pair(pairs[i].first, pairs[i].second);
+  }, answer);
   return answer;
 }
 

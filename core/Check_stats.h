@@ -32,6 +32,12 @@ struct Check_stats {
   std::string conquered_box;               // hull of the regions conquered (last span)
   // Generate-and-test (§4.2, Appendix A)
   std::size_t lines = 0, points_classified = 0, cells_tested = 0;
+  // Filtered exact kernel (set once per run; 0 for other kernels):
+  // exact_fallbacks: interval runs (object bounds, pairs) stopped by a sign
+  // the intervals could not certify, each then redone in rationals;
+  // exact_witness_runs: colliding pairs rerun in rationals to construct
+  // their witness, t* and contact point exactly.
+  std::size_t exact_fallbacks = 0, exact_witness_runs = 0;
   // Time per stage, seconds
   double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
 

@@ -45,14 +45,18 @@ public:
   static std::vector<Bounds> settle_all(const K& k, const Scene_model<K>& model, Check_stats& stats, bool use_sbounds)
   {
     auto start = std::chrono::steady_clock::now();
-    S_bounds<K> sb(k);
     std::vector<Bounds> settled;
-    for (const auto& o : model.objects) {
-      settled.push_back(sb.initial(o.csg));
-      if (use_sbounds) stats.sbound_passes += sb.settle(o.csg, settled.back(), max_sbound_passes);
-    }
+    for (const auto& o : model.objects) settled.push_back(settle_one(k, o.csg, stats, use_sbounds));
     stats.seconds_sbounds += seconds_since(start);
     return settled;
+  }
+
+  static Bounds settle_one(const K& k, const Csg_model<FT>& csg, Check_stats& stats, bool use_sbounds)
+  {
+    S_bounds<K> sb(k);
+    Bounds b = sb.initial(csg);
+    if (use_sbounds) stats.sbound_passes += sb.settle(csg, b, max_sbound_passes);
+    return b;
   }
 
   Collision_checker(const K& k, const Scene_model<K>& model, const std::vector<Bounds>& settled, Check_stats& stats,
@@ -228,7 +232,7 @@ private:
       sb_.settle(A.object->csg, A.beta, max_sbound_passes);
       sb_.settle(B.object->csg, B.beta, max_sbound_passes);
       if (A.beta[0].empty || B.beta[0].empty) return false;
-      if (same_box(ra, A.beta[0]) && same_box(rb, B.beta[0]) && l0 == tl && h0 == th) break;
+      if (same_box(ra, A.beta[0]) && same_box(rb, B.beta[0]) && Number_ops<FT>::same(l0, tl) && Number_ops<FT>::same(h0, th)) break;
     }
     return true;
   }

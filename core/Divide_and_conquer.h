@@ -82,7 +82,8 @@ public:
     FT lo = h.c, hi = h.c;
     for (int a = 0; a < 4; ++a) {
       FT x = h.n[a] * b.lo[a], y = h.n[a] * b.hi[a];
-      if (x < y) { lo += x; hi += y; } else { lo += y; hi += x; }
+      lo += Number_ops<FT>::lower(x, y);
+      hi += Number_ops<FT>::upper(x, y);
     }
     CGAL::Sign slo = k_.sign(lo), shi = k_.sign(hi);
     if (slo == CGAL::POSITIVE || (!strict && slo == CGAL::ZERO)) return Truth::False;

@@ -128,7 +128,7 @@ private:
     V base = base_point(a, b, c, l);
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return;
-    if (!goal.can_improve(std::min(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
+    if (!goal.can_improve(Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
     evaluate_planes(base, l, first_face_);
     std::vector<FT> cuts{s_lo, s_hi};
     FT centre = (s_lo + s_hi) / FT(2);
@@ -175,8 +175,8 @@ private:
         continue;
       }
       FT cut = -at_base_[p] / along_[p];
-      if (e > 0) { if (!has_hi || cut < s_hi) s_hi = cut; has_hi = true; }
-      else { if (!has_lo || s_lo < cut) s_lo = cut; has_lo = true; }
+      if (e > 0) { s_hi = has_hi ? Number_ops<FT>::lower(s_hi, cut) : cut; has_hi = true; }
+      else { s_lo = has_lo ? Number_ops<FT>::upper(s_lo, cut) : cut; has_lo = true; }
     }
     return has_lo && has_hi && k_.compare(s_hi, s_lo) == CGAL::POSITIVE;
   }

@@ -18,6 +18,10 @@ public:
 
   const Derived& derived() const { return static_cast<const Derived&>(*this); }
 
+  // For conservative filters only (the pair sweep): true unless x is known
+  // not to be positive. An interval kernel answers true when unsure.
+  bool possibly_positive(const FT& x) const { return derived().sign(x) == CGAL::POSITIVE; }
+
   CGAL::Sign compare(const FT& a, const FT& b) const { return derived().sign(a - b); }
   bool less(const FT& a, const FT& b) const { return compare(a, b) == CGAL::NEGATIVE; }
 

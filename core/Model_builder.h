@@ -201,8 +201,8 @@ private:
     for (int a = 0; a < 3; ++a) {
       FT lo = vs[0][a], hi = vs[0][a];
       for (const auto& v : vs) {
-        if (v[a] < lo) lo = v[a];
-        if (hi < v[a]) hi = v[a];
+        lo = Number_ops<FT>::lower(lo, v[a]);
+        hi = Number_ops<FT>::upper(hi, v[a]);
       }
       b.set(a, lo, hi);
     }

@@ -78,7 +78,7 @@ private:
       Box4 b;
       for (int q = 0; q < 3; ++q) {
         FT d0 = m.velocity[seg][q] * span.lo + m.offset[seg][q], d1 = m.velocity[seg][q] * span.hi + m.offset[seg][q];
-        FT dlo = d0 < d1 ? d0 : d1, dhi = d0 < d1 ? d1 : d0;
+        FT dlo = Number_ops<FT>::lower(d0, d1), dhi = Number_ops<FT>::upper(d0, d1);
         b.has_lo[q] = root.has_lo[q];
         b.has_hi[q] = root.has_hi[q];
         if (root.has_lo[q]) b.lo[q] = root.lo[q] + dlo;
@@ -93,7 +93,7 @@ private:
   bool opens_past(const Box4& a, const Box4& b, int q) const
   {
     if (!a.has_hi[q] || !b.has_lo[q]) return true;
-    return k_.compare(a.hi[q], b.lo[q]) == CGAL::POSITIVE;
+    return k_.possibly_positive(a.hi[q] - b.lo[q]);
   }
   bool overlaps(const Box4& a, const Box4& b) const
   {

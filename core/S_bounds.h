@@ -85,8 +85,7 @@ public:
     for (int q = 0; q < 3; ++q) {
       Side a = side(A, q), b = side(B, q);
       FT w = (*B.v)[q] - (*A.v)[q];                 // (v - u)
-      FT m1 = w * tl, M1 = w * th;
-      if (M1 < m1) std::swap(m1, M1);
+      FT m1 = Number_ops<FT>::lower(w * tl, w * th), M1 = Number_ops<FT>::upper(w * tl, w * th);
       // a' = max(a, b + min((v-u)t)), alpha' = min(alpha, beta + max((v-u)t)),
       // b' = max(b, a - max((v-u)t)), beta' = min(beta, alpha - min((v-u)t)).
       Side a2 = a, b2 = b;
@@ -124,8 +123,8 @@ private:
     if (s.has_lo) { b.lo[q] = s.lo - (*m.o)[q]; b.has_lo[q] = true; }
     if (s.has_hi) { b.hi[q] = s.hi - (*m.o)[q]; b.has_hi[q] = true; }
   }
-  static void raise(Side& s, const FT& lo) { if (!s.has_lo || s.lo < lo) { s.lo = lo; s.has_lo = true; } }
-  static void lower(Side& s, const FT& hi) { if (!s.has_hi || hi < s.hi) { s.hi = hi; s.has_hi = true; } }
+  static void raise(Side& s, const FT& lo) { s.lo = s.has_lo ? Number_ops<FT>::upper(s.lo, lo) : lo; s.has_lo = true; }
+  static void lower(Side& s, const FT& hi) { s.hi = s.has_hi ? Number_ops<FT>::lower(s.hi, hi) : hi; s.has_hi = true; }
 
   // ut + a <= q <= ut + alpha and vt + b <= q <= vt + beta give
   // b - alpha <= (u - v) t <= beta - a (Appendix B, "Computing [tl, th]").
@@ -141,8 +140,8 @@ private:
       return !(has_low && has_high && k_.compare(high, low) != CGAL::POSITIVE);
     }
     if (s == CGAL::NEGATIVE) std::swap(low, high), std::swap(has_low, has_high);
-    if (has_low) { FT t = low / w; if (tl < t) tl = t; }
-    if (has_high) { FT t = high / w; if (t < th) th = t; }
+    if (has_low) tl = Number_ops<FT>::upper(tl, low / w);
+    if (has_high) th = Number_ops<FT>::lower(th, high / w);
     return k_.compare(th, tl) == CGAL::POSITIVE;
   }
 

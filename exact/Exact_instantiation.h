@@ -1,4 +1,6 @@
-// The generic pipeline instantiated on the exact kernel.
+// The generic pipeline instantiated on the two exact kernels: the filtered
+// one (`--number exact`, what users run) and the pure rational one
+// (`--number rational`, the reference). Their answers are identical.
 #ifndef CLASH4D_EXACT_EXACT_INSTANTIATION_H
 #define CLASH4D_EXACT_EXACT_INSTANTIATION_H
 
@@ -10,8 +12,11 @@ namespace clash4d {
 
 Check_answer check_exact(const Scene& scene, const Check_options& options);
 nlohmann::ordered_json extrude_exact(const Scene& scene);
-
 Skeleton_answer skeleton_exact(const Scene& scene);
+
+Check_answer check_rational(const Scene& scene, const Check_options& options);
+nlohmann::ordered_json extrude_rational(const Scene& scene);
+Skeleton_answer skeleton_rational(const Scene& scene);
 
 } // namespace clash4d
 

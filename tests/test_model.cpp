@@ -2,7 +2,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "core/Scene_model.h"
-#include "exact/Exact_kernel.h"
+#include "exact/Rational_kernel.h"
 #include "float/Double_kernel.h"
 #include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
@@ -19,8 +19,8 @@ static Scene scene_with(const std::string& shape_a, const std::string& motion_a 
 
 static Csg_model<Q> model_of(const std::string& shape)
 {
-  Exact_kernel k;
-  return Scene_model<Exact_kernel>::build(k, scene_with(shape)).objects[0].csg;
+  Rational_kernel k;
+  return Scene_model<Rational_kernel>::build(k, scene_with(shape)).objects[0].csg;
 }
 
 static void check_box(const Box<Q, 3>& b, std::array<Q, 3> lo, std::array<Q, 3> hi)
@@ -113,7 +113,7 @@ BOOST_AUTO_TEST_CASE(halfspace_box_is_omega_unless_axis_aligned)
 
 BOOST_AUTO_TEST_CASE(motion_displacement_is_continuous_with_zero_at_zero)
 {
-  Exact_kernel k;
+  Rational_kernel k;
   Motion m = parse_motion("vel 1 0 0 until -2 rest until 0 vel 0 1 2 until 5 vel -1 -1 0 until 7 rest", "motion");
   auto p = Motion_path<Q>::build(k, m);
   BOOST_TEST(p.displacement(Q(0)) == (Vector3<Q>{Q(0), Q(0), Q(0)}));

@@ -9,7 +9,7 @@
 // exact cases, CLASH4D_ORACLE_DOUBLE_CASES the number of double cases.
 
 #include "core/Check_runner.h"
-#include "exact/Exact_kernel.h"
+#include "exact/Exact_instantiation.h"
 #include "float/Double_kernel.h"
 #include "scene/Json_reader.h"
 #include "scene/Number_text.h"
@@ -314,7 +314,7 @@ BOOST_AUTO_TEST_CASE(exact_pipeline_agrees_with_oracle)
     Check_answer ans;
     BOOST_TEST_CHECKPOINT("exact " << where);
     try {
-      ans = run_check(Exact_kernel(), scene, opts);
+      ans = check_exact(scene, opts);
     } catch (const std::exception& e) {
       ++mismatches;
       save_case("exact", i, rs.json);
@@ -414,7 +414,7 @@ BOOST_AUTO_TEST_CASE(double_kernel_survives_tilted_contact)
     {"name":"o1","shape":{"rotate":[2,1,1,1],"solid":{"block":{"min":[3,1.5,0.5],"max":[4,2.5,2]}}},
      "motion":"vel -3/14 -3/7 1/7"}]})"));
   BOOST_TEST(oracle_scene_collide(scene));
-  BOOST_TEST(run_check(Exact_kernel(), scene, Check_options()).collide);
+  BOOST_TEST(check_exact(scene, Check_options()).collide);
   Check_answer d;
   BOOST_CHECK_NO_THROW(d = run_check(Double_kernel(), scene, Check_options()));
 }
@@ -433,7 +433,7 @@ BOOST_AUTO_TEST_CASE(earliest_time_agrees_with_oracle)
     Check_options opts;
     opts.all_pairs = true;
     opts.earliest = true;
-    Check_answer a = run_check(Exact_kernel(), rs.scene, opts);
+    Check_answer a = check_exact(rs.scene, opts);
     for (const auto& p : a.pairs) {
       int ia = -1, ib = -1;
       for (std::size_t k = 0; k < rs.scene.objects.size(); ++k) {

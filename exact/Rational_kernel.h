@@ -1,6 +1,7 @@
-// The exact kernel: CGAL's rational over GMP, signs decided exactly.
-#ifndef CLASH4D_EXACT_EXACT_KERNEL_H
-#define CLASH4D_EXACT_EXACT_KERNEL_H
+// The rational kernel (`--number rational`): CGAL's rational over GMP, every
+// sign decided exactly. The reference the filtered kernel is held against.
+#ifndef CLASH4D_EXACT_RATIONAL_KERNEL_H
+#define CLASH4D_EXACT_RATIONAL_KERNEL_H
 
 #include "core/Kernel_base.h"
 #include "exact/Rational.h"
@@ -8,9 +9,9 @@
 
 namespace clash4d {
 
-class Exact_kernel : public Kernel_base<Exact_kernel, Rational> {
+class Rational_kernel : public Kernel_base<Rational_kernel, Rational> {
 public:
-  static constexpr const char* name() { return "exact"; }
+  static constexpr const char* name() { return "rational"; }
   static constexpr bool is_exact = true;
   CGAL::Sign sign(const FT& x) const { return CGAL::sign(x); }
   FT from_rational(const Rational& q) const { return q; }

@@ -1,0 +1,207 @@
+// `check` and `skeleton` through a filter (CGAL's Filtered_predicate pattern
+// applied to a whole pair): every pair is first run by the generic stages on
+// the approximate kernel AK, whose sign() throws
+// CGAL::Uncertain_conversion_exception when it cannot certify a sign; a pair
+// whose run threw, or that collides (its witness, t* and contact point must be
+// constructed exactly), is run again by the same stages on the exact kernel
+// EK. The approximate run of a pair that does not collide made every decision
+// with a certified sign, so it is a run of the algorithm on exact values: its
+// "no collision" is EK's. Answers are therefore those of EK alone.
+//
+// EK's model is built object by object, only for objects that need it.
+#ifndef CLASH4D_CORE_FILTERED_RUNNER_H
+#define CLASH4D_CORE_FILTERED_RUNNER_H
+
+#include "core/Check_runner.h"
+#include <CGAL/Uncertain.h>
+#include <memory>
+#include <mutex>
+
+namespace clash4d {
+
+// Protector: RAII guard putting the FPU in the mode AK needs (for intervals,
+// CGAL::Protect_FPU_rounding<true>); held around every AK computation, in the
+// thread doing it.
+template <class AK, class EK, class Protector>
+class Filtered_runner {
+public:
+  using AFT = typename AK::FT;
+  using EFT = typename EK::FT;
+
+  Filtered_runner(const Scene& scene, bool use_sbounds)
+    : scene_(scene), use_sbounds_(use_sbounds), built_(new std::once_flag[scene.objects.size()])
+  {
+    emodel_.t_lo = ek_.from_rational(scene.t_lo);
+    emodel_.t_hi = ek_.from_rational(scene.t_hi);
+    emodel_.objects.resize(scene.objects.size());
+    esettled_.resize(scene.objects.size());
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) emodel_.objects[i].name = scene.objects[i].name;
+  }
+
+  Check_answer check(const Check_options& options)
+  {
+    Check_answer answer;
+    std::vector<std::pair<int, int>> pairs;
+    if (!prepare(answer.stats, pairs)) {
+      answer = run_check(ek_, scene_, options);     // AK could not even build the model
+    } else {
+      auto check_one = [&](std::size_t i, const EFT* ceiling, Check_stats& stats) {
+      int a = pairs[i].first, b = pairs[i].second;
+      if (!exact_only_[a] && !exact_only_[b]) {
+        try {
+          Protector protect;
+          AFT aceiling = ceiling ? ak_.from_rational(ek_.to_rational(*ceiling)) : AFT(0);
+          Check_stats astats;
+          Collision_checker<AK> checker(ak_, amodel_, asettled_, astats, use_sbounds_);
+          if (!checker.check_pair(a, b, options.earliest, ceiling ? &aceiling : nullptr).collide) {
+            stats = astats;
+            return Pair_result<EFT>();
+          }
+          ++witness_runs_;
+        } catch (const CGAL::Uncertain_conversion_exception&) {
+          ++fallbacks_;
+        }
+      }
+      need_exact(a);
+      need_exact(b);
+      Collision_checker<EK> checker(ek_, emodel_, esettled_, stats, use_sbounds_);
+      return checker.check_pair(a, b, options.earliest, ceiling);
+    };
+      run_pairs(ek_, emodel_, pairs, options, check_one, answer);
+    }
+    answer.number = EK_name;
+    finish(answer.stats);
+    return answer;
+  }
+
+  Skeleton_answer skeleton()
+  {
+    Skeleton_answer answer;
+    use_sbounds_ = true;
+    std::vector<std::pair<int, int>> pairs;
+    if (!prepare(answer.stats, pairs)) {
+      answer = run_skeleton(ek_, scene_);
+    } else {
+      auto skeleton_one = [&](std::size_t i, Check_stats& stats) {
+      int a = pairs[i].first, b = pairs[i].second;
+      if (!exact_only_[a] && !exact_only_[b]) {
+        try {
+          Protector protect;
+          Check_stats astats;
+          if (Collision_checker<AK>(ak_, amodel_, asettled_, astats).skeleton_pair(a, b).empty()) {
+            stats = astats;
+            return std::vector<typename Collision_checker<EK>::Segment>();
+          }
+          ++witness_runs_;
+        } catch (const CGAL::Uncertain_conversion_exception&) {
+          ++fallbacks_;
+        }
+      }
+      need_exact(a);
+      need_exact(b);
+      return Collision_checker<EK>(ek_, emodel_, esettled_, stats).skeleton_pair(a, b);
+    };
+      run_skeleton_pairs(ek_, emodel_, pairs, skeleton_one, answer);
+    }
+    answer.number = EK_name;
+    finish(answer.stats);
+    return answer;
+  }
+
+private:
+  static constexpr const char* EK_name = "exact";
+  const Scene& scene_;
+  bool use_sbounds_;
+  AK ak_;
+  EK ek_;
+  Scene_model<AK> amodel_;
+  std::vector<typename Collision_checker<AK>::Bounds> asettled_;
+  std::vector<char> exact_only_;              // AK could not bound the object: its pairs go to EK
+  Scene_model<EK> emodel_;                    // objects built on demand
+  std::vector<typename Collision_checker<EK>::Bounds> esettled_;
+  std::unique_ptr<std::once_flag[]> built_;
+  std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0};
+
+  // AK's model, each object's S-bounds (EK's where AK fails), and the sweep's
+  // pairs. False when AK cannot build the model: the whole run goes to EK.
+  bool prepare(Check_stats& stats, std::vector<std::pair<int, int>>& pairs)
+  {
+    std::size_t n = scene_.objects.size();
+    exact_only_.assign(n, 0);
+    auto start = std::chrono::steady_clock::now();
+    try {
+      Protector protect;
+      amodel_ = Scene_model<AK>::build(ak_, scene_);
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      ++fallbacks_;
+      return false;
+    }
+    stats.seconds_model = seconds_since(start);
+    start = std::chrono::steady_clock::now();
+    for (std::size_t i = 0; i < n; ++i) asettled_.push_back(settle(static_cast<int>(i), stats));
+    stats.seconds_sbounds += seconds_since(start);
+    try {
+      Protector protect;
+      pairs = candidate_pairs(ak_, amodel_, asettled_, scene_, stats);
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      // The sweep could not order some motion times: sweep in EK instead.
+      ++fallbacks_;
+      for (std::size_t i = 0; i < n; ++i) need_exact(static_cast<int>(i));
+      pairs = candidate_pairs(ek_, emodel_, esettled_, scene_, stats);
+    }
+    return true;
+  }
+
+  typename Collision_checker<AK>::Bounds settle(int i, Check_stats& stats)
+  {
+    try {
+      Protector protect;
+      return Collision_checker<AK>::settle_one(ak_, amodel_.objects[i].csg, stats, use_sbounds_);
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      ++fallbacks_;
+      exact_only_[i] = 1;
+      need_exact(i);
+      // Only the sweep reads it: the root box, EK's enclosed in AK's numbers.
+      return typename Collision_checker<AK>::Bounds(1, enclose(esettled_[i][0]));
+    }
+  }
+
+  Box<AFT, 3> enclose(const Box<EFT, 3>& e) const
+  {
+    Box<AFT, 3> b;
+    b.empty = e.empty;
+    b.has_lo = e.has_lo;
+    b.has_hi = e.has_hi;
+    for (int q = 0; q < 3; ++q) {
+      if (e.has_lo[q]) b.lo[q] = ak_.from_rational(ek_.to_rational(e.lo[q]));
+      if (e.has_hi[q]) b.hi[q] = ak_.from_rational(ek_.to_rational(e.hi[q]));
+    }
+    return b;
+  }
+
+  void need_exact(int i)
+  {
+    std::call_once(built_[i], [&] {
+      const Scene_object& o = scene_.objects[i];
+      emodel_.objects[i].csg = Model_builder<EK>(ek_).build(o.shape);
+      emodel_.objects[i].motion = Motion_path<EFT>::build(ek_, o.motion);
+      Check_stats ignored;
+      esettled_[i] = Collision_checker<EK>::settle_one(ek_, emodel_.objects[i].csg, ignored, use_sbounds_);
+    });
+  }
+
+  void finish(Check_stats& stats) const
+  {
+    stats.exact_fallbacks = fallbacks_.load();
+    stats.exact_witness_runs = witness_runs_.load();
+  }
+
+  static double seconds_since(std::chrono::steady_clock::time_point t)
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  }
+};
+
+} // namespace clash4d
+
+#endif

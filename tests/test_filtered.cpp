@@ -1,0 +1,184 @@
+#define BOOST_TEST_MODULE filtered
+// The filtered exact kernel (`--number exact`: intervals first, rationals when
+// an interval cannot certify a sign, and for colliding pairs) against the pure
+// rational kernel (`--number rational`): the same verdicts, colliding pairs,
+// witnesses, earliest times and contact points, on every fixture and on
+// seeded random scenes (coarse-grid contact scenes and the fuzzer's contact
+// families, whose 1e-9 offsets and rotations make intervals fail).
+//
+// CLASH4D_SEED overrides the seed, CLASH4D_FILTER_CASES the number of cases
+// per generator.
+#include <boost/test/data/test_case.hpp>
+#include <boost/test/unit_test.hpp>
+
+#include "compare/Contact_families.h"
+#include "exact/Exact_instantiation.h"
+#include "scene/Grid_scene.h"
+#include "scene/Json_reader.h"
+#include "scene/Scene_reader.h"
+#include "support/Random_scene.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+using namespace clash4d;
+namespace data = boost::unit_test::data;
+
+namespace {
+
+std::uint64_t env_number(const char* name, std::uint64_t fallback)
+{
+  const char* v = std::getenv(name);
+  return v && *v ? std::strtoull(v, nullptr, 10) : fallback;
+}
+
+std::string describe(const Check_answer& a)
+{
+  std::ostringstream out;
+  out << (a.collide ? "collide" : "no collision") << " earliest_pair " << a.earliest_pair;
+  for (const auto& p : a.pairs) {
+    out << "\n  " << p.a << "/" << p.b << " witness";
+    for (const auto& x : p.witness) out << " " << x;
+    out << (p.witness_verified ? " verified" : " UNVERIFIED");
+    if (p.earliest) {
+      out << " t* " << p.t_star << (p.at_start ? " (at start)" : "") << " contact";
+      for (const auto& x : p.contact) out << " " << x;
+    }
+  }
+  return out.str();
+}
+
+// Runs both kernels with the options; on mismatch prints both answers
+// (Kernel_checker style). Returns the filtered answer.
+Check_answer same_answers(const Scene& scene, const Check_options& o, const std::string& label)
+{
+  Check_answer filtered = check_exact(scene, o), rational = check_rational(scene, o);
+  std::string f = describe(filtered), r = describe(rational);
+  BOOST_TEST(f == r, label << (o.earliest ? " --earliest" : "") << (o.all_pairs ? " --all-pairs" : "")
+                           << "\nfiltered: " << f << "\nrational: " << r);
+  BOOST_TEST(filtered.number == "exact");
+  BOOST_TEST(rational.number == "rational");
+  return filtered;
+}
+
+// Whether intervals decided the whole run (nothing redone in rationals).
+bool decided_by_intervals(const Check_answer& a)
+{
+  return a.stats.exact_fallbacks == 0 && a.stats.exact_witness_runs == 0;
+}
+
+std::vector<std::string> fixture_scenes()
+{
+  std::vector<std::string> out;
+  for (const char* family : {"paper", "contact"})
+    for (const auto& f : std::filesystem::directory_iterator(std::string(CLASH4D_FIXTURES) + "/" + family)) {
+      std::string name = f.path().filename().string();
+      // The skewed §6 scenes take a rational run of 4-17 s each (issue 6's
+      // open item); their verdicts are held to expected.json by test_fixtures.
+      if (f.path().extension() != ".json" || name == "expected.json" || name.find("skewed") != std::string::npos) continue;
+      out.push_back(std::string(family) + "/" + name);
+    }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+} // namespace
+
+BOOST_DATA_TEST_CASE(fixture_answers_match_rational, data::make(fixture_scenes()), entry)
+{
+  Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/" + entry);
+  Check_options o;
+  same_answers(scene, o, entry);
+  o.all_pairs = true;
+  same_answers(scene, o, entry);
+  o.all_pairs = false;
+  o.earliest = true;
+  same_answers(scene, o, entry);
+}
+
+BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
+{
+  std::uint64_t seed = env_number("CLASH4D_SEED", 20261122ull), cases = env_number("CLASH4D_FILTER_CASES", 1000);
+  BOOST_TEST_MESSAGE("filtered vs rational, coarse-grid scenes: seed " << seed << ", " << cases << " cases");
+  std::mt19937_64 rng(seed);
+  std::size_t by_intervals = 0, collide = 0;
+  for (std::uint64_t i = 0; i < cases; ++i) {
+    Random_scene rs = random_scene_with_text(rng);
+    Check_options o;
+    Check_answer a = same_answers(rs.scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) + ": " + rs.json);
+    by_intervals += decided_by_intervals(a);
+    collide += a.collide;
+    o.earliest = true;
+    same_answers(rs.scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) + ": " + rs.json);
+  }
+  BOOST_TEST_MESSAGE(by_intervals << " of " << cases << " decided by intervals alone, " << collide << " collide");
+  // The comparison must exercise both paths: many answers from intervals
+  // alone (coarse-grid numbers are exact doubles), and every collision
+  // through the rational rerun.
+  BOOST_TEST(by_intervals > cases / 4);
+  BOOST_TEST(collide > cases / 10);
+}
+
+BOOST_AUTO_TEST_CASE(contact_families_match_rational)
+{
+  std::uint64_t seed = env_number("CLASH4D_SEED", 20261122ull), cases = env_number("CLASH4D_FILTER_CASES", 1000);
+  BOOST_TEST_MESSAGE("filtered vs rational, fuzz contact families: seed " << seed << ", " << cases << " cases");
+  std::size_t fell_back = 0;
+  for (std::uint64_t i = 0; i < cases; ++i) {
+    Fuzz_case c = make_fuzz_case(seed, i);
+    Scene scene = read_scene(read_json_text(c.json));
+    Check_options o;
+    o.earliest = i % 2 == 1;
+    Check_answer a = same_answers(scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) + " (" + c.family + "): " + c.json);
+    fell_back += a.stats.exact_fallbacks > 0;
+  }
+  BOOST_TEST_MESSAGE(fell_back << " of " << cases << " needed the exact fallback");
+  BOOST_TEST(fell_back > 0);
+}
+
+// General position: intervals certify every decision; a colliding pair is
+// rerun in rationals only to construct its witness.
+BOOST_AUTO_TEST_CASE(no_fallback_in_general_position)
+{
+  Scene miss = read_scene_file(std::string(CLASH4D_FIXTURES) + "/paper/section4_3_comoving_cubes.json");
+  Check_answer a = check_exact(miss, Check_options());
+  BOOST_TEST(!a.collide);
+  BOOST_TEST(a.stats.pairs == 1u);                 // the pair was examined, by intervals
+  BOOST_TEST(a.stats.exact_fallbacks == 0u);
+  BOOST_TEST(a.stats.exact_witness_runs == 0u);
+
+  Scene hit = read_scene_file(std::string(CLASH4D_FIXTURES) + "/paper/section3_block_path_obstacle.json");
+  Check_answer b = check_exact(hit, Check_options());
+  BOOST_TEST(b.collide);
+  BOOST_TEST(b.stats.exact_fallbacks == 0u);
+  BOOST_TEST(b.stats.exact_witness_runs == 1u);
+}
+
+// A face touch after a rotation by (3/5, 4/5): the touching planes' values
+// are exactly zero but their intervals straddle zero, so the filter must
+// fall back, and the answer is still "no collision".
+BOOST_AUTO_TEST_CASE(fallback_on_contact)
+{
+  Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/contact/rotated_skew_face_touch.json");
+  Check_answer a = check_exact(scene, Check_options());
+  BOOST_TEST(!a.collide);
+  BOOST_TEST(a.stats.exact_fallbacks > 0u);
+}
+
+BOOST_DATA_TEST_CASE(skeleton_matches_rational,
+                     data::make(std::vector<std::string>{"contact/face_touch_static_overlap_1e-9.json",
+                                                         "contact/union_seam_straddle.json",
+                                                         "paper/section3_block_path_obstacle.json",
+                                                         "contact/crossing_paths_collide.json"}),
+                     entry)
+{
+  Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/" + entry);
+  Skeleton_answer f = skeleton_exact(scene), r = skeleton_rational(scene);
+  BOOST_TEST_REQUIRE(f.pairs.size() == r.pairs.size());
+  BOOST_TEST(!f.pairs.empty());
+  for (std::size_t i = 0; i < f.pairs.size(); ++i) {
+    BOOST_TEST(f.pairs[i].a == r.pairs[i].a);
+    BOOST_TEST(f.pairs[i].edges == r.pairs[i].edges, entry);
+  }
+}
