@@ -290,7 +290,7 @@ private:
       if (!fa && !fb)
         throw Input_error("", std::string("both objects are unbounded along ") + axis[q] +
                               ": this version needs one of each pair bounded", CLASH4D_EXIT_LIMIT);
-      bool use_a = fa && (!fb || !(bb.hi[q] - bb.lo[q] < ba.hi[q] - ba.lo[q]));
+      bool use_a = fa && (!fb || !k_.prefer_less(bb.hi[q] - bb.lo[q], ba.hi[q] - ba.lo[q]));
       const Moving& m = use_a ? A : B;
       const Box3& bm = use_a ? ba : bb;
       shear[q] = m.v[q];

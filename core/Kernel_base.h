@@ -18,6 +18,11 @@ public:
 
   const Derived& derived() const { return static_cast<const Derived&>(*this); }
 
+  // For heuristic choices only, where either answer is valid (which frame
+  // fits a region better): exact here; an approximate kernel may answer
+  // either way when it cannot tell, instead of failing.
+  bool prefer_less(const FT& a, const FT& b) const { return less(a, b); }
+
   // For conservative filters only (the pair sweep): true unless x is known
   // not to be positive. An interval kernel answers true when unsure.
   bool possibly_positive(const FT& x) const { return derived().sign(x) == CGAL::POSITIVE; }

@@ -34,6 +34,7 @@ public:
   static constexpr bool is_exact = false;
   CGAL::Sign sign(const FT& x) const { return CGAL::make_certain(CGAL::sign(x)); }
   bool possibly_positive(const FT& x) const { return CGAL::possibly(CGAL::sign(x) == CGAL::POSITIVE); }
+  bool prefer_less(const FT& a, const FT& b) const { return a.inf() + a.sup() < b.inf() + b.sup(); }
   FT from_rational(const Rational& q) const { return FT(CGAL::to_interval(q)); }
   // Statistics only: answers are never printed from intervals.
   std::string to_text(const FT& x) const { return "[" + std::to_string(x.inf()) + ", " + std::to_string(x.sup()) + "]"; }
