@@ -203,6 +203,7 @@ void print_comparison(const json& c, std::ostream& out)
   for (const auto& s : c["subjects"]) {
     out << "  " << s["subject"].get<std::string>() << ": ";
     if (!s["ok"].get<bool>()) { out << "failed: " << s["error"].get<std::string>() << "\n"; continue; }
+    if (s.contains("skipped") && s["skipped"].is_string()) { out << "skipped: " << s["skipped"].get<std::string>() << "\n"; continue; }
     out << (s["collide"].get<bool>() ? "collision" : "no collision");
     if (!s["witness_valid"].is_null()) out << (s["witness_valid"].get<bool>() ? ", witness valid" : ", witness INVALID");
     if (!s["earliest"].is_null()) out << ", t* = " << s["earliest"]["t"].get<std::string>();
@@ -312,6 +313,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   compare_cmd->add_option("SCENE", compare_files, "scene files")->required();
   compare_cmd->add_option("--tolerance", compare_tolerances, "a double subject treating |value| <= EPS as zero; repeatable (default 1e-9)")->check(CLI::PositiveNumber);
   compare_cmd->add_flag("--earliest", compare_earliest, "also compare earliest collision times t*");
+  bool compare_fcl = false;
+  compare_cmd->add_flag("--fcl", compare_fcl, "also run FCL's continuous collision (the fcl subject) where FCL can express the scene; skipped with the reason elsewhere");
   compare_cmd->add_flag("--json", as_json, "print one JSON object per scene in a list");
 
   Fuzz_options fuzz;
@@ -325,6 +328,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   fuzz_cmd->add_option("--out", fuzz.out, "output folder")->required();
   fuzz_cmd->add_option("--tolerance", fuzz_tolerances, "double subjects with tolerance EPS (default 1e-9)")->check(CLI::PositiveNumber);
   fuzz_cmd->add_option("--merge", merge_dirs, "join these fuzz output folders into --out instead of running");
+  fuzz_cmd->add_flag("--fcl", fuzz.compare.fcl, "also run the fcl subject (FCL's continuous collision) on the cases FCL can express");
 
   std::vector<std::string> report_inputs;
   std::string report_out;
@@ -380,6 +384,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     Compare_options o;
     if (!compare_tolerances.empty()) o.tolerances = compare_tolerances;
     o.earliest = compare_earliest;
+    o.fcl = compare_fcl;
     return compare(compare_files, o, as_json, out, err);
   }
   if (check_cmd->parsed() && tolerance != 0 && number != "double") {

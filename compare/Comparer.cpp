@@ -1,4 +1,5 @@
 #include "compare/Comparer.h"
+#include "compare/Fcl_subject.h"
 #include "core/Point_classifier.h"
 #include "exact/Exact_instantiation.h"
 #include "exact/Rational_kernel.h"
@@ -9,6 +10,7 @@
 #include "scene/Scene_reader.h"
 #include "scene/Scene_writer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <functional>
@@ -24,6 +26,7 @@ struct Run {
   bool exact_numbers = true;      // witness strings are rationals (else doubles)
   bool ok = true;
   std::string error;
+  std::string skipped;            // why the subject did not run (fcl: scene not expressible)
   Check_answer answer;
   double seconds = 0;
 };
@@ -81,21 +84,31 @@ Rational largest_magnitude(const Solid& s)
   return m;
 }
 
-// Does the exact verdict flip when object i is moved by +-eps along an axis?
+// Does the exact verdict flip when object i is moved by eps along an axis or
+// a diagonal (every direction of {-1, 0, 1}^3), eps = 2^-20 of the scene's
+// scale, or 2^-40 of it? Axes first; the diagonals are needed for edge and
+// vertex contacts such as two blocks sharing only an edge, which no move
+// along a single axis makes overlap; the smaller move for small objects far
+// from the origin, which the larger one carries right past each other.
 bool hinges_on_contact(const Scene& scene, const std::vector<int>& objects, bool exact_collide)
 {
   Rational scale(1);
   for (const auto& o : scene.objects) scale = std::max(scale, largest_magnitude(o.shape));
-  Rational eps = scale / Rational(1 << 20);
-  for (int i : objects)
-    for (int axis = 0; axis < 3; ++axis)
-      for (int sign : {1, -1}) {
+  // The 26 directions of {-1, 0, 1}^3, axes first.
+  std::vector<std::array<int, 3>> directions;
+  for (int nonzero = 1; nonzero <= 3; ++nonzero)
+    for (int x : {1, 0, -1})
+      for (int y : {1, 0, -1})
+        for (int z : {1, 0, -1})
+          if (std::abs(x) + std::abs(y) + std::abs(z) == nonzero) directions.push_back({x, y, z});
+  for (Rational eps : {scale / Rational(1 << 20), scale / Rational(1 << 20) / Rational(1 << 20)})
+    for (int i : objects)
+      for (const auto& d : directions) {
         Scene moved = scene;
         Solid wrap;
         wrap.kind = Solid::Kind::Translate;
         wrap.path = moved.objects[i].shape.path;
-        wrap.numbers = {Rational(0), Rational(0), Rational(0)};
-        wrap.numbers[axis] = eps * Rational(sign);
+        wrap.numbers = {eps * Rational(d[0]), eps * Rational(d[1]), eps * Rational(d[2])};
         wrap.children.push_back(moved.objects[i].shape);
         moved.objects[i].shape = wrap;
         if (check_exact(moved, Check_options()).collide != exact_collide) return true;
@@ -103,7 +116,30 @@ bool hinges_on_contact(const Scene& scene, const std::vector<int>& objects, bool
   return false;
 }
 
-json point_json(const std::array<std::string, 4>& p) { return json::array({p[0], p[1], p[2], p[3]}); }
+// A subject without points (fcl) leaves them empty: null.
+json point_json(const std::array<std::string, 4>& p)
+{
+  if (p[0].empty()) return json();
+  return json::array({p[0], p[1], p[2], p[3]});
+}
+
+// FCL's answer, or the subject skipped with the reason FCL cannot express
+// the scene; conversion and query are timed together, as the other subjects'
+// model building is.
+Run fcl_run(const Scene& scene, const Check_options& co)
+{
+  std::string reason;
+  Run r = timed("fcl", false, [&] {
+    Fcl_subject fcl(scene);
+    if (!fcl.expressible()) {
+      reason = fcl.reason();
+      return Check_answer();
+    }
+    return fcl.check(co);
+  });
+  r.skipped = reason;
+  return r;
+}
 
 std::string decimal(const Rational& q)
 {
@@ -147,22 +183,34 @@ json compare_scene(const Scene& scene, const std::string& file, const Compare_op
     runs.push_back(timed(tolerance_subject(tol), false, [&] { return check_double(scene, tol, co); }));
   if (options.rounded)
     runs.push_back(timed("exact-rounded", true, [&] { return check_exact(rounded_scene(scene), co); }));
+  if (options.fcl) runs.push_back(fcl_run(scene, co));
 
+  auto rounded_run = std::find_if(runs.begin(), runs.end(), [](const Run& r) { return r.subject == "exact-rounded"; });
+  const Run* rounded = rounded_run != runs.end() ? &*rounded_run : nullptr;
   const Run& exact = runs[0];
   if (!exact.ok) throw std::runtime_error("the exact subject failed: " + exact.error);
   Scene_model<Rational_kernel> model = Scene_model<Rational_kernel>::build(Rational_kernel(), scene);
-  const Run* rounded = options.rounded ? &runs.back() : nullptr;
   bool rounding_differs = rounded && (!rounded->ok || rounded->answer.collide != exact.answer.collide);
   int contact = -1;   // computed on first need
 
   json subjects = json::array(), disagreements = json::array();
   for (const Run& r : runs) {
-    json s = {{"subject", r.subject}, {"reference", &r == &exact}, {"ok", r.ok}, {"error", r.error}};
+    json s = {{"subject", r.subject}, {"reference", &r == &exact}, {"ok", r.ok}, {"error", r.error},
+              {"skipped", r.skipped.empty() ? json() : json(r.skipped)}};
+    if (!r.skipped.empty()) {   // no answer: nothing to hold against exact
+      for (const char* key : {"collide", "witness", "witness_valid", "earliest", "t_error"}) s[key] = json();
+      s["seconds"] = r.seconds;
+      s["agrees"] = json();
+      s["cause"] = json();
+      subjects.push_back(s);
+      continue;
+    }
     const Check_answer& a = r.answer;
     s["collide"] = r.ok ? json(a.collide) : json();
     const Pair_answer* main = a.reported();
+    bool has_point = main && !main->witness[0].empty();
     s["witness"] = main ? json{{"objects", {main->a, main->b}}, {"point", point_json(main->witness)}} : json();
-    s["witness_valid"] = main ? json(witness_valid(model, scene, r)) : json();
+    s["witness_valid"] = has_point ? json(witness_valid(model, scene, r)) : json();
     s["earliest"] = main && main->earliest ? json{{"objects", {main->a, main->b}}, {"t", main->t_star}, {"point", point_json(main->contact)}} : json();
     s["t_error"] = json();
     const Pair_answer* ref = exact.answer.reported();
@@ -183,7 +231,7 @@ json compare_scene(const Scene& scene, const std::string& file, const Compare_op
       }
       detail = r.subject + " says " + (a.collide ? "collision" : "no collision") + ", exact says " +
                (exact.answer.collide ? "collision" : "no collision");
-    } else if (&r != &exact && r.ok && main && !s["witness_valid"].get<bool>()) {
+    } else if (&r != &exact && r.ok && has_point && !s["witness_valid"].get<bool>()) {
       cause = "invalid witness";
       detail = r.subject + "'s witness is not strictly inside both objects of the true scene";
     } else if (!r.ok) {

@@ -6,13 +6,20 @@
 //   double tol=EPS   the same with |value| <= EPS treated as zero;
 //   exact-rounded    exact arithmetic on the scene with every number rounded
 //                    to the nearest double (separates input rounding from
-//                    arithmetic, regularised-semantics item 8).
+//                    arithmetic, regularised-semantics item 8);
+//   fcl              optional (--fcl): FCL's continuous collision on the
+//                    scenes it can express (compare/Fcl_subject.h); on the
+//                    others it is skipped with the reason, which is neither
+//                    an agreement nor a disagreement. It gives no witness
+//                    point, so it is never an "invalid witness".
 // Every disagreement is classified by its cause:
 //   input rounding   exact on the rounded scene already disagrees;
 //   contact          the exact verdict flips when one of the two objects is
-//                    moved by a tiny amount (2^-20 of the scene's scale) along
-//                    an axis: the closed objects touch or nearly do, so the case
-//                    hinges on regularisation;
+//                    moved by a tiny amount (2^-20 or 2^-40 of the scene's
+//                    scale) along an axis or a diagonal ({-1,0,1}^3: two
+//                    blocks sharing an edge need a diagonal; small objects far
+//                    from the origin the smaller move): the closed objects
+//                    touch or nearly do, so the case hinges on regularisation;
 //   arithmetic       otherwise: the subject's own rounding or tolerance;
 //   invalid witness  verdicts agree but the subject's witness is not strictly
 //                    inside both objects of the true scene (checked exactly).
@@ -30,6 +37,7 @@ struct Compare_options {
   std::vector<double> tolerances{1e-9};   // one "double tol=EPS" subject each
   bool earliest = false;                  // also compare t* (and report its error)
   bool rounded = true;                    // run the exact-rounded subject
+  bool fcl = false;                       // run the fcl subject (skipped where FCL cannot express the scene)
 };
 
 // One comparison object (schema in compare/README.md).

@@ -53,7 +53,9 @@ json reproducible(json comparison)
 
 json campaign_json(const Fuzz_options& o)
 {
-  return {{"format", "clash4d-fuzz/1"}, {"seed", o.seed}, {"cases", o.cases}, {"tolerances", o.compare.tolerances}};
+  json c = {{"format", "clash4d-fuzz/1"}, {"seed", o.seed}, {"cases", o.cases}, {"tolerances", o.compare.tolerances}};
+  if (o.compare.fcl) c["fcl"] = true;   // only when on, so folders of campaigns without it still match
+  return c;
 }
 
 // The campaign folder: created, or checked to hold this very campaign.
@@ -64,7 +66,7 @@ void prepare(const Fuzz_options& o)
   json want = campaign_json(o);
   if (fs::exists(path)) {
     if (read_json_file_plain(path) != want)
-      throw std::runtime_error(path + ": this folder holds another campaign (seed, cases or tolerances differ)");
+      throw std::runtime_error(path + ": this folder holds another campaign (seed, cases, tolerances or --fcl differ)");
   } else {
     write_file_atomically(path, want.dump(2) + "\n");
   }
@@ -99,6 +101,7 @@ bool run_case(const Fuzz_options& o, std::uint64_t index)
   narrow.tolerances.clear();
   for (double tol : o.compare.tolerances)
     if (subject == tolerance_subject(tol)) narrow.tolerances.push_back(tol);
+  narrow.fcl = o.compare.fcl && subject == "fcl";
   auto still_fails = [&](const Scene& candidate) {
     std::vector<std::string> k = disagreement_keys(compare_scene(candidate, "", narrow));
     return std::find(k.begin(), k.end(), key) != k.end();

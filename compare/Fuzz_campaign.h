@@ -3,7 +3,8 @@
 // (compare/Comparer.h); every disagreement is saved at once and then shrunk.
 //
 // Layout of DIR:
-//   campaign.json                 seed, cases, tolerances: a rerun must match
+//   campaign.json                 seed, cases, tolerances (and "fcl": true with
+//                                 --fcl): a rerun must match
 //   progress-K-of-S.json          the next case index of shard K of S
 //   findings/case-I.json          family, scene and comparison of case I
 //   findings/case-I.min.json      the same disagreement on a shrunk scene

@@ -95,6 +95,8 @@ const json& subjects_of(const json& comparison)
 }
 
 bool failed(const json& s) { return flag(s, "ok") == 0; }
+// A subject that did not run on this scene (fcl where FCL cannot express it).
+bool skipped(const json& s) { return field(s, "skipped").is_string(); }
 bool is_reference(const json& s) { return flag(s, "reference") == 1; }
 bool disagrees(const json& s) { return !failed(s) && !text(s, "cause").empty(); }
 
@@ -148,22 +150,25 @@ std::string join_strings(const json& a, const char* separator)
   return out;
 }
 
-// "a, b at (x, y, z, t)" for a witness or earliest object.
+// "a, b at (x, y, z, t)" for a witness or earliest object; "a, b" when the
+// subject gives no point (fcl).
 std::string located_text(const json& w)
 {
   if (!w.is_object()) return "\xE2\x80\x94";
+  if (!field(w, "point").is_array()) return join_strings(field(w, "objects"), ", ");
   return join_strings(field(w, "objects"), ", ") + " at (" + join_strings(field(w, "point"), ", ") + ")";
 }
 
 // ---------------------------------------------------------------- summary
 
 struct Tally {
-  int answers = 0, agreements = 0, disagreements = 0, errors = 0;
+  int answers = 0, agreements = 0, disagreements = 0, errors = 0, skips = 0;
   json by_cause = json::object();
 
   Tally() { for (const char* c : all_causes) by_cause[c] = 0; }
   void add(const json& s)
   {
+    if (skipped(s)) { ++skips; return; }   // no answer to count
     ++answers;
     if (failed(s)) ++errors;
     else if (disagrees(s)) {
@@ -175,7 +180,7 @@ struct Tally {
   json to_json() const
   {
     return {{"answers", answers}, {"agreements", agreements}, {"disagreements", disagreements},
-            {"errors", errors}, {"by_cause", by_cause}};
+            {"errors", errors}, {"skipped", skips}, {"by_cause", by_cause}};
   }
 };
 
@@ -206,7 +211,7 @@ json summary_of(const std::vector<Report_case>& cases)
   json t = total.to_json();
   return {{"scenes", cases.size()}, {"scenes_agreeing", agreeing}, {"scenes_disagreeing", disagreeing},
           {"scenes_with_errors", with_errors}, {"answers", t["answers"]}, {"agreements", t["agreements"]},
-          {"disagreements", t["disagreements"]}, {"errors", t["errors"]}, {"reference_errors", reference_errors},
+          {"disagreements", t["disagreements"]}, {"errors", t["errors"]}, {"skipped", t["skipped"]}, {"reference_errors", reference_errors},
           {"by_cause", t["by_cause"]}, {"by_subject", by_subject}};
 }
 
@@ -228,6 +233,8 @@ std::string junit_case(const Report_case& c, const json& s)
   if (failed(s)) {
     std::string e = text(s, "error");
     out << ">\n    <error message=\"" << escape(e) << "\" type=\"error\">" << escape(e) << "</error>\n  </testcase>\n";
+  } else if (skipped(s)) {
+    out << ">\n    <skipped message=\"" << escape(text(s, "skipped")) << "\"/>\n  </testcase>\n";
   } else if (disagrees(s)) {
     out << ">\n    <failure message=\"" << escape(text(s, "cause")) << "\" type=\"disagreement\">"
         << escape(detail_of(c.comparison, s)) << "</failure>\n  </testcase>\n";
@@ -237,7 +244,7 @@ std::string junit_case(const Report_case& c, const json& s)
 
 std::string junit_xml(const std::vector<Report_case>& cases)
 {
-  int tests = 0, failures = 0, errors = 0;
+  int tests = 0, failures = 0, errors = 0, skips = 0;
   double seconds = 0;
   std::string body;
   for (const Report_case& c : cases)
@@ -245,12 +252,13 @@ std::string junit_xml(const std::vector<Report_case>& cases)
       ++tests;
       failures += disagrees(s);
       errors += failed(s);
+      skips += skipped(s);
       if (field(s, "seconds").is_number()) seconds += field(s, "seconds").get<double>();
       body += junit_case(c, s);
     }
   std::ostringstream out;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuite name=\"clash4d\" tests=\"" << tests
-      << "\" failures=\"" << failures << "\" errors=\"" << errors << "\" time=\"" << format("%.6f", seconds)
+      << "\" failures=\"" << failures << "\" errors=\"" << errors << "\" skipped=\"" << skips << "\" time=\"" << format("%.6f", seconds)
       << "\">\n" << body << "</testsuite>\n";
   return out.str();
 }
@@ -590,17 +598,17 @@ std::string summary_html(const json& s)
 {
   std::ostringstream out;
   out << "<h2>Summary</h2>\n<table>\n<tr><th>scenes</th><th>all agree</th><th>some disagreement</th><th>some error</th>"
-      << "<th>answers compared</th><th>agreements</th><th>disagreements</th><th>errors</th></tr>\n<tr>";
+      << "<th>answers compared</th><th>agreements</th><th>disagreements</th><th>errors</th><th>skipped</th></tr>\n<tr>";
   for (const char* k : {"scenes", "scenes_agreeing", "scenes_disagreeing", "scenes_with_errors", "answers",
-                        "agreements", "disagreements", "errors"})
-    out << number_cell(s[k].get<long>());
+                        "agreements", "disagreements", "errors", "skipped"})
+    out << number_cell(s.value(k, 0L));
   out << "</tr>\n</table>\n<table>\n<tr><th>subject</th><th>answers</th><th>agreements</th>";
   for (const auto& c : s["by_cause"].items()) out << "<th>" << escape(c.key()) << "</th>";
-  out << "<th>errors</th></tr>\n";
+  out << "<th>errors</th><th>skipped</th></tr>\n";
   auto row = [&](const std::string& name, const json& t) {
     out << "<tr><td>" << name << "</td>" << number_cell(t["answers"].get<long>()) << number_cell(t["agreements"].get<long>());
     for (const auto& c : s["by_cause"].items()) out << number_cell(t["by_cause"].value(c.key(), 0L));
-    out << number_cell(t["errors"].get<long>()) << "</tr>\n";
+    out << number_cell(t["errors"].get<long>()) << number_cell(t.value("skipped", 0L)) << "</tr>\n";
   };
   for (const auto& t : s["by_subject"].items()) row(escape(t.key()), t.value());
   row("<b>all</b>", s);
@@ -640,6 +648,7 @@ std::string index_html(const std::vector<Report_case>& cases, const std::vector<
 std::string result_cell(const json& s)
 {
   if (failed(s)) return cell("error: " + escape(text(s, "error")), "err-cell");
+  if (skipped(s)) return cell("skipped: " + escape(text(s, "skipped")));
   if (disagrees(s)) return cell("disagrees: " + escape(text(s, "cause")), "bad-cell");
   if (is_reference(s)) return cell("reference");
   return cell(flag(s, "agrees") == 0 ? "disagrees" : "agrees", flag(s, "agrees") == 0 ? "bad-cell" : "good-cell");

@@ -63,6 +63,7 @@ static void check_scene(const std::string& entry)
 
 BOOST_DATA_TEST_CASE(contact_fixture_verdicts, data::make(entries("contact")), entry) { check_scene(entry); }
 BOOST_DATA_TEST_CASE(paper_fixture_verdicts, data::make(entries("paper")), entry) { check_scene(entry); }
+BOOST_DATA_TEST_CASE(found_fixture_verdicts, data::make(entries("found")), entry) { check_scene(entry); }
 
 BOOST_DATA_TEST_CASE(bad_fixtures_are_refused_with_their_place, data::make(entries("bad")), entry)
 {
