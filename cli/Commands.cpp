@@ -128,6 +128,7 @@ json stats_json(const Check_stats& s)
           {"cells_tested", s.cells_tested},
           {"exact_fallbacks", s.exact_fallbacks},
           {"exact_witness_runs", s.exact_witness_runs},
+          {"exact_witness_replays", s.exact_witness_replays},
           {"seconds", {{"model", s.seconds_model}, {"sweep", s.seconds_sweep}, {"sbounds", s.seconds_sbounds},
                        {"divide_and_conquer", s.seconds_divide}, {"witness", s.seconds_witness}}}};
 }

@@ -36,8 +36,10 @@ struct Check_stats {
   // exact_fallbacks: interval runs (object bounds, pairs) stopped by a sign
   // the intervals could not certify, each then redone in rationals;
   // exact_witness_runs: colliding pairs rerun in rationals to construct
-  // their witness, t* and contact point exactly.
-  std::size_t exact_fallbacks = 0, exact_witness_runs = 0;
+  // their witness, t* and contact point exactly; exact_witness_replays: those
+  // of them whose rational run went straight to the interval run's point
+  // (core/Search_trail.h) instead of searching again.
+  std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_witness_replays = 0;
   // Time per stage, seconds
   double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
 

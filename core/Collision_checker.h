@@ -51,17 +51,26 @@ public:
     return settled;
   }
 
-  static Bounds settle_one(const K& k, const Csg_model<FT>& csg, Check_stats& stats, bool use_sbounds)
+  // passes: how many Up/Down passes ran (a filtered run compares them, see
+  // core/Search_trail.h).
+  static Bounds settle_one(const K& k, const Csg_model<FT>& csg, Check_stats& stats, bool use_sbounds,
+                           int* passes = nullptr)
   {
     S_bounds<K> sb(k);
     Bounds b = sb.initial(csg);
-    if (use_sbounds) stats.sbound_passes += sb.settle(csg, b, max_sbound_passes);
+    int n = use_sbounds ? sb.settle(csg, b, max_sbound_passes) : 0;
+    stats.sbound_passes += n;
+    if (passes) *passes = n;
     return b;
   }
 
   Collision_checker(const K& k, const Scene_model<K>& model, const std::vector<Bounds>& settled, Check_stats& stats,
                     bool use_sbounds = true)
     : k_(k), model_(model), stats_(stats), sb_(k), use_sbounds_(use_sbounds), settled_(settled) {}
+
+  // Any-witness searches only: record where the first point inside is
+  // found, or replay such a record (core/Search_trail.h).
+  void follow(Search_trail* trail) { trail_ = trail; }
 
   // earliest: find t* (§5) rather than stopping at the first witness;
   // ceiling: in that mode, ignore collisions that start at or after it.
@@ -74,11 +83,15 @@ public:
     Search_goal<FT> goal;
     goal.earliest = earliest;
     if (ceiling) { goal.has_ceiling = true; goal.ceiling = *ceiling; }
+    std::size_t index = 0;
     for (const auto& span : model_.sub_spans({a, b})) {
+      span_index_ = index++;
       if (!goal.can_improve(span.lo)) break;   // spans come in time order
+      if (replaying() && span_index_ < trail_->span) continue;   // proven free of collisions
       ++stats_.sub_spans;
       check_span(a, b, span, r, goal);
       if (goal.done()) break;
+      if (replaying()) { trail_->diverged = true; break; }      // the trail's span must hold it
     }
     r.earliest = earliest && r.collide;
     return r;
@@ -128,6 +141,21 @@ private:
   S_bounds<K> sb_;
   bool use_sbounds_;
   const std::vector<Bounds>& settled_;
+  Search_trail* trail_ = nullptr;
+  std::size_t span_index_ = 0;
+  std::vector<int> span_passes_;           // this span's S-bound pass counts, in order
+  std::array<bool, 3> frame_of_a_{};       // this span's frame choice per axis
+
+  bool replaying() const { return trail_ && trail_->replaying(); }
+
+  // Replay: the exact run's S-bound passes and frame must be the recorded
+  // ones, or its path may differ from the approximate run's.
+  bool same_path_as_trail()
+  {
+    if (!replaying() || (span_passes_ == trail_->sbound_passes && frame_of_a_ == trail_->frame_of_a)) return true;
+    trail_->diverged = true;
+    return false;
+  }
 
   struct Moving {
     const Object_model<FT>* object;
@@ -152,6 +180,8 @@ private:
     auto start = std::chrono::steady_clock::now();
     Moving A = moving(a, span), B = moving(b, span);
     FT tl = span.lo, th = span.hi;
+    span_passes_.clear();
+    frame_of_a_ = {};
     bool alive = use_sbounds_ ? four_d_bounds(A, B, tl, th) : true;
     alive = alive && goal.can_improve(tl);
     Span_stats ss;
@@ -175,6 +205,7 @@ private:
     Vector3<FT> shear;
     stats_.conquered_box.clear();
     Box4 region = use_sbounds_ ? fitted_region(A, B, tl, th, shear) : original_region(A, B, span, shear);
+    if (!same_path_as_trail()) return;
     for (int q = 0; q < 4; ++q) ss.region += std::string(q ? " x " : "") + interval_text(region.lo[q], region.hi[q]);
     if (has_no_interior(k_, region)) {
       ss.narrowed = "empty";
@@ -196,9 +227,14 @@ private:
     Formula formula = builder.finish();
     ss.leaves = formula.leaf_count();
     stats_.spans.push_back(ss);
-    Divide_and_conquer<K> dc(k_, table, stats_);
+    Divide_and_conquer<K> dc(k_, table, stats_, trail_);
     goal.improved = false;
     dc.search(region, formula, goal);
+    if (trail_ && trail_->recording() && goal.improved) {
+      trail_->span = span_index_;
+      trail_->sbound_passes = span_passes_;
+      trail_->frame_of_a = frame_of_a_;
+    }
     stats_.seconds_divide += seconds_since(start);
     if (!dc.conquered().empty)
       for (int q = 0; q < 4; ++q)
@@ -229,8 +265,8 @@ private:
       FT l0 = tl, h0 = th;
       typename S_bounds<K>::Moving_box ma{&A.beta[0], &A.v, &A.o}, mb{&B.beta[0], &B.v, &B.o};
       if (!sb_.meet_moving(ma, mb, tl, th)) return false;
-      sb_.settle(A.object->csg, A.beta, max_sbound_passes);
-      sb_.settle(B.object->csg, B.beta, max_sbound_passes);
+      span_passes_.push_back(sb_.settle(A.object->csg, A.beta, max_sbound_passes));
+      span_passes_.push_back(sb_.settle(B.object->csg, B.beta, max_sbound_passes));
       if (A.beta[0].empty || B.beta[0].empty) return false;
       if (same_box(ra, A.beta[0]) && same_box(rb, B.beta[0]) && Number_ops<FT>::same(l0, tl) && Number_ops<FT>::same(h0, th)) break;
     }
@@ -280,7 +316,7 @@ private:
 
   // Appendix B, "optimal fitting": per axis, measure q in the frame of the
   // object whose bound is narrower there (q' = q - w t with w its velocity).
-  Box4 fitted_region(const Moving& A, const Moving& B, const FT& tl, const FT& th, Vector3<FT>& shear) const
+  Box4 fitted_region(const Moving& A, const Moving& B, const FT& tl, const FT& th, Vector3<FT>& shear)
   {
     Box4 region;
     const char* axis = "xyz";
@@ -291,6 +327,7 @@ private:
         throw Input_error("", std::string("both objects are unbounded along ") + axis[q] +
                               ": this version needs one of each pair bounded", CLASH4D_EXIT_LIMIT);
       bool use_a = fa && (!fb || !k_.prefer_less(bb.hi[q] - bb.lo[q], ba.hi[q] - ba.lo[q]));
+      frame_of_a_[q] = use_a;
       const Moving& m = use_a ? A : B;
       const Box3& bm = use_a ? ba : bb;
       shear[q] = m.v[q];

@@ -7,6 +7,8 @@
 #define CLASH4D_CORE_DIVIDE_AND_CONQUER_H
 
 #include "core/Generate_and_test.h"
+#include "core/Search_trail.h"
+#include <CGAL/Uncertain.h>
 
 namespace clash4d {
 
@@ -21,8 +23,10 @@ public:
   // costs time, never a wrong answer.
   static constexpr std::size_t max_depth = 8;
 
-  Divide_and_conquer(const K& k, const std::vector<H>& table, Check_stats& stats)
-    : k_(k), table_(table), stats_(stats), conquer_(k, table, stats) {}
+  // trail: record where the first point inside is found, or go straight
+  // there (core/Search_trail.h); null for an ordinary search.
+  Divide_and_conquer(const K& k, const std::vector<H>& table, Check_stats& stats, Search_trail* trail = nullptr)
+    : k_(k), table_(table), stats_(stats), conquer_(k, table, stats, trail), trail_(trail) {}
 
   static std::size_t kappa(std::size_t d) { return 2 * d + 6; }
 
@@ -34,23 +38,35 @@ public:
     Formula f = formula.simplified([&](std::uint32_t h) { return status(table_[h], region); });
     if (f.value() == Truth::False) return;
     if (f.value() == Truth::True) {
+      if (!on_trail_end(false)) return;
       // Every interior point is inside; the earliest is on the face t = lo.
       Vector4<FT> c = centre(region), low = c;
       low[3] = region.lo[3];
       goal.record({c, zero()}, low);
+      note_found(goal, false);
       return;
     }
     std::size_t leaves = f.leaf_count();
     if (leaves < kappa(depth) || depth >= max_depth) {
+      if (!on_trail_end(true)) return;
       ++stats_.conquers;
       conquered_ = join(conquered_, region);
       stats_.leaves_at_conquer += leaves;
       stats_.max_leaves_at_conquer = std::max(stats_.max_leaves_at_conquer, leaves);
       conquer_.run(f, region, goal);
+      note_found(goal, true);
       return;
     }
-    // Sixteen sub-regions, earliest in time first.
-    for (int child = 0; child < 16 && !goal.done(); ++child) search(sub_region(region, child), f, goal, depth + 1);
+    // Sixteen sub-regions, earliest in time first; a replay takes only the
+    // trail's child (the others were certified empty).
+    bool replay = trail_ && trail_->replaying();
+    if (replay && depth >= trail_->path.size()) { trail_->diverged = true; return; }
+    for (int child = 0; child < 16 && !goal.done(); ++child) {
+      if (replay && child != trail_->path[depth]) continue;
+      path_.push_back(child);
+      search(sub_region(region, child), f, goal, depth + 1);
+      path_.pop_back();
+    }
   }
 
   // Skeleton mode (§5): the full search, never stopping. Simplification is
@@ -77,6 +93,8 @@ public:
   // that it is everything, up to the boundary that regularisation ignores
   // (regularised-semantics.md, item 4). Strict (min > 0, max < 0) keeps the
   // planes that touch the box, which the skeleton needs.
+  // An approximate kernel that cannot tell keeps the leaf (Unknown); the run
+  // is then no longer the exact run's path, and a trail says so.
   Truth status(const H& h, const Box4& b, bool strict = false) const
   {
     FT lo = h.c, hi = h.c;
@@ -85,9 +103,8 @@ public:
       lo += Number_ops<FT>::lower(x, y);
       hi += Number_ops<FT>::upper(x, y);
     }
-    CGAL::Sign slo = k_.sign(lo), shi = k_.sign(hi);
-    if (slo == CGAL::POSITIVE || (!strict && slo == CGAL::ZERO)) return Truth::False;
-    if (shi == CGAL::NEGATIVE || (!strict && shi == CGAL::ZERO)) return Truth::True;
+    if (decided(k_.is_nonnegative(lo, strict))) return Truth::False;
+    if (decided(k_.is_nonnegative(-hi, strict))) return Truth::True;
     return Truth::Unknown;
   }
 
@@ -112,6 +129,34 @@ private:
   Box4 conquered_ = Box4::nothing();
   Check_stats& stats_;
   Generate_and_test<K> conquer_;
+  Search_trail* trail_;
+  std::vector<int> path_;                 // child indices from the root region to here
+
+  bool decided(CGAL::Uncertain<bool> u) const
+  {
+    if (CGAL::is_certain(u)) return CGAL::get_certain(u);
+    if (trail_) trail_->approximate = true;
+    return false;
+  }
+
+  // Replay: a region that decides (conquers or folds to inside) must be the
+  // trail's last, and decide the same way.
+  bool on_trail_end(bool conquers) const
+  {
+    if (!trail_ || !trail_->replaying()) return true;
+    if (path_.size() == trail_->path.size() && trail_->on_line == conquers) return true;
+    trail_->diverged = true;
+    return false;
+  }
+
+  // Record: the first point inside was found in this region.
+  void note_found(const Search_goal<FT>& goal, bool on_line)
+  {
+    if (!trail_ || !trail_->recording() || trail_->complete || !goal.found) return;
+    trail_->path = path_;
+    trail_->on_line = on_line;
+    trail_->complete = true;
+  }
 
   static Vector4<FT> zero() { return {FT(0), FT(0), FT(0), FT(0)}; }
   static Vector4<FT> centre(const Box4& b)

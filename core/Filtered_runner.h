@@ -8,6 +8,12 @@
 // with a certified sign, so it is a run of the algorithm on exact values: its
 // "no collision" is EK's. Answers are therefore those of EK alone.
 //
+// A colliding pair of an any-witness search is not searched again from the
+// start: AK's run records where it found its point (core/Search_trail.h) and
+// EK's run goes straight there, constructing the same point exactly; when EK
+// finds that its path differs (other S-bound pass counts or frame), it runs
+// the whole search.
+//
 // EK's model is built object by object, only for objects that need it.
 #ifndef CLASH4D_CORE_FILTERED_RUNNER_H
 #define CLASH4D_CORE_FILTERED_RUNNER_H
@@ -35,6 +41,7 @@ public:
     emodel_.t_hi = ek_.from_rational(scene.t_hi);
     emodel_.objects.resize(scene.objects.size());
     esettled_.resize(scene.objects.size());
+    epasses_.assign(scene.objects.size(), -2);
     for (std::size_t i = 0; i < scene.objects.size(); ++i) emodel_.objects[i].name = scene.objects[i].name;
   }
 
@@ -47,12 +54,14 @@ public:
     } else {
       auto check_one = [&](std::size_t i, const EFT* ceiling, Check_stats& stats) {
       int a = pairs[i].first, b = pairs[i].second;
+      Search_trail trail;
+      Check_stats astats;
       if (!exact_only_[a] && !exact_only_[b]) {
         try {
           Protector protect;
           AFT aceiling = ceiling ? ak_.from_rational(ek_.to_rational(*ceiling)) : AFT(0);
-          Check_stats astats;
           Collision_checker<AK> checker(ak_, amodel_, asettled_, astats, use_sbounds_);
+          if (!options.earliest) checker.follow(&trail);
           if (!checker.check_pair(a, b, options.earliest, ceiling ? &aceiling : nullptr).collide) {
             stats = astats;
             return Pair_result<EFT>();
@@ -60,10 +69,24 @@ public:
           ++witness_runs_;
         } catch (const CGAL::Uncertain_conversion_exception&) {
           ++fallbacks_;
+          trail.complete = false;
         }
       }
       need_exact(a);
       need_exact(b);
+      if (trail.complete && !trail.approximate && apasses_[a] == epasses_[a] && apasses_[b] == epasses_[b]) {
+        Check_stats rstats;
+        trail.mode = Search_trail::Mode::Replay;
+        Collision_checker<EK> checker(ek_, emodel_, esettled_, rstats, use_sbounds_);
+        checker.follow(&trail);
+        Pair_result<EFT> r = checker.check_pair(a, b);
+        if (r.collide && !trail.diverged) {
+          ++witness_replays_;
+          stats = astats;                     // the search, as the interval run did it
+          stats.seconds_witness += rstats.seconds_witness;
+          return r;
+        }
+      }
       Collision_checker<EK> checker(ek_, emodel_, esettled_, stats, use_sbounds_);
       return checker.check_pair(a, b, options.earliest, ceiling);
     };
@@ -119,8 +142,9 @@ private:
   std::vector<char> exact_only_;              // AK could not bound the object: its pairs go to EK
   Scene_model<EK> emodel_;                    // objects built on demand
   std::vector<typename Collision_checker<EK>::Bounds> esettled_;
+  std::vector<int> apasses_, epasses_;        // each object's own S-bound passes, per kernel
   std::unique_ptr<std::once_flag[]> built_;
-  std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0};
+  std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0};
 
   // AK's model, each object's S-bounds (EK's where AK fails), and the sweep's
   // pairs. False when AK cannot build the model: the whole run goes to EK.
@@ -128,6 +152,7 @@ private:
   {
     std::size_t n = scene_.objects.size();
     exact_only_.assign(n, 0);
+    apasses_.assign(n, -1);
     auto start = std::chrono::steady_clock::now();
     try {
       Protector protect;
@@ -156,7 +181,7 @@ private:
   {
     try {
       Protector protect;
-      return Collision_checker<AK>::settle_one(ak_, amodel_.objects[i].csg, stats, use_sbounds_);
+      return Collision_checker<AK>::settle_one(ak_, amodel_.objects[i].csg, stats, use_sbounds_, &apasses_[i]);
     } catch (const CGAL::Uncertain_conversion_exception&) {
       ++fallbacks_;
       exact_only_[i] = 1;
@@ -186,7 +211,7 @@ private:
       emodel_.objects[i].csg = Model_builder<EK>(ek_).build(o.shape);
       emodel_.objects[i].motion = Motion_path<EFT>::build(ek_, o.motion);
       Check_stats ignored;
-      esettled_[i] = Collision_checker<EK>::settle_one(ek_, emodel_.objects[i].csg, ignored, use_sbounds_);
+      esettled_[i] = Collision_checker<EK>::settle_one(ek_, emodel_.objects[i].csg, ignored, use_sbounds_, &epasses_[i]);
     });
   }
 
@@ -194,6 +219,7 @@ private:
   {
     stats.exact_fallbacks = fallbacks_.load();
     stats.exact_witness_runs = witness_runs_.load();
+    stats.exact_witness_replays = witness_replays_.load();
   }
 
   static double seconds_since(std::chrono::steady_clock::time_point t)

@@ -13,6 +13,7 @@
 #include "core/Hyperplane4.h"
 #include "core/Neighbourhood.h"
 #include "core/Search_goal.h"
+#include "core/Search_trail.h"
 #include <algorithm>
 #include <optional>
 #include <vector>
@@ -26,7 +27,8 @@ public:
   using H = Hyperplane4<FT>;
   using V = Vector4<FT>;
 
-  Generate_and_test(const K& k, const std::vector<H>& table, Check_stats& stats) : k_(k), table_(table), stats_(stats) {}
+  Generate_and_test(const K& k, const std::vector<H>& table, Check_stats& stats, Search_trail* trail = nullptr)
+    : k_(k), table_(table), stats_(stats), trail_(trail) {}
 
   // Records what it finds in the goal; in earliest mode it examines every
   // edge that could hold an earlier point (the least time over an edge is at
@@ -35,9 +37,20 @@ public:
   {
     collect_planes(f, region);
     std::size_t n = planes_.size();
+    if (trail_ && trail_->replaying()) {
+      // Every line before the trail's was certified to hold no point inside.
+      const auto& t = trail_->line;
+      if (t[2] < n) on_line(f, t[0], t[1], t[2], goal);
+      trail_->diverged = trail_->diverged || !goal.found;
+      return;
+    }
     for (std::size_t i = 0; i < n && !goal.done(); ++i)
       for (std::size_t j = i + 1; j < n && !goal.done(); ++j)
-        for (std::size_t m = j + 1; m < n && !goal.done(); ++m) on_line(f, i, j, m, goal);
+        for (std::size_t m = j + 1; m < n && !goal.done(); ++m) {
+          bool before = goal.found;
+          on_line(f, i, j, m, goal);
+          if (trail_ && trail_->recording() && !before && goal.found) trail_->line = {i, j, m};
+        }
   }
 
   // Skeleton (§5): every edge of the boundary of the region the formula
@@ -58,6 +71,7 @@ private:
   const K& k_;
   const std::vector<H>& table_;
   Check_stats& stats_;
+  Search_trail* trail_;
   std::vector<H> planes_;                 // distinct hyperplanes, region faces last
   std::size_t first_face_ = 0;
   std::vector<std::pair<std::size_t, int>> leaf_plane_;   // table index -> (plane, orientation)

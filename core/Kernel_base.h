@@ -7,6 +7,7 @@
 #define CLASH4D_CORE_KERNEL_BASE_H
 
 #include "core/kernel_ft4.h"
+#include <CGAL/Uncertain.h>
 #include <CGAL/enum.h>
 
 namespace clash4d {
@@ -26,6 +27,16 @@ public:
   // For conservative filters only (the pair sweep): true unless x is known
   // not to be positive. An interval kernel answers true when unsure.
   bool possibly_positive(const FT& x) const { return derived().sign(x) == CGAL::POSITIVE; }
+
+  // For box simplification (§4.1), which may always be skipped
+  // (regularised-semantics.md, item 4): whether x >= 0 (x > 0 when strict).
+  // An approximate kernel answers indeterminate when it cannot tell; the
+  // caller then keeps the leaf, which costs work, never a wrong answer.
+  CGAL::Uncertain<bool> is_nonnegative(const FT& x, bool strict) const
+  {
+    CGAL::Sign s = derived().sign(x);
+    return strict ? s == CGAL::POSITIVE : s != CGAL::NEGATIVE;
+  }
 
   CGAL::Sign compare(const FT& a, const FT& b) const { return derived().sign(a - b); }
   bool less(const FT& a, const FT& b) const { return compare(a, b) == CGAL::NEGATIVE; }

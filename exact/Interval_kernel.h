@@ -12,6 +12,7 @@
 #include "core/Number_ops.h"
 #include "exact/Rational.h"
 #include <CGAL/Interval_nt.h>
+#include <cstdio>
 #include <string>
 
 namespace clash4d {
@@ -34,10 +35,18 @@ public:
   static constexpr bool is_exact = false;
   CGAL::Sign sign(const FT& x) const { return CGAL::make_certain(CGAL::sign(x)); }
   bool possibly_positive(const FT& x) const { return CGAL::possibly(CGAL::sign(x) == CGAL::POSITIVE); }
+  CGAL::Uncertain<bool> is_nonnegative(const FT& x, bool strict) const { return strict ? x > 0 : x >= 0; }
   bool prefer_less(const FT& a, const FT& b) const { return a.inf() + a.sup() < b.inf() + b.sup(); }
   FT from_rational(const Rational& q) const { return FT(CGAL::to_interval(q)); }
-  // Statistics only: answers are never printed from intervals.
-  std::string to_text(const FT& x) const { return "[" + std::to_string(x.inf()) + ", " + std::to_string(x.sup()) + "]"; }
+  // Statistics only (answers are never printed from intervals): a point
+  // interval is an exact number, otherwise the enclosure "~[inf, sup]".
+  std::string to_text(const FT& x) const
+  {
+    if (x.is_point()) return to_string(Rational(x.inf()));
+    char text[64];
+    std::snprintf(text, sizeof text, "~[%.17g, %.17g]", x.inf(), x.sup());
+    return text;
+  }
 };
 
 } // namespace clash4d

@@ -102,22 +102,26 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
   std::uint64_t seed = env_number("CLASH4D_SEED", 20261122ull), cases = env_number("CLASH4D_FILTER_CASES", 1000);
   BOOST_TEST_MESSAGE("filtered vs rational, coarse-grid scenes: seed " << seed << ", " << cases << " cases");
   std::mt19937_64 rng(seed);
-  std::size_t by_intervals = 0, collide = 0;
+  std::size_t by_intervals = 0, collide = 0, replayed = 0;
   for (std::uint64_t i = 0; i < cases; ++i) {
     Random_scene rs = random_scene_with_text(rng);
     Check_options o;
     Check_answer a = same_answers(rs.scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) + ": " + rs.json);
     by_intervals += decided_by_intervals(a);
     collide += a.collide;
+    replayed += a.stats.exact_witness_replays;
     o.earliest = true;
     same_answers(rs.scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) + ": " + rs.json);
   }
-  BOOST_TEST_MESSAGE(by_intervals << " of " << cases << " decided by intervals alone, " << collide << " collide");
-  // The comparison must exercise both paths: many answers from intervals
-  // alone (coarse-grid numbers are exact doubles), and every collision
-  // through the rational rerun.
+  BOOST_TEST_MESSAGE(by_intervals << " of " << cases << " decided by intervals alone, " << collide << " collide, "
+                                  << replayed << " witnesses replayed from the interval run's trail");
+  // The comparison must exercise every path: many answers from intervals
+  // alone (coarse-grid numbers are exact doubles), and collisions both
+  // through the trail replay and through the full rational rerun.
   BOOST_TEST(by_intervals > cases / 4);
   BOOST_TEST(collide > cases / 10);
+  BOOST_TEST(replayed > collide / 4);
+  BOOST_TEST(replayed < collide);
 }
 
 BOOST_AUTO_TEST_CASE(contact_families_match_rational)
@@ -138,7 +142,8 @@ BOOST_AUTO_TEST_CASE(contact_families_match_rational)
 }
 
 // General position: intervals certify every decision; a colliding pair is
-// rerun in rationals only to construct its witness.
+// rerun in rationals only to construct its witness, going straight to the
+// point the interval run found (the trail replay, core/Search_trail.h).
 BOOST_AUTO_TEST_CASE(no_fallback_in_general_position)
 {
   Scene miss = read_scene_file(std::string(CLASH4D_FIXTURES) + "/paper/section4_3_comoving_cubes.json");
@@ -153,6 +158,11 @@ BOOST_AUTO_TEST_CASE(no_fallback_in_general_position)
   BOOST_TEST(b.collide);
   BOOST_TEST(b.stats.exact_fallbacks == 0u);
   BOOST_TEST(b.stats.exact_witness_runs == 1u);
+  BOOST_TEST(b.stats.exact_witness_replays == 1u);
+  // Earliest mode searches on after the first point: no replay there.
+  Check_options earliest;
+  earliest.earliest = true;
+  BOOST_TEST(check_exact(hit, earliest).stats.exact_witness_replays == 0u);
 }
 
 // A face touch after a rotation by (3/5, 4/5): the touching planes' values
