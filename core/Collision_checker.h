@@ -180,7 +180,6 @@ private:
     auto start = std::chrono::steady_clock::now();
     Moving A = moving(a, span), B = moving(b, span);
     FT tl = span.lo, th = span.hi;
-    span_passes_.clear();
     frame_of_a_ = {};
     bool alive = use_sbounds_ ? four_d_bounds(A, B, tl, th) : true;
     alive = alive && goal.can_improve(tl);
@@ -259,6 +258,7 @@ private:
   // Appendix B at the root, repeated until nothing shrinks.
   bool four_d_bounds(Moving& A, Moving& B, FT& tl, FT& th)
   {
+    span_passes_.clear();
     for (int pass = 0; pass < max_sbound_passes; ++pass) {
       ++stats_.sbound_passes;
       Box3 ra = A.beta[0], rb = B.beta[0];
