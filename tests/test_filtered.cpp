@@ -12,7 +12,11 @@
 #include <boost/test/unit_test.hpp>
 
 #include "compare/Contact_families.h"
+#include "core/Divide_and_conquer.h"
 #include "exact/Exact_instantiation.h"
+#include "exact/Interval_kernel.h"
+#include "exact/Rational_kernel.h"
+#include <CGAL/FPU.h>
 #include "scene/Grid_scene.h"
 #include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
@@ -191,4 +195,34 @@ BOOST_DATA_TEST_CASE(skeleton_matches_rational,
     BOOST_TEST(f.pairs[i].a == r.pairs[i].a);
     BOOST_TEST(f.pairs[i].edges == r.pairs[i].edges, entry);
   }
+}
+
+// Box simplification under intervals (Kernel_base::is_nonnegative): the plane
+// x <= 1/3 over a box starting at x = 1/3 has minimum exactly 0, which the
+// rational kernel folds to "empty here" (non-strict, regularised-semantics
+// item 4). The intervals of 1/3 straddle that 0, so the interval kernel keeps
+// the leaf (Unknown) instead of failing the filter, and marks its trail
+// approximate so a colliding pair is not replayed from it.
+BOOST_AUTO_TEST_CASE(uncertain_simplification_keeps_the_leaf)
+{
+  const Rational third(1, 3);
+  auto status_in = [&](const auto& k, Search_trail* trail) {
+    using K = std::decay_t<decltype(k)>;
+    using FT = typename K::FT;
+    FT z(0), one(1), t = k.from_rational(third);
+    std::vector<Hyperplane4<FT>> table{{{one, z, z, z}, -t}};
+    Box<FT, 4> box;
+    box.set(0, t, one);
+    for (int a = 1; a < 4; ++a) box.set(a, z, one);
+    Check_stats stats;
+    return Divide_and_conquer<K>(k, table, stats, trail).status(table[0], box);
+  };
+  Search_trail exact_trail;
+  BOOST_TEST((status_in(Rational_kernel(), &exact_trail) == Truth::False));
+  BOOST_TEST(!exact_trail.approximate);
+
+  CGAL::Protect_FPU_rounding<true> protect;
+  Search_trail trail;
+  BOOST_TEST((status_in(Interval_kernel(), &trail) == Truth::Unknown));
+  BOOST_TEST(trail.approximate);
 }
