@@ -38,8 +38,13 @@ struct Check_stats {
   // exact_witness_runs: colliding pairs rerun in rationals to construct
   // their witness, t* and contact point exactly; exact_witness_replays: those
   // of them whose rational run went straight to the interval run's point
-  // (core/Search_trail.h) instead of searching again.
-  std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_witness_replays = 0;
+  // (core/Search_trail.h) instead of searching again; exact_regions:
+  // regions whose generate-and-test met a sign the intervals could not
+  // certify, each then conquered in rationals alone (the run goes on);
+  // exact_plane_tests: pairs of planes the intervals could not tell apart
+  // or identify (parallel faces), decided on the rational planes instead.
+  std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_witness_replays = 0, exact_regions = 0,
+              exact_plane_tests = 0;
   // Time per stage, seconds
   double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
 

@@ -11,6 +11,7 @@
 #include "core/Scene_model.h"
 #include "scene/Input_error.h"
 #include <chrono>
+#include <functional>
 #include <map>
 
 namespace clash4d {
@@ -71,6 +72,47 @@ public:
   // Any-witness searches only: record where the first point inside is
   // found, or replay such a record (core/Search_trail.h).
   void follow(Search_trail* trail) { trail_ = trail; }
+
+  // For an approximate run whose colliding pairs are run again exactly
+  // (core/Filtered_runner.h): report the verdict only, no witness; and hand
+  // the regions it cannot conquer to `exact` (Exact_region), with the pair,
+  // the sub-span's index and the frame, instead of failing.
+  // Likewise `same` says whether two table entries are one plane
+  // (Exact_proportional, core/Hyperplane4.h's proportional).
+  using Exact_region = std::function<bool(int a, int b, std::size_t span, const std::array<bool, 3>& frame_of_a,
+                                          const Formula& f, const Box4& region)>;
+  using Exact_proportional = std::function<int(int a, int b, std::size_t span, const std::array<bool, 3>& frame_of_a,
+                                               std::size_t h, std::size_t g)>;
+  void verdict_only(Exact_region exact, Exact_proportional same)
+  {
+    construct_witness_ = false;
+    exact_region_ = std::move(exact);
+    exact_proportional_ = std::move(same);
+  }
+
+  // The plane table of check_span (plane_table) for a sub-span and frame.
+  std::vector<H> span_table(int a, int b, std::size_t span_index, const std::array<bool, 3>& frame_of_a,
+                            Motion_groups<FT>& groups) const
+  {
+    const Time_span<FT> span = model_.sub_spans({a, b}).at(span_index);
+    Moving A = moving(a, span), B = moving(b, span);
+    Vector3<FT> shear;
+    for (int q = 0; q < 3; ++q) shear[q] = !use_sbounds_ ? FT(0) : frame_of_a[q] ? A.v[q] : B.v[q];
+    return plane_table(A, B, shear, frame_of_a, groups);
+  }
+
+  // Generate-and-test of one conquered region of check_span, in this kernel
+  // (for a run in another kernel that could not decide it): true when the
+  // region holds a point inside both objects.
+  bool region_has_inside(int a, int b, std::size_t span_index, const std::array<bool, 3>& frame_of_a,
+                         const Formula& f, const Box4& region)
+  {
+    Motion_groups<FT> groups;
+    std::vector<H> table = span_table(a, b, span_index, frame_of_a, groups);
+    Search_goal<FT> goal;
+    Generate_and_test<K>(k_, table, stats_, nullptr, &groups).run(f, region, goal);
+    return goal.found;
+  }
 
   // earliest: find t* (§5) rather than stopping at the first witness;
   // ceiling: in that mode, ignore collisions that start at or after it.
@@ -145,6 +187,9 @@ private:
   std::size_t span_index_ = 0;
   std::vector<int> span_passes_;           // this span's S-bound pass counts, in order
   std::array<bool, 3> frame_of_a_{};       // this span's frame choice per axis
+  bool construct_witness_ = true;
+  Exact_region exact_region_;
+  Exact_proportional exact_proportional_;
 
   bool replaying() const { return trail_ && trail_->replaying(); }
 
@@ -211,22 +256,30 @@ private:
       stats_.spans.push_back(ss);
       return;
     }
+    if (use_sbounds_) region = on_grid(region, span);
     for (int q = 0; q < 3; ++q) ss.frame += std::string(q ? " " : "") + k_.to_text(shear[q]);
-    std::vector<H> table;
-    add_planes(A, shear, table);
-    std::size_t offset_b = table.size();
-    add_planes(B, shear, table);
+    Motion_groups<FT> groups;
+    std::vector<H> table = plane_table(A, B, shear, frame_of_a_, groups);
     Formula::Builder builder;
     std::size_t mark = builder.open();
     std::size_t next = 0;
     emit(A, 0, false, builder, next);
-    next = offset_b;
+    next = 0;
+    for (const auto& p : A.object->csg.primitives) next += 2 * p.planes.size();   // B's first plane
     emit(B, 0, false, builder, next);
     builder.close(Formula::Op::And, mark);
     Formula formula = builder.finish();
     ss.leaves = formula.leaf_count();
     stats_.spans.push_back(ss);
-    Divide_and_conquer<K> dc(k_, table, stats_, trail_);
+    Divide_and_conquer<K> dc(k_, table, stats_, trail_, &groups);
+    if (exact_region_)
+      dc.conquer_undecided_with([&](const Formula& f, const Box4& box) {
+        return exact_region_(a, b, span_index_, frame_of_a_, f, box);
+      });
+    if (exact_proportional_)
+      dc.proportional_undecided_with([&](std::size_t h, std::size_t g) {
+        return exact_proportional_(a, b, span_index_, frame_of_a_, h, g);
+      });
     goal.improved = false;
     dc.search(region, formula, goal);
     if (trail_ && trail_->recording() && goal.improved) {
@@ -244,6 +297,7 @@ private:
     // contact point are made with this span's planes and frame.
     start = std::chrono::steady_clock::now();
     r.collide = true;
+    if (!construct_witness_) return;
     r.witness = witness(goal.inside, table, region, shear, A, B, span);
     r.witness_verified = verify(r.witness, a, b);
     r.t_star = goal.t_star;
@@ -337,18 +391,61 @@ private:
     return region;
   }
 
+  // Region faces moved out to the next multiples of 2^-grid_bits beyond the
+  // S-bound region, which stays a bound. S-bounds are vertex coordinates, so
+  // their faces pass through the objects' vertex lines: a degeneracy of the
+  // bound, not of the scene, which interval arithmetic cannot certify. Grid
+  // values are exact in every kernel, and so are the bisections of §4.1.
+  // Time stays within the sub-span (the formula has no time slab). The
+  // rounding jumps at half-grid points, not at the grid points that integer
+  // and short binary bounds sit on, so an interval enclosing such a bound
+  // still rounds to one grid point; the margin is at least half a step.
+  static constexpr int grid_bits = 20;
+  Box4 on_grid(const Box4& region, const Time_span<FT>& span) const
+  {
+    const FT step = FT(1) / FT(1 << grid_bits), half = step / FT(2);
+    auto below = [&](const FT& x) { return k_.floor_to_grid(x + half, grid_bits) - step; };
+    Box4 out = region;
+    for (int q = 0; q < 4; ++q) out.set(q, below(region.lo[q]), -below(-region.hi[q]));
+    out.lo[3] = Number_ops<FT>::upper(out.lo[3], span.lo);
+    out.hi[3] = Number_ops<FT>::lower(out.hi[3], span.hi);
+    return out;
+  }
+
+  // A's planes then B's (add_planes), groups 0 and 1; per axis, the frame
+  // is A's own or B's (fitted regions only).
+  std::vector<H> plane_table(const Moving& A, const Moving& B, const Vector3<FT>& shear,
+                             const std::array<bool, 3>& frame_of_a, Motion_groups<FT>& groups) const
+  {
+    std::array<bool, 3> own_a{}, own_b{};
+    for (int q = 0; q < 3 && use_sbounds_; ++q) own_a[q] = frame_of_a[q], own_b[q] = !frame_of_a[q];
+    std::vector<H> table;
+    groups.velocity.push_back(add_planes(A, shear, own_a, table));
+    groups.of.assign(table.size(), 0);
+    groups.velocity.push_back(add_planes(B, shear, own_b, table));
+    groups.of.resize(table.size(), 1);
+    groups.still = {own_a, own_b};
+    return table;
+  }
+
   // Every plane of every primitive, extruded (eq. 4) and sheared, followed by
   // its complement: table[2i] is plane i, table[2i + 1] its complement.
-  void add_planes(const Moving& m, const Vector3<FT>& shear, std::vector<H>& table) const
+  // In the frame x' = x - w t the object moves with v - w (eq. 4 with that
+  // velocity). On an axis measured in the object's own frame (own[q]) that
+  // is a written zero, not v - v: an interval run then gets a point zero
+  // where the exact run has one, instead of an uncertain sign.
+  // Returns the velocity v - w.
+  Vector3<FT> add_planes(const Moving& m, const Vector3<FT>& shear, const std::array<bool, 3>& own,
+                         std::vector<H>& table) const
   {
+    Vector3<FT> relative;
+    for (int q = 0; q < 3; ++q) relative[q] = own[q] ? FT(0) : m.v[q] - shear[q];
     for (const auto& p : m.object->csg.primitives)
       for (const auto& plane : p.planes) {
-        H h = extrude(plane, m.v, m.o);
-        // x = x' + w t: n.x + e t + c = n.x' + (e + n.w) t + c.
-        h.n[3] += h.n[0] * shear[0] + h.n[1] * shear[1] + h.n[2] * shear[2];
-        table.push_back(h);
-        table.push_back(h.complement());
+        table.push_back(extrude(plane, relative, m.o));
+        table.push_back(table.back().complement());
       }
+    return relative;
   }
 
   // The object's tree in negation normal form; pruned nodes (empty S-bound)
@@ -406,7 +503,7 @@ private:
       if (s > 0) slab_leaf(time_at_least(m.times[s - 1]), table, b);
       if (s < m.times.size()) slab_leaf(time_at_most(m.times[s]), table, b);
       std::size_t next = table.size();
-      add_planes(seg, shear, table);
+      add_planes(seg, shear, {}, table);
       emit(seg, 0, false, b, next);
       b.close(Formula::Op::And, seg_mark);
     }

@@ -9,6 +9,7 @@
 #include "core/Generate_and_test.h"
 #include "core/Search_trail.h"
 #include <CGAL/Uncertain.h>
+#include <functional>
 
 namespace clash4d {
 
@@ -24,9 +25,11 @@ public:
   static constexpr std::size_t max_depth = 8;
 
   // trail: record where the first point inside is found, or go straight
-  // there (core/Search_trail.h); null for an ordinary search.
-  Divide_and_conquer(const K& k, const std::vector<H>& table, Check_stats& stats, Search_trail* trail = nullptr)
-    : k_(k), table_(table), stats_(stats), conquer_(k, table, stats, trail), trail_(trail) {}
+  // there (core/Search_trail.h); null for an ordinary search. groups: which
+  // table planes move together (core/Motion_groups.h), if known.
+  Divide_and_conquer(const K& k, const std::vector<H>& table, Check_stats& stats, Search_trail* trail = nullptr,
+                     const Motion_groups<FT>* groups = nullptr)
+    : k_(k), table_(table), stats_(stats), conquer_(k, table, stats, trail, groups), trail_(trail) {}
 
   static std::size_t kappa(std::size_t d) { return 2 * d + 6; }
 
@@ -53,7 +56,7 @@ public:
       conquered_ = join(conquered_, region);
       stats_.leaves_at_conquer += leaves;
       stats_.max_leaves_at_conquer = std::max(stats_.max_leaves_at_conquer, leaves);
-      conquer_.run(f, region, goal);
+      conquer(f, region, goal);
       note_found(goal, true);
       return;
     }
@@ -67,6 +70,16 @@ public:
       search(sub_region(region, child), f, goal, depth + 1);
       path_.pop_back();
     }
+  }
+
+  // An approximate kernel's conquer that meets a sign it cannot certify asks
+  // `exact` (true: the region holds a point inside) instead of failing the
+  // whole run; any-witness searches only. `exact` is given the simplified
+  // formula and the region (the approximate one, which encloses the exact).
+  void conquer_undecided_with(std::function<bool(const Formula&, const Box4&)> exact) { exact_ = std::move(exact); }
+  void proportional_undecided_with(std::function<int(std::size_t, std::size_t)> exact)
+  {
+    conquer_.proportional_undecided_with(std::move(exact));
   }
 
   // Skeleton mode (§5): the full search, never stopping. Simplification is
@@ -131,6 +144,21 @@ private:
   Generate_and_test<K> conquer_;
   Search_trail* trail_;
   std::vector<int> path_;                 // child indices from the root region to here
+  std::function<bool(const Formula&, const Box4&)> exact_;
+
+  void conquer(const Formula& f, const Box4& region, Search_goal<FT>& goal)
+  {
+    if (!exact_ || goal.earliest) return conquer_.run(f, region, goal);
+    try {
+      conquer_.run(f, region, goal);
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      if (!exact_(f, region)) return;
+      // Found, but the point is for the exact run to construct: a trail
+      // sends it to conquer this whole region.
+      goal.found = goal.improved = true;
+      if (trail_) trail_->line_known = false;
+    }
+  }
 
   bool decided(CGAL::Uncertain<bool> u) const
   {

@@ -20,6 +20,7 @@
 
 #include "core/Check_runner.h"
 #include <CGAL/Uncertain.h>
+#include <map>
 #include <memory>
 #include <mutex>
 
@@ -61,6 +62,13 @@ public:
           Protector protect;
           AFT aceiling = ceiling ? ak_.from_rational(ek_.to_rational(*ceiling)) : AFT(0);
           Collision_checker<AK> checker(ak_, amodel_, asettled_, astats, use_sbounds_);
+          Exact_planes planes;
+          checker.verdict_only(
+              [&](int a, int b, std::size_t span, const std::array<bool, 3>& frame, const Formula& f,
+                  const Box<AFT, 4>& region) { return exact_region(a, b, span, frame, f, region, astats); },
+              [&](int a, int b, std::size_t span, const std::array<bool, 3>& frame, std::size_t h, std::size_t g) {
+                return planes.proportional(*this, a, b, span, frame, h, g);
+              });
           if (!options.earliest) checker.follow(&trail);
           if (!checker.check_pair(a, b, options.earliest, ceiling ? &aceiling : nullptr).collide) {
             stats = astats;
@@ -144,7 +152,7 @@ private:
   std::vector<typename Collision_checker<EK>::Bounds> esettled_;
   std::vector<int> apasses_, epasses_;        // each object's own S-bound passes, per kernel
   std::unique_ptr<std::once_flag[]> built_;
-  std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0};
+  std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0};
 
   // AK's model, each object's S-bounds (EK's where AK fails), and the sweep's
   // pairs. False when AK cannot build the model: the whole run goes to EK.
@@ -204,6 +212,56 @@ private:
     return b;
   }
 
+  // A region AK's generate-and-test could not decide, conquered by EK (the
+  // filter at the level of one region): AK's region widened to the doubles
+  // that enclose it, which contains EK's own region, with the planes of EK's
+  // model. The formula, simplified by AK over its region with certified
+  // signs, holds over EK's region; over the sliver outside it may only add
+  // points inside, and a point inside sends the pair to EK anyway.
+  bool exact_region(int a, int b, std::size_t span, const std::array<bool, 3>& frame, const Formula& f,
+                    const Box<AFT, 4>& region, Check_stats& stats)
+  {
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    ++exact_regions_;
+    need_exact(a);
+    need_exact(b);
+    Box<EFT, 4> outer;
+    for (int q = 0; q < 4; ++q)
+      outer.set(q, EFT(CGAL::to_interval(region.lo[q]).first), EFT(CGAL::to_interval(region.hi[q]).second));
+    return Collision_checker<EK>(ek_, emodel_, esettled_, stats, use_sbounds_)
+        .region_has_inside(a, b, span, frame, f, outer);
+  }
+
+  // EK's plane table of one span of a pair's AK run, made when AK first
+  // cannot tell whether two entries are one plane, and the answers so far.
+  struct Exact_planes {
+    std::size_t span = static_cast<std::size_t>(-1);
+    std::vector<Hyperplane4<EFT>> table;
+    std::map<std::pair<std::size_t, std::size_t>, int> answers;
+
+    int proportional(Filtered_runner& runner, int a, int b, std::size_t s, const std::array<bool, 3>& frame,
+                     std::size_t h, std::size_t g)
+    {
+      CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+      if (s != span) {
+        runner.need_exact(a);
+        runner.need_exact(b);
+        Check_stats ignored;
+        Motion_groups<EFT> groups;
+        table = Collision_checker<EK>(runner.ek_, runner.emodel_, runner.esettled_, ignored, runner.use_sbounds_)
+                    .span_table(a, b, s, frame, groups);
+        answers.clear();
+        span = s;
+      }
+      auto [it, fresh] = answers.try_emplace({h, g}, 0);
+      if (fresh) {
+        ++runner.exact_planes_;
+        it->second = clash4d::proportional(runner.ek_, table.at(h), table.at(g));
+      }
+      return it->second;
+    }
+  };
+
   void need_exact(int i)
   {
     std::call_once(built_[i], [&] {
@@ -220,6 +278,8 @@ private:
     stats.exact_fallbacks = fallbacks_.load();
     stats.exact_witness_runs = witness_runs_.load();
     stats.exact_witness_replays = witness_replays_.load();
+    stats.exact_regions = exact_regions_.load();
+    stats.exact_plane_tests = exact_planes_.load();
   }
 
   static double seconds_since(std::chrono::steady_clock::time_point t)

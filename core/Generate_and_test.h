@@ -11,10 +11,14 @@
 #include "core/Check_stats.h"
 #include "core/Formula.h"
 #include "core/Hyperplane4.h"
+#include "core/Motion_groups.h"
 #include "core/Neighbourhood.h"
 #include "core/Search_goal.h"
 #include "core/Search_trail.h"
+#include <CGAL/Uncertain.h>
 #include <algorithm>
+#include <functional>
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -27,8 +31,9 @@ public:
   using H = Hyperplane4<FT>;
   using V = Vector4<FT>;
 
-  Generate_and_test(const K& k, const std::vector<H>& table, Check_stats& stats, Search_trail* trail = nullptr)
-    : k_(k), table_(table), stats_(stats), trail_(trail) {}
+  Generate_and_test(const K& k, const std::vector<H>& table, Check_stats& stats, Search_trail* trail = nullptr,
+                    const Motion_groups<FT>* groups = nullptr)
+    : k_(k), table_(table), stats_(stats), trail_(trail), groups_(groups) {}
 
   // Records what it finds in the goal; in earliest mode it examines every
   // edge that could hold an earlier point (the least time over an edge is at
@@ -37,7 +42,7 @@ public:
   {
     collect_planes(f, region);
     std::size_t n = planes_.size();
-    if (trail_ && trail_->replaying()) {
+    if (trail_ && trail_->replaying() && trail_->line_known) {
       // Every line before the trail's was certified to hold no point inside.
       const auto& t = trail_->line;
       if (t[2] < n) on_line(f, t[0], t[1], t[2], goal);
@@ -51,6 +56,13 @@ public:
           on_line(f, i, j, m, goal);
           if (trail_ && trail_->recording() && !before && goal.found) trail_->line = {i, j, m};
         }
+  }
+
+  // For an approximate kernel: which table entries are one plane, when it
+  // cannot tell (core/Filtered_runner.h asks the exact planes).
+  void proportional_undecided_with(std::function<int(std::size_t, std::size_t)> exact)
+  {
+    exact_proportional_ = std::move(exact);
   }
 
   // Skeleton (§5): every edge of the boundary of the region the formula
@@ -72,48 +84,93 @@ private:
   const std::vector<H>& table_;
   Check_stats& stats_;
   Search_trail* trail_;
+  const Motion_groups<FT>* groups_;
   std::vector<H> planes_;                 // distinct hyperplanes, region faces last
+  std::vector<unsigned> moves_along_;     // per plane: bit g set when it contains group g's (r, 1)
+  std::vector<long> first_entry_;         // per plane: the table entry it was made from, or -1
   std::size_t first_face_ = 0;
   std::vector<std::pair<std::size_t, int>> leaf_plane_;   // table index -> (plane, orientation)
   std::vector<FT> at_base_, along_;       // per plane: value at the base point, slope along l
   std::vector<int> sign_;                 // per plane at the current test point: -1, 0, +1
+  std::array<std::size_t, 3> line_{};     // the planes that meet in the current line
+  int line_group_ = -1;                   // their common motion group, or -1
 
-  // Index of h among planes_ (appending it if new) and its orientation.
-  std::pair<std::size_t, int> intern(const H& h)
+  // Index of h among planes_ (appending it if new) and its orientation;
+  // `along` (core/Motion_groups.h) is what h is known to contain, and is
+  // added to the plane's (a plane shared by two entries contains both).
+  // entry: h's index in the table (-1 for a region face).
+  std::pair<std::size_t, int> intern(const H& h, unsigned along = 0, long entry = -1)
   {
     for (std::size_t p = 0; p < planes_.size(); ++p)
-      if (int o = proportional(h, planes_[p])) return {p, o};
+      if (int o = same_plane(h, p, entry)) {
+        moves_along_[p] |= along;
+        return {p, o};
+      }
     planes_.push_back(h);
+    moves_along_.push_back(along);
+    first_entry_.push_back(entry);
     return {planes_.size() - 1, 1};
   }
 
-  // +1 when h = lambda g with lambda > 0, -1 when lambda < 0, 0 otherwise.
-  int proportional(const H& h, const H& g) const
+  // The line where planes i, j and m meet (zero when they do not). Three
+  // planes that contain a group's motion (r, 1) meet along it: the
+  // generalised cross product is then its last coordinate times (r, 1),
+  // written so.
+  V line_direction(std::size_t i, std::size_t j, std::size_t m)
   {
-    int j = 0;
-    while (j < 4 && k_.sign(g.n[j]) == CGAL::ZERO) ++j;
-    if (j == 4 || k_.sign(h.n[j]) == CGAL::ZERO) return 0;
-    for (int i = 0; i < 4; ++i)
-      if (k_.sign(h.n[i] * g.n[j] - g.n[i] * h.n[j]) != CGAL::ZERO) return 0;
-    if (k_.sign(h.c * g.n[j] - g.c * h.n[j]) != CGAL::ZERO) return 0;
-    return k_.sign(h.n[j]) == k_.sign(g.n[j]) ? 1 : -1;
+    unsigned common = moves_along_[i] & moves_along_[j] & moves_along_[m];
+    line_group_ = -1;
+    for (int g = 0; common && line_group_ < 0; ++g)
+      if (common & (1u << g)) line_group_ = g;
+    line_ = {i, j, m};
+    if (line_group_ < 0) return generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n);
+    const Vector3<FT>& r = groups_->velocity[line_group_];
+    FT d = generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n)[3];
+    return {d * r[0], d * r[1], d * r[2], d};
+  }
+
+  // The groups whose motion a face x_a = c contains (still along axis a).
+  unsigned face_along(int a) const
+  {
+    unsigned along = 0;
+    for (std::size_t g = 0; groups_ && a < 3 && g < groups_->still.size(); ++g)
+      if (groups_->still[g][a]) along |= 1u << g;
+    return along;
+  }
+
+  // Whether table entries h and g are one plane (proportional), for one the
+  // kernel cannot decide; none: fail as the kernel does.
+  std::function<int(std::size_t h, std::size_t g)> exact_proportional_;
+
+  int same_plane(const H& h, std::size_t p, long entry) const
+  {
+    if (!exact_proportional_ || entry < 0 || first_entry_[p] < 0) return proportional(k_, h, planes_[p]);
+    try {
+      return proportional(k_, h, planes_[p]);
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      return exact_proportional_(static_cast<std::size_t>(entry), static_cast<std::size_t>(first_entry_[p]));
+    }
   }
 
   void collect_planes(const Formula& f, const Box<FT, 4>& region)
   {
     planes_.clear();
+    moves_along_.clear();
+    first_entry_.clear();
     leaf_plane_.assign(table_.size(), {0, 0});
     for (const auto& t : f.code())
-      if (t.op == Formula::Op::Leaf && leaf_plane_[t.arg].second == 0) leaf_plane_[t.arg] = intern(table_[t.arg]);
+      if (t.op == Formula::Op::Leaf && leaf_plane_[t.arg].second == 0)
+        leaf_plane_[t.arg] = intern(table_[t.arg], groups_ && groups_->group(t.arg) >= 0 ? 1u << groups_->group(t.arg) : 0u,
+                                    static_cast<long>(t.arg));
     // Region faces, inside <= 0; they may coincide with leaves, so intern too.
     first_face_ = planes_.size();
     face_plane_.clear();
     for (int a = 0; a < 4; ++a) {
       V e{FT(0), FT(0), FT(0), FT(0)};
       e[a] = FT(-1);
-      face_plane_.push_back(intern({e, region.lo[a]}));
+      face_plane_.push_back(intern({e, region.lo[a]}, face_along(a)));
       e[a] = FT(1);
-      face_plane_.push_back(intern({e, -region.hi[a]}));
+      face_plane_.push_back(intern({e, -region.hi[a]}, face_along(a)));
     }
     at_base_.resize(planes_.size());
     along_.resize(planes_.size());
@@ -135,11 +192,10 @@ private:
 
   void on_line(const Formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<FT>& goal)
   {
-    const H &a = planes_[i], &b = planes_[j], &c = planes_[m];
-    V l = generalised_cross(a.n, b.n, c.n);
+    V l = line_direction(i, j, m);
     if (k_.is_zero(l)) return;
     ++stats_.lines;
-    V base = base_point(a, b, c, l);
+    V base = base_point(planes_[i], planes_[j], planes_[m], l);
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return;
     if (!goal.can_improve(Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
@@ -152,6 +208,8 @@ private:
         sign_[p] = static_cast<int>(k_.sign(at_base_[p]));
         continue;
       }
+      // A face the line crosses bounds the segment: strictly inside between.
+      if (p >= first_face_) { sign_[p] = -1; continue; }
       FT cut = -at_base_[p] / along_[p];
       if (k_.less(s_lo, cut) && k_.less(cut, s_hi)) cuts.push_back(cut);
       else sign_[p] = static_cast<int>(k_.sign(at_base_[p] + centre * along_[p]));
@@ -181,8 +239,7 @@ private:
     bool has_lo = false, has_hi = false;
     for (const auto& fp : face_plane_) {
       std::size_t p = fp.first;
-      at_base_[p] = planes_[p].value(base);
-      along_[p] = dot(planes_[p].n, l);
+      evaluate_plane(p, base, l);
       int e = k_.sign(along_[p]) * fp.second;
       if (e == 0) {
         if (k_.sign(at_base_[p]) * fp.second > 0) return false;
@@ -197,17 +254,25 @@ private:
 
   void evaluate_planes(const V& base, const V& l, std::size_t count)
   {
-    for (std::size_t p = 0; p < count; ++p) {
-      at_base_[p] = planes_[p].value(base);
-      along_[p] = dot(planes_[p].n, l);
-    }
+    for (std::size_t p = 0; p < count; ++p) evaluate_plane(p, base, l);
+  }
+
+  // The line lies in its own three planes, and runs parallel to every plane
+  // of its motion group: those zeros hold by construction and are written so
+  // (an interval would only enclose them).
+  void evaluate_plane(std::size_t p, const V& base, const V& l)
+  {
+    bool holds = p == line_[0] || p == line_[1] || p == line_[2];
+    bool parallel = holds || (line_group_ >= 0 && (moves_along_[p] >> line_group_ & 1u));
+    at_base_[p] = holds ? FT(0) : planes_[p].value(base);
+    along_[p] = parallel ? FT(0) : dot(planes_[p].n, l);
   }
 
   // The segment of the line through planes i, j, m inside the closed region,
   // and every cut by a formula plane in it, sorted; empty when it misses.
   std::vector<FT> cuts_in_region(std::size_t i, std::size_t j, std::size_t m, V& base, V& l)
   {
-    l = generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n);
+    l = line_direction(i, j, m);
     if (k_.is_zero(l)) return {};
     base = base_point(planes_[i], planes_[j], planes_[m], l);
     FT s_lo(0), s_hi(0);

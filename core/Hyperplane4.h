@@ -16,6 +16,20 @@ struct Hyperplane4 {
   Hyperplane4 complement() const { return {{-n[0], -n[1], -n[2], -n[3]}, -c}; }
 };
 
+// +1 when h = lambda g with lambda > 0, -1 when lambda < 0, 0 otherwise; a
+// predicate of kernel K.
+template <class K, class FT>
+int proportional(const K& k, const Hyperplane4<FT>& h, const Hyperplane4<FT>& g)
+{
+  int j = 0;
+  while (j < 4 && k.sign(g.n[j]) == CGAL::ZERO) ++j;
+  if (j == 4 || k.sign(h.n[j]) == CGAL::ZERO) return 0;
+  for (int i = 0; i < 4; ++i)   // i = j is zero by construction (not so in intervals)
+    if (i != j && k.sign(h.n[i] * g.n[j] - g.n[i] * h.n[j]) != CGAL::ZERO) return 0;
+  if (k.sign(h.c * g.n[j] - g.c * h.n[j]) != CGAL::ZERO) return 0;
+  return k.sign(h.n[j]) == k.sign(g.n[j]) ? 1 : -1;
+}
+
 // Equation (4): the plane n.x + d <= 0 moving with D(t) = v t + o becomes
 // n.x - (n.v) t + (d - n.o) <= 0.
 template <class FT>

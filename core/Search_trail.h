@@ -37,6 +37,7 @@ struct Search_trail {
   std::vector<int> path;                // division: child index at each depth
   bool on_line = false;                 // found on a line (else a region folded to "inside")
   std::array<std::size_t, 3> line{};    // the line's three planes, in generate-and-test's order
+  bool line_known = true;               // false: the region was conquered exactly, replay it whole
 
   bool recording() const { return mode == Mode::Record; }
   bool replaying() const { return mode == Mode::Replay; }

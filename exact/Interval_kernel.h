@@ -12,6 +12,7 @@
 #include "core/Number_ops.h"
 #include "exact/Rational.h"
 #include <CGAL/Interval_nt.h>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -36,8 +37,20 @@ public:
   CGAL::Sign sign(const FT& x) const { return CGAL::make_certain(CGAL::sign(x)); }
   bool possibly_positive(const FT& x) const { return CGAL::possibly(CGAL::sign(x) == CGAL::POSITIVE); }
   CGAL::Uncertain<bool> is_nonnegative(const FT& x, bool strict) const { return strict ? x > 0 : x >= 0; }
-  bool prefer_less(const FT& a, const FT& b) const { return a.inf() + a.sup() < b.inf() + b.sup(); }
+  // Not less unless certainly less: what cannot be told apart is most often
+  // an exact tie (two S-bounds narrowed to the same meet), which the exact
+  // kernel also answers "not less".
+  bool prefer_less(const FT& a, const FT& b) const { return a.sup() < b.inf(); }
   FT from_rational(const Rational& q) const { return FT(CGAL::to_interval(q)); }
+  // Certain only when both bounds round to the same grid point (then a point
+  // interval: grid values are exact doubles while bits and x are moderate).
+  FT floor_to_grid(const FT& x, int bits) const
+  {
+    double lo = std::ldexp(std::floor(std::ldexp(x.inf(), bits)), -bits);
+    if (lo != std::ldexp(std::floor(std::ldexp(x.sup(), bits)), -bits))
+      throw CGAL::Uncertain_conversion_exception("a region face between two grid points");
+    return FT(lo);
+  }
   // Statistics only (answers are never printed from intervals): a point
   // interval is an exact number, otherwise the enclosure "~[inf, sup]".
   std::string to_text(const FT& x) const

@@ -16,6 +16,22 @@ std::string to_string(const Rational& q)
   return out;
 }
 
+Rational floor_to_grid(const Rational& q, int bits)
+{
+  mpz_t n;
+  mpz_init(n);
+  mpz_mul_2exp(n, mpq_numref(q.mpq()), static_cast<mp_bitcnt_t>(bits));
+  mpz_fdiv_q(n, n, mpq_denref(q.mpq()));
+  mpq_t r;
+  mpq_init(r);
+  mpq_set_z(r, n);
+  mpq_div_2exp(r, r, static_cast<mp_bitcnt_t>(bits));
+  Rational out(r);
+  mpq_clear(r);
+  mpz_clear(n);
+  return out;
+}
+
 double round_to_nearest(const Rational& q)
 {
   mpfr_t r;

@@ -20,6 +20,9 @@ std::string to_string(const Rational& q);
 // than "the nearest double" the spec promises. Returns +-inf on overflow.
 double round_to_nearest(const Rational& q);
 
+// The largest multiple of 2^-bits at or below q.
+Rational floor_to_grid(const Rational& q, int bits);
+
 } // namespace clash4d
 
 #endif

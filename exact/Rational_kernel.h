@@ -16,6 +16,7 @@ public:
   CGAL::Sign sign(const FT& x) const { return CGAL::sign(x); }
   FT from_rational(const Rational& q) const { return q; }
   Rational to_rational(const FT& x) const { return x; }
+  FT floor_to_grid(const FT& x, int bits) const { return clash4d::floor_to_grid(x, bits); }
   std::string to_text(const FT& x) const { return to_string(x); }
 };
 

@@ -6,6 +6,7 @@
 
 #include "core/Kernel_base.h"
 #include "exact/Rational.h"
+#include <cmath>
 #include <string>
 
 namespace clash4d {
@@ -24,6 +25,7 @@ public:
   // double range cannot be read by this instantiation (std::range_error).
   double from_rational(const Rational& q) const;
   Rational to_rational(double x) const { return Rational(x); }
+  double floor_to_grid(double x, int bits) const { return std::ldexp(std::floor(std::ldexp(x, bits)), -bits); }
   // The shortest decimal that reads back to the same double (spec: output).
   std::string to_text(double x) const;
 

@@ -1,0 +1,29 @@
+// Which planes of a plane table move together: one object's planes, sheared
+// into the region's frame, all move with the object's velocity r relative to
+// that frame. Their normals are (n, -n.r), so every one of them contains the
+// direction (r, 1); so does a region face x_q = c on an axis where the
+// object is still (r_q = 0: measured in its own frame). A line where three
+// planes containing (r, 1) meet runs along it. These are zeros of the exact
+// arithmetic; generate-and-test writes them as zeros instead of computing
+// them, because an interval run would only enclose them and could not
+// certify their sign.
+#ifndef CLASH4D_CORE_MOTION_GROUPS_H
+#define CLASH4D_CORE_MOTION_GROUPS_H
+
+#include "core/kernel_ft4.h"
+#include <vector>
+
+namespace clash4d {
+
+template <class FT>
+struct Motion_groups {
+  std::vector<int> of;                  // per table entry: its group, or -1
+  std::vector<Vector3<FT>> velocity;    // per group: r, relative to the frame
+  std::vector<std::array<bool, 3>> still;   // per group and axis: r_q is a written zero
+
+  int group(std::size_t entry) const { return entry < of.size() ? of[entry] : -1; }
+};
+
+} // namespace clash4d
+
+#endif
