@@ -80,7 +80,7 @@ public:
   // Likewise `same` says whether two table entries are one plane
   // (Exact_proportional, core/Hyperplane4.h's proportional).
   using Exact_region = std::function<bool(int a, int b, std::size_t span, const std::array<bool, 3>& frame_of_a,
-                                          const Formula& f, const Box4& region)>;
+                                          const Formula& f, const Box4& region, Search_trail& at)>;
   using Exact_proportional = std::function<int(int a, int b, std::size_t span, const std::array<bool, 3>& frame_of_a,
                                                std::size_t h, std::size_t g)>;
   void verdict_only(Exact_region exact, Exact_proportional same)
@@ -103,14 +103,14 @@ public:
 
   // Generate-and-test of one conquered region of check_span, in this kernel
   // (for a run in another kernel that could not decide it): true when the
-  // region holds a point inside both objects.
+  // region holds a point inside both objects; `at` records the line.
   bool region_has_inside(int a, int b, std::size_t span_index, const std::array<bool, 3>& frame_of_a,
-                         const Formula& f, const Box4& region)
+                         const Formula& f, const Box4& region, Search_trail& at)
   {
     Motion_groups<FT> groups;
     std::vector<H> table = span_table(a, b, span_index, frame_of_a, groups);
     Search_goal<FT> goal;
-    Generate_and_test<K>(k_, table, stats_, nullptr, &groups).run(f, region, goal);
+    Generate_and_test<K>(k_, table, stats_, &at, &groups).run(f, region, goal);
     return goal.found;
   }
 
@@ -273,8 +273,8 @@ private:
     stats_.spans.push_back(ss);
     Divide_and_conquer<K> dc(k_, table, stats_, trail_, &groups);
     if (exact_region_)
-      dc.conquer_undecided_with([&](const Formula& f, const Box4& box) {
-        return exact_region_(a, b, span_index_, frame_of_a_, f, box);
+      dc.conquer_undecided_with([&](const Formula& f, const Box4& box, Search_trail& at) {
+        return exact_region_(a, b, span_index_, frame_of_a_, f, box, at);
       });
     if (exact_proportional_)
       dc.proportional_undecided_with([&](std::size_t h, std::size_t g) {

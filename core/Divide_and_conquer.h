@@ -75,8 +75,11 @@ public:
   // An approximate kernel's conquer that meets a sign it cannot certify asks
   // `exact` (true: the region holds a point inside) instead of failing the
   // whole run; any-witness searches only. `exact` is given the simplified
-  // formula and the region (the approximate one, which encloses the exact).
-  void conquer_undecided_with(std::function<bool(const Formula&, const Box4&)> exact) { exact_ = std::move(exact); }
+  // formula and the region (the approximate one, which encloses the exact),
+  // and on true says in `at` on which line it found the point, when that is
+  // the exact run's own line (line_known).
+  using Exact_conquer = std::function<bool(const Formula&, const Box4&, Search_trail& at)>;
+  void conquer_undecided_with(Exact_conquer exact) { exact_ = std::move(exact); }
   void proportional_undecided_with(std::function<int(std::size_t, std::size_t)> exact)
   {
     conquer_.proportional_undecided_with(std::move(exact));
@@ -144,7 +147,7 @@ private:
   Generate_and_test<K> conquer_;
   Search_trail* trail_;
   std::vector<int> path_;                 // child indices from the root region to here
-  std::function<bool(const Formula&, const Box4&)> exact_;
+  Exact_conquer exact_;
 
   void conquer(const Formula& f, const Box4& region, Search_goal<FT>& goal)
   {
@@ -152,11 +155,15 @@ private:
     try {
       conquer_.run(f, region, goal);
     } catch (const CGAL::Uncertain_conversion_exception&) {
-      if (!exact_(f, region)) return;
-      // Found, but the point is for the exact run to construct: a trail
-      // sends it to conquer this whole region.
+      Search_trail at;
+      if (!exact_(f, region, at)) return;
+      // Found; the point is for the exact run to construct, on that line or
+      // (line unknown) by conquering this whole region.
       goal.found = goal.improved = true;
-      if (trail_) trail_->line_known = false;
+      if (trail_) {
+        trail_->line = at.line;
+        trail_->line_known = at.line_known;
+      }
     }
   }
 

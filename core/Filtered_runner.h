@@ -65,7 +65,9 @@ public:
           Exact_planes planes;
           checker.verdict_only(
               [&](int a, int b, std::size_t span, const std::array<bool, 3>& frame, const Formula& f,
-                  const Box<AFT, 4>& region) { return exact_region(a, b, span, frame, f, region, astats); },
+                  const Box<AFT, 4>& region, Search_trail& at) {
+                return exact_region(a, b, span, frame, f, region, at, astats);
+              },
               [&](int a, int b, std::size_t span, const std::array<bool, 3>& frame, std::size_t h, std::size_t g) {
                 return planes.proportional(*this, a, b, span, frame, h, g);
               });
@@ -217,19 +219,27 @@ private:
   // that enclose it, which contains EK's own region, with the planes of EK's
   // model. The formula, simplified by AK over its region with certified
   // signs, holds over EK's region; over the sliver outside it may only add
-  // points inside, and a point inside sends the pair to EK anyway.
+  // points inside, and a point inside sends the pair to EK anyway. When AK's
+  // region is exact (grid faces: point intervals) it is EK's own, and the
+  // line found is the one EK's run will find (`at`, for the trail).
   bool exact_region(int a, int b, std::size_t span, const std::array<bool, 3>& frame, const Formula& f,
-                    const Box<AFT, 4>& region, Check_stats& stats)
+                    const Box<AFT, 4>& region, Search_trail& at, Check_stats& stats)
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     ++exact_regions_;
     need_exact(a);
     need_exact(b);
     Box<EFT, 4> outer;
-    for (int q = 0; q < 4; ++q)
-      outer.set(q, EFT(CGAL::to_interval(region.lo[q]).first), EFT(CGAL::to_interval(region.hi[q]).second));
-    return Collision_checker<EK>(ek_, emodel_, esettled_, stats, use_sbounds_)
-        .region_has_inside(a, b, span, frame, f, outer);
+    bool exact = true;
+    for (int q = 0; q < 4; ++q) {
+      auto lo = CGAL::to_interval(region.lo[q]), hi = CGAL::to_interval(region.hi[q]);
+      exact = exact && lo.first == lo.second && hi.first == hi.second;
+      outer.set(q, EFT(lo.first), EFT(hi.second));
+    }
+    bool found = Collision_checker<EK>(ek_, emodel_, esettled_, stats, use_sbounds_)
+                     .region_has_inside(a, b, span, frame, f, outer, at);
+    at.line_known = exact;
+    return found;
   }
 
   // EK's plane table of one span of a pair's AK run, made when AK first
