@@ -131,6 +131,7 @@ json stats_json(const Check_stats& s)
           {"exact_witness_replays", s.exact_witness_replays},
           {"exact_regions", s.exact_regions},
           {"exact_plane_tests", s.exact_plane_tests},
+          {"witnesses_by_intervals", s.witnesses_by_intervals},
           {"seconds", {{"model", s.seconds_model}, {"sweep", s.seconds_sweep}, {"sbounds", s.seconds_sbounds},
                        {"divide_and_conquer", s.seconds_divide}, {"witness", s.seconds_witness}}}};
 }

@@ -75,15 +75,16 @@ bool has_no_interior(const K& k, const Box<FT, D>& b)
   return false;
 }
 
-// Same contents (used to detect that an S-bound pass changed nothing).
-template <class FT, std::size_t D>
-bool same_box(const Box<FT, D>& a, const Box<FT, D>& b)
+// Same contents on the grid of kernel k (Kernel_base::same_on_grid): the
+// S-bound passes stop when a pass moved no bound by a grid step.
+template <class K, class FT, std::size_t D>
+bool same_on_grid(const K& k, const Box<FT, D>& a, const Box<FT, D>& b)
 {
   if (a.empty || b.empty) return a.empty == b.empty;
   for (std::size_t i = 0; i < D; ++i) {
     if (a.has_lo[i] != b.has_lo[i] || a.has_hi[i] != b.has_hi[i]) return false;
-    if (a.has_lo[i] && !Number_ops<FT>::same(a.lo[i], b.lo[i])) return false;
-    if (a.has_hi[i] && !Number_ops<FT>::same(a.hi[i], b.hi[i])) return false;
+    if (a.has_lo[i] && !k.same_on_grid(a.lo[i], b.lo[i])) return false;
+    if (a.has_hi[i] && !k.same_on_grid(a.hi[i], b.hi[i])) return false;
   }
   return true;
 }

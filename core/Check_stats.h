@@ -42,9 +42,11 @@ struct Check_stats {
   // regions whose generate-and-test met a sign the intervals could not
   // certify, each then conquered in rationals alone (the run goes on);
   // exact_plane_tests: pairs of planes the intervals could not tell apart
-  // or identify (parallel faces), decided on the rational planes instead.
+  // or identify (parallel faces), decided on the rational planes instead;
+  // witnesses_by_intervals: colliding pairs whose witness the interval run
+  // made itself, on a path certified to be the rational run's (no rerun).
   std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_witness_replays = 0, exact_regions = 0,
-              exact_plane_tests = 0;
+              exact_plane_tests = 0, witnesses_by_intervals = 0;
   // Time per stage, seconds
   double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
 

@@ -21,6 +21,7 @@ struct Pair_result {
   int a = -1, b = -1;
   bool collide = false;
   Vector4<FT> witness{};          // (x, y, z, t), generic, strictly inside both
+  bool has_witness = false;       // false: found, the witness is for another kernel to make
   bool witness_verified = false;  // checked with strict signs against the scene
   bool earliest = false;          // t_star and contact are set (--earliest)
   FT t_star{};                    // inf of the collision times (§5)
@@ -73,19 +74,22 @@ public:
   // found, or replay such a record (core/Search_trail.h).
   void follow(Search_trail* trail) { trail_ = trail; }
 
-  // For an approximate run whose colliding pairs are run again exactly
-  // (core/Filtered_runner.h): report the verdict only, no witness; and hand
-  // the regions it cannot conquer to `exact` (Exact_region), with the pair,
-  // the sub-span's index and the frame, instead of failing.
+  // For an approximate run whose answers must be the exact run's
+  // (core/Filtered_runner.h): make the witness only when this run's path is
+  // certified to be the exact run's (an any-witness search, its trail not
+  // approximate, its point its own) and every sign and rounding on the way
+  // is certain, otherwise report the verdict only; and hand the regions it
+  // cannot conquer to `exact` (Exact_region), with the pair, the sub-span's
+  // index and the frame, instead of failing.
   // Likewise `same` says whether two table entries are one plane
   // (Exact_proportional, core/Hyperplane4.h's proportional).
   using Exact_region = std::function<bool(int a, int b, std::size_t span, const std::array<bool, 3>& frame_of_a,
                                           const Formula& f, const Box4& region, Search_trail& at)>;
   using Exact_proportional = std::function<int(int a, int b, std::size_t span, const std::array<bool, 3>& frame_of_a,
                                                std::size_t h, std::size_t g)>;
-  void verdict_only(Exact_region exact, Exact_proportional same)
+  void as_filter(Exact_region exact, Exact_proportional same)
   {
-    construct_witness_ = false;
+    certified_witness_only_ = true;
     exact_region_ = std::move(exact);
     exact_proportional_ = std::move(same);
   }
@@ -187,7 +191,7 @@ private:
   std::size_t span_index_ = 0;
   std::vector<int> span_passes_;           // this span's S-bound pass counts, in order
   std::array<bool, 3> frame_of_a_{};       // this span's frame choice per axis
-  bool construct_witness_ = true;
+  bool certified_witness_only_ = false;
   Exact_region exact_region_;
   Exact_proportional exact_proportional_;
 
@@ -297,15 +301,31 @@ private:
     // contact point are made with this span's planes and frame.
     start = std::chrono::steady_clock::now();
     r.collide = true;
-    if (!construct_witness_) return;
-    r.witness = witness(goal.inside, table, region, shear, A, B, span);
-    r.witness_verified = verify(r.witness, a, b);
-    r.t_star = goal.t_star;
-    r.contact = goal.contact;
-    for (int q = 0; q < 3; ++q) r.contact[q] += shear[q] * r.contact[3];
+    r.has_witness = false;
+    if (certified_witness_only_) {
+      if (!trail_ || !trail_->recording() || trail_->approximate || !goal.inside_known) return;
+      try {
+        make_witness(goal, shear, A, B, span, r);
+      } catch (const CGAL::Uncertain_conversion_exception&) {
+        r.has_witness = false;
+      }
+    } else {
+      make_witness(goal, shear, A, B, span, r);
+    }
     stats_.seconds_witness += seconds_since(start);
     if (K::is_exact && !r.witness_verified)
       throw std::logic_error("internal error: the exact witness failed its check; please report this scene");
+  }
+
+  void make_witness(const Search_goal<FT>& goal, const Vector3<FT>& shear, const Moving& A, const Moving& B,
+                    const Time_span<FT>& span, Pair_result<FT>& r) const
+  {
+    r.witness = witness(goal.inside, shear, A, B, span);
+    r.witness_verified = verify(r.witness, r.a, r.b);
+    r.has_witness = true;
+    r.t_star = goal.t_star;
+    r.contact = goal.contact;
+    for (int q = 0; q < 3; ++q) r.contact[q] += shear[q] * r.contact[3];
   }
 
   // §4.3.2: 3D Up/Down passes in each object, and the closed form of
@@ -322,7 +342,9 @@ private:
       span_passes_.push_back(sb_.settle(A.object->csg, A.beta, max_sbound_passes));
       span_passes_.push_back(sb_.settle(B.object->csg, B.beta, max_sbound_passes));
       if (A.beta[0].empty || B.beta[0].empty) return false;
-      if (same_box(ra, A.beta[0]) && same_box(rb, B.beta[0]) && Number_ops<FT>::same(l0, tl) && Number_ops<FT>::same(h0, th)) break;
+      if (same_on_grid(k_, ra, A.beta[0]) && same_on_grid(k_, rb, B.beta[0]) && k_.same_on_grid(l0, tl) &&
+          k_.same_on_grid(h0, th))
+        break;
     }
     return true;
   }
@@ -369,7 +391,8 @@ private:
   }
 
   // Appendix B, "optimal fitting": per axis, measure q in the frame of the
-  // object whose bound is narrower there (q' = q - w t with w its velocity).
+  // object whose bound is narrower there (q' = q - w t with w its velocity),
+  // the widths compared on the grid (Kernel_base::less_on_grid).
   Box4 fitted_region(const Moving& A, const Moving& B, const FT& tl, const FT& th, Vector3<FT>& shear)
   {
     Box4 region;
@@ -380,7 +403,7 @@ private:
       if (!fa && !fb)
         throw Input_error("", std::string("both objects are unbounded along ") + axis[q] +
                               ": this version needs one of each pair bounded", CLASH4D_EXIT_LIMIT);
-      bool use_a = fa && (!fb || !k_.prefer_less(bb.hi[q] - bb.lo[q], ba.hi[q] - ba.lo[q]));
+      bool use_a = fa && (!fb || !k_.less_on_grid(bb.hi[q] - bb.lo[q], ba.hi[q] - ba.lo[q]));
       frame_of_a_[q] = use_a;
       const Moving& m = use_a ? A : B;
       const Box3& bm = use_a ? ba : bb;
@@ -400,11 +423,10 @@ private:
   // rounding jumps at half-grid points, not at the grid points that integer
   // and short binary bounds sit on, so an interval enclosing such a bound
   // still rounds to one grid point; the margin is at least half a step.
-  static constexpr int grid_bits = 20;
   Box4 on_grid(const Box4& region, const Time_span<FT>& span) const
   {
-    const FT step = FT(1) / FT(1 << grid_bits), half = step / FT(2);
-    auto below = [&](const FT& x) { return k_.floor_to_grid(x + half, grid_bits) - step; };
+    const FT step = k_.power_of_two(-K::grid_bits);
+    auto below = [&](const FT& x) { return k_.grid_point(x) - step; };
     Box4 out = region;
     for (int q = 0; q < 4; ++q) out.set(q, below(region.lo[q]), -below(-region.hi[q]));
     out.lo[3] = Number_ops<FT>::upper(out.lo[3], span.lo);
@@ -557,64 +579,90 @@ private:
     for (int c : n.children) skip_planes(csg, c, next);
   }
 
-  FT abs(const FT& x) const { return x < FT(0) ? -x : x; }
-
   // Largest step (halved) along d from p that crosses no hyperplane not
-  // already through p.
-  FT safe_step(const V4& p, const V4& d, const std::vector<H>& planes) const
+  // already through p; values[i] is planes[i] at p.
+  FT safe_step(const V4& d, const std::vector<H>& planes, const std::vector<FT>& values) const
   {
     bool any = false;
     FT best(1);
-    for (const H& h : planes) {
-      FT v = h.value(p), nd = dot(h.n, d);
-      if (k_.sign(v) == CGAL::ZERO || k_.sign(nd) == CGAL::ZERO) continue;
-      FT s = abs(v) / abs(nd);
-      if (!any || s < best) { best = s; any = true; }
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+      FT nd = dot(planes[i].n, d);
+      if (k_.sign(values[i]) == CGAL::ZERO || k_.sign(nd) == CGAL::ZERO) continue;
+      FT s = Number_ops<FT>::magnitude(values[i]) / Number_ops<FT>::magnitude(nd);
+      best = any ? Number_ops<FT>::lower(best, s) : s;
+      any = true;
     }
     return any ? best / FT(2) : FT(1);
   }
 
-  // regularised-semantics.md item 3: step from the point into the open cell
-  // found inside, then off every remaining hyperplane, without crossing any.
-  V4 witness(const Inside_point<FT>& in, const std::vector<H>& table, const Box4& region,
-             const Vector3<FT>& shear, const Moving& A, const Moving& B, const Time_span<FT>& span) const
+  // regularised-semantics item 3: the point found inside the formula's cell,
+  // in world coordinates, moved off every plane of the two objects (planes
+  // of primitives the S-bounds pruned were not in the search) and rounded
+  // (snap) to a short dyadic point.
+  V4 witness(V4 p, const Vector3<FT>& shear, const Moving& A, const Moving& B, const Time_span<FT>& span) const
   {
-    std::vector<H> planes = table;
-    for (int a = 0; a < 4; ++a) {
-      V4 e{FT(0), FT(0), FT(0), FT(0)};
-      e[a] = FT(-1);
-      planes.push_back({e, region.lo[a]});
-      e[a] = FT(1);
-      planes.push_back({e, -region.hi[a]});
-    }
-    V4 p = in.point;
-    if (!k_.is_zero(in.direction)) p = point_along(p, safe_step(p, in.direction, planes), in.direction);
     for (int q = 0; q < 3; ++q) p[q] += shear[q] * p[3];
-    // Now in world coordinates: the objects' hyperplanes and the span's ends.
     std::vector<H> world;
     for (const Moving* m : {&A, &B})
       for (const auto& prim : m->object->csg.primitives)
         for (const auto& plane : prim.planes) world.push_back(extrude(plane, m->v, m->o));
     world.push_back(time_at_least(span.lo));
     world.push_back(time_at_most(span.hi));
-    return make_generic(p, world);
+    std::vector<FT> values = values_at(p, world);
+    if (make_generic(p, world, values)) values = values_at(p, world);
+    return snap(p, world, values);
   }
 
-  V4 make_generic(const V4& p, const std::vector<H>& planes) const
+  static std::vector<FT> values_at(const V4& p, const std::vector<H>& planes)
+  {
+    std::vector<FT> values;
+    values.reserve(planes.size());
+    for (const H& h : planes) values.push_back(h.value(p));
+    return values;
+  }
+
+  // Steps p off the planes through it; true when it moved.
+  bool make_generic(V4& p, const std::vector<H>& planes, const std::vector<FT>& values) const
   {
     std::vector<const H*> through;
-    for (const H& h : planes)
-      if (k_.sign(h.value(p)) == CGAL::ZERO) through.push_back(&h);
-    if (through.empty()) return p;
+    for (std::size_t i = 0; i < planes.size(); ++i)
+      if (k_.sign(values[i]) == CGAL::ZERO) through.push_back(&planes[i]);
+    if (through.empty()) return false;
     // d = (1, j, j^2, j^3) is orthogonal to a given normal for at most three
     // values of j, so some j <= 3 * |through| + 1 avoids all of them.
     for (int j = 1;; ++j) {
       V4 d{FT(1), FT(j), FT(j * j), FT(j * j * j)};
       bool ok = true;
       for (const H* h : through) ok = ok && k_.dot_sign(h->n, d) != CGAL::ZERO;
-      if (ok) return point_along(p, safe_step(p, d, planes), d);
-      if (j > 3 * static_cast<int>(through.size()) + 1) return p;   // only with a tolerance
+      if (ok) {
+        p = point_along(p, safe_step(d, planes, values), d);
+        return true;
+      }
+      if (j > 3 * static_cast<int>(through.size()) + 1) return false;   // only with a tolerance
     }
+  }
+
+  // p rounded to the coarsest grid 2^-bits that keeps it where it is. No
+  // plane n.x + c changes sign within max-norm distance room of p, where
+  // room = min |h(p)| / (4 max |n_j|) (as |h(q) - h(p)| <= |n|_1 |q - p|);
+  // with 2^-bits <= room, rounding each coordinate to the nearest multiple
+  // of 2^-bits moves p by at most room / 2, so every |h| keeps at least half
+  // its value. The result is a function of the exact p alone: a kernel that
+  // only encloses p (intervals) finds the same dyadic point or fails the
+  // filter. And users read 1/2 rather than 1999999999/4000000000.
+  V4 snap(const V4& p, const std::vector<H>& planes, const std::vector<FT>& values) const
+  {
+    FT least = Number_ops<FT>::magnitude(values[0]), widest = Number_ops<FT>::magnitude(planes[0].n[0]);
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+      least = Number_ops<FT>::lower(least, Number_ops<FT>::magnitude(values[i]));
+      for (const FT& n : planes[i].n) widest = Number_ops<FT>::upper(widest, Number_ops<FT>::magnitude(n));
+    }
+    FT room = least / (FT(4) * widest);
+    if (k_.sign(room) != CGAL::POSITIVE) return p;   // only with a tolerance: not generic
+    int bits = std::max(0, k_.grid_exponent(room));
+    V4 out;
+    for (int q = 0; q < 4; ++q) out[q] = k_.round_to_grid(p[q], bits);
+    return out;
   }
 
   bool verify(const V4& w, int a, int b) const { return is_valid_witness(k_, model_, a, b, w); }

@@ -45,7 +45,7 @@ public:
       // Every interior point is inside; the earliest is on the face t = lo.
       Vector4<FT> c = centre(region), low = c;
       low[3] = region.lo[3];
-      goal.record({c, zero()}, low);
+      goal.record(c, low);
       note_found(goal, false);
       return;
     }
@@ -160,6 +160,7 @@ private:
       // Found; the point is for the exact run to construct, on that line or
       // (line unknown) by conquering this whole region.
       goal.found = goal.improved = true;
+      goal.inside_known = false;
       if (trail_) {
         trail_->line = at.line;
         trail_->line_known = at.line_known;
@@ -193,7 +194,6 @@ private:
     trail_->complete = true;
   }
 
-  static Vector4<FT> zero() { return {FT(0), FT(0), FT(0), FT(0)}; }
   static Vector4<FT> centre(const Box4& b)
   {
     Vector4<FT> c;

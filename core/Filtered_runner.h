@@ -1,18 +1,19 @@
 // `check` and `skeleton` through a filter (CGAL's Filtered_predicate pattern
 // applied to a whole pair): every pair is first run by the generic stages on
 // the approximate kernel AK, whose sign() throws
-// CGAL::Uncertain_conversion_exception when it cannot certify a sign; a pair
-// whose run threw, or that collides (its witness, t* and contact point must be
-// constructed exactly), is run again by the same stages on the exact kernel
-// EK. The approximate run of a pair that does not collide made every decision
-// with a certified sign, so it is a run of the algorithm on exact values: its
-// "no collision" is EK's. Answers are therefore those of EK alone.
+// CGAL::Uncertain_conversion_exception when it cannot certify a sign. Every
+// decision of a run that did not throw is certified, the heuristic ones
+// included (S-bound passes and frames are chosen on grid points,
+// Kernel_base::grid_point), so such a run took the path EK's run takes, on
+// numbers enclosing EK's: its "no collision" is EK's.
 //
-// A colliding pair of an any-witness search is not searched again from the
-// start: AK's run records where it found its point (core/Search_trail.h) and
-// EK's run goes straight there, constructing the same point exactly; when EK
-// finds that its path differs (other S-bound pass counts or frame), it runs
-// the whole search.
+// A colliding pair's witness is made by AK itself when nothing in its run
+// was left uncertain (Collision_checker::as_filter): the witness is snapped
+// to a dyadic grid point (Collision_checker::snap), which AK finds exactly
+// from its enclosures. Otherwise the pair is run again on EK: an
+// any-witness search goes straight to the point AK found, along AK's trail
+// (core/Search_trail.h), and falls back to the whole search when EK's path
+// differs; earliest mode (t* is any rational) always runs the whole search.
 //
 // EK's model is built object by object, only for objects that need it.
 #ifndef CLASH4D_CORE_FILTERED_RUNNER_H
@@ -63,7 +64,7 @@ public:
           AFT aceiling = ceiling ? ak_.from_rational(ek_.to_rational(*ceiling)) : AFT(0);
           Collision_checker<AK> checker(ak_, amodel_, asettled_, astats, use_sbounds_);
           Exact_planes planes;
-          checker.verdict_only(
+          checker.as_filter(
               [&](int a, int b, std::size_t span, const std::array<bool, 3>& frame, const Formula& f,
                   const Box<AFT, 4>& region, Search_trail& at) {
                 return exact_region(a, b, span, frame, f, region, at, astats);
@@ -72,9 +73,15 @@ public:
                 return planes.proportional(*this, a, b, span, frame, h, g);
               });
           if (!options.earliest) checker.follow(&trail);
-          if (!checker.check_pair(a, b, options.earliest, ceiling ? &aceiling : nullptr).collide) {
+          Pair_result<AFT> found = checker.check_pair(a, b, options.earliest, ceiling ? &aceiling : nullptr);
+          if (!found.collide) {
             stats = astats;
             return Pair_result<EFT>();
+          }
+          if (found.has_witness && found.witness_verified) {
+            ++witnesses_by_intervals_;
+            stats = astats;
+            return exact_copy(found);
           }
           ++witness_runs_;
         } catch (const CGAL::Uncertain_conversion_exception&) {
@@ -154,7 +161,24 @@ private:
   std::vector<typename Collision_checker<EK>::Bounds> esettled_;
   std::vector<int> apasses_, epasses_;        // each object's own S-bound passes, per kernel
   std::unique_ptr<std::once_flag[]> built_;
-  std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0};
+  std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
+      witnesses_by_intervals_{0};
+
+  // A witness AK made on a certified path: its coordinates are grid points
+  // (Collision_checker::snap), exact doubles, so AK's point intervals are
+  // EK's numbers.
+  Pair_result<EFT> exact_copy(const Pair_result<AFT>& found) const
+  {
+    Pair_result<EFT> r;
+    r.a = found.a;
+    r.b = found.b;
+    r.collide = r.has_witness = r.witness_verified = true;
+    for (int q = 0; q < 4; ++q) {
+      if (!found.witness[q].is_point()) throw std::logic_error("internal error: an interval witness is not a point");
+      r.witness[q] = ek_.from_rational(Rational(found.witness[q].inf()));
+    }
+    return r;
+  }
 
   // AK's model, each object's S-bounds (EK's where AK fails), and the sweep's
   // pairs. False when AK cannot build the model: the whole run goes to EK.
@@ -290,6 +314,7 @@ private:
     stats.exact_witness_replays = witness_replays_.load();
     stats.exact_regions = exact_regions_.load();
     stats.exact_plane_tests = exact_planes_.load();
+    stats.witnesses_by_intervals = witnesses_by_intervals_.load();
   }
 
   static double seconds_since(std::chrono::steady_clock::time_point t)

@@ -357,7 +357,7 @@ private:
     return p;
   }
 
-  std::optional<Inside_point<FT>> classify(const Formula& f, const V& base, const V& l, const FT& s)
+  std::optional<V> classify(const Formula& f, const V& base, const V& l, const FT& s)
   {
     ++stats_.points_classified;
     std::vector<std::size_t> through;
@@ -377,7 +377,28 @@ private:
     std::optional<V> d = hood.find_inside(l, normals, inside);
     stats_.cells_tested += hood.cells_tested();
     if (!d) return std::nullopt;
-    return Inside_point<FT>{point_along(base, s, l), *d};
+    V p = point_along(base, s, l);
+    if (through.empty()) return p;
+    return point_along(p, step_into_cell(through, *d, s), *d);
+  }
+
+  // regularised-semantics item 3: how far to go along d, from the point at s
+  // on the line, into the open cell found inside. The planes through the
+  // point are those d was chosen against; every other plane not parallel to
+  // d is met at |h| / |n.d|, and half the least of those crosses none.
+  FT step_into_cell(const std::vector<std::size_t>& through, const V& d, const FT& s) const
+  {
+    bool any = false;
+    FT best(1);
+    for (std::size_t p = 0, t = 0; p < planes_.size(); ++p) {
+      if (t < through.size() && through[t] == p) { ++t; continue; }
+      FT nd = dot(planes_[p].n, d);
+      if (k_.sign(nd) == CGAL::ZERO) continue;
+      FT q = Number_ops<FT>::magnitude(at_base_[p] + s * along_[p]) / Number_ops<FT>::magnitude(nd);
+      best = any ? Number_ops<FT>::lower(best, q) : q;
+      any = true;
+    }
+    return best / FT(2);
   }
 };
 

@@ -6,6 +6,7 @@
 #ifndef CLASH4D_CORE_KERNEL_BASE_H
 #define CLASH4D_CORE_KERNEL_BASE_H
 
+#include "core/Number_ops.h"
 #include "core/kernel_ft4.h"
 #include <CGAL/Uncertain.h>
 #include <CGAL/enum.h>
@@ -19,10 +20,30 @@ public:
 
   const Derived& derived() const { return static_cast<const Derived&>(*this); }
 
-  // For heuristic choices only, where either answer is valid (which frame
-  // fits a region better): exact here; an approximate kernel may answer
-  // either way when it cannot tell, instead of failing.
-  bool prefer_less(const FT& a, const FT& b) const { return less(a, b); }
+  // The dyadic grid of the search: multiples of 2^-grid_bits. Choices that
+  // are heuristics (when to stop the S-bound passes, which frame to fit a
+  // region in) are made on grid points, so that every kernel certifies them
+  // alike and an interval run takes the rational run's path.
+  static constexpr int grid_bits = 20;
+
+  // The grid point nearest to x. Rounding jumps halfway between grid points,
+  // away from the integers and short binary fractions scene values sit on,
+  // so an interval around such a value still has one grid point.
+  FT grid_point(const FT& x) const
+  {
+    return derived().floor_to_grid(x + derived().power_of_two(-grid_bits - 1), grid_bits);
+  }
+  bool same_on_grid(const FT& a, const FT& b) const
+  {
+    return Number_ops<FT>::same(a, b) || compare(grid_point(a), grid_point(b)) == CGAL::ZERO;
+  }
+  bool less_on_grid(const FT& a, const FT& b) const { return less(grid_point(a), grid_point(b)); }
+
+  // x rounded to the nearest multiple of 2^-bits (bits >= 0).
+  FT round_to_grid(const FT& x, int bits) const
+  {
+    return derived().floor_to_grid(x + derived().power_of_two(-bits - 1), bits);
+  }
 
   // For conservative filters only (the pair sweep): true unless x is known
   // not to be positive. An interval kernel answers true when unsure.

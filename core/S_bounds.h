@@ -54,7 +54,8 @@ public:
     return changed;
   }
 
-  // Up then Down until nothing shrinks or max_passes; returns the passes run.
+  // Up then Down until no bound moves by a grid step, or max_passes; returns
+  // the passes run.
   int settle(const Csg_model<FT>& m, Bounds& beta, int max_passes) const
   {
     int passes = 0;
@@ -145,13 +146,13 @@ private:
     return k_.compare(th, tl) == CGAL::POSITIVE;
   }
 
-  // beta <- beta meet s; true when it changed.
+  // beta <- beta meet s; true when it moved by a grid step (Box.h).
   bool shrink(Box3& beta, const Box3& s) const
   {
     Box3 r = normalised(meet(beta, s));
-    if (same_box(r, beta)) return false;
+    bool changed = !same_on_grid(k_, r, beta);
     beta = r;
-    return true;
+    return changed;
   }
 };
 

@@ -9,20 +9,17 @@
 
 namespace clash4d {
 
-// A point of the region and a direction into an open cell inside the formula
-// next to it (zero when the point is already inside an open cell).
-template <class FT>
-struct Inside_point {
-  Vector4<FT> point;
-  Vector4<FT> direction;
-};
-
 template <class FT>
 struct Search_goal {
   bool earliest = false;
   bool found = false;
   bool improved = false;        // set whenever a better point is recorded
-  Inside_point<FT> inside;      // where the witness is stepped from
+  // A point of an open cell inside the formula: on none of the formula's
+  // planes or the region's faces (the witness is made from it).
+  Vector4<FT> inside{};
+  // False when the point was found by another kernel (a filtered run's
+  // region conquered exactly, core/Divide_and_conquer.h): found, not known.
+  bool inside_known = false;
   // Earliest mode: the least time seen so far over the closure of the
   // collision region (regularised-semantics item 5: a vertex of the
   // arrangement), and the point there.
@@ -44,10 +41,10 @@ struct Search_goal {
     return !found || (earliest && t_from < t_star);
   }
 
-  void record(const Inside_point<FT>& in, const Vector4<FT>& lowest)
+  void record(const Vector4<FT>& in, const Vector4<FT>& lowest)
   {
     if (found && !(lowest[3] < t_star)) return;
-    found = improved = true;
+    found = improved = inside_known = true;
     inside = in;
     t_star = lowest[3];
     contact = lowest;

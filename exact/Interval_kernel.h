@@ -20,13 +20,12 @@ namespace clash4d {
 
 using Interval = CGAL::Interval_nt<false>;
 
-// Enclosures of min and max, no decision (see core/Number_ops.h). Two
-// intervals with the same bounds count as the same S-bound: that can only end
-// the S-bound passes early, which keeps the bounds valid.
+// Enclosures of min, max and |a|, no decision (see core/Number_ops.h).
 template <>
 struct Number_ops<Interval> {
   static Interval lower(const Interval& a, const Interval& b) { return CGAL::min(a, b); }
   static Interval upper(const Interval& a, const Interval& b) { return CGAL::max(a, b); }
+  static Interval magnitude(const Interval& a) { return CGAL::abs(a); }
   static bool same(const Interval& a, const Interval& b) { return a.is_same(b); }
 };
 
@@ -37,11 +36,8 @@ public:
   CGAL::Sign sign(const FT& x) const { return CGAL::make_certain(CGAL::sign(x)); }
   bool possibly_positive(const FT& x) const { return CGAL::possibly(CGAL::sign(x) == CGAL::POSITIVE); }
   CGAL::Uncertain<bool> is_nonnegative(const FT& x, bool strict) const { return strict ? x > 0 : x >= 0; }
-  // Not less unless certainly less: what cannot be told apart is most often
-  // an exact tie (two S-bounds narrowed to the same meet), which the exact
-  // kernel also answers "not less".
-  bool prefer_less(const FT& a, const FT& b) const { return a.sup() < b.inf(); }
   FT from_rational(const Rational& q) const { return FT(CGAL::to_interval(q)); }
+  FT power_of_two(int e) const { return FT(std::ldexp(1.0, e)); }
   // Certain only when both bounds round to the same grid point (then a point
   // interval: grid values are exact doubles while bits and x are moderate).
   FT floor_to_grid(const FT& x, int bits) const
@@ -50,6 +46,21 @@ public:
     if (lo != std::ldexp(std::floor(std::ldexp(x.sup(), bits)), -bits))
       throw CGAL::Uncertain_conversion_exception("a region face between two grid points");
     return FT(lo);
+  }
+  // Certain when both bounds are positive and give the same exponent.
+  int grid_exponent(const FT& x) const
+  {
+    int lo = 0, hi = 0;
+    if (!(x.inf() > 0) || (std::frexp(x.inf(), &lo), std::frexp(x.sup(), &hi), lo != hi))
+      throw CGAL::Uncertain_conversion_exception("a witness's room between two powers of two");
+    return 1 - lo;
+  }
+  // Identical enclosures hold values on one side of every grid jump when
+  // their grid point is certain; otherwise the grid points decide.
+  bool same_on_grid(const FT& a, const FT& b) const
+  {
+    FT ga = grid_point(a);
+    return a.is_same(b) || ga.is_same(grid_point(b));
   }
   // Statistics only (answers are never printed from intervals): a point
   // interval is an exact number, otherwise the enclosure "~[inf, sup]".

@@ -32,6 +32,35 @@ Rational floor_to_grid(const Rational& q, int bits)
   return out;
 }
 
+Rational power_of_two(int e)
+{
+  mpq_t r;
+  mpq_init(r);
+  mpq_set_ui(r, 1, 1);
+  if (e >= 0) mpq_mul_2exp(r, r, static_cast<mp_bitcnt_t>(e));
+  else mpq_div_2exp(r, r, static_cast<mp_bitcnt_t>(-e));
+  Rational out(r);
+  mpq_clear(r);
+  return out;
+}
+
+int grid_exponent(const Rational& q)
+{
+  // floor(log2 q) is e = bits(num) - bits(den) or one less: e holds when
+  // num >= den * 2^e.
+  const mpz_srcptr num = mpq_numref(q.mpq()), den = mpq_denref(q.mpq());
+  long e = static_cast<long>(mpz_sizeinbase(num, 2)) - static_cast<long>(mpz_sizeinbase(den, 2));
+  mpz_t a, b;
+  mpz_init_set(a, num);
+  mpz_init_set(b, den);
+  if (e >= 0) mpz_mul_2exp(b, b, static_cast<mp_bitcnt_t>(e));
+  else mpz_mul_2exp(a, a, static_cast<mp_bitcnt_t>(-e));
+  if (mpz_cmp(a, b) < 0) --e;
+  mpz_clear(a);
+  mpz_clear(b);
+  return static_cast<int>(-e);
+}
+
 double round_to_nearest(const Rational& q)
 {
   mpfr_t r;

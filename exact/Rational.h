@@ -20,8 +20,14 @@ std::string to_string(const Rational& q);
 // than "the nearest double" the spec promises. Returns +-inf on overflow.
 double round_to_nearest(const Rational& q);
 
-// The largest multiple of 2^-bits at or below q.
+// The largest multiple of 2^-bits at or below q (bits >= 0).
 Rational floor_to_grid(const Rational& q, int bits);
+
+// 2^e, exactly.
+Rational power_of_two(int e);
+
+// The least k with 2^-k <= q, for q > 0 (that is, -floor(log2 q)).
+int grid_exponent(const Rational& q);
 
 } // namespace clash4d
 

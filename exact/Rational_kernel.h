@@ -17,6 +17,8 @@ public:
   FT from_rational(const Rational& q) const { return q; }
   Rational to_rational(const FT& x) const { return x; }
   FT floor_to_grid(const FT& x, int bits) const { return clash4d::floor_to_grid(x, bits); }
+  FT power_of_two(int e) const { return clash4d::power_of_two(e); }
+  int grid_exponent(const FT& x) const { return clash4d::grid_exponent(x); }
   std::string to_text(const FT& x) const { return to_string(x); }
 };
 

@@ -26,6 +26,13 @@ public:
   double from_rational(const Rational& q) const;
   Rational to_rational(double x) const { return Rational(x); }
   double floor_to_grid(double x, int bits) const { return std::ldexp(std::floor(std::ldexp(x, bits)), -bits); }
+  double power_of_two(int e) const { return std::ldexp(1.0, e); }
+  int grid_exponent(double x) const
+  {
+    int e = 0;
+    std::frexp(x, &e);
+    return 1 - e;
+  }
   // The shortest decimal that reads back to the same double (spec: output).
   std::string to_text(double x) const;
 
