@@ -130,6 +130,7 @@ json stats_json(const Check_stats& s)
           {"exact_witness_runs", s.exact_witness_runs},
           {"exact_witness_replays", s.exact_witness_replays},
           {"exact_regions", s.exact_regions},
+          {"exact_lines", s.exact_lines},
           {"exact_plane_tests", s.exact_plane_tests},
           {"witnesses_by_intervals", s.witnesses_by_intervals},
           {"seconds", {{"model", s.seconds_model}, {"sweep", s.seconds_sweep}, {"sbounds", s.seconds_sbounds},

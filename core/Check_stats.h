@@ -38,15 +38,16 @@ struct Check_stats {
   // exact_witness_runs: colliding pairs rerun in rationals to construct
   // their witness, t* and contact point exactly; exact_witness_replays: those
   // of them whose rational run went straight to the interval run's point
-  // (core/Search_trail.h) instead of searching again; exact_regions:
-  // regions whose generate-and-test met a sign the intervals could not
-  // certify, each then conquered in rationals alone (the run goes on);
+  // (core/Search_trail.h) instead of searching again; exact_regions and
+  // exact_lines: lines of generate-and-test with a sign the intervals could
+  // not certify, each then decided in rationals alone (the run goes on), and
+  // the regions they were in;
   // exact_plane_tests: pairs of planes the intervals could not tell apart
   // or identify (parallel faces), decided on the rational planes instead;
   // witnesses_by_intervals: colliding pairs whose witness the interval run
   // made itself, on a path certified to be the rational run's (no rerun).
   std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_witness_replays = 0, exact_regions = 0,
-              exact_plane_tests = 0, witnesses_by_intervals = 0;
+              exact_lines = 0, exact_plane_tests = 0, witnesses_by_intervals = 0;
   // Time per stage, seconds
   double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
 
@@ -63,6 +64,7 @@ struct Check_stats {
     if (o.max_leaves_at_conquer > max_leaves_at_conquer) max_leaves_at_conquer = o.max_leaves_at_conquer;
     if (!o.conquered_box.empty()) conquered_box = o.conquered_box;
     lines += o.lines; points_classified += o.points_classified; cells_tested += o.cells_tested;
+    exact_lines += o.exact_lines;
     seconds_sbounds += o.seconds_sbounds; seconds_divide += o.seconds_divide; seconds_witness += o.seconds_witness;
   }
 

@@ -78,19 +78,19 @@ public:
   // (core/Filtered_runner.h): make the witness only when this run's path is
   // certified to be the exact run's (an any-witness search, its trail not
   // approximate, its point its own) and every sign and rounding on the way
-  // is certain, otherwise report the verdict only; and hand the regions it
-  // cannot conquer to `exact` (Exact_region), with the pair, the sub-span's
-  // index and the frame, instead of failing.
-  // Likewise `same` says whether two table entries are one plane
+  // is certain, otherwise report the verdict only; hand the lines it cannot
+  // decide to `exact` (Exact_lines, as Generate_and_test::Exact_lines with
+  // the pair, the sub-span's index and the frame), and let `same` say
+  // whether two table entries are one plane when it cannot tell
   // (Exact_proportional, core/Hyperplane4.h's proportional).
-  using Exact_region = std::function<bool(int a, int b, std::size_t span, const std::array<bool, 3>& frame_of_a,
-                                          const Formula& f, const Box4& region, Search_trail& at)>;
+  using Exact_lines = std::function<typename Generate_and_test<K>::Line_decider(
+      int a, int b, std::size_t span, const std::array<bool, 3>& frame_of_a, const Plane_layout&, const Box4& region)>;
   using Exact_proportional = std::function<int(int a, int b, std::size_t span, const std::array<bool, 3>& frame_of_a,
                                                std::size_t h, std::size_t g)>;
-  void as_filter(Exact_region exact, Exact_proportional same)
+  void as_filter(Exact_lines exact, Exact_proportional same)
   {
     certified_witness_only_ = true;
-    exact_region_ = std::move(exact);
+    exact_lines_ = std::move(exact);
     exact_proportional_ = std::move(same);
   }
 
@@ -103,19 +103,6 @@ public:
     Vector3<FT> shear;
     for (int q = 0; q < 3; ++q) shear[q] = !use_sbounds_ ? FT(0) : frame_of_a[q] ? A.v[q] : B.v[q];
     return plane_table(A, B, shear, frame_of_a, groups);
-  }
-
-  // Generate-and-test of one conquered region of check_span, in this kernel
-  // (for a run in another kernel that could not decide it): true when the
-  // region holds a point inside both objects; `at` records the line.
-  bool region_has_inside(int a, int b, std::size_t span_index, const std::array<bool, 3>& frame_of_a,
-                         const Formula& f, const Box4& region, Search_trail& at)
-  {
-    Motion_groups<FT> groups;
-    std::vector<H> table = span_table(a, b, span_index, frame_of_a, groups);
-    Search_goal<FT> goal;
-    Generate_and_test<K>(k_, table, stats_, &at, &groups).run(f, region, goal);
-    return goal.found;
   }
 
   // earliest: find t* (§5) rather than stopping at the first witness;
@@ -192,7 +179,7 @@ private:
   std::vector<int> span_passes_;           // this span's S-bound pass counts, in order
   std::array<bool, 3> frame_of_a_{};       // this span's frame choice per axis
   bool certified_witness_only_ = false;
-  Exact_region exact_region_;
+  Exact_lines exact_lines_;
   Exact_proportional exact_proportional_;
 
   bool replaying() const { return trail_ && trail_->replaying(); }
@@ -276,9 +263,9 @@ private:
     ss.leaves = formula.leaf_count();
     stats_.spans.push_back(ss);
     Divide_and_conquer<K> dc(k_, table, stats_, trail_, &groups);
-    if (exact_region_)
-      dc.conquer_undecided_with([&](const Formula& f, const Box4& box, Search_trail& at) {
-        return exact_region_(a, b, span_index_, frame_of_a_, f, box, at);
+    if (exact_lines_)
+      dc.lines_undecided_with([&](const Plane_layout& layout, const Box4& box) {
+        return exact_lines_(a, b, span_index_, frame_of_a_, layout, box);
       });
     if (exact_proportional_)
       dc.proportional_undecided_with([&](std::size_t h, std::size_t g) {
@@ -650,6 +637,9 @@ private:
   // its value. The result is a function of the exact p alone: a kernel that
   // only encloses p (intervals) finds the same dyadic point or fails the
   // filter. And users read 1/2 rather than 1999999999/4000000000.
+  // bits is taken for 13/16 of the room: the search makes distances that
+  // are powers of two (grid faces, halved steps), and an enclosure of an
+  // exact power of two could not say which side of it the room is on.
   V4 snap(const V4& p, const std::vector<H>& planes, const std::vector<FT>& values) const
   {
     FT least = Number_ops<FT>::magnitude(values[0]), widest = Number_ops<FT>::magnitude(planes[0].n[0]);
@@ -657,7 +647,7 @@ private:
       least = Number_ops<FT>::lower(least, Number_ops<FT>::magnitude(values[i]));
       for (const FT& n : planes[i].n) widest = Number_ops<FT>::upper(widest, Number_ops<FT>::magnitude(n));
     }
-    FT room = least / (FT(4) * widest);
+    FT room = FT(13) * least / (FT(64) * widest);
     if (k_.sign(room) != CGAL::POSITIVE) return p;   // only with a tolerance: not generic
     int bits = std::max(0, k_.grid_exponent(room));
     V4 out;

@@ -56,7 +56,7 @@ public:
       conquered_ = join(conquered_, region);
       stats_.leaves_at_conquer += leaves;
       stats_.max_leaves_at_conquer = std::max(stats_.max_leaves_at_conquer, leaves);
-      conquer(f, region, goal);
+      conquer_.run(f, region, goal);
       note_found(goal, true);
       return;
     }
@@ -72,14 +72,13 @@ public:
     }
   }
 
-  // An approximate kernel's conquer that meets a sign it cannot certify asks
-  // `exact` (true: the region holds a point inside) instead of failing the
-  // whole run; any-witness searches only. `exact` is given the simplified
-  // formula and the region (the approximate one, which encloses the exact),
-  // and on true says in `at` on which line it found the point, when that is
-  // the exact run's own line (line_known).
-  using Exact_conquer = std::function<bool(const Formula&, const Box4&, Search_trail& at)>;
-  void conquer_undecided_with(Exact_conquer exact) { exact_ = std::move(exact); }
+  // An approximate kernel's conquer that meets a line it cannot certify
+  // asks `exact` (Generate_and_test::Exact_lines) instead of failing the
+  // whole run; any-witness searches only.
+  void lines_undecided_with(typename Generate_and_test<K>::Exact_lines exact)
+  {
+    conquer_.lines_undecided_with(std::move(exact));
+  }
   void proportional_undecided_with(std::function<int(std::size_t, std::size_t)> exact)
   {
     conquer_.proportional_undecided_with(std::move(exact));
@@ -147,26 +146,6 @@ private:
   Generate_and_test<K> conquer_;
   Search_trail* trail_;
   std::vector<int> path_;                 // child indices from the root region to here
-  Exact_conquer exact_;
-
-  void conquer(const Formula& f, const Box4& region, Search_goal<FT>& goal)
-  {
-    if (!exact_ || goal.earliest) return conquer_.run(f, region, goal);
-    try {
-      conquer_.run(f, region, goal);
-    } catch (const CGAL::Uncertain_conversion_exception&) {
-      Search_trail at;
-      if (!exact_(f, region, at)) return;
-      // Found; the point is for the exact run to construct, on that line or
-      // (line unknown) by conquering this whole region.
-      goal.found = goal.improved = true;
-      goal.inside_known = false;
-      if (trail_) {
-        trail_->line = at.line;
-        trail_->line_known = at.line_known;
-      }
-    }
-  }
 
   bool decided(CGAL::Uncertain<bool> u) const
   {

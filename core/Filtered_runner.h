@@ -63,14 +63,12 @@ public:
           Protector protect;
           AFT aceiling = ceiling ? ak_.from_rational(ek_.to_rational(*ceiling)) : AFT(0);
           Collision_checker<AK> checker(ak_, amodel_, asettled_, astats, use_sbounds_);
-          Exact_planes planes;
+          Exact_span exact;
           checker.as_filter(
-              [&](int a, int b, std::size_t span, const std::array<bool, 3>& frame, const Formula& f,
-                  const Box<AFT, 4>& region, Search_trail& at) {
-                return exact_region(a, b, span, frame, f, region, at, astats);
-              },
+              [&](int a, int b, std::size_t span, const std::array<bool, 3>& frame, const Plane_layout& layout,
+                  const Box<AFT, 4>& region) { return exact.lines(*this, a, b, span, frame, layout, region); },
               [&](int a, int b, std::size_t span, const std::array<bool, 3>& frame, std::size_t h, std::size_t g) {
-                return planes.proportional(*this, a, b, span, frame, h, g);
+                return exact.proportional(*this, a, b, span, frame, h, g);
               });
           if (!options.earliest) checker.follow(&trail);
           Pair_result<AFT> found = checker.check_pair(a, b, options.earliest, ceiling ? &aceiling : nullptr);
@@ -221,6 +219,7 @@ private:
       exact_only_[i] = 1;
       need_exact(i);
       // Only the sweep reads it: the root box, EK's enclosed in AK's numbers.
+      Protector protect;
       return typename Collision_checker<AK>::Bounds(1, enclose(esettled_[i][0]));
     }
   }
@@ -238,61 +237,75 @@ private:
     return b;
   }
 
-  // A region AK's generate-and-test could not decide, conquered by EK (the
-  // filter at the level of one region): AK's region widened to the doubles
-  // that enclose it, which contains EK's own region, with the planes of EK's
-  // model. The formula, simplified by AK over its region with certified
-  // signs, holds over EK's region; over the sliver outside it may only add
-  // points inside, and a point inside sends the pair to EK anyway. When AK's
-  // region is exact (grid faces: point intervals) it is EK's own, and the
-  // line found is the one EK's run will find (`at`, for the trail).
-  bool exact_region(int a, int b, std::size_t span, const std::array<bool, 3>& frame, const Formula& f,
-                    const Box<AFT, 4>& region, Search_trail& at, Check_stats& stats)
-  {
-    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-    ++exact_regions_;
-    need_exact(a);
-    need_exact(b);
-    Box<EFT, 4> outer;
-    bool exact = true;
-    for (int q = 0; q < 4; ++q) {
-      auto lo = CGAL::to_interval(region.lo[q]), hi = CGAL::to_interval(region.hi[q]);
-      exact = exact && lo.first == lo.second && hi.first == hi.second;
-      outer.set(q, EFT(lo.first), EFT(hi.second));
-    }
-    bool found = Collision_checker<EK>(ek_, emodel_, esettled_, stats, use_sbounds_)
-                     .region_has_inside(a, b, span, frame, f, outer, at);
-    at.line_known = exact;
-    return found;
-  }
-
-  // EK's plane table of one span of a pair's AK run, made when AK first
-  // cannot tell whether two entries are one plane, and the answers so far.
-  struct Exact_planes {
+  // EK's side of one pair's AK run: the plane table of the sub-span AK is
+  // in, made when AK first needs it, and the planes AK could not compare.
+  struct Exact_span {
     std::size_t span = static_cast<std::size_t>(-1);
     std::vector<Hyperplane4<EFT>> table;
+    Motion_groups<EFT> groups;
     std::map<std::pair<std::size_t, std::size_t>, int> answers;
+
+    void enter(Filtered_runner& runner, int a, int b, std::size_t s, const std::array<bool, 3>& frame)
+    {
+      if (s == span) return;
+      runner.need_exact(a);
+      runner.need_exact(b);
+      Check_stats ignored;
+      groups = Motion_groups<EFT>();
+      table = Collision_checker<EK>(runner.ek_, runner.emodel_, runner.esettled_, ignored, runner.use_sbounds_)
+                  .span_table(a, b, s, frame, groups);
+      answers.clear();
+      span = s;
+    }
 
     int proportional(Filtered_runner& runner, int a, int b, std::size_t s, const std::array<bool, 3>& frame,
                      std::size_t h, std::size_t g)
     {
       CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-      if (s != span) {
-        runner.need_exact(a);
-        runner.need_exact(b);
-        Check_stats ignored;
-        Motion_groups<EFT> groups;
-        table = Collision_checker<EK>(runner.ek_, runner.emodel_, runner.esettled_, ignored, runner.use_sbounds_)
-                    .span_table(a, b, s, frame, groups);
-        answers.clear();
-        span = s;
-      }
+      enter(runner, a, b, s, frame);
       auto [it, fresh] = answers.try_emplace({h, g}, 0);
       if (fresh) {
         ++runner.exact_planes_;
         it->second = clash4d::proportional(runner.ek_, table.at(h), table.at(g));
       }
       return it->second;
+    }
+
+    // The lines of one AK conquer that AK cannot decide, decided by EK on
+    // the same layout of EK's planes (the filter at the level of one line).
+    // EK's region is AK's widened to the doubles that enclose it, which
+    // contains EK's own region: the formula, simplified by AK over its
+    // region with certified signs, holds over EK's region, and over the
+    // sliver outside it may only add points inside, which send the pair to
+    // EK anyway. When AK's region is exact (grid faces: point intervals) it
+    // is EK's own, and a line found is the one EK's run will find (`known`).
+    typename Generate_and_test<AK>::Line_decider lines(Filtered_runner& runner, int a, int b, std::size_t s,
+                                                       const std::array<bool, 3>& frame, const Plane_layout& layout,
+                                                       const Box<AFT, 4>& region)
+    {
+      CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+      enter(runner, a, b, s, frame);
+      ++runner.exact_regions_;
+      Box<EFT, 4> outer;
+      bool exact = true;
+      for (int q = 0; q < 4; ++q) {
+        auto lo = CGAL::to_interval(region.lo[q]), hi = CGAL::to_interval(region.hi[q]);
+        exact = exact && lo.first == lo.second && hi.first == hi.second;
+        outer.set(q, EFT(lo.first), EFT(hi.second));
+      }
+      struct Conquer {
+        Check_stats stats;              // EK's counts stay out of the run's: AK counted the lines
+        Generate_and_test<EK> lines;
+        Conquer(const EK& k, const std::vector<Hyperplane4<EFT>>& t, const Motion_groups<EFT>& g)
+          : lines(k, t, stats, nullptr, &g) {}
+      };
+      auto conquer = std::make_shared<Conquer>(runner.ek_, table, groups);
+      conquer->lines.adopt(layout, outer);
+      return [conquer, exact](const Formula& f, std::size_t i, std::size_t j, std::size_t m, bool& known) {
+        CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+        known = exact;
+        return conquer->lines.line_has_inside(f, i, j, m);
+      };
     }
   };
 

@@ -24,12 +24,34 @@
 
 namespace clash4d {
 
+// Which hyperplanes a conquer works with and how the formula's leaves and
+// the region's faces map to them: the same in every kernel when the
+// interning decisions are certified, so another kernel can rebuild the
+// planes from its own table and decide a line the first could not.
+struct Plane_layout {
+  std::vector<long> entry;                               // per plane: its table entry, or -1 for a face
+  std::vector<int> face;                                 // per plane made from a face: 2 * axis + upper, else -1
+  std::vector<unsigned> moves_along;                     // per plane: bit g set when it contains group g's (r, 1)
+  std::vector<std::pair<std::size_t, int>> leaf_plane;   // table index -> (plane, orientation)
+  std::vector<std::pair<std::size_t, int>> face_plane;   // face 2 * axis + upper -> (plane, orientation)
+  std::size_t first_face = 0;                            // planes from here on are faces only
+};
+
 template <class K>
 class Generate_and_test {
 public:
   using FT = typename K::FT;
   using H = Hyperplane4<FT>;
   using V = Vector4<FT>;
+
+  // For an approximate kernel: a line with a sign it cannot certify is
+  // decided by another kernel instead of failing the conquer. Exact_lines
+  // is called once per conquer, at its first such line, with the layout and
+  // the region, and returns the decider of that conquer's lines: true when
+  // the line holds a point inside; `known` says whether that is the exact
+  // run's own line (core/Filtered_runner.h).
+  using Line_decider = std::function<bool(const Formula&, std::size_t, std::size_t, std::size_t, bool& known)>;
+  using Exact_lines = std::function<Line_decider(const Plane_layout&, const Box<FT, 4>&)>;
 
   Generate_and_test(const K& k, const std::vector<H>& table, Check_stats& stats, Search_trail* trail = nullptr,
                     const Motion_groups<FT>* groups = nullptr)
@@ -49,13 +71,49 @@ public:
       trail_->diverged = trail_->diverged || !goal.found;
       return;
     }
+    Line_decider exact;
     for (std::size_t i = 0; i < n && !goal.done(); ++i)
       for (std::size_t j = i + 1; j < n && !goal.done(); ++j)
         for (std::size_t m = j + 1; m < n && !goal.done(); ++m) {
           bool before = goal.found;
-          on_line(f, i, j, m, goal);
+          if (!exact_lines_ || goal.earliest) on_line(f, i, j, m, goal);
+          else try {
+            on_line(f, i, j, m, goal);
+          } catch (const CGAL::Uncertain_conversion_exception&) {
+            if (!exact) exact = exact_lines_(layout_, region);
+            ++stats_.exact_lines;
+            bool known = false;
+            if (exact(f, i, j, m, known)) {
+              // The point is for the exact run to construct.
+              goal.found = goal.improved = true;
+              goal.inside_known = false;
+              if (trail_) trail_->line_known = known;
+            }
+          }
           if (trail_ && trail_->recording() && !before && goal.found) trail_->line = {i, j, m};
         }
+  }
+
+  // Any-witness searches only (earliest mode fails as the kernel does).
+  void lines_undecided_with(Exact_lines exact) { exact_lines_ = std::move(exact); }
+
+  // Another kernel's conquer, rebuilt in this one (Exact_lines): the
+  // layout's planes made from this kernel's table and region.
+  void adopt(const Plane_layout& layout, const Box<FT, 4>& region)
+  {
+    layout_ = layout;
+    planes_.clear();
+    for (std::size_t p = 0; p < layout.entry.size(); ++p)
+      planes_.push_back(layout.entry[p] >= 0 ? table_[layout.entry[p]] : face(region, layout.face[p]));
+    resize_values();
+  }
+
+  // One line of an adopted conquer: whether it holds a point inside.
+  bool line_has_inside(const Formula& f, std::size_t i, std::size_t j, std::size_t m)
+  {
+    Search_goal<FT> goal;
+    on_line(f, i, j, m, goal);
+    return goal.found;
   }
 
   // For an approximate kernel: which table entries are one plane, when it
@@ -74,9 +132,9 @@ public:
   void skeleton(const Formula& f, const Box<FT, 4>& region, std::vector<std::array<V, 2>>& out)
   {
     collect_planes(f, region);
-    for (std::size_t i = 0; i < first_face_; ++i)
-      for (std::size_t j = i + 1; j < first_face_; ++j)
-        for (std::size_t m = j + 1; m < first_face_; ++m) skeleton_line(f, i, j, m, out);
+    for (std::size_t i = 0; i < layout_.first_face; ++i)
+      for (std::size_t j = i + 1; j < layout_.first_face; ++j)
+        for (std::size_t m = j + 1; m < layout_.first_face; ++m) skeleton_line(f, i, j, m, out);
   }
 
 private:
@@ -86,10 +144,8 @@ private:
   Search_trail* trail_;
   const Motion_groups<FT>* groups_;
   std::vector<H> planes_;                 // distinct hyperplanes, region faces last
-  std::vector<unsigned> moves_along_;     // per plane: bit g set when it contains group g's (r, 1)
-  std::vector<long> first_entry_;         // per plane: the table entry it was made from, or -1
-  std::size_t first_face_ = 0;
-  std::vector<std::pair<std::size_t, int>> leaf_plane_;   // table index -> (plane, orientation)
+  Plane_layout layout_;                   // where they come from
+  Exact_lines exact_lines_;
   std::vector<FT> at_base_, along_;       // per plane: value at the base point, slope along l
   std::vector<int> sign_;                 // per plane at the current test point: -1, 0, +1
   std::array<std::size_t, 3> line_{};     // the planes that meet in the current line
@@ -98,18 +154,28 @@ private:
   // Index of h among planes_ (appending it if new) and its orientation;
   // `along` (core/Motion_groups.h) is what h is known to contain, and is
   // added to the plane's (a plane shared by two entries contains both).
-  // entry: h's index in the table (-1 for a region face).
-  std::pair<std::size_t, int> intern(const H& h, unsigned along = 0, long entry = -1)
+  // entry: h's index in the table, or -1 for the region face `face`.
+  std::pair<std::size_t, int> intern(const H& h, unsigned along, long entry, int face = -1)
   {
     for (std::size_t p = 0; p < planes_.size(); ++p)
       if (int o = same_plane(h, p, entry)) {
-        moves_along_[p] |= along;
+        layout_.moves_along[p] |= along;
         return {p, o};
       }
     planes_.push_back(h);
-    moves_along_.push_back(along);
-    first_entry_.push_back(entry);
+    layout_.moves_along.push_back(along);
+    layout_.entry.push_back(entry);
+    layout_.face.push_back(face);
     return {planes_.size() - 1, 1};
+  }
+
+  // Face 2 * a + upper of the region, inside <= 0: -x_a + lo <= 0 or x_a - hi <= 0.
+  static H face(const Box<FT, 4>& region, int which)
+  {
+    int a = which / 2;
+    V e{FT(0), FT(0), FT(0), FT(0)};
+    e[a] = FT(which % 2 ? 1 : -1);
+    return {e, which % 2 ? -region.hi[a] : region.lo[a]};
   }
 
   // The line where planes i, j and m meet (zero when they do not). Three
@@ -118,7 +184,7 @@ private:
   // written so.
   V line_direction(std::size_t i, std::size_t j, std::size_t m)
   {
-    unsigned common = moves_along_[i] & moves_along_[j] & moves_along_[m];
+    unsigned common = layout_.moves_along[i] & layout_.moves_along[j] & layout_.moves_along[m];
     line_group_ = -1;
     for (int g = 0; common && line_group_ < 0; ++g)
       if (common & (1u << g)) line_group_ = g;
@@ -144,48 +210,47 @@ private:
 
   int same_plane(const H& h, std::size_t p, long entry) const
   {
-    if (!exact_proportional_ || entry < 0 || first_entry_[p] < 0) return proportional(k_, h, planes_[p]);
+    long other = layout_.entry[p];
+    if (!exact_proportional_ || entry < 0 || other < 0) return proportional(k_, h, planes_[p]);
     try {
       return proportional(k_, h, planes_[p]);
     } catch (const CGAL::Uncertain_conversion_exception&) {
-      return exact_proportional_(static_cast<std::size_t>(entry), static_cast<std::size_t>(first_entry_[p]));
+      return exact_proportional_(static_cast<std::size_t>(entry), static_cast<std::size_t>(other));
     }
   }
 
   void collect_planes(const Formula& f, const Box<FT, 4>& region)
   {
     planes_.clear();
-    moves_along_.clear();
-    first_entry_.clear();
-    leaf_plane_.assign(table_.size(), {0, 0});
+    layout_ = Plane_layout();
+    layout_.leaf_plane.assign(table_.size(), {0, 0});
     for (const auto& t : f.code())
-      if (t.op == Formula::Op::Leaf && leaf_plane_[t.arg].second == 0)
-        leaf_plane_[t.arg] = intern(table_[t.arg], groups_ && groups_->group(t.arg) >= 0 ? 1u << groups_->group(t.arg) : 0u,
-                                    static_cast<long>(t.arg));
+      if (t.op == Formula::Op::Leaf && layout_.leaf_plane[t.arg].second == 0)
+        layout_.leaf_plane[t.arg] =
+            intern(table_[t.arg], groups_ && groups_->group(t.arg) >= 0 ? 1u << groups_->group(t.arg) : 0u,
+                   static_cast<long>(t.arg));
     // Region faces, inside <= 0; they may coincide with leaves, so intern too.
-    first_face_ = planes_.size();
-    face_plane_.clear();
-    for (int a = 0; a < 4; ++a) {
-      V e{FT(0), FT(0), FT(0), FT(0)};
-      e[a] = FT(-1);
-      face_plane_.push_back(intern({e, region.lo[a]}, face_along(a)));
-      e[a] = FT(1);
-      face_plane_.push_back(intern({e, -region.hi[a]}, face_along(a)));
-    }
+    layout_.first_face = planes_.size();
+    for (int which = 0; which < 8; ++which)
+      layout_.face_plane.push_back(intern(face(region, which), face_along(which / 2), -1, which));
+    resize_values();
+  }
+
+  void resize_values()
+  {
     at_base_.resize(planes_.size());
     along_.resize(planes_.size());
     sign_.resize(planes_.size());
   }
-  std::vector<std::pair<std::size_t, int>> face_plane_;
 
   Truth leaf_truth(std::uint32_t h) const
   {
-    int s = sign_[leaf_plane_[h].first] * leaf_plane_[h].second;
+    int s = sign_[layout_.leaf_plane[h].first] * layout_.leaf_plane[h].second;
     return s < 0 ? Truth::True : s > 0 ? Truth::False : Truth::Unknown;
   }
   bool inside_region() const
   {
-    for (const auto& fp : face_plane_)
+    for (const auto& fp : layout_.face_plane)
       if (sign_[fp.first] * fp.second >= 0) return false;
     return true;
   }
@@ -199,7 +264,7 @@ private:
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return;
     if (!goal.can_improve(Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
-    evaluate_planes(base, l, first_face_);
+    evaluate_planes(base, l, layout_.first_face);
     std::vector<FT> cuts{s_lo, s_hi};
     FT centre = (s_lo + s_hi) / FT(2);
     for (std::size_t p = 0; p < planes_.size(); ++p) {
@@ -209,7 +274,7 @@ private:
         continue;
       }
       // A face the line crosses bounds the segment: strictly inside between.
-      if (p >= first_face_) { sign_[p] = -1; continue; }
+      if (p >= layout_.first_face) { sign_[p] = -1; continue; }
       FT cut = -at_base_[p] / along_[p];
       if (k_.less(s_lo, cut) && k_.less(cut, s_hi)) cuts.push_back(cut);
       else sign_[p] = static_cast<int>(k_.sign(at_base_[p] + centre * along_[p]));
@@ -237,7 +302,7 @@ private:
   bool range_in_region(const V& base, const V& l, FT& s_lo, FT& s_hi)
   {
     bool has_lo = false, has_hi = false;
-    for (const auto& fp : face_plane_) {
+    for (const auto& fp : layout_.face_plane) {
       std::size_t p = fp.first;
       evaluate_plane(p, base, l);
       int e = k_.sign(along_[p]) * fp.second;
@@ -263,7 +328,7 @@ private:
   void evaluate_plane(std::size_t p, const V& base, const V& l)
   {
     bool holds = p == line_[0] || p == line_[1] || p == line_[2];
-    bool parallel = holds || (line_group_ >= 0 && (moves_along_[p] >> line_group_ & 1u));
+    bool parallel = holds || (line_group_ >= 0 && (layout_.moves_along[p] >> line_group_ & 1u));
     at_base_[p] = holds ? FT(0) : planes_[p].value(base);
     along_[p] = parallel ? FT(0) : dot(planes_[p].n, l);
   }
@@ -277,9 +342,9 @@ private:
     base = base_point(planes_[i], planes_[j], planes_[m], l);
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return {};
-    evaluate_planes(base, l, first_face_);
+    evaluate_planes(base, l, layout_.first_face);
     std::vector<FT> cuts{s_lo, s_hi};
-    for (std::size_t p = 0; p < first_face_; ++p) {
+    for (std::size_t p = 0; p < layout_.first_face; ++p) {
       if (k_.sign(along_[p]) == CGAL::ZERO) continue;
       FT cut = -at_base_[p] / along_[p];
       if (k_.less(s_lo, cut) && k_.less(cut, s_hi)) cuts.push_back(cut);
@@ -304,7 +369,7 @@ private:
   {
     ++stats_.points_classified;
     std::vector<std::size_t> through;
-    for (std::size_t p = 0; p < first_face_; ++p) {
+    for (std::size_t p = 0; p < layout_.first_face; ++p) {
       sign_[p] = static_cast<int>(k_.sign(at_base_[p] + s * along_[p]));
       if (sign_[p] == 0) through.push_back(p);
     }

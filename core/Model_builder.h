@@ -5,6 +5,7 @@
 #define CLASH4D_CORE_MODEL_BUILDER_H
 
 #include "core/Csg_model.h"
+#include "core/Polytope_ft.h"
 #include "scene/Scene.h"
 
 namespace clash4d {
@@ -15,6 +16,7 @@ template <class FT>
 struct Affine3 {
   std::array<Vector3<FT>, 3> R;   // rows
   Vector3<FT> b;
+  bool is_identity = false;       // no transform above: the primitive is used as read
 
   static Affine3 identity()
   {
@@ -22,6 +24,7 @@ struct Affine3 {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) a.R[i][j] = FT(i == j ? 1 : 0);
     a.b = {FT(0), FT(0), FT(0)};
+    a.is_identity = true;
     return a;
   }
   Vector3<FT> linear(const Vector3<FT>& v) const { return {dot(R[0], v), dot(R[1], v), dot(R[2], v)}; }
@@ -81,6 +84,18 @@ private:
   Csg_model<FT> model_;
 
   FT num(const Solid& s, std::size_t i) const { return k_.from_rational(s.numbers[i]); }
+
+  // Whether to read the reader's exact constructions (Solid::constructed)
+  // instead of computing them in FT: the interval kernel then encloses each
+  // exact coefficient as tightly as a number of the file, and keeps its
+  // exact zeros.
+  bool exact_read(const Solid& s) const { return K::reads_exact_constructions && !s.constructed.empty(); }
+  FT made(const Solid& s, std::size_t i) const { return k_.from_rational(s.constructed[i]); }
+  Vector3<FT> constructed3(const Solid& s, std::size_t i) const { return {made(s, i), made(s, i + 1), made(s, i + 2)}; }
+  Plane3<FT> constructed4(const Solid& s, std::size_t i) const
+  {
+    return {made(s, i), made(s, i + 1), made(s, i + 2), made(s, i + 3)};
+  }
   Vector3<FT> vec3(const Solid& s, std::size_t i) const { return {num(s, i), num(s, i + 1), num(s, i + 2)}; }
 
   int add(const Solid& s, const Affine3<FT>& T, int parent)
@@ -117,8 +132,10 @@ private:
     Primitive<FT> p;
     p.path = s.path;
     local_geometry(s, p);
-    for (auto& h : p.planes) h = T.apply(h);
-    for (auto& v : p.vertices) v = T.apply(v);
+    if (!T.is_identity) {
+      for (auto& h : p.planes) h = T.apply(h);
+      for (auto& v : p.vertices) v = T.apply(v);
+    }
     p.box = p.vertices.empty() ? halfspace_box(p.planes[0]) : vertex_box(p.vertices);
     return p;
   }
@@ -147,7 +164,11 @@ private:
       case K_::Convex: {
         for (std::size_t i = 0; i < s.numbers.size(); i += 4)
           p.planes.push_back({num(s, i), num(s, i + 1), num(s, i + 2), num(s, i + 3)});
-        for (const auto& t : s.triples) p.vertices.push_back(vertex_of(p.planes[t[0]], p.planes[t[1]], p.planes[t[2]]));
+        for (std::size_t i = 0; i < s.triples.size(); ++i) {
+          const auto& t = s.triples[i];
+          p.vertices.push_back(exact_read(s) ? constructed3(s, 3 * i)
+                                             : vertex_of(p.planes[t[0]], p.planes[t[1]], p.planes[t[2]]));
+        }
         break;
       }
       case K_::Prism: {
@@ -168,31 +189,16 @@ private:
       }
       case K_::Hull: {
         for (std::size_t i = 0; i < s.numbers.size(); i += 3) p.vertices.push_back(vec3(s, i));
-        for (const auto& t : s.triples) {
-          const auto &a = p.vertices[t[0]], &b = p.vertices[t[1]], &c = p.vertices[t[2]];
-          Vector3<FT> n = cross(Vector3<FT>{b[0] - a[0], b[1] - a[1], b[2] - a[2]},
-                                Vector3<FT>{c[0] - a[0], c[1] - a[1], c[2] - a[2]});
-          p.planes.push_back({n[0], n[1], n[2], -dot(n, a)});
+        for (std::size_t i = 0; i < s.triples.size(); ++i) {
+          const auto& t = s.triples[i];
+          p.planes.push_back(exact_read(s) ? constructed4(s, 4 * i)
+                                           : facet_plane(p.vertices[t[0]], p.vertices[t[1]], p.vertices[t[2]]));
         }
         break;
       }
       default:
         break;
     }
-  }
-
-  // The point on three planes, by Cramer's rule.
-  Vector3<FT> vertex_of(const Plane3<FT>& a, const Plane3<FT>& b, const Plane3<FT>& c) const
-  {
-    Vector3<FT> na{a[0], a[1], a[2]}, nb{b[0], b[1], b[2]}, nc{c[0], c[1], c[2]};
-    FT det = determinant3(na, nb, nc);
-    Vector3<FT> rhs{-a[3], -b[3], -c[3]}, v;
-    for (int axis = 0; axis < 3; ++axis) {
-      Vector3<FT> ra = na, rb = nb, rc = nc;
-      ra[axis] = rhs[0]; rb[axis] = rhs[1]; rc[axis] = rhs[2];
-      v[axis] = determinant3(ra, rb, rc) / det;
-    }
-    return v;
   }
 
   Box<FT, 3> vertex_box(const std::vector<Vector3<FT>>& vs) const

@@ -12,6 +12,7 @@ namespace clash4d {
 class Rational_kernel : public Kernel_base<Rational_kernel, Rational> {
 public:
   static constexpr const char* name() { return "rational"; }
+  static constexpr bool reads_exact_constructions = true;   // the same numbers, not computed again (core/Model_builder.h)
   static constexpr bool is_exact = true;
   CGAL::Sign sign(const FT& x) const { return CGAL::sign(x); }
   FT from_rational(const Rational& q) const { return q; }

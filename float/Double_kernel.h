@@ -15,6 +15,7 @@ class Double_kernel : public Kernel_base<Double_kernel, double> {
 public:
   explicit Double_kernel(double tolerance = 0) : tolerance_(tolerance) {}
   static constexpr const char* name() { return "double"; }
+  static constexpr bool reads_exact_constructions = false;   // float code computes its own (core/Model_builder.h)
   static constexpr bool is_exact = false;
   double tolerance() const { return tolerance_; }
   CGAL::Sign sign(double x) const
@@ -25,8 +26,12 @@ public:
   // double range cannot be read by this instantiation (std::range_error).
   double from_rational(const Rational& q) const;
   Rational to_rational(double x) const { return Rational(x); }
-  double floor_to_grid(double x, int bits) const { return std::ldexp(std::floor(std::ldexp(x, bits)), -bits); }
-  double power_of_two(int e) const { return std::ldexp(1.0, e); }
+  double floor_to_grid(double x, int bits) const
+  {
+    if (bits > 900) return std::ldexp(std::floor(std::ldexp(x, bits)), -bits);
+    return std::floor(x * power_of_two_double(bits)) * power_of_two_double(-bits);
+  }
+  double power_of_two(int e) const { return power_of_two_double(e); }
   int grid_exponent(double x) const
   {
     int e = 0;

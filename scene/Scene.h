@@ -23,6 +23,11 @@ struct Solid {
   // same polytope: hull facets as point triples (outward by right-hand rule),
   // convex vertices as triples of half-space indices.
   std::vector<std::array<int, 3>> triples;
+  // Their exact geometry, made by the reader (core/Polytope_ft.h), for the
+  // kernels that read constructions rather than compute them
+  // (K::reads_exact_constructions): hull facet planes a b c d, convex
+  // vertices x y z, in the order of triples; empty when not made.
+  std::vector<Rational> constructed;
 };
 
 struct Motion {

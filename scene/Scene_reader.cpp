@@ -1,4 +1,5 @@
 #include "scene/Scene_reader.h"
+#include "core/Polytope_ft.h"
 #include "exact/Exact_validation.h"
 #include "scene/Input_error.h"
 #include "scene/Json_reader.h"
@@ -147,6 +148,10 @@ void read_convex(const Json_value& v, Solid& s, const std::string& path)
   std::string problem = convex_problem(planes);
   if (!problem.empty()) throw Input_error(path, problem);
   s.triples = convex_vertex_triples(planes);
+  for (const auto& t : s.triples) {
+    Rational3 v = vertex_of(planes[t[0]], planes[t[1]], planes[t[2]]);
+    s.constructed.insert(s.constructed.end(), v.begin(), v.end());
+  }
 }
 
 void read_prism(const Json_value& v, Solid& s, const std::string& path)
@@ -182,6 +187,10 @@ void read_hull(const Json_value& v, Solid& s, const std::string& path)
     throw Input_error(path, e.what());
   }
   for (const auto& p : points) s.numbers.insert(s.numbers.end(), p.begin(), p.end());
+  for (const auto& t : s.triples) {
+    Rational4 plane = facet_plane(points[t[0]], points[t[1]], points[t[2]]);
+    s.constructed.insert(s.constructed.end(), plane.begin(), plane.end());
+  }
 }
 
 Solid read_solid(const Json_value& v, const std::string& path)

@@ -1,9 +1,12 @@
 #define BOOST_TEST_MODULE numbers
 #include <boost/test/unit_test.hpp>
 
+#include "exact/Interval_kernel.h"
 #include "float/Double_kernel.h"
 #include "scene/Number_text.h"
+#include <CGAL/FPU.h>
 #include <cmath>
+#include <random>
 
 using namespace clash4d;
 
@@ -66,6 +69,35 @@ BOOST_AUTO_TEST_CASE(double_reading_rounds_to_nearest)
   Rational just_below_one = Rational(1) - Rational(1, 1) / q("1e30");
   BOOST_TEST(k.from_rational(just_below_one) == 1.0);
   BOOST_CHECK_THROW(k.from_rational(q("1e400")), std::range_error);
+}
+
+// The kernels' quick reading of rationals with small numerators and
+// denominators (one division of exact doubles) against MPFR's: the nearest
+// double for Double_kernel, the tightest enclosure for Interval_kernel (its
+// ends the neighbours of that double, or the double itself when exact), on
+// seeded random rationals on both sides of the 53-bit limit.
+BOOST_AUTO_TEST_CASE(quick_reading_matches_mpfr)
+{
+  std::uint64_t seed = 20261125;
+  BOOST_TEST_MESSAGE("quick rational reading: seed " << seed);
+  std::mt19937_64 rng(seed);
+  Double_kernel dk;
+  Interval_kernel ik;
+  for (int i = 0; i < 20000; ++i) {
+    int bits_n = 1 + static_cast<int>(rng() % 60), bits_d = 1 + static_cast<int>(rng() % 60);
+    Rational n(static_cast<long>(rng() >> (64 - bits_n))), d(static_cast<long>(rng() >> (64 - bits_d)) + 1);
+    Rational x = (i % 2 ? -n : n) / d;
+    double nearest = round_to_nearest(x);
+    BOOST_TEST(dk.from_rational(x) == nearest, to_string(x));
+    Interval e;
+    {
+      CGAL::Protect_FPU_rounding<true> protect;   // the interval kernel's arithmetic rounds upward
+      e = ik.from_rational(x);
+    }
+    BOOST_TEST((Rational(e.inf()) <= x && x <= Rational(e.sup())), to_string(x));
+    bool exact = Rational(nearest) == x;
+    BOOST_TEST((exact ? e.is_point() : e.inf() == std::nextafter(e.sup(), -HUGE_VAL)), to_string(x));
+  }
 }
 
 BOOST_AUTO_TEST_CASE(double_output_is_shortest_round_trip)
