@@ -18,6 +18,7 @@
 #ifndef CLASH4D_CORE_NEIGHBOURHOOD_H
 #define CLASH4D_CORE_NEIGHBOURHOOD_H
 
+#include "core/Number_ops.h"
 #include "core/kernel_ft4.h"
 #include <algorithm>
 #include <optional>
@@ -178,7 +179,9 @@ private:
 
   V scaled_by(const V& v, const FT& e) const { return {v[0] * e, v[1] * e, v[2] * e, v[3] * e}; }
 
-  // Small enough that no plane off r changes sign between r and r + eps s.
+  // Small enough that no plane off r changes sign between r and r + eps s:
+  // half the least |n.r / n.s|, a minimum taken as a construction (no
+  // decision, so ties cost an approximate kernel nothing).
   FT epsilon(const V& r, const V& s, const std::vector<V>& N) const
   {
     bool any = false;
@@ -186,9 +189,9 @@ private:
     for (const V& n : N) {
       FT nr = dot(n, r), ns = dot(n, s);
       if (k_.sign(nr) == CGAL::ZERO || k_.sign(ns) == CGAL::ZERO) continue;
-      FT q = nr / ns;
-      if (q < FT(0)) q = -q;
-      if (!any || q < best) { best = q; any = true; }
+      FT q = Number_ops<FT>::magnitude(nr / ns);
+      best = any ? Number_ops<FT>::lower(best, q) : q;
+      any = true;
     }
     return any ? best / FT(2) : FT(1);
   }
