@@ -410,17 +410,12 @@ private:
   // rounding jumps at half-grid points, not at the grid points that integer
   // and short binary bounds sit on, so an interval enclosing such a bound
   // still rounds to one grid point; the margin is at least half a step.
-  // Upper faces go one step further than lower ones: a bound symmetric
-  // about a scene value ([0, 2] about a face x = 1) would otherwise put the
-  // bisections of §4.1 exactly on it. With margins of about s and 2s, a
-  // bisection point lo + k (hi - lo) / 2^d is never the S-bound region's
-  // own (that needs 3k = 2^d).
   Box4 on_grid(const Box4& region, const Time_span<FT>& span) const
   {
     const FT step = k_.power_of_two(-K::grid_bits);
     auto below = [&](const FT& x) { return k_.grid_point(x) - step; };
     Box4 out = region;
-    for (int q = 0; q < 4; ++q) out.set(q, below(region.lo[q]), -below(-region.hi[q]) + step);
+    for (int q = 0; q < 4; ++q) out.set(q, below(region.lo[q]), -below(-region.hi[q]));
     out.lo[3] = Number_ops<FT>::upper(out.lo[3], span.lo);
     out.hi[3] = Number_ops<FT>::lower(out.hi[3], span.hi);
     return out;
