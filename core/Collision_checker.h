@@ -429,9 +429,9 @@ private:
     std::array<bool, 3> own_a{}, own_b{};
     for (int q = 0; q < 3 && use_sbounds_; ++q) own_a[q] = frame_of_a[q], own_b[q] = !frame_of_a[q];
     std::vector<H> table;
-    groups.velocity.push_back(add_planes(A, shear, own_a, table));
+    groups.velocity.push_back(add_planes(A, shear, own_a, table, &groups));
     groups.of.assign(table.size(), 0);
-    groups.velocity.push_back(add_planes(B, shear, own_b, table));
+    groups.velocity.push_back(add_planes(B, shear, own_b, table, &groups));
     groups.of.resize(table.size(), 1);
     groups.still = {own_a, own_b};
     return table;
@@ -443,17 +443,28 @@ private:
   // velocity). On an axis measured in the object's own frame (own[q]) that
   // is a written zero, not v - v: an interval run then gets a point zero
   // where the exact run has one, instead of an uncertain sign.
-  // Returns the velocity v - w.
+  // Returns the velocity v - w. groups: where to list the corners each entry
+  // passes through (core/Motion_groups.h).
   Vector3<FT> add_planes(const Moving& m, const Vector3<FT>& shear, const std::array<bool, 3>& own,
-                         std::vector<H>& table) const
+                         std::vector<H>& table, Motion_groups<FT>* groups = nullptr) const
   {
     Vector3<FT> relative;
     for (int q = 0; q < 3; ++q) relative[q] = own[q] ? FT(0) : m.v[q] - shear[q];
-    for (const auto& p : m.object->csg.primitives)
-      for (const auto& plane : p.planes) {
-        table.push_back(extrude(plane, relative, m.o));
-        table.push_back(table.back().complement());
+    for (const auto& p : m.object->csg.primitives) {
+      std::vector<std::vector<int>> through(p.planes.size());
+      if (groups) {
+        for (const auto& corner : p.corners) {
+          for (int plane : corner) through[plane].push_back(groups->corner_count);
+          ++groups->corner_count;
+        }
+        groups->corners.resize(table.size());
       }
+      for (std::size_t i = 0; i < p.planes.size(); ++i) {
+        table.push_back(extrude(p.planes[i], relative, m.o));
+        table.push_back(table.back().complement());
+        if (groups) groups->corners.insert(groups->corners.end(), 2, through[i]);
+      }
+    }
     return relative;
   }
 

@@ -20,6 +20,9 @@ struct Primitive {
   std::vector<Plane3<FT>> planes;
   std::vector<Vector3<FT>> vertices; // empty for a half-space
   Box<FT, 3> box;
+  // Points where four or more of the planes meet, each as the indices of
+  // those planes (Solid::corners; transforms keep them).
+  std::vector<std::vector<int>> corners;
 };
 
 struct Csg_node {

@@ -35,6 +35,7 @@ struct Plane_layout {
   std::vector<std::pair<std::size_t, int>> leaf_plane;   // table index -> (plane, orientation)
   std::vector<std::pair<std::size_t, int>> face_plane;   // face 2 * axis + upper -> (plane, orientation)
   std::size_t first_face = 0;                            // planes from here on are faces only
+  std::vector<std::vector<int>> corners;                 // per plane: the corners it passes through, sorted
 };
 
 template <class K>
@@ -150,6 +151,8 @@ private:
   std::vector<int> sign_;                 // per plane at the current test point: -1, 0, +1
   std::array<std::size_t, 3> line_{};     // the planes that meet in the current line
   int line_group_ = -1;                   // their common motion group, or -1
+  int line_corner_ = -1;                  // a corner all three pass through: the line is its path
+  std::vector<int> line_meets_;           // corners two of them pass through: the line meets their paths
 
   // Index of h among planes_ (appending it if new) and its orientation;
   // `along` (core/Motion_groups.h) is what h is known to contain, and is
@@ -160,13 +163,50 @@ private:
     for (std::size_t p = 0; p < planes_.size(); ++p)
       if (int o = same_plane(h, p, entry)) {
         layout_.moves_along[p] |= along;
+        add_corners(p, entry);
         return {p, o};
       }
     planes_.push_back(h);
     layout_.moves_along.push_back(along);
     layout_.entry.push_back(entry);
     layout_.face.push_back(face);
+    layout_.corners.emplace_back();
+    add_corners(planes_.size() - 1, entry);
     return {planes_.size() - 1, 1};
+  }
+
+  // The corners table entry `entry` passes through, added to plane p's.
+  void add_corners(std::size_t p, long entry)
+  {
+    if (!groups_ || entry < 0) return;
+    const std::vector<int>& more = groups_->corners_of(static_cast<std::size_t>(entry));
+    if (more.empty()) return;
+    std::vector<int>& mine = layout_.corners[p];
+    std::vector<int> both;
+    std::set_union(mine.begin(), mine.end(), more.begin(), more.end(), std::back_inserter(both));
+    mine = std::move(both);
+  }
+
+  bool through_corner(std::size_t p, int corner) const
+  {
+    const std::vector<int>& c = layout_.corners[p];
+    return std::binary_search(c.begin(), c.end(), corner);
+  }
+
+  // line_corner_ and line_meets_ for the line of planes i, j, m.
+  void find_line_corners(std::size_t i, std::size_t j, std::size_t m)
+  {
+    line_corner_ = -1;
+    line_meets_.clear();
+    const std::size_t ps[3] = {i, j, m};
+    for (int a = 0; a < 3; ++a)
+      for (int c : layout_.corners[ps[a]]) {
+        int count = 0;
+        for (std::size_t q : ps) count += through_corner(q, c);
+        if (count == 3) line_corner_ = c;
+        else if (count == 2 && std::find(line_meets_.begin(), line_meets_.end(), c) == line_meets_.end())
+          line_meets_.push_back(c);
+      }
   }
 
   // Face 2 * a + upper of the region, inside <= 0: -x_a + lo <= 0 or x_a - hi <= 0.
@@ -189,6 +229,7 @@ private:
     for (int g = 0; common && line_group_ < 0; ++g)
       if (common & (1u << g)) line_group_ = g;
     line_ = {i, j, m};
+    find_line_corners(i, j, m);
     if (line_group_ < 0) return generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n);
     const Vector3<FT>& r = groups_->velocity[line_group_];
     FT d = generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n)[3];
@@ -267,6 +308,9 @@ private:
     evaluate_planes(base, l, layout_.first_face);
     std::vector<FT> cuts{s_lo, s_hi};
     FT centre = (s_lo + s_hi) / FT(2);
+    // Per corner whose path the line meets: whether that point is on the
+    // segment (every plane of the corner cuts the line there).
+    std::vector<std::pair<int, bool>> meets;
     for (std::size_t p = 0; p < planes_.size(); ++p) {
       sign_[p] = 0;   // Unknown on the segment unless constant there
       if (k_.sign(along_[p]) == CGAL::ZERO) {
@@ -275,9 +319,18 @@ private:
       }
       // A face the line crosses bounds the segment: strictly inside between.
       if (p >= layout_.first_face) { sign_[p] = -1; continue; }
-      FT cut = -at_base_[p] / along_[p];
-      if (k_.less(s_lo, cut) && k_.less(cut, s_hi)) cuts.push_back(cut);
-      else sign_[p] = static_cast<int>(k_.sign(at_base_[p] + centre * along_[p]));
+      int corner = meeting_corner(p);
+      auto seen = std::find_if(meets.begin(), meets.end(), [&](const auto& e) { return e.first == corner; });
+      bool inside;
+      if (corner >= 0 && seen != meets.end()) {
+        inside = seen->second;                 // the same point as the corner's first plane
+      } else {
+        FT cut = -at_base_[p] / along_[p];
+        inside = k_.less(s_lo, cut) && k_.less(cut, s_hi);
+        if (inside) cuts.push_back(cut);
+        if (corner >= 0) meets.emplace_back(corner, inside);
+      }
+      if (!inside) sign_[p] = static_cast<int>(k_.sign(at_base_[p] + centre * along_[p]));
     }
     // Cheap rejection of the whole segment: false whatever the planes that
     // cut it (or contain it) do, hence false at every midpoint on it.
@@ -322,12 +375,21 @@ private:
     for (std::size_t p = 0; p < count; ++p) evaluate_plane(p, base, l);
   }
 
-  // The line lies in its own three planes, and runs parallel to every plane
-  // of its motion group: those zeros hold by construction and are written so
-  // (an interval would only enclose them).
+  // The corner of plane p whose path the line meets (line_meets_), or -1.
+  int meeting_corner(std::size_t p) const
+  {
+    for (int c : line_meets_)
+      if (through_corner(p, c)) return c;
+    return -1;
+  }
+
+  // The line lies in its own three planes (and, when it is a corner's path,
+  // in every plane of the corner), and runs parallel to every plane of its
+  // motion group: those zeros hold by construction and are written so (an
+  // interval would only enclose them).
   void evaluate_plane(std::size_t p, const V& base, const V& l)
   {
-    bool holds = p == line_[0] || p == line_[1] || p == line_[2];
+    bool holds = p == line_[0] || p == line_[1] || p == line_[2] || (line_corner_ >= 0 && through_corner(p, line_corner_));
     bool parallel = holds || (line_group_ >= 0 && (layout_.moves_along[p] >> line_group_ & 1u));
     at_base_[p] = holds ? FT(0) : planes_[p].value(base);
     along_[p] = parallel ? FT(0) : dot(planes_[p].n, l);

@@ -131,6 +131,7 @@ private:
   {
     Primitive<FT> p;
     p.path = s.path;
+    p.corners = s.corners;
     local_geometry(s, p);
     if (!T.is_identity) {
       for (auto& h : p.planes) h = T.apply(h);

@@ -107,9 +107,23 @@ private:
   bool same_direction(const V& a, const V& b) const { return parallel(a, b) && k_.dot_sign(a, b) == CGAL::POSITIVE; }
   bool all_parallel(const std::vector<V>& N) const
   {
-    for (const V& v : N)
-      if (!parallel(N[0], v)) return false;
+    for (std::size_t i = 1; i < N.size(); ++i)
+      if (!parallel(N[0], N[i])) return false;
     return true;
+  }
+
+  // Appends +v and -v unless already there. The two are compared with the
+  // earlier entries only: with each other they are opposite by construction
+  // (a zero an interval kernel could not certify).
+  void add_both_ways(std::vector<V>& out, const V& v) const
+  {
+    std::size_t earlier = out.size();
+    for (int s : {1, -1}) {
+      V w = scaled(v, s);
+      bool seen = false;
+      for (std::size_t q = 0; q < earlier && !seen; ++q) seen = same_direction(out[q], w);
+      if (!seen) out.push_back(w);
+    }
   }
 
   template <class Inside>
@@ -120,25 +134,24 @@ private:
       std::size_t i, j;   // two planes known to contain it
     };
     std::vector<Ray> rays;
+    std::vector<V> directions;
     for (std::size_t i = 0; i < N.size(); ++i)
       for (std::size_t j = i + 1; j < N.size(); ++j) {
         V r = generalised_cross(l, N[i], N[j]);
         if (k_.is_zero(r)) continue;
-        for (int s : {1, -1}) {
-          V rs = scaled(r, s);
-          bool seen = false;
-          for (const Ray& q : rays) seen = seen || same_direction(q.r, rs);
-          if (!seen) rays.push_back({rs, i, j});
-        }
+        std::size_t before = directions.size();
+        add_both_ways(directions, r);
+        for (std::size_t q = before; q < directions.size(); ++q) rays.push_back({directions[q], i, j});
       }
     std::vector<int> signs(N.size());
     for (const Ray& ray : rays) {
       const V& r = ray.r;
-      std::vector<V> sector = sector_rays(l, r, N, ray.i, ray.j);
+      std::vector<char> on_r;
+      std::vector<V> sector = sector_rays(l, r, N, ray.i, ray.j, on_r);
       if (sector.size() < 3) continue;   // only when rounding (double) breaks the geometry
       for (std::size_t a = 0; a < sector.size(); ++a) {
         V s = sum(sector[a], sector[(a + 1) % sector.size()]);
-        V d = sum(r, scaled_by(s, epsilon(r, s, N)));
+        V d = sum(r, scaled_by(s, epsilon(r, s, N, on_r)));
         if (test(N, d, signs, inside)) return d;
       }
     }
@@ -148,47 +161,53 @@ private:
   // The rays in the planes through r, orthogonal to r (and l), sorted by angle
   // around r, duplicates removed.
   // Planes i and j define r, so they contain it whatever rounding says.
-  std::vector<V> sector_rays(const V& l, const V& r, const std::vector<V>& N, std::size_t i, std::size_t j) const
+  // on_r: per plane, whether it contains r.
+  std::vector<V> sector_rays(const V& l, const V& r, const std::vector<V>& N, std::size_t i, std::size_t j,
+                             std::vector<char>& on_r) const
   {
     std::vector<V> out;
+    on_r.assign(N.size(), 0);
     for (std::size_t t = 0; t < N.size(); ++t) {
       const V& n = N[t];
       if (t != i && t != j && k_.dot_sign(n, r) != CGAL::ZERO) continue;
-      V rho = generalised_cross(l, r, n);
-      for (int s : {1, -1}) {
-        V v = scaled(rho, s);
-        bool seen = false;
-        for (const V& q : out) seen = seen || same_direction(q, v);
-        if (!seen) out.push_back(v);
-      }
+      on_r[t] = 1;
+      add_both_ways(out, generalised_cross(l, r, n));
     }
-    const V ref = out[0];
-    auto angle_class = [&](const V& a) {
-      CGAL::Sign o = k_.orientation4(l, r, ref, a);
-      if (o == CGAL::POSITIVE) return 1;
-      if (o == CGAL::NEGATIVE) return 3;
-      return k_.dot_sign(ref, a) == CGAL::POSITIVE ? 0 : 2;
-    };
-    std::sort(out.begin(), out.end(), [&](const V& a, const V& b) {
-      int ca = angle_class(a), cb = angle_class(b);
-      if (ca != cb) return ca < cb;
-      return k_.orientation4(l, r, a, b) == CGAL::POSITIVE;
+    // Sorted by angle from out[0]: quadrant classes, then orientation within
+    // one. out[0] and out[1] are that ray and its opposite (add_both_ways):
+    // their classes are known, and no ray is compared with itself, so no
+    // decision is a zero by construction.
+    std::vector<int> cls(out.size());
+    std::vector<std::size_t> order(out.size());
+    for (std::size_t a = 0; a < out.size(); ++a) {
+      order[a] = a;
+      if (a < 2) { cls[a] = 2 * static_cast<int>(a); continue; }
+      CGAL::Sign o = k_.orientation4(l, r, out[0], out[a]);
+      cls[a] = o == CGAL::POSITIVE ? 1 : o == CGAL::NEGATIVE ? 3 : (k_.dot_sign(out[0], out[a]) == CGAL::POSITIVE ? 0 : 2);
+    }
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      if (cls[a] != cls[b]) return cls[a] < cls[b];
+      return a != b && k_.orientation4(l, r, out[a], out[b]) == CGAL::POSITIVE;
     });
-    return out;
+    std::vector<V> sorted;
+    for (std::size_t a : order) sorted.push_back(out[a]);
+    return sorted;
   }
 
   V scaled_by(const V& v, const FT& e) const { return {v[0] * e, v[1] * e, v[2] * e, v[3] * e}; }
 
   // Small enough that no plane off r changes sign between r and r + eps s:
-  // half the least |n.r / n.s|, a minimum taken as a construction (no
-  // decision, so ties cost an approximate kernel nothing).
-  FT epsilon(const V& r, const V& s, const std::vector<V>& N) const
+  // half the least |n.r / n.s| over the planes off r (on_r, from
+  // sector_rays: their zeros are not computed again), a minimum taken as a
+  // construction (no decision, so ties cost an approximate kernel nothing).
+  FT epsilon(const V& r, const V& s, const std::vector<V>& N, const std::vector<char>& on_r) const
   {
     bool any = false;
     FT best(1);
-    for (const V& n : N) {
-      FT nr = dot(n, r), ns = dot(n, s);
-      if (k_.sign(nr) == CGAL::ZERO || k_.sign(ns) == CGAL::ZERO) continue;
+    for (std::size_t t = 0; t < N.size(); ++t) {
+      if (on_r[t]) continue;
+      FT nr = dot(N[t], r), ns = dot(N[t], s);
+      if (k_.sign(ns) == CGAL::ZERO) continue;
       FT q = Number_ops<FT>::magnitude(nr / ns);
       best = any ? Number_ops<FT>::lower(best, q) : q;
       any = true;

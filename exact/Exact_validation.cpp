@@ -71,7 +71,7 @@ std::string prism_base_problem(const std::vector<std::array<Rational, 2>>& base)
   return "";
 }
 
-std::vector<std::array<int, 3>> hull_facets(const std::vector<Rational3>& points)
+Polytope_combinatorics hull_facets(const std::vector<Rational3>& points)
 {
   std::vector<Point_3> pts;
   for (const auto& p : points) pts.push_back(to_point(p));
@@ -85,10 +85,12 @@ std::vector<std::array<int, 3>> hull_facets(const std::vector<Rational3>& points
 
   std::map<Point_3, int> index;
   for (std::size_t i = 0; i < pts.size(); ++i) index.emplace(pts[i], static_cast<int>(i));
-  CGAL::Surface_mesh<Point_3> mesh;
+  using Mesh = CGAL::Surface_mesh<Point_3>;
+  Mesh mesh;
   CGAL::convex_hull_3(pts.begin(), pts.end(), mesh);
-  std::vector<std::array<int, 3>> facets;
-  std::set<std::array<Rational, 4>> planes;
+  Polytope_combinatorics out;
+  std::map<std::array<Rational, 4>, int> planes;
+  std::map<Mesh::Face_index, int> plane_of;
   for (auto f : mesh.faces()) {
     std::array<int, 3> t;
     int k = 0;
@@ -104,10 +106,17 @@ std::vector<std::array<int, 3>> hull_facets(const std::vector<Rational3>& points
     Rational lead = CGAL::is_zero(key[0]) ? (CGAL::is_zero(key[1]) ? key[2] : key[1]) : key[0];
     if (lead < 0) lead = -lead;
     for (auto& x : key) x /= lead;
-    bool repeated = !planes.insert(key).second;
-    if (!repeated) facets.push_back(t);
+    auto [it, fresh] = planes.emplace(key, static_cast<int>(out.triples.size()));
+    if (fresh) out.triples.push_back(t);
+    plane_of[f] = it->second;
   }
-  return facets;
+  for (auto v : mesh.vertices()) {
+    std::set<int> through;
+    for (auto f : CGAL::faces_around_target(mesh.halfedge(v), mesh))
+      if (f != Mesh::null_face()) through.insert(plane_of.at(f));
+    if (through.size() >= 4) out.corners.emplace_back(through.begin(), through.end());
+  }
+  return out;
 }
 
 std::string convex_problem(const std::vector<Rational4>& planes)
@@ -133,9 +142,9 @@ std::string convex_problem(const std::vector<Rational4>& planes)
   return "";
 }
 
-std::vector<std::array<int, 3>> convex_vertex_triples(const std::vector<Rational4>& planes)
+Polytope_combinatorics convex_vertex_triples(const std::vector<Rational4>& planes)
 {
-  std::vector<std::array<int, 3>> out;
+  Polytope_combinatorics out;
   std::vector<Rational3> seen;
   int m = static_cast<int>(planes.size());
   auto normal = [&](int i) { return Rational3{planes[i][0], planes[i][1], planes[i][2]}; };
@@ -154,14 +163,19 @@ std::vector<std::array<int, 3>> convex_vertex_triples(const std::vector<Rational
           p[axis] = det3(ca, cb, cc) / det;
         }
         bool inside = true;
-        for (int h = 0; h < m && inside; ++h)
-          inside = !CGAL::is_positive(planes[h][0] * p[0] + planes[h][1] * p[1] + planes[h][2] * p[2] + planes[h][3]);
+        std::vector<int> through;
+        for (int h = 0; h < m && inside; ++h) {
+          CGAL::Sign s = CGAL::sign(planes[h][0] * p[0] + planes[h][1] * p[1] + planes[h][2] * p[2] + planes[h][3]);
+          inside = s != CGAL::POSITIVE;
+          if (s == CGAL::ZERO) through.push_back(h);
+        }
         if (!inside) continue;
         bool repeated = false;
         for (const auto& q : seen) repeated = repeated || q == p;
         if (repeated) continue;
         seen.push_back(p);
-        out.push_back({i, j, k});
+        out.triples.push_back({i, j, k});
+        if (through.size() >= 4) out.corners.push_back(through);
       }
   return out;
 }

@@ -23,6 +23,9 @@ struct Solid {
   // same polytope: hull facets as point triples (outward by right-hand rule),
   // convex vertices as triples of half-space indices.
   std::vector<std::array<int, 3>> triples;
+  // Hull and convex: the corners found by validation (exact/Exact_validation.h,
+  // Polytope_combinatorics), each as the indices of its four or more planes.
+  std::vector<std::vector<int>> corners;
   // Their exact geometry, made by the reader (core/Polytope_ft.h), for the
   // kernels that read constructions rather than compute them
   // (K::reads_exact_constructions): hull facet planes a b c d, convex

@@ -147,7 +147,9 @@ void read_convex(const Json_value& v, Solid& s, const std::string& path)
   if (planes.size() < 4) throw Input_error(path, "a bounded convex solid needs at least 4 half-spaces, found " + std::to_string(planes.size()));
   std::string problem = convex_problem(planes);
   if (!problem.empty()) throw Input_error(path, problem);
-  s.triples = convex_vertex_triples(planes);
+  Polytope_combinatorics c = convex_vertex_triples(planes);
+  s.triples = c.triples;
+  s.corners = c.corners;
   for (const auto& t : s.triples) {
     Rational3 v = vertex_of(planes[t[0]], planes[t[1]], planes[t[2]]);
     s.constructed.insert(s.constructed.end(), v.begin(), v.end());
@@ -182,7 +184,9 @@ void read_hull(const Json_value& v, Solid& s, const std::string& path)
   for (std::size_t i = 0; i < v.items.size(); ++i) points.push_back(read_array<3>(v.items[i], at(path, i)));
   if (points.size() < 4) throw Input_error(path, "a hull needs at least 4 points not in one plane, found " + std::to_string(points.size()));
   try {
-    s.triples = hull_facets(points);
+    Polytope_combinatorics c = hull_facets(points);
+    s.triples = c.triples;
+    s.corners = c.corners;
   } catch (const std::invalid_argument& e) {
     throw Input_error(path, e.what());
   }

@@ -190,6 +190,23 @@ BOOST_AUTO_TEST_CASE(no_fallback_in_general_position)
   BOOST_TEST(e.stats.exact_witness_replays == 0u);
 }
 
+// Corners (core/Motion_groups.h): a square pyramid's apex lies on four
+// facets, so the fourth is exactly zero on the path of the other three, and
+// its apex here is at non-dyadic coordinates, where intervals only enclose
+// that zero. Written as zeros, the path and the cells around it are decided
+// by intervals alone, witness included, and the answer is the rational one.
+BOOST_AUTO_TEST_CASE(corners_are_decided_by_intervals)
+{
+  Scene scene = read_scene(read_json_text(R"({"format":"clash4d-scene/1","time":[0,10],"objects":[
+    {"name":"pyramid","shape":{"hull":[[0,0,0],[2,0,0],[2,2,0],[0,2,0],["1/3","5/6","5/7"]]},"motion":"vel 0 0 3/7"},
+    {"name":"slab","shape":{"block":{"min":["-1/3","-1/5",2],"max":["7/3","11/5","13/5"]}}}]})"));
+  Check_answer a = same_answers(scene, Check_options(), "pyramid apex through a slab");
+  BOOST_TEST(a.collide);
+  BOOST_TEST(a.stats.exact_lines == 0u);
+  BOOST_TEST(a.stats.exact_fallbacks == 0u);
+  BOOST_TEST(a.stats.witnesses_by_intervals == 1u);
+}
+
 // A face touch after a rotation by (3/5, 4/5): the touching planes' values
 // are exactly zero but their intervals straddle zero, so the filter must
 // fall back at those decisions (here: the regions holding the touch, and the

@@ -135,3 +135,46 @@ BOOST_AUTO_TEST_CASE(double_model_reads_rounded_numbers)
   BOOST_TEST(m.objects[0].csg.primitives[0].box.lo[0] == 0.1);
   BOOST_TEST(m.objects[0].csg.primitives[0].box.hi[0] == 1.0 / 3.0);
 }
+
+// Corners (Primitive::corners): the points where four or more planes of a
+// primitive meet, found exactly by validation. Checked against the planes:
+// every listed plane is zero at the point, and no other plane is.
+static void check_corner(const Primitive<Q>& p, const std::vector<int>& corner)
+{
+  BOOST_TEST_REQUIRE(corner.size() >= 4u);
+  // The point: the first three planes' meeting point, by Cramer's rule.
+  Vector3<Q> v = vertex_of(p.planes[corner[0]], p.planes[corner[1]], p.planes[corner[2]]);
+  for (std::size_t i = 0; i < p.planes.size(); ++i) {
+    const auto& h = p.planes[i];
+    bool listed = std::find(corner.begin(), corner.end(), static_cast<int>(i)) != corner.end();
+    BOOST_TEST((h[0] * v[0] + h[1] * v[1] + h[2] * v[2] + h[3] == Q(0)) == listed);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(square_pyramid_has_its_apex_as_a_corner)
+{
+  // Four side facets meet at the apex; the base corners have three planes.
+  auto m = model_of(R"({"hull":[[0,0,0],[2,0,0],[2,2,0],[0,2,0],["1/3","1","5/7"]]})");
+  const auto& p = m.primitives[0];
+  BOOST_TEST(p.planes.size() == 5u);
+  BOOST_TEST_REQUIRE(p.corners.size() == 1u);
+  BOOST_TEST(p.corners[0].size() == 4u);
+  check_corner(p, p.corners[0]);
+}
+
+BOOST_AUTO_TEST_CASE(octahedron_has_six_corners)
+{
+  std::string planes;
+  for (int a : {-1, 1})
+    for (int b : {-1, 1})
+      for (int c : {-1, 1})
+        planes += (planes.empty() ? "" : ",") + std::string("[") + std::to_string(a) + "," + std::to_string(b) + "," +
+                  std::to_string(c) + ",-1]";
+  auto m = model_of("{\"convex\":[" + planes + "]}");
+  const auto& p = m.primitives[0];
+  BOOST_TEST_REQUIRE(p.corners.size() == 6u);
+  for (const auto& c : p.corners) check_corner(p, c);
+  // A block has none: three planes at each of its corners.
+  BOOST_TEST(model_of(R"({"hull":[[0,0,0],[1,0,0],[0,1,0],[1,1,0],[0,0,1],[1,0,1],[0,1,1],[1,1,1]]})")
+                 .primitives[0].corners.empty());
+}
