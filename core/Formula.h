@@ -7,6 +7,7 @@
 #define CLASH4D_CORE_FORMULA_H
 
 #include <cstdint>
+#include <boost/container/small_vector.hpp>
 #include <vector>
 
 namespace clash4d {
@@ -98,7 +99,9 @@ public:
   Truth evaluate(Leaf_truth truth) const
   {
     if (value_ != Truth::Unknown) return value_;
-    std::vector<Truth> stack;
+    // On the stack for formulas of up to 128 leaves: this runs at every
+    // point generate-and-test looks at.
+    boost::container::small_vector<Truth, 128> stack;
     for (const Token& t : code_) {
       if (t.op == Op::Leaf) { stack.push_back(truth(t.arg)); continue; }
       Truth absorbing = t.op == Op::And ? Truth::False : Truth::True;

@@ -16,7 +16,9 @@
 #include "core/Search_goal.h"
 #include "core/Search_trail.h"
 #include <CGAL/Uncertain.h>
+#include <CGAL/number_utils.h>
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <array>
 #include <optional>
@@ -193,20 +195,28 @@ private:
     return std::binary_search(c.begin(), c.end(), corner);
   }
 
-  // line_corner_ and line_meets_ for the line of planes i, j, m.
+  // line_corner_ and line_meets_ for the line of planes i, j, m: merges of
+  // their sorted corner lists (most are empty).
   void find_line_corners(std::size_t i, std::size_t j, std::size_t m)
   {
     line_corner_ = -1;
     line_meets_.clear();
-    const std::size_t ps[3] = {i, j, m};
-    for (int a = 0; a < 3; ++a)
-      for (int c : layout_.corners[ps[a]]) {
-        int count = 0;
-        for (std::size_t q : ps) count += through_corner(q, c);
-        if (count == 3) line_corner_ = c;
-        else if (count == 2 && std::find(line_meets_.begin(), line_meets_.end(), c) == line_meets_.end())
-          line_meets_.push_back(c);
+    const std::vector<int> &ci = layout_.corners[i], &cj = layout_.corners[j], &cm = layout_.corners[m];
+    if ((ci.empty() ? 1 : 0) + (cj.empty() ? 1 : 0) + (cm.empty() ? 1 : 0) >= 2) return;
+    auto shared = [&](const std::vector<int>& a, const std::vector<int>& b, const std::vector<int>& third) {
+      for (auto x = a.begin(), y = b.begin(); x != a.end() && y != b.end();) {
+        if (*x < *y) ++x;
+        else if (*y < *x) ++y;
+        else {
+          if (std::binary_search(third.begin(), third.end(), *x)) line_corner_ = *x;
+          else if (std::find(line_meets_.begin(), line_meets_.end(), *x) == line_meets_.end()) line_meets_.push_back(*x);
+          ++x, ++y;
+        }
       }
+    };
+    shared(ci, cj, cm);
+    shared(ci, cm, cj);
+    shared(cj, cm, ci);
   }
 
   // Face 2 * a + upper of the region, inside <= 0: -x_a + lo <= 0 or x_a - hi <= 0.
@@ -391,6 +401,13 @@ private:
   {
     bool holds = p == line_[0] || p == line_[1] || p == line_[2] || (line_corner_ >= 0 && through_corner(p, line_corner_));
     bool parallel = holds || (line_group_ >= 0 && (layout_.moves_along[p] >> line_group_ & 1u));
+    if (int which = layout_.face[p]; which >= 0) {
+      // A region face, +-x_a + c: two terms, not the eight of a product.
+      int a = which / 2;
+      at_base_[p] = holds ? FT(0) : (which % 2 ? base[a] : -base[a]) + planes_[p].c;
+      along_[p] = parallel ? FT(0) : (which % 2 ? l[a] : -l[a]);
+      return;
+    }
     at_base_[p] = holds ? FT(0) : planes_[p].value(base);
     along_[p] = parallel ? FT(0) : dot(planes_[p].n, l);
   }
@@ -470,17 +487,31 @@ private:
     return false;
   }
 
-  // The point on a, b and c orthogonal to l: a sum of the dual vectors
-  // g_a = l x b x c (orthogonal to b, c and l), scaled to meet a.
+  // A point on planes a, b and c: the one whose coordinate k is zero, for
+  // the k where the direction l is largest (l_k is, up to sign, the
+  // determinant of the system). Any k with l_k != 0 gives a point of the
+  // line, and every decision along the line is about its points, not this
+  // one, so kernels need not agree on k. The other three coordinates by
+  // Cramer's rule, as cross products of the rows.
   V base_point(const H& a, const H& b, const H& c, const V& l) const
   {
-    const H* hs[3] = {&a, &b, &c};
-    V p{FT(0), FT(0), FT(0), FT(0)};
-    for (int i = 0; i < 3; ++i) {
-      V g = generalised_cross(hs[(i + 1) % 3]->n, hs[(i + 2) % 3]->n, l);
-      FT s = -hs[i]->c / dot(hs[i]->n, g);
-      p = point_along(p, s, g);
+    int k = 0;
+    double largest = -1;
+    for (int q = 0; q < 4; ++q) {
+      double m = std::abs(CGAL::to_double(l[q]));
+      if (m > largest) largest = m, k = q;
     }
+    int cols[3], n = 0;
+    for (int q = 0; q < 4; ++q)
+      if (q != k) cols[n++] = q;
+    const H* hs[3] = {&a, &b, &c};
+    Vector3<FT> r[3];
+    for (int t = 0; t < 3; ++t) r[t] = {hs[t]->n[cols[0]], hs[t]->n[cols[1]], hs[t]->n[cols[2]]};
+    Vector3<FT> x12 = cross(r[1], r[2]), x20 = cross(r[2], r[0]), x01 = cross(r[0], r[1]);
+    FT det = dot(r[0], x12);
+    V p;
+    p[k] = FT(0);
+    for (int t = 0; t < 3; ++t) p[cols[t]] = -(a.c * x12[t] + b.c * x20[t] + c.c * x01[t]) / det;
     return p;
   }
 

@@ -34,7 +34,18 @@ public:
   static constexpr const char* name() { return "interval"; }
   static constexpr bool reads_exact_constructions = true;   // tight enclosures, exact zeros (core/Model_builder.h)
   static constexpr bool is_exact = false;
-  CGAL::Sign sign(const FT& x) const { return CGAL::make_certain(CGAL::sign(x)); }
+  // Kept small enough to inline everywhere: the throw is out of line.
+  CGAL::Sign sign(const FT& x) const
+  {
+    if (x.inf() > 0) return CGAL::POSITIVE;
+    if (x.sup() < 0) return CGAL::NEGATIVE;
+    if (x.inf() == 0 && x.sup() == 0) return CGAL::ZERO;
+    uncertain();
+  }
+  [[noreturn]] __attribute__((noinline, cold)) static void uncertain()
+  {
+    throw CGAL::Uncertain_conversion_exception("a sign an interval cannot certify");
+  }
   bool possibly_positive(const FT& x) const { return CGAL::possibly(CGAL::sign(x) == CGAL::POSITIVE); }
   CGAL::Uncertain<bool> is_nonnegative(const FT& x, bool strict) const { return strict ? x > 0 : x >= 0; }
   FT from_rational(const Rational& q) const
