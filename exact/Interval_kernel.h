@@ -13,6 +13,7 @@
 #include "exact/Rational.h"
 #include <CGAL/Interval_nt.h>
 #include <cmath>
+#include <charconv>
 #include <cstdio>
 #include <string>
 
@@ -90,12 +91,37 @@ public:
   }
   // Statistics only (answers are never printed from intervals): a point
   // interval is an exact number, otherwise the enclosure "~[inf, sup]".
+  // Every sub-span writes its bounds so, --stats or not: kept cheap (no
+  // printf, no GMP for the usual short dyadic numbers).
   std::string to_text(const FT& x) const
   {
-    if (x.is_point()) return to_string(Rational(x.inf()));
-    char text[64];
-    std::snprintf(text, sizeof text, "~[%.17g, %.17g]", x.inf(), x.sup());
-    return text;
+    if (x.is_point()) return dyadic_text(x.inf());
+    char text[64] = "~[";
+    char* end = std::to_chars(text + 2, text + 30, x.inf()).ptr;
+    *end++ = ',';
+    *end++ = ' ';
+    end = std::to_chars(end, text + 60, x.sup()).ptr;
+    *end++ = ']';
+    return std::string(text, end);
+  }
+
+  // A double as the exact rational it is, "p/q" or "p".
+  static std::string dyadic_text(double d)
+  {
+    int e = 0;
+    double m = std::frexp(d, &e);                  // d = m 2^e, 0.5 <= |m| < 1
+    long long num = static_cast<long long>(std::ldexp(m, 53));
+    int shift = 53 - e;                            // d = num / 2^shift
+    while (shift > 0 && num % 2 == 0) num /= 2, --shift;
+    if (d == 0) return "0";
+    if (shift < 0 || shift > 62) return to_string(Rational(d));
+    char text[48];
+    char* end = std::to_chars(text, text + 24, num).ptr;
+    if (shift > 0) {
+      *end++ = '/';
+      end = std::to_chars(end, text + 48, 1ULL << shift).ptr;
+    }
+    return std::string(text, end);
   }
 };
 

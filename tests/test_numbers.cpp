@@ -108,3 +108,10 @@ BOOST_AUTO_TEST_CASE(double_output_is_shortest_round_trip)
   BOOST_TEST(k.to_text(2.0) == "2");
   BOOST_TEST(std::stod(k.to_text(1.0 / 3.0)) == 1.0 / 3.0);
 }
+
+// Statistics print intervals' exact doubles as rationals without GMP.
+BOOST_AUTO_TEST_CASE(dyadic_text_is_the_exact_rational)
+{
+  for (double d : {0.0, 1.0, -3.0, 0.5, -0.375, 1e-10, 12345.6789, 1048575.0 / 1048576.0, 1e20, -7e-300})
+    BOOST_TEST(Interval_kernel::dyadic_text(d) == to_string(Rational(d)), d);
+}
