@@ -53,16 +53,11 @@ public:
     return settled;
   }
 
-  // passes: how many Up/Down passes ran (a filtered run compares them, see
-  // core/Search_trail.h).
-  static Bounds settle_one(const K& k, const Csg_model<FT>& csg, Check_stats& stats, bool use_sbounds,
-                           int* passes = nullptr)
+  static Bounds settle_one(const K& k, const Csg_model<FT>& csg, Check_stats& stats, bool use_sbounds)
   {
     S_bounds<K> sb(k);
     Bounds b = sb.initial(csg);
-    int n = use_sbounds ? sb.settle(csg, b, max_sbound_passes) : 0;
-    stats.sbound_passes += n;
-    if (passes) *passes = n;
+    stats.sbound_passes += use_sbounds ? sb.settle(csg, b, max_sbound_passes) : 0;
     return b;
   }
 
@@ -176,22 +171,12 @@ private:
   const std::vector<Bounds>& settled_;
   Search_trail* trail_ = nullptr;
   std::size_t span_index_ = 0;
-  std::vector<int> span_passes_;           // this span's S-bound pass counts, in order
   std::array<bool, 3> frame_of_a_{};       // this span's frame choice per axis
   bool certified_witness_only_ = false;
   Exact_lines exact_lines_;
   Exact_proportional exact_proportional_;
 
   bool replaying() const { return trail_ && trail_->replaying(); }
-
-  // Replay: the exact run's S-bound passes and frame must be the recorded
-  // ones, or its path may differ from the approximate run's.
-  bool same_path_as_trail()
-  {
-    if (!replaying() || (span_passes_ == trail_->sbound_passes && frame_of_a_ == trail_->frame_of_a)) return true;
-    trail_->diverged = true;
-    return false;
-  }
 
   struct Moving {
     const Object_model<FT>* object;
@@ -240,7 +225,6 @@ private:
     Vector3<FT> shear;
     stats_.conquered_box.clear();
     Box4 region = use_sbounds_ ? fitted_region(A, B, tl, th, shear) : original_region(A, B, span, shear);
-    if (!same_path_as_trail()) return;
     for (int q = 0; q < 4; ++q) ss.region += std::string(q ? " x " : "") + interval_text(region.lo[q], region.hi[q]);
     if (has_no_interior(k_, region)) {
       ss.narrowed = "empty";
@@ -275,8 +259,6 @@ private:
     dc.search(region, formula, goal);
     if (trail_ && trail_->recording() && goal.improved) {
       trail_->span = span_index_;
-      trail_->sbound_passes = span_passes_;
-      trail_->frame_of_a = frame_of_a_;
     }
     stats_.seconds_divide += seconds_since(start);
     if (!dc.conquered().empty)
@@ -319,15 +301,14 @@ private:
   // Appendix B at the root, repeated until nothing shrinks.
   bool four_d_bounds(Moving& A, Moving& B, FT& tl, FT& th)
   {
-    span_passes_.clear();
     for (int pass = 0; pass < max_sbound_passes; ++pass) {
       ++stats_.sbound_passes;
       Box3 ra = A.beta[0], rb = B.beta[0];
       FT l0 = tl, h0 = th;
       typename S_bounds<K>::Moving_box ma{&A.beta[0], &A.v, &A.o}, mb{&B.beta[0], &B.v, &B.o};
       if (!sb_.meet_moving(ma, mb, tl, th)) return false;
-      span_passes_.push_back(sb_.settle(A.object->csg, A.beta, max_sbound_passes));
-      span_passes_.push_back(sb_.settle(B.object->csg, B.beta, max_sbound_passes));
+      sb_.settle(A.object->csg, A.beta, max_sbound_passes);
+      sb_.settle(B.object->csg, B.beta, max_sbound_passes);
       if (A.beta[0].empty || B.beta[0].empty) return false;
       if (same_on_grid(k_, ra, A.beta[0]) && same_on_grid(k_, rb, B.beta[0]) && k_.same_on_grid(l0, tl) &&
           k_.same_on_grid(h0, th))

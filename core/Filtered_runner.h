@@ -43,7 +43,6 @@ public:
     emodel_.t_hi = ek_.from_rational(scene.t_hi);
     emodel_.objects.resize(scene.objects.size());
     esettled_.resize(scene.objects.size());
-    epasses_.assign(scene.objects.size(), -2);
     for (std::size_t i = 0; i < scene.objects.size(); ++i) emodel_.objects[i].name = scene.objects[i].name;
   }
 
@@ -89,7 +88,7 @@ public:
       }
       need_exact(a);
       need_exact(b);
-      if (trail.complete && !trail.approximate && apasses_[a] == epasses_[a] && apasses_[b] == epasses_[b]) {
+      if (trail.complete && !trail.approximate) {
         Check_stats rstats;
         trail.mode = Search_trail::Mode::Replay;
         Collision_checker<EK> checker(ek_, emodel_, esettled_, rstats, use_sbounds_);
@@ -157,7 +156,6 @@ private:
   std::vector<char> exact_only_;              // AK could not bound the object: its pairs go to EK
   Scene_model<EK> emodel_;                    // objects built on demand
   std::vector<typename Collision_checker<EK>::Bounds> esettled_;
-  std::vector<int> apasses_, epasses_;        // each object's own S-bound passes, per kernel
   std::unique_ptr<std::once_flag[]> built_;
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0};
@@ -184,7 +182,6 @@ private:
   {
     std::size_t n = scene_.objects.size();
     exact_only_.assign(n, 0);
-    apasses_.assign(n, -1);
     auto start = std::chrono::steady_clock::now();
     try {
       Protector protect;
@@ -213,7 +210,7 @@ private:
   {
     try {
       Protector protect;
-      return Collision_checker<AK>::settle_one(ak_, amodel_.objects[i].csg, stats, use_sbounds_, &apasses_[i]);
+      return Collision_checker<AK>::settle_one(ak_, amodel_.objects[i].csg, stats, use_sbounds_);
     } catch (const CGAL::Uncertain_conversion_exception&) {
       ++fallbacks_;
       exact_only_[i] = 1;
@@ -242,6 +239,7 @@ private:
   struct Exact_span {
     std::size_t span = static_cast<std::size_t>(-1);
     std::vector<Hyperplane4<EFT>> table;
+    std::vector<Hyperplane4<EFT>> lowest;         // table in lowest terms, made for the first line
     Motion_groups<EFT> groups;
     std::map<std::pair<std::size_t, std::size_t>, int> answers;
 
@@ -254,6 +252,7 @@ private:
       groups = Motion_groups<EFT>();
       table = Collision_checker<EK>(runner.ek_, runner.emodel_, runner.esettled_, ignored, runner.use_sbounds_)
                   .span_table(a, b, s, frame, groups);
+      lowest.clear();
       answers.clear();
       span = s;
     }
@@ -299,7 +298,13 @@ private:
         Conquer(const EK& k, const std::vector<Hyperplane4<EFT>>& t, const Motion_groups<EFT>& g)
           : lines(k, t, stats, nullptr, &g) {}
       };
-      auto conquer = std::make_shared<Conquer>(runner.ek_, table, groups);
+      // Lines decide signs only (a point found is made again by EK's own
+      // run), so they may use each plane in lowest terms: the arithmetic of
+      // a line then starts from coprime integers, not products of the
+      // scene's denominators.
+      if (lowest.empty())
+        for (const auto& h : table) lowest.push_back(runner.ek_.in_lowest_terms(h));
+      auto conquer = std::make_shared<Conquer>(runner.ek_, lowest, groups);
       conquer->lines.adopt(layout, outer);
       return [conquer, exact](const Formula& f, std::size_t i, std::size_t j, std::size_t m, bool& known) {
         CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
@@ -316,7 +321,7 @@ private:
       emodel_.objects[i].csg = Model_builder<EK>(ek_).build(o.shape);
       emodel_.objects[i].motion = Motion_path<EFT>::build(ek_, o.motion);
       Check_stats ignored;
-      esettled_[i] = Collision_checker<EK>::settle_one(ek_, emodel_.objects[i].csg, ignored, use_sbounds_, &epasses_[i]);
+      esettled_[i] = Collision_checker<EK>::settle_one(ek_, emodel_.objects[i].csg, ignored, use_sbounds_);
     });
   }
 

@@ -1,19 +1,20 @@
 // Where an approximate run found its first point inside a pair's collision
 // region, so that the exact run can go straight there (the "recomputed
-// exactly on demand" half of the filtered kernel, core/Filtered_runner.h).
+// exactly on demand" half of the filtered kernel, core/Filtered_runner.h),
+// when the approximate run could not make the witness itself.
 //
 // Why following the trail gives the exact run's own answer: every decision
-// the approximate run made was a certified sign, except when to stop the
-// S-bound passes and which frame to fit the region in (core/Number_ops.h,
-// Kernel_base::prefer_less). The trail records both; the exact run compares
-// its own with them at the span, and leaves the trail (diverged) on any
-// difference. With equal pass counts and frames the approximate numbers
-// enclose exactly the exact run's S-bounds, region, planes and formula, so
-// every region the division visited before the found one, and every line
-// before the found one, is certified empty for the exact run too: the exact
-// run's first point inside is the one at the end of the trail. Earlier spans
-// hold no collision at all (the approximate run proved it, whatever its
-// S-bounds), so they are skipped.
+// the approximate run made was a certified sign, the heuristic ones included
+// (S-bound passes and frames are decided on grid points,
+// Kernel_base::grid_point), except a box simplification it could not decide
+// (it kept the leaf and marked the trail `approximate`: no replay then). So
+// the approximate numbers enclose exactly the exact run's S-bounds, region,
+// planes and formula, every region the division visited before the found
+// one, and every line before the found one, is certified empty for the
+// exact run too: the exact run's first point inside is the one at the end
+// of the trail. Earlier spans hold no collision at all (the approximate run
+// proved it), so they are skipped. The exact run still checks that the
+// trail leads somewhere (`diverged` otherwise, and a full run follows).
 #ifndef CLASH4D_CORE_SEARCH_TRAIL_H
 #define CLASH4D_CORE_SEARCH_TRAIL_H
 
@@ -32,8 +33,6 @@ struct Search_trail {
   bool approximate = false;             // Record: a simplification was skipped as uncertain, so
                                         // the path may differ from the exact run's: no replay
   std::size_t span = 0;                 // index of the sub-span, in time order
-  std::vector<int> sbound_passes;       // pass counts of that span's S-bound stage, in order
-  std::array<bool, 3> frame_of_a{};     // per axis: measured in the first object's frame
   std::vector<int> path;                // division: child index at each depth
   bool on_line = false;                 // found on a line (else a region folded to "inside")
   std::array<std::size_t, 3> line{};    // the line's three planes, in generate-and-test's order

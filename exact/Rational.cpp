@@ -32,6 +32,34 @@ Rational floor_to_grid(const Rational& q, int bits)
   return out;
 }
 
+void scale_to_coprime_integers(Rational* x, std::size_t n)
+{
+  mpz_t lcm, gcd, t;
+  mpz_init_set_ui(lcm, 1);
+  mpz_init_set_ui(gcd, 0);
+  mpz_init(t);
+  for (std::size_t i = 0; i < n; ++i) mpz_lcm(lcm, lcm, mpq_denref(x[i].mpq()));
+  for (std::size_t i = 0; i < n; ++i) {
+    mpz_divexact(t, lcm, mpq_denref(x[i].mpq()));
+    mpz_mul(t, t, mpq_numref(x[i].mpq()));
+    mpz_gcd(gcd, gcd, t);
+  }
+  if (mpz_sgn(gcd) != 0) {
+    // New numbers, not writes through mpq(): Gmpq shares its representation.
+    mpq_t scale;
+    mpq_init(scale);
+    mpq_set_num(scale, lcm);
+    mpq_set_den(scale, gcd);
+    mpq_canonicalize(scale);
+    Rational factor(scale);
+    mpq_clear(scale);
+    for (std::size_t i = 0; i < n; ++i) x[i] = x[i] * factor;
+  }
+  mpz_clear(t);
+  mpz_clear(gcd);
+  mpz_clear(lcm);
+}
+
 Rational power_of_two(int e)
 {
   mpq_t r;

@@ -47,6 +47,11 @@ inline double power_of_two_double(int e)
   return out;
 }
 
+// Scales the numbers by one positive factor so that they become coprime
+// integers (all zero: unchanged). Used on hyperplane coefficients, which
+// this leaves the same hyperplane with the same sides.
+void scale_to_coprime_integers(Rational* x, std::size_t n);
+
 // The largest multiple of 2^-bits at or below q (bits >= 0).
 Rational floor_to_grid(const Rational& q, int bits);
 

@@ -3,6 +3,7 @@
 #ifndef CLASH4D_EXACT_RATIONAL_KERNEL_H
 #define CLASH4D_EXACT_RATIONAL_KERNEL_H
 
+#include "core/Hyperplane4.h"
 #include "core/Kernel_base.h"
 #include "exact/Rational.h"
 #include <string>
@@ -21,6 +22,14 @@ public:
   FT power_of_two(int e) const { return clash4d::power_of_two(e); }
   int grid_exponent(const FT& x) const { return clash4d::grid_exponent(x); }
   std::string to_text(const FT& x) const { return to_string(x); }
+  // A positive multiple of h with coprime integer coefficients: the same
+  // half-space in smaller numbers.
+  Hyperplane4<FT> in_lowest_terms(const Hyperplane4<FT>& h) const
+  {
+    Rational x[5] = {h.n[0], h.n[1], h.n[2], h.n[3], h.c};
+    scale_to_coprime_integers(x, 5);
+    return {{x[0], x[1], x[2], x[3]}, x[4]};
+  }
 };
 
 } // namespace clash4d
