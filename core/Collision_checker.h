@@ -80,8 +80,9 @@ public:
   // (Exact_proportional, core/Hyperplane4.h's proportional).
   using Exact_lines = std::function<typename Generate_and_test<K>::Line_decider(
       int a, int b, std::size_t span, const std::array<bool, 3>& frame_of_a, const Plane_layout&, const Box4& region)>;
-  using Exact_proportional = std::function<int(int a, int b, std::size_t span, const std::array<bool, 3>& frame_of_a,
-                                               std::size_t h, std::size_t g)>;
+  using Exact_proportional =
+      std::function<int(int a, int b, std::size_t span, const std::array<bool, 3>& frame_of_a, long entry_h, int face_h,
+                        long entry_g, int face_g, const Box4& region)>;
   void as_filter(Exact_lines exact, Exact_proportional same)
   {
     certified_witness_only_ = true;
@@ -252,8 +253,8 @@ private:
         return exact_lines_(a, b, span_index_, frame_of_a_, layout, box);
       });
     if (exact_proportional_)
-      dc.proportional_undecided_with([&](std::size_t h, std::size_t g) {
-        return exact_proportional_(a, b, span_index_, frame_of_a_, h, g);
+      dc.proportional_undecided_with([&](long eh, int fh, long eg, int fg, const Box4& box) {
+        return exact_proportional_(a, b, span_index_, frame_of_a_, eh, fh, eg, fg, box);
       });
     goal.improved = false;
     dc.search(region, formula, goal);

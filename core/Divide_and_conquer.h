@@ -79,7 +79,7 @@ public:
   {
     conquer_.lines_undecided_with(std::move(exact));
   }
-  void proportional_undecided_with(std::function<int(std::size_t, std::size_t)> exact)
+  void proportional_undecided_with(typename Generate_and_test<K>::Exact_same exact)
   {
     conquer_.proportional_undecided_with(std::move(exact));
   }

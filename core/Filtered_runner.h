@@ -66,9 +66,8 @@ public:
           checker.as_filter(
               [&](int a, int b, std::size_t span, const std::array<bool, 3>& frame, const Plane_layout& layout,
                   const Box<AFT, 4>& region) { return exact.lines(*this, a, b, span, frame, layout, region); },
-              [&](int a, int b, std::size_t span, const std::array<bool, 3>& frame, std::size_t h, std::size_t g) {
-                return exact.proportional(*this, a, b, span, frame, h, g);
-              });
+              [&](int a, int b, std::size_t span, const std::array<bool, 3>& frame, long eh, int fh, long eg, int fg,
+                  const Box<AFT, 4>& region) { return exact.proportional(*this, a, b, span, frame, eh, fh, eg, fg, region); });
           if (!options.earliest) checker.follow(&trail);
           Pair_result<AFT> found = checker.check_pair(a, b, options.earliest, ceiling ? &aceiling : nullptr);
           if (!found.collide) {
@@ -241,7 +240,7 @@ private:
     std::vector<Hyperplane4<EFT>> table;
     std::vector<Hyperplane4<EFT>> lowest;         // table in lowest terms, made for the first line
     Motion_groups<EFT> groups;
-    std::map<std::pair<std::size_t, std::size_t>, int> answers;
+    std::map<std::pair<long, long>, int> answers;
 
     void enter(Filtered_runner& runner, int a, int b, std::size_t s, const std::array<bool, 3>& frame)
     {
@@ -257,15 +256,30 @@ private:
       span = s;
     }
 
-    int proportional(Filtered_runner& runner, int a, int b, std::size_t s, const std::array<bool, 3>& frame,
-                     std::size_t h, std::size_t g)
+    // Whether two planes are one, each a table entry or (entry -1) a face of
+    // AK's region; a face whose value AK only encloses cannot be compared
+    // exactly here, and AK's run fails as it would have.
+    int proportional(Filtered_runner& runner, int a, int b, std::size_t s, const std::array<bool, 3>& frame, long eh,
+                     int fh, long eg, int fg, const Box<AFT, 4>& region)
     {
       CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
       enter(runner, a, b, s, frame);
-      auto [it, fresh] = answers.try_emplace({h, g}, 0);
+      auto plane = [&](long e, int f) {
+        if (e >= 0) return table.at(static_cast<std::size_t>(e));
+        const AFT& v = f % 2 ? region.hi[f / 2] : region.lo[f / 2];
+        if (!v.is_point()) throw CGAL::Uncertain_conversion_exception("a region face AK only encloses");
+        Box<EFT, 4> exact;
+        exact.set(f / 2, EFT(v.inf()), EFT(v.inf()));
+        return Generate_and_test<EK>::face(exact, f);
+      };
+      if (eh < 0 || eg < 0) {
+        ++runner.exact_planes_;
+        return clash4d::proportional(runner.ek_, plane(eh, fh), plane(eg, fg));
+      }
+      auto [it, fresh] = answers.try_emplace({eh, eg}, 0);
       if (fresh) {
         ++runner.exact_planes_;
-        it->second = clash4d::proportional(runner.ek_, table.at(h), table.at(g));
+        it->second = clash4d::proportional(runner.ek_, plane(eh, fh), plane(eg, fg));
       }
       return it->second;
     }

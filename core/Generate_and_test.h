@@ -119,11 +119,20 @@ public:
     return goal.found;
   }
 
-  // For an approximate kernel: which table entries are one plane, when it
-  // cannot tell (core/Filtered_runner.h asks the exact planes).
-  void proportional_undecided_with(std::function<int(std::size_t, std::size_t)> exact)
+  // For an approximate kernel: whether two planes are one (as
+  // core/Hyperplane4.h's proportional), when it cannot tell; each plane is a
+  // table entry or, when the entry is -1, face `face` of the region
+  // (core/Filtered_runner.h asks the exact planes).
+  using Exact_same = std::function<int(long entry_h, int face_h, long entry_g, int face_g, const Box<FT, 4>& region)>;
+  void proportional_undecided_with(Exact_same exact) { exact_same_ = std::move(exact); }
+
+  // Face 2 * a + upper of the region, inside <= 0: -x_a + lo <= 0 or x_a - hi <= 0.
+  static H face(const Box<FT, 4>& region, int which)
   {
-    exact_proportional_ = std::move(exact);
+    int a = which / 2;
+    V e{FT(0), FT(0), FT(0), FT(0)};
+    e[a] = FT(which % 2 ? 1 : -1);
+    return {e, which % 2 ? -region.hi[a] : region.lo[a]};
   }
 
   // Skeleton (§5): every edge of the boundary of the region the formula
@@ -163,7 +172,7 @@ private:
   std::pair<std::size_t, int> intern(const H& h, unsigned along, long entry, int face = -1)
   {
     for (std::size_t p = 0; p < planes_.size(); ++p)
-      if (int o = same_plane(h, p, entry)) {
+      if (int o = same_plane(h, p, entry, face)) {
         layout_.moves_along[p] |= along;
         add_corners(p, entry);
         return {p, o};
@@ -219,15 +228,6 @@ private:
     shared(cj, cm, ci);
   }
 
-  // Face 2 * a + upper of the region, inside <= 0: -x_a + lo <= 0 or x_a - hi <= 0.
-  static H face(const Box<FT, 4>& region, int which)
-  {
-    int a = which / 2;
-    V e{FT(0), FT(0), FT(0), FT(0)};
-    e[a] = FT(which % 2 ? 1 : -1);
-    return {e, which % 2 ? -region.hi[a] : region.lo[a]};
-  }
-
   // The line where planes i, j and m meet (zero when they do not). Three
   // planes that contain a group's motion (r, 1) meet along it: the
   // generalised cross product is then its last coordinate times (r, 1),
@@ -255,23 +255,24 @@ private:
     return along;
   }
 
-  // Whether table entries h and g are one plane (proportional), for one the
-  // kernel cannot decide; none: fail as the kernel does.
-  std::function<int(std::size_t h, std::size_t g)> exact_proportional_;
+  Exact_same exact_same_;
+  const Box<FT, 4>* region_ = nullptr;    // the conquer's region, while planes are collected
 
-  int same_plane(const H& h, std::size_t p, long entry) const
+  // Whether h (table entry `entry`, or region face `face`) is plane p, for
+  // the exact callback when this kernel cannot tell; none: fail as it does.
+  int same_plane(const H& h, std::size_t p, long entry, int face) const
   {
-    long other = layout_.entry[p];
-    if (!exact_proportional_ || entry < 0 || other < 0) return proportional(k_, h, planes_[p]);
+    if (!exact_same_) return proportional(k_, h, planes_[p]);
     try {
       return proportional(k_, h, planes_[p]);
     } catch (const CGAL::Uncertain_conversion_exception&) {
-      return exact_proportional_(static_cast<std::size_t>(entry), static_cast<std::size_t>(other));
+      return exact_same_(entry, face, layout_.entry[p], layout_.face[p], *region_);
     }
   }
 
   void collect_planes(const Formula& f, const Box<FT, 4>& region)
   {
+    region_ = &region;
     planes_.clear();
     layout_ = Plane_layout();
     layout_.leaf_plane.assign(table_.size(), {0, 0});
