@@ -238,7 +238,8 @@ private:
   struct Exact_span {
     std::size_t span = static_cast<std::size_t>(-1);
     std::vector<Hyperplane4<EFT>> table;
-    std::vector<Hyperplane4<EFT>> lowest;         // table in lowest terms, made for the first line
+    std::vector<Hyperplane4<EFT>> lowest;         // table entries in lowest terms, as lines need them
+    std::vector<char> lowest_made;
     Motion_groups<EFT> groups;
     std::map<std::pair<long, long>, int> answers;
 
@@ -316,8 +317,15 @@ private:
       // run), so they may use each plane in lowest terms: the arithmetic of
       // a line then starts from coprime integers, not products of the
       // scene's denominators.
-      if (lowest.empty())
-        for (const auto& h : table) lowest.push_back(runner.ek_.in_lowest_terms(h));
+      if (lowest.empty()) {
+        lowest = table;
+        lowest_made.assign(table.size(), 0);
+      }
+      for (long e : layout.entry)
+        if (e >= 0 && !lowest_made[e]) {
+          lowest[e] = runner.ek_.in_lowest_terms(table[e]);
+          lowest_made[e] = 1;
+        }
       auto conquer = std::make_shared<Conquer>(runner.ek_, lowest, groups);
       conquer->lines.adopt(layout, outer);
       return [conquer, exact](const Formula& f, std::size_t i, std::size_t j, std::size_t m, bool& known) {
