@@ -36,7 +36,8 @@ struct Search_trail {
   std::vector<int> path;                // division: child index at each depth
   bool on_line = false;                 // found on a line (else a region folded to "inside")
   std::array<std::size_t, 3> line{};    // the line's three planes, in generate-and-test's order
-  bool line_known = true;               // false: the region was conquered exactly, replay it whole
+  bool line_known = true;               // false: found on a line decided in rationals over a widened
+                                        // region (Filtered_runner::Exact_span::lines): replay the region
 
   bool recording() const { return mode == Mode::Record; }
   bool replaying() const { return mode == Mode::Replay; }
