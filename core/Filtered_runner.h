@@ -37,7 +37,8 @@ public:
   using EFT = typename EK::FT;
 
   Filtered_runner(const Scene& scene, bool use_sbounds)
-    : scene_(scene), use_sbounds_(use_sbounds), built_(new std::once_flag[scene.objects.size()])
+    : scene_(scene), use_sbounds_(use_sbounds), built_(new std::once_flag[scene.objects.size()]),
+      settled_(new std::once_flag[scene.objects.size()])
   {
     emodel_.t_lo = ek_.from_rational(scene.t_lo);
     emodel_.t_hi = ek_.from_rational(scene.t_hi);
@@ -155,7 +156,7 @@ private:
   std::vector<char> exact_only_;              // AK could not bound the object: its pairs go to EK
   Scene_model<EK> emodel_;                    // objects built on demand
   std::vector<typename Collision_checker<EK>::Bounds> esettled_;
-  std::unique_ptr<std::once_flag[]> built_;
+  std::unique_ptr<std::once_flag[]> built_, settled_;   // EK's model of an object, and its S-bounds
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0};
 
@@ -246,8 +247,8 @@ private:
     void enter(Filtered_runner& runner, int a, int b, std::size_t s, const std::array<bool, 3>& frame)
     {
       if (s == span) return;
-      runner.need_exact(a);
-      runner.need_exact(b);
+      runner.need_model(a);
+      runner.need_model(b);
       Check_stats ignored;
       groups = Motion_groups<EFT>();
       table = Collision_checker<EK>(runner.ek_, runner.emodel_, runner.esettled_, ignored, runner.use_sbounds_)
@@ -336,12 +337,20 @@ private:
     }
   };
 
-  void need_exact(int i)
+  // EK's model of object i (what plane tables need), and with need_exact
+  // its S-bounds too (what EK's runs need).
+  void need_model(int i)
   {
     std::call_once(built_[i], [&] {
       const Scene_object& o = scene_.objects[i];
       emodel_.objects[i].csg = Model_builder<EK>(ek_).build(o.shape);
       emodel_.objects[i].motion = Motion_path<EFT>::build(ek_, o.motion);
+    });
+  }
+  void need_exact(int i)
+  {
+    need_model(i);
+    std::call_once(settled_[i], [&] {
       Check_stats ignored;
       esettled_[i] = Collision_checker<EK>::settle_one(ek_, emodel_.objects[i].csg, ignored, use_sbounds_);
     });

@@ -22,9 +22,21 @@
 #include <functional>
 #include <array>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 namespace clash4d {
+
+// K::Filter, the approximate kernel K's predicates can be tried in first
+// (void: none).
+template <class K, class = void>
+struct filter_of {
+  using type = void;
+};
+template <class K>
+struct filter_of<K, std::void_t<typename K::Filter>> {
+  using type = typename K::Filter;
+};
 
 // Which hyperplanes a conquer works with and how the formula's leaves and
 // the region's faces map to them: the same in every kernel when the
@@ -112,10 +124,14 @@ public:
   }
 
   // One line of an adopted conquer: whether it holds a point inside.
+  // Only the verdict is wanted, so a kernel with a filter (K::Filter)
+  // classifies the neighbourhoods of the line's points in it first.
   bool line_has_inside(const Formula& f, std::size_t i, std::size_t j, std::size_t m)
   {
     Search_goal<FT> goal;
+    verdict_only_ = true;
     on_line(f, i, j, m, goal);
+    verdict_only_ = false;
     return goal.found;
   }
 
@@ -157,6 +173,7 @@ private:
   const Motion_groups<FT>* groups_;
   std::vector<H> planes_;                 // distinct hyperplanes, region faces last
   Plane_layout layout_;                   // where they come from
+  bool verdict_only_ = false;             // line_has_inside: no point will be made
   Exact_lines exact_lines_;
   std::vector<FT> at_base_, along_;       // per plane: value at the base point, slope along l
   std::vector<int> sign_;                 // per plane at the current test point: -1, 0, +1
@@ -533,6 +550,12 @@ private:
       for (std::size_t i = 0; i < through.size(); ++i) sign_[through[i]] = signs[i];
       return inside_region() && f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) == Truth::True;
     };
+    if constexpr (!std::is_void_v<typename filter_of<K>::type>)
+      if (verdict_only_)
+        if (auto found = filtered_has_inside<typename filter_of<K>::type>(l, normals, inside, stats_.cells_tested)) {
+          if (!*found) return std::nullopt;
+          return point_along(base, s, l);      // inside: a verdict, the point is not used
+        }
     std::optional<V> d = hood.find_inside(l, normals, inside);
     stats_.cells_tested += hood.cells_tested();
     if (!d) return std::nullopt;

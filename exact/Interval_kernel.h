@@ -11,6 +11,7 @@
 #include "core/Kernel_base.h"
 #include "core/Number_ops.h"
 #include "exact/Rational.h"
+#include <CGAL/FPU.h>
 #include <CGAL/Interval_nt.h>
 #include <cmath>
 #include <charconv>
@@ -33,6 +34,7 @@ struct Number_ops<Interval> {
 class Interval_kernel : public Kernel_base<Interval_kernel, Interval> {
 public:
   static constexpr const char* name() { return "interval"; }
+  using Protector = CGAL::Protect_FPU_rounding<true>;   // the rounding its arithmetic needs
   static constexpr bool reads_exact_constructions = true;   // tight enclosures, exact zeros (core/Model_builder.h)
   static constexpr bool is_exact = false;
   // Kept small enough to inline everywhere: the throw is out of line.

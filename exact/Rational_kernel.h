@@ -5,6 +5,7 @@
 
 #include "core/Hyperplane4.h"
 #include "core/Kernel_base.h"
+#include "exact/Interval_kernel.h"
 #include "exact/Rational.h"
 #include <string>
 
@@ -12,6 +13,8 @@ namespace clash4d {
 
 class Rational_kernel : public Kernel_base<Rational_kernel, Rational> {
 public:
+  // Where predicates that only decide may be tried first (filtered_has_inside).
+  using Filter = Interval_kernel;
   static constexpr const char* name() { return "rational"; }
   static constexpr bool reads_exact_constructions = true;   // the same numbers, not computed again (core/Model_builder.h)
   static constexpr bool is_exact = true;
