@@ -341,7 +341,8 @@ private:
     std::vector<std::pair<int, bool>> meets;
     for (std::size_t p = 0; p < planes_.size(); ++p) {
       sign_[p] = 0;   // Unknown on the segment unless constant there
-      if (k_.sign(along_[p]) == CGAL::ZERO) {
+      CGAL::Sign sa = k_.sign(along_[p]);
+      if (sa == CGAL::ZERO) {
         sign_[p] = static_cast<int>(k_.sign(at_base_[p]));
         continue;
       }
@@ -353,7 +354,7 @@ private:
       if (corner >= 0 && seen != meets.end()) {
         inside = seen->second;                 // the same point as the corner's first plane
       } else {
-        FT cut = -at_base_[p] / along_[p];
+        FT cut = k_.quotient(-at_base_[p], along_[p], sa);
         inside = k_.less(s_lo, cut) && k_.less(cut, s_hi);
         if (inside) cuts.push_back(cut);
         if (corner >= 0) meets.emplace_back(corner, inside);
@@ -386,12 +387,13 @@ private:
     for (const auto& fp : layout_.face_plane) {
       std::size_t p = fp.first;
       evaluate_plane(p, base, l);
-      int e = k_.sign(along_[p]) * fp.second;
+      CGAL::Sign sa = k_.sign(along_[p]);
+      int e = sa * fp.second;
       if (e == 0) {
         if (k_.sign(at_base_[p]) * fp.second > 0) return false;
         continue;
       }
-      FT cut = -at_base_[p] / along_[p];
+      FT cut = k_.quotient(-at_base_[p], along_[p], sa);
       if (e > 0) { s_hi = has_hi ? Number_ops<FT>::lower(s_hi, cut) : cut; has_hi = true; }
       else { s_lo = has_lo ? Number_ops<FT>::upper(s_lo, cut) : cut; has_lo = true; }
     }
@@ -527,9 +529,10 @@ private:
     for (int t = 0; t < 3; ++t) r[t] = {hs[t]->n[cols[0]], hs[t]->n[cols[1]], hs[t]->n[cols[2]]};
     Vector3<FT> x12 = cross(r[1], r[2]), x20 = cross(r[2], r[0]), x01 = cross(r[0], r[1]);
     FT det = dot(r[0], x12);
+    CGAL::Sign sd = k_.sign(det);
     V p;
     p[k] = FT(0);
-    for (int t = 0; t < 3; ++t) p[cols[t]] = -(a.c * x12[t] + b.c * x20[t] + c.c * x01[t]) / det;
+    for (int t = 0; t < 3; ++t) p[cols[t]] = k_.quotient(-(a.c * x12[t] + b.c * x20[t] + c.c * x01[t]), det, sd);
     return p;
   }
 

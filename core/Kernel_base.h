@@ -59,6 +59,10 @@ public:
     return strict ? s == CGAL::POSITIVE : s != CGAL::NEGATIVE;
   }
 
+  // a / b for b of known sign sb != 0 (an interval kernel uses the sign to
+  // skip the cases of a general division).
+  FT quotient(const FT& a, const FT& b, CGAL::Sign) const { return a / b; }
+
   CGAL::Sign compare(const FT& a, const FT& b) const { return derived().sign(a - b); }
   bool less(const FT& a, const FT& b) const { return compare(a, b) == CGAL::NEGATIVE; }
 

@@ -37,6 +37,17 @@ public:
   using Protector = CGAL::Protect_FPU_rounding<true>;   // the rounding its arithmetic needs
   static constexpr bool reads_exact_constructions = true;   // tight enclosures, exact zeros (core/Model_builder.h)
   static constexpr bool is_exact = false;
+  // b > 0: a / b is monotone in a, and its ends divide by b's far or near
+  // end as a's ends are positive or negative (rounding upward; -(-x / y)
+  // rounds down).
+  FT quotient(const FT& a, const FT& b, CGAL::Sign sb) const
+  {
+    if (sb == CGAL::NEGATIVE) return quotient(-a, -b, CGAL::POSITIVE);
+    double lo = -(-a.inf() / (a.inf() >= 0 ? b.sup() : b.inf()));
+    double hi = a.sup() / (a.sup() >= 0 ? b.inf() : b.sup());
+    return FT(lo, hi);
+  }
+
   // Kept small enough to inline everywhere: the throw is out of line.
   CGAL::Sign sign(const FT& x) const
   {

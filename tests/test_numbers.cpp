@@ -115,3 +115,22 @@ BOOST_AUTO_TEST_CASE(dyadic_text_is_the_exact_rational)
   for (double d : {0.0, 1.0, -3.0, 0.5, -0.375, 1e-10, 12345.6789, 1048575.0 / 1048576.0, 1e20, -7e-300})
     BOOST_TEST(Interval_kernel::dyadic_text(d) == to_string(Rational(d)), d);
 }
+
+// The interval kernel's division by an interval of known sign against
+// CGAL's general division: the same enclosure, on seeded random intervals.
+BOOST_AUTO_TEST_CASE(quotient_of_known_sign_is_cgal_division)
+{
+  std::uint64_t seed = 20261125;
+  BOOST_TEST_MESSAGE("interval quotient: seed " << seed);
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-4, 4);
+  Interval_kernel ik;
+  CGAL::Protect_FPU_rounding<true> protect;
+  for (int i = 0; i < 20000; ++i) {
+    double a0 = u(rng), a1 = i % 3 ? u(rng) : a0, b0 = std::abs(u(rng)) + 1e-3, b1 = i % 5 ? b0 + std::abs(u(rng)) : b0;
+    Interval a(std::min(a0, a1), std::max(a0, a1)), b(b0, b1);
+    if (i % 2) b = -b;
+    Interval q = ik.quotient(a, b, i % 2 ? CGAL::NEGATIVE : CGAL::POSITIVE), r = a / b;
+    BOOST_TEST((q.inf() == r.inf() && q.sup() == r.sup()), i);
+  }
+}
