@@ -174,6 +174,7 @@ private:
   std::vector<H> planes_;                 // distinct hyperplanes, region faces last
   Plane_layout layout_;                   // where they come from
   bool verdict_only_ = false;             // line_has_inside: no point will be made
+  std::vector<FT> cuts_;                  // on_line's cuts of the current line
   Exact_lines exact_lines_;
   std::vector<FT> at_base_, along_;       // per plane: value at the base point, slope along l
   std::vector<int> sign_;                 // per plane at the current test point: -1, 0, +1
@@ -334,7 +335,8 @@ private:
     if (!range_in_region(base, l, s_lo, s_hi)) return;
     if (!goal.can_improve(Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
     evaluate_planes(base, l, layout_.first_face);
-    std::vector<FT> cuts{s_lo, s_hi};
+    std::vector<FT>& cuts = cuts_;          // reused: a line's cuts, no allocation per line
+    cuts.assign({s_lo, s_hi});
     FT centre = (s_lo + s_hi) / FT(2);
     // Per corner whose path the line meets: whether that point is on the
     // segment (every plane of the corner cuts the line there).
