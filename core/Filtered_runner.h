@@ -24,6 +24,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 namespace clash4d {
 
@@ -170,8 +171,9 @@ private:
     r.b = found.b;
     r.collide = r.has_witness = r.witness_verified = true;
     for (int q = 0; q < 4; ++q) {
-      if (!found.witness[q].is_point()) throw std::logic_error("internal error: an interval witness is not a point");
-      r.witness[q] = ek_.from_rational(Rational(found.witness[q].inf()));
+      std::optional<Rational> x = ak_.exact_value(found.witness[q]);
+      if (!x) throw std::logic_error("internal error: an interval witness is not a point");
+      r.witness[q] = ek_.from_rational(*x);
     }
     return r;
   }
@@ -268,10 +270,10 @@ private:
       enter(runner, a, b, s, frame);
       auto plane = [&](long e, int f) {
         if (e >= 0) return table.at(static_cast<std::size_t>(e));
-        const AFT& v = f % 2 ? region.hi[f / 2] : region.lo[f / 2];
-        if (!v.is_point()) throw CGAL::Uncertain_conversion_exception("a region face AK only encloses");
+        std::optional<Rational> v = runner.ak_.exact_value(f % 2 ? region.hi[f / 2] : region.lo[f / 2]);
+        if (!v) throw CGAL::Uncertain_conversion_exception("a region face AK only encloses");
         Box<EFT, 4> exact;
-        exact.set(f / 2, EFT(v.inf()), EFT(v.inf()));
+        exact.set(f / 2, runner.ek_.from_rational(*v), runner.ek_.from_rational(*v));
         return Generate_and_test<EK>::face(exact, f);
       };
       if (eh < 0 || eg < 0) {

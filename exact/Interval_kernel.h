@@ -16,6 +16,7 @@
 #include <cmath>
 #include <charconv>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 namespace clash4d {
@@ -75,6 +76,13 @@ public:
     return FT(-(-n / d), n / d);
   }
   FT power_of_two(int e) const { return FT(power_of_two_double(e)); }
+  // The number a point interval is (grid values, snapped witnesses); none
+  // for an interval that only encloses one.
+  std::optional<Rational> exact_value(const FT& x) const
+  {
+    if (!x.is_point()) return std::nullopt;
+    return Rational(x.inf());
+  }
   // Certain only when both bounds round to the same grid point (then a point
   // interval: grid values are exact doubles while bits and x are moderate).
   FT floor_to_grid(const FT& x, int bits) const
