@@ -16,9 +16,7 @@
 #include "core/Search_goal.h"
 #include "core/Search_trail.h"
 #include <CGAL/Uncertain.h>
-#include <CGAL/number_utils.h>
 #include <algorithm>
-#include <cmath>
 #include <functional>
 #include <array>
 #include <optional>
@@ -517,12 +515,7 @@ private:
   // Cramer's rule, as cross products of the rows.
   V base_point(const H& a, const H& b, const H& c, const V& l) const
   {
-    int k = 0;
-    double largest = -1;
-    for (int q = 0; q < 4; ++q) {
-      double m = std::abs(CGAL::to_double(l[q]));
-      if (m > largest) largest = m, k = q;
-    }
+    int k = k_.largest_component(l);
     int cols[3], n = 0;
     for (int q = 0; q < 4; ++q)
       if (q != k) cols[n++] = q;

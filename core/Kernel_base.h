@@ -39,6 +39,18 @@ public:
   }
   bool less_on_grid(const FT& a, const FT& b) const { return less(grid_point(a), grid_point(b)); }
 
+  // The index of a largest |v_q|, for a choice any answer is right for (the
+  // coordinate a base point is solved on); an approximate kernel may pick
+  // any of near ties.
+  template <std::size_t N>
+  int largest_component(const std::array<FT, N>& v) const
+  {
+    int k = 0;
+    for (int q = 1; q < static_cast<int>(N); ++q)
+      if (less(Number_ops<FT>::magnitude(v[k]), Number_ops<FT>::magnitude(v[q]))) k = q;
+    return k;
+  }
+
   // x rounded to the nearest multiple of 2^-bits (bits >= 0).
   FT round_to_grid(const FT& x, int bits) const
   {

@@ -49,6 +49,17 @@ public:
     return FT(lo, hi);
   }
 
+  // Near ties need no certificate here (Kernel_base::largest_component):
+  // compared by the enclosures' upper ends.
+  template <std::size_t N>
+  int largest_component(const std::array<FT, N>& v) const
+  {
+    int k = 0;
+    for (int q = 1; q < static_cast<int>(N); ++q)
+      if (CGAL::abs(v[k]).sup() < CGAL::abs(v[q]).sup()) k = q;
+    return k;
+  }
+
   // Kept small enough to inline everywhere: the throw is out of line.
   CGAL::Sign sign(const FT& x) const
   {
