@@ -277,7 +277,7 @@ private:
       try {
         make_witness(goal, shear, A, B, span, r);
       } catch (const CGAL::Uncertain_conversion_exception&) {
-        r.has_witness = false;
+        // has_witness stays false: the pair goes to the exact kernel.
       }
     } else {
       make_witness(goal, shear, A, B, span, r);
@@ -637,7 +637,7 @@ private:
   {
     FT least = Number_ops<FT>::magnitude(values[0]), widest = Number_ops<FT>::magnitude(planes[0].n[0]);
     for (std::size_t i = 0; i < planes.size(); ++i) {
-      least = Number_ops<FT>::lower(least, Number_ops<FT>::magnitude(values[i]));
+      if (i > 0) least = Number_ops<FT>::lower(least, Number_ops<FT>::magnitude(values[i]));
       for (const FT& n : planes[i].n) widest = Number_ops<FT>::upper(widest, Number_ops<FT>::magnitude(n));
     }
     FT room = FT(13) * least / (FT(64) * widest);

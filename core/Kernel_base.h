@@ -29,10 +29,7 @@ public:
   // The grid point nearest to x. Rounding jumps halfway between grid points,
   // away from the integers and short binary fractions scene values sit on,
   // so an interval around such a value still has one grid point.
-  FT grid_point(const FT& x) const
-  {
-    return derived().floor_to_grid(x + derived().power_of_two(-grid_bits - 1), grid_bits);
-  }
+  FT grid_point(const FT& x) const { return round_to_grid(x, grid_bits); }
   bool same_on_grid(const FT& a, const FT& b) const
   {
     return Number_ops<FT>::same(a, b) || compare(grid_point(a), grid_point(b)) == CGAL::ZERO;

@@ -1,4 +1,5 @@
 #include "exact/Exact_validation.h"
+#include "core/Polytope_ft.h"
 
 #include <CGAL/Cartesian.h>
 #include <CGAL/QP_functions.h>
@@ -19,12 +20,6 @@ using Program = CGAL::Quadratic_program<Rational>;
 using Solution = CGAL::Quadratic_program_solution<Rational>;
 
 Point_3 to_point(const Rational3& p) { return Point_3(p[0], p[1], p[2]); }
-
-Rational det3(const Rational3& a, const Rational3& b, const Rational3& c)
-{
-  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-         a[2] * (b[0] * c[1] - b[1] * c[0]);
-}
 
 // Linear program over (x, y, z, s): a.x + d + w*s <= 0 for each half-space.
 Program make_program(const std::vector<Rational4>& planes, const Rational& w)
@@ -152,16 +147,9 @@ Polytope_combinatorics convex_vertex_triples(const std::vector<Rational4>& plane
     for (int j = i + 1; j < m; ++j)
       for (int k = j + 1; k < m; ++k) {
         Rational3 a = normal(i), b = normal(j), c = normal(k);
-        Rational det = det3(a, b, c);
+        Rational det = determinant3(a, b, c);
         if (CGAL::is_zero(det)) continue;
-        // Cramer's rule for a.x = -d on the three planes.
-        Rational3 rhs{-planes[i][3], -planes[j][3], -planes[k][3]};
-        Rational3 p;
-        for (int axis = 0; axis < 3; ++axis) {
-          Rational3 ca = a, cb = b, cc = c;
-          ca[axis] = rhs[0]; cb[axis] = rhs[1]; cc[axis] = rhs[2];
-          p[axis] = det3(ca, cb, cc) / det;
-        }
+        Rational3 p = vertex_of(planes[i], planes[j], planes[k]);
         bool inside = true;
         std::vector<int> through;
         for (int h = 0; h < m && inside; ++h) {

@@ -92,7 +92,7 @@ BOOST_AUTO_TEST_CASE(prism_hull_and_convex)
   auto cube = model_of(R"({"hull":[[0,0,0],[1,0,0],[0,1,0],[1,1,0],[0,0,1],[1,0,1],[0,1,1],[1,1,1],["1/2","1/2","1/2"]]})");
   BOOST_TEST(cube.primitives[0].planes.size() == 6u);   // one plane per facet, not per triangle
   check_box(cube.primitives[0].box, {Q(0), Q(0), Q(0)}, {Q(1), Q(1), Q(1)});
-  check_vertices_on_planes(Primitive<Q>{"", cube.primitives[0].planes, {{Q(0), Q(0), Q(0)}, {Q(1), Q(1), Q(1)}}, {}});
+  check_vertices_on_planes(Primitive<Q>{"", cube.primitives[0].planes, {{Q(0), Q(0), Q(0)}, {Q(1), Q(1), Q(1)}}, {}, {}});
 
   auto octa = model_of(R"({"convex":[[1,1,1,-1],[1,1,-1,-1],[1,-1,1,-1],[1,-1,-1,-1],[-1,1,1,-1],[-1,1,-1,-1],[-1,-1,1,-1],[-1,-1,-1,-1],[1,0,0,-5]]})");
   BOOST_TEST(octa.primitives[0].vertices.size() == 6u);
