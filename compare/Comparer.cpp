@@ -1,6 +1,6 @@
 #include "compare/Comparer.h"
 #include "compare/Fcl_subject.h"
-#include "core/Point_classifier.h"
+#include "model/Point_classifier.h"
 #include "exact/Exact_instantiation.h"
 #include "exact/Rational_kernel.h"
 #include "float/Double_instantiation.h"

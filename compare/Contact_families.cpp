@@ -1,6 +1,6 @@
 #include "compare/Contact_families.h"
-#include "core/Model_builder.h"
-#include "exact/Exact_validation.h"
+#include "model/Model_builder.h"
+#include "scene/Exact_validation.h"
 #include "scene/Number_text.h"
 #include "scene/Scene_writer.h"
 

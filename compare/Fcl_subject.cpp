@@ -2,8 +2,8 @@
 
 #ifdef CLASH4D_HAVE_FCL
 #include "compare/Comparer.h"
-#include "core/Model_builder.h"
-#include "core/Motion_path.h"
+#include "model/Model_builder.h"
+#include "model/Motion_path.h"
 #include "exact/Rational_kernel.h"
 #include "float/Double_kernel.h"
 #include "scene/Input_error.h"

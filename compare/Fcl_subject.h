@@ -27,7 +27,7 @@
 #ifndef CLASH4D_COMPARE_FCL_SUBJECT_H
 #define CLASH4D_COMPARE_FCL_SUBJECT_H
 
-#include "core/Check_answer.h"
+#include "check/Check_answer.h"
 #include "scene/Scene.h"
 #include <memory>
 #include <optional>

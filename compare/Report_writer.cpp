@@ -1,6 +1,6 @@
 #include "compare/Report_writer.h"
 
-#include "core/Scene_model.h"
+#include "model/Scene_model.h"
 #include "float/Double_kernel.h"
 #include "scene/Number_text.h"
 

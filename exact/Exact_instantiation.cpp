@@ -1,6 +1,6 @@
 #include "exact/Exact_instantiation.h"
-#include "core/Extrusion_report.h"
-#include "core/Filtered_runner.h"
+#include "model/Extrusion_report.h"
+#include "exact/Filtered_runner.h"
 #include "exact/Interval_kernel.h"
 #include "exact/Rational_kernel.h"
 #include <CGAL/FPU.h>

@@ -4,7 +4,7 @@
 #ifndef CLASH4D_EXACT_EXACT_INSTANTIATION_H
 #define CLASH4D_EXACT_EXACT_INSTANTIATION_H
 
-#include "core/Check_answer.h"
+#include "check/Check_answer.h"
 #include "scene/Scene.h"
 #include <nlohmann/json.hpp>
 

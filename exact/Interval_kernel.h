@@ -8,9 +8,10 @@
 #ifndef CLASH4D_EXACT_INTERVAL_KERNEL_H
 #define CLASH4D_EXACT_INTERVAL_KERNEL_H
 
-#include "core/Kernel_base.h"
-#include "core/Number_ops.h"
-#include "exact/Rational.h"
+#include "geometry/Kernel_base.h"
+#include "geometry/Kernel_concept.h"
+#include "numbers/Number_ops.h"
+#include "numbers/Rational.h"
 #include <CGAL/FPU.h>
 #include <CGAL/Interval_nt.h>
 #include <cmath>
@@ -23,7 +24,7 @@ namespace clash4d {
 
 using Interval = CGAL::Interval_nt<false>;
 
-// Enclosures of min, max and |a|, no decision (see core/Number_ops.h).
+// Enclosures of min, max and |a|, no decision (see numbers/Number_ops.h).
 template <>
 struct Number_ops<Interval> {
   static Interval lower(const Interval& a, const Interval& b) { return CGAL::min(a, b); }
@@ -36,7 +37,7 @@ class Interval_kernel : public Kernel_base<Interval_kernel, Interval> {
 public:
   static constexpr const char* name() { return "interval"; }
   using Protector = CGAL::Protect_FPU_rounding<true>;   // the rounding its arithmetic needs
-  static constexpr bool reads_exact_constructions = true;   // tight enclosures, exact zeros (core/Model_builder.h)
+  static constexpr bool reads_exact_constructions = true;   // tight enclosures, exact zeros (model/Model_builder.h)
   static constexpr bool is_exact = false;
   // b > 0: a / b is monotone in a, and its ends divide by b's far or near
   // end as a's ends are positive or negative (rounding upward; -(-x / y)
@@ -156,6 +157,8 @@ public:
     return std::string(text, end);
   }
 };
+
+static_assert(is_kernel_v<Interval_kernel>, "Interval_kernel must model the kernel concept (geometry/Kernel_concept.h)");
 
 } // namespace clash4d
 

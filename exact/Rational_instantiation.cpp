@@ -1,6 +1,6 @@
 #include "exact/Exact_instantiation.h"
-#include "core/Check_runner.h"
-#include "core/Extrusion_report.h"
+#include "check/Check_runner.h"
+#include "model/Extrusion_report.h"
 #include "exact/Rational_kernel.h"
 
 namespace clash4d {

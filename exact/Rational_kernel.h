@@ -3,10 +3,11 @@
 #ifndef CLASH4D_EXACT_RATIONAL_KERNEL_H
 #define CLASH4D_EXACT_RATIONAL_KERNEL_H
 
-#include "core/Hyperplane4.h"
-#include "core/Kernel_base.h"
+#include "geometry/Hyperplane4.h"
+#include "geometry/Kernel_base.h"
+#include "geometry/Kernel_concept.h"
 #include "exact/Interval_kernel.h"
-#include "exact/Rational.h"
+#include "numbers/Rational.h"
 #include <string>
 
 namespace clash4d {
@@ -16,7 +17,7 @@ public:
   // Where predicates that only decide may be tried first (filtered_has_inside).
   using Filter = Interval_kernel;
   static constexpr const char* name() { return "rational"; }
-  static constexpr bool reads_exact_constructions = true;   // the same numbers, not computed again (core/Model_builder.h)
+  static constexpr bool reads_exact_constructions = true;   // the same numbers, not computed again (model/Model_builder.h)
   static constexpr bool is_exact = true;
   CGAL::Sign sign(const FT& x) const { return CGAL::sign(x); }
   FT from_rational(const Rational& q) const { return q; }
@@ -34,6 +35,8 @@ public:
     return {{x[0], x[1], x[2], x[3]}, x[4]};
   }
 };
+
+static_assert(is_kernel_v<Rational_kernel>, "Rational_kernel must model the kernel concept (geometry/Kernel_concept.h)");
 
 } // namespace clash4d
 

@@ -1,6 +1,6 @@
 #include "float/Double_instantiation.h"
-#include "core/Check_runner.h"
-#include "core/Extrusion_report.h"
+#include "check/Check_runner.h"
+#include "model/Extrusion_report.h"
 #include "float/Double_kernel.h"
 
 namespace clash4d {

@@ -2,7 +2,7 @@
 #ifndef CLASH4D_FLOAT_DOUBLE_INSTANTIATION_H
 #define CLASH4D_FLOAT_DOUBLE_INSTANTIATION_H
 
-#include "core/Check_answer.h"
+#include "check/Check_answer.h"
 #include "scene/Scene.h"
 #include <nlohmann/json.hpp>
 

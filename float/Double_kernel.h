@@ -4,8 +4,9 @@
 #ifndef CLASH4D_FLOAT_DOUBLE_KERNEL_H
 #define CLASH4D_FLOAT_DOUBLE_KERNEL_H
 
-#include "core/Kernel_base.h"
-#include "exact/Rational.h"
+#include "geometry/Kernel_base.h"
+#include "geometry/Kernel_concept.h"
+#include "numbers/Rational.h"
 #include <cmath>
 #include <string>
 
@@ -15,7 +16,7 @@ class Double_kernel : public Kernel_base<Double_kernel, double> {
 public:
   explicit Double_kernel(double tolerance = 0) : tolerance_(tolerance) {}
   static constexpr const char* name() { return "double"; }
-  static constexpr bool reads_exact_constructions = false;   // float code computes its own (core/Model_builder.h)
+  static constexpr bool reads_exact_constructions = false;   // float code computes its own (model/Model_builder.h)
   static constexpr bool is_exact = false;
   double tolerance() const { return tolerance_; }
   CGAL::Sign sign(double x) const
@@ -44,6 +45,8 @@ public:
 private:
   double tolerance_;
 };
+
+static_assert(is_kernel_v<Double_kernel>, "Double_kernel must model the kernel concept (geometry/Kernel_concept.h)");
 
 } // namespace clash4d
 

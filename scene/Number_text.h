@@ -2,7 +2,7 @@
 #ifndef CLASH4D_SCENE_NUMBER_TEXT_H
 #define CLASH4D_SCENE_NUMBER_TEXT_H
 
-#include "exact/Rational.h"
+#include "numbers/Rational.h"
 #include <string>
 
 namespace clash4d {

@@ -2,7 +2,7 @@
 #ifndef CLASH4D_SCENE_SCENE_H
 #define CLASH4D_SCENE_SCENE_H
 
-#include "exact/Rational.h"
+#include "numbers/Rational.h"
 #include <array>
 #include <string>
 #include <utility>
@@ -23,10 +23,10 @@ struct Solid {
   // same polytope: hull facets as point triples (outward by right-hand rule),
   // convex vertices as triples of half-space indices.
   std::vector<std::array<int, 3>> triples;
-  // Hull and convex: the corners found by validation (exact/Exact_validation.h,
+  // Hull and convex: the corners found by validation (scene/Exact_validation.h,
   // Polytope_combinatorics), each as the indices of its four or more planes.
   std::vector<std::vector<int>> corners;
-  // Their exact geometry, made by the reader (core/Polytope_ft.h), for the
+  // Their exact geometry, made by the reader (geometry/Polytope_ft.h), for the
   // kernels that read constructions rather than compute them
   // (K::reads_exact_constructions): hull facet planes a b c d, convex
   // vertices x y z, in the order of triples; empty when not made.

@@ -1,6 +1,6 @@
 #include "scene/Scene_reader.h"
-#include "core/Polytope_ft.h"
-#include "exact/Exact_validation.h"
+#include "geometry/Polytope_ft.h"
+#include "scene/Exact_validation.h"
 #include "scene/Input_error.h"
 #include "scene/Json_reader.h"
 #include "scene/Number_text.h"

@@ -12,7 +12,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "compare/Contact_families.h"
-#include "core/Divide_and_conquer.h"
+#include "search/Divide_and_conquer.h"
 #include "exact/Exact_instantiation.h"
 #include "exact/Interval_kernel.h"
 #include "exact/Rational_kernel.h"
@@ -190,7 +190,7 @@ BOOST_AUTO_TEST_CASE(no_fallback_in_general_position)
   BOOST_TEST(e.stats.exact_witness_replays == 0u);
 }
 
-// Corners (core/Motion_groups.h): a square pyramid's apex lies on four
+// Corners (model/Motion_groups.h): a square pyramid's apex lies on four
 // facets, so the fourth is exactly zero on the path of the other three, and
 // its apex here is at non-dyadic coordinates, where intervals only enclose
 // that zero. Written as zeros, the path and the cells around it are decided
@@ -246,7 +246,7 @@ BOOST_AUTO_TEST_CASE(random_hull_scenes_match_rational)
   BOOST_TEST(collide > 0u);
 }
 
-// Motion groups (core/Motion_groups.h): three planes (n, -n.r) of one object
+// Motion groups (model/Motion_groups.h): three planes (n, -n.r) of one object
 // moving with r meet in a line along (r, 1), and the generalised cross
 // product is its last coordinate times (r, 1) exactly; generate-and-test
 // writes it so. Checked in rationals on random planes, with r zero on some

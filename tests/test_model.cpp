@@ -1,7 +1,7 @@
 #define BOOST_TEST_MODULE model
 #include <boost/test/unit_test.hpp>
 
-#include "core/Scene_model.h"
+#include "model/Scene_model.h"
 #include "exact/Rational_kernel.h"
 #include "float/Double_kernel.h"
 #include "scene/Json_reader.h"

@@ -8,7 +8,7 @@
 // CLASH4D_SEED overrides the campaign seed, CLASH4D_ORACLE_CASES the number of
 // exact cases, CLASH4D_ORACLE_DOUBLE_CASES the number of double cases.
 
-#include "core/Check_runner.h"
+#include "check/Check_runner.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_kernel.h"
 #include "scene/Json_reader.h"

@@ -14,7 +14,7 @@
 #ifndef CLASH4D_TESTS_SUPPORT_BRUTE_FORCE_ORACLE_H
 #define CLASH4D_TESTS_SUPPORT_BRUTE_FORCE_ORACLE_H
 
-#include "exact/Rational.h"
+#include "numbers/Rational.h"
 #include "scene/Scene.h"
 
 #include <CGAL/QP_functions.h>

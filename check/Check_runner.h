@@ -1,0 +1,168 @@
+// `check` over a whole scene with one kernel: every pair not ignored, in
+// order, stopping at the first collision unless all pairs are asked for.
+#ifndef CLASH4D_CHECK_CHECK_RUNNER_H
+#define CLASH4D_CHECK_CHECK_RUNNER_H
+
+#include "check/Check_answer.h"
+#include "check/Collision_checker.h"
+#include "check/Pair_sweep.h"
+#include <atomic>
+#include <mutex>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace clash4d {
+
+template <class K>
+Pair_answer pair_answer(const K& k, const Scene_model<K>& model, const Pair_result<typename K::FT>& r)
+{
+  Pair_answer p;
+  p.a = model.objects[r.a].name;
+  p.b = model.objects[r.b].name;
+  for (int i = 0; i < 4; ++i) p.witness[i] = k.to_text(r.witness[i]);
+  p.witness_verified = r.witness_verified;
+  p.earliest = r.earliest;
+  if (r.earliest) {
+    p.t_star = k.to_text(r.t_star);
+    for (int i = 0; i < 4; ++i) p.contact[i] = k.to_text(r.contact[i]);
+    p.at_start = k.compare(r.t_star, model.t_lo) == CGAL::ZERO;
+  }
+  return p;
+}
+
+// Pairs are independent, so they are checked in parallel (TBB); results are
+// kept per pair and merged in pair order, so the answer is the one a single
+// thread gives: the first colliding pair in order, or the smallest t* with
+// the first pair in order among equals. check(i, ceiling, stats) decides pair
+// i (a filtered run may decide it in two kernels; results are in K's numbers).
+template <class K, class Check_one>
+void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::pair<int, int>>& pairs,
+               const Check_options& options, Check_one check, Check_answer& answer)
+{
+  using FT = typename K::FT;
+  std::vector<Pair_result<FT>> results(pairs.size());
+  std::vector<Check_stats> stats(pairs.size());
+  std::atomic<std::size_t> first_hit{pairs.size()};      // any-collision mode: lowest colliding index
+  std::mutex best_mutex;
+  bool have_best = false;
+  FT best{};
+  auto check_one = [&](std::size_t i) {
+    if (!options.all_pairs && !options.earliest && i > first_hit.load()) return;
+    FT ceiling{};
+    bool use_ceiling = false;
+    if (options.earliest && !options.all_pairs) {
+      std::lock_guard<std::mutex> lock(best_mutex);
+      use_ceiling = have_best;
+      ceiling = best;
+    }
+    results[i] = check(i, use_ceiling ? &ceiling : nullptr, stats[i]);
+    if (!results[i].collide) return;
+    if (options.earliest) {
+      std::lock_guard<std::mutex> lock(best_mutex);
+      if (!have_best || k.less(results[i].t_star, best)) { have_best = true; best = results[i].t_star; }
+    }
+    std::size_t seen = first_hit.load();
+    while (i < seen && !first_hit.compare_exchange_weak(seen, i)) {}
+  };
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) check_one(i);
+  });
+
+  bool merged = false;
+  FT merged_best{};
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    answer.stats.add(stats[i]);
+    const Pair_result<FT>& r = results[i];
+    if (!r.collide) continue;
+    if (!options.all_pairs && !options.earliest && answer.collide) break;
+    answer.collide = true;
+    answer.pairs.push_back(pair_answer(k, model, r));
+    if (options.earliest && (!merged || k.less(r.t_star, merged_best))) {
+      merged = true;
+      merged_best = r.t_star;
+      answer.earliest_pair = static_cast<int>(answer.pairs.size()) - 1;
+    }
+  }
+  if (options.earliest && !options.all_pairs && answer.earliest_pair >= 0) {
+    // Report only the earliest pair (others may have been cut short by the ceiling).
+    Pair_answer p = answer.pairs[answer.earliest_pair];
+    answer.pairs = {p};
+    answer.earliest_pair = 0;
+  }
+}
+
+// Object pairs the sweep keeps (§6), with the sweep's counts and time.
+template <class K>
+std::vector<std::pair<int, int>> candidate_pairs(const K& k, const Scene_model<K>& model,
+                                                 const std::vector<typename Collision_checker<K>::Bounds>& settled,
+                                                 const Scene& scene, Check_stats& stats)
+{
+  auto start = std::chrono::steady_clock::now();
+  std::vector<Box<typename K::FT, 3>> roots;
+  for (const auto& b : settled) roots.push_back(b[0]);
+  std::vector<std::pair<int, int>> pairs = Pair_sweep<K>(k).candidates(model, roots, scene);
+  std::size_t n = model.objects.size();
+  stats.object_pairs = n * (n - 1) / 2 - scene.ignore.size();
+  stats.candidate_pairs = pairs.size();
+  stats.seconds_sweep = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return pairs;
+}
+
+template <class K>
+Check_answer run_check(const K& k, const Scene& scene, const Check_options& options)
+{
+  using Checker = Collision_checker<K>;
+  Check_answer answer;
+  answer.number = K::name();
+  auto start = std::chrono::steady_clock::now();
+  Scene_model<K> model = Scene_model<K>::build(k, scene);
+  answer.stats.seconds_model = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  auto settled = Checker::settle_all(k, model, answer.stats, options.sbounds);
+  std::vector<std::pair<int, int>> pairs = candidate_pairs(k, model, settled, scene, answer.stats);
+  auto check = [&](std::size_t i, const typename K::FT* ceiling, Check_stats& stats) {
+    Checker checker(k, model, settled, stats, options.sbounds);
+    return checker.check_pair(pairs[i].first, pairs[i].second, options.earliest, ceiling);
+  };
+  run_pairs(k, model, pairs, options, check, answer);
+  return answer;
+}
+
+// skeleton(i, stats): the collision-region edges of pair i, in K's numbers.
+template <class K, class Skeleton_one>
+void run_skeleton_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::pair<int, int>>& pairs,
+                        Skeleton_one skeleton, Skeleton_answer& answer)
+{
+  std::vector<std::vector<typename Collision_checker<K>::Segment>> edges(pairs.size());
+  std::vector<Check_stats> stats(pairs.size());
+  tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t i) { edges[i] = skeleton(i, stats[i]); });
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    answer.stats.add(stats[i]);
+    if (edges[i].empty()) continue;
+    Skeleton_answer::Pair p{model.objects[pairs[i].first].name, model.objects[pairs[i].second].name, {}};
+    for (const auto& e : edges[i]) {
+      std::array<std::array<std::string, 4>, 2> text;
+      for (int end = 0; end < 2; ++end)
+        for (int q = 0; q < 4; ++q) text[end][q] = k.to_text(e[end][q]);
+      p.edges.push_back(text);
+    }
+    answer.pairs.push_back(p);
+  }
+}
+
+template <class K>
+Skeleton_answer run_skeleton(const K& k, const Scene& scene)
+{
+  Skeleton_answer answer;
+  answer.number = K::name();
+  Scene_model<K> model = Scene_model<K>::build(k, scene);
+  auto settled = Collision_checker<K>::settle_all(k, model, answer.stats, true);
+  std::vector<std::pair<int, int>> pairs = candidate_pairs(k, model, settled, scene, answer.stats);
+  run_skeleton_pairs(k, model, pairs, [&](std::size_t i, Check_stats& stats) {
+    return Collision_checker<K>(k, model, settled, stats).skeleton_pair(pairs[i].first, pairs[i].second);
+  }, answer);
+  return answer;
+}
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,108 @@
+// Candidate pairs of a many-object scene (§6) without paying for all n^2:
+// each object contributes one space-time box per motion segment inside the
+// span (its root S-bound moved over the segment), and CGAL's
+// box_intersection_d (a streaming segment tree, O(n log^4 n + k)) reports the
+// pairs of boxes that meet. It runs on double boxes rounded outward
+// (CGAL::to_interval), a conservative filter only: every reported pair is
+// then tested with the kernel for common interior, and pairs not kept cannot
+// collide (their extrusions lie in boxes without common interior).
+#ifndef CLASH4D_CHECK_PAIR_SWEEP_H
+#define CLASH4D_CHECK_PAIR_SWEEP_H
+
+#include "geometry/Box.h"
+#include "model/Scene_model.h"
+#include <CGAL/box_intersection_d.h>
+#include <algorithm>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace clash4d {
+
+template <class K>
+class Pair_sweep {
+public:
+  using FT = typename K::FT;
+  using Box4 = Box<FT, 4>;
+
+  explicit Pair_sweep(const K& k) : k_(k) {}
+
+  // roots[i]: object i's root S-bound in its own frame. Returns (i, j), i < j,
+  // sorted, without ignored pairs.
+  std::vector<std::pair<int, int>> candidates(const Scene_model<K>& model, const std::vector<Box<FT, 3>>& roots,
+                                              const Scene& scene) const
+  {
+    std::vector<Item> items;
+    for (std::size_t i = 0; i < model.objects.size(); ++i) add_boxes(model, static_cast<int>(i), roots[i], items);
+    std::vector<Filter_box> boxes;
+    boxes.reserve(items.size());
+    for (std::size_t i = 0; i < items.size(); ++i) boxes.push_back(filter_box(items[i].box, i));
+    std::vector<std::pair<int, int>> out;
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Filter_box& a, const Filter_box& b) {
+      const Item &x = items[a.info()], &y = items[b.info()];
+      if (x.object == y.object || !overlaps(x.box, y.box)) return;
+      int i = std::min(x.object, y.object), j = std::max(x.object, y.object);
+      if (!scene.ignored(i, j)) out.emplace_back(i, j);
+    });
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+
+private:
+  const K& k_;
+  struct Item {
+    int object;
+    Box4 box;
+  };
+  using Filter_box = CGAL::Box_intersection_d::Box_with_info_d<double, 4, std::size_t>;
+
+  // The double box containing b (outward rounding; unbounded sides at +-max).
+  static Filter_box filter_box(const Box4& b, std::size_t index)
+  {
+    const double big = std::numeric_limits<double>::max();
+    double lo[4], hi[4];
+    for (int q = 0; q < 4; ++q) {
+      lo[q] = b.has_lo[q] ? std::max(-big, CGAL::to_interval(b.lo[q]).first) : -big;
+      hi[q] = b.has_hi[q] ? std::min(big, CGAL::to_interval(b.hi[q]).second) : big;
+    }
+    return Filter_box(lo, hi, index);
+  }
+
+  void add_boxes(const Scene_model<K>& model, int i, const Box<FT, 3>& root, std::vector<Item>& items) const
+  {
+    if (root.empty) return;
+    for (const auto& span : model.sub_spans({i})) {
+      std::size_t seg = model.segment_on(i, span);
+      const auto& m = model.objects[i].motion;
+      Box4 b;
+      for (int q = 0; q < 3; ++q) {
+        FT d0 = m.velocity[seg][q] * span.lo + m.offset[seg][q], d1 = m.velocity[seg][q] * span.hi + m.offset[seg][q];
+        FT dlo = Number_ops<FT>::lower(d0, d1), dhi = Number_ops<FT>::upper(d0, d1);
+        b.has_lo[q] = root.has_lo[q];
+        b.has_hi[q] = root.has_hi[q];
+        if (root.has_lo[q]) b.lo[q] = root.lo[q] + dlo;
+        if (root.has_hi[q]) b.hi[q] = root.hi[q] + dhi;
+      }
+      b.set(3, span.lo, span.hi);
+      items.push_back({i, b});
+    }
+  }
+
+  // a's interval on axis q extends strictly past the start of b's.
+  bool opens_past(const Box4& a, const Box4& b, int q) const
+  {
+    if (!a.has_hi[q] || !b.has_lo[q]) return true;
+    return k_.possibly_positive(a.hi[q] - b.lo[q]);
+  }
+  bool overlaps(const Box4& a, const Box4& b) const
+  {
+    for (int q = 0; q < 4; ++q)
+      if (!opens_past(a, b, q) || !opens_past(b, a, q)) return false;
+    return true;
+  }
+};
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,50 @@
+// A closed half-space of space-time: n.(x, y, z, t) + c <= 0.
+#ifndef CLASH4D_GEOMETRY_HYPERPLANE4_H
+#define CLASH4D_GEOMETRY_HYPERPLANE4_H
+
+#include "geometry/kernel_ft4.h"
+#include <CGAL/enum.h>
+
+namespace clash4d {
+
+template <class FT>
+struct Hyperplane4 {
+  Vector4<FT> n;
+  FT c;
+
+  FT value(const Vector4<FT>& p) const { return dot(n, p) + c; }
+  Hyperplane4 complement() const { return {{-n[0], -n[1], -n[2], -n[3]}, -c}; }
+};
+
+// +1 when h = lambda g with lambda > 0, -1 when lambda < 0, 0 otherwise; a
+// predicate of kernel K.
+template <class K, class FT>
+int proportional(const K& k, const Hyperplane4<FT>& h, const Hyperplane4<FT>& g)
+{
+  int j = 0;
+  while (j < 4 && k.sign(g.n[j]) == CGAL::ZERO) ++j;
+  if (j == 4 || k.sign(h.n[j]) == CGAL::ZERO) return 0;
+  for (int i = 0; i < 4; ++i)   // i = j is zero by construction (not so in intervals)
+    if (i != j && k.sign(h.n[i] * g.n[j] - g.n[i] * h.n[j]) != CGAL::ZERO) return 0;
+  if (k.sign(h.c * g.n[j] - g.c * h.n[j]) != CGAL::ZERO) return 0;
+  return k.sign(h.n[j]) == k.sign(g.n[j]) ? 1 : -1;
+}
+
+// Equation (4): the plane n.x + d <= 0 moving with D(t) = v t + o becomes
+// n.x - (n.v) t + (d - n.o) <= 0.
+template <class FT>
+Hyperplane4<FT> extrude(const Plane3<FT>& p, const Vector3<FT>& v, const Vector3<FT>& o)
+{
+  Vector3<FT> n{p[0], p[1], p[2]};
+  return {{p[0], p[1], p[2], -dot(n, v)}, p[3] - dot(n, o)};
+}
+
+// The time slab lo <= t <= hi as two half-spaces (§3 item 3).
+template <class FT>
+Hyperplane4<FT> time_at_least(const FT& lo) { return {{FT(0), FT(0), FT(0), FT(-1)}, lo}; }
+template <class FT>
+Hyperplane4<FT> time_at_most(const FT& hi) { return {{FT(0), FT(0), FT(0), FT(1)}, -hi}; }
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,98 @@
+// The kernel concept: what every stage may ask of a kernel K, in one place.
+// A kernel bundles a number type with its sign decision (CGAL's kernels
+// bundle predicates and constructions the same way). The stages are
+// templates over K and take every sign from it, never from FT's own
+// comparisons, so a tolerance or a filter applies everywhere.
+//
+// Required of K (check with `static_assert(is_kernel_v<K>)`):
+//
+//   typename K::FT                  the number type: a field (+ - * /) with
+//                                   FT(int); Number_ops<FT> gives min, max
+//                                   and |x| as constructions
+//   K::name()                       "rational", "interval", "double", ...
+//   K::is_exact                     every sign is the sign of the exact value
+//   K::reads_exact_constructions    the model reads the reader's exact hull
+//                                   planes and vertices (from_rational)
+//                                   instead of computing its own
+//   K::grid_bits                    the dyadic grid heuristic choices are
+//                                   made on (Kernel_base)
+//   k.sign(x)                       CGAL::Sign of x; an approximate kernel
+//                                   that cannot certify it throws
+//                                   CGAL::Uncertain_conversion_exception
+//                                   (CGAL's Uncertain<> discipline: the
+//                                   conversion to a certain value fails),
+//                                   and only the filter policy catches it
+//   k.from_rational(q)              a scene number in FT (exact, rounded,
+//                                   or enclosed)
+//   k.floor_to_grid(x, bits)        x rounded down to a multiple of 2^-bits
+//   k.power_of_two(e)               2^e in FT
+//   k.grid_exponent(x)              for x > 0, the e with 2^-e <= x < 2^(1-e)
+//   k.to_text(x)                    text for reports and statistics
+//
+// Provided by Kernel_base (a kernel may refine them, as the interval kernel
+// does for speed): compare, less, side, dot_sign, orientation4, is_zero,
+// quotient (a / b with b's sign known), largest_component, round_to_grid,
+// grid_point, same_on_grid, less_on_grid, possibly_positive (conservative
+// filters), is_nonnegative (box simplification, CGAL::Uncertain<bool>).
+//
+// Optional:
+//   k.to_rational(x)                exact kernels and double: the value as
+//                                   a rational (answers are printed from it)
+//   typename K::Filter              a kernel whose predicates may be tried
+//                                   first where only a verdict is wanted
+//   typename K::Protector           RAII guard the kernel's arithmetic needs
+//                                   (the interval kernel's rounding mode)
+#ifndef CLASH4D_GEOMETRY_KERNEL_CONCEPT_H
+#define CLASH4D_GEOMETRY_KERNEL_CONCEPT_H
+
+#include "numbers/Rational.h"
+#include "geometry/kernel_ft4.h"
+#include <CGAL/Uncertain.h>
+#include <CGAL/enum.h>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+namespace clash4d {
+
+namespace kernel_concept_detail {
+
+template <class K, class = void>
+struct has_required : std::false_type {};
+
+template <class K>
+struct has_required<
+    K, std::void_t<typename K::FT,
+                   decltype(std::declval<const char*&>() = K::name()),
+                   decltype(bool{K::is_exact}), decltype(bool{K::reads_exact_constructions}),
+                   decltype(int{K::grid_bits})>> {
+  using FT = typename K::FT;
+  static const K& k();
+  static const FT& x();
+  static constexpr bool value =
+      std::is_same_v<decltype(k().sign(x())), CGAL::Sign> &&
+      std::is_same_v<std::decay_t<decltype(k().from_rational(std::declval<const Rational&>()))>, FT> &&
+      std::is_same_v<std::decay_t<decltype(k().floor_to_grid(x(), 0))>, FT> &&
+      std::is_same_v<std::decay_t<decltype(k().power_of_two(0))>, FT> &&
+      std::is_same_v<decltype(k().grid_exponent(x())), int> &&
+      std::is_same_v<decltype(k().to_text(x())), std::string> &&
+      std::is_same_v<decltype(k().compare(x(), x())), CGAL::Sign> &&
+      std::is_same_v<decltype(k().less(x(), x())), bool> &&
+      std::is_same_v<decltype(k().is_nonnegative(x(), true)), CGAL::Uncertain<bool>> &&
+      std::is_same_v<std::decay_t<decltype(k().quotient(x(), x(), CGAL::POSITIVE))>, FT> &&
+      std::is_same_v<decltype(k().orientation4(std::declval<const Vector4<FT>&>(), std::declval<const Vector4<FT>&>(),
+                                               std::declval<const Vector4<FT>&>(),
+                                               std::declval<const Vector4<FT>&>())),
+                     CGAL::Sign> &&
+      std::is_same_v<decltype(k().largest_component(std::declval<const Vector4<FT>&>())), int>;
+};
+
+} // namespace kernel_concept_detail
+
+// True when K provides every required member above with its signature.
+template <class K>
+inline constexpr bool is_kernel_v = kernel_concept_detail::has_required<K>::value;
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,78 @@
+// Predicates and constructions written once over the number type FT, as free
+// functions on coordinates (in the style of CGAL's kernel_ftC2.h). Nothing
+// here divides by a norm or takes a square root: every function is a
+// polynomial (or a quotient of polynomials) in its inputs, so the exact
+// instantiation stays exact.
+#ifndef CLASH4D_GEOMETRY_KERNEL_FT4_H
+#define CLASH4D_GEOMETRY_KERNEL_FT4_H
+
+#include <array>
+
+namespace clash4d {
+
+template <class FT> using Vector3 = std::array<FT, 3>;
+template <class FT> using Vector4 = std::array<FT, 4>;
+template <class FT> using Plane3 = std::array<FT, 4>;    // a x + b y + c z + d <= 0
+
+template <class FT, std::size_t N>
+FT dot(const std::array<FT, N>& a, const std::array<FT, N>& b)
+{
+  FT s = a[0] * b[0];
+  for (std::size_t i = 1; i < N; ++i) s += a[i] * b[i];
+  return s;
+}
+
+template <class FT>
+Vector3<FT> cross(const Vector3<FT>& a, const Vector3<FT>& b)
+{
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+template <class FT>
+FT determinant3(const Vector3<FT>& a, const Vector3<FT>& b, const Vector3<FT>& c)
+{
+  return dot(a, cross(b, c));
+}
+
+// 2x2 minors of rows a, b over columns (i, j), used by the 4D cofactors.
+template <class FT>
+FT minor2(const Vector4<FT>& a, const Vector4<FT>& b, int i, int j)
+{
+  return a[i] * b[j] - a[j] * b[i];
+}
+
+// The generalised cross product of three 4-vectors: the vector g with
+// g.x = det(a, b, c, x) for every x, hence orthogonal to a, b and c, and zero
+// exactly when they are dependent (Appendix A without Gram-Schmidt).
+template <class FT>
+Vector4<FT> generalised_cross(const Vector4<FT>& a, const Vector4<FT>& b, const Vector4<FT>& c)
+{
+  // Laplace expansion along the last row x: g_k = (-1)^(k+3) * M_k, with M_k
+  // the 3x3 minor of (a, b, c) without column k.
+  FT m01 = minor2(a, b, 0, 1), m02 = minor2(a, b, 0, 2), m03 = minor2(a, b, 0, 3);
+  FT m12 = minor2(a, b, 1, 2), m13 = minor2(a, b, 1, 3), m23 = minor2(a, b, 2, 3);
+  FT M0 = c[1] * m23 - c[2] * m13 + c[3] * m12;   // columns 1,2,3
+  FT M1 = c[0] * m23 - c[2] * m03 + c[3] * m02;   // columns 0,2,3
+  FT M2 = c[0] * m13 - c[1] * m03 + c[3] * m01;   // columns 0,1,3
+  FT M3 = c[0] * m12 - c[1] * m02 + c[2] * m01;   // columns 0,1,2
+  return {-M0, M1, -M2, M3};
+}
+
+template <class FT>
+FT determinant4(const Vector4<FT>& a, const Vector4<FT>& b, const Vector4<FT>& c, const Vector4<FT>& d)
+{
+  return dot(generalised_cross(a, b, c), d);
+}
+
+// p + s * d
+template <class FT, std::size_t N>
+std::array<FT, N> point_along(const std::array<FT, N>& p, const FT& s, const std::array<FT, N>& d)
+{
+  std::array<FT, N> out;
+  for (std::size_t i = 0; i < N; ++i) out[i] = p[i] + s * d[i];
+  return out;
+}
+
+} // namespace clash4d
+
+#endif

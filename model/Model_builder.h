@@ -1,0 +1,236 @@
+// Scene solid -> CSG model over the kernel's number type. One code path for
+// every kernel: the scene's rationals are converted by the kernel (exactly, or
+// rounded to nearest) and every construction is done in FT.
+#ifndef CLASH4D_MODEL_MODEL_BUILDER_H
+#define CLASH4D_MODEL_MODEL_BUILDER_H
+
+#include "model/Csg_model.h"
+#include "geometry/Polytope_ft.h"
+#include "scene/Scene.h"
+
+namespace clash4d {
+
+// x -> R x + b. R is a product of rational rotations, so orthogonal exactly in
+// the exact kernel, and R^T is its inverse.
+template <class FT>
+struct Affine3 {
+  std::array<Vector3<FT>, 3> R;   // rows
+  Vector3<FT> b;
+  bool is_identity = false;       // no transform above: the primitive is used as read
+
+  static Affine3 identity()
+  {
+    Affine3 a;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) a.R[i][j] = FT(i == j ? 1 : 0);
+    a.b = {FT(0), FT(0), FT(0)};
+    a.is_identity = true;
+    return a;
+  }
+  Vector3<FT> linear(const Vector3<FT>& v) const { return {dot(R[0], v), dot(R[1], v), dot(R[2], v)}; }
+  Vector3<FT> apply(const Vector3<FT>& v) const
+  {
+    Vector3<FT> r = linear(v);
+    for (int i = 0; i < 3; ++i) r[i] += b[i];
+    return r;
+  }
+  // The image of n.x + d <= 0: (R n).y + d - (R n).b <= 0, using R^-1 = R^T.
+  Plane3<FT> apply(const Plane3<FT>& p) const
+  {
+    Vector3<FT> n = linear({p[0], p[1], p[2]});
+    return {n[0], n[1], n[2], p[3] - dot(n, b)};
+  }
+  // this o (x -> M x + t)
+  Affine3 then_local(const std::array<Vector3<FT>, 3>& M, const Vector3<FT>& t) const
+  {
+    Affine3 r;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) r.R[i][j] = R[i][0] * M[0][j] + R[i][1] * M[1][j] + R[i][2] * M[2][j];
+    r.b = apply(t);
+    return r;
+  }
+};
+
+// The spec's rational rotation matrix of q = (w, x, y, z), q != 0.
+template <class FT>
+std::array<Vector3<FT>, 3> rotation_matrix(const FT& w, const FT& x, const FT& y, const FT& z)
+{
+  FT n = w * w + x * x + y * y + z * z;
+  FT two(2);
+  std::array<Vector3<FT>, 3> m = {{
+      {w * w + x * x - y * y - z * z, two * (x * y - w * z), two * (x * z + w * y)},
+      {two * (x * y + w * z), w * w - x * x + y * y - z * z, two * (y * z - w * x)},
+      {two * (x * z - w * y), two * (y * z + w * x), w * w - x * x - y * y + z * z}}};
+  for (auto& row : m)
+    for (auto& e : row) e /= n;
+  return m;
+}
+
+template <class K>
+class Model_builder {
+public:
+  using FT = typename K::FT;
+  explicit Model_builder(const K& k) : k_(k) {}
+
+  Csg_model<FT> build(const Solid& s)
+  {
+    model_ = Csg_model<FT>();
+    add(s, Affine3<FT>::identity(), -1);
+    return std::move(model_);
+  }
+
+private:
+  const K& k_;
+  Csg_model<FT> model_;
+
+  FT num(const Solid& s, std::size_t i) const { return k_.from_rational(s.numbers[i]); }
+
+  // Whether to read the reader's exact constructions (Solid::constructed)
+  // instead of computing them in FT: the interval kernel then encloses each
+  // exact coefficient as tightly as a number of the file, and keeps its
+  // exact zeros.
+  bool exact_read(const Solid& s) const { return K::reads_exact_constructions && !s.constructed.empty(); }
+  FT made(const Solid& s, std::size_t i) const { return k_.from_rational(s.constructed[i]); }
+  Vector3<FT> constructed3(const Solid& s, std::size_t i) const { return {made(s, i), made(s, i + 1), made(s, i + 2)}; }
+  Plane3<FT> constructed4(const Solid& s, std::size_t i) const
+  {
+    return {made(s, i), made(s, i + 1), made(s, i + 2), made(s, i + 3)};
+  }
+  Vector3<FT> vec3(const Solid& s, std::size_t i) const { return {num(s, i), num(s, i + 1), num(s, i + 2)}; }
+
+  int add(const Solid& s, const Affine3<FT>& T, int parent)
+  {
+    using K_ = Solid::Kind;
+    if (s.kind == K_::Translate) {
+      std::array<Vector3<FT>, 3> I = Affine3<FT>::identity().R;
+      return add(s.children[0], T.then_local(I, vec3(s, 0)), parent);
+    }
+    if (s.kind == K_::Rotate) {
+      auto M = rotation_matrix(num(s, 0), num(s, 1), num(s, 2), num(s, 3));
+      return add(s.children[0], T.then_local(M, {FT(0), FT(0), FT(0)}), parent);
+    }
+    int id = static_cast<int>(model_.nodes.size());
+    model_.nodes.emplace_back();
+    model_.nodes[id].parent = parent;
+    if (s.kind == K_::Union || s.kind == K_::Intersection || s.kind == K_::Difference) {
+      model_.nodes[id].op = s.kind == K_::Union ? Csg_node::Op::Union
+                          : s.kind == K_::Intersection ? Csg_node::Op::Intersection : Csg_node::Op::Difference;
+      for (const Solid& c : s.children) {
+        int child = add(c, T, id);
+        model_.nodes[id].children.push_back(child);
+      }
+      return id;
+    }
+    model_.nodes[id].op = Csg_node::Op::Primitive;
+    model_.nodes[id].primitive = static_cast<int>(model_.primitives.size());
+    model_.primitives.push_back(primitive(s, T));
+    return id;
+  }
+
+  Primitive<FT> primitive(const Solid& s, const Affine3<FT>& T) const
+  {
+    Primitive<FT> p;
+    p.path = s.path;
+    p.corners = s.corners;
+    local_geometry(s, p);
+    if (!T.is_identity) {
+      for (auto& h : p.planes) h = T.apply(h);
+      for (auto& v : p.vertices) v = T.apply(v);
+    }
+    p.box = p.vertices.empty() ? halfspace_box(p.planes[0]) : vertex_box(p.vertices);
+    return p;
+  }
+
+  void local_geometry(const Solid& s, Primitive<FT>& p) const
+  {
+    using K_ = Solid::Kind;
+    const FT zero(0), one(1);
+    switch (s.kind) {
+      case K_::Halfspace:
+        p.planes.push_back({num(s, 0), num(s, 1), num(s, 2), num(s, 3)});
+        break;
+      case K_::Block: {
+        Vector3<FT> lo = vec3(s, 0), hi = vec3(s, 3);
+        for (int a = 0; a < 3; ++a) {
+          Plane3<FT> below{zero, zero, zero, lo[a]}, above{zero, zero, zero, -hi[a]};
+          below[a] = -one;
+          above[a] = one;
+          p.planes.push_back(below);
+          p.planes.push_back(above);
+        }
+        for (int c = 0; c < 8; ++c)
+          p.vertices.push_back({(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2]});
+        break;
+      }
+      case K_::Convex: {
+        for (std::size_t i = 0; i < s.numbers.size(); i += 4)
+          p.planes.push_back({num(s, i), num(s, i + 1), num(s, i + 2), num(s, i + 3)});
+        for (std::size_t i = 0; i < s.triples.size(); ++i) {
+          const auto& t = s.triples[i];
+          p.vertices.push_back(exact_read(s) ? constructed3(s, 3 * i)
+                                             : vertex_of(p.planes[t[0]], p.planes[t[1]], p.planes[t[2]]));
+        }
+        break;
+      }
+      case K_::Prism: {
+        std::size_t n = (s.numbers.size() - 2) / 2;
+        FT z0 = num(s, 2 * n), z1 = num(s, 2 * n + 1);
+        for (std::size_t i = 0; i < n; ++i) {
+          std::size_t j = (i + 1) % n;
+          FT x = num(s, 2 * i), y = num(s, 2 * i + 1);
+          FT dx = num(s, 2 * j) - x, dy = num(s, 2 * j + 1) - y;
+          // Counter-clockwise base: the outward normal of edge i is (dy, -dx).
+          p.planes.push_back({dy, -dx, zero, -(dy * x - dx * y)});
+          p.vertices.push_back({x, y, z0});
+          p.vertices.push_back({x, y, z1});
+        }
+        p.planes.push_back({zero, zero, -one, z0});
+        p.planes.push_back({zero, zero, one, -z1});
+        break;
+      }
+      case K_::Hull: {
+        for (std::size_t i = 0; i < s.numbers.size(); i += 3) p.vertices.push_back(vec3(s, i));
+        for (std::size_t i = 0; i < s.triples.size(); ++i) {
+          const auto& t = s.triples[i];
+          p.planes.push_back(exact_read(s) ? constructed4(s, 4 * i)
+                                           : facet_plane(p.vertices[t[0]], p.vertices[t[1]], p.vertices[t[2]]));
+        }
+        break;
+      }
+      default:
+        break;
+    }
+  }
+
+  Box<FT, 3> vertex_box(const std::vector<Vector3<FT>>& vs) const
+  {
+    Box<FT, 3> b;
+    for (int a = 0; a < 3; ++a) {
+      FT lo = vs[0][a], hi = vs[0][a];
+      for (const auto& v : vs) {
+        lo = Number_ops<FT>::lower(lo, v[a]);
+        hi = Number_ops<FT>::upper(hi, v[a]);
+      }
+      b.set(a, lo, hi);
+    }
+    return b;
+  }
+
+  // A half-space is bounded on one side of one axis when its normal is that axis.
+  Box<FT, 3> halfspace_box(const Plane3<FT>& h) const
+  {
+    Box<FT, 3> b;
+    int nonzero = 0, axis = -1;
+    for (int a = 0; a < 3; ++a)
+      if (h[a] != FT(0)) { ++nonzero; axis = a; }
+    if (nonzero != 1) return b;
+    FT bound = -h[3] / h[axis];
+    if (FT(0) < h[axis]) { b.hi[axis] = bound; b.has_hi[axis] = true; }
+    else { b.lo[axis] = bound; b.has_lo[axis] = true; }
+    return b;
+  }
+};
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,56 @@
+// The displacement D(t) of a ROBMOD motion (spec: Motion; paper §3): continuous,
+// piecewise linear, D(0) = 0. On segment i, D(t) = velocity[i] t + offset[i].
+#ifndef CLASH4D_MODEL_MOTION_PATH_H
+#define CLASH4D_MODEL_MOTION_PATH_H
+
+#include "geometry/kernel_ft4.h"
+#include "scene/Scene.h"
+#include <vector>
+
+namespace clash4d {
+
+template <class FT>
+struct Motion_path {
+  std::vector<FT> times;                 // breakpoints, strictly increasing
+  std::vector<Vector3<FT>> velocity;     // times.size() + 1 segments
+  std::vector<Vector3<FT>> offset;
+
+  template <class K>
+  static Motion_path build(const K& k, const Motion& m)
+  {
+    Motion_path p;
+    for (const auto& t : m.times) p.times.push_back(k.from_rational(t));
+    for (const auto& v : m.velocities) p.velocity.push_back({k.from_rational(v[0]), k.from_rational(v[1]), k.from_rational(v[2])});
+    std::size_t n = p.velocity.size();
+    p.offset.assign(n, Vector3<FT>{FT(0), FT(0), FT(0)});
+    // The segment holding t = 0 has offset 0; continuity at each breakpoint T
+    // (v_i T + c_i = v_j T + c_j) fixes the others outward from it.
+    std::size_t zero = 0;
+    while (zero < p.times.size() && p.times[zero] < FT(0)) ++zero;
+    for (std::size_t i = zero; i + 1 < n; ++i)
+      for (int a = 0; a < 3; ++a)
+        p.offset[i + 1][a] = p.offset[i][a] + (p.velocity[i][a] - p.velocity[i + 1][a]) * p.times[i];
+    for (std::size_t i = zero; i > 0; --i)
+      for (int a = 0; a < 3; ++a)
+        p.offset[i - 1][a] = p.offset[i][a] + (p.velocity[i][a] - p.velocity[i - 1][a]) * p.times[i - 1];
+    return p;
+  }
+
+  // The segment whose closed interval holds t (the later one at a breakpoint).
+  std::size_t segment_at(const FT& t) const
+  {
+    std::size_t i = 0;
+    while (i < times.size() && !(t < times[i])) ++i;
+    return i;
+  }
+
+  Vector3<FT> displacement(const FT& t) const
+  {
+    std::size_t i = segment_at(t);
+    return point_along(offset[i], t, velocity[i]);
+  }
+};
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,77 @@
+// Membership of a point in a solid with strict signs (regularised-semantics.md,
+// item 1): True strictly inside, False strictly outside, Unknown when the
+// answer hangs on a boundary plane. Independent of the extrusion code, so it
+// checks witnesses against the scene as written.
+#ifndef CLASH4D_MODEL_POINT_CLASSIFIER_H
+#define CLASH4D_MODEL_POINT_CLASSIFIER_H
+
+#include "model/Csg_model.h"
+#include "model/Formula.h"
+#include "model/Scene_model.h"
+
+namespace clash4d {
+
+inline Truth truth_not(Truth a) { return a == Truth::Unknown ? a : (a == Truth::True ? Truth::False : Truth::True); }
+inline Truth truth_and(Truth a, Truth b)
+{
+  if (a == Truth::False || b == Truth::False) return Truth::False;
+  return (a == Truth::True && b == Truth::True) ? Truth::True : Truth::Unknown;
+}
+inline Truth truth_or(Truth a, Truth b) { return truth_not(truth_and(truth_not(a), truth_not(b))); }
+
+template <class K>
+Truth classify_point(const K& k, const Csg_model<typename K::FT>& m, const Vector3<typename K::FT>& y, int node = 0)
+{
+  using FT = typename K::FT;
+  const Csg_node& n = m.nodes[node];
+  switch (n.op) {
+    case Csg_node::Op::Primitive: {
+      Truth r = Truth::True;
+      for (const auto& p : m.primitives[n.primitive].planes) {
+        CGAL::Sign s = k.side(Vector3<FT>{p[0], p[1], p[2]}, p[3], y);
+        r = truth_and(r, s == CGAL::NEGATIVE ? Truth::True : s == CGAL::POSITIVE ? Truth::False : Truth::Unknown);
+      }
+      return r;
+    }
+    case Csg_node::Op::Union: {
+      Truth r = Truth::False;
+      for (int c : n.children) r = truth_or(r, classify_point(k, m, y, c));
+      return r;
+    }
+    case Csg_node::Op::Intersection: {
+      Truth r = Truth::True;
+      for (int c : n.children) r = truth_and(r, classify_point(k, m, y, c));
+      return r;
+    }
+    case Csg_node::Op::Difference: {
+      Truth r = classify_point(k, m, y, n.children[0]);
+      for (std::size_t c = 1; c < n.children.size(); ++c) r = truth_and(r, truth_not(classify_point(k, m, y, n.children[c])));
+      return r;
+    }
+  }
+  return Truth::Unknown;
+}
+
+// A witness (x, y, z, t) of a collision of objects a and b: tL < t < tH, and
+// x - D(t) strictly inside both solids and on none of their planes. Evaluated
+// on the 3D solids moved back by D(t), independently of the extrusion.
+template <class K>
+bool is_valid_witness(const K& k, const Scene_model<K>& model, int a, int b, const Vector4<typename K::FT>& w)
+{
+  using FT = typename K::FT;
+  if (!(k.less(model.t_lo, w[3]) && k.less(w[3], model.t_hi))) return false;
+  for (int i : {a, b}) {
+    const Object_model<FT>& o = model.objects[i];
+    Vector3<FT> d = o.motion.displacement(w[3]);
+    Vector3<FT> y{w[0] - d[0], w[1] - d[1], w[2] - d[2]};
+    if (classify_point(k, o.csg, y) != Truth::True) return false;
+    for (const auto& prim : o.csg.primitives)
+      for (const auto& pl : prim.planes)
+        if (k.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], y) == CGAL::ZERO) return false;
+  }
+  return true;
+}
+
+} // namespace clash4d
+
+#endif

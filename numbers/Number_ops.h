@@ -1,0 +1,23 @@
+// Minimum, maximum, magnitude and sameness of numbers, as constructions
+// rather than decisions. On a totally ordered number type they are the usual ones; the
+// interval kernel specialises them (exact/Interval_kernel.h) to enclose the
+// exact minimum and maximum without asking which operand is smaller, so a
+// box meet or join never fails the filter (CGAL's Min/Max on Interval_nt).
+#ifndef CLASH4D_NUMBERS_NUMBER_OPS_H
+#define CLASH4D_NUMBERS_NUMBER_OPS_H
+
+namespace clash4d {
+
+template <class FT>
+struct Number_ops {
+  static FT lower(const FT& a, const FT& b) { return b < a ? b : a; }
+  static FT upper(const FT& a, const FT& b) { return a < b ? b : a; }
+  static FT magnitude(const FT& a) { return a < FT(0) ? -a : a; }
+  // Identical values (a shortcut before a decision, see
+  // Kernel_base::same_on_grid); intervals: the same enclosure.
+  static bool same(const FT& a, const FT& b) { return a == b; }
+};
+
+} // namespace clash4d
+
+#endif

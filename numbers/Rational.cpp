@@ -1,0 +1,102 @@
+#include "numbers/Rational.h"
+
+#include <mpfr.h>
+
+namespace clash4d {
+
+std::string to_string(const Rational& q)
+{
+  // Gmpq is always canonical (lowest terms, positive denominator), and GMP
+  // prints "p" when q = 1 and "p/q" otherwise: exactly the spec's form.
+  char* text = mpq_get_str(nullptr, 10, q.mpq());
+  std::string out(text);
+  void (*free_fn)(void*, size_t);
+  mp_get_memory_functions(nullptr, nullptr, &free_fn);
+  free_fn(text, out.size() + 1);
+  return out;
+}
+
+Rational floor_to_grid(const Rational& q, int bits)
+{
+  mpz_t n;
+  mpz_init(n);
+  mpz_mul_2exp(n, mpq_numref(q.mpq()), static_cast<mp_bitcnt_t>(bits));
+  mpz_fdiv_q(n, n, mpq_denref(q.mpq()));
+  mpq_t r;
+  mpq_init(r);
+  mpq_set_z(r, n);
+  mpq_div_2exp(r, r, static_cast<mp_bitcnt_t>(bits));
+  Rational out(r);
+  mpq_clear(r);
+  mpz_clear(n);
+  return out;
+}
+
+void scale_to_coprime_integers(Rational* x, std::size_t n)
+{
+  mpz_t lcm, gcd, t;
+  mpz_init_set_ui(lcm, 1);
+  mpz_init_set_ui(gcd, 0);
+  mpz_init(t);
+  for (std::size_t i = 0; i < n; ++i) mpz_lcm(lcm, lcm, mpq_denref(x[i].mpq()));
+  for (std::size_t i = 0; i < n; ++i) {
+    mpz_divexact(t, lcm, mpq_denref(x[i].mpq()));
+    mpz_mul(t, t, mpq_numref(x[i].mpq()));
+    mpz_gcd(gcd, gcd, t);
+  }
+  if (mpz_sgn(gcd) != 0) {
+    // New numbers, not writes through mpq(): Gmpq shares its representation.
+    mpq_t scale;
+    mpq_init(scale);
+    mpq_set_num(scale, lcm);
+    mpq_set_den(scale, gcd);
+    mpq_canonicalize(scale);
+    Rational factor(scale);
+    mpq_clear(scale);
+    for (std::size_t i = 0; i < n; ++i) x[i] = x[i] * factor;
+  }
+  mpz_clear(t);
+  mpz_clear(gcd);
+  mpz_clear(lcm);
+}
+
+Rational power_of_two(int e)
+{
+  mpq_t r;
+  mpq_init(r);
+  mpq_set_ui(r, 1, 1);
+  if (e >= 0) mpq_mul_2exp(r, r, static_cast<mp_bitcnt_t>(e));
+  else mpq_div_2exp(r, r, static_cast<mp_bitcnt_t>(-e));
+  Rational out(r);
+  mpq_clear(r);
+  return out;
+}
+
+int grid_exponent(const Rational& q)
+{
+  // floor(log2 q) is e = bits(num) - bits(den) or one less: e holds when
+  // num >= den * 2^e.
+  const mpz_srcptr num = mpq_numref(q.mpq()), den = mpq_denref(q.mpq());
+  long e = static_cast<long>(mpz_sizeinbase(num, 2)) - static_cast<long>(mpz_sizeinbase(den, 2));
+  mpz_t a, b;
+  mpz_init_set(a, num);
+  mpz_init_set(b, den);
+  if (e >= 0) mpz_mul_2exp(b, b, static_cast<mp_bitcnt_t>(e));
+  else mpz_mul_2exp(a, a, static_cast<mp_bitcnt_t>(-e));
+  if (mpz_cmp(a, b) < 0) --e;
+  mpz_clear(a);
+  mpz_clear(b);
+  return static_cast<int>(-e);
+}
+
+double round_to_nearest(const Rational& q)
+{
+  mpfr_t r;
+  mpfr_init2(r, 53);
+  mpfr_set_q(r, q.mpq(), MPFR_RNDN);
+  double d = mpfr_get_d(r, MPFR_RNDN);
+  mpfr_clear(r);
+  return d;
+}
+
+} // namespace clash4d

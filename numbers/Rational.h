@@ -1,0 +1,66 @@
+// The exact number type of the toolkit and its text conversions.
+#ifndef CLASH4D_NUMBERS_RATIONAL_H
+#define CLASH4D_NUMBERS_RATIONAL_H
+
+#include <CGAL/Gmpq.h>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+namespace clash4d {
+
+// CGAL's exact rational over GMP. CGAL::Exact_rational is Gmpq or mpq_class
+// depending on how CGAL was configured; we pin Gmpq so the exact type does not
+// change with the build and carries no expression templates into generic code.
+using Rational = CGAL::Gmpq;
+
+// "p/q" in lowest terms, or "p" when q = 1 (the spec's output form).
+std::string to_string(const Rational& q);
+
+// The double nearest to q (ties to even), via MPFR: Gmpq's own to_double
+// truncates, which would make the double instantiation read a different scene
+// than "the nearest double" the spec promises. Returns +-inf on overflow.
+double round_to_nearest(const Rational& q);
+
+// z as a double when it has at most 53 bits (then exactly): the quick
+// path of the kernels' reading of rationals, read off GMP's single limb.
+inline bool small_double(mpz_srcptr z, double& out)
+{
+  static_assert(GMP_LIMB_BITS == 64, "one limb is taken to hold 53 bits");
+  if (z->_mp_size == 0) return out = 0, true;
+  if (z->_mp_size != 1 && z->_mp_size != -1) return false;
+  mp_limb_t m = z->_mp_d[0];
+  if (m >> 53) return false;
+  out = z->_mp_size > 0 ? static_cast<double>(m) : -static_cast<double>(m);
+  return true;
+}
+
+// 2^e as a double, made from its bits in the normal range (no libm call:
+// the grid roundings of the search take it on every comparison).
+inline double power_of_two_double(int e)
+{
+  if (e < -1022 || e > 1023) return std::ldexp(1.0, e);
+  std::uint64_t bits = static_cast<std::uint64_t>(1023 + e) << 52;
+  double out;
+  std::memcpy(&out, &bits, sizeof out);
+  return out;
+}
+
+// Scales the numbers by one positive factor so that they become coprime
+// integers (all zero: unchanged). Used on hyperplane coefficients, which
+// this leaves the same hyperplane with the same sides.
+void scale_to_coprime_integers(Rational* x, std::size_t n);
+
+// The largest multiple of 2^-bits at or below q (bits >= 0).
+Rational floor_to_grid(const Rational& q, int bits);
+
+// 2^e, exactly.
+Rational power_of_two(int e);
+
+// The least k with 2^-k <= q, for q > 0 (that is, -floor(log2 q)).
+int grid_exponent(const Rational& q);
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,80 @@
+// What each stage of the cascade did (`clash4d check --stats`).
+#ifndef CLASH4D_SEARCH_CHECK_STATS_H
+#define CLASH4D_SEARCH_CHECK_STATS_H
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace clash4d {
+
+// One constant-velocity sub-span of one pair, as the S-bound stage left it.
+struct Span_stats {
+  std::string pair, span, narrowed;       // narrowed: "empty" when pruned
+  std::size_t primitives = 0, primitives_alive = 0, leaves = 0;
+  std::string region;                     // the box handed to division, per axis
+  std::string frame;                      // per axis, whose velocity measures it
+};
+
+struct Check_stats {
+  // Many objects (§6): pairs in the scene, and those the sweep kept
+  std::size_t object_pairs = 0, candidate_pairs = 0;
+  double seconds_sweep = 0;
+  // S-bounds (§4.3)
+  std::size_t pairs = 0, sub_spans = 0, sub_spans_pruned = 0;
+  std::size_t sbound_passes = 0;
+  std::size_t primitives = 0, primitives_pruned = 0;
+  std::string span_before, span_after;     // first examined sub-span, as text
+  std::vector<Span_stats> spans;
+  // Divide-and-conquer (§4.1)
+  std::vector<std::size_t> regions_per_depth;
+  std::size_t conquers = 0, leaves_at_conquer = 0, max_leaves_at_conquer = 0;
+  std::string conquered_box;               // hull of the regions conquered (last span)
+  // Generate-and-test (§4.2, Appendix A)
+  std::size_t lines = 0, points_classified = 0, cells_tested = 0;
+  // Filtered exact kernel (set once per run; 0 for other kernels):
+  // exact_fallbacks: interval runs (object bounds, pairs) stopped by a sign
+  // the intervals could not certify, each then redone in rationals;
+  // exact_witness_runs: colliding pairs rerun in rationals to construct
+  // their witness, t* and contact point exactly; exact_witness_replays: those
+  // of them whose rational run went straight to the interval run's point
+  // (search/Search_trail.h) instead of searching again; exact_regions and
+  // exact_lines: lines of generate-and-test with a sign the intervals could
+  // not certify, each then decided in rationals alone (the run goes on), and
+  // the regions they were in;
+  // exact_plane_tests: pairs of planes the intervals could not tell apart
+  // or identify (parallel faces), decided on the rational planes instead;
+  // witnesses_by_intervals: colliding pairs whose witness the interval run
+  // made itself, on a path certified to be the rational run's (no rerun).
+  std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_witness_replays = 0, exact_regions = 0,
+              exact_lines = 0, exact_plane_tests = 0, witnesses_by_intervals = 0;
+  // Time per stage, seconds
+  double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
+
+  // Adds another run's counts (pairs checked in parallel, merged in order).
+  void add(const Check_stats& o)
+  {
+    pairs += o.pairs; sub_spans += o.sub_spans; sub_spans_pruned += o.sub_spans_pruned;
+    sbound_passes += o.sbound_passes; primitives += o.primitives; primitives_pruned += o.primitives_pruned;
+    if (span_before.empty()) { span_before = o.span_before; span_after = o.span_after; }
+    spans.insert(spans.end(), o.spans.begin(), o.spans.end());
+    if (regions_per_depth.size() < o.regions_per_depth.size()) regions_per_depth.resize(o.regions_per_depth.size(), 0);
+    for (std::size_t d = 0; d < o.regions_per_depth.size(); ++d) regions_per_depth[d] += o.regions_per_depth[d];
+    conquers += o.conquers; leaves_at_conquer += o.leaves_at_conquer;
+    if (o.max_leaves_at_conquer > max_leaves_at_conquer) max_leaves_at_conquer = o.max_leaves_at_conquer;
+    if (!o.conquered_box.empty()) conquered_box = o.conquered_box;
+    lines += o.lines; points_classified += o.points_classified; cells_tested += o.cells_tested;
+    exact_lines += o.exact_lines;
+    seconds_sbounds += o.seconds_sbounds; seconds_divide += o.seconds_divide; seconds_witness += o.seconds_witness;
+  }
+
+  void visit(std::size_t depth)
+  {
+    if (regions_per_depth.size() <= depth) regions_per_depth.resize(depth + 1, 0);
+    ++regions_per_depth[depth];
+  }
+};
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,587 @@
+// Generate-and-test (§4.2): every line shared by three hyperplanes with
+// independent normals, cut at every other hyperplane, and the midpoint of each
+// resulting edge inside the region classified with the regularised
+// neighbourhood test of Appendix A. Every open cell of the arrangement inside
+// a bounded region is a polytope with an edge, and the midpoint of that edge
+// sees the cell, so the search is complete.
+#ifndef CLASH4D_SEARCH_GENERATE_AND_TEST_H
+#define CLASH4D_SEARCH_GENERATE_AND_TEST_H
+
+#include "geometry/Box.h"
+#include "search/Check_stats.h"
+#include "model/Formula.h"
+#include "geometry/Hyperplane4.h"
+#include "model/Motion_groups.h"
+#include "search/Neighbourhood.h"
+#include "search/Search_goal.h"
+#include "search/Search_trail.h"
+#include <CGAL/Uncertain.h>
+#include <algorithm>
+#include <functional>
+#include <array>
+#include <optional>
+#include <type_traits>
+#include <vector>
+
+namespace clash4d {
+
+// K::Filter, the approximate kernel K's predicates can be tried in first
+// (void: none).
+template <class K, class = void>
+struct filter_of {
+  using type = void;
+};
+template <class K>
+struct filter_of<K, std::void_t<typename K::Filter>> {
+  using type = typename K::Filter;
+};
+
+// Which hyperplanes a conquer works with and how the formula's leaves and
+// the region's faces map to them: the same in every kernel when the
+// interning decisions are certified, so another kernel can rebuild the
+// planes from its own table and decide a line the first could not.
+struct Plane_layout {
+  std::vector<long> entry;                               // per plane: its table entry, or -1 for a face
+  std::vector<int> face;                                 // per plane made from a face: 2 * axis + upper, else -1
+  std::vector<unsigned> moves_along;                     // per plane: bit g set when it contains group g's (r, 1)
+  std::vector<std::pair<std::size_t, int>> leaf_plane;   // table index -> (plane, orientation)
+  std::vector<std::pair<std::size_t, int>> face_plane;   // face 2 * axis + upper -> (plane, orientation)
+  std::size_t first_face = 0;                            // planes from here on are faces only
+  std::vector<std::vector<int>> corners;                 // per plane: the corners it passes through, sorted
+};
+
+template <class K>
+class Generate_and_test {
+public:
+  using FT = typename K::FT;
+  using H = Hyperplane4<FT>;
+  using V = Vector4<FT>;
+
+  // For an approximate kernel: a line with a sign it cannot certify is
+  // decided by another kernel instead of failing the conquer. Exact_lines
+  // is called once per conquer, at its first such line, with the layout and
+  // the region, and returns the decider of that conquer's lines: true when
+  // the line holds a point inside; `known` says whether that is the exact
+  // run's own line (exact/Filtered_runner.h).
+  using Line_decider = std::function<bool(const Formula&, std::size_t, std::size_t, std::size_t, bool& known)>;
+  using Exact_lines = std::function<Line_decider(const Plane_layout&, const Box<FT, 4>&)>;
+
+  Generate_and_test(const K& k, const std::vector<H>& table, Check_stats& stats, Search_trail* trail = nullptr,
+                    const Motion_groups<FT>* groups = nullptr)
+    : k_(k), table_(table), stats_(stats), trail_(trail), groups_(groups) {}
+
+  // Records what it finds in the goal; in earliest mode it examines every
+  // edge that could hold an earlier point (the least time over an edge is at
+  // one of its ends, and every vertex of a cell's closure ends such an edge).
+  void run(const Formula& f, const Box<FT, 4>& region, Search_goal<FT>& goal)
+  {
+    collect_planes(f, region);
+    std::size_t n = planes_.size();
+    if (trail_ && trail_->replaying() && trail_->line_known) {
+      // Every line before the trail's was certified to hold no point inside.
+      const auto& t = trail_->line;
+      if (t[2] < n) on_line(f, t[0], t[1], t[2], goal);
+      trail_->diverged = trail_->diverged || !goal.found;
+      return;
+    }
+    Line_decider exact;
+    for (std::size_t i = 0; i < n && !goal.done(); ++i)
+      for (std::size_t j = i + 1; j < n && !goal.done(); ++j)
+        for (std::size_t m = j + 1; m < n && !goal.done(); ++m) {
+          bool before = goal.found;
+          if (!exact_lines_ || goal.earliest) on_line(f, i, j, m, goal);
+          else try {
+            on_line(f, i, j, m, goal);
+          } catch (const CGAL::Uncertain_conversion_exception&) {
+            if (!exact) exact = exact_lines_(layout_, region);
+            ++stats_.exact_lines;
+            bool known = false;
+            if (exact(f, i, j, m, known)) {
+              // The point is for the exact run to construct.
+              goal.found = goal.improved = true;
+              goal.inside_known = false;
+              if (trail_) trail_->line_known = known;
+            }
+          }
+          if (trail_ && trail_->recording() && !before && goal.found) trail_->line = {i, j, m};
+        }
+  }
+
+  // Any-witness searches only (earliest mode fails as the kernel does).
+  void lines_undecided_with(Exact_lines exact) { exact_lines_ = std::move(exact); }
+
+  // Another kernel's conquer, rebuilt in this one (Exact_lines): the
+  // layout's planes made from this kernel's table and region.
+  void adopt(const Plane_layout& layout, const Box<FT, 4>& region)
+  {
+    layout_ = layout;
+    planes_.clear();
+    for (std::size_t p = 0; p < layout.entry.size(); ++p)
+      planes_.push_back(layout.entry[p] >= 0 ? table_[layout.entry[p]] : face(region, layout.face[p]));
+    resize_values();
+  }
+
+  // One line of an adopted conquer: whether it holds a point inside.
+  // Only the verdict is wanted, so a kernel with a filter (K::Filter)
+  // classifies the neighbourhoods of the line's points in it first.
+  bool line_has_inside(const Formula& f, std::size_t i, std::size_t j, std::size_t m)
+  {
+    Search_goal<FT> goal;
+    verdict_only_ = true;
+    on_line(f, i, j, m, goal);
+    verdict_only_ = false;
+    return goal.found;
+  }
+
+  // For an approximate kernel: whether two planes are one (as
+  // geometry/Hyperplane4.h's proportional), when it cannot tell; each plane is a
+  // table entry or, when the entry is -1, face `face` of the region
+  // (exact/Filtered_runner.h asks the exact planes).
+  using Exact_same = std::function<int(long entry_h, int face_h, long entry_g, int face_g, const Box<FT, 4>& region)>;
+  void proportional_undecided_with(Exact_same exact) { exact_same_ = std::move(exact); }
+
+  // Face 2 * a + upper of the region, inside <= 0: -x_a + lo <= 0 or x_a - hi <= 0.
+  static H face(const Box<FT, 4>& region, int which)
+  {
+    int a = which / 2;
+    V e{FT(0), FT(0), FT(0), FT(0)};
+    e[a] = FT(which % 2 ? 1 : -1);
+    return {e, which % 2 ? -region.hi[a] : region.lo[a]};
+  }
+
+  // Skeleton (§5): every edge of the boundary of the region the formula
+  // describes, inside this closed region, as segments (p, q). Lines come from
+  // formula planes only (the region's faces are artificial); an edge is kept
+  // when the planes that separate inside from outside around it (the
+  // essential ones) span the whole 3D neighbourhood, so it is a 1-face and not
+  // a point of a 2- or 3-face.
+  void skeleton(const Formula& f, const Box<FT, 4>& region, std::vector<std::array<V, 2>>& out)
+  {
+    collect_planes(f, region);
+    for (std::size_t i = 0; i < layout_.first_face; ++i)
+      for (std::size_t j = i + 1; j < layout_.first_face; ++j)
+        for (std::size_t m = j + 1; m < layout_.first_face; ++m) skeleton_line(f, i, j, m, out);
+  }
+
+private:
+  const K& k_;
+  const std::vector<H>& table_;
+  Check_stats& stats_;
+  Search_trail* trail_;
+  const Motion_groups<FT>* groups_;
+  std::vector<H> planes_;                 // distinct hyperplanes, region faces last
+  Plane_layout layout_;                   // where they come from
+  bool verdict_only_ = false;             // line_has_inside: no point will be made
+  std::vector<FT> cuts_;                  // on_line's cuts of the current line
+  Exact_lines exact_lines_;
+  std::vector<FT> at_base_, along_;       // per plane: value at the base point, slope along l
+  std::vector<int> sign_;                 // per plane at the current test point: -1, 0, +1
+  std::array<std::size_t, 3> line_{};     // the planes that meet in the current line
+  int line_group_ = -1;                   // their common motion group, or -1
+  int line_corner_ = -1;                  // a corner all three pass through: the line is its path
+  std::vector<int> line_meets_;           // corners two of them pass through: the line meets their paths
+
+  // Index of h among planes_ (appending it if new) and its orientation;
+  // `along` (model/Motion_groups.h) is what h is known to contain, and is
+  // added to the plane's (a plane shared by two entries contains both).
+  // entry: h's index in the table, or -1 for the region face `face`.
+  std::pair<std::size_t, int> intern(const H& h, unsigned along, long entry, int face = -1)
+  {
+    for (std::size_t p = 0; p < planes_.size(); ++p)
+      if (int o = same_plane(h, p, entry, face)) {
+        layout_.moves_along[p] |= along;
+        add_corners(p, entry);
+        return {p, o};
+      }
+    planes_.push_back(h);
+    layout_.moves_along.push_back(along);
+    layout_.entry.push_back(entry);
+    layout_.face.push_back(face);
+    layout_.corners.emplace_back();
+    add_corners(planes_.size() - 1, entry);
+    return {planes_.size() - 1, 1};
+  }
+
+  // The corners table entry `entry` passes through, added to plane p's.
+  void add_corners(std::size_t p, long entry)
+  {
+    if (!groups_ || entry < 0) return;
+    const std::vector<int>& more = groups_->corners_of(static_cast<std::size_t>(entry));
+    if (more.empty()) return;
+    std::vector<int>& mine = layout_.corners[p];
+    std::vector<int> both;
+    std::set_union(mine.begin(), mine.end(), more.begin(), more.end(), std::back_inserter(both));
+    mine = std::move(both);
+  }
+
+  bool through_corner(std::size_t p, int corner) const
+  {
+    const std::vector<int>& c = layout_.corners[p];
+    return std::binary_search(c.begin(), c.end(), corner);
+  }
+
+  // line_corner_ and line_meets_ for the line of planes i, j, m: merges of
+  // their sorted corner lists (most are empty).
+  void find_line_corners(std::size_t i, std::size_t j, std::size_t m)
+  {
+    line_corner_ = -1;
+    line_meets_.clear();
+    const std::vector<int> &ci = layout_.corners[i], &cj = layout_.corners[j], &cm = layout_.corners[m];
+    if ((ci.empty() ? 1 : 0) + (cj.empty() ? 1 : 0) + (cm.empty() ? 1 : 0) >= 2) return;
+    auto shared = [&](const std::vector<int>& a, const std::vector<int>& b, const std::vector<int>& third) {
+      for (auto x = a.begin(), y = b.begin(); x != a.end() && y != b.end();) {
+        if (*x < *y) ++x;
+        else if (*y < *x) ++y;
+        else {
+          if (std::binary_search(third.begin(), third.end(), *x)) line_corner_ = *x;
+          else if (std::find(line_meets_.begin(), line_meets_.end(), *x) == line_meets_.end()) line_meets_.push_back(*x);
+          ++x, ++y;
+        }
+      }
+    };
+    shared(ci, cj, cm);
+    shared(ci, cm, cj);
+    shared(cj, cm, ci);
+  }
+
+  // The line where planes i, j and m meet (zero when they do not). Three
+  // planes that contain a group's motion (r, 1) meet along it: the
+  // generalised cross product is then its last coordinate times (r, 1),
+  // written so.
+  V line_direction(std::size_t i, std::size_t j, std::size_t m)
+  {
+    unsigned common = layout_.moves_along[i] & layout_.moves_along[j] & layout_.moves_along[m];
+    line_group_ = -1;
+    for (int g = 0; common && line_group_ < 0; ++g)
+      if (common & (1u << g)) line_group_ = g;
+    line_ = {i, j, m};
+    find_line_corners(i, j, m);
+    if (line_group_ < 0) return generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n);
+    const Vector3<FT>& r = groups_->velocity[line_group_];
+    FT d = generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n)[3];
+    return {d * r[0], d * r[1], d * r[2], d};
+  }
+
+  // The groups whose motion a face x_a = c contains (still along axis a).
+  unsigned face_along(int a) const
+  {
+    unsigned along = 0;
+    for (std::size_t g = 0; groups_ && a < 3 && g < groups_->still.size(); ++g)
+      if (groups_->still[g][a]) along |= 1u << g;
+    return along;
+  }
+
+  Exact_same exact_same_;
+  const Box<FT, 4>* region_ = nullptr;    // the conquer's region, while planes are collected
+
+  // Whether h (table entry `entry`, or region face `face`) is plane p, for
+  // the exact callback when this kernel cannot tell; none: fail as it does.
+  int same_plane(const H& h, std::size_t p, long entry, int face) const
+  {
+    if (!exact_same_) return proportional(k_, h, planes_[p]);
+    try {
+      return proportional(k_, h, planes_[p]);
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      return exact_same_(entry, face, layout_.entry[p], layout_.face[p], *region_);
+    }
+  }
+
+  void collect_planes(const Formula& f, const Box<FT, 4>& region)
+  {
+    region_ = &region;
+    planes_.clear();
+    layout_ = Plane_layout();
+    layout_.leaf_plane.assign(table_.size(), {0, 0});
+    for (const auto& t : f.code())
+      if (t.op == Formula::Op::Leaf && layout_.leaf_plane[t.arg].second == 0)
+        layout_.leaf_plane[t.arg] =
+            intern(table_[t.arg], groups_ && groups_->group(t.arg) >= 0 ? 1u << groups_->group(t.arg) : 0u,
+                   static_cast<long>(t.arg));
+    // Region faces, inside <= 0; they may coincide with leaves, so intern too.
+    layout_.first_face = planes_.size();
+    for (int which = 0; which < 8; ++which)
+      layout_.face_plane.push_back(intern(face(region, which), face_along(which / 2), -1, which));
+    resize_values();
+  }
+
+  void resize_values()
+  {
+    at_base_.resize(planes_.size());
+    along_.resize(planes_.size());
+    sign_.resize(planes_.size());
+  }
+
+  Truth leaf_truth(std::uint32_t h) const
+  {
+    int s = sign_[layout_.leaf_plane[h].first] * layout_.leaf_plane[h].second;
+    return s < 0 ? Truth::True : s > 0 ? Truth::False : Truth::Unknown;
+  }
+  bool inside_region() const
+  {
+    for (const auto& fp : layout_.face_plane)
+      if (sign_[fp.first] * fp.second >= 0) return false;
+    return true;
+  }
+
+  void on_line(const Formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<FT>& goal)
+  {
+    V l = line_direction(i, j, m);
+    if (k_.is_zero(l)) return;
+    ++stats_.lines;
+    V base = base_point(planes_[i], planes_[j], planes_[m], l);
+    FT s_lo(0), s_hi(0);
+    if (!range_in_region(base, l, s_lo, s_hi)) return;
+    if (!goal.can_improve(Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
+    evaluate_planes(base, l, layout_.first_face);
+    std::vector<FT>& cuts = cuts_;          // reused: a line's cuts, no allocation per line
+    cuts.assign({s_lo, s_hi});
+    FT centre = (s_lo + s_hi) / FT(2);
+    // Per corner whose path the line meets: whether that point is on the
+    // segment (every plane of the corner cuts the line there).
+    std::vector<std::pair<int, bool>> meets;
+    for (std::size_t p = 0; p < planes_.size(); ++p) {
+      sign_[p] = 0;   // Unknown on the segment unless constant there
+      CGAL::Sign sa = k_.sign(along_[p]);
+      if (sa == CGAL::ZERO) {
+        sign_[p] = static_cast<int>(k_.sign(at_base_[p]));
+        continue;
+      }
+      // A face the line crosses bounds the segment: strictly inside between.
+      if (p >= layout_.first_face) { sign_[p] = -1; continue; }
+      int corner = meeting_corner(p);
+      auto seen = std::find_if(meets.begin(), meets.end(), [&](const auto& e) { return e.first == corner; });
+      bool inside;
+      if (corner >= 0 && seen != meets.end()) {
+        inside = seen->second;                 // the same point as the corner's first plane
+      } else {
+        FT cut = k_.quotient(-at_base_[p], along_[p], sa);
+        inside = k_.less(s_lo, cut) && k_.less(cut, s_hi);
+        if (inside) cuts.push_back(cut);
+        if (corner >= 0) meets.emplace_back(corner, inside);
+      }
+      if (!inside) sign_[p] = static_cast<int>(k_.sign(at_base_[p] + centre * along_[p]));
+    }
+    // Cheap rejection of the whole segment: false whatever the planes that
+    // cut it (or contain it) do, hence false at every midpoint on it.
+    if (f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) == Truth::False) return;
+    std::sort(cuts.begin(), cuts.end());
+    for (std::size_t q = 0; q + 1 < cuts.size() && !goal.done(); ++q) {
+      if (k_.compare(cuts[q + 1], cuts[q]) == CGAL::ZERO) continue;
+      // The edge's earlier end (time is linear along it).
+      const FT& s_early = l[3] < FT(0) ? cuts[q + 1] : cuts[q];
+      V early = point_along(base, s_early, l);
+      if (!goal.can_improve(early[3])) continue;
+      FT mid = (cuts[q] + cuts[q + 1]) / FT(2);
+      if (auto in = classify(f, base, l, mid)) goal.record(*in, early);
+    }
+  }
+
+  // The segment of the line through planes i, j, m inside the closed region,
+  // and every cut by another plane in it, sorted; empty when it misses.
+  // The line's parameter range inside the closed region, from the faces
+  // only: most lines of a conquer miss the region, and then no other plane
+  // need be evaluated.
+  bool range_in_region(const V& base, const V& l, FT& s_lo, FT& s_hi)
+  {
+    bool has_lo = false, has_hi = false;
+    for (const auto& fp : layout_.face_plane) {
+      std::size_t p = fp.first;
+      evaluate_plane(p, base, l);
+      CGAL::Sign sa = k_.sign(along_[p]);
+      int e = sa * fp.second;
+      if (e == 0) {
+        if (k_.sign(at_base_[p]) * fp.second > 0) return false;
+        continue;
+      }
+      FT cut = k_.quotient(-at_base_[p], along_[p], sa);
+      if (e > 0) { s_hi = has_hi ? Number_ops<FT>::lower(s_hi, cut) : cut; has_hi = true; }
+      else { s_lo = has_lo ? Number_ops<FT>::upper(s_lo, cut) : cut; has_lo = true; }
+    }
+    return has_lo && has_hi && k_.compare(s_hi, s_lo) == CGAL::POSITIVE;
+  }
+
+  void evaluate_planes(const V& base, const V& l, std::size_t count)
+  {
+    for (std::size_t p = 0; p < count; ++p) evaluate_plane(p, base, l);
+  }
+
+  // The corner of plane p whose path the line meets (line_meets_), or -1.
+  int meeting_corner(std::size_t p) const
+  {
+    for (int c : line_meets_)
+      if (through_corner(p, c)) return c;
+    return -1;
+  }
+
+  // The line lies in its own three planes (and, when it is a corner's path,
+  // in every plane of the corner), and runs parallel to every plane of its
+  // motion group: those zeros hold by construction and are written so (an
+  // interval would only enclose them).
+  void evaluate_plane(std::size_t p, const V& base, const V& l)
+  {
+    bool holds = p == line_[0] || p == line_[1] || p == line_[2] || (line_corner_ >= 0 && through_corner(p, line_corner_));
+    bool parallel = holds || (line_group_ >= 0 && (layout_.moves_along[p] >> line_group_ & 1u));
+    if (int which = layout_.face[p]; which >= 0) {
+      // A region face, +-x_a + c: two terms, not the eight of a product.
+      int a = which / 2;
+      at_base_[p] = holds ? FT(0) : (which % 2 ? base[a] : -base[a]) + planes_[p].c;
+      along_[p] = parallel ? FT(0) : (which % 2 ? l[a] : -l[a]);
+      return;
+    }
+    at_base_[p] = holds ? FT(0) : planes_[p].value(base);
+    along_[p] = parallel ? FT(0) : dot(planes_[p].n, l);
+  }
+
+  // The segment of the line through planes i, j, m inside the closed region,
+  // and every cut by a formula plane in it, sorted; empty when it misses.
+  std::vector<FT> cuts_in_region(std::size_t i, std::size_t j, std::size_t m, V& base, V& l)
+  {
+    l = line_direction(i, j, m);
+    if (k_.is_zero(l)) return {};
+    base = base_point(planes_[i], planes_[j], planes_[m], l);
+    FT s_lo(0), s_hi(0);
+    if (!range_in_region(base, l, s_lo, s_hi)) return {};
+    evaluate_planes(base, l, layout_.first_face);
+    std::vector<FT> cuts{s_lo, s_hi};
+    for (std::size_t p = 0; p < layout_.first_face; ++p) {
+      if (k_.sign(along_[p]) == CGAL::ZERO) continue;
+      FT cut = -at_base_[p] / along_[p];
+      if (k_.less(s_lo, cut) && k_.less(cut, s_hi)) cuts.push_back(cut);
+    }
+    std::sort(cuts.begin(), cuts.end());
+    return cuts;
+  }
+
+  void skeleton_line(const Formula& f, std::size_t i, std::size_t j, std::size_t m, std::vector<std::array<V, 2>>& out)
+  {
+    V base, l;
+    std::vector<FT> cuts = cuts_in_region(i, j, m, base, l);
+    if (!cuts.empty()) ++stats_.lines;
+    for (std::size_t q = 0; q + 1 < cuts.size(); ++q) {
+      if (k_.compare(cuts[q + 1], cuts[q]) == CGAL::ZERO) continue;
+      FT mid = (cuts[q] + cuts[q + 1]) / FT(2);
+      if (is_edge(f, l, mid)) out.push_back({point_along(base, cuts[q], l), point_along(base, cuts[q + 1], l)});
+    }
+  }
+
+  bool is_edge(const Formula& f, const V& l, const FT& s)
+  {
+    ++stats_.points_classified;
+    std::vector<std::size_t> through;
+    for (std::size_t p = 0; p < layout_.first_face; ++p) {
+      sign_[p] = static_cast<int>(k_.sign(at_base_[p] + s * along_[p]));
+      if (sign_[p] == 0) through.push_back(p);
+    }
+    if (f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) != Truth::Unknown) return false;
+    std::vector<V> normals;
+    for (std::size_t p : through) normals.push_back(planes_[p].n);
+    // Every cell around the point, by its sign vector, inside or not.
+    std::vector<std::pair<std::vector<int>, bool>> cells;
+    Neighbourhood<K> hood(k_);
+    hood.find_inside(l, normals, [&](const std::vector<int>& signs) {
+      for (std::size_t t = 0; t < through.size(); ++t) sign_[through[t]] = signs[t];
+      bool in = f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) == Truth::True;
+      bool seen = false;
+      for (const auto& c : cells) seen = seen || c.first == signs;
+      if (!seen) cells.emplace_back(signs, in);
+      return false;
+    });
+    stats_.cells_tested += hood.cells_tested();
+    // Essential planes: some pair of cells adjacent across it differ.
+    std::vector<V> essential;
+    for (std::size_t t = 0; t < through.size(); ++t) {
+      bool found = false;
+      for (std::size_t a = 0; a < cells.size() && !found; ++a)
+        for (std::size_t b = a + 1; b < cells.size() && !found; ++b) {
+          if (cells[a].second == cells[b].second || cells[a].first[t] == cells[b].first[t]) continue;
+          bool one_apart = true;
+          for (std::size_t u = 0; u < through.size() && one_apart; ++u) one_apart = u == t || cells[a].first[u] == cells[b].first[u];
+          found = one_apart;
+        }
+      if (found) essential.push_back(normals[t]);
+    }
+    for (std::size_t a = 0; a < essential.size(); ++a)
+      for (std::size_t b = a + 1; b < essential.size(); ++b)
+        for (std::size_t c = b + 1; c < essential.size(); ++c)
+          if (k_.orientation4(l, essential[a], essential[b], essential[c]) != CGAL::ZERO) return true;
+    return false;
+  }
+
+  // A point on planes a, b and c: the one whose coordinate k is zero, for
+  // the k where the direction l is largest (l_k is, up to sign, the
+  // determinant of the system). Any k with l_k != 0 gives a point of the
+  // line, and every decision along the line is about its points, not this
+  // one, so kernels need not agree on k. The other three coordinates by
+  // Cramer's rule, as cross products of the rows.
+  V base_point(const H& a, const H& b, const H& c, const V& l) const
+  {
+    int k = k_.largest_component(l);
+    int cols[3], n = 0;
+    for (int q = 0; q < 4; ++q)
+      if (q != k) cols[n++] = q;
+    const H* hs[3] = {&a, &b, &c};
+    Vector3<FT> r[3];
+    for (int t = 0; t < 3; ++t) r[t] = {hs[t]->n[cols[0]], hs[t]->n[cols[1]], hs[t]->n[cols[2]]};
+    Vector3<FT> x12 = cross(r[1], r[2]), x20 = cross(r[2], r[0]), x01 = cross(r[0], r[1]);
+    FT det = dot(r[0], x12);
+    CGAL::Sign sd = k_.sign(det);
+    V p;
+    p[k] = FT(0);
+    for (int t = 0; t < 3; ++t) p[cols[t]] = k_.quotient(-(a.c * x12[t] + b.c * x20[t] + c.c * x01[t]), det, sd);
+    return p;
+  }
+
+  std::optional<V> classify(const Formula& f, const V& base, const V& l, const FT& s)
+  {
+    ++stats_.points_classified;
+    std::vector<std::size_t> through;
+    for (std::size_t p = 0; p < planes_.size(); ++p) {
+      sign_[p] = static_cast<int>(k_.sign(at_base_[p] + s * along_[p]));
+      if (sign_[p] == 0) through.push_back(p);
+    }
+    // Cheap rejection: false whatever the planes through the point do.
+    if (f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) == Truth::False) return std::nullopt;
+    std::vector<V> normals;
+    for (std::size_t p : through) normals.push_back(planes_[p].n);
+    Neighbourhood<K> hood(k_);
+    auto inside = [&](const std::vector<int>& signs) {
+      for (std::size_t i = 0; i < through.size(); ++i) sign_[through[i]] = signs[i];
+      return inside_region() && f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) == Truth::True;
+    };
+    if constexpr (!std::is_void_v<typename filter_of<K>::type>)
+      if (verdict_only_)
+        if (auto found = filtered_has_inside<typename filter_of<K>::type>(l, normals, inside, stats_.cells_tested)) {
+          if (!*found) return std::nullopt;
+          return point_along(base, s, l);      // inside: a verdict, the point is not used
+        }
+    std::optional<V> d = hood.find_inside(l, normals, inside);
+    stats_.cells_tested += hood.cells_tested();
+    if (!d) return std::nullopt;
+    V p = point_along(base, s, l);
+    if (through.empty()) return p;
+    return point_along(p, step_into_cell(through, *d, s), *d);
+  }
+
+  // regularised-semantics item 3: how far to go along d, from the point at s
+  // on the line, into the open cell found inside. The planes through the
+  // point are those d was chosen against; every other plane not parallel to
+  // d is met at |h| / |n.d|, and half the least of those crosses none.
+  FT step_into_cell(const std::vector<std::size_t>& through, const V& d, const FT& s) const
+  {
+    bool any = false;
+    FT best(1);
+    for (std::size_t p = 0, t = 0; p < planes_.size(); ++p) {
+      if (t < through.size() && through[t] == p) { ++t; continue; }
+      FT nd = dot(planes_[p].n, d);
+      if (k_.sign(nd) == CGAL::ZERO) continue;
+      FT q = Number_ops<FT>::magnitude(at_base_[p] + s * along_[p]) / Number_ops<FT>::magnitude(nd);
+      best = any ? Number_ops<FT>::lower(best, q) : q;
+      any = true;
+    }
+    return best / FT(2);
+  }
+};
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,161 @@
+// S-bound preprocessing (§4.3): 3D aligned boxes per CSG node rewritten by the
+// Upward and Downward rules of figure 2, and at the root of a pair the closed
+// form of Appendix B for two boxes moving with constant velocities.
+#ifndef CLASH4D_SEARCH_S_BOUNDS_H
+#define CLASH4D_SEARCH_S_BOUNDS_H
+
+#include "geometry/Box.h"
+#include "model/Csg_model.h"
+#include "model/Scene_model.h"
+#include <vector>
+
+namespace clash4d {
+
+template <class K>
+class S_bounds {
+public:
+  using FT = typename K::FT;
+  using Box3 = Box<FT, 3>;
+  using Bounds = std::vector<Box3>;   // one per CSG node
+
+  explicit S_bounds(const K& k) : k_(k) {}
+
+  // Leaves start at their primitive's box, branches at Omega (§4.3.1).
+  Bounds initial(const Csg_model<FT>& m) const
+  {
+    Bounds beta(m.nodes.size(), Box3::whole());
+    for (std::size_t i = 0; i < m.nodes.size(); ++i)
+      if (m.nodes[i].op == Csg_node::Op::Primitive) beta[i] = normalised(m.primitives[m.nodes[i].primitive].box);
+    return beta;
+  }
+
+  // Upward rule bottom-up (children have larger indices than parents).
+  bool up(const Csg_model<FT>& m, Bounds& beta) const
+  {
+    bool changed = false;
+    for (std::size_t i = m.nodes.size(); i-- > 0;) {
+      const Csg_node& n = m.nodes[i];
+      if (n.op == Csg_node::Op::Primitive) continue;
+      Box3 s = beta[n.children[0]];
+      for (std::size_t c = 1; c < n.children.size(); ++c) {
+        if (n.op == Csg_node::Op::Intersection) s = meet(s, beta[n.children[c]]);
+        else if (n.op == Csg_node::Op::Union) s = join(s, beta[n.children[c]]);
+      }
+      changed |= shrink(beta[i], s);
+    }
+    return changed;
+  }
+
+  // Downward rule top-down: a node matters only inside its parent's bound.
+  bool down(const Csg_model<FT>& m, Bounds& beta) const
+  {
+    bool changed = false;
+    for (std::size_t i = 1; i < m.nodes.size(); ++i) changed |= shrink(beta[i], beta[m.nodes[i].parent]);
+    return changed;
+  }
+
+  // Up then Down until no bound moves by a grid step, or max_passes; returns
+  // the passes run.
+  int settle(const Csg_model<FT>& m, Bounds& beta, int max_passes) const
+  {
+    int passes = 0;
+    while (passes < max_passes) {
+      ++passes;
+      bool changed = up(m, beta);
+      changed |= down(m, beta);
+      if (!changed) break;
+    }
+    return passes;
+  }
+
+  // One object's root bound, in its own frame, moving with D(t) = v t + o.
+  struct Moving_box {
+    Box3* box;
+    const Vector3<FT>* v;
+    const Vector3<FT>* o;
+  };
+
+  // Appendix B: intersect two moving boxes over the time span [tl, th],
+  // narrowing the span and both boxes. Returns false when the intersection
+  // has no interior (no collision in this span).
+  bool meet_moving(Moving_box A, Moving_box B, FT& tl, FT& th) const
+  {
+    if (A.box->empty || B.box->empty) return false;
+    for (int q = 0; q < 3; ++q)
+      if (!narrow_time(side(A, q), side(B, q), (*A.v)[q] - (*B.v)[q], tl, th)) return false;
+    for (int q = 0; q < 3; ++q) {
+      Side a = side(A, q), b = side(B, q);
+      FT w = (*B.v)[q] - (*A.v)[q];                 // (v - u)
+      FT m1 = Number_ops<FT>::lower(w * tl, w * th), M1 = Number_ops<FT>::upper(w * tl, w * th);
+      // a' = max(a, b + min((v-u)t)), alpha' = min(alpha, beta + max((v-u)t)),
+      // b' = max(b, a - max((v-u)t)), beta' = min(beta, alpha - min((v-u)t)).
+      Side a2 = a, b2 = b;
+      if (b.has_lo) raise(a2, b.lo + m1);
+      if (b.has_hi) lower(a2, b.hi + M1);
+      if (a.has_lo) raise(b2, a.lo - M1);
+      if (a.has_hi) lower(b2, a.hi - m1);
+      store(A, q, a2);
+      store(B, q, b2);
+    }
+    *A.box = normalised(*A.box);
+    *B.box = normalised(*B.box);
+    return !A.box->empty && !B.box->empty;
+  }
+
+  // A box with no interior is the empty bound (see has_no_interior).
+  Box3 normalised(const Box3& b) const { return has_no_interior(k_, b) ? Box3::nothing() : b; }
+
+private:
+  const K& k_;
+
+  struct Side {   // [lo, hi] of one axis in world coordinates at t = 0
+    FT lo, hi;
+    bool has_lo, has_hi;
+  };
+
+  Side side(const Moving_box& m, int q) const
+  {
+    const Box3& b = *m.box;
+    return {b.has_lo[q] ? b.lo[q] + (*m.o)[q] : FT(0), b.has_hi[q] ? b.hi[q] + (*m.o)[q] : FT(0), b.has_lo[q], b.has_hi[q]};
+  }
+  void store(const Moving_box& m, int q, const Side& s) const
+  {
+    Box3& b = *m.box;
+    if (s.has_lo) { b.lo[q] = s.lo - (*m.o)[q]; b.has_lo[q] = true; }
+    if (s.has_hi) { b.hi[q] = s.hi - (*m.o)[q]; b.has_hi[q] = true; }
+  }
+  static void raise(Side& s, const FT& lo) { s.lo = s.has_lo ? Number_ops<FT>::upper(s.lo, lo) : lo; s.has_lo = true; }
+  static void lower(Side& s, const FT& hi) { s.hi = s.has_hi ? Number_ops<FT>::lower(s.hi, hi) : hi; s.has_hi = true; }
+
+  // ut + a <= q <= ut + alpha and vt + b <= q <= vt + beta give
+  // b - alpha <= (u - v) t <= beta - a (Appendix B, "Computing [tl, th]").
+  bool narrow_time(const Side& a, const Side& b, const FT& w, FT& tl, FT& th) const
+  {
+    bool has_low = b.has_lo && a.has_hi, has_high = b.has_hi && a.has_lo;
+    FT low = has_low ? b.lo - a.hi : FT(0), high = has_high ? b.hi - a.lo : FT(0);
+    CGAL::Sign s = k_.sign(w);
+    if (s == CGAL::ZERO) {
+      // Same velocity: the overlap along q is the same at every time.
+      if (has_low && k_.sign(low) != CGAL::NEGATIVE) return false;
+      if (has_high && k_.sign(high) != CGAL::POSITIVE) return false;
+      return !(has_low && has_high && k_.compare(high, low) != CGAL::POSITIVE);
+    }
+    if (s == CGAL::NEGATIVE) std::swap(low, high), std::swap(has_low, has_high);
+    if (has_low) tl = Number_ops<FT>::upper(tl, low / w);
+    if (has_high) th = Number_ops<FT>::lower(th, high / w);
+    return k_.compare(th, tl) == CGAL::POSITIVE;
+  }
+
+  // beta <- beta meet s; true when it moved by a grid step (Box.h).
+  bool shrink(Box3& beta, const Box3& s) const
+  {
+    Box3 r = normalised(meet(beta, s));
+    bool changed = !same_on_grid(k_, r, beta);
+    beta = r;
+    return changed;
+  }
+};
+
+} // namespace clash4d
+
+#endif

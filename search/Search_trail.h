@@ -1,0 +1,48 @@
+// Where an approximate run found its first point inside a pair's collision
+// region, so that the exact run can go straight there (the "recomputed
+// exactly on demand" half of the filtered kernel, exact/Filtered_runner.h),
+// when the approximate run could not make the witness itself.
+//
+// Why following the trail gives the exact run's own answer: every decision
+// the approximate run made was a certified sign, the heuristic ones included
+// (S-bound passes and frames are decided on grid points,
+// Kernel_base::grid_point), except a box simplification it could not decide
+// (it kept the leaf and marked the trail `approximate`: no replay then). So
+// the approximate numbers enclose exactly the exact run's S-bounds, region,
+// planes and formula, every region the division visited before the found
+// one, and every line before the found one, is certified empty for the
+// exact run too: the exact run's first point inside is the one at the end
+// of the trail. Earlier spans hold no collision at all (the approximate run
+// proved it), so they are skipped. The exact run still checks that the
+// trail leads somewhere (`diverged` otherwise, and a full run follows).
+#ifndef CLASH4D_SEARCH_SEARCH_TRAIL_H
+#define CLASH4D_SEARCH_SEARCH_TRAIL_H
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace clash4d {
+
+struct Search_trail {
+  enum class Mode { Record, Replay };
+  Mode mode = Mode::Record;
+
+  bool complete = false;                // Record: a point inside was found and the trail leads to it
+  bool diverged = false;                // Replay: the exact run's path differs; use a full run
+  bool approximate = false;             // Record: a simplification was skipped as uncertain, so
+                                        // the path may differ from the exact run's: no replay
+  std::size_t span = 0;                 // index of the sub-span, in time order
+  std::vector<int> path;                // division: child index at each depth
+  bool on_line = false;                 // found on a line (else a region folded to "inside")
+  std::array<std::size_t, 3> line{};    // the line's three planes, in generate-and-test's order
+  bool line_known = true;               // false: found on a line decided in rationals over a widened
+                                        // region (Filtered_runner::Exact_span::lines): replay the region
+
+  bool recording() const { return mode == Mode::Record; }
+  bool replaying() const { return mode == Mode::Replay; }
+};
+
+} // namespace clash4d
+
+#endif
