@@ -5,6 +5,7 @@
 
 #include "check/Check_answer.h"
 #include "check/Collision_checker.h"
+#include "check/Pair_skeleton.h"
 #include "check/Pair_sweep.h"
 #include <atomic>
 #include <mutex>
@@ -94,7 +95,7 @@ void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::p
 // Object pairs the sweep keeps (§6), with the sweep's counts and time.
 template <class K>
 std::vector<std::pair<int, int>> candidate_pairs(const K& k, const Scene_model<K>& model,
-                                                 const std::vector<typename Collision_checker<K>::Bounds>& settled,
+                                                 const std::vector<typename S_bounds<K>::Bounds>& settled,
                                                  const Scene& scene, Check_stats& stats)
 {
   auto start = std::chrono::steady_clock::now();
@@ -117,7 +118,7 @@ Check_answer run_check(const K& k, const Scene& scene, const Check_options& opti
   auto start = std::chrono::steady_clock::now();
   Scene_model<K> model = Scene_model<K>::build(k, scene);
   answer.stats.seconds_model = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  auto settled = Checker::settle_all(k, model, answer.stats, options.sbounds);
+  auto settled = settled_bounds_all(k, model, answer.stats, options.sbounds);
   std::vector<std::pair<int, int>> pairs = candidate_pairs(k, model, settled, scene, answer.stats);
   auto check = [&](std::size_t i, const typename K::FT* ceiling, Check_stats& stats) {
     Checker checker(k, model, settled, stats, options.sbounds);
@@ -132,7 +133,7 @@ template <class K, class Skeleton_one>
 void run_skeleton_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::pair<int, int>>& pairs,
                         Skeleton_one skeleton, Skeleton_answer& answer)
 {
-  std::vector<std::vector<typename Collision_checker<K>::Segment>> edges(pairs.size());
+  std::vector<std::vector<typename Pair_skeleton<K>::Segment>> edges(pairs.size());
   std::vector<Check_stats> stats(pairs.size());
   tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t i) { edges[i] = skeleton(i, stats[i]); });
   for (std::size_t i = 0; i < pairs.size(); ++i) {
@@ -155,10 +156,10 @@ Skeleton_answer run_skeleton(const K& k, const Scene& scene)
   Skeleton_answer answer;
   answer.number = K::name();
   Scene_model<K> model = Scene_model<K>::build(k, scene);
-  auto settled = Collision_checker<K>::settle_all(k, model, answer.stats, true);
+  auto settled = settled_bounds_all(k, model, answer.stats, true);
   std::vector<std::pair<int, int>> pairs = candidate_pairs(k, model, settled, scene, answer.stats);
   run_skeleton_pairs(k, model, pairs, [&](std::size_t i, Check_stats& stats) {
-    return Collision_checker<K>(k, model, settled, stats).skeleton_pair(pairs[i].first, pairs[i].second);
+    return Pair_skeleton<K>(k, model, settled, stats).edges(pairs[i].first, pairs[i].second);
   }, answer);
   return answer;
 }

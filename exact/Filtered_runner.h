@@ -9,7 +9,7 @@
 //
 // A colliding pair's witness is made by AK itself when nothing in its run
 // was left uncertain (Collision_checker::as_filter): the witness is snapped
-// to a dyadic grid point (Collision_checker::snap), which AK finds exactly
+// to a dyadic grid point (Witness::snap), which AK finds exactly
 // from its enclosures. Otherwise the pair is run again on EK: an
 // any-witness search goes straight to the point AK found, along AK's trail
 // (search/Search_trail.h), and falls back to the whole search when EK's path
@@ -126,9 +126,9 @@ public:
         try {
           Protector protect;
           Check_stats astats;
-          if (Collision_checker<AK>(ak_, amodel_, asettled_, astats).skeleton_pair(a, b).empty()) {
+          if (Pair_skeleton<AK>(ak_, amodel_, asettled_, astats).edges(a, b).empty()) {
             stats = astats;
-            return std::vector<typename Collision_checker<EK>::Segment>();
+            return std::vector<typename Pair_skeleton<EK>::Segment>();
           }
           ++witness_runs_;
         } catch (const CGAL::Uncertain_conversion_exception&) {
@@ -137,7 +137,7 @@ public:
       }
       need_exact(a);
       need_exact(b);
-      return Collision_checker<EK>(ek_, emodel_, esettled_, stats).skeleton_pair(a, b);
+      return Pair_skeleton<EK>(ek_, emodel_, esettled_, stats).edges(a, b);
     };
       run_skeleton_pairs(ek_, emodel_, pairs, skeleton_one, answer);
     }
@@ -153,16 +153,16 @@ private:
   AK ak_;
   EK ek_;
   Scene_model<AK> amodel_;
-  std::vector<typename Collision_checker<AK>::Bounds> asettled_;
+  std::vector<typename S_bounds<AK>::Bounds> asettled_;
   std::vector<char> exact_only_;              // AK could not bound the object: its pairs go to EK
   Scene_model<EK> emodel_;                    // objects built on demand
-  std::vector<typename Collision_checker<EK>::Bounds> esettled_;
+  std::vector<typename S_bounds<EK>::Bounds> esettled_;
   std::unique_ptr<std::once_flag[]> built_, settled_;   // EK's model of an object, and its S-bounds
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0};
 
   // A witness AK made on a certified path: its coordinates are grid points
-  // (Collision_checker::snap), exact doubles, so AK's point intervals are
+  // (Witness::snap), exact doubles, so AK's point intervals are
   // EK's numbers.
   Pair_result<EFT> exact_copy(const Pair_result<AFT>& found) const
   {
@@ -208,18 +208,18 @@ private:
     return true;
   }
 
-  typename Collision_checker<AK>::Bounds settle(int i, Check_stats& stats)
+  typename S_bounds<AK>::Bounds settle(int i, Check_stats& stats)
   {
     try {
       Protector protect;
-      return Collision_checker<AK>::settle_one(ak_, amodel_.objects[i].csg, stats, use_sbounds_);
+      return settled_bounds(ak_, amodel_.objects[i].csg, stats, use_sbounds_);
     } catch (const CGAL::Uncertain_conversion_exception&) {
       ++fallbacks_;
       exact_only_[i] = 1;
       need_exact(i);
       // Only the sweep reads it: the root box, EK's enclosed in AK's numbers.
       Protector protect;
-      return typename Collision_checker<AK>::Bounds(1, enclose(esettled_[i][0]));
+      return typename S_bounds<AK>::Bounds(1, enclose(esettled_[i][0]));
     }
   }
 
@@ -354,7 +354,7 @@ private:
     need_model(i);
     std::call_once(settled_[i], [&] {
       Check_stats ignored;
-      esettled_[i] = Collision_checker<EK>::settle_one(ek_, emodel_.objects[i].csg, ignored, use_sbounds_);
+      esettled_[i] = settled_bounds(ek_, emodel_.objects[i].csg, ignored, use_sbounds_);
     });
   }
 

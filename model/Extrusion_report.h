@@ -3,8 +3,7 @@
 #ifndef CLASH4D_MODEL_EXTRUSION_REPORT_H
 #define CLASH4D_MODEL_EXTRUSION_REPORT_H
 
-#include "geometry/Hyperplane4.h"
-#include "model/Scene_model.h"
+#include "model/Extrusion.h"
 #include <nlohmann/json.hpp>
 
 namespace clash4d {
@@ -49,7 +48,7 @@ private:
     if (n.op == Csg_node::Op::Primitive) {
       const Primitive<FT>& p = m.primitives[n.primitive];
       json hs = json::array();
-      for (const auto& plane : p.planes) hs.push_back(halfspace(extrude(plane, v, o)));
+      for (const auto& h : Extrusion<K>::primitive_planes(p, v, o)) hs.push_back(halfspace(h));
       return {{"primitive", p.path}, {"halfspaces", hs}};
     }
     const char* op = n.op == Csg_node::Op::Union ? "union" : n.op == Csg_node::Op::Intersection ? "intersection" : "difference";

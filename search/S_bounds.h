@@ -7,6 +7,8 @@
 #include "geometry/Box.h"
 #include "model/Csg_model.h"
 #include "model/Scene_model.h"
+#include "search/Check_stats.h"
+#include <chrono>
 #include <vector>
 
 namespace clash4d {
@@ -17,6 +19,10 @@ public:
   using FT = typename K::FT;
   using Box3 = Box<FT, 3>;
   using Bounds = std::vector<Box3>;   // one per CSG node
+
+  // Passes of the Up/Down rules at most; they converge in a linear number
+  // of passes (§5, footnote 7), and stopping early only costs pruning.
+  static constexpr int max_passes = 16;
 
   explicit S_bounds(const K& k) : k_(k) {}
 
@@ -155,6 +161,31 @@ private:
     return changed;
   }
 };
+
+// The 3D S-bounds of every object on its own (§4.3.1), settled once and
+// shared by every pair: §6's per-partner arrays start from these, and each
+// pair narrows its own copies. Without S-bounds (--no-sbounds), the leaves'
+// boxes as they are.
+template <class K>
+typename S_bounds<K>::Bounds settled_bounds(const K& k, const Csg_model<typename K::FT>& csg, Check_stats& stats,
+                                            bool use_sbounds)
+{
+  S_bounds<K> sb(k);
+  typename S_bounds<K>::Bounds b = sb.initial(csg);
+  stats.sbound_passes += use_sbounds ? sb.settle(csg, b, S_bounds<K>::max_passes) : 0;
+  return b;
+}
+
+template <class K>
+std::vector<typename S_bounds<K>::Bounds> settled_bounds_all(const K& k, const Scene_model<K>& model, Check_stats& stats,
+                                                             bool use_sbounds)
+{
+  auto start = std::chrono::steady_clock::now();
+  std::vector<typename S_bounds<K>::Bounds> settled;
+  for (const auto& o : model.objects) settled.push_back(settled_bounds(k, o.csg, stats, use_sbounds));
+  stats.seconds_sbounds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return settled;
+}
 
 } // namespace clash4d
 

@@ -63,7 +63,7 @@ BOOST_AUTO_TEST_CASE(spec_example_collides_with_a_checkable_witness)
   BOOST_TEST((ram_lo < x && x < ram_lo + Rational(1)));
   // Exact strings are in lowest terms: no "2/4".
   for (const auto& s : p) BOOST_TEST(to_string(q(s)) == s.get<std::string>());
-  // Snapped to a dyadic grid (Collision_checker::snap): denominators are
+  // Snapped to a dyadic grid (Witness::snap): denominators are
   // powers of two.
   for (const Rational& c : {x, y, z, t}) BOOST_TEST(mpz_popcount(mpq_denref(c.mpq())) == 1u, to_string(c));
 }

@@ -163,7 +163,7 @@ BOOST_AUTO_TEST_CASE(contact_families_match_rational)
 }
 
 // General position: intervals certify every decision, and the interval run
-// of a colliding pair makes the witness itself (Collision_checker::snap):
+// of a colliding pair makes the witness itself (Witness::snap):
 // nothing is run in rationals.
 BOOST_AUTO_TEST_CASE(no_fallback_in_general_position)
 {
@@ -272,7 +272,7 @@ BOOST_AUTO_TEST_CASE(group_lines_run_along_the_motion)
   }
 }
 
-// Region faces on the grid (Collision_checker::on_grid) round with
+// Region faces on the grid (Span_region::on_grid) round with
 // floor_to_grid, which every kernel must compute alike: the largest multiple
 // of 2^-bits at or below x.
 BOOST_AUTO_TEST_CASE(floor_to_grid_agrees_across_kernels)
@@ -293,7 +293,7 @@ BOOST_AUTO_TEST_CASE(floor_to_grid_agrees_across_kernels)
                     CGAL::Uncertain_conversion_exception);
 }
 
-// The witness's grid (Collision_checker::snap): the least k with 2^-k <= x,
+// The witness's grid (Witness::snap): the least k with 2^-k <= x,
 // and rounding to the nearest multiple of 2^-k, alike in every kernel; an
 // interval between two powers of two cannot say which.
 BOOST_AUTO_TEST_CASE(snap_grid_agrees_across_kernels)

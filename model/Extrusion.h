@@ -1,0 +1,182 @@
+// The extrusion of objects into space-time (§2.1-§3), in one place: every
+// plane of a primitive extruded by equation (4) in a chosen frame, and the
+// CSG tree emitted as a formula over those planes in negation normal form.
+// `check` searches a pair's extrusion on one constant-velocity sub-span
+// (pair_table, pair_formula); the skeleton needs the whole extrusion of each
+// object, every motion segment within its time slab (§3, whole); `extrude`
+// prints the planes of each primitive (primitive_planes).
+#ifndef CLASH4D_MODEL_EXTRUSION_H
+#define CLASH4D_MODEL_EXTRUSION_H
+
+#include "geometry/Box.h"
+#include "geometry/Hyperplane4.h"
+#include "model/Formula.h"
+#include "model/Motion_groups.h"
+#include "model/Scene_model.h"
+#include <vector>
+
+namespace clash4d {
+
+// One object on one constant-velocity sub-span: D(t) = v t + o there, with
+// its S-bounds per CSG node (§4.3; an empty bound prunes the node).
+template <class FT>
+struct Moving_object {
+  const Object_model<FT>* object = nullptr;
+  Vector3<FT> v, o;
+  std::vector<Box<FT, 3>> beta;
+};
+
+template <class K>
+class Extrusion {
+public:
+  using FT = typename K::FT;
+  using H = Hyperplane4<FT>;
+  using Moving = Moving_object<FT>;
+
+  // Equation (4) for every plane of a primitive moving with D(t) = v t + o.
+  static std::vector<H> primitive_planes(const Primitive<FT>& p, const Vector3<FT>& v, const Vector3<FT>& o)
+  {
+    std::vector<H> planes;
+    for (const auto& plane : p.planes) planes.push_back(extrude(plane, v, o));
+    return planes;
+  }
+
+  // A's planes then B's (object_planes), groups 0 and 1, in the frame
+  // x' = x - shear t; per axis, the frame is A's own (frame_of_a) or B's
+  // when `own_frames`, otherwise neither's.
+  static std::vector<H> pair_table(const Moving& A, const Moving& B, const Vector3<FT>& shear,
+                                   const std::array<bool, 3>& frame_of_a, bool own_frames, Motion_groups<FT>& groups)
+  {
+    std::array<bool, 3> own_a{}, own_b{};
+    for (int q = 0; q < 3 && own_frames; ++q) own_a[q] = frame_of_a[q], own_b[q] = !frame_of_a[q];
+    std::vector<H> table;
+    groups.velocity.push_back(object_planes(A, shear, own_a, table, &groups));
+    groups.of.assign(table.size(), 0);
+    groups.velocity.push_back(object_planes(B, shear, own_b, table, &groups));
+    groups.of.resize(table.size(), 1);
+    groups.still = {own_a, own_b};
+    return table;
+  }
+
+  // The formula A and B over pair_table's entries.
+  static Formula pair_formula(const Moving& A, const Moving& B)
+  {
+    Formula::Builder builder;
+    std::size_t mark = builder.open();
+    std::size_t next = 0;
+    emit(A, 0, false, builder, next);
+    next = 0;
+    for (const auto& p : A.object->csg.primitives) next += 2 * p.planes.size();   // B's first plane
+    emit(B, 0, false, builder, next);
+    builder.close(Formula::Op::And, mark);
+    return builder.finish();
+  }
+
+  // Object i over all time within [tL, tH]: the union over its motion
+  // segments of the segment's tree within the segment's time slab (§3), its
+  // planes appended to `table`, its formula to `b`.
+  static void whole(const K& k, const Scene_model<K>& model, int i, const std::vector<Box<FT, 3>>& beta, const Vector3<FT>& shear,
+                    std::vector<H>& table, Formula::Builder& b)
+  {
+    const Object_model<FT>& obj = model.objects[i];
+    const Motion_path<FT>& m = obj.motion;
+    std::size_t mark = b.open();
+    for (std::size_t s = 0; s < m.velocity.size(); ++s) {
+      if (s > 0 && !k.less(m.times[s - 1], model.t_hi)) continue;
+      if (s < m.times.size() && !k.less(model.t_lo, m.times[s])) continue;
+      Moving seg{&obj, m.velocity[s], m.offset[s], beta};
+      std::size_t seg_mark = b.open();
+      if (s > 0) slab_leaf(time_at_least(m.times[s - 1]), table, b);
+      if (s < m.times.size()) slab_leaf(time_at_most(m.times[s]), table, b);
+      std::size_t next = table.size();
+      object_planes(seg, shear, {}, table);
+      emit(seg, 0, false, b, next);
+      b.close(Formula::Op::And, seg_mark);
+    }
+    b.close(Formula::Op::Or, mark);
+  }
+
+  // A leaf h (and its complement after it) appended to the table.
+  static void slab_leaf(const H& h, std::vector<H>& table, Formula::Builder& b)
+  {
+    b.leaf(static_cast<std::uint32_t>(table.size()));
+    table.push_back(h);
+    table.push_back(h.complement());
+  }
+
+private:
+  // Every plane of every primitive, extruded (eq. 4) and sheared, followed by
+  // its complement: table[2i] is plane i, table[2i + 1] its complement.
+  // In the frame x' = x - w t the object moves with v - w (eq. 4 with that
+  // velocity). On an axis measured in the object's own frame (own[q]) that
+  // is a written zero, not v - v: an interval run then gets a point zero
+  // where the exact run has one, instead of an uncertain sign.
+  // Returns the velocity v - w. groups: where to list the corners each entry
+  // passes through (model/Motion_groups.h).
+  static Vector3<FT> object_planes(const Moving& m, const Vector3<FT>& shear, const std::array<bool, 3>& own,
+                                   std::vector<H>& table, Motion_groups<FT>* groups = nullptr)
+  {
+    Vector3<FT> relative;
+    for (int q = 0; q < 3; ++q) relative[q] = own[q] ? FT(0) : m.v[q] - shear[q];
+    for (const auto& p : m.object->csg.primitives) {
+      std::vector<std::vector<int>> through(p.planes.size());
+      if (groups) {
+        for (const auto& corner : p.corners) {
+          for (int plane : corner) through[plane].push_back(groups->corner_count);
+          ++groups->corner_count;
+        }
+        groups->corners.resize(table.size());
+      }
+      for (std::size_t i = 0; i < p.planes.size(); ++i) {
+        table.push_back(extrude(p.planes[i], relative, m.o));
+        table.push_back(table.back().complement());
+        if (groups) groups->corners.insert(groups->corners.end(), 2, through[i]);
+      }
+    }
+    return relative;
+  }
+
+  // The object's tree in negation normal form; pruned nodes (empty S-bound)
+  // are the null set. `next` walks the table in primitive order.
+  static void emit(const Moving& m, int node, bool negated, Formula::Builder& b, std::size_t& next)
+  {
+    const Csg_model<FT>& csg = m.object->csg;
+    const Csg_node& n = csg.nodes[node];
+    if (m.beta[node].empty) {
+      skip_planes(csg, node, next);
+      b.constant(negated);
+      return;
+    }
+    std::size_t mark = b.open();
+    switch (n.op) {
+      case Csg_node::Op::Primitive:
+        for (std::size_t i = 0; i < csg.primitives[n.primitive].planes.size(); ++i, next += 2)
+          b.leaf(static_cast<std::uint32_t>(negated ? next + 1 : next));
+        b.close(negated ? Formula::Op::Or : Formula::Op::And, mark);
+        return;
+      case Csg_node::Op::Union:
+      case Csg_node::Op::Intersection: {
+        for (int c : n.children) emit(m, c, negated, b, next);
+        bool conj = (n.op == Csg_node::Op::Intersection) != negated;
+        b.close(conj ? Formula::Op::And : Formula::Op::Or, mark);
+        return;
+      }
+      case Csg_node::Op::Difference:
+        // L - R1 - ... = L and not R1 and ...; its negation is not L or R1 or ...
+        for (std::size_t i = 0; i < n.children.size(); ++i) emit(m, n.children[i], i == 0 ? negated : !negated, b, next);
+        b.close(negated ? Formula::Op::Or : Formula::Op::And, mark);
+        return;
+    }
+  }
+
+  static void skip_planes(const Csg_model<FT>& csg, int node, std::size_t& next)
+  {
+    const Csg_node& n = csg.nodes[node];
+    if (n.op == Csg_node::Op::Primitive) { next += 2 * csg.primitives[n.primitive].planes.size(); return; }
+    for (int c : n.children) skip_planes(csg, c, next);
+  }
+};
+
+} // namespace clash4d
+
+#endif

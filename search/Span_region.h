@@ -1,0 +1,130 @@
+// The region of space-time one pair is searched in on one constant-velocity
+// sub-span: the 4D S-bounds of §4.3.2 (3D Up/Down passes in each object and
+// Appendix B's closed form at the root, repeated until nothing shrinks),
+// then Appendix B's optimal fitting of one box in a sheared frame, with its
+// faces moved out to the search's dyadic grid. §4.1's original bound (no
+// S-bounds) is kept for comparison (--no-sbounds).
+#ifndef CLASH4D_SEARCH_SPAN_REGION_H
+#define CLASH4D_SEARCH_SPAN_REGION_H
+
+#include "model/Extrusion.h"
+#include "scene/Input_error.h"
+#include "search/Check_stats.h"
+#include "search/S_bounds.h"
+
+namespace clash4d {
+
+template <class K>
+class Span_region {
+public:
+  using FT = typename K::FT;
+  using Box3 = Box<FT, 3>;
+  using Box4 = Box<FT, 4>;
+  using Moving = Moving_object<FT>;
+
+  Span_region(const K& k, Check_stats& stats) : k_(k), sb_(k), stats_(stats) {}
+
+  // §4.3.2: narrows A's and B's bounds and [tl, th]; false when the pair
+  // cannot meet on the sub-span. The passes stop when no bound moved by a
+  // grid step (Kernel_base::same_on_grid), a decision every kernel
+  // certifies alike.
+  bool four_d_bounds(Moving& A, Moving& B, FT& tl, FT& th)
+  {
+    for (int pass = 0; pass < S_bounds<K>::max_passes; ++pass) {
+      ++stats_.sbound_passes;
+      Box3 ra = A.beta[0], rb = B.beta[0];
+      FT l0 = tl, h0 = th;
+      typename S_bounds<K>::Moving_box ma{&A.beta[0], &A.v, &A.o}, mb{&B.beta[0], &B.v, &B.o};
+      if (!sb_.meet_moving(ma, mb, tl, th)) return false;
+      sb_.settle(A.object->csg, A.beta, S_bounds<K>::max_passes);
+      sb_.settle(B.object->csg, B.beta, S_bounds<K>::max_passes);
+      if (A.beta[0].empty || B.beta[0].empty) return false;
+      if (same_on_grid(k_, ra, A.beta[0]) && same_on_grid(k_, rb, B.beta[0]) && k_.same_on_grid(l0, tl) &&
+          k_.same_on_grid(h0, th))
+        break;
+    }
+    return true;
+  }
+
+  // Appendix B, "optimal fitting": per axis, measure q in the frame of the
+  // object whose bound is narrower there (q' = q - w t with w its velocity),
+  // the widths compared on the grid (Kernel_base::less_on_grid). Sets the
+  // shear w per axis and whose frame it is (frame_of_a).
+  Box4 fitted(const Moving& A, const Moving& B, const FT& tl, const FT& th, Vector3<FT>& shear,
+              std::array<bool, 3>& frame_of_a) const
+  {
+    Box4 region;
+    const char* axis = "xyz";
+    for (int q = 0; q < 3; ++q) {
+      const Box3 &ba = A.beta[0], &bb = B.beta[0];
+      bool fa = ba.has_lo[q] && ba.has_hi[q], fb = bb.has_lo[q] && bb.has_hi[q];
+      if (!fa && !fb)
+        throw Input_error("", std::string("both objects are unbounded along ") + axis[q] +
+                              ": this version needs one of each pair bounded", CLASH4D_EXIT_LIMIT);
+      bool use_a = fa && (!fb || !k_.less_on_grid(bb.hi[q] - bb.lo[q], ba.hi[q] - ba.lo[q]));
+      frame_of_a[q] = use_a;
+      const Moving& m = use_a ? A : B;
+      const Box3& bm = use_a ? ba : bb;
+      shear[q] = m.v[q];
+      region.set(q, bm.lo[q] + m.o[q], bm.hi[q] + m.o[q]);
+    }
+    region.set(3, tl, th);
+    return region;
+  }
+
+  // §4.1's original bound: each object's box at the span's ends (its swept
+  // box under one velocity), intersected, with the span's times; no shear.
+  Box4 original(const Moving& A, const Moving& B, const FT& lo, const FT& hi, Vector3<FT>& shear) const
+  {
+    Box3 sweep[2];
+    int i = 0;
+    for (const Moving* m : {&A, &B}) {
+      Box3 at_lo = m->beta[0], at_hi = m->beta[0];
+      for (int q = 0; q < 3; ++q) {
+        FT dlo = m->v[q] * lo + m->o[q], dhi = m->v[q] * hi + m->o[q];
+        at_lo.lo[q] += dlo; at_lo.hi[q] += dlo;
+        at_hi.lo[q] += dhi; at_hi.hi[q] += dhi;
+      }
+      sweep[i++] = join(at_lo, at_hi);
+    }
+    Box3 both = meet(sweep[0], sweep[1]);
+    Box4 region;
+    for (int q = 0; q < 3; ++q) {
+      if (!both.has_lo[q] || !both.has_hi[q])
+        throw Input_error("", "the original bounding procedure needs bounded objects", CLASH4D_EXIT_LIMIT);
+      region.set(q, both.lo[q], both.hi[q]);
+      shear[q] = FT(0);
+    }
+    region.set(3, lo, hi);
+    return region;
+  }
+
+  // Region faces moved out to the next multiples of 2^-grid_bits beyond the
+  // S-bound region, which stays a bound. S-bounds are vertex coordinates, so
+  // their faces pass through the objects' vertex lines: a degeneracy of the
+  // bound, not of the scene, which interval arithmetic cannot certify. Grid
+  // values are exact in every kernel, and so are the bisections of §4.1.
+  // Time stays within the sub-span [lo, hi] (the formula has no time slab).
+  // The rounding jumps at half-grid points, not at the grid points that
+  // integer and short binary bounds sit on, so an interval enclosing such a
+  // bound still rounds to one grid point; the margin is at least half a step.
+  Box4 on_grid(const Box4& region, const FT& lo, const FT& hi) const
+  {
+    const FT step = k_.power_of_two(-K::grid_bits);
+    auto below = [&](const FT& x) { return k_.grid_point(x) - step; };
+    Box4 out = region;
+    for (int q = 0; q < 4; ++q) out.set(q, below(region.lo[q]), -below(-region.hi[q]));
+    out.lo[3] = Number_ops<FT>::upper(out.lo[3], lo);
+    out.hi[3] = Number_ops<FT>::lower(out.hi[3], hi);
+    return out;
+  }
+
+private:
+  const K& k_;
+  S_bounds<K> sb_;
+  Check_stats& stats_;
+};
+
+} // namespace clash4d
+
+#endif

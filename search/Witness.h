@@ -1,0 +1,117 @@
+// The witness of a collision (regularised-semantics item 3): the point
+// generate-and-test found inside the formula's cell, in world coordinates,
+// moved off every plane of the two objects (planes of primitives the
+// S-bounds pruned were not in the search) and rounded to a short dyadic
+// point (snap), so that anyone can check it by evaluating half-spaces.
+#ifndef CLASH4D_SEARCH_WITNESS_H
+#define CLASH4D_SEARCH_WITNESS_H
+
+#include "model/Extrusion.h"
+#include <algorithm>
+#include <vector>
+
+namespace clash4d {
+
+template <class K>
+class Witness {
+public:
+  using FT = typename K::FT;
+  using H = Hyperplane4<FT>;
+  using V4 = Vector4<FT>;
+  using Moving = Moving_object<FT>;
+
+  explicit Witness(const K& k) : k_(k) {}
+
+  // p, found in the frame x' = x - shear t on the sub-span [lo, hi].
+  V4 make(V4 p, const Vector3<FT>& shear, const Moving& A, const Moving& B, const FT& lo, const FT& hi) const
+  {
+    for (int q = 0; q < 3; ++q) p[q] += shear[q] * p[3];
+    std::vector<H> world;
+    for (const Moving* m : {&A, &B})
+      for (const auto& prim : m->object->csg.primitives)
+        for (const H& h : Extrusion<K>::primitive_planes(prim, m->v, m->o)) world.push_back(h);
+    world.push_back(time_at_least(lo));
+    world.push_back(time_at_most(hi));
+    std::vector<FT> values = values_at(p, world);
+    if (make_generic(p, world, values)) values = values_at(p, world);
+    return snap(p, world, values);
+  }
+
+private:
+  const K& k_;
+
+  static std::vector<FT> values_at(const V4& p, const std::vector<H>& planes)
+  {
+    std::vector<FT> values;
+    values.reserve(planes.size());
+    for (const H& h : planes) values.push_back(h.value(p));
+    return values;
+  }
+
+  // Largest step (halved) along d from p that crosses no hyperplane not
+  // already through p; values[i] is planes[i] at p.
+  FT safe_step(const V4& d, const std::vector<H>& planes, const std::vector<FT>& values) const
+  {
+    bool any = false;
+    FT best(1);
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+      FT nd = dot(planes[i].n, d);
+      if (k_.sign(values[i]) == CGAL::ZERO || k_.sign(nd) == CGAL::ZERO) continue;
+      FT s = Number_ops<FT>::magnitude(values[i]) / Number_ops<FT>::magnitude(nd);
+      best = any ? Number_ops<FT>::lower(best, s) : s;
+      any = true;
+    }
+    return any ? best / FT(2) : FT(1);
+  }
+
+  // Steps p off the planes through it; true when it moved.
+  bool make_generic(V4& p, const std::vector<H>& planes, const std::vector<FT>& values) const
+  {
+    std::vector<const H*> through;
+    for (std::size_t i = 0; i < planes.size(); ++i)
+      if (k_.sign(values[i]) == CGAL::ZERO) through.push_back(&planes[i]);
+    if (through.empty()) return false;
+    // d = (1, j, j^2, j^3) is orthogonal to a given normal for at most three
+    // values of j, so some j <= 3 * |through| + 1 avoids all of them.
+    for (int j = 1;; ++j) {
+      V4 d{FT(1), FT(j), FT(j * j), FT(j * j * j)};
+      bool ok = true;
+      for (const H* h : through) ok = ok && k_.dot_sign(h->n, d) != CGAL::ZERO;
+      if (ok) {
+        p = point_along(p, safe_step(d, planes, values), d);
+        return true;
+      }
+      if (j > 3 * static_cast<int>(through.size()) + 1) return false;   // only with a tolerance
+    }
+  }
+
+  // p rounded to the coarsest grid 2^-bits that keeps it where it is. No
+  // plane n.x + c changes sign within max-norm distance room of p, where
+  // room = min |h(p)| / (4 max |n_j|) (as |h(q) - h(p)| <= |n|_1 |q - p|);
+  // with 2^-bits <= room, rounding each coordinate to the nearest multiple
+  // of 2^-bits moves p by at most room / 2, so every |h| keeps at least half
+  // its value. The result is a function of the exact p alone: a kernel that
+  // only encloses p (intervals) finds the same dyadic point or fails the
+  // filter. And users read 1/2 rather than 1999999999/4000000000.
+  // bits is taken for 13/16 of the room: the search makes distances that
+  // are powers of two (grid faces, halved steps), and an enclosure of an
+  // exact power of two could not say which side of it the room is on.
+  V4 snap(const V4& p, const std::vector<H>& planes, const std::vector<FT>& values) const
+  {
+    FT least = Number_ops<FT>::magnitude(values[0]), widest = Number_ops<FT>::magnitude(planes[0].n[0]);
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+      if (i > 0) least = Number_ops<FT>::lower(least, Number_ops<FT>::magnitude(values[i]));
+      for (const FT& n : planes[i].n) widest = Number_ops<FT>::upper(widest, Number_ops<FT>::magnitude(n));
+    }
+    FT room = FT(13) * least / (FT(64) * widest);
+    if (k_.sign(room) != CGAL::POSITIVE) return p;   // only with a tolerance: not generic
+    int bits = std::max(0, k_.grid_exponent(room));
+    V4 out;
+    for (int q = 0; q < 4; ++q) out[q] = k_.round_to_grid(p[q], bits);
+    return out;
+  }
+};
+
+} // namespace clash4d
+
+#endif
