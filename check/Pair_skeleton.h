@@ -35,7 +35,7 @@ public:
     Span_region<K> bounds(k_, stats_);
     for (const auto& span : model_.sub_spans({a, b})) {
       ++stats_.sub_spans;
-      Moving_object<FT> A = moving(a, span), B = moving(b, span);
+      Moving_object<FT> A = moving_on(model_, a, span, settled_[a]), B = moving_on(model_, b, span, settled_[b]);
       FT tl = span.lo, th = span.hi;
       if (!bounds.four_d_bounds(A, B, tl, th)) { ++stats_.sub_spans_pruned; continue; }
       Vector3<FT> shear;
@@ -65,13 +65,6 @@ private:
   const Scene_model<K>& model_;
   const std::vector<Bounds>& settled_;
   Check_stats& stats_;
-
-  Moving_object<FT> moving(int i, const Time_span<FT>& span) const
-  {
-    const Object_model<FT>& obj = model_.objects[i];
-    std::size_t seg = model_.segment_on(i, span);
-    return {&obj, obj.motion.velocity[seg], obj.motion.offset[seg], settled_[i]};
-  }
 
   // Pieces found in neighbouring regions (or split at cuts) are joined when
   // they lie on one line and overlap or meet end to end.

@@ -8,7 +8,7 @@
 namespace clash4d {
 
 // The filtered exact kernel: intervals first, rationals where they fail.
-using Filtered_exact = Filtered_runner<Interval_kernel, Rational_kernel, CGAL::Protect_FPU_rounding<true>>;
+using Filtered_exact = Filtered_runner<Interval_kernel, Rational_kernel>;
 
 Check_answer check_exact(const Scene& scene, const Check_options& options)
 {

@@ -6,7 +6,6 @@
 #include "geometry/Hyperplane4.h"
 #include "geometry/Kernel_base.h"
 #include "geometry/Kernel_concept.h"
-#include "exact/Interval_kernel.h"
 #include "numbers/Rational.h"
 #include <string>
 
@@ -14,8 +13,6 @@ namespace clash4d {
 
 class Rational_kernel : public Kernel_base<Rational_kernel, Rational> {
 public:
-  // Where predicates that only decide may be tried first (filtered_has_inside).
-  using Filter = Interval_kernel;
   static constexpr const char* name() { return "rational"; }
   static constexpr bool reads_exact_constructions = true;   // the same numbers, not computed again (model/Model_builder.h)
   static constexpr bool is_exact = true;

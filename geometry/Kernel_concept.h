@@ -20,8 +20,9 @@
 //                                   that cannot certify it throws
 //                                   CGAL::Uncertain_conversion_exception
 //                                   (CGAL's Uncertain<> discipline: the
-//                                   conversion to a certain value fails),
-//                                   and only the filter policy catches it
+//                                   conversion to a certain value fails);
+//                                   only a search policy in exact/ catches
+//                                   it (search/No_filter.h)
 //   k.from_rational(q)              a scene number in FT (exact, rounded,
 //                                   or enclosed)
 //   k.floor_to_grid(x, bits)        x rounded down to a multiple of 2^-bits
@@ -38,8 +39,6 @@
 // Optional:
 //   k.to_rational(x)                exact kernels and double: the value as
 //                                   a rational (answers are printed from it)
-//   typename K::Filter              a kernel whose predicates may be tried
-//                                   first where only a verdict is wanted
 //   typename K::Protector           RAII guard the kernel's arithmetic needs
 //                                   (the interval kernel's rounding mode)
 #ifndef CLASH4D_GEOMETRY_KERNEL_CONCEPT_H

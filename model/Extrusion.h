@@ -26,6 +26,16 @@ struct Moving_object {
   std::vector<Box<FT, 3>> beta;
 };
 
+// Object i of the model on a sub-span, with the bounds beta.
+template <class K>
+Moving_object<typename K::FT> moving_on(const Scene_model<K>& model, int i, const Time_span<typename K::FT>& span,
+                                        const std::vector<Box<typename K::FT, 3>>& beta)
+{
+  const auto& obj = model.objects[i];
+  std::size_t seg = model.segment_on(i, span);
+  return {&obj, obj.motion.velocity[seg], obj.motion.offset[seg], beta};
+}
+
 template <class K>
 class Extrusion {
 public:
@@ -56,6 +66,20 @@ public:
     groups.of.resize(table.size(), 1);
     groups.still = {own_a, own_b};
     return table;
+  }
+
+  // pair_table of objects a and b on their sub-span `index` (time order),
+  // in the frame Appendix B's fitting chose (frame_of_a) or, without
+  // S-bounds, the world frame: the table another kernel's run searched.
+  static std::vector<H> span_table(const Scene_model<K>& model, const std::vector<std::vector<Box<FT, 3>>>& settled,
+                                   int a, int b, std::size_t index, const std::array<bool, 3>& frame_of_a,
+                                   bool fitted, Motion_groups<FT>& groups)
+  {
+    const Time_span<FT> span = model.sub_spans({a, b}).at(index);
+    Moving A = moving_on(model, a, span, settled[a]), B = moving_on(model, b, span, settled[b]);
+    Vector3<FT> shear;
+    for (int q = 0; q < 3; ++q) shear[q] = !fitted ? FT(0) : frame_of_a[q] ? A.v[q] : B.v[q];
+    return pair_table(A, B, shear, frame_of_a, fitted, groups);
   }
 
   // The formula A and B over pair_table's entries.

@@ -38,7 +38,7 @@ struct Check_stats {
   // exact_witness_runs: colliding pairs rerun in rationals to construct
   // their witness, t* and contact point exactly; exact_witness_replays: those
   // of them whose rational run went straight to the interval run's point
-  // (search/Search_trail.h) instead of searching again; exact_regions and
+  // (exact/Search_trail.h) instead of searching again; exact_regions and
   // exact_lines: lines of generate-and-test with a sign the intervals could
   // not certify, each then decided in rationals alone (the run goes on), and
   // the regions they were in;

@@ -7,13 +7,12 @@
 #define CLASH4D_SEARCH_DIVIDE_AND_CONQUER_H
 
 #include "search/Generate_and_test.h"
-#include "search/Search_trail.h"
+#include "search/No_filter.h"
 #include <CGAL/Uncertain.h>
-#include <functional>
 
 namespace clash4d {
 
-template <class K>
+template <class K, class Policy = No_filter>
 class Divide_and_conquer {
 public:
   using FT = typename K::FT;
@@ -24,64 +23,53 @@ public:
   // costs time, never a wrong answer.
   static constexpr std::size_t max_depth = 8;
 
-  // trail: record where the first point inside is found, or go straight
-  // there (search/Search_trail.h); null for an ordinary search. groups: which
-  // table planes move together (model/Motion_groups.h), if known.
-  Divide_and_conquer(const K& k, const std::vector<H>& table, Check_stats& stats, Search_trail* trail = nullptr,
-                     const Motion_groups<FT>* groups = nullptr)
-    : k_(k), table_(table), stats_(stats), conquer_(k, table, stats, trail, groups), trail_(trail) {}
+  // Holds a reference into itself (its own policy when none is given).
+  Divide_and_conquer(const Divide_and_conquer&) = delete;
+  Divide_and_conquer& operator=(const Divide_and_conquer&) = delete;
+
+  // groups: which table planes move together (model/Motion_groups.h), if
+  // known. policy: search/No_filter.h.
+  Divide_and_conquer(const K& k, const std::vector<H>& table, Check_stats& stats,
+                     const Motion_groups<FT>* groups = nullptr, Policy* policy = nullptr)
+    : k_(k), table_(table), stats_(stats), policy_(policy ? *policy : own_policy_),
+      conquer_(k, table, stats, groups, &policy_) {}
 
   static std::size_t kappa(std::size_t d) { return 2 * d + 6; }
 
   // Depth-first, earliest times first; the goal says when to stop.
   void search(const Box4& region, const Formula& formula, Search_goal<FT>& goal, std::size_t depth = 0)
   {
-    if (!goal.can_improve(region.lo[3])) return;
+    if (!goal.can_improve(k_, region.lo[3])) return;
     stats_.visit(depth);
     Formula f = formula.simplified([&](std::uint32_t h) { return status(table_[h], region); });
     if (f.value() == Truth::False) return;
     if (f.value() == Truth::True) {
-      if (!on_trail_end(false)) return;
+      if (!policy_.decides_here(depth, false)) return;
       // Every interior point is inside; the earliest is on the face t = lo.
       Vector4<FT> c = centre(region), low = c;
       low[3] = region.lo[3];
-      goal.record(c, low);
-      note_found(goal, false);
+      goal.record(k_, c, low);
+      policy_.found_at(path_, false);
       return;
     }
     std::size_t leaves = f.leaf_count();
     if (leaves < kappa(depth) || depth >= max_depth) {
-      if (!on_trail_end(true)) return;
+      if (!policy_.decides_here(depth, true)) return;
       ++stats_.conquers;
       conquered_ = join(conquered_, region);
       stats_.leaves_at_conquer += leaves;
       stats_.max_leaves_at_conquer = std::max(stats_.max_leaves_at_conquer, leaves);
       conquer_.run(f, region, goal);
-      note_found(goal, true);
+      if (goal.found) policy_.found_at(path_, true);
       return;
     }
-    // Sixteen sub-regions, earliest in time first; a replay takes only the
-    // trail's child (the others were certified empty).
-    bool replay = trail_ && trail_->replaying();
-    if (replay && depth >= trail_->path.size()) { trail_->diverged = true; return; }
+    // Sixteen sub-regions, earliest in time first.
     for (int child = 0; child < 16 && !goal.done(); ++child) {
-      if (replay && child != trail_->path[depth]) continue;
+      if (!policy_.takes_child(depth, child)) continue;
       path_.push_back(child);
       search(sub_region(region, child), f, goal, depth + 1);
       path_.pop_back();
     }
-  }
-
-  // An approximate kernel's conquer that meets a line it cannot certify
-  // asks `exact` (Generate_and_test::Exact_lines) instead of failing the
-  // whole run; any-witness searches only.
-  void lines_undecided_with(typename Generate_and_test<K>::Exact_lines exact)
-  {
-    conquer_.lines_undecided_with(std::move(exact));
-  }
-  void proportional_undecided_with(typename Generate_and_test<K>::Exact_same exact)
-  {
-    conquer_.proportional_undecided_with(std::move(exact));
   }
 
   // Skeleton mode (§5): the full search, never stopping. Simplification is
@@ -108,8 +96,8 @@ public:
   // that it is everything, up to the boundary that regularisation ignores
   // (regularised-semantics.md, item 4). Strict (min > 0, max < 0) keeps the
   // planes that touch the box, which the skeleton needs.
-  // An approximate kernel that cannot tell keeps the leaf (Unknown); the run
-  // is then no longer the exact run's path, and a trail says so.
+  // An approximate kernel that cannot tell keeps the leaf (Unknown), and
+  // tells the policy.
   Truth status(const H& h, const Box4& b, bool strict = false) const
   {
     FT lo = h.c, hi = h.c;
@@ -143,34 +131,16 @@ private:
   const std::vector<H>& table_;
   Box4 conquered_ = Box4::nothing();
   Check_stats& stats_;
-  Generate_and_test<K> conquer_;
-  Search_trail* trail_;
+  Policy own_policy_;
+  Policy& policy_;
+  Generate_and_test<K, Policy> conquer_;
   std::vector<int> path_;                 // child indices from the root region to here
 
   bool decided(CGAL::Uncertain<bool> u) const
   {
     if (CGAL::is_certain(u)) return CGAL::get_certain(u);
-    if (trail_) trail_->approximate = true;
+    policy_.uncertain_simplification();
     return false;
-  }
-
-  // Replay: a region that decides (conquers or folds to inside) must be the
-  // trail's last, and decide the same way.
-  bool on_trail_end(bool conquers) const
-  {
-    if (!trail_ || !trail_->replaying()) return true;
-    if (path_.size() == trail_->path.size() && trail_->on_line == conquers) return true;
-    trail_->diverged = true;
-    return false;
-  }
-
-  // Record: the first point inside was found in this region.
-  void note_found(const Search_goal<FT>& goal, bool on_line)
-  {
-    if (!trail_ || !trail_->recording() || trail_->complete || !goal.found) return;
-    trail_->path = path_;
-    trail_->on_line = on_line;
-    trail_->complete = true;
   }
 
   static Vector4<FT> centre(const Box4& b)

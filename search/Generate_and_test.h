@@ -13,28 +13,14 @@
 #include "geometry/Hyperplane4.h"
 #include "model/Motion_groups.h"
 #include "search/Neighbourhood.h"
+#include "search/No_filter.h"
 #include "search/Search_goal.h"
-#include "search/Search_trail.h"
-#include <CGAL/Uncertain.h>
 #include <algorithm>
-#include <functional>
 #include <array>
 #include <optional>
-#include <type_traits>
 #include <vector>
 
 namespace clash4d {
-
-// K::Filter, the approximate kernel K's predicates can be tried in first
-// (void: none).
-template <class K, class = void>
-struct filter_of {
-  using type = void;
-};
-template <class K>
-struct filter_of<K, std::void_t<typename K::Filter>> {
-  using type = typename K::Filter;
-};
 
 // Which hyperplanes a conquer works with and how the formula's leaves and
 // the region's faces map to them: the same in every kernel when the
@@ -50,25 +36,22 @@ struct Plane_layout {
   std::vector<std::vector<int>> corners;                 // per plane: the corners it passes through, sorted
 };
 
-template <class K>
+template <class K, class Policy = No_filter>
 class Generate_and_test {
 public:
   using FT = typename K::FT;
   using H = Hyperplane4<FT>;
   using V = Vector4<FT>;
 
-  // For an approximate kernel: a line with a sign it cannot certify is
-  // decided by another kernel instead of failing the conquer. Exact_lines
-  // is called once per conquer, at its first such line, with the layout and
-  // the region, and returns the decider of that conquer's lines: true when
-  // the line holds a point inside; `known` says whether that is the exact
-  // run's own line (exact/Filtered_runner.h).
-  using Line_decider = std::function<bool(const Formula&, std::size_t, std::size_t, std::size_t, bool& known)>;
-  using Exact_lines = std::function<Line_decider(const Plane_layout&, const Box<FT, 4>&)>;
+  // Holds a reference into itself (its own policy when none is given).
+  Generate_and_test(const Generate_and_test&) = delete;
+  Generate_and_test& operator=(const Generate_and_test&) = delete;
 
-  Generate_and_test(const K& k, const std::vector<H>& table, Check_stats& stats, Search_trail* trail = nullptr,
-                    const Motion_groups<FT>* groups = nullptr)
-    : k_(k), table_(table), stats_(stats), trail_(trail), groups_(groups) {}
+  // groups: which table planes move together (model/Motion_groups.h), if
+  // known. policy: search/No_filter.h.
+  Generate_and_test(const K& k, const std::vector<H>& table, Check_stats& stats,
+                    const Motion_groups<FT>* groups = nullptr, Policy* policy = nullptr)
+    : k_(k), table_(table), stats_(stats), groups_(groups), policy_(policy ? *policy : own_policy_) {}
 
   // Records what it finds in the goal; in earliest mode it examines every
   // edge that could hold an earlier point (the least time over an edge is at
@@ -77,41 +60,31 @@ public:
   {
     collect_planes(f, region);
     std::size_t n = planes_.size();
-    if (trail_ && trail_->replaying() && trail_->line_known) {
-      // Every line before the trail's was certified to hold no point inside.
-      const auto& t = trail_->line;
-      if (t[2] < n) on_line(f, t[0], t[1], t[2], goal);
-      trail_->diverged = trail_->diverged || !goal.found;
+    if (const std::array<std::size_t, 3>* t = policy_.replay_line()) {
+      if ((*t)[2] < n) test_line(f, (*t)[0], (*t)[1], (*t)[2], goal);
+      policy_.replayed(goal.found);
       return;
     }
-    Line_decider exact;
     for (std::size_t i = 0; i < n && !goal.done(); ++i)
       for (std::size_t j = i + 1; j < n && !goal.done(); ++j)
-        for (std::size_t m = j + 1; m < n && !goal.done(); ++m) {
-          bool before = goal.found;
-          if (!exact_lines_ || goal.earliest) on_line(f, i, j, m, goal);
-          else try {
-            on_line(f, i, j, m, goal);
-          } catch (const CGAL::Uncertain_conversion_exception&) {
-            if (!exact) exact = exact_lines_(layout_, region);
-            ++stats_.exact_lines;
-            bool known = false;
-            if (exact(f, i, j, m, known)) {
-              // The point is for the exact run to construct.
-              goal.found = goal.improved = true;
-              goal.inside_known = false;
-              if (trail_) trail_->line_known = known;
-            }
-          }
-          if (trail_ && trail_->recording() && !before && goal.found) trail_->line = {i, j, m};
-        }
+        for (std::size_t m = j + 1; m < n && !goal.done(); ++m) policy_.test_line(*this, f, i, j, m, goal);
   }
 
-  // Any-witness searches only (earliest mode fails as the kernel does).
-  void lines_undecided_with(Exact_lines exact) { exact_lines_ = std::move(exact); }
+  // The line of planes i, j, m of this conquer: its edges' midpoints
+  // classified, what they hold recorded in the goal.
+  void test_line(const Formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<FT>& goal)
+  {
+    on_line(f, i, j, m, goal);
+  }
 
-  // Another kernel's conquer, rebuilt in this one (Exact_lines): the
-  // layout's planes made from this kernel's table and region.
+  // Which planes this conquer works with, and the region (for a policy
+  // deciding a line in another kernel); conquers() counts the conquers run.
+  const Plane_layout& layout() const { return layout_; }
+  const Box<FT, 4>& region() const { return *region_; }
+  std::size_t conquers() const { return conquers_; }
+
+  // Another kernel's conquer, rebuilt in this one: the layout's planes made
+  // from this kernel's table and region.
   void adopt(const Plane_layout& layout, const Box<FT, 4>& region)
   {
     layout_ = layout;
@@ -122,8 +95,8 @@ public:
   }
 
   // One line of an adopted conquer: whether it holds a point inside.
-  // Only the verdict is wanted, so a kernel with a filter (K::Filter)
-  // classifies the neighbourhoods of the line's points in it first.
+  // Only the verdict is wanted, so the policy may classify the
+  // neighbourhoods of the line's points another way first (verdict_first).
   bool line_has_inside(const Formula& f, std::size_t i, std::size_t j, std::size_t m)
   {
     Search_goal<FT> goal;
@@ -132,13 +105,6 @@ public:
     verdict_only_ = false;
     return goal.found;
   }
-
-  // For an approximate kernel: whether two planes are one (as
-  // geometry/Hyperplane4.h's proportional), when it cannot tell; each plane is a
-  // table entry or, when the entry is -1, face `face` of the region
-  // (exact/Filtered_runner.h asks the exact planes).
-  using Exact_same = std::function<int(long entry_h, int face_h, long entry_g, int face_g, const Box<FT, 4>& region)>;
-  void proportional_undecided_with(Exact_same exact) { exact_same_ = std::move(exact); }
 
   // Face 2 * a + upper of the region, inside <= 0: -x_a + lo <= 0 or x_a - hi <= 0.
   static H face(const Box<FT, 4>& region, int which)
@@ -167,13 +133,13 @@ private:
   const K& k_;
   const std::vector<H>& table_;
   Check_stats& stats_;
-  Search_trail* trail_;
   const Motion_groups<FT>* groups_;
+  Policy own_policy_;
+  Policy& policy_;
   std::vector<H> planes_;                 // distinct hyperplanes, region faces last
   Plane_layout layout_;                   // where they come from
   bool verdict_only_ = false;             // line_has_inside: no point will be made
   std::vector<FT> cuts_;                  // on_line's cuts of the current line
-  Exact_lines exact_lines_;
   std::vector<FT> at_base_, along_;       // per plane: value at the base point, slope along l
   std::vector<int> sign_;                 // per plane at the current test point: -1, 0, +1
   std::array<std::size_t, 3> line_{};     // the planes that meet in the current line
@@ -271,23 +237,18 @@ private:
     return along;
   }
 
-  Exact_same exact_same_;
-  const Box<FT, 4>* region_ = nullptr;    // the conquer's region, while planes are collected
+  const Box<FT, 4>* region_ = nullptr;    // the conquer's region
+  std::size_t conquers_ = 0;
 
-  // Whether h (table entry `entry`, or region face `face`) is plane p, for
-  // the exact callback when this kernel cannot tell; none: fail as it does.
+  // Whether h (table entry `entry`, or region face `face`) is plane p.
   int same_plane(const H& h, std::size_t p, long entry, int face) const
   {
-    if (!exact_same_) return proportional(k_, h, planes_[p]);
-    try {
-      return proportional(k_, h, planes_[p]);
-    } catch (const CGAL::Uncertain_conversion_exception&) {
-      return exact_same_(entry, face, layout_.entry[p], layout_.face[p], *region_);
-    }
+    return policy_.same_plane(k_, h, planes_[p], entry, face, layout_.entry[p], layout_.face[p], *region_);
   }
 
   void collect_planes(const Formula& f, const Box<FT, 4>& region)
   {
+    ++conquers_;
     region_ = &region;
     planes_.clear();
     layout_ = Plane_layout();
@@ -331,7 +292,7 @@ private:
     V base = base_point(planes_[i], planes_[j], planes_[m], l);
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return;
-    if (!goal.can_improve(Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
+    if (!goal.can_improve(k_, Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
     evaluate_planes(base, l, layout_.first_face);
     std::vector<FT>& cuts = cuts_;          // reused: a line's cuts, no allocation per line
     cuts.assign({s_lo, s_hi});
@@ -364,15 +325,17 @@ private:
     // Cheap rejection of the whole segment: false whatever the planes that
     // cut it (or contain it) do, hence false at every midpoint on it.
     if (f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) == Truth::False) return;
+    // Sorted by the number type's own order, which is an order for every
+    // kernel (a tolerance is not); cuts the kernel calls equal are skipped.
     std::sort(cuts.begin(), cuts.end());
     for (std::size_t q = 0; q + 1 < cuts.size() && !goal.done(); ++q) {
       if (k_.compare(cuts[q + 1], cuts[q]) == CGAL::ZERO) continue;
       // The edge's earlier end (time is linear along it).
-      const FT& s_early = l[3] < FT(0) ? cuts[q + 1] : cuts[q];
+      const FT& s_early = k_.sign(l[3]) == CGAL::NEGATIVE ? cuts[q + 1] : cuts[q];
       V early = point_along(base, s_early, l);
-      if (!goal.can_improve(early[3])) continue;
+      if (!goal.can_improve(k_, early[3])) continue;
       FT mid = (cuts[q] + cuts[q + 1]) / FT(2);
-      if (auto in = classify(f, base, l, mid)) goal.record(*in, early);
+      if (auto in = classify(f, base, l, mid)) goal.record(k_, *in, early);
     }
   }
 
@@ -548,12 +511,11 @@ private:
       for (std::size_t i = 0; i < through.size(); ++i) sign_[through[i]] = signs[i];
       return inside_region() && f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) == Truth::True;
     };
-    if constexpr (!std::is_void_v<typename filter_of<K>::type>)
-      if (verdict_only_)
-        if (auto found = filtered_has_inside<typename filter_of<K>::type>(l, normals, inside, stats_.cells_tested)) {
-          if (!*found) return std::nullopt;
-          return point_along(base, s, l);      // inside: a verdict, the point is not used
-        }
+    if (verdict_only_)
+      if (std::optional<bool> found = policy_.verdict_first(l, normals, inside, stats_.cells_tested)) {
+        if (!*found) return std::nullopt;
+        return point_along(base, s, l);      // inside: a verdict, the point is not used
+      }
     std::optional<V> d = hood.find_inside(l, normals, inside);
     stats_.cells_tested += hood.cells_tested();
     if (!d) return std::nullopt;

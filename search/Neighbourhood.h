@@ -217,33 +217,6 @@ private:
   }
 };
 
-// Whether some open cell around a point is inside, decided first in the
-// approximate kernel AK on enclosures of the exact normals and direction
-// (CGAL's Filtered_predicate pattern); nothing when AK cannot certify a
-// sign, and the caller then decides in its own kernel. For verdicts only:
-// the direction into the cell is AK's, not returned.
-template <class AK, class FT, class Inside>
-std::optional<bool> filtered_has_inside(const Vector4<FT>& l, const std::vector<Vector4<FT>>& normals, Inside inside,
-                                        std::size_t& tested)
-{
-  typename AK::Protector protect;
-  AK ak;
-  auto enclose = [&](const Vector4<FT>& v) {
-    return Vector4<typename AK::FT>{ak.from_rational(v[0]), ak.from_rational(v[1]), ak.from_rational(v[2]),
-                                    ak.from_rational(v[3])};
-  };
-  std::vector<Vector4<typename AK::FT>> near;
-  for (const auto& n : normals) near.push_back(enclose(n));
-  Neighbourhood<AK> hood(ak);
-  try {
-    bool found = hood.find_inside(enclose(l), near, inside).has_value();
-    tested += hood.cells_tested();
-    return found;
-  } catch (const CGAL::Uncertain_conversion_exception&) {
-    return std::nullopt;
-  }
-}
-
 } // namespace clash4d
 
 #endif

@@ -17,9 +17,6 @@ struct Search_goal {
   // A point of an open cell inside the formula: on none of the formula's
   // planes or the region's faces (the witness is made from it).
   Vector4<FT> inside{};
-  // False when the point was found by another kernel (a filtered run's
-  // region conquered exactly, search/Divide_and_conquer.h): found, not known.
-  bool inside_known = false;
   // Earliest mode: the least time seen so far over the closure of the
   // collision region (regularised-semantics item 5: a vertex of the
   // arrangement), and the point there.
@@ -33,18 +30,21 @@ struct Search_goal {
 
   bool done() const { return found && !earliest; }
   // Could a region or edge whose times start at t_from hold a better point?
-  bool can_improve(const FT& t_from) const
+  // Signs are kernel k's.
+  template <class K>
+  bool can_improve(const K& k, const FT& t_from) const
   {
     // Not strict: a pair that ties the best must still be found, so that the
     // first pair in order wins ties whatever order the threads ran in.
-    if (has_ceiling && ceiling < t_from) return false;
-    return !found || (earliest && t_from < t_star);
+    if (has_ceiling && k.less(ceiling, t_from)) return false;
+    return !found || (earliest && k.less(t_from, t_star));
   }
 
-  void record(const Vector4<FT>& in, const Vector4<FT>& lowest)
+  template <class K>
+  void record(const K& k, const Vector4<FT>& in, const Vector4<FT>& lowest)
   {
-    if (found && !(lowest[3] < t_star)) return;
-    found = improved = inside_known = true;
+    if (found && !k.less(lowest[3], t_star)) return;
+    found = improved = true;
     inside = in;
     t_star = lowest[3];
     contact = lowest;

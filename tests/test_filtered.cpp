@@ -341,11 +341,17 @@ BOOST_DATA_TEST_CASE(skeleton_matches_rational,
 // rational kernel folds to "empty here" (non-strict, regularised-semantics
 // item 4). The intervals of 1/3 straddle that 0, so the interval kernel keeps
 // the leaf (Unknown) instead of failing the filter, and marks its trail
-// approximate so a colliding pair is not replayed from it.
+// approximate (exact/Interval_filter.h) so a colliding pair is not replayed
+// from it.
 BOOST_AUTO_TEST_CASE(uncertain_simplification_keeps_the_leaf)
 {
+  // The search policy hears of every simplification left undecided.
+  struct Counting : No_filter {
+    int uncertain = 0;
+    void uncertain_simplification() { ++uncertain; }
+  };
   const Rational third(1, 3);
-  auto status_in = [&](const auto& k, Search_trail* trail) {
+  auto status_in = [&](const auto& k, Counting& policy) {
     using K = std::decay_t<decltype(k)>;
     using FT = typename K::FT;
     FT z(0), one(1), t = k.from_rational(third);
@@ -354,14 +360,14 @@ BOOST_AUTO_TEST_CASE(uncertain_simplification_keeps_the_leaf)
     box.set(0, t, one);
     for (int a = 1; a < 4; ++a) box.set(a, z, one);
     Check_stats stats;
-    return Divide_and_conquer<K>(k, table, stats, trail).status(table[0], box);
+    return Divide_and_conquer<K, Counting>(k, table, stats, nullptr, &policy).status(table[0], box);
   };
-  Search_trail exact_trail;
-  BOOST_TEST((status_in(Rational_kernel(), &exact_trail) == Truth::False));
-  BOOST_TEST(!exact_trail.approximate);
+  Counting exact_policy;
+  BOOST_TEST((status_in(Rational_kernel(), exact_policy) == Truth::False));
+  BOOST_TEST(exact_policy.uncertain == 0);
 
   CGAL::Protect_FPU_rounding<true> protect;
-  Search_trail trail;
-  BOOST_TEST((status_in(Interval_kernel(), &trail) == Truth::Unknown));
-  BOOST_TEST(trail.approximate);
+  Counting policy;
+  BOOST_TEST((status_in(Interval_kernel(), policy) == Truth::Unknown));
+  BOOST_TEST(policy.uncertain == 1);
 }

@@ -15,8 +15,8 @@
 // of the trail. Earlier spans hold no collision at all (the approximate run
 // proved it), so they are skipped. The exact run still checks that the
 // trail leads somewhere (`diverged` otherwise, and a full run follows).
-#ifndef CLASH4D_SEARCH_SEARCH_TRAIL_H
-#define CLASH4D_SEARCH_SEARCH_TRAIL_H
+#ifndef CLASH4D_EXACT_SEARCH_TRAIL_H
+#define CLASH4D_EXACT_SEARCH_TRAIL_H
 
 #include <array>
 #include <cstddef>

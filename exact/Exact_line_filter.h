@@ -1,0 +1,44 @@
+// The search policy of a rational conquer that decides single lines for an
+// interval run (exact/Exact_span.h): only verdicts are wanted there, so the
+// neighbourhood of a point is classified in intervals first, on enclosures
+// of the exact normals and direction (CGAL's Filtered_predicate pattern),
+// and in rationals only when the intervals cannot certify a sign.
+#ifndef CLASH4D_EXACT_EXACT_LINE_FILTER_H
+#define CLASH4D_EXACT_EXACT_LINE_FILTER_H
+
+#include "exact/Interval_kernel.h"
+#include "search/Neighbourhood.h"
+#include "search/No_filter.h"
+
+namespace clash4d {
+
+struct Exact_line_filter : No_filter {
+  // Whether some open cell around the point is inside; nothing when the
+  // intervals cannot tell. The direction into the cell is the intervals',
+  // so it is not returned.
+  template <class FT, class Inside>
+  std::optional<bool> verdict_first(const Vector4<FT>& l, const std::vector<Vector4<FT>>& normals, Inside& inside,
+                                    std::size_t& tested)
+  {
+    Interval_kernel::Protector protect;
+    Interval_kernel ak;
+    auto enclose = [&](const Vector4<FT>& v) {
+      return Vector4<Interval>{ak.from_rational(v[0]), ak.from_rational(v[1]), ak.from_rational(v[2]),
+                               ak.from_rational(v[3])};
+    };
+    std::vector<Vector4<Interval>> near;
+    for (const auto& n : normals) near.push_back(enclose(n));
+    Neighbourhood<Interval_kernel> hood(ak);
+    try {
+      bool found = hood.find_inside(enclose(l), near, inside).has_value();
+      tested += hood.cells_tested();
+      return found;
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      return std::nullopt;
+    }
+  }
+};
+
+} // namespace clash4d
+
+#endif

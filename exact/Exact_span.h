@@ -1,0 +1,147 @@
+// The rational side of one pair's interval run (exact/Interval_filter.h):
+// the plane table of the sub-span the interval run is in, made when it is
+// first needed, and the decisions the intervals could not certify, made on
+// the rational planes: whether two planes are one, and whether a line of a
+// conquer holds a point inside (the filter at the level of one line).
+#ifndef CLASH4D_EXACT_EXACT_SPAN_H
+#define CLASH4D_EXACT_EXACT_SPAN_H
+
+#include "exact/Exact_line_filter.h"
+#include "model/Extrusion.h"
+#include "search/Generate_and_test.h"
+#include <map>
+#include <memory>
+
+namespace clash4d {
+
+// Runner: exact/Filtered_runner.h, which owns the rational model.
+template <class Runner>
+class Exact_span {
+public:
+  using AK = typename Runner::Approximate_kernel;
+  using EK = typename Runner::Exact_kernel;
+  using AFT = typename AK::FT;
+  using EFT = typename EK::FT;
+
+  // A conquer's lines decided in rationals, on the same layout of planes.
+  class Lines {
+  public:
+    Lines(const EK& k, const std::vector<Hyperplane4<EFT>>& table, const Motion_groups<EFT>& groups, bool exact)
+      : lines_(k, table, stats_, &groups, &policy_), exact_(exact) {}
+    Generate_and_test<EK, Exact_line_filter>& conquer() { return lines_; }
+    // Whether line i, j, m holds a point inside; `known`: it is the line the
+    // rational run itself will find (the region was exact).
+    bool has_inside(const Formula& f, std::size_t i, std::size_t j, std::size_t m, bool& known)
+    {
+      CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+      known = exact_;
+      return lines_.line_has_inside(f, i, j, m);
+    }
+
+  private:
+    Check_stats stats_;                   // the interval run counted the lines
+    Exact_line_filter policy_;
+    Generate_and_test<EK, Exact_line_filter> lines_;
+    bool exact_;
+  };
+
+  explicit Exact_span(Runner& runner) : runner_(runner) {}
+
+  // Whether two planes are one, each a table entry or (entry -1) a face of
+  // the interval run's region; a face whose value the intervals only enclose
+  // cannot be compared exactly here, and the interval run fails as it would
+  // have.
+  int proportional(int a, int b, std::size_t s, const std::array<bool, 3>& frame, long eh, int fh, long eg, int fg,
+                   const Box<AFT, 4>& region)
+  {
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    enter(a, b, s, frame);
+    auto plane = [&](long e, int f) {
+      if (e >= 0) return table_.at(static_cast<std::size_t>(e));
+      std::optional<Rational> v = runner_.ak_.exact_value(f % 2 ? region.hi[f / 2] : region.lo[f / 2]);
+      if (!v) throw CGAL::Uncertain_conversion_exception("a region face the intervals only enclose");
+      Box<EFT, 4> exact;
+      exact.set(f / 2, runner_.ek_.from_rational(*v), runner_.ek_.from_rational(*v));
+      return Generate_and_test<EK>::face(exact, f);
+    };
+    if (eh < 0 || eg < 0) {
+      ++runner_.exact_planes_;
+      return clash4d::proportional(runner_.ek_, plane(eh, fh), plane(eg, fg));
+    }
+    auto [it, fresh] = answers_.try_emplace({eh, eg}, 0);
+    if (fresh) {
+      ++runner_.exact_planes_;
+      it->second = clash4d::proportional(runner_.ek_, plane(eh, fh), plane(eg, fg));
+    }
+    return it->second;
+  }
+
+  // The lines of one interval conquer (its layout and region) the intervals
+  // cannot decide. The rational region is the interval region widened to
+  // the doubles that enclose it, which contains the rational run's own
+  // region: the formula, simplified over the interval region with certified
+  // signs, holds over it, and over the sliver outside it may only add
+  // points inside, which send the pair to the rational run anyway. When the
+  // interval region is exact (grid faces: point intervals) it is the
+  // rational run's own, and a line found is the one that run will find.
+  std::shared_ptr<Lines> lines(int a, int b, std::size_t s, const std::array<bool, 3>& frame, const Plane_layout& layout,
+                               const Box<AFT, 4>& region)
+  {
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    enter(a, b, s, frame);
+    ++runner_.exact_regions_;
+    Box<EFT, 4> outer;
+    bool exact = true;
+    for (int q = 0; q < 4; ++q) {
+      auto lo = CGAL::to_interval(region.lo[q]), hi = CGAL::to_interval(region.hi[q]);
+      exact = exact && lo.first == lo.second && hi.first == hi.second;
+      outer.set(q, EFT(lo.first), EFT(hi.second));
+    }
+    auto conquer = std::make_shared<Lines>(runner_.ek_, lowest_terms(layout), groups_, exact);
+    conquer->conquer().adopt(layout, outer);
+    return conquer;
+  }
+
+private:
+  Runner& runner_;
+  std::size_t span_ = static_cast<std::size_t>(-1);
+  std::vector<Hyperplane4<EFT>> table_;
+  std::vector<Hyperplane4<EFT>> lowest_;        // table entries in lowest terms, as lines need them
+  std::vector<char> lowest_made_;
+  Motion_groups<EFT> groups_;
+  std::map<std::pair<long, long>, int> answers_;
+
+  void enter(int a, int b, std::size_t s, const std::array<bool, 3>& frame)
+  {
+    if (s == span_) return;
+    runner_.need_model(a);
+    runner_.need_model(b);
+    groups_ = Motion_groups<EFT>();
+    table_ = Extrusion<EK>::span_table(runner_.emodel_, runner_.esettled_, a, b, s, frame, runner_.use_sbounds_, groups_);
+    lowest_.clear();
+    answers_.clear();
+    span_ = s;
+  }
+
+  // Lines decide signs only (a point found is made again by the rational
+  // run), so they may use each plane in lowest terms: the arithmetic of a
+  // line then starts from coprime integers, not products of the scene's
+  // denominators.
+  const std::vector<Hyperplane4<EFT>>& lowest_terms(const Plane_layout& layout)
+  {
+    if (lowest_.empty()) {
+      lowest_ = table_;
+      lowest_made_.assign(table_.size(), 0);
+    }
+    for (long e : layout.entry)
+      if (e >= 0 && !lowest_made_[e]) {
+        lowest_[e] = runner_.ek_.in_lowest_terms(table_[e]);
+        lowest_made_[e] = 1;
+      }
+    return lowest_;
+  }
+};
+
+} // namespace clash4d
+
+#endif

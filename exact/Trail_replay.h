@@ -1,0 +1,55 @@
+// The search policy of a rational run that goes straight to the point an
+// interval run found (exact/Search_trail.h says why that is the rational
+// run's own point): earlier sub-spans are skipped, the division takes only
+// the trail's child at each depth, and generate-and-test only the trail's
+// line. Wherever the rational run's path leaves the trail, the trail is
+// marked diverged and the runner searches the whole pair again.
+#ifndef CLASH4D_EXACT_TRAIL_REPLAY_H
+#define CLASH4D_EXACT_TRAIL_REPLAY_H
+
+#include "exact/Search_trail.h"
+#include "search/No_filter.h"
+
+namespace clash4d {
+
+class Trail_replay : public No_filter {
+public:
+  Trail_replay() = default;   // only as a stage's unused default
+  explicit Trail_replay(Search_trail& trail) : trail_(&trail) {}
+
+  // Earlier spans were proven free of collisions; the trail's must hold it.
+  bool skips_span(std::size_t index) const { return index < trail_->span; }
+  bool stops_after(std::size_t) const
+  {
+    trail_->diverged = true;
+    return true;
+  }
+
+  bool takes_child(std::size_t depth, int child) const
+  {
+    if (depth >= trail_->path.size()) {
+      trail_->diverged = true;
+      return false;
+    }
+    return child == trail_->path[depth];
+  }
+  // A region that decides (conquers or folds to inside) must be the trail's
+  // last, and decide the same way.
+  bool decides_here(std::size_t depth, bool conquers) const
+  {
+    if (depth == trail_->path.size() && trail_->on_line == conquers) return true;
+    trail_->diverged = true;
+    return false;
+  }
+
+  // Every line before the trail's was certified to hold no point inside.
+  const std::array<std::size_t, 3>* replay_line() const { return trail_->line_known ? &trail_->line : nullptr; }
+  void replayed(bool found) { trail_->diverged = trail_->diverged || !found; }
+
+private:
+  Search_trail* trail_ = nullptr;
+};
+
+} // namespace clash4d
+
+#endif

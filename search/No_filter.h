@@ -1,0 +1,92 @@
+// The search policy: the one interface between the generic stages and a
+// filter. The stages (check/Collision_checker.h, search/Divide_and_conquer.h,
+// search/Generate_and_test.h) run on a kernel and call these members at the
+// few places where a filtered run differs from a plain one; they catch no
+// exception, keep no trail and call no callback of their own. No_filter is
+// the policy of every run that decides its own signs (rational, double): it
+// does nothing, and compiles away. The filtered exact kernel's policies are
+// in exact/ (Interval_filter.h: the interval run; Trail_replay.h: a rational
+// run straight to the interval run's point; Exact_line_filter.h: rational
+// lines that try intervals first).
+//
+// A policy P provides:
+//   Collision_checker, per sub-span of a pair (in time order):
+//     bool skips_span(index)           the span is known to hold no collision
+//     void search_span(a, b, index, frame_of_a)   the span about to be searched
+//     void found_in_span(index)        a (better) point inside was found there
+//     bool stops_after(index)          after a span that found nothing: stop
+//     bool witness_certified()         the point found may become the witness
+//     template <class F> void attempt(F make)   make the witness; a filter
+//                                      failing on the way leaves it unmade
+//   Divide_and_conquer:
+//     void uncertain_simplification()  a box simplification was not decided
+//                                      (the leaf was kept: regularised-
+//                                      semantics item 4)
+//     bool takes_child(depth, child)   whether to search this sub-region
+//     bool decides_here(depth, conquers)  a region decides (folds to inside,
+//                                      or is conquered): whether to go on
+//     void found_at(path, on_line)     the first point inside was found in
+//                                      the region at this division path
+//   Generate_and_test:
+//     const std::array<std::size_t, 3>* replay_line()  go straight to it
+//     void replayed(found)             what going straight there gave
+//     template <class G> void test_line(G& g, f, i, j, m, goal)
+//                                      decide one line (g.test_line)
+//     int same_plane(k, h, g, entry_h, face_h, entry_g, face_g, region)
+//                                      +1/-1/0 as geometry/Hyperplane4.h's
+//                                      proportional
+//     template <class V, class Inside> std::optional<bool>
+//       verdict_first(l, normals, inside, tested)   only a verdict is wanted:
+//                                      decide the neighbourhood another way
+//                                      first (nothing: classify it here)
+#ifndef CLASH4D_SEARCH_NO_FILTER_H
+#define CLASH4D_SEARCH_NO_FILTER_H
+
+#include "geometry/Box.h"
+#include "geometry/Hyperplane4.h"
+#include "model/Formula.h"
+#include "search/Search_goal.h"
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace clash4d {
+
+struct No_filter {
+  bool skips_span(std::size_t) const { return false; }
+  void search_span(int, int, std::size_t, const std::array<bool, 3>&) {}
+  void found_in_span(std::size_t) {}
+  bool stops_after(std::size_t) const { return false; }
+  bool witness_certified() const { return true; }
+  template <class F>
+  void attempt(F make) { make(); }
+
+  void uncertain_simplification() {}
+  bool takes_child(std::size_t, int) const { return true; }
+  bool decides_here(std::size_t, bool) const { return true; }
+  void found_at(const std::vector<int>&, bool) {}
+
+  const std::array<std::size_t, 3>* replay_line() const { return nullptr; }
+  void replayed(bool) {}
+  template <class G, class FT>
+  void test_line(G& g, const Formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<FT>& goal)
+  {
+    g.test_line(f, i, j, m, goal);
+  }
+  template <class K, class FT>
+  int same_plane(const K& k, const Hyperplane4<FT>& h, const Hyperplane4<FT>& g, long, int, long, int,
+                 const Box<FT, 4>&)
+  {
+    return proportional(k, h, g);
+  }
+  template <class V, class Inside>
+  std::optional<bool> verdict_first(const V&, const std::vector<V>&, Inside&, std::size_t&)
+  {
+    return std::nullopt;
+  }
+};
+
+} // namespace clash4d
+
+#endif
