@@ -29,7 +29,7 @@ struct Pair_answer {
 };
 
 struct Check_answer {
-  std::string number;                    // "exact" or "double"
+  std::string number;                    // "exact", "rational" or "double"
   bool collide = false;
   std::vector<Pair_answer> pairs;        // colliding pairs, in pair order
   int earliest_pair = -1;                // index in pairs of the smallest t* (--earliest)

@@ -1,4 +1,5 @@
-// The `clash4d` command line: validate, extrude, check.
+// The `clash4d` command line: every command (run_cli), its options and its
+// output; exit status as ../shared/spec/scene-format.md says.
 #ifndef CLASH4D_CLI_COMMANDS_H
 #define CLASH4D_CLI_COMMANDS_H
 

@@ -222,10 +222,10 @@ private:
     Box<FT, 3> b;
     int nonzero = 0, axis = -1;
     for (int a = 0; a < 3; ++a)
-      if (h[a] != FT(0)) { ++nonzero; axis = a; }
+      if (k_.sign(h[a]) != CGAL::ZERO) { ++nonzero; axis = a; }
     if (nonzero != 1) return b;
     FT bound = -h[3] / h[axis];
-    if (FT(0) < h[axis]) { b.hi[axis] = bound; b.has_hi[axis] = true; }
+    if (k_.sign(h[axis]) == CGAL::POSITIVE) { b.hi[axis] = bound; b.has_hi[axis] = true; }
     else { b.lo[axis] = bound; b.has_lo[axis] = true; }
     return b;
   }

@@ -5,6 +5,7 @@
 
 #include "geometry/kernel_ft4.h"
 #include "scene/Scene.h"
+#include <CGAL/enum.h>
 #include <vector>
 
 namespace clash4d {
@@ -26,7 +27,7 @@ struct Motion_path {
     // The segment holding t = 0 has offset 0; continuity at each breakpoint T
     // (v_i T + c_i = v_j T + c_j) fixes the others outward from it.
     std::size_t zero = 0;
-    while (zero < p.times.size() && p.times[zero] < FT(0)) ++zero;
+    while (zero < p.times.size() && k.sign(p.times[zero]) == CGAL::NEGATIVE) ++zero;
     for (std::size_t i = zero; i + 1 < n; ++i)
       for (int a = 0; a < 3; ++a)
         p.offset[i + 1][a] = p.offset[i][a] + (p.velocity[i][a] - p.velocity[i + 1][a]) * p.times[i];
@@ -36,17 +37,29 @@ struct Motion_path {
     return p;
   }
 
-  // The segment whose closed interval holds t (the later one at a breakpoint).
-  std::size_t segment_at(const FT& t) const
+  // The segment whose closed interval holds t (the later one at a
+  // breakpoint), with kernel k's signs.
+  template <class K>
+  std::size_t segment_at(const K& k, const FT& t) const
   {
     std::size_t i = 0;
-    while (i < times.size() && !(t < times[i])) ++i;
+    while (i < times.size() && !k.less(t, times[i])) ++i;
     return i;
   }
 
+  template <class K>
+  Vector3<FT> displacement(const K& k, const FT& t) const
+  {
+    std::size_t i = segment_at(k, t);
+    return point_along(offset[i], t, velocity[i]);
+  }
+
+  // The same in FT's own order, for code outside the pipeline (reports,
+  // adapters), which has no kernel and no tolerance.
   Vector3<FT> displacement(const FT& t) const
   {
-    std::size_t i = segment_at(t);
+    std::size_t i = 0;
+    while (i < times.size() && !(t < times[i])) ++i;
     return point_along(offset[i], t, velocity[i]);
   }
 };

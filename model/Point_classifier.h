@@ -62,7 +62,7 @@ bool is_valid_witness(const K& k, const Scene_model<K>& model, int a, int b, con
   if (!(k.less(model.t_lo, w[3]) && k.less(w[3], model.t_hi))) return false;
   for (int i : {a, b}) {
     const Object_model<FT>& o = model.objects[i];
-    Vector3<FT> d = o.motion.displacement(w[3]);
+    Vector3<FT> d = o.motion.displacement(k, w[3]);
     Vector3<FT> y{w[0] - d[0], w[1] - d[1], w[2] - d[2]};
     if (classify_point(k, o.csg, y) != Truth::True) return false;
     for (const auto& prim : o.csg.primitives)

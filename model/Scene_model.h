@@ -27,12 +27,14 @@ struct Time_span {
 template <class K>
 struct Scene_model {
   using FT = typename K::FT;
+  K kernel;                              // whose signs order times
   FT t_lo, t_hi;
   std::vector<Object_model<FT>> objects;
 
   static Scene_model build(const K& k, const Scene& scene)
   {
     Scene_model m;
+    m.kernel = k;
     m.t_lo = k.from_rational(scene.t_lo);
     m.t_hi = k.from_rational(scene.t_hi);
     Model_builder<K> builder(k);
@@ -48,9 +50,12 @@ struct Scene_model {
     std::vector<FT> cuts{t_lo, t_hi};
     for (int i : which)
       for (const FT& t : objects[i].motion.times)
-        if (t_lo < t && t < t_hi) cuts.push_back(t);
+        if (kernel.less(t_lo, t) && kernel.less(t, t_hi)) cuts.push_back(t);
+    // FT's own order sorts (a tolerance is no order); the kernel merges.
     std::sort(cuts.begin(), cuts.end());
-    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end(),
+                           [&](const FT& x, const FT& y) { return kernel.compare(x, y) == CGAL::ZERO; }),
+               cuts.end());
     std::vector<Time_span<FT>> spans;
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) spans.push_back({cuts[i], cuts[i + 1]});
     return spans;
@@ -59,7 +64,7 @@ struct Scene_model {
   // The motion segment of object i on a sub-span (constant there).
   std::size_t segment_on(int i, const Time_span<FT>& s) const
   {
-    return objects[i].motion.segment_at((s.lo + s.hi) / FT(2));
+    return objects[i].motion.segment_at(kernel, (s.lo + s.hi) / FT(2));
   }
 };
 

@@ -339,8 +339,6 @@ private:
     }
   }
 
-  // The segment of the line through planes i, j, m inside the closed region,
-  // and every cut by another plane in it, sorted; empty when it misses.
   // The line's parameter range inside the closed region, from the faces
   // only: most lines of a conquer miss the region, and then no other plane
   // need be evaluated.
