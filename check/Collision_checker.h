@@ -115,8 +115,7 @@ private:
     if (goal.improved) policy_.found_in_span(index);
     stats_.seconds_divide += seconds_since(start);
     if (!dc.conquered().empty)
-      for (int q = 0; q < 4; ++q)
-        stats_.conquered_box += std::string(q ? " x " : "") + interval_text(dc.conquered().lo[q], dc.conquered().hi[q]);
+      for (int q = 0; q < 4; ++q) stats_.conquered_box.push_back(range(dc.conquered().lo[q], dc.conquered().hi[q]));
     if (!goal.improved) return;
 
     // Found here (or, earliest mode, earlier than before): the witness and
@@ -141,11 +140,11 @@ private:
     bool alive = use_sbounds_ ? bounds.four_d_bounds(A, B, tl, th) : true;
     alive = alive && goal.can_improve(k_, tl);
     ss.pair = A.object->name + "/" + B.object->name;
-    ss.span = interval_text(span.lo, span.hi);
-    ss.narrowed = alive ? interval_text(tl, th) : "empty";
+    ss.span = range(span.lo, span.hi);
+    if (alive) ss.narrowed = range(tl, th);
     count_pruned(A, ss);
     count_pruned(B, ss);
-    if (stats_.span_before.empty()) {
+    if (!stats_.span_before) {
       stats_.span_before = ss.span;
       stats_.span_after = ss.narrowed;
     }
@@ -156,12 +155,12 @@ private:
     stats_.conquered_box.clear();
     Box4 region = use_sbounds_ ? bounds.fitted(A, B, tl, th, shear, frame_of_a)
                                : bounds.original(A, B, span.lo, span.hi, shear);
-    for (int q = 0; q < 4; ++q) ss.region += std::string(q ? " x " : "") + interval_text(region.lo[q], region.hi[q]);
+    for (int q = 0; q < 4; ++q) ss.region.push_back(range(region.lo[q], region.hi[q]));
     if (has_no_interior(k_, region)) {
-      ss.narrowed = "empty";
+      ss.narrowed.reset();
       return std::nullopt;
     }
-    for (int q = 0; q < 3; ++q) ss.frame += std::string(q ? " " : "") + k_.to_text(shear[q]);
+    for (int q = 0; q < 3; ++q) ss.frame.push_back(k_.to_stat(shear[q]));
     return use_sbounds_ ? bounds.on_grid(region, span.lo, span.hi) : region;
   }
 
@@ -188,7 +187,7 @@ private:
       }
   }
 
-  std::string interval_text(const FT& lo, const FT& hi) const { return "[" + k_.to_text(lo) + ", " + k_.to_text(hi) + "]"; }
+  Stat_range range(const FT& lo, const FT& hi) const { return {k_.to_stat(lo), k_.to_stat(hi)}; }
 };
 
 } // namespace clash4d

@@ -1,5 +1,6 @@
 #include "cli/Commands.h"
 #include "cli/Campaign_commands.h"
+#include "cli/Stats_json.h"
 #include "compare/Comparer.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
@@ -101,41 +102,6 @@ void print_extrusion_text(const json& report, std::ostream& out)
   }
 }
 
-json stats_json(const Check_stats& s)
-{
-  json spans = json::array();
-  for (const auto& p : s.spans)
-    spans.push_back({{"pair", p.pair}, {"span", p.span}, {"narrowed", p.narrowed}, {"primitives", p.primitives},
-                     {"primitives_alive", p.primitives_alive}, {"leaves", p.leaves}, {"region", p.region}, {"frame", p.frame}});
-  return {{"object_pairs", s.object_pairs},
-          {"candidate_pairs_after_sweep", s.candidate_pairs},
-          {"pairs", s.pairs},
-          {"sub_spans", s.sub_spans},
-          {"sub_spans_pruned_by_sbounds", s.sub_spans_pruned},
-          {"sbound_passes", s.sbound_passes},
-          {"primitives", s.primitives},
-          {"primitives_pruned", s.primitives_pruned},
-          {"span_before", s.span_before},
-          {"span_after", s.span_after},
-          {"spans", spans},
-          {"regions_per_depth", s.regions_per_depth},
-          {"conquered_box", s.conquered_box},
-          {"conquers", s.conquers},
-          {"leaves_at_conquer", s.leaves_at_conquer},
-          {"max_leaves_at_conquer", s.max_leaves_at_conquer},
-          {"lines", s.lines},
-          {"points_classified", s.points_classified},
-          {"cells_tested", s.cells_tested},
-          {"exact_fallbacks", s.exact_fallbacks},
-          {"exact_witness_runs", s.exact_witness_runs},
-          {"exact_witness_replays", s.exact_witness_replays},
-          {"exact_regions", s.exact_regions},
-          {"exact_lines", s.exact_lines},
-          {"exact_plane_tests", s.exact_plane_tests},
-          {"witnesses_by_intervals", s.witnesses_by_intervals},
-          {"seconds", {{"model", s.seconds_model}, {"sweep", s.seconds_sweep}, {"sbounds", s.seconds_sbounds},
-                       {"divide_and_conquer", s.seconds_divide}, {"witness", s.seconds_witness}}}};
-}
 
 void print_check(const Check_answer& a, const Check_options& o, bool stats, double tolerance, std::ostream& out)
 {

@@ -12,6 +12,7 @@
 #include "geometry/Kernel_concept.h"
 #include "numbers/Number_ops.h"
 #include "numbers/Rational.h"
+#include "numbers/Stat_number.h"
 #include <CGAL/FPU.h>
 #include <CGAL/Interval_nt.h>
 #include <cmath>
@@ -137,6 +138,8 @@ public:
     *end++ = ']';
     return std::string(text, end);
   }
+
+  Stat_number to_stat(const FT& x) const { return {Stat_number::Kind::Enclosure, Rational(), x.inf(), x.sup()}; }
 
   // A double as the exact rational it is, "p/q" or "p".
   static std::string dyadic_text(double d)

@@ -7,6 +7,7 @@
 #include "geometry/Kernel_base.h"
 #include "geometry/Kernel_concept.h"
 #include "numbers/Rational.h"
+#include "numbers/Stat_number.h"
 #include <string>
 
 namespace clash4d {
@@ -23,6 +24,7 @@ public:
   FT power_of_two(int e) const { return clash4d::power_of_two(e); }
   int grid_exponent(const FT& x) const { return clash4d::grid_exponent(x); }
   std::string to_text(const FT& x) const { return to_string(x); }
+  Stat_number to_stat(const FT& x) const { return {Stat_number::Kind::Exact, x, 0, 0}; }
   // A positive multiple of h with coprime integer coefficients: the same
   // half-space in smaller numbers.
   Hyperplane4<FT> in_lowest_terms(const Hyperplane4<FT>& h) const

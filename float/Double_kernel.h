@@ -7,6 +7,7 @@
 #include "geometry/Kernel_base.h"
 #include "geometry/Kernel_concept.h"
 #include "numbers/Rational.h"
+#include "numbers/Stat_number.h"
 #include <cmath>
 #include <string>
 
@@ -41,6 +42,7 @@ public:
   }
   // The shortest decimal that reads back to the same double (spec: output).
   std::string to_text(double x) const;
+  Stat_number to_stat(double x) const { return {Stat_number::Kind::Double, Rational(), x, x}; }
 
 private:
   double tolerance_;

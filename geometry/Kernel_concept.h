@@ -28,7 +28,8 @@
 //   k.floor_to_grid(x, bits)        x rounded down to a multiple of 2^-bits
 //   k.power_of_two(e)               2^e in FT
 //   k.grid_exponent(x)              for x > 0, the e with 2^-e <= x < 2^(1-e)
-//   k.to_text(x)                    text for reports and statistics
+//   k.to_text(x)                    text for answers and reports
+//   k.to_stat(x)                    x as a statistics number (Stat_number)
 //
 // Provided by Kernel_base (a kernel may refine them, as the interval kernel
 // does for speed): compare, less, side, dot_sign, orientation4, is_zero,
@@ -45,6 +46,7 @@
 #define CLASH4D_GEOMETRY_KERNEL_CONCEPT_H
 
 #include "numbers/Rational.h"
+#include "numbers/Stat_number.h"
 #include "geometry/kernel_ft4.h"
 #include <CGAL/Uncertain.h>
 #include <CGAL/enum.h>
@@ -75,6 +77,7 @@ struct has_required<
       std::is_same_v<std::decay_t<decltype(k().power_of_two(0))>, FT> &&
       std::is_same_v<decltype(k().grid_exponent(x())), int> &&
       std::is_same_v<decltype(k().to_text(x())), std::string> &&
+      std::is_same_v<decltype(k().to_stat(x())), Stat_number> &&
       std::is_same_v<decltype(k().compare(x(), x())), CGAL::Sign> &&
       std::is_same_v<decltype(k().less(x(), x())), bool> &&
       std::is_same_v<decltype(k().is_nonnegative(x(), true)), CGAL::Uncertain<bool>> &&

@@ -2,7 +2,9 @@
 #ifndef CLASH4D_SEARCH_CHECK_STATS_H
 #define CLASH4D_SEARCH_CHECK_STATS_H
 
+#include "numbers/Stat_number.h"
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,10 +12,12 @@ namespace clash4d {
 
 // One constant-velocity sub-span of one pair, as the S-bound stage left it.
 struct Span_stats {
-  std::string pair, span, narrowed;       // narrowed: "empty" when pruned
+  std::string pair;                       // "a/b", the objects' names
+  Stat_range span;
+  std::optional<Stat_range> narrowed;     // none: pruned
   std::size_t primitives = 0, primitives_alive = 0, leaves = 0;
-  std::string region;                     // the box handed to division, per axis
-  std::string frame;                      // per axis, whose velocity measures it
+  std::vector<Stat_range> region;         // the box handed to division, per axis (none: not reached)
+  std::vector<Stat_number> frame;         // per axis, the velocity it is measured against
 };
 
 struct Check_stats {
@@ -24,12 +28,13 @@ struct Check_stats {
   std::size_t pairs = 0, sub_spans = 0, sub_spans_pruned = 0;
   std::size_t sbound_passes = 0;
   std::size_t primitives = 0, primitives_pruned = 0;
-  std::string span_before, span_after;     // first examined sub-span, as text
+  std::optional<Stat_range> span_before;   // first examined sub-span
+  std::optional<Stat_range> span_after;    // ... after the S-bounds (none: pruned)
   std::vector<Span_stats> spans;
   // Divide-and-conquer (§4.1)
   std::vector<std::size_t> regions_per_depth;
   std::size_t conquers = 0, leaves_at_conquer = 0, max_leaves_at_conquer = 0;
-  std::string conquered_box;               // hull of the regions conquered (last span)
+  std::vector<Stat_range> conquered_box;   // hull of the regions conquered (last span), per axis
   // Generate-and-test (§4.2, Appendix A)
   std::size_t lines = 0, points_classified = 0, cells_tested = 0;
   // Filtered exact kernel (set once per run; 0 for other kernels):
@@ -56,7 +61,7 @@ struct Check_stats {
   {
     pairs += o.pairs; sub_spans += o.sub_spans; sub_spans_pruned += o.sub_spans_pruned;
     sbound_passes += o.sbound_passes; primitives += o.primitives; primitives_pruned += o.primitives_pruned;
-    if (span_before.empty()) { span_before = o.span_before; span_after = o.span_after; }
+    if (!span_before) { span_before = o.span_before; span_after = o.span_after; }
     spans.insert(spans.end(), o.spans.begin(), o.spans.end());
     if (regions_per_depth.size() < o.regions_per_depth.size()) regions_per_depth.resize(o.regions_per_depth.size(), 0);
     for (std::size_t d = 0; d < o.regions_per_depth.size(); ++d) regions_per_depth[d] += o.regions_per_depth[d];

@@ -1,0 +1,82 @@
+#include "cli/Stats_json.h"
+#include "exact/Interval_kernel.h"
+#include "float/Double_kernel.h"
+
+namespace clash4d {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+std::string range_text(const Stat_range& r) { return "[" + stat_text(r.lo) + ", " + stat_text(r.hi) + "]"; }
+
+// Per axis, "[lo, hi] x [lo, hi] x ..."; "" for none.
+std::string box_text(const std::vector<Stat_range>& box)
+{
+  std::string text;
+  for (std::size_t q = 0; q < box.size(); ++q) text += (q ? " x " : "") + range_text(box[q]);
+  return text;
+}
+
+json span_json(const Span_stats& p)
+{
+  std::string frame;
+  for (std::size_t q = 0; q < p.frame.size(); ++q) frame += (q ? " " : "") + stat_text(p.frame[q]);
+  return {{"pair", p.pair},
+          {"span", range_text(p.span)},
+          {"narrowed", p.narrowed ? range_text(*p.narrowed) : "empty"},
+          {"primitives", p.primitives},
+          {"primitives_alive", p.primitives_alive},
+          {"leaves", p.leaves},
+          {"region", box_text(p.region)},
+          {"frame", frame}};
+}
+
+} // namespace
+
+std::string stat_text(const Stat_number& x)
+{
+  switch (x.kind) {
+    case Stat_number::Kind::Exact: return to_string(x.exact);
+    case Stat_number::Kind::Double: return Double_kernel().to_text(x.lo);
+    case Stat_number::Kind::Enclosure: return Interval_kernel().to_text(Interval(x.lo, x.hi));
+  }
+  return "";
+}
+
+json stats_json(const Check_stats& s)
+{
+  json spans = json::array();
+  for (const auto& p : s.spans) spans.push_back(span_json(p));
+  std::string before = s.span_before ? range_text(*s.span_before) : "";
+  std::string after = !s.span_before ? "" : s.span_after ? range_text(*s.span_after) : "empty";
+  return {{"object_pairs", s.object_pairs},
+          {"candidate_pairs_after_sweep", s.candidate_pairs},
+          {"pairs", s.pairs},
+          {"sub_spans", s.sub_spans},
+          {"sub_spans_pruned_by_sbounds", s.sub_spans_pruned},
+          {"sbound_passes", s.sbound_passes},
+          {"primitives", s.primitives},
+          {"primitives_pruned", s.primitives_pruned},
+          {"span_before", before},
+          {"span_after", after},
+          {"spans", spans},
+          {"regions_per_depth", s.regions_per_depth},
+          {"conquered_box", box_text(s.conquered_box)},
+          {"conquers", s.conquers},
+          {"leaves_at_conquer", s.leaves_at_conquer},
+          {"max_leaves_at_conquer", s.max_leaves_at_conquer},
+          {"lines", s.lines},
+          {"points_classified", s.points_classified},
+          {"cells_tested", s.cells_tested},
+          {"exact_fallbacks", s.exact_fallbacks},
+          {"exact_witness_runs", s.exact_witness_runs},
+          {"exact_witness_replays", s.exact_witness_replays},
+          {"exact_regions", s.exact_regions},
+          {"exact_lines", s.exact_lines},
+          {"exact_plane_tests", s.exact_plane_tests},
+          {"witnesses_by_intervals", s.witnesses_by_intervals},
+          {"seconds", {{"model", s.seconds_model}, {"sweep", s.seconds_sweep}, {"sbounds", s.seconds_sbounds},
+                       {"divide_and_conquer", s.seconds_divide}, {"witness", s.seconds_witness}}}};
+}
+
+} // namespace clash4d
