@@ -192,8 +192,11 @@ BOOST_AUTO_TEST_CASE(builder_folds_constants_through_and_and_or)
   Formula g = build(any({all({leaf(0), constant(false)}), all({leaf(1), leaf(2)})}));
   BOOST_TEST(postfix(g) == "L1 L2 And2");
   BOOST_TEST(g.leaf_count() == 2u);
-  // An empty formula is everything (an And of nothing).
+  // An empty formula is everything; an And of nothing is True, an Or of
+  // nothing False (their neutral elements).
   BOOST_TEST(Formula::Builder().finish().value() == Truth::True);
+  BOOST_TEST(build(all({})).value() == Truth::True);
+  BOOST_TEST(build(any({})).value() == Truth::False);
 }
 
 BOOST_AUTO_TEST_CASE(simplified_replaces_leaves_and_folds_the_tree)

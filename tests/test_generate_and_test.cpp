@@ -209,6 +209,28 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(a_single_slab_or_halfspace_in_the_region_is_found,
   BOOST_TEST(!c.run(conjunction<FT>({3, 4}), r));
   // x >= 2 only touches the region's face x = 2: nothing.
   BOOST_TEST(!c.run(conjunction<FT>({5}), r));
+  // x <= 4 holds on the whole region: found (no leaf plane crosses it).
+  c.table.push_back({{FT(1), FT(0), FT(0), FT(0)}, FT(-4)});
+  Formula all_of_it = conjunction<FT>({6});
+  BOOST_TEST_REQUIRE(c.run(all_of_it, r));
+  c.check_certificate(all_of_it, r, "everything");
+}
+
+BOOST_AUTO_TEST_CASE_TEMPLATE(leaf_planes_that_are_region_faces, K, Kernels)
+{
+  using FT = typename K::FT;
+  Conquer<K> c;
+  // The slab 0 <= x <= 1 over the region x in [0, 1]: both leaf planes are
+  // faces of the region (the same plane, same orientation); the region's
+  // interior is inside. x >= 1 over the same region is the complement of
+  // its face x <= 1 (opposite orientation): only the face, nothing.
+  c.table = {{{FT(-1), FT(0), FT(0), FT(0)}, FT(0)}, {{FT(1), FT(0), FT(0), FT(0)}, FT(-1)},
+             {{FT(-2), FT(0), FT(0), FT(0)}, FT(2)}};
+  Box<FT, 4> r = region<FT>({0, 0, 0, 0}, {1, 1, 1, 1});
+  Formula slab = conjunction<FT>({0, 1});
+  BOOST_TEST_REQUIRE(c.run(slab, r));
+  c.check_certificate(slab, r, "slab = region");
+  BOOST_TEST(!c.run(conjunction<FT>({2}), r));
 }
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(differences_are_found_only_where_they_have_interior, K, Kernels)
@@ -332,6 +354,12 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(random_moving_boxes_agree_with_interval_overlap, K
     if (c.goal.found) {
       c.check_certificate(f, r, where);
       BOOST_TEST((tl < c.goal.inside[3] && c.goal.inside[3] < th), where);
+    }
+    // Earliest mode: the collision starts at tl, the inf of the open times.
+    if (meet) {
+      BOOST_TEST_REQUIRE(c.run(f, r, true), where << " earliest");
+      c.check_certificate(f, r, where + " earliest");
+      BOOST_TEST(c.goal.t_star == tl, where << " earliest");
     }
   }
   BOOST_TEST_MESSAGE(collide << " of " << cases << " pairs collide, " << contacts << " only touch");

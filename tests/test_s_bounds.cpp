@@ -471,6 +471,27 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(appendix_b_bounds_an_unbounded_side, K, Kernels)
   //  b' = max(10, 0 - 0) = 10; beta' stays 11 (alpha is infinite).
   check_box(c.a, {0, 0, 0}, {11, 1, 1}, "A");
   check_box(c.b, {10, 0, 0}, {11, 1, 1}, "B");
+
+  // A: x <= 20 only, moving at -1 (negative u - v, so the inequality flips
+  // on division); B = [10,11] at rest; span [0, 20].
+  Meet_case<K> d;
+  d.a = Box<FT, 3>::whole();
+  d.a.hi[0] = FT(20);
+  d.a.has_hi[0] = true;
+  d.u = vec3<FT>(-1, 0, 0);
+  d.b = box3<FT>({10, 0, 0}, {11, 1, 1});
+  d.tl = FT(0);
+  d.th = FT(20);
+  BOOST_TEST_REQUIRE(d.run(k));
+  // b - alpha <= (u - v) t: 10 - 20 <= -t, so t <= 10 (a = -inf: no lower
+  // limit). Span [0, 10].
+  BOOST_TEST(d.tl == FT(0));
+  BOOST_TEST(d.th == FT(10));
+  // (v - u) t = t over [0, 10]: a' = b + min = 10 + 0 = 10, alpha' =
+  // min(20, 11 + 10) = 20 (B seen from A's frame is [10 + t, 11 + t]);
+  // b' = 10 (a infinite), beta' = min(11, 20 - 0) = 11.
+  check_box(d.a, {10, 0, 0}, {20, 1, 1}, "A moving left");
+  check_box(d.b, {10, 0, 0}, {11, 1, 1}, "B");
 }
 
 // --- Random cases -----------------------------------------------------------
