@@ -59,7 +59,7 @@ Box<FT, 4> region(std::array<long, 4> lo, std::array<long, 4> hi)
   return b;
 }
 
-// Leaves closed by one operator; `mark` from Builder::open.
+// The leaves hs as one node of operator op.
 void leaves(Formula::Builder& b, const std::vector<std::uint32_t>& hs, Formula::Op op)
 {
   std::size_t mark = b.open();
@@ -67,7 +67,6 @@ void leaves(Formula::Builder& b, const std::vector<std::uint32_t>& hs, Formula::
   b.close(op, mark);
 }
 
-template <class FT>
 Formula conjunction(const std::vector<std::uint32_t>& hs)
 {
   Formula::Builder b;
@@ -126,7 +125,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(overlapping_moving_blocks_give_a_point_strictly_in
   BOOST_TEST(c.table[a[1]].c == FT(-1));
   std::vector<std::uint32_t> both = a;
   both.insert(both.end(), b.begin(), b.end());
-  Formula f = conjunction<FT>(both);
+  Formula f = conjunction(both);
   Box<FT, 4> r = region<FT>({-1, -1, -1, 0}, {5, 2, 2, 4});
   BOOST_TEST_REQUIRE(c.run(f, r));
   c.check_certificate(f, r, "moving blocks");
@@ -147,6 +146,26 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(overlapping_moving_blocks_give_a_point_strictly_in
   for (int q : {1, 2}) BOOST_TEST((FT(0) <= c.goal.contact[q] && c.goal.contact[q] <= FT(1)));
 }
 
+BOOST_AUTO_TEST_CASE_TEMPLATE(overlap_from_the_start_is_earliest_at_the_region_start, K, Kernels)
+{
+  using FT = typename K::FT;
+  Conquer<K> c;
+  // A = [0,2]^3 and B = [1,3]^3 at rest overlap in (1,2)^3 at every time; over
+  // t in [1/2, 1] the earliest point of the closure is at t = 1/2 (the span's
+  // start, a region face), with x, y, z in [1, 2].
+  auto a = add_block<FT>(c.table, p3<FT>(0, 0, 0), p3<FT>(2, 2, 2));
+  auto b = add_block<FT>(c.table, p3<FT>(1, 1, 1), p3<FT>(3, 3, 3));
+  a.insert(a.end(), b.begin(), b.end());
+  Formula f = conjunction(a);
+  Box<FT, 4> r = region<FT>({-1, -1, -1, 0}, {4, 4, 4, 1});
+  r.lo[3] = num<FT>(1, 2);
+  BOOST_TEST_REQUIRE(c.run(f, r, true));
+  c.check_certificate(f, r, "static overlap, earliest");
+  BOOST_TEST(c.goal.t_star == num<FT>(1, 2));
+  BOOST_TEST(c.goal.contact[3] == num<FT>(1, 2));
+  for (int q = 0; q < 3; ++q) BOOST_TEST((FT(1) <= c.goal.contact[q] && c.goal.contact[q] <= FT(2)));
+}
+
 BOOST_AUTO_TEST_CASE_TEMPLATE(blocks_touching_on_a_face_do_not_collide, K, Kernels)
 {
   using FT = typename K::FT;
@@ -157,14 +176,14 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(blocks_touching_on_a_face_do_not_collide, K, Kerne
   auto a = add_block<FT>(c.table, p3<FT>(0, 0, 0), p3<FT>(1, 1, 1));
   auto b = add_block<FT>(c.table, p3<FT>(1, 0, 0), p3<FT>(2, 1, 1));
   a.insert(a.end(), b.begin(), b.end());
-  BOOST_TEST(!c.run(conjunction<FT>(a), region<FT>({-1, -1, -1, 0}, {3, 2, 2, 1})));
-  BOOST_TEST(!c.run(conjunction<FT>(a), region<FT>({-1, -1, -1, 0}, {3, 2, 2, 1}), true));
+  BOOST_TEST(!c.run(conjunction(a), region<FT>({-1, -1, -1, 0}, {3, 2, 2, 1})));
+  BOOST_TEST(!c.run(conjunction(a), region<FT>({-1, -1, -1, 0}, {3, 2, 2, 1}), true));
   // Touching along an edge only (B = [1,2] x [1,2] x [0,1]): no point either.
   Conquer<K> e;
   auto ea = add_block<FT>(e.table, p3<FT>(0, 0, 0), p3<FT>(1, 1, 1));
   auto eb = add_block<FT>(e.table, p3<FT>(1, 1, 0), p3<FT>(2, 2, 1));
   ea.insert(ea.end(), eb.begin(), eb.end());
-  BOOST_TEST(!e.run(conjunction<FT>(ea), region<FT>({-1, -1, -1, 0}, {3, 3, 2, 1})));
+  BOOST_TEST(!e.run(conjunction(ea), region<FT>({-1, -1, -1, 0}, {3, 3, 2, 1})));
 }
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(blocks_touching_at_one_instant_do_not_collide, K, Kernels)
@@ -177,7 +196,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(blocks_touching_at_one_instant_do_not_collide, K, 
   auto a = add_block<FT>(c.table, p3<FT>(0, 0, 0), p3<FT>(1, 1, 1), {FT(1), FT(0), FT(0)});
   auto b = add_block<FT>(c.table, p3<FT>(2, 0, 0), p3<FT>(3, 1, 1));
   a.insert(a.end(), b.begin(), b.end());
-  Formula f = conjunction<FT>(a);
+  Formula f = conjunction(a);
   BOOST_TEST(!c.run(f, region<FT>({-1, -1, -1, 0}, {5, 2, 2, 1})));
   Box<FT, 4> longer = region<FT>({-1, -1, -1, 0}, {5, 2, 2, 1});
   longer.hi[3] = num<FT>(3, 2);
@@ -197,21 +216,21 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(a_single_slab_or_halfspace_in_the_region_is_found,
              {{FT(-1), FT(0), FT(0), FT(0)}, FT(3)}, {{FT(1), FT(0), FT(0), FT(0)}, FT(-4)},
              {{FT(-1), FT(0), FT(0), FT(0)}, FT(2)}};
   Box<FT, 4> r = region<FT>({-1, 0, 0, 0}, {2, 1, 1, 1});
-  Formula slab = conjunction<FT>({0, 1});
+  Formula slab = conjunction({0, 1});
   BOOST_TEST_REQUIRE(c.run(slab, r));
   c.check_certificate(slab, r, "slab");
   BOOST_TEST((FT(0) < c.goal.inside[0] && c.goal.inside[0] < FT(1)));
   // One half-space, x <= 1/2: found (one plane and the region's faces).
-  Formula half = conjunction<FT>({2});
+  Formula half = conjunction({2});
   BOOST_TEST_REQUIRE(c.run(half, r));
   c.check_certificate(half, r, "half-space");
   // The slab 3 <= x <= 4 misses x <= 2: nothing.
-  BOOST_TEST(!c.run(conjunction<FT>({3, 4}), r));
+  BOOST_TEST(!c.run(conjunction({3, 4}), r));
   // x >= 2 only touches the region's face x = 2: nothing.
-  BOOST_TEST(!c.run(conjunction<FT>({5}), r));
+  BOOST_TEST(!c.run(conjunction({5}), r));
   // x <= 4 holds on the whole region: found (no leaf plane crosses it).
   c.table.push_back({{FT(1), FT(0), FT(0), FT(0)}, FT(-4)});
-  Formula all_of_it = conjunction<FT>({6});
+  Formula all_of_it = conjunction({6});
   BOOST_TEST_REQUIRE(c.run(all_of_it, r));
   c.check_certificate(all_of_it, r, "everything");
 }
@@ -227,10 +246,10 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(leaf_planes_that_are_region_faces, K, Kernels)
   c.table = {{{FT(-1), FT(0), FT(0), FT(0)}, FT(0)}, {{FT(1), FT(0), FT(0), FT(0)}, FT(-1)},
              {{FT(-2), FT(0), FT(0), FT(0)}, FT(2)}};
   Box<FT, 4> r = region<FT>({0, 0, 0, 0}, {1, 1, 1, 1});
-  Formula slab = conjunction<FT>({0, 1});
+  Formula slab = conjunction({0, 1});
   BOOST_TEST_REQUIRE(c.run(slab, r));
   c.check_certificate(slab, r, "slab = region");
-  BOOST_TEST(!c.run(conjunction<FT>({2}), r));
+  BOOST_TEST(!c.run(conjunction({2}), r));
 }
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(differences_are_found_only_where_they_have_interior, K, Kernels)
@@ -327,7 +346,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(random_moving_boxes_agree_with_interval_overlap, K
     auto ha = add_block<FT>(c.table, a, al, u);
     auto hb = add_block<FT>(c.table, b, be, v);
     ha.insert(ha.end(), hb.begin(), hb.end());
-    Formula f = conjunction<FT>(ha);
+    Formula f = conjunction(ha);
     Box<FT, 4> r = region<FT>({-4, -4, -4, 0}, {8, 8, 8, 0});
     r.hi[3] = T;
     // The open times of overlap, by hand; closed: whether the closed boxes

@@ -305,6 +305,8 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(settle_needs_a_second_up_pass_when_down_empties_a_
 
 // --- Appendix B: the meet of two moving boxes ---------------------------------
 
+namespace {
+
 // Runs meet_moving on copies; A moves with D(t) = u t + oa, B with v t + ob.
 template <class K>
 struct Meet_case {
@@ -328,6 +330,8 @@ Vector3<FT> vec3(long x, long y, long z)
 {
   return {FT(x), FT(y), FT(z)};
 }
+
+} // namespace
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(appendix_b_paper_example_gives_2x2x4x2, K, Kernels)
 {
