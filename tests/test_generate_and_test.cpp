@@ -318,6 +318,37 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(a_union_is_found_in_its_part_inside_the_region, K,
   BOOST_TEST((FT(1) < c.goal.inside[0] && c.goal.inside[0] < FT(2)));
 }
 
+BOOST_AUTO_TEST_CASE_TEMPLATE(earliest_of_two_collisions_in_a_union, K, Kernels)
+{
+  using FT = typename K::FT;
+  Conquer<K> c;
+  // A = [0,1]^3 moving with (1,0,0) against (B or C), B = [4,5] x [0,1]^2,
+  // C = [2,3] x [0,1]^2 at rest (B's leaves first). A meets C for
+  // t + 1 > 2, t < 3: (1, 3); B for t + 1 > 4, t < 5: (3, 5). Over t in
+  // [0, 5] the earliest is t = 1 (x = 2), whatever order the lines come in.
+  auto a = add_block<FT>(c.table, p3<FT>(0, 0, 0), p3<FT>(1, 1, 1), {FT(1), FT(0), FT(0)});
+  auto b = add_block<FT>(c.table, p3<FT>(4, 0, 0), p3<FT>(5, 1, 1));
+  auto cc = add_block<FT>(c.table, p3<FT>(2, 0, 0), p3<FT>(3, 1, 1));
+  Formula::Builder fb;
+  std::size_t top = fb.open();
+  for (auto h : a) fb.leaf(h);
+  std::size_t either = fb.open();
+  leaves(fb, b, Formula::Op::And);
+  leaves(fb, cc, Formula::Op::And);
+  fb.close(Formula::Op::Or, either);
+  fb.close(Formula::Op::And, top);
+  Formula f = fb.finish();
+  Box<FT, 4> r = region<FT>({-1, -1, -1, 0}, {7, 2, 2, 5});
+  BOOST_TEST_REQUIRE(c.run(f, r));
+  c.check_certificate(f, r, "union, any");
+  const FT& t = c.goal.inside[3];
+  BOOST_TEST(((FT(1) < t && t < FT(3)) || (FT(3) < t && t < FT(5))));
+  BOOST_TEST_REQUIRE(c.run(f, r, true));
+  c.check_certificate(f, r, "union, earliest");
+  BOOST_TEST(c.goal.t_star == FT(1));
+  BOOST_TEST(c.goal.contact[0] == FT(2));
+}
+
 // Two random boxes with random velocities over [0, T]: they collide exactly
 // when some t in (0, T) has, on every axis, (u - v) t strictly between
 // b - alpha and beta - a (their open intervals overlap). The region holds
