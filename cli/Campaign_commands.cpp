@@ -56,7 +56,15 @@ void add_fuzz_folder(const fs::path& dir, std::vector<Report_case>& cases)
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
     json finding = read_plain(f);
-    cases.push_back({f.string(), read_scene(read_json_text(finding["scene"].dump())), finding["comparison"]});
+    if (!finding.contains("meta") || !finding["meta"].contains("comparison"))
+      throw std::runtime_error(f.string() + ": not a clash4d fuzz finding (no meta.comparison)");
+    Scene scene;
+    try {
+      scene = read_scene_file(f.string());
+    } catch (const Input_error& e) {
+      throw std::runtime_error(e.format(f.string()));
+    }
+    cases.push_back({f.string(), scene, finding["meta"]["comparison"]});
   }
 }
 

@@ -82,17 +82,36 @@ std::string finding_path(const Fuzz_options& o, std::uint64_t index, const char*
   return (fs::path(o.out) / "findings" / ("case-" + std::to_string(index) + suffix)).string();
 }
 
+// The semantics a subject decides in: the toolkit's pipelines decide the
+// regularised question; FCL counts touching as collision (closed).
+const char* semantics_of(const std::string& subject) { return subject == "fcl" ? "closed" : "regularised"; }
+
+json disagreement_meta(const json& d)
+{
+  std::string subject = d["subject"];
+  return {{"subject", subject}, {"semantics", semantics_of(subject)}, {"cause", d["cause"]}, {"detail", d["detail"]}};
+}
+
+// A finding is a scene file (check, compare and validate take it as it is);
+// where it came from goes under its `meta` key (spec).
+json finding_meta(const Fuzz_options& o, const std::string& family, std::uint64_t index, const json& comparison)
+{
+  json disagreements = json::array();
+  for (const auto& d : comparison["disagreements"]) disagreements.push_back(disagreement_meta(d));
+  return {{"tool", "clash4d fuzz"}, {"family", family}, {"seed", o.seed}, {"index", index},
+          {"disagreements", disagreements}, {"comparison", reproducible(comparison)}};
+}
+
 // Compares one case; on disagreement saves it, shrinks it, saves the minimum.
 bool run_case(const Fuzz_options& o, std::uint64_t index)
 {
   Fuzz_case c = make_fuzz_case(o.seed, index);
   Scene scene = read_scene(read_json_text(c.json));
-  json comparison = compare_scene(scene, "case-" + std::to_string(index), o.compare);
+  std::string name = "case-" + std::to_string(index);
+  json comparison = compare_scene(scene, name, o.compare);
   std::vector<std::string> keys = disagreement_keys(comparison);
   if (keys.empty()) return false;
-  json finding = {{"family", c.family}, {"seed", o.seed}, {"index", index},
-                  {"scene", json::parse(write_scene(scene))}, {"comparison", reproducible(comparison)}};
-  write_file_atomically(finding_path(o, index, ".json"), finding.dump(2) + "\n");
+  write_file_atomically(finding_path(o, index, ".json"), write_scene(scene, finding_meta(o, c.family, index, comparison)));
   // Shrink while the first disagreement (same subject, same cause) persists,
   // running only the subjects that decide it.
   const json& first = comparison["disagreements"][0];
@@ -107,10 +126,10 @@ bool run_case(const Fuzz_options& o, std::uint64_t index)
     return std::find(k.begin(), k.end(), key) != k.end();
   };
   Scene small = shrink_scene(scene, still_fails, o.max_shrink_checks);
-  json shrunk = {{"family", c.family}, {"seed", o.seed}, {"index", index}, {"disagreement", key},
-                 {"scene", json::parse(write_scene(small))},
-                 {"comparison", reproducible(compare_scene(small, "case-" + std::to_string(index) + ".min", o.compare))}};
-  write_file_atomically(finding_path(o, index, ".min.json"), shrunk.dump(2) + "\n");
+  json meta = finding_meta(o, c.family, index, compare_scene(small, name + ".min", o.compare));
+  meta["shrunk_from"] = name + ".json";
+  meta["disagreement"] = disagreement_meta(first);
+  write_file_atomically(finding_path(o, index, ".min.json"), write_scene(small, meta));
   return true;
 }
 
@@ -173,14 +192,17 @@ Fuzz_summary merge_fuzz(const std::vector<std::string>& dirs, const std::string&
       if (f.path().extension() != ".json") continue;
       std::string name = f.path().filename().string();
       json finding = read_json_file_plain(f.path().string());
+      if (!finding.contains("meta") || !finding["meta"].contains("comparison"))
+        throw std::runtime_error(f.path().string() + ": not a clash4d fuzz finding (no meta.comparison)");
       fs::path target = fs::path(out) / "findings" / name;
       if (fs::exists(target) && read_json_file_plain(target.string()) != finding)
         throw std::runtime_error(target.string() + ": two campaigns disagree on this finding (different seeds?)");
       write_file_atomically(target.string(), finding.dump(2) + "\n");
       if (name.find(".min.json") != std::string::npos) continue;
       ++s.findings;
-      ++by_family[finding["family"].get<std::string>()];
-      for (const auto& k : disagreement_keys(finding["comparison"])) ++by_subject_cause[k];
+      const json& meta = finding["meta"];
+      ++by_family[meta["family"].get<std::string>()];
+      for (const auto& k : disagreement_keys(meta["comparison"])) ++by_subject_cause[k];
     }
   }
   json summary = {{"findings", s.findings}, {"by_family", by_family}, {"by_subject_and_cause", by_subject_cause}};

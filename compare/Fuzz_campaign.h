@@ -6,8 +6,12 @@
 //   campaign.json                 seed, cases, tolerances (and "fcl": true with
 //                                 --fcl): a rerun must match
 //   progress-K-of-S.json          the next case index of shard K of S
-//   findings/case-I.json          family, scene and comparison of case I
+//   findings/case-I.json          the scene of case I; under its `meta` key the
+//                                 family, seed, index, disagreements (subject,
+//                                 its semantics, cause) and the comparison
 //   findings/case-I.min.json      the same disagreement on a shrunk scene
+//                                 (meta also: disagreement, shrunk_from)
+// Both are scene files: `clash4d check findings/case-I.min.json` replays one.
 // Every file is written to a temporary name and renamed. A killed run loses
 // no saved finding; rerunning with the same arguments redoes at most the
 // batch in flight (writing the same files) and goes on.

@@ -52,6 +52,11 @@ Grid_scene make_grid_scene(int n, int colliding, std::uint64_t seed)
                                                " colliding pairs, seed " + std::to_string(seed)},
                                   {"time", {0, 10}},
                                   {"objects", objects}};
+  // Provenance under `meta` (spec): the file stays a scene check accepts.
+  nlohmann::ordered_json pairs = nlohmann::ordered_json::array();
+  for (const auto& p : out.colliding) pairs.push_back({"b" + std::to_string(p.first), "b" + std::to_string(p.second)});
+  scene["meta"] = {{"tool", "clash4d generate"}, {"n", n}, {"colliding", colliding}, {"seed", seed},
+                   {"colliding_pairs", pairs}, {"earliest_t", 5}};
   out.json = scene.dump(1) + "\n";
   return out;
 }

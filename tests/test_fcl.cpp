@@ -361,7 +361,7 @@ BOOST_AUTO_TEST_CASE(fuzz_campaign_records_fcl)
     std::ifstream in_finding(f.path());
     json finding = json::parse(in_finding);   // kept: the loop walks inside it
     bool has_fcl = false;
-    for (const auto& s : finding["comparison"]["subjects"]) has_fcl = has_fcl || s["subject"] == "fcl";
+    for (const auto& s : finding["meta"]["comparison"]["subjects"]) has_fcl = has_fcl || s["subject"] == "fcl";
     BOOST_TEST(has_fcl, f.path());
   }
   // The same folder without --fcl is another campaign.
