@@ -1,17 +1,15 @@
 #include "cli/Campaign_commands.h"
 #include "compare/Report_writer.h"
 #include "scene/Input_error.h"
-#include "scene/Json_reader.h"
+#include "scene/Files.h"
 #include "scene/Scene_reader.h"
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <ostream>
 
 namespace clash4d {
 namespace fs = std::filesystem;
-using json = nlohmann::ordered_json;
 
 int fuzz_command(const Fuzz_options& options, std::ostream& out, std::ostream& err)
 {
@@ -41,12 +39,6 @@ int merge_command(const std::vector<std::string>& dirs, const std::string& out_d
 
 namespace {
 
-json read_plain(const fs::path& p)
-{
-  std::ifstream in(p);
-  return json::parse(in);
-}
-
 // Saved findings carry their scene and comparison: no need to rerun them.
 void add_fuzz_folder(const fs::path& dir, std::vector<Report_case>& cases)
 {
@@ -55,16 +47,14 @@ void add_fuzz_folder(const fs::path& dir, std::vector<Report_case>& cases)
     if (f.path().extension() == ".json") files.push_back(f.path());
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
-    json finding = read_plain(f);
-    if (!finding.contains("meta") || !finding["meta"].contains("comparison"))
-      throw std::runtime_error(f.string() + ": not a clash4d fuzz finding (no meta.comparison)");
+    Comparison comparison = finding_comparison(read_json_document(f.string()), f.string());
     Scene scene;
     try {
       scene = read_scene_file(f.string());
     } catch (const Input_error& e) {
       throw std::runtime_error(e.format(f.string()));
     }
-    cases.push_back({f.string(), scene, finding["meta"]["comparison"]});
+    cases.push_back({f.string(), scene, comparison});
   }
 }
 
@@ -98,7 +88,7 @@ int report_command(const std::vector<std::string>& inputs, const std::string& ou
     }
     write_report(cases, out_dir);
     std::size_t disagreeing = 0;
-    for (const auto& c : cases) disagreeing += !c.comparison["disagreements"].empty();
+    for (const auto& c : cases) disagreeing += c.comparison.has_disagreement();
     out << out_dir << ": " << cases.size() << " cases, " << disagreeing << " with disagreements (index.html, report.json, junit.xml)\n";
     return disagreeing ? 1 : 0;
   } catch (const std::exception& e) {

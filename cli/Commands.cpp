@@ -3,6 +3,7 @@
 #include "compare/Comparer.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
+#include "scene/Files.h"
 #include "scene/Input_error.h"
 #include "scene/Grid_scene.h"
 #include "scene/Scene_reader.h"
@@ -10,7 +11,6 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <unistd.h>
-#include <fstream>
 #include <ostream>
 
 namespace clash4d {
@@ -202,18 +202,21 @@ void print_skeleton(const Skeleton_answer& a, bool as_json, std::ostream& out)
   }
 }
 
-void print_comparison(const json& c, std::ostream& out)
+void print_comparison(const Comparison& c, std::ostream& out)
 {
-  out << c["file"].get<std::string>() << (c["disagreements"].empty() ? ": all subjects agree\n" : ": DISAGREEMENT\n");
-  for (const auto& s : c["subjects"]) {
-    out << "  " << s["subject"].get<std::string>() << ": ";
-    if (!s["ok"].get<bool>()) { out << "failed: " << s["error"].get<std::string>() << "\n"; continue; }
-    if (s.contains("skipped") && s["skipped"].is_string()) { out << "skipped: " << s["skipped"].get<std::string>() << "\n"; continue; }
-    out << (s["collide"].get<bool>() ? "collision" : "no collision");
-    if (!s["witness_valid"].is_null()) out << (s["witness_valid"].get<bool>() ? ", witness valid" : ", witness INVALID");
-    if (!s["earliest"].is_null()) out << ", t* = " << s["earliest"]["t"].get<std::string>();
-    if (!s["t_error"].is_null()) out << " (error " << s["t_error"].get<std::string>() << ")";
-    if (!s["cause"].is_null()) out << "  <- " << s["cause"].get<std::string>();
+  out << c.file << (c.has_disagreement() ? ": DISAGREEMENT\n" : ": all subjects agree\n");
+  for (const Subject_row& s : c.subjects) {
+    out << "  " << s.subject << ": ";
+    if (s.failed()) {
+      out << "failed: " << s.error << (s.cause ? "  <- " + *s.cause : "") << "\n";
+      continue;
+    }
+    if (s.skipped) { out << "skipped: " << *s.skipped << "\n"; continue; }
+    out << (s.collide.value_or(false) ? "collision" : "no collision");
+    if (s.witness_valid) out << (*s.witness_valid ? ", witness valid" : ", witness INVALID");
+    if (s.earliest) out << ", t* = " << s.earliest->t;
+    if (s.t_error) out << " (error " << *s.t_error << ")";
+    if (s.cause) out << "  <- " << *s.cause;
     out << "\n";
   }
 }
@@ -224,11 +227,11 @@ int compare(const std::vector<std::string>& files, const Compare_options& o, boo
   json all = json::array();
   for (const auto& f : files) {
     Scene scene;
-    if (int s = load(f, scene, err)) { status = CLASH4D_EXIT_INVALID; (void)s; continue; }
+    if (load(f, scene, err)) { status = CLASH4D_EXIT_INVALID; continue; }
     int s = guarded(f, err, [&] {
-      json c = compare_scene(scene, f, o);
-      if (as_json) all.push_back(c); else print_comparison(c, out);
-      return c["disagreements"].empty() ? 0 : 1;
+      Comparison c = compare_scene(scene, f, o);
+      if (as_json) all.push_back(c.to_json()); else print_comparison(c, out);
+      return c.has_disagreement() ? 1 : 0;
     });
     if (s == 1 && status == 0) status = 1;
     if (s > 1) status = s;
@@ -251,17 +254,10 @@ int generate(int n, int colliding, std::uint64_t seed, const std::string& file, 
     out << g.json;
     return 0;
   }
-  std::string tmp = file + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    f << g.json;
-    if (!f.flush()) {
-      err << "clash4d generate: cannot write " << tmp << "\n";
-      return CLASH4D_EXIT_INVALID;
-    }
-  }
-  if (std::rename(tmp.c_str(), file.c_str()) != 0) {
-    err << "clash4d generate: cannot rename " << tmp << " to " << file << "\n";
+  try {
+    write_file_atomically(file, g.json);
+  } catch (const std::runtime_error& e) {
+    err << "clash4d generate: " << e.what() << "\n";
     return CLASH4D_EXIT_INVALID;
   }
   out << file << ": " << n << " blocks; colliding by construction:";

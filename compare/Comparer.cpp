@@ -19,14 +19,13 @@
 namespace clash4d {
 namespace {
 
-using json = nlohmann::ordered_json;
-
 struct Run {
   std::string subject;
   bool exact_numbers = true;      // witness strings are rationals (else doubles)
   bool ok = true;
   std::string error;
   std::string skipped;            // why the subject did not run (fcl: scene not expressible)
+  std::optional<double> tolerance;
   Check_answer answer;
   double seconds = 0;
 };
@@ -116,11 +115,11 @@ bool hinges_on_contact(const Scene& scene, const std::vector<int>& objects, bool
   return false;
 }
 
-// A subject without points (fcl) leaves them empty: null.
-json point_json(const std::array<std::string, 4>& p)
+// A subject without points (fcl) leaves them empty: none.
+std::optional<std::array<std::string, 4>> point_of(const std::array<std::string, 4>& p)
 {
-  if (p[0].empty()) return json();
-  return json::array({p[0], p[1], p[2], p[3]});
+  if (p[0].empty()) return std::nullopt;
+  return p;
 }
 
 // FCL's answer, or the subject skipped with the reason FCL cannot express
@@ -172,15 +171,41 @@ Scene rounded_scene(const Scene& scene)
   return read_scene(read_json_text(write_scene(r)));
 }
 
-json compare_scene(const Scene& scene, const std::string& file, const Compare_options& options)
+namespace {
+
+// The answer fields of a row that ran: verdict, witness (checked exactly
+// against the true scene), t* and its error against exact's.
+void fill_answer(Subject_row& s, const Run& r, const Run& exact, const Scene& scene,
+                 const Scene_model<Rational_kernel>& model)
+{
+  const Check_answer& a = r.answer;
+  if (r.ok) s.collide = a.collide;
+  const Pair_answer* main = a.reported();
+  if (!main) return;
+  s.witness = Located{{main->a, main->b}, point_of(main->witness), ""};
+  if (s.witness->point) s.witness_valid = witness_valid(model, scene, r);
+  if (!main->earliest) return;
+  s.earliest = Located{{main->a, main->b}, point_of(main->contact), main->t_star};
+  const Pair_answer* ref = exact.answer.reported();
+  if (ref && ref->earliest) {
+    Rational e = value_of(main->t_star, r.exact_numbers) - value_of(ref->t_star, true);
+    s.t_error = decimal(e < 0 ? Rational(-e) : e);
+  }
+}
+
+} // namespace
+
+Comparison compare_scene(const Scene& scene, const std::string& file, const Compare_options& options)
 {
   Check_options co;
   co.earliest = options.earliest;
   std::vector<Run> runs;
   runs.push_back(timed("exact", true, [&] { return check_exact(scene, co); }));
   runs.push_back(timed("double", false, [&] { return check_double(scene, 0, co); }));
-  for (double tol : options.tolerances)
+  for (double tol : options.tolerances) {
     runs.push_back(timed(tolerance_subject(tol), false, [&] { return check_double(scene, tol, co); }));
+    runs.back().tolerance = tol;
+  }
   if (options.rounded)
     runs.push_back(timed("exact-rounded", true, [&] { return check_exact(rounded_scene(scene), co); }));
   if (options.fcl) runs.push_back(fcl_run(scene, co));
@@ -193,34 +218,27 @@ json compare_scene(const Scene& scene, const std::string& file, const Compare_op
   bool rounding_differs = rounded && (!rounded->ok || rounded->answer.collide != exact.answer.collide);
   int contact = -1;   // computed on first need
 
-  json subjects = json::array(), disagreements = json::array();
+  Comparison out;
+  out.file = file;
+  out.name = scene.name;
   for (const Run& r : runs) {
-    json s = {{"subject", r.subject}, {"reference", &r == &exact}, {"ok", r.ok}, {"error", r.error},
-              {"skipped", r.skipped.empty() ? json() : json(r.skipped)}};
+    Subject_row s;
+    s.subject = r.subject;
+    s.semantics = builtin_semantics(r.subject);
+    s.tolerance = r.tolerance;
+    s.reference = &r == &exact;
+    s.ok = r.ok;
+    s.error = r.error;
+    s.seconds = r.seconds;
     if (!r.skipped.empty()) {   // no answer: nothing to hold against exact
-      for (const char* key : {"collide", "witness", "witness_valid", "earliest", "t_error"}) s[key] = json();
-      s["seconds"] = r.seconds;
-      s["agrees"] = json();
-      s["cause"] = json();
-      subjects.push_back(s);
+      s.skipped = r.skipped;
+      out.subjects.push_back(s);
       continue;
     }
-    const Check_answer& a = r.answer;
-    s["collide"] = r.ok ? json(a.collide) : json();
-    const Pair_answer* main = a.reported();
-    bool has_point = main && !main->witness[0].empty();
-    s["witness"] = main ? json{{"objects", {main->a, main->b}}, {"point", point_json(main->witness)}} : json();
-    s["witness_valid"] = has_point ? json(witness_valid(model, scene, r)) : json();
-    s["earliest"] = main && main->earliest ? json{{"objects", {main->a, main->b}}, {"t", main->t_star}, {"point", point_json(main->contact)}} : json();
-    s["t_error"] = json();
-    const Pair_answer* ref = exact.answer.reported();
-    if (main && ref && main->earliest && ref->earliest) {
-      Rational e = value_of(main->t_star, r.exact_numbers) - value_of(ref->t_star, true);
-      s["t_error"] = decimal(e < 0 ? Rational(-e) : e);
-    }
-    s["seconds"] = r.seconds;
+    fill_answer(s, r, exact, scene, model);
+    const Pair_answer *main = r.answer.reported(), *ref = exact.answer.reported();
     std::string cause, detail;
-    if (&r != &exact && r.ok && a.collide != exact.answer.collide) {
+    if (&r != &exact && r.ok && r.answer.collide != exact.answer.collide) {
       std::vector<int> pair;
       for (const Pair_answer* p : {main, ref})
         if (p) pair = {object_index(scene, p->a), object_index(scene, p->b)};
@@ -229,43 +247,36 @@ json compare_scene(const Scene& scene, const std::string& file, const Compare_op
         if (contact < 0) contact = hinges_on_contact(scene, pair, exact.answer.collide) ? 1 : 0;
         cause = contact ? "contact" : "arithmetic";
       }
-      detail = r.subject + " says " + (a.collide ? "collision" : "no collision") + ", exact says " +
+      detail = r.subject + " says " + (r.answer.collide ? "collision" : "no collision") + ", exact says " +
                (exact.answer.collide ? "collision" : "no collision");
-    } else if (&r != &exact && r.ok && has_point && !s["witness_valid"].get<bool>()) {
+    } else if (&r != &exact && r.ok && s.witness_valid == false) {
       cause = "invalid witness";
       detail = r.subject + "'s witness is not strictly inside both objects of the true scene";
-    } else if (!r.ok) {
-      detail = r.subject + " failed: " + r.error;
     }
-    s["agrees"] = r.ok && cause.empty();
-    s["cause"] = cause.empty() ? json() : json(cause);
-    if (!cause.empty()) disagreements.push_back({{"subject", r.subject}, {"cause", cause}, {"detail", detail}});
-    subjects.push_back(s);
+    s.agrees = r.ok && cause.empty();
+    if (!cause.empty()) {
+      s.cause = cause;
+      out.disagreements.push_back({r.subject, cause, detail});
+    }
+    out.subjects.push_back(s);
   }
-  json out = {{"file", file}, {"name", scene.name}};
-  // near_contact: the exact verdict flips under a tiny move (null: not needed);
-  // closed_touch: so, and exact says no collision (the closed objects meet or
-  // nearly meet while the regularised intersection is empty).
-  out["near_contact"] = contact < 0 ? json() : json(contact == 1);
-  out["closed_touch"] = contact < 0 ? json() : json(contact == 1 && !exact.answer.collide);
-  out["subjects"] = subjects;
-  out["disagreements"] = disagreements;
+  // near_contact: the exact verdict flips under a tiny move (none: not
+  // needed); closed_touch: so, and exact says no collision (the closed
+  // objects meet or nearly meet while the regularised intersection is empty).
+  if (contact >= 0) {
+    out.near_contact = contact == 1;
+    out.closed_touch = contact == 1 && !exact.answer.collide;
+  }
   return out;
 }
+
+const char* builtin_semantics(const std::string& subject) { return subject == "fcl" ? "closed" : "regularised"; }
 
 std::string tolerance_subject(double tol)
 {
   std::ostringstream name;
   name << "double tol=" << tol;
   return name.str();
-}
-
-std::vector<std::string> disagreement_keys(const json& comparison)
-{
-  std::vector<std::string> keys;
-  for (const auto& d : comparison["disagreements"])
-    keys.push_back(d["subject"].get<std::string>() + ": " + d["cause"].get<std::string>());
-  return keys;
 }
 
 } // namespace clash4d

@@ -26,8 +26,8 @@
 #ifndef CLASH4D_COMPARE_COMPARER_H
 #define CLASH4D_COMPARE_COMPARER_H
 
+#include "compare/Comparison.h"
 #include "scene/Scene.h"
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -40,8 +40,8 @@ struct Compare_options {
   bool fcl = false;                       // run the fcl subject (skipped where FCL cannot express the scene)
 };
 
-// One comparison object (schema in compare/README.md).
-nlohmann::ordered_json compare_scene(const Scene& scene, const std::string& file, const Compare_options& options);
+// The comparison of every subject with exact (JSON form in compare/README.md).
+Comparison compare_scene(const Scene& scene, const std::string& file, const Compare_options& options);
 
 // The scene with every number replaced by the exact value of its nearest
 // double, re-validated; throws Input_error when the rounded scene is invalid
@@ -51,8 +51,9 @@ Scene rounded_scene(const Scene& scene);
 // The name of the double subject with tolerance tol ("double tol=1e-09").
 std::string tolerance_subject(double tol);
 
-// The disagreements of a comparison object, as "subject: cause" strings.
-std::vector<std::string> disagreement_keys(const nlohmann::ordered_json& comparison);
+// The semantics a built-in subject decides in: the toolkit's pipelines the
+// regularised question, FCL the closed one (it counts touching).
+const char* builtin_semantics(const std::string& subject);
 
 } // namespace clash4d
 

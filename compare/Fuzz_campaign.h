@@ -47,12 +47,13 @@ struct Fuzz_summary {
 // naming the file on I/O problems or a DIR that holds another campaign.
 Fuzz_summary run_fuzz(const Fuzz_options& options, std::ostream& err);
 
+// The comparison saved in a finding file's meta (its JSON `finding`, read
+// from `path`); throws std::runtime_error naming the file when it has none.
+Comparison finding_comparison(const nlohmann::ordered_json& finding, const std::string& path);
+
 // Joins the findings of several campaign folders into `out`, with a
 // summary.json of counts by family, subject and cause.
 Fuzz_summary merge_fuzz(const std::vector<std::string>& dirs, const std::string& out);
-
-// Writes text to path through a temporary file and a rename.
-void write_file_atomically(const std::string& path, const std::string& text);
 
 } // namespace clash4d
 

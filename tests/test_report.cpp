@@ -17,7 +17,7 @@ namespace {
 
 Report_case make_case(const std::string& file, const std::string& scene, const std::string& comparison)
 {
-  return {file, read_scene(read_json_text(scene)), json::parse(comparison)};
+  return {file, read_scene(read_json_text(scene)), Comparison::from_json(json::parse(comparison))};
 }
 
 // A ram moving in -x hits a box at t = 2: every subject agrees.
