@@ -1,15 +1,46 @@
 #include "cli/Campaign_commands.h"
+#include "compare/External_subject.h"
 #include "compare/Report_writer.h"
 #include "scene/Input_error.h"
 #include "scene/Files.h"
 #include "scene/Scene_reader.h"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <filesystem>
 #include <ostream>
 
 namespace clash4d {
 namespace fs = std::filesystem;
+
+void add_subject_options(CLI::App& command, Subject_args& args)
+{
+  command.add_option("--subject", args.subjects,
+                     "NAME=COMMAND: an external collision engine run by /bin/sh -c COMMAND, speaking the protocol of "
+                     "docs/subject-protocol.md; repeatable. '--subject fcl' is the built-in FCL subject (same as --fcl)");
+  command.add_option("--subject-timeout", args.timeout_seconds,
+                     "seconds an external subject may take per request before it is killed and restarted (default 10)")
+      ->check(CLI::PositiveNumber);
+}
+
+bool apply_subject_args(const Subject_args& args, Compare_options& o, const char* command, std::ostream& err)
+{
+  std::vector<std::string> names;
+  for (const auto& text : args.subjects) {
+    if (text == "fcl") { o.fcl = true; continue; }
+    try {
+      Subject_spec spec = parse_subject_spec(text, args.timeout_seconds);
+      if (std::find(names.begin(), names.end(), spec.name) != names.end())
+        throw std::invalid_argument("--subject: two subjects are named '" + spec.name + "'");
+      names.push_back(spec.name);
+      o.externals.push_back(std::make_shared<External_pool>(spec));
+    } catch (const std::invalid_argument& e) {
+      err << "clash4d " << command << ": " << e.what() << "\n";
+      return false;
+    }
+  }
+  return true;
+}
 
 int fuzz_command(const Fuzz_options& options, std::ostream& out, std::ostream& err)
 {

@@ -7,7 +7,22 @@
 #include <string>
 #include <vector>
 
+namespace CLI {
+class App;
+}
+
 namespace clash4d {
+
+// --subject NAME=COMMAND (repeatable) and --subject-timeout, shared by
+// compare, fuzz and report.
+struct Subject_args {
+  std::vector<std::string> subjects;
+  double timeout_seconds = 10;
+};
+void add_subject_options(CLI::App& command, Subject_args& args);
+// Adds the subjects to o (external processes; "fcl" is the built-in FCL
+// subject, as --fcl); false after a message naming the argument when one is wrong.
+bool apply_subject_args(const Subject_args& args, Compare_options& o, const char* command, std::ostream& err);
 
 int fuzz_command(const Fuzz_options& options, std::ostream& out, std::ostream& err);
 int merge_command(const std::vector<std::string>& dirs, const std::string& out_dir, std::ostream& out, std::ostream& err);

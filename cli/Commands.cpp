@@ -317,6 +317,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   bool compare_fcl = false;
   compare_cmd->add_flag("--fcl", compare_fcl, "also run FCL's continuous collision (the fcl subject) where FCL can express the scene; skipped with the reason elsewhere");
   compare_cmd->add_flag("--json", as_json, "print one JSON object per scene in a list");
+  Subject_args compare_subjects, fuzz_subjects, report_subjects;
+  add_subject_options(*compare_cmd, compare_subjects);
 
   Fuzz_options fuzz;
   std::string shard = "1/1";
@@ -330,12 +332,14 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   fuzz_cmd->add_option("--tolerance", fuzz_tolerances, "double subjects with tolerance EPS (default 1e-9)")->check(CLI::PositiveNumber);
   fuzz_cmd->add_option("--merge", merge_dirs, "join these fuzz output folders into --out instead of running");
   fuzz_cmd->add_flag("--fcl", fuzz.compare.fcl, "also run the fcl subject (FCL's continuous collision) on the cases FCL can express");
+  add_subject_options(*fuzz_cmd, fuzz_subjects);
 
   std::vector<std::string> report_inputs;
   std::string report_out;
   auto* report_cmd = app.add_subcommand("report", "Compare scenes (files, folders, fuzz outputs) and write DIR/index.html, report.json and junit.xml.");
   report_cmd->add_option("INPUT", report_inputs, "scene files, folders of scenes, or fuzz output folders")->required();
   report_cmd->add_option("--out", report_out, "output folder")->required();
+  add_subject_options(*report_cmd, report_subjects);
 
   int grid_n = 0, grid_colliding = 0;
   std::uint64_t grid_seed = 1;
@@ -373,12 +377,14 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
       return CLASH4D_EXIT_INVALID;
     }
     if (!fuzz_tolerances.empty()) fuzz.compare.tolerances = fuzz_tolerances;
+    if (!apply_subject_args(fuzz_subjects, fuzz.compare, "fuzz", err)) return CLASH4D_EXIT_INVALID;
     fuzz.progress = isatty(fileno(stderr)) != 0;
     return fuzz_command(fuzz, out, err);
   }
   if (report_cmd->parsed()) {
     Compare_options o;
     o.earliest = true;
+    if (!apply_subject_args(report_subjects, o, "report", err)) return CLASH4D_EXIT_INVALID;
     return report_command(report_inputs, report_out, o, out, err);
   }
   if (compare_cmd->parsed()) {
@@ -386,6 +392,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     if (!compare_tolerances.empty()) o.tolerances = compare_tolerances;
     o.earliest = compare_earliest;
     o.fcl = compare_fcl;
+    if (!apply_subject_args(compare_subjects, o, "compare", err)) return CLASH4D_EXIT_INVALID;
     return compare(compare_files, o, as_json, out, err);
   }
   if (check_cmd->parsed() && tolerance != 0 && number != "double") {

@@ -1,4 +1,5 @@
 #include "compare/Comparer.h"
+#include "compare/External_subject.h"
 #include "compare/Fcl_subject.h"
 #include "core/Point_classifier.h"
 #include "exact/Exact_instantiation.h"
@@ -22,9 +23,12 @@ namespace {
 struct Run {
   std::string subject;
   bool exact_numbers = true;      // witness strings are rationals (else doubles)
+  bool reads_doubles = false;     // it sees the scene's numbers as doubles (input rounding applies)
   bool ok = true;
   std::string error;
+  std::string fault;              // external subject: crash, timeout or protocol
   std::string skipped;            // why the subject did not run (fcl: scene not expressible)
+  std::string semantics = "regularised";
   std::optional<double> tolerance;
   Check_answer answer;
   double seconds = 0;
@@ -36,6 +40,7 @@ Run timed(const std::string& subject, bool exact_numbers, F f)
   Run r;
   r.subject = subject;
   r.exact_numbers = exact_numbers;
+  r.reads_doubles = !exact_numbers;
   auto start = std::chrono::steady_clock::now();
   try {
     r.answer = f();
@@ -64,9 +69,62 @@ int object_index(const Scene& s, const std::string& name)
 bool witness_valid(const Scene_model<Rational_kernel>& model, const Scene& scene, const Run& r)
 {
   const Pair_answer& p = *r.answer.reported();
+  int a = object_index(scene, p.a), b = object_index(scene, p.b);
+  if (a < 0 || b < 0) return false;   // an external subject's point inside no pair
   Vector4<Rational> w;
   for (int i = 0; i < 4; ++i) w[i] = value_of(p.witness[i], r.exact_numbers);
-  return is_valid_witness(Rational_kernel(), model, object_index(scene, p.a), object_index(scene, p.b), w);
+  return is_valid_witness(Rational_kernel(), model, a, b, w);
+}
+
+// The pair (names) whose objects both hold the point strictly, or none:
+// external subjects give a point, not a pair.
+std::array<std::string, 2> pair_holding(const Scene_model<Rational_kernel>& model, const Scene& scene,
+                                        const std::array<std::string, 4>& point)
+{
+  Vector4<Rational> w;
+  for (int i = 0; i < 4; ++i) w[i] = parse_number_text(point[i], true).value;
+  for (std::size_t a = 0; a < scene.objects.size(); ++a)
+    for (std::size_t b = a + 1; b < scene.objects.size(); ++b)
+      if (!scene.ignored(int(a), int(b)) && is_valid_witness(Rational_kernel(), model, int(a), int(b), w))
+        return {scene.objects[a].name, scene.objects[b].name};
+  return {"", ""};
+}
+
+// An external subject's answer as a run: unsupported is skipped, a fault
+// fails with its cause; its numbers are exact (read from its text).
+Run external_run(External_pool& pool, const Scene& scene, const Scene_model<Rational_kernel>& model, bool earliest)
+{
+  External_pool::Lease subject = pool.acquire();
+  Run r;
+  r.subject = pool.spec().name;
+  r.reads_doubles = true;   // engines read the scene's numbers as doubles, as a rule
+  auto start = std::chrono::steady_clock::now();
+  Subject_answer a = subject->ask(scene, earliest);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.semantics = subject->semantics();
+  r.tolerance = subject->tolerance();
+  r.answer.number = r.subject;
+  if (a.kind == Subject_answer::Kind::Unsupported) r.skipped = "unsupported: " + a.why;
+  if (a.kind == Subject_answer::Kind::Fault) {
+    r.ok = false;
+    r.fault = a.fault;
+    r.error = a.why;
+  }
+  if (a.kind != Subject_answer::Kind::Answer || !a.collide) return r;
+  r.answer.collide = true;
+  Pair_answer p;
+  if (a.witness) {
+    p.witness = *a.witness;
+    std::array<std::string, 2> names = pair_holding(model, scene, *a.witness);
+    p.a = names[0];
+    p.b = names[1];
+  }
+  if (a.t) {
+    p.earliest = true;
+    p.t_star = *a.t;
+  }
+  r.answer.pairs.push_back(p);
+  return r;
 }
 
 void map_numbers(Solid& s, const std::function<Rational(const Rational&)>& f)
@@ -182,8 +240,8 @@ void fill_answer(Subject_row& s, const Run& r, const Run& exact, const Scene& sc
   if (r.ok) s.collide = a.collide;
   const Pair_answer* main = a.reported();
   if (!main) return;
-  s.witness = Located{{main->a, main->b}, point_of(main->witness), ""};
-  if (s.witness->point) s.witness_valid = witness_valid(model, scene, r);
+  if (!main->a.empty() || !main->witness[0].empty()) s.witness = Located{{main->a, main->b}, point_of(main->witness), ""};
+  if (s.witness && s.witness->point) s.witness_valid = witness_valid(model, scene, r);
   if (!main->earliest) return;
   s.earliest = Located{{main->a, main->b}, point_of(main->contact), main->t_star};
   const Pair_answer* ref = exact.answer.reported();
@@ -193,12 +251,82 @@ void fill_answer(Subject_row& s, const Run& r, const Run& exact, const Scene& sc
   }
 }
 
-} // namespace
+// What the classification of one comparison needs, computed once.
+struct Reference {
+  const Scene& scene;
+  const Run& exact;
+  const Run* rounded;
+  bool rounding_differs;
+  int contact = -1;   // the exact verdict flips under a tiny move: computed on first need
+};
 
-Comparison compare_scene(const Scene& scene, const std::string& file, const Compare_options& options)
+// The objects a verdict hinges on: the pairs named by the subject and by
+// exact; every object when neither names one (an external subject's bare "yes").
+std::vector<int> objects_at_stake(const Scene& scene, const Pair_answer* main, const Pair_answer* ref)
 {
-  Check_options co;
-  co.earliest = options.earliest;
+  std::vector<int> pair;
+  for (const Pair_answer* p : {main, ref})
+    if (p && object_index(scene, p->a) >= 0 && object_index(scene, p->b) >= 0)
+      pair = {object_index(scene, p->a), object_index(scene, p->b)};
+  if (pair.empty())
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) pair.push_back(static_cast<int>(i));
+  return pair;
+}
+
+// The cause of a subject's disagreement with exact (empty: none), with the detail.
+std::string classify(const Run& r, const Subject_row& s, Reference& ref, std::string& detail)
+{
+  const Run& exact = ref.exact;
+  if (&r == &exact) return "";
+  if (!r.fault.empty()) {
+    detail = r.subject + ": " + r.fault + ": " + r.error;
+    return r.fault;
+  }
+  if (!r.ok) return "";
+  if (r.answer.collide != exact.answer.collide) {
+    detail = r.subject + " says " + (r.answer.collide ? "collision" : "no collision") + ", exact says " +
+             (exact.answer.collide ? "collision" : "no collision");
+    if (&r == ref.rounded || (ref.rounding_differs && r.reads_doubles)) return "input rounding";
+    // Until the exact pipeline decides the closed question too, a closed
+    // subject's touching answers are classified as anyone's: contact.
+    if (ref.contact < 0)
+      ref.contact = hinges_on_contact(ref.scene, objects_at_stake(ref.scene, r.answer.reported(), exact.answer.reported()),
+                                      exact.answer.collide) ? 1 : 0;
+    return ref.contact ? "contact" : "arithmetic";
+  }
+  if (s.witness_valid == false) {
+    detail = r.subject + "'s witness is not strictly inside both objects of the true scene";
+    return "invalid witness";
+  }
+  return "";
+}
+
+Subject_row row_of(const Run& r, Reference& ref, const Scene_model<Rational_kernel>& model, std::vector<Disagreement>& list)
+{
+  Subject_row s;
+  s.subject = r.subject;
+  s.semantics = r.semantics;
+  s.tolerance = r.tolerance;
+  s.reference = &r == &ref.exact;
+  s.ok = r.ok;
+  s.error = r.error;
+  s.seconds = r.seconds;
+  if (!r.skipped.empty()) {   // no answer: nothing to hold against exact
+    s.skipped = r.skipped;
+    return s;
+  }
+  fill_answer(s, r, ref.exact, ref.scene, model);
+  std::string detail, cause = classify(r, s, ref, detail);
+  s.agrees = r.ok && cause.empty();
+  if (!cause.empty()) {
+    s.cause = cause;
+    list.push_back({r.subject, cause, detail});
+  }
+  return s;
+}
+
+std::vector<Run> builtin_runs(const Scene& scene, const Compare_options& options, const Check_options& co)
+{
   std::vector<Run> runs;
   runs.push_back(timed("exact", true, [&] { return check_exact(scene, co); }));
   runs.push_back(timed("double", false, [&] { return check_double(scene, 0, co); }));
@@ -209,63 +337,36 @@ Comparison compare_scene(const Scene& scene, const std::string& file, const Comp
   if (options.rounded)
     runs.push_back(timed("exact-rounded", true, [&] { return check_exact(rounded_scene(scene), co); }));
   if (options.fcl) runs.push_back(fcl_run(scene, co));
+  for (Run& r : runs) r.semantics = builtin_semantics(r.subject);
+  return runs;
+}
 
-  auto rounded_run = std::find_if(runs.begin(), runs.end(), [](const Run& r) { return r.subject == "exact-rounded"; });
-  const Run* rounded = rounded_run != runs.end() ? &*rounded_run : nullptr;
-  const Run& exact = runs[0];
-  if (!exact.ok) throw std::runtime_error("the exact subject failed: " + exact.error);
+} // namespace
+
+Comparison compare_scene(const Scene& scene, const std::string& file, const Compare_options& options)
+{
+  Check_options co;
+  co.earliest = options.earliest;
+  std::vector<Run> runs = builtin_runs(scene, options, co);
+  if (!runs[0].ok) throw std::runtime_error("the exact subject failed: " + runs[0].error);
   Scene_model<Rational_kernel> model = Scene_model<Rational_kernel>::build(Rational_kernel(), scene);
-  bool rounding_differs = rounded && (!rounded->ok || rounded->answer.collide != exact.answer.collide);
-  int contact = -1;   // computed on first need
+  for (const auto& pool : options.externals) runs.push_back(external_run(*pool, scene, model, options.earliest));
+
+  auto rounded = std::find_if(runs.begin(), runs.end(), [](const Run& r) { return r.subject == "exact-rounded"; });
+  const Run& exact = runs[0];
+  Reference ref{scene, exact, rounded != runs.end() ? &*rounded : nullptr, false};
+  ref.rounding_differs = ref.rounded && (!ref.rounded->ok || ref.rounded->answer.collide != exact.answer.collide);
 
   Comparison out;
   out.file = file;
   out.name = scene.name;
-  for (const Run& r : runs) {
-    Subject_row s;
-    s.subject = r.subject;
-    s.semantics = builtin_semantics(r.subject);
-    s.tolerance = r.tolerance;
-    s.reference = &r == &exact;
-    s.ok = r.ok;
-    s.error = r.error;
-    s.seconds = r.seconds;
-    if (!r.skipped.empty()) {   // no answer: nothing to hold against exact
-      s.skipped = r.skipped;
-      out.subjects.push_back(s);
-      continue;
-    }
-    fill_answer(s, r, exact, scene, model);
-    const Pair_answer *main = r.answer.reported(), *ref = exact.answer.reported();
-    std::string cause, detail;
-    if (&r != &exact && r.ok && r.answer.collide != exact.answer.collide) {
-      std::vector<int> pair;
-      for (const Pair_answer* p : {main, ref})
-        if (p) pair = {object_index(scene, p->a), object_index(scene, p->b)};
-      if (&r == rounded || (rounding_differs && !r.exact_numbers)) cause = "input rounding";
-      else {
-        if (contact < 0) contact = hinges_on_contact(scene, pair, exact.answer.collide) ? 1 : 0;
-        cause = contact ? "contact" : "arithmetic";
-      }
-      detail = r.subject + " says " + (r.answer.collide ? "collision" : "no collision") + ", exact says " +
-               (exact.answer.collide ? "collision" : "no collision");
-    } else if (&r != &exact && r.ok && s.witness_valid == false) {
-      cause = "invalid witness";
-      detail = r.subject + "'s witness is not strictly inside both objects of the true scene";
-    }
-    s.agrees = r.ok && cause.empty();
-    if (!cause.empty()) {
-      s.cause = cause;
-      out.disagreements.push_back({r.subject, cause, detail});
-    }
-    out.subjects.push_back(s);
-  }
+  for (const Run& r : runs) out.subjects.push_back(row_of(r, ref, model, out.disagreements));
   // near_contact: the exact verdict flips under a tiny move (none: not
   // needed); closed_touch: so, and exact says no collision (the closed
   // objects meet or nearly meet while the regularised intersection is empty).
-  if (contact >= 0) {
-    out.near_contact = contact == 1;
-    out.closed_touch = contact == 1 && !exact.answer.collide;
+  if (ref.contact >= 0) {
+    out.near_contact = ref.contact == 1;
+    out.closed_touch = ref.contact == 1 && !exact.answer.collide;
   }
   return out;
 }

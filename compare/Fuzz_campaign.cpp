@@ -1,5 +1,6 @@
 #include "compare/Fuzz_campaign.h"
 #include "compare/Contact_families.h"
+#include "compare/External_subject.h"
 #include "compare/Shrinker.h"
 #include "scene/Files.h"
 #include "scene/Json_reader.h"
@@ -26,6 +27,11 @@ json campaign_json(const Fuzz_options& o)
 {
   json c = {{"format", "clash4d-fuzz/1"}, {"seed", o.seed}, {"cases", o.cases}, {"tolerances", o.compare.tolerances}};
   if (o.compare.fcl) c["fcl"] = true;   // only when on, so folders of campaigns without it still match
+  if (!o.compare.externals.empty()) {
+    c["subjects"] = json::array();
+    for (const auto& pool : o.compare.externals)
+      c["subjects"].push_back({{"name", pool->spec().name}, {"command", pool->spec().command}});
+  }
   return c;
 }
 
@@ -37,7 +43,7 @@ void prepare(const Fuzz_options& o)
   json want = campaign_json(o);
   if (fs::exists(path)) {
     if (read_json_document(path) != want)
-      throw std::runtime_error(path + ": this folder holds another campaign (seed, cases, tolerances or --fcl differ)");
+      throw std::runtime_error(path + ": this folder holds another campaign (seed, cases, tolerances, --fcl or --subject differ)");
   } else {
     write_file_atomically(path, want.dump(2) + "\n");
   }
@@ -72,6 +78,30 @@ json finding_meta(const Fuzz_options& o, const std::string& family, std::uint64_
           {"disagreements", disagreements}, {"comparison", comparison.reproducible().to_json()}};
 }
 
+// Faults of an external subject: kept as they are (a fault may depend on the
+// process's history, and each retry of a time-out costs the time limit).
+bool is_fault(const std::string& cause) { return cause == "crash" || cause == "timeout" || cause == "protocol"; }
+
+// Shrinks while the first disagreement (same subject, same cause) persists,
+// running only the subjects that decide it.
+Scene shrink(const Fuzz_options& o, const Scene& scene, const Disagreement& first)
+{
+  std::string key = first.subject + ": " + first.cause;
+  Compare_options narrow = o.compare;
+  narrow.tolerances.clear();
+  for (double tol : o.compare.tolerances)
+    if (first.subject == tolerance_subject(tol)) narrow.tolerances.push_back(tol);
+  narrow.fcl = o.compare.fcl && first.subject == "fcl";
+  narrow.externals.clear();
+  for (const auto& pool : o.compare.externals)
+    if (pool->spec().name == first.subject) narrow.externals.push_back(pool);
+  auto still_fails = [&](const Scene& candidate) {
+    std::vector<std::string> k = compare_scene(candidate, "", narrow).disagreement_keys();
+    return std::find(k.begin(), k.end(), key) != k.end();
+  };
+  return shrink_scene(scene, still_fails, o.max_shrink_checks);
+}
+
 // Compares one case; on disagreement saves it, shrinks it, saves the minimum.
 bool run_case(const Fuzz_options& o, std::uint64_t index)
 {
@@ -81,23 +111,13 @@ bool run_case(const Fuzz_options& o, std::uint64_t index)
   Comparison comparison = compare_scene(scene, name, o.compare);
   if (!comparison.has_disagreement()) return false;
   write_file_atomically(finding_path(o, index, ".json"), write_scene(scene, finding_meta(o, c.family, index, comparison)));
-  // Shrink while the first disagreement (same subject, same cause) persists,
-  // running only the subjects that decide it.
   const Disagreement& first = comparison.disagreements.front();
-  std::string key = comparison.disagreement_keys().front();
-  Compare_options narrow = o.compare;
-  narrow.tolerances.clear();
-  for (double tol : o.compare.tolerances)
-    if (first.subject == tolerance_subject(tol)) narrow.tolerances.push_back(tol);
-  narrow.fcl = o.compare.fcl && first.subject == "fcl";
-  auto still_fails = [&](const Scene& candidate) {
-    std::vector<std::string> k = compare_scene(candidate, "", narrow).disagreement_keys();
-    return std::find(k.begin(), k.end(), key) != k.end();
-  };
-  Scene small = shrink_scene(scene, still_fails, o.max_shrink_checks);
-  json meta = finding_meta(o, c.family, index, compare_scene(small, name + ".min", o.compare));
+  bool fault = is_fault(first.cause);
+  Scene small = fault ? scene : shrink(o, scene, first);
+  json meta = finding_meta(o, c.family, index, fault ? comparison : compare_scene(small, name + ".min", o.compare));
   meta["shrunk_from"] = name + ".json";
   meta["disagreement"] = disagreement_meta(comparison, first);
+  if (fault) meta["not_shrunk"] = "a subject's crash, time-out or protocol fault may depend on its state";
   write_file_atomically(finding_path(o, index, ".min.json"), write_scene(small, meta));
   return true;
 }
