@@ -11,6 +11,7 @@
 #include "compare/Comparer.h"
 #include "compare/External_subject.h"
 #include "compare/Fuzz_campaign.h"
+#include "scene/Scene_builder.h"
 #include "scene/Scene_reader.h"
 
 #include <nlohmann/json.hpp>
@@ -200,3 +201,35 @@ BOOST_AUTO_TEST_CASE(subject_arguments_are_checked)
   BOOST_TEST(run({"compare", fixture("contact/face_touch_static.json"), "--subject", "a=x", "--subject", "a=y"}).status == 2);
   BOOST_TEST(run({"compare", fixture("contact/face_touch_static.json"), "--subject", "a=x", "--subject-timeout", "0"}).status == 2);
 }
+
+#ifdef CLASH4D_PYTHON
+// The naive sampling engine of examples/subjects: a block passing through a
+// thin wall between two of its 21 instants tunnels (exact: collision, it:
+// none, far from contact: arithmetic); faces touching at rest are a
+// collision to it (closed, with tolerance): contact.
+BOOST_AUTO_TEST_CASE(the_python_sampling_subject_tunnels_and_counts_touching)
+{
+  fs::path dir = fs::temp_directory_path() / ("clash4d_test_python_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::string tunnel = (dir / "tunnel.json").string(), touch = (dir / "touch.json").string();
+  std::ofstream(tunnel) << Scene_builder("bullet through a wall", 0, 1)
+                               .object("wall", block(vec(0, 0, 0), vec(Rational(1, 10), 1, 1)))
+                               .object("bullet", block(vec(Rational(-523, 100), 0, 0), vec(Rational(-513, 100), 1, 1)),
+                                       steady(vec(10, 0, 0)))
+                               .text();
+  std::ofstream(touch) << Scene_builder("faces touching", 0, 1)
+                              .object("a", block(vec(0, 0, 0), vec(1, 1, 1)))
+                              .object("b", block(vec(1, 0, 0), vec(2, 1, 1)))
+                              .text();
+  json all = compare_json({tunnel, touch}, std::string(CLASH4D_PYTHON) + " " + CLASH4D_SOURCE "/examples/subjects/sampling_subject.py");
+  const json &t = row(all[0], "s"), &c = row(all[1], "s");
+  BOOST_TEST(row(all[0], "exact")["collide"] == true);
+  BOOST_TEST(t["collide"] == false);
+  BOOST_TEST(t["cause"] == "arithmetic");
+  BOOST_TEST(t["semantics"] == "closed");
+  BOOST_TEST(row(all[1], "exact")["collide"] == false);
+  BOOST_TEST(c["collide"] == true);
+  BOOST_TEST(c["cause"] == "contact");
+  fs::remove_all(dir);
+}
+#endif
