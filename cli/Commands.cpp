@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <cstdlib>
 #include <unistd.h>
 #include <ostream>
 
@@ -321,13 +322,17 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   add_subject_options(*compare_cmd, compare_subjects);
 
   Fuzz_options fuzz;
-  std::string shard = "1/1";
+  std::string shard;
+  std::uint64_t shard_count = 0;
   std::vector<std::string> merge_dirs;
   std::vector<double> fuzz_tolerances;
   auto* fuzz_cmd = app.add_subcommand("fuzz", "A deterministic campaign of contact cases against exact arithmetic; saves and shrinks every disagreement in DIR (resumable; exit 1 when any finding).");
   fuzz_cmd->add_option("--seed", fuzz.seed, "campaign seed");
   fuzz_cmd->add_option("--cases", fuzz.cases, "number of cases in the whole campaign");
-  fuzz_cmd->add_option("--shard", shard, "K/S: run the K-th of S disjoint parts (default 1/1)");
+  fuzz_cmd->add_option("--shard", shard, "K/S: run the K-th of S disjoint parts (default: from the scheduler, else 1/1)");
+  fuzz_cmd->add_option("--shard-count", shard_count,
+                       "S, without --shard: this is shard K of S with K from SLURM_ARRAY_TASK_ID (minus SLURM_ARRAY_TASK_MIN, "
+                       "plus 1) or JOB_COMPLETION_INDEX (plus 1); Slurm's SLURM_ARRAY_TASK_COUNT gives S when omitted");
   fuzz_cmd->add_option("--out", fuzz.out, "output folder")->required();
   fuzz_cmd->add_option("--tolerance", fuzz_tolerances, "double subjects with tolerance EPS (default 1e-9)")->check(CLI::PositiveNumber);
   fuzz_cmd->add_option("--merge", merge_dirs, "join these fuzz output folders into --out instead of running");
@@ -365,17 +370,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   if (generate_cmd->parsed()) return generate(grid_n, grid_colliding, grid_seed, grid_out, out, err);
   if (fuzz_cmd->parsed()) {
     if (!merge_dirs.empty()) return merge_command(merge_dirs, fuzz.out, out, err);
-    auto slash = shard.find('/');
-    try {
-      fuzz.shard = std::stoull(shard.substr(0, slash));
-      fuzz.shards = slash == std::string::npos ? 0 : std::stoull(shard.substr(slash + 1));
-    } catch (const std::exception&) {
-      fuzz.shards = 0;
-    }
-    if (fuzz.shards == 0 || fuzz.shard == 0 || fuzz.shard > fuzz.shards) {
-      err << "clash4d fuzz: --shard expects K/S with 1 <= K <= S, found '" << shard << "'\n";
-      return CLASH4D_EXIT_INVALID;
-    }
+    if (!resolve_shard(shard, shard_count, std::getenv, fuzz, err)) return CLASH4D_EXIT_INVALID;
     if (!fuzz_tolerances.empty()) fuzz.compare.tolerances = fuzz_tolerances;
     if (!apply_subject_args(fuzz_subjects, fuzz.compare, "fuzz", err)) return CLASH4D_EXIT_INVALID;
     fuzz.progress = isatty(fileno(stderr)) != 0;
