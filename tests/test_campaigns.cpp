@@ -6,7 +6,7 @@
 // at once under GNU parallel, merged, equal a single run byte for byte.
 
 #include "cli/Campaign_commands.h"
-#include "cli/Commands.h"
+#include "support/Cli_run.h"
 #include <boost/test/data/test_case.hpp>
 #include <filesystem>
 #include <fstream>
@@ -92,14 +92,11 @@ std::map<std::string, std::string> contents(const fs::path& dir)
 
 int merge(const fs::path& root, const std::string& prefix, const std::vector<std::string>& parts, const fs::path& out)
 {
-  std::vector<std::string> args{"clash4d", "fuzz", "--merge"};
+  std::vector<std::string> args{"fuzz", "--merge"};
   for (const auto& p : parts) args.push_back((root / (prefix + p)).string());
   args.push_back("--out");
   args.push_back(out.string());
-  std::vector<const char*> argv;
-  for (const auto& a : args) argv.push_back(a.c_str());
-  std::ostringstream o, e;
-  return run_cli(static_cast<int>(argv.size()), argv.data(), o, e);
+  return run_clash4d(args).status;
 }
 
 } // namespace

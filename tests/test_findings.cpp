@@ -5,7 +5,7 @@
 // shrunk forms, generated scenes (spec: `meta`; issue 17 item 4). Driven
 // through the command line in-process, as a user would replay them.
 
-#include "cli/Commands.h"
+#include "support/Cli_run.h"
 #include "compare/Fuzz_campaign.h"
 #include <nlohmann/json.hpp>
 #include <filesystem>
@@ -19,20 +19,8 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-struct Cli_result {
-  int status;
-  std::string out, err;
-};
-
-Cli_result run(std::vector<std::string> args)
-{
-  args.insert(args.begin(), "clash4d");
-  std::vector<const char*> argv;
-  for (const auto& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  int status = run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {status, out.str(), err.str()};
-}
+using Cli_result = Cli_run;
+Cli_result run(std::vector<std::string> args) { return run_clash4d(std::move(args)); }
 
 fs::path fresh(const std::string& name)
 {

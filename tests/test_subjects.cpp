@@ -7,7 +7,7 @@
 // crash, hang or print garbage are findings about the subject, and the run
 // completes with no child process left behind.
 
-#include "cli/Commands.h"
+#include "support/Cli_run.h"
 #include "compare/Comparer.h"
 #include "compare/External_subject.h"
 #include "compare/Fuzz_campaign.h"
@@ -38,20 +38,8 @@ const std::string crash_on_second = hello + "n=0; while read -r line; do " + rea
 const std::string hangs = hello + "while read -r line; do sleep 937; done";
 const std::string garbage = hello + R"(while read -r line; do echo 'collide: maybe'; done)";
 
-struct Cli_result {
-  int status;
-  std::string out, err;
-};
-
-Cli_result run(std::vector<std::string> args)
-{
-  args.insert(args.begin(), "clash4d");
-  std::vector<const char*> argv;
-  for (const auto& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  int status = run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {status, out.str(), err.str()};
-}
+using Cli_result = Cli_run;
+Cli_result run(std::vector<std::string> args) { return run_clash4d(std::move(args)); }
 
 std::string fixture(const std::string& entry) { return std::string(CLASH4D_FIXTURES) + "/" + entry; }
 
