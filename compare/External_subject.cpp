@@ -200,6 +200,12 @@ Subject_answer External_subject::start()
   to_child_ = in[1];
   from_child_ = out[0];
   ::fcntl(to_child_, F_SETFL, ::fcntl(to_child_, F_GETFL) | O_NONBLOCK);
+  return read_hello();
+}
+
+// The first line: {"subject": NAME, "semantics": "closed"|"regularised"[, "tolerance": EPS]}.
+Subject_answer External_subject::read_hello()
+{
   std::string line;
   Subject_answer got = read_line(line, spec_.timeout_seconds);
   if (got.kind == Subject_answer::Kind::Fault) return got;
@@ -210,10 +216,11 @@ Subject_answer External_subject::start()
     return fault("protocol", "the hello line is not JSON (" + e.format("hello") + ")");
   }
   const Json_value* semantics = hello.kind == Kind::Object ? hello.find("semantics") : nullptr;
+  const Json_value* name = hello.kind == Kind::Object ? hello.find("subject") : nullptr;
   if (!semantics || semantics->kind != Kind::String || (semantics->text != "closed" && semantics->text != "regularised") ||
-      !hello.find("subject") || hello.find("subject")->kind != Kind::String ||
-      !unknown_key(hello, {"subject", "semantics", "tolerance"}).empty())
-    return fault("protocol", "the hello line must be {\"subject\": NAME, \"semantics\": \"closed\" or \"regularised\"[, \"tolerance\": EPS]}, found: " + line.substr(0, 200));
+      !name || name->kind != Kind::String || !unknown_key(hello, {"subject", "semantics", "tolerance"}).empty())
+    return fault("protocol", "the hello line must be {\"subject\": NAME, \"semantics\": \"closed\" or \"regularised\"[, "
+                             "\"tolerance\": EPS]}, found: " + line.substr(0, 200));
   semantics_ = semantics->text;
   tolerance_.reset();
   if (const Json_value* tol = hello.find("tolerance")) {
@@ -277,11 +284,11 @@ Subject_answer External_subject::ask(const Scene& scene, bool earliest)
   long id = next_id_++;
   nlohmann::ordered_json request = {{"id", id}, {"scene", scene_json(scene)}, {"earliest", earliest}};
   if (!write_all(request.dump() + "\n")) {
-    // It stopped reading: gone, or stuck; its output says which.
+    // It stopped reading: it is gone (its output has ended), or stuck.
     std::string ignored;
-    Subject_answer f = read_line(ignored, 0.05);
-    if (f.kind == Subject_answer::Kind::Fault) return f;
-    return fault("protocol", "it answered before reading the whole request");
+    Subject_answer gone = read_line(ignored, 0.05);
+    if (gone.kind == Subject_answer::Kind::Fault && gone.fault == "crash") return gone;
+    return fault("timeout", "it did not read the request within the time limit (--subject-timeout)");
   }
   std::string line;
   Subject_answer got = read_line(line, spec_.timeout_seconds);

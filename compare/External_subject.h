@@ -60,6 +60,7 @@ public:
 
 private:
   Subject_answer start();
+  Subject_answer read_hello();
   void stop(bool kill_now);
   Subject_answer fault(const std::string& cause, const std::string& what);
   // A whole line within the deadline; a fault otherwise.

@@ -113,10 +113,15 @@ std::string located_text(const std::optional<Located>& w)
 struct Tally {
   int answers = 0, agreements = 0, disagreements = 0, errors = 0, skips = 0;
   json by_cause = json::object();
+  std::string semantics;            // as the subject declared it (the last one seen)
+  double seconds = 0;
+  int timed = 0;
 
   Tally() { for (const char* c : all_causes) by_cause[c] = 0; }
   void add(const Subject_row& s)
   {
+    semantics = s.semantics;
+    if (s.seconds) { seconds += *s.seconds; ++timed; }
     if (s.skipped) { ++skips; return; }   // no answer to count
     ++answers;
     if (s.cause) by_cause[*s.cause] = by_cause.value(*s.cause, 0) + 1;   // faults (crash, timeout) too
@@ -129,6 +134,14 @@ struct Tally {
     return {{"answers", answers}, {"agreements", agreements}, {"disagreements", disagreements},
             {"errors", errors}, {"skipped", skips}, {"by_cause", by_cause}};
   }
+  // A subject's own line: its semantics and mean time per query beside the rest.
+  json subject_json() const
+  {
+    json j = to_json();
+    j["semantics"] = semantics;
+    j["seconds_per_query"] = timed ? json(seconds / timed) : json();
+    return j;
+  }
 };
 
 // Scene counts; answer counts over the non-reference subjects, in total and
@@ -136,7 +149,7 @@ struct Tally {
 json summary_of(const std::vector<Report_case>& cases)
 {
   int agreeing = 0, disagreeing = 0, with_errors = 0, reference_errors = 0;
-  Tally total;
+  Tally total, reference;
   json by_subject = json::object();
   std::vector<std::string> order;
   std::vector<Tally> tallies;
@@ -146,19 +159,24 @@ json summary_of(const std::vector<Report_case>& cases)
     disagreeing += d;
     with_errors += e;
     for (const Subject_row& s : c.comparison.subjects) {
-      if (s.reference) { reference_errors += s.failed(); continue; }
+      if (s.reference) {
+        reference_errors += s.failed();
+        reference.add(s);
+        continue;
+      }
       auto it = std::find(order.begin(), order.end(), s.subject);
       if (it == order.end()) { order.push_back(s.subject); tallies.emplace_back(); it = order.end() - 1; }
       tallies[it - order.begin()].add(s);
       total.add(s);
     }
   }
-  for (std::size_t i = 0; i < order.size(); ++i) by_subject[order[i]] = tallies[i].to_json();
+  for (std::size_t i = 0; i < order.size(); ++i) by_subject[order[i]] = tallies[i].subject_json();
   json t = total.to_json();
   return {{"scenes", cases.size()}, {"scenes_agreeing", agreeing}, {"scenes_disagreeing", disagreeing},
           {"scenes_with_errors", with_errors}, {"answers", t["answers"]}, {"agreements", t["agreements"]},
           {"disagreements", t["disagreements"]}, {"errors", t["errors"]}, {"skipped", t["skipped"]}, {"reference_errors", reference_errors},
-          {"by_cause", t["by_cause"]}, {"by_subject", by_subject}};
+          {"by_cause", t["by_cause"]}, {"by_subject", by_subject},
+          {"reference_seconds_per_query", reference.subject_json()["seconds_per_query"]}};
 }
 
 std::string report_json(const std::vector<Report_case>& cases, const json& summary)
@@ -543,17 +561,24 @@ std::string summary_html(const json& s)
   for (const char* k : {"scenes", "scenes_agreeing", "scenes_disagreeing", "scenes_with_errors", "answers",
                         "agreements", "disagreements", "errors", "skipped"})
     out << number_cell(s.value(k, 0L));
-  out << "</tr>\n</table>\n<table>\n<tr><th>subject</th><th>answers</th><th>agreements</th>";
+  out << "</tr>\n</table>\n<table>\n<tr><th>subject</th><th>semantics</th><th>time per query</th><th>answers</th><th>agreements</th>";
   for (const auto& c : s["by_cause"].items()) out << "<th>" << escape(c.key()) << "</th>";
   out << "<th>errors</th><th>skipped</th></tr>\n";
+  auto time_cell = [&](const json& t) {
+    const json& v = t.contains("seconds_per_query") ? t["seconds_per_query"] : json();
+    return cell(v.is_number() ? seconds_text(v.get<double>()) : dash, "n whole");
+  };
   auto row = [&](const std::string& name, const json& t) {
-    out << "<tr><td>" << name << "</td>" << number_cell(t["answers"].get<long>()) << number_cell(t["agreements"].get<long>());
+    out << "<tr><td>" << name << "</td>" << cell(escape(t.value("semantics", ""))) << time_cell(t)
+        << number_cell(t["answers"].get<long>()) << number_cell(t["agreements"].get<long>());
     for (const auto& c : s["by_cause"].items()) out << number_cell(t["by_cause"].value(c.key(), 0L));
     out << number_cell(t["errors"].get<long>()) << number_cell(t.value("skipped", 0L)) << "</tr>\n";
   };
   for (const auto& t : s["by_subject"].items()) row(escape(t.key()), t.value());
   row("<b>all</b>", s);
   out << "</table>\n";
+  const json& exact_time = s["reference_seconds_per_query"];
+  if (exact_time.is_number()) out << "<p>exact (the reference): " << seconds_text(exact_time.get<double>()) << " per query.</p>\n";
   return out.str();
 }
 
