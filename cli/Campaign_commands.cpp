@@ -1,17 +1,120 @@
 #include "cli/Campaign_commands.h"
+#include "compare/External_subject.h"
 #include "compare/Report_writer.h"
 #include "scene/Input_error.h"
-#include "scene/Json_reader.h"
+#include "scene/Files.h"
 #include "scene/Scene_reader.h"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
+#include <climits>
+#include <cstdint>
 #include <filesystem>
-#include <fstream>
+#include <optional>
 #include <ostream>
 
 namespace clash4d {
 namespace fs = std::filesystem;
-using json = nlohmann::ordered_json;
+
+void add_subject_options(CLI::App& command, Subject_args& args)
+{
+  command.add_option("--subject", args.subjects,
+                     "NAME=COMMAND: an external collision engine run by /bin/sh -c COMMAND, speaking the protocol of "
+                     "docs/subject-protocol.md; repeatable. '--subject fcl' is the built-in FCL subject (same as --fcl)");
+  command.add_option("--subject-timeout", args.timeout_seconds,
+                     "seconds an external subject may take per request before it is killed and restarted (default 10)")
+      ->check(CLI::PositiveNumber);
+}
+
+bool apply_subject_args(const Subject_args& args, Compare_options& o, const char* command, std::ostream& err)
+{
+  std::vector<std::string> names;
+  for (const auto& text : args.subjects) {
+    if (text == "fcl") { o.fcl = true; continue; }
+    try {
+      Subject_spec spec = parse_subject_spec(text, args.timeout_seconds);
+      if (std::find(names.begin(), names.end(), spec.name) != names.end())
+        throw std::invalid_argument("--subject: two subjects are named '" + spec.name + "'");
+      names.push_back(spec.name);
+      o.externals.push_back(std::make_shared<External_pool>(spec));
+    } catch (const std::invalid_argument& e) {
+      err << "clash4d " << command << ": " << e.what() << "\n";
+      return false;
+    }
+  }
+  return true;
+}
+
+namespace {
+
+// A whole non-negative decimal number, or none.
+std::optional<std::uint64_t> whole_number(const char* text)
+{
+  if (!text || !*text) return std::nullopt;
+  std::uint64_t n = 0;
+  for (const char* c = text; *c; ++c) {
+    if (*c < '0' || *c > '9' || n > (UINT64_MAX - 9) / 10) return std::nullopt;
+    n = 10 * n + static_cast<std::uint64_t>(*c - '0');
+  }
+  return n;
+}
+
+// K and S from the scheduler's variables; a message in `problem` when they are wrong.
+bool shard_from_scheduler(std::uint64_t count, const std::function<const char*(const char*)>& env, Fuzz_options& o,
+                          std::string& problem)
+{
+  if (const char* k8s = env("JOB_COMPLETION_INDEX")) {
+    std::optional<std::uint64_t> i = whole_number(k8s);
+    if (!i) return problem = std::string("JOB_COMPLETION_INDEX is not a number: '") + k8s + "'", false;
+    if (count == 0) return problem = "a Kubernetes Indexed Job needs --shard-count S (its completions)", false;
+    o.shard = *i + 1;
+    o.shards = count;
+    return true;
+  }
+  if (const char* slurm = env("SLURM_ARRAY_TASK_ID")) {
+    std::optional<std::uint64_t> id = whole_number(slurm), min = whole_number(env("SLURM_ARRAY_TASK_MIN")),
+                                 n = whole_number(env("SLURM_ARRAY_TASK_COUNT"));
+    if (!id) return problem = std::string("SLURM_ARRAY_TASK_ID is not a number: '") + slurm + "'", false;
+    if (count != 0 && n && *n != count)
+      return problem = "--shard-count " + std::to_string(count) + " but SLURM_ARRAY_TASK_COUNT is " + std::to_string(*n), false;
+    if (count == 0 && !n) return problem = "SLURM_ARRAY_TASK_COUNT is not set: give --shard-count S", false;
+    std::uint64_t base = min.value_or(0);
+    if (*id < base) return problem = "SLURM_ARRAY_TASK_ID is below SLURM_ARRAY_TASK_MIN", false;
+    o.shard = *id - base + 1;
+    o.shards = count ? count : *n;
+    return true;
+  }
+  if (count != 0) return problem = "--shard-count needs SLURM_ARRAY_TASK_ID or JOB_COMPLETION_INDEX (or use --shard K/S)", false;
+  o.shard = o.shards = 1;
+  return true;
+}
+
+} // namespace
+
+bool resolve_shard(const std::string& shard, std::uint64_t shard_count, const std::function<const char*(const char*)>& env,
+                   Fuzz_options& o, std::ostream& err)
+{
+  std::string problem;
+  if (!shard.empty()) {
+    auto slash = shard.find('/');
+    std::optional<std::uint64_t> k = whole_number(shard.substr(0, slash).c_str()),
+                                 s = slash == std::string::npos ? std::nullopt : whole_number(shard.substr(slash + 1).c_str());
+    o.shard = k.value_or(0);
+    o.shards = s.value_or(0);
+    if (shard_count != 0 && shard_count != o.shards) problem = "--shard-count differs from the S of --shard K/S";
+  } else if (!shard_from_scheduler(shard_count, env, o, problem)) {
+    err << "clash4d fuzz: " << problem << "\n";
+    return false;
+  }
+  if (problem.empty() && (o.shards == 0 || o.shard == 0 || o.shard > o.shards))
+    problem = "--shard expects K/S with 1 <= K <= S, found '" +
+              (shard.empty() ? std::to_string(o.shard) + "/" + std::to_string(o.shards) + "' (from the scheduler)" : shard + "'");
+  if (!problem.empty()) {
+    err << "clash4d fuzz: " << problem << "\n";
+    return false;
+  }
+  return true;
+}
 
 int fuzz_command(const Fuzz_options& options, std::ostream& out, std::ostream& err)
 {
@@ -41,12 +144,6 @@ int merge_command(const std::vector<std::string>& dirs, const std::string& out_d
 
 namespace {
 
-json read_plain(const fs::path& p)
-{
-  std::ifstream in(p);
-  return json::parse(in);
-}
-
 // Saved findings carry their scene and comparison: no need to rerun them.
 void add_fuzz_folder(const fs::path& dir, std::vector<Report_case>& cases)
 {
@@ -55,8 +152,14 @@ void add_fuzz_folder(const fs::path& dir, std::vector<Report_case>& cases)
     if (f.path().extension() == ".json") files.push_back(f.path());
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
-    json finding = read_plain(f);
-    cases.push_back({f.string(), read_scene(read_json_text(finding["scene"].dump())), finding["comparison"]});
+    Comparison comparison = finding_comparison(read_json_document(f.string()), f.string());
+    Scene scene;
+    try {
+      scene = read_scene_file(f.string());
+    } catch (const Input_error& e) {
+      throw std::runtime_error(e.format(f.string()));
+    }
+    cases.push_back({f.string(), scene, comparison});
   }
 }
 
@@ -90,7 +193,7 @@ int report_command(const std::vector<std::string>& inputs, const std::string& ou
     }
     write_report(cases, out_dir);
     std::size_t disagreeing = 0;
-    for (const auto& c : cases) disagreeing += !c.comparison["disagreements"].empty();
+    for (const auto& c : cases) disagreeing += c.comparison.has_disagreement();
     out << out_dir << ": " << cases.size() << " cases, " << disagreeing << " with disagreements (index.html, report.json, junit.xml)\n";
     return disagreeing ? 1 : 0;
   } catch (const std::exception& e) {

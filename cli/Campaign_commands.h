@@ -3,11 +3,36 @@
 #define CLASH4D_CLI_CAMPAIGN_COMMANDS_H
 
 #include "compare/Fuzz_campaign.h"
+#include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
 
+namespace CLI {
+class App;
+}
+
 namespace clash4d {
+
+// --subject NAME=COMMAND (repeatable) and --subject-timeout, shared by
+// compare, fuzz and report.
+struct Subject_args {
+  std::vector<std::string> subjects;
+  double timeout_seconds = 10;
+};
+void add_subject_options(CLI::App& command, Subject_args& args);
+// Adds the subjects to o (external processes; "fcl" is the built-in FCL
+// subject, as --fcl); false after a message naming the argument when one is wrong.
+bool apply_subject_args(const Subject_args& args, Compare_options& o, const char* command, std::ostream& err);
+
+// Which shard this process runs: --shard K/S when given; else, under a
+// scheduler, K from SLURM_ARRAY_TASK_ID - SLURM_ARRAY_TASK_MIN + 1 or
+// JOB_COMPLETION_INDEX + 1 and S from --shard-count (Slurm: or
+// SLURM_ARRAY_TASK_COUNT); else 1/1 (docs/campaigns.md). `env` reads a
+// variable (std::getenv; tests pass their own). False after a message.
+bool resolve_shard(const std::string& shard, std::uint64_t shard_count, const std::function<const char*(const char*)>& env,
+                   Fuzz_options& o, std::ostream& err);
 
 int fuzz_command(const Fuzz_options& options, std::ostream& out, std::ostream& err);
 int merge_command(const std::vector<std::string>& dirs, const std::string& out_dir, std::ostream& out, std::ostream& err);

@@ -4,14 +4,15 @@
 #include "compare/Comparer.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
+#include "scene/Files.h"
 #include "scene/Input_error.h"
 #include "scene/Grid_scene.h"
 #include "scene/Scene_reader.h"
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <cstdlib>
 #include <unistd.h>
-#include <fstream>
 #include <ostream>
 
 namespace clash4d {
@@ -168,18 +169,21 @@ void print_skeleton(const Skeleton_answer& a, bool as_json, std::ostream& out)
   }
 }
 
-void print_comparison(const json& c, std::ostream& out)
+void print_comparison(const Comparison& c, std::ostream& out)
 {
-  out << c["file"].get<std::string>() << (c["disagreements"].empty() ? ": all subjects agree\n" : ": DISAGREEMENT\n");
-  for (const auto& s : c["subjects"]) {
-    out << "  " << s["subject"].get<std::string>() << ": ";
-    if (!s["ok"].get<bool>()) { out << "failed: " << s["error"].get<std::string>() << "\n"; continue; }
-    if (s.contains("skipped") && s["skipped"].is_string()) { out << "skipped: " << s["skipped"].get<std::string>() << "\n"; continue; }
-    out << (s["collide"].get<bool>() ? "collision" : "no collision");
-    if (!s["witness_valid"].is_null()) out << (s["witness_valid"].get<bool>() ? ", witness valid" : ", witness INVALID");
-    if (!s["earliest"].is_null()) out << ", t* = " << s["earliest"]["t"].get<std::string>();
-    if (!s["t_error"].is_null()) out << " (error " << s["t_error"].get<std::string>() << ")";
-    if (!s["cause"].is_null()) out << "  <- " << s["cause"].get<std::string>();
+  out << c.file << (c.has_disagreement() ? ": DISAGREEMENT\n" : ": all subjects agree\n");
+  for (const Subject_row& s : c.subjects) {
+    out << "  " << s.subject << ": ";
+    if (s.failed()) {
+      out << "failed: " << s.error << (s.cause ? "  <- " + *s.cause : "") << "\n";
+      continue;
+    }
+    if (s.skipped) { out << "skipped: " << *s.skipped << "\n"; continue; }
+    out << (s.collide.value_or(false) ? "collision" : "no collision");
+    if (s.witness_valid) out << (*s.witness_valid ? ", witness valid" : ", witness INVALID");
+    if (s.earliest) out << ", t* = " << s.earliest->t;
+    if (s.t_error) out << " (error " << *s.t_error << ")";
+    if (s.cause) out << "  <- " << *s.cause;
     out << "\n";
   }
 }
@@ -190,11 +194,11 @@ int compare(const std::vector<std::string>& files, const Compare_options& o, boo
   json all = json::array();
   for (const auto& f : files) {
     Scene scene;
-    if (int s = load(f, scene, err)) { status = CLASH4D_EXIT_INVALID; (void)s; continue; }
+    if (load(f, scene, err)) { status = CLASH4D_EXIT_INVALID; continue; }
     int s = guarded(f, err, [&] {
-      json c = compare_scene(scene, f, o);
-      if (as_json) all.push_back(c); else print_comparison(c, out);
-      return c["disagreements"].empty() ? 0 : 1;
+      Comparison c = compare_scene(scene, f, o);
+      if (as_json) all.push_back(c.to_json()); else print_comparison(c, out);
+      return c.has_disagreement() ? 1 : 0;
     });
     if (s == 1 && status == 0) status = 1;
     if (s > 1) status = s;
@@ -217,17 +221,10 @@ int generate(int n, int colliding, std::uint64_t seed, const std::string& file, 
     out << g.json;
     return 0;
   }
-  std::string tmp = file + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    f << g.json;
-    if (!f.flush()) {
-      err << "clash4d generate: cannot write " << tmp << "\n";
-      return CLASH4D_EXIT_INVALID;
-    }
-  }
-  if (std::rename(tmp.c_str(), file.c_str()) != 0) {
-    err << "clash4d generate: cannot rename " << tmp << " to " << file << "\n";
+  try {
+    write_file_atomically(file, g.json);
+  } catch (const std::runtime_error& e) {
+    err << "clash4d generate: " << e.what() << "\n";
     return CLASH4D_EXIT_INVALID;
   }
   out << file << ": " << n << " blocks; colliding by construction:";
@@ -287,25 +284,33 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   bool compare_fcl = false;
   compare_cmd->add_flag("--fcl", compare_fcl, "also run FCL's continuous collision (the fcl subject) where FCL can express the scene; skipped with the reason elsewhere");
   compare_cmd->add_flag("--json", as_json, "print one JSON object per scene in a list");
+  Subject_args compare_subjects, fuzz_subjects, report_subjects;
+  add_subject_options(*compare_cmd, compare_subjects);
 
   Fuzz_options fuzz;
-  std::string shard = "1/1";
+  std::string shard;
+  std::uint64_t shard_count = 0;
   std::vector<std::string> merge_dirs;
   std::vector<double> fuzz_tolerances;
   auto* fuzz_cmd = app.add_subcommand("fuzz", "A deterministic campaign of contact cases against exact arithmetic; saves and shrinks every disagreement in DIR (resumable; exit 1 when any finding).");
   fuzz_cmd->add_option("--seed", fuzz.seed, "campaign seed");
   fuzz_cmd->add_option("--cases", fuzz.cases, "number of cases in the whole campaign");
-  fuzz_cmd->add_option("--shard", shard, "K/S: run the K-th of S disjoint parts (default 1/1)");
+  fuzz_cmd->add_option("--shard", shard, "K/S: run the K-th of S disjoint parts (default: from the scheduler, else 1/1)");
+  fuzz_cmd->add_option("--shard-count", shard_count,
+                       "S, without --shard: this is shard K of S with K from SLURM_ARRAY_TASK_ID (minus SLURM_ARRAY_TASK_MIN, "
+                       "plus 1) or JOB_COMPLETION_INDEX (plus 1); Slurm's SLURM_ARRAY_TASK_COUNT gives S when omitted");
   fuzz_cmd->add_option("--out", fuzz.out, "output folder")->required();
   fuzz_cmd->add_option("--tolerance", fuzz_tolerances, "double subjects with tolerance EPS (default 1e-9)")->check(CLI::PositiveNumber);
   fuzz_cmd->add_option("--merge", merge_dirs, "join these fuzz output folders into --out instead of running");
   fuzz_cmd->add_flag("--fcl", fuzz.compare.fcl, "also run the fcl subject (FCL's continuous collision) on the cases FCL can express");
+  add_subject_options(*fuzz_cmd, fuzz_subjects);
 
   std::vector<std::string> report_inputs;
   std::string report_out;
   auto* report_cmd = app.add_subcommand("report", "Compare scenes (files, folders, fuzz outputs) and write DIR/index.html, report.json and junit.xml.");
   report_cmd->add_option("INPUT", report_inputs, "scene files, folders of scenes, or fuzz output folders")->required();
   report_cmd->add_option("--out", report_out, "output folder")->required();
+  add_subject_options(*report_cmd, report_subjects);
 
   int grid_n = 0, grid_colliding = 0;
   std::uint64_t grid_seed = 1;
@@ -331,24 +336,16 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   if (generate_cmd->parsed()) return generate(grid_n, grid_colliding, grid_seed, grid_out, out, err);
   if (fuzz_cmd->parsed()) {
     if (!merge_dirs.empty()) return merge_command(merge_dirs, fuzz.out, out, err);
-    auto slash = shard.find('/');
-    try {
-      fuzz.shard = std::stoull(shard.substr(0, slash));
-      fuzz.shards = slash == std::string::npos ? 0 : std::stoull(shard.substr(slash + 1));
-    } catch (const std::exception&) {
-      fuzz.shards = 0;
-    }
-    if (fuzz.shards == 0 || fuzz.shard == 0 || fuzz.shard > fuzz.shards) {
-      err << "clash4d fuzz: --shard expects K/S with 1 <= K <= S, found '" << shard << "'\n";
-      return CLASH4D_EXIT_INVALID;
-    }
+    if (!resolve_shard(shard, shard_count, std::getenv, fuzz, err)) return CLASH4D_EXIT_INVALID;
     if (!fuzz_tolerances.empty()) fuzz.compare.tolerances = fuzz_tolerances;
+    if (!apply_subject_args(fuzz_subjects, fuzz.compare, "fuzz", err)) return CLASH4D_EXIT_INVALID;
     fuzz.progress = isatty(fileno(stderr)) != 0;
     return fuzz_command(fuzz, out, err);
   }
   if (report_cmd->parsed()) {
     Compare_options o;
     o.earliest = true;
+    if (!apply_subject_args(report_subjects, o, "report", err)) return CLASH4D_EXIT_INVALID;
     return report_command(report_inputs, report_out, o, out, err);
   }
   if (compare_cmd->parsed()) {
@@ -356,6 +353,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     if (!compare_tolerances.empty()) o.tolerances = compare_tolerances;
     o.earliest = compare_earliest;
     o.fcl = compare_fcl;
+    if (!apply_subject_args(compare_subjects, o, "compare", err)) return CLASH4D_EXIT_INVALID;
     return compare(compare_files, o, as_json, out, err);
   }
   if (check_cmd->parsed() && tolerance != 0 && number != "double") {

@@ -12,6 +12,10 @@
 //                    others it is skipped with the reason, which is neither
 //                    an agreement nor a disagreement. It gives no witness
 //                    point, so it is never an "invalid witness".
+//   NAME             each --subject NAME=COMMAND (compare/External_subject.h):
+//                    "unsupported" answers are skipped; its witness point is
+//                    checked against every pair; a crash, time-out or answer
+//                    out of protocol is a fault with that cause.
 // Every disagreement is classified by its cause:
 //   input rounding   exact on the rounded scene already disagrees;
 //   contact          the exact verdict flips when one of the two objects is
@@ -23,25 +27,33 @@
 //   arithmetic       otherwise: the subject's own rounding or tolerance;
 //   invalid witness  verdicts agree but the subject's witness is not strictly
 //                    inside both objects of the true scene (checked exactly).
+// Until the exact pipeline decides the closed question, a closed subject's
+// touching answers are classified like anyone's (contact).
 #ifndef CLASH4D_COMPARE_COMPARER_H
 #define CLASH4D_COMPARE_COMPARER_H
 
+#include "compare/Comparison.h"
 #include "scene/Scene.h"
-#include <nlohmann/json.hpp>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace clash4d {
+
+class External_pool;
 
 struct Compare_options {
   std::vector<double> tolerances{1e-9};   // one "double tol=EPS" subject each
   bool earliest = false;                  // also compare t* (and report its error)
   bool rounded = true;                    // run the exact-rounded subject
   bool fcl = false;                       // run the fcl subject (skipped where FCL cannot express the scene)
+  // External subjects (--subject NAME=COMMAND): their processes, shared by
+  // every copy of these options and kept for the whole run.
+  std::vector<std::shared_ptr<External_pool>> externals;
 };
 
-// One comparison object (schema in compare/README.md).
-nlohmann::ordered_json compare_scene(const Scene& scene, const std::string& file, const Compare_options& options);
+// The comparison of every subject with exact (JSON form in compare/README.md).
+Comparison compare_scene(const Scene& scene, const std::string& file, const Compare_options& options);
 
 // The scene with every number replaced by the exact value of its nearest
 // double, re-validated; throws Input_error when the rounded scene is invalid
@@ -51,8 +63,9 @@ Scene rounded_scene(const Scene& scene);
 // The name of the double subject with tolerance tol ("double tol=1e-09").
 std::string tolerance_subject(double tol);
 
-// The disagreements of a comparison object, as "subject: cause" strings.
-std::vector<std::string> disagreement_keys(const nlohmann::ordered_json& comparison);
+// The semantics a built-in subject decides in: the toolkit's pipelines the
+// regularised question, FCL the closed one (it counts touching).
+const char* builtin_semantics(const std::string& subject);
 
 } // namespace clash4d
 

@@ -1,9 +1,15 @@
 #include "compare/Contact_families.h"
+#include "exact/Rational_kernel.h"
 #include "model/Model_builder.h"
+#include "model/Motion_path.h"
 #include "scene/Exact_validation.h"
 #include "scene/Number_text.h"
+#include "scene/Random_draw.h"
+#include "scene/Scene_builder.h"
 #include "scene/Scene_writer.h"
 
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/convex_hull_2.h>
 #include <algorithm>
 #include <iterator>
 #include <random>
@@ -14,63 +20,16 @@ namespace clash4d {
 namespace {
 
 using Kind = Solid::Kind;
-using V3 = std::array<Rational, 3>;
-using Point2 = std::array<Rational, 2>;
-
-// ------------------------------------------------------------------ randomness
-
-std::uint64_t splitmix64(std::uint64_t x)
-{
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
-// Only the engine's raw output is used: the std::uniform_*_distribution
-// algorithms differ between standard libraries, mt19937_64 does not.
-class Rng {
-public:
-  explicit Rng(std::uint64_t seed) : g_(seed) {}
-  std::uint64_t below(std::uint64_t n) { return g_() % n; }
-  long range(long lo, long hi) { return lo + static_cast<long>(below(static_cast<std::uint64_t>(hi - lo + 1))); }
-  bool percent(int p) { return below(100) < static_cast<std::uint64_t>(p); }
-  int sign() { return percent(50) ? 1 : -1; }
-  template <class T>
-  T pick(std::initializer_list<T> xs) { return xs.begin()[below(xs.size())]; }
-  template <class T>
-  void shuffle(std::vector<T>& xs)
-  {
-    for (std::size_t i = xs.size(); i > 1; --i) std::swap(xs[i - 1], xs[below(i)]);
-  }
-
-private:
-  std::mt19937_64 g_;
-};
 
 // ------------------------------------------------------------------ numbers
+
+using Rng = Random_draw;
 
 Rational frac(long p, long q = 1) { return Rational(p) / Rational(q); }
 Rational pow10(long k) { return parse_number_text("1e" + std::to_string(k), false).value; }
 Rational decimal(long units, long digits) { return Rational(units) * pow10(-digits); }
 
-V3 vec(const Rational& x, const Rational& y, const Rational& z) { return {x, y, z}; }
-V3 zero3() { return vec(0, 0, 0); }
-V3 plus(V3 a, const V3& b)
-{
-  for (int i = 0; i < 3; ++i) a[i] += b[i];
-  return a;
-}
-V3 minus(V3 a, const V3& b)
-{
-  for (int i = 0; i < 3; ++i) a[i] -= b[i];
-  return a;
-}
-V3 times(const Rational& s, V3 a)
-{
-  for (auto& x : a) x *= s;
-  return a;
-}
+Vec3 zero3() { return vec(0, 0, 0); }
 // Drawn in order: p first, then q.
 Rational random_fraction(Rng& rng, long lo, long hi, std::initializer_list<long> denominators)
 {
@@ -78,70 +37,15 @@ Rational random_fraction(Rng& rng, long lo, long hi, std::initializer_list<long>
   return frac(p, rng.pick(denominators));
 }
 
-Rational dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-bool is_zero(const V3& a) { return CGAL::is_zero(a[0]) && CGAL::is_zero(a[1]) && CGAL::is_zero(a[2]); }
+bool is_zero(const Vec3& a) { return CGAL::is_zero(a[0]) && CGAL::is_zero(a[1]) && CGAL::is_zero(a[2]); }
 
 // ------------------------------------------------------------------ solids
-
-Solid leaf(Kind k, std::vector<Rational> numbers)
-{
-  Solid s;
-  s.kind = k;
-  s.numbers = std::move(numbers);
-  return s;
-}
-Solid block(const V3& lo, const V3& hi) { return leaf(Kind::Block, {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]}); }
-Solid halfspace(const Rational& a, const Rational& b, const Rational& c, const Rational& d)
-{
-  return leaf(Kind::Halfspace, {a, b, c, d});
-}
-Solid hull(const std::vector<V3>& points)
-{
-  Solid s = leaf(Kind::Hull, {});
-  for (const auto& p : points) s.numbers.insert(s.numbers.end(), p.begin(), p.end());
-  return s;
-}
-Solid convex(const std::vector<std::array<Rational, 4>>& planes)
-{
-  Solid s = leaf(Kind::Convex, {});
-  for (const auto& h : planes) s.numbers.insert(s.numbers.end(), h.begin(), h.end());
-  return s;
-}
-// The base is made counter-clockwise; it must be strictly convex.
-Solid prism(std::vector<Point2> base, Rational z0, Rational z1)
-{
-  Rational area(0);
-  for (std::size_t i = 0; i < base.size(); ++i) {
-    const Point2& p = base[i];
-    const Point2& q = base[(i + 1) % base.size()];
-    area += p[0] * q[1] - q[0] * p[1];
-  }
-  if (area < 0) std::reverse(base.begin(), base.end());
-  if (z1 < z0) std::swap(z0, z1);
-  Solid s = leaf(Kind::Prism, {});
-  for (const auto& p : base) s.numbers.insert(s.numbers.end(), p.begin(), p.end());
-  s.numbers.push_back(z0);
-  s.numbers.push_back(z1);
-  return s;
-}
-Solid node(Kind k, std::vector<Solid> children)
-{
-  Solid s = leaf(k, {});
-  s.children = std::move(children);
-  return s;
-}
-Solid translate(const V3& d, Solid child)
-{
-  Solid s = leaf(Kind::Translate, {d[0], d[1], d[2]});
-  s.children.push_back(std::move(child));
-  return s;
-}
 
 // The same prism as a hull of its corners (for frames that move the z axis).
 Solid prism_as_hull(const Solid& p)
 {
   const auto& n = p.numbers;
-  std::vector<V3> points;
+  std::vector<Vec3> points;
   for (std::size_t i = 0; i + 2 < n.size(); i += 2)
     for (std::size_t k : {n.size() - 2, n.size() - 1}) points.push_back(vec(n[i], n[i + 1], n[k]));
   return hull(points);
@@ -153,20 +57,20 @@ struct Frame {
   std::array<int, 3> axis{{0, 1, 2}};
   std::array<int, 3> sign{{1, 1, 1}};
   Rational scale{1};
-  V3 shift = zero3();
+  Vec3 shift = zero3();
 
   bool turns() const { return axis != std::array<int, 3>{{0, 1, 2}} || sign != std::array<int, 3>{{1, 1, 1}}; }
-  V3 turn(const V3& v) const
+  Vec3 turn(const Vec3& v) const
   {
-    V3 r;
+    Vec3 r;
     for (int i = 0; i < 3; ++i) r[i] = v[axis[i]] * Rational(sign[i]);
     return r;
   }
-  V3 linear(const V3& v) const { return times(scale, turn(v)); }
-  V3 point(const V3& p) const { return plus(linear(p), shift); }
+  Vec3 linear(const Vec3& v) const { return times(scale, turn(v)); }
+  Vec3 point(const Vec3& p) const { return plus(linear(p), shift); }
 };
 
-Frame shift_frame(const V3& d)
+Frame shift_frame(const Vec3& d)
 {
   Frame f;
   f.shift = d;
@@ -184,13 +88,13 @@ Solid mapped(const Solid& s, const Frame& f)
       // a.x + d <= 0 with x = M^T (y - shift) / scale becomes, times scale,
       // (M a).y + scale d - (M a).shift <= 0.
       for (std::size_t i = 0; i < n.size(); i += 4) {
-        V3 a = f.turn(vec(n[i], n[i + 1], n[i + 2]));
+        Vec3 a = f.turn(vec(n[i], n[i + 1], n[i + 2]));
         for (int k = 0; k < 3; ++k) n[i + k] = a[k];
         n[i + 3] = f.scale * n[i + 3] - dot(a, f.shift);
       }
       break;
     case Kind::Block: {
-      V3 lo = f.point(vec(n[0], n[1], n[2])), hi = f.point(vec(n[3], n[4], n[5]));
+      Vec3 lo = f.point(vec(n[0], n[1], n[2])), hi = f.point(vec(n[3], n[4], n[5]));
       for (int k = 0; k < 3; ++k) {
         n[k] = std::min(lo[k], hi[k]);
         n[k + 3] = std::max(lo[k], hi[k]);
@@ -199,7 +103,7 @@ Solid mapped(const Solid& s, const Frame& f)
     }
     case Kind::Hull:
       for (std::size_t i = 0; i < n.size(); i += 3) {
-        V3 p = f.point(vec(n[i], n[i + 1], n[i + 2]));
+        Vec3 p = f.point(vec(n[i], n[i + 1], n[i + 2]));
         for (int k = 0; k < 3; ++k) n[i + k] = p[k];
       }
       break;
@@ -207,13 +111,13 @@ Solid mapped(const Solid& s, const Frame& f)
       if (f.axis[2] != 2) return mapped(prism_as_hull(s), f);
       std::vector<Point2> base;
       for (std::size_t i = 0; i + 2 < n.size(); i += 2) {
-        V3 p = f.point(vec(n[i], n[i + 1], 0));
+        Vec3 p = f.point(vec(n[i], n[i + 1], 0));
         base.push_back({p[0], p[1]});
       }
       return prism(base, f.point(vec(0, 0, n[n.size() - 2]))[2], f.point(vec(0, 0, n[n.size() - 1]))[2]);
     }
     case Kind::Translate: {
-      V3 d = f.linear(vec(n[0], n[1], n[2]));
+      Vec3 d = f.linear(vec(n[0], n[1], n[2]));
       n.assign(d.begin(), d.end());
       r.children[0] = mapped(s.children[0], f);
       break;
@@ -236,35 +140,10 @@ Solid mapped(const Solid& s, const Frame& f)
 
 // ------------------------------------------------------------------ motions
 
-Motion steady(const V3& v)
+// D(t), with D(0) = 0 (spec: Motion), by the pipeline's own motion path.
+Vec3 displacement(const Motion& m, const Rational& t)
 {
-  Motion m;
-  m.velocities.push_back(v);
-  return m;
-}
-Motion rest() { return steady(zero3()); }
-// Velocities vs[0..k], changing at the increasing times ts (k = ts.size()).
-Motion piecewise(std::vector<V3> vs, std::vector<Rational> ts)
-{
-  Motion m;
-  m.velocities = std::move(vs);
-  m.times = std::move(ts);
-  return m;
-}
-
-// D(t), with D(0) = 0 (spec: Motion).
-V3 displacement(const Motion& m, const Rational& t)
-{
-  V3 d = zero3();
-  for (std::size_t k = 0; k < m.velocities.size(); ++k) {
-    auto clamp = [&](Rational x) {
-      if (k > 0 && x < m.times[k - 1]) x = m.times[k - 1];
-      if (k < m.times.size() && m.times[k] < x) x = m.times[k];
-      return x;
-    };
-    d = plus(d, times(clamp(t) - clamp(Rational(0)), m.velocities[k]));
-  }
-  return d;
+  return Motion_path<Rational>::build(Rational_kernel(), m).displacement(t);
 }
 
 // a * ma + b * mb, over the union of their breakpoints.
@@ -322,9 +201,7 @@ void rotate_scene(Scene& s, const std::array<Rational, 4>& q)
 {
   auto R = rotation_matrix<Rational>(q[0], q[1], q[2], q[3]);
   for (auto& o : s.objects) {
-    Solid r = leaf(Kind::Rotate, {q[0], q[1], q[2], q[3]});
-    r.children.push_back(std::move(o.shape));
-    o.shape = std::move(r);
+    o.shape = rotate(q, std::move(o.shape));
     for (auto& v : o.motion.velocities) v = vec(dot(R[0], v), dot(R[1], v), dot(R[2], v));
   }
 }
@@ -353,8 +230,8 @@ void shuffle_objects(Scene& s, Rng& rng)
 // along `tangents` (directions b may slide in while touching).
 struct Contact {
   Solid a, b;
-  V3 n = vec(1, 0, 0);
-  std::vector<V3> tangents{vec(0, 1, 0), vec(0, 0, 1)};
+  Vec3 n = vec(1, 0, 0);
+  std::vector<Vec3> tangents{vec(0, 1, 0), vec(0, 0, 1)};
   bool movable = true;           // relative motion along n keeps the verdict
   std::string what;
   int expect = -1;               // 1 collision, 0 none, -1 not known
@@ -379,7 +256,7 @@ Offset draw_offset(Rng& rng, int touch, int overlap, long k_lo, long k_hi)
 int expect_of(const Offset& o) { return o.g < 0 ? 1 : 0; }
 
 // Three vertices in the plane x = x0 strictly around (x0, cy, cz).
-std::vector<V3> triangle_around(Rng& rng, const Rational& x0, const Rational& cy, const Rational& cz)
+std::vector<Vec3> triangle_around(Rng& rng, const Rational& x0, const Rational& cy, const Rational& cz)
 {
   std::array<long, 5> k;
   for (auto& x : k) x = rng.range(1, 3);
@@ -398,9 +275,9 @@ Solid face_solid(Rng& rng, int side, bool allow_halfspace, std::string& what)
       return block(vec(std::min(w, Rational(0)), y0, z0), vec(std::max(w, Rational(0)), y1, z1));
     case 1: {
       what += "hull";
-      std::vector<V3> points = triangle_around(rng, 0, 0, 0);
+      std::vector<Vec3> points = triangle_around(rng, 0, 0, 0);
       long u = rng.range(-2, 2), v = rng.range(-2, 2);
-      std::vector<V3> back = rng.percent(50) ? std::vector<V3>{vec(w, u, v)} : triangle_around(rng, w, u / 2, v / 2);
+      std::vector<Vec3> back = rng.percent(50) ? std::vector<Vec3>{vec(w, u, v)} : triangle_around(rng, w, u / 2, v / 2);
       points.insert(points.end(), back.begin(), back.end());
       rng.shuffle(points);
       return hull(points);
@@ -439,7 +316,7 @@ Solid face_solid(Rng& rng, int side, bool allow_halfspace, std::string& what)
 
 // A solid on `side` of x = 0 meeting the plane in a segment through the origin
 // along dir = (0, dy, dz).
-Solid edge_solid(Rng& rng, int side, const V3& dir, std::string& what)
+Solid edge_solid(Rng& rng, int side, const Vec3& dir, std::string& what)
 {
   Rational w = frac(side * rng.range(1, 3));
   if (CGAL::is_zero(dir[1]) && rng.percent(50)) {
@@ -449,11 +326,11 @@ Solid edge_solid(Rng& rng, int side, const V3& dir, std::string& what)
     return prism(base, c0 * dir[2], c1 * dir[2]);
   }
   what += "hull edge";
-  V3 across = vec(0, -dir[2], dir[1]);
-  V3 back = vec(w, 0, 0);
+  Vec3 across = vec(0, -dir[2], dir[1]);
+  Vec3 back = vec(w, 0, 0);
   std::array<long, 6> k;
   for (auto& x : k) x = rng.range(1, 3);
-  std::vector<V3> points{times(k[0], dir), times(-k[1], dir),
+  std::vector<Vec3> points{times(k[0], dir), times(-k[1], dir),
                          plus(back, plus(times(k[2], across), times(k[3] - 2, dir))),
                          plus(back, plus(times(-k[4], across), times(k[5] - 2, dir)))};
   if (rng.percent(40)) points.push_back(plus(back, times(k[0] + 1, dir)));
@@ -466,13 +343,13 @@ Solid vertex_solid(Rng& rng, int side, std::string& what)
 {
   what += "pyramid apex";
   long depth = rng.range(1, 3), cy = rng.range(-1, 1), cz = rng.range(-1, 1);
-  std::vector<V3> points = triangle_around(rng, side * depth, cy, cz);
+  std::vector<Vec3> points = triangle_around(rng, side * depth, cy, cz);
   points.push_back(zero3());
   rng.shuffle(points);
   return hull(points);
 }
 
-V3 edge_direction(Rng& rng)
+Vec3 edge_direction(Rng& rng)
 {
   switch (rng.below(6)) {
     case 0: return vec(0, 1, 0);
@@ -517,7 +394,7 @@ Contact basic_contact(Rng& rng, const Offset& off, bool allow_halfspace)
       break;
     case 5: {
       w = "crossing edges (";
-      V3 d1 = edge_direction(rng), d2 = edge_direction(rng);
+      Vec3 d1 = edge_direction(rng), d2 = edge_direction(rng);
       while (CGAL::is_zero(d1[1] * d2[2] - d1[2] * d2[1])) d2 = edge_direction(rng);
       c.a = edge_solid(rng, -1, d1, w);
       w += "/";
@@ -533,16 +410,16 @@ Contact basic_contact(Rng& rng, const Offset& off, bool allow_halfspace)
     case 7:
       w = "parallel edges (blocks";
       c.n = vec(1, 1, 0);
-      c.a = block(V3{-rng.range(1, 3), -rng.range(1, 3), -rng.range(1, 3)}, zero3());
+      c.a = block(Vec3{-rng.range(1, 3), -rng.range(1, 3), -rng.range(1, 3)}, zero3());
       c.a.numbers[5] = rng.range(1, 3);
-      c.b = block(zero3(), V3{rng.range(1, 3), rng.range(1, 3), rng.range(1, 3)});
+      c.b = block(zero3(), Vec3{rng.range(1, 3), rng.range(1, 3), rng.range(1, 3)});
       c.b.numbers[2] = -rng.range(1, 3);
       break;
     default:
       w = "corner on corner (blocks";
       c.n = vec(1, 1, 1);
-      c.a = block(V3{-rng.range(1, 3), -rng.range(1, 3), -rng.range(1, 3)}, zero3());
-      c.b = block(zero3(), V3{rng.range(1, 3), rng.range(1, 3), rng.range(1, 3)});
+      c.a = block(Vec3{-rng.range(1, 3), -rng.range(1, 3), -rng.range(1, 3)}, zero3());
+      c.b = block(zero3(), Vec3{rng.range(1, 3), rng.range(1, 3), rng.range(1, 3)});
   }
   w += "), " + off.what;
   c.b = mapped(c.b, shift_frame(times(off.g, c.n)));
@@ -557,7 +434,7 @@ Contact union_contact(Rng& rng, const Offset& off)
 {
   long L = rng.range(2, 5), W = rng.range(1, 3), H = rng.range(1, 3), s = rng.range(1, L - 1);
   Rational overlap = rng.pick<Rational>({0, 0, frac(1, 2)});
-  auto piece = [&](const V3& lo, const V3& hi) {
+  auto piece = [&](const Vec3& lo, const Vec3& hi) {
     if (!rng.percent(30)) return block(lo, hi);
     std::vector<Point2> base{{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}};
     return prism(base, lo[2], hi[2]);
@@ -598,7 +475,7 @@ Contact union_contact(Rng& rng, const Offset& off)
     c.expect = expect_of(off);
   }
   rng.shuffle(pieces);
-  c.a = node(Kind::Union, pieces);
+  c.a = csg(Kind::Union, pieces);
   c.what = "union: " + c.what + (CGAL::is_zero(overlap) ? ", pieces abutting" : ", pieces overlapping") + ", " + off.what;
   c.b = mapped(c.b, shift_frame(times(off.g, c.n)));
   return c;
@@ -617,7 +494,7 @@ Contact difference_contact(Rng& rng, const Offset& off)
   if (rng.percent(30))   // a hole in the bottom, far from b
     parts.push_back(block(vec(c1 + frac(1, 4), frac(W, 4), -1), vec(c1 + frac(1, 2), frac(W, 2), frac(H, 2))));
   Contact c;
-  c.a = node(Kind::Difference, parts);
+  c.a = csg(Kind::Difference, parts);
   c.n = vec(0, 0, 1);
   Rational x0 = c0 + rng.pick<Rational>({0, frac(1, 4)}), y0 = rng.pick<Rational>({0, 0, frac(W, 4)});
   Rational y1 = rng.pick<Rational>({Rational(W), Rational(W), frac(3 * W, 4), Rational(W + 1)});
@@ -645,27 +522,27 @@ Contact difference_contact(Rng& rng, const Offset& off)
 Contact cavity_contact(Rng& rng, const Offset& off)
 {
   long L = rng.range(3, 5), W = rng.range(3, 5), H = rng.range(3, 5);
-  V3 lo = vec(1, 1, 1), hi{rng.range(2, L - 1), rng.range(2, W - 1), rng.range(2, H - 1)};
+  Vec3 lo = vec(1, 1, 1), hi{rng.range(2, L - 1), rng.range(2, W - 1), rng.range(2, H - 1)};
   Contact c;
   c.expect = expect_of(off);
   int face = static_cast<int>(rng.below(6));
   if (rng.percent(50)) {
     c.what = "closed cavity exactly filled";
-    c.a = node(Kind::Difference, {block(zero3(), vec(L, W, H)), block(lo, hi)});
-    V3 blo = lo, bhi = hi;
+    c.a = csg(Kind::Difference, {block(zero3(), vec(L, W, H)), block(lo, hi)});
+    Vec3 blo = lo, bhi = hi;
     if (face < 3) blo[face] += off.g;
     else bhi[face - 3] -= off.g;
     long form = static_cast<long>(rng.below(4));
     if (form == 0) {
-      std::vector<V3> corners;
+      std::vector<Vec3> corners;
       for (int i = 0; i < 8; ++i) corners.push_back(vec(i & 1 ? bhi[0] : blo[0], i & 2 ? bhi[1] : blo[1], i & 4 ? bhi[2] : blo[2]));
       rng.shuffle(corners);
       c.b = hull(corners);
       c.what += " (hull of corners)";
     } else if (form == 1) {
-      V3 mid_hi = bhi, mid_lo = blo;
+      Vec3 mid_hi = bhi, mid_lo = blo;
       mid_hi[2] = mid_lo[2] = (blo[2] + bhi[2]) / 2;
-      c.b = node(Kind::Union, {block(blo, mid_hi), block(mid_lo, bhi)});
+      c.b = csg(Kind::Union, {block(blo, mid_hi), block(mid_lo, bhi)});
       c.what += " (union of halves)";
     } else {
       c.b = block(blo, bhi);
@@ -675,11 +552,11 @@ Contact cavity_contact(Rng& rng, const Offset& off)
   } else {
     bool through = rng.percent(30);
     c.what = through ? "slot with a peg of its section" : "pocket with a peg of its section";
-    V3 plo = lo, phi = hi;
+    Vec3 plo = lo, phi = hi;
     plo[2] = through ? Rational(-1) : lo[2];
     phi[2] = H + 1;
-    c.a = node(Kind::Difference, {block(zero3(), vec(L, W, H)), block(plo, phi)});
-    V3 blo = plo, bhi = phi;
+    c.a = csg(Kind::Difference, {block(zero3(), vec(L, W, H)), block(plo, phi)});
+    Vec3 blo = plo, bhi = phi;
     blo[2] = through ? Rational(-2) : lo[2];
     bhi[2] = H + rng.range(1, 2);
     if (face % 3 == 2) face = 0;   // the peg's sides only
@@ -725,9 +602,9 @@ Rational speed(Rng& rng, bool decimals)
   return random_fraction(rng, 1, 4, {1, 1, 2, 3, 4});
 }
 
-V3 random_velocity(Rng& rng, bool decimals)
+Vec3 random_velocity(Rng& rng, bool decimals)
 {
-  V3 v;
+  Vec3 v;
   for (auto& x : v) {
     x = 0;
     if (rng.percent(40)) continue;
@@ -737,36 +614,36 @@ V3 random_velocity(Rng& rng, bool decimals)
   return v;
 }
 
-V3 tangent_velocity(Rng& rng, const Contact& c, bool decimals)
+Vec3 tangent_velocity(Rng& rng, const Contact& c, bool decimals)
 {
-  V3 v = zero3();
+  Vec3 v = zero3();
   for (const auto& t : c.tangents) {
     long k = rng.range(-1, 1);
     v = plus(v, times(k * speed(rng, decimals), t));
   }
   if (is_zero(v) && !c.tangents.empty()) {
-    const V3& t = c.tangents[rng.below(c.tangents.size())];
+    const Vec3& t = c.tangents[rng.below(c.tangents.size())];
     v = times(speed(rng, decimals), t);
   }
   return v;
 }
 
-V3 maybe_tangent(Rng& rng, const Contact& c, bool decimals)
+Vec3 maybe_tangent(Rng& rng, const Contact& c, bool decimals)
 {
   return rng.percent(50) || c.tangents.empty() ? zero3() : tangent_velocity(rng, c, decimals);
 }
 
 // Away from contact (direction 1) or toward it (-1), sometimes sideways too.
-V3 along(Rng& rng, const Contact& c, int direction, bool decimals)
+Vec3 along(Rng& rng, const Contact& c, int direction, bool decimals)
 {
-  V3 v = times(direction * speed(rng, decimals), c.n);
+  Vec3 v = times(direction * speed(rng, decimals), c.n);
   return plus(v, maybe_tangent(rng, c, decimals));
 }
 
 // Vectors that make sums: a random decimal vector.
-V3 decimal_vector(Rng& rng)
+Vec3 decimal_vector(Rng& rng)
 {
-  V3 v;
+  Vec3 v;
   for (auto& x : v) {
     long units = rng.range(-99, 99);
     x = decimal(units, rng.range(1, 2));
@@ -790,10 +667,10 @@ Rational missing_part(Rng& rng, const Rational& d)
 
 // s moved by d: the numbers changed, or a translate node, or (sums) both,
 // split so that the double sum misses.
-Solid shifted(Rng& rng, const Solid& s, const V3& d, bool sums)
+Solid shifted(Rng& rng, const Solid& s, const Vec3& d, bool sums)
 {
   if (sums) {
-    V3 part;
+    Vec3 part;
     for (int i = 0; i < 3; ++i) part[i] = missing_part(rng, d[i]);
     return translate(part, mapped(s, shift_frame(minus(d, part))));
   }
@@ -828,7 +705,7 @@ Scene contact_scene(Rng& rng, const Contact& c, Move move, bool decimals)
       if (rng.percent(30)) rel = piecewise({rel.velocities[0], tangent_velocity(rng, c, decimals)}, {tc});
       break;
     case Move::Approach: {
-      V3 v = along(rng, c, -1, decimals);
+      Vec3 v = along(rng, c, -1, decimals);
       Rational t0 = tc - (decimals ? decimal(rng.range(1, 30), 1) : span * frac(rng.range(1, 4), 8));
       rel = rng.percent(50) ? piecewise({v, zero3()}, {tc}) : piecewise({zero3(), v, zero3()}, {t0, tc});
       break;
@@ -854,7 +731,7 @@ Scene contact_scene(Rng& rng, const Contact& c, Move move, bool decimals)
   Motion da = with_share(share_a), db = with_share(share_a + 1);
   if (move == Move::Co_moving || rng.percent(15)) db = split(db, s.t_lo + span * frac(rng.range(1, 7), 8));
   // With decimals, both are moved by a decimal vector, one of them by a sum that misses.
-  V3 base = decimals ? decimal_vector(rng) : zero3();
+  Vec3 base = decimals ? decimal_vector(rng) : zero3();
   bool split_a = rng.percent(50);
   s.objects.push_back({"a", shifted(rng, c.a, minus(base, displacement(da, tc)), decimals && split_a), da});
   s.objects.push_back({"b", shifted(rng, c.b, minus(base, displacement(db, tc)), decimals && !split_a), db});
@@ -870,37 +747,29 @@ Scene contact_scene(Rng& rng, const Contact& c, Move move, bool decimals)
 
 // ------------------------------------------------------------------ general position
 
-// The 2D convex hull (counter-clockwise, no collinear vertices), exactly.
-std::vector<Point2> convex_polygon(std::vector<Point2> p)
+// The 2D convex hull (counter-clockwise from the lexicographically smallest
+// vertex, no collinear vertices), exactly, by CGAL.
+std::vector<Point2> convex_polygon(const std::vector<Point2>& p)
 {
-  std::sort(p.begin(), p.end());
-  p.erase(std::unique(p.begin(), p.end()), p.end());
-  if (p.size() < 3) return {};
-  auto cross = [](const Point2& o, const Point2& a, const Point2& b) {
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-  };
-  std::vector<Point2> h(2 * p.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && !(cross(h[k - 2], h[k - 1], p[i]) > 0)) --k;
-    h[k++] = p[i];
-  }
-  for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && !(cross(h[k - 2], h[k - 1], p[i]) > 0)) --k;
-    h[k++] = p[i];
-  }
-  h.resize(k - 1);
+  using K = CGAL::Simple_cartesian<Rational>;
+  std::vector<K::Point_2> in, out;
+  for (const auto& q : p) in.emplace_back(q[0], q[1]);
+  CGAL::convex_hull_2(in.begin(), in.end(), std::back_inserter(out));
+  if (out.size() < 3) return {};
+  std::vector<Point2> h;
+  for (const auto& q : out) h.push_back({q.x(), q.y()});
+  std::rotate(h.begin(), std::min_element(h.begin(), h.end()), h.end());
   return h;
 }
 
 Rational random_coordinate(Rng& rng) { return random_fraction(rng, -8, 8, {2, 3, 4, 5, 7}); }
-V3 random_point(Rng& rng) { return V3{random_coordinate(rng), random_coordinate(rng), random_coordinate(rng)}; }
+Vec3 random_point(Rng& rng) { return Vec3{random_coordinate(rng), random_coordinate(rng), random_coordinate(rng)}; }
 
-Solid random_solid(Rng& rng, const V3& centre)
+Solid random_solid(Rng& rng, const Vec3& centre)
 {
   for (;;) {
     if (rng.percent(60)) {
-      std::vector<V3> points;
+      std::vector<Vec3> points;
       for (long i = rng.range(4, 7); i > 0; --i)
         points.push_back(plus(centre, random_point(rng)));
       try {
@@ -975,8 +844,8 @@ Scene general_position(Rng& rng)
   s.name = "general position";
   long n = rng.percent(80) ? 2 : 3;
   for (long i = 0; i < n; ++i) {
-    V3 centre = zero3();
-    if (i > 0) centre = times(frac(1, 2), V3{rng.range(-6, 6), rng.range(-6, 6), rng.range(-6, 6)});
+    Vec3 centre = zero3();
+    if (i > 0) centre = times(frac(1, 2), Vec3{rng.range(-6, 6), rng.range(-6, 6), rng.range(-6, 6)});
     Motion m = rest();
     if (rng.percent(60)) m = steady(random_point(rng));
     if (rng.percent(30)) {
@@ -1081,7 +950,7 @@ void finish(Scene& s, Rng& rng, Finish how)
   map_scene(s, f);
   scale_time(s, unit);
   if (rng.percent(50)) {   // the same shift for all, for some objects by a sum that misses
-    V3 d = decimal_vector(rng);
+    Vec3 d = decimal_vector(rng);
     for (auto& o : s.objects) {
       bool sums = rng.percent(50);
       o.shape = shifted(rng, o.shape, d, sums);

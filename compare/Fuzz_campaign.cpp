@@ -1,6 +1,8 @@
 #include "compare/Fuzz_campaign.h"
 #include "compare/Contact_families.h"
+#include "compare/External_subject.h"
 #include "compare/Shrinker.h"
+#include "scene/Files.h"
 #include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
 #include "scene/Scene_writer.h"
@@ -19,42 +21,17 @@ namespace clash4d {
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 
-void write_file_atomically(const std::string& path, const std::string& text)
-{
-  std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    f << text;
-    f.flush();
-    if (!f) throw std::runtime_error(tmp + ": cannot write");
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error(path + ": cannot rename " + tmp + " to it");
-}
-
 namespace {
-
-json read_json_file_plain(const std::string& path)
-{
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot read");
-  try {
-    return json::parse(in);
-  } catch (const std::exception& e) {
-    throw std::runtime_error(path + ": not valid JSON (" + e.what() + ")");
-  }
-}
-
-// Timings differ from run to run; findings keep only what is reproducible.
-json reproducible(json comparison)
-{
-  for (auto& s : comparison["subjects"]) s.erase("seconds");
-  return comparison;
-}
 
 json campaign_json(const Fuzz_options& o)
 {
   json c = {{"format", "clash4d-fuzz/1"}, {"seed", o.seed}, {"cases", o.cases}, {"tolerances", o.compare.tolerances}};
   if (o.compare.fcl) c["fcl"] = true;   // only when on, so folders of campaigns without it still match
+  if (!o.compare.externals.empty()) {
+    c["subjects"] = json::array();
+    for (const auto& pool : o.compare.externals)
+      c["subjects"].push_back({{"name", pool->spec().name}, {"command", pool->spec().command}});
+  }
   return c;
 }
 
@@ -65,8 +42,8 @@ void prepare(const Fuzz_options& o)
   std::string path = (fs::path(o.out) / "campaign.json").string();
   json want = campaign_json(o);
   if (fs::exists(path)) {
-    if (read_json_file_plain(path) != want)
-      throw std::runtime_error(path + ": this folder holds another campaign (seed, cases, tolerances or --fcl differ)");
+    if (read_json_document(path) != want)
+      throw std::runtime_error(path + ": this folder holds another campaign (seed, cases, tolerances, --fcl or --subject differ)");
   } else {
     write_file_atomically(path, want.dump(2) + "\n");
   }
@@ -82,35 +59,66 @@ std::string finding_path(const Fuzz_options& o, std::uint64_t index, const char*
   return (fs::path(o.out) / "findings" / ("case-" + std::to_string(index) + suffix)).string();
 }
 
+json disagreement_meta(const Comparison& c, const Disagreement& d)
+{
+  const Subject_row* row = c.find(d.subject);
+  json m = {{"subject", d.subject}, {"semantics", row ? row->semantics : "regularised"}, {"cause", d.cause}, {"detail", d.detail}};
+  if (row && row->tolerance) m["tolerance"] = *row->tolerance;
+  return m;
+}
+
+// A finding is a scene file (check, compare and validate take it as it is);
+// where it came from goes under its `meta` key (spec). Timings are left out:
+// they differ from run to run, and findings must not.
+json finding_meta(const Fuzz_options& o, const std::string& family, std::uint64_t index, const Comparison& comparison)
+{
+  json disagreements = json::array();
+  for (const auto& d : comparison.disagreements) disagreements.push_back(disagreement_meta(comparison, d));
+  return {{"tool", "clash4d fuzz"}, {"family", family}, {"seed", o.seed}, {"index", index},
+          {"disagreements", disagreements}, {"comparison", comparison.reproducible().to_json()}};
+}
+
+// Faults of an external subject: kept as they are (a fault may depend on the
+// process's history, and each retry of a time-out costs the time limit).
+bool is_fault(const std::string& cause) { return cause == "crash" || cause == "timeout" || cause == "protocol"; }
+
+// Shrinks while the first disagreement (same subject, same cause) persists,
+// running only the subjects that decide it.
+Scene shrink(const Fuzz_options& o, const Scene& scene, const Disagreement& first)
+{
+  std::string key = first.subject + ": " + first.cause;
+  Compare_options narrow = o.compare;
+  narrow.tolerances.clear();
+  for (double tol : o.compare.tolerances)
+    if (first.subject == tolerance_subject(tol)) narrow.tolerances.push_back(tol);
+  narrow.fcl = o.compare.fcl && first.subject == "fcl";
+  narrow.externals.clear();
+  for (const auto& pool : o.compare.externals)
+    if (pool->spec().name == first.subject) narrow.externals.push_back(pool);
+  auto still_fails = [&](const Scene& candidate) {
+    std::vector<std::string> k = compare_scene(candidate, "", narrow).disagreement_keys();
+    return std::find(k.begin(), k.end(), key) != k.end();
+  };
+  return shrink_scene(scene, still_fails, o.max_shrink_checks);
+}
+
 // Compares one case; on disagreement saves it, shrinks it, saves the minimum.
 bool run_case(const Fuzz_options& o, std::uint64_t index)
 {
   Fuzz_case c = make_fuzz_case(o.seed, index);
   Scene scene = read_scene(read_json_text(c.json));
-  json comparison = compare_scene(scene, "case-" + std::to_string(index), o.compare);
-  std::vector<std::string> keys = disagreement_keys(comparison);
-  if (keys.empty()) return false;
-  json finding = {{"family", c.family}, {"seed", o.seed}, {"index", index},
-                  {"scene", json::parse(write_scene(scene))}, {"comparison", reproducible(comparison)}};
-  write_file_atomically(finding_path(o, index, ".json"), finding.dump(2) + "\n");
-  // Shrink while the first disagreement (same subject, same cause) persists,
-  // running only the subjects that decide it.
-  const json& first = comparison["disagreements"][0];
-  std::string key = keys.front(), subject = first["subject"];
-  Compare_options narrow = o.compare;
-  narrow.tolerances.clear();
-  for (double tol : o.compare.tolerances)
-    if (subject == tolerance_subject(tol)) narrow.tolerances.push_back(tol);
-  narrow.fcl = o.compare.fcl && subject == "fcl";
-  auto still_fails = [&](const Scene& candidate) {
-    std::vector<std::string> k = disagreement_keys(compare_scene(candidate, "", narrow));
-    return std::find(k.begin(), k.end(), key) != k.end();
-  };
-  Scene small = shrink_scene(scene, still_fails, o.max_shrink_checks);
-  json shrunk = {{"family", c.family}, {"seed", o.seed}, {"index", index}, {"disagreement", key},
-                 {"scene", json::parse(write_scene(small))},
-                 {"comparison", reproducible(compare_scene(small, "case-" + std::to_string(index) + ".min", o.compare))}};
-  write_file_atomically(finding_path(o, index, ".min.json"), shrunk.dump(2) + "\n");
+  std::string name = "case-" + std::to_string(index);
+  Comparison comparison = compare_scene(scene, name, o.compare);
+  if (!comparison.has_disagreement()) return false;
+  write_file_atomically(finding_path(o, index, ".json"), write_scene(scene, finding_meta(o, c.family, index, comparison)));
+  const Disagreement& first = comparison.disagreements.front();
+  bool fault = is_fault(first.cause);
+  Scene small = fault ? scene : shrink(o, scene, first);
+  json meta = finding_meta(o, c.family, index, fault ? comparison : compare_scene(small, name + ".min", o.compare));
+  meta["shrunk_from"] = name + ".json";
+  meta["disagreement"] = disagreement_meta(comparison, first);
+  if (fault) meta["not_shrunk"] = "a subject's crash, time-out or protocol fault may depend on its state";
+  write_file_atomically(finding_path(o, index, ".min.json"), write_scene(small, meta));
   return true;
 }
 
@@ -133,7 +141,7 @@ Fuzz_summary run_fuzz(const Fuzz_options& o, std::ostream& err)
   for (std::uint64_t i = o.shard - 1; i < o.cases; i += o.shards) mine.push_back(i);
   Fuzz_summary s;
   std::string progress = progress_path(o);
-  if (fs::exists(progress)) s.resumed_from = read_json_file_plain(progress).value("next", 0u);
+  if (fs::exists(progress)) s.resumed_from = read_json_document(progress).value("next", 0u);
   std::size_t start = 0;
   while (start < mine.size() && mine[start] < s.resumed_from) ++start;
   std::atomic<std::uint64_t> findings{0};
@@ -161,6 +169,18 @@ Fuzz_summary run_fuzz(const Fuzz_options& o, std::ostream& err)
   return s;
 }
 
+Comparison finding_comparison(const json& finding, const std::string& path)
+{
+  if (!finding.is_object() || !finding.contains("meta") || !finding["meta"].is_object() ||
+      !finding["meta"].contains("comparison"))
+    throw std::runtime_error(path + ": not a clash4d fuzz finding (no meta.comparison)");
+  try {
+    return Comparison::from_json(finding["meta"]["comparison"]);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(path + ": meta." + e.what());
+  }
+}
+
 Fuzz_summary merge_fuzz(const std::vector<std::string>& dirs, const std::string& out)
 {
   fs::create_directories(fs::path(out) / "findings");
@@ -172,15 +192,16 @@ Fuzz_summary merge_fuzz(const std::vector<std::string>& dirs, const std::string&
     for (const auto& f : fs::directory_iterator(findings)) {
       if (f.path().extension() != ".json") continue;
       std::string name = f.path().filename().string();
-      json finding = read_json_file_plain(f.path().string());
+      json finding = read_json_document(f.path().string());
+      Comparison comparison = finding_comparison(finding, f.path().string());
       fs::path target = fs::path(out) / "findings" / name;
-      if (fs::exists(target) && read_json_file_plain(target.string()) != finding)
+      if (fs::exists(target) && read_json_document(target.string()) != finding)
         throw std::runtime_error(target.string() + ": two campaigns disagree on this finding (different seeds?)");
       write_file_atomically(target.string(), finding.dump(2) + "\n");
       if (name.find(".min.json") != std::string::npos) continue;
       ++s.findings;
-      ++by_family[finding["family"].get<std::string>()];
-      for (const auto& k : disagreement_keys(finding["comparison"])) ++by_subject_cause[k];
+      ++by_family[finding["meta"].value("family", "")];
+      for (const auto& k : comparison.disagreement_keys()) ++by_subject_cause[k];
     }
   }
   json summary = {{"findings", s.findings}, {"by_family", by_family}, {"by_subject_and_cause", by_subject_cause}};

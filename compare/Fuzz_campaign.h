@@ -6,8 +6,12 @@
 //   campaign.json                 seed, cases, tolerances (and "fcl": true with
 //                                 --fcl): a rerun must match
 //   progress-K-of-S.json          the next case index of shard K of S
-//   findings/case-I.json          family, scene and comparison of case I
+//   findings/case-I.json          the scene of case I; under its `meta` key the
+//                                 family, seed, index, disagreements (subject,
+//                                 its semantics, cause) and the comparison
 //   findings/case-I.min.json      the same disagreement on a shrunk scene
+//                                 (meta also: disagreement, shrunk_from)
+// Both are scene files: `clash4d check findings/case-I.min.json` replays one.
 // Every file is written to a temporary name and renamed. A killed run loses
 // no saved finding; rerunning with the same arguments redoes at most the
 // batch in flight (writing the same files) and goes on.
@@ -43,12 +47,13 @@ struct Fuzz_summary {
 // naming the file on I/O problems or a DIR that holds another campaign.
 Fuzz_summary run_fuzz(const Fuzz_options& options, std::ostream& err);
 
+// The comparison saved in a finding file's meta (its JSON `finding`, read
+// from `path`); throws std::runtime_error naming the file when it has none.
+Comparison finding_comparison(const nlohmann::ordered_json& finding, const std::string& path);
+
 // Joins the findings of several campaign folders into `out`, with a
 // summary.json of counts by family, subject and cause.
 Fuzz_summary merge_fuzz(const std::vector<std::string>& dirs, const std::string& out);
-
-// Writes text to path through a temporary file and a rename.
-void write_file_atomically(const std::string& path, const std::string& text);
 
 } // namespace clash4d
 

@@ -2,6 +2,7 @@
 
 #include "model/Scene_model.h"
 #include "float/Double_kernel.h"
+#include "scene/Files.h"
 #include "scene/Number_text.h"
 
 #include <algorithm>
@@ -23,7 +24,8 @@ namespace {
 using json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 
-const char* const all_causes[] = {"contact", "input rounding", "arithmetic", "invalid witness"};
+// Disagreements, then faults of external subjects.
+const char* const all_causes[] = {"contact", "input rounding", "arithmetic", "invalid witness", "crash", "timeout", "protocol"};
 const char* const palette[] = {"#4e79a7", "#f28e2b", "#59a14f", "#b07aa1", "#76b7b2",
                                "#edc948", "#9c755f", "#ff9da7", "#e15759", "#bab0ac"};
 constexpr std::size_t max_drawn_objects = 24;
@@ -64,99 +66,46 @@ std::string seconds_text(double s)
 
 // ---------------------------------------------------------------- comparison fields
 
-const json& field(const json& j, const char* key)
-{
-  static const json null;
-  if (!j.is_object()) return null;
-  auto it = j.find(key);
-  return it == j.end() ? null : *it;
-}
-
-// The string value of a field, "" when missing or null.
-std::string text(const json& j, const char* key)
-{
-  const json& v = field(j, key);
-  if (v.is_string()) return v.get<std::string>();
-  return v.is_null() ? "" : v.dump();
-}
-
-// 1 true, 0 false, -1 missing or null.
-int flag(const json& j, const char* key)
-{
-  const json& v = field(j, key);
-  return v.is_boolean() ? (v.get<bool>() ? 1 : 0) : -1;
-}
-
-const json& subjects_of(const json& comparison)
-{
-  static const json none = json::array();
-  const json& s = field(comparison, "subjects");
-  return s.is_array() ? s : none;
-}
-
-bool failed(const json& s) { return flag(s, "ok") == 0; }
-// A subject that did not run on this scene (fcl where FCL cannot express it).
-bool skipped(const json& s) { return field(s, "skipped").is_string(); }
-bool is_reference(const json& s) { return flag(s, "reference") == 1; }
-bool disagrees(const json& s) { return !failed(s) && !text(s, "cause").empty(); }
-
-const json& reference_of(const json& comparison)
-{
-  static const json null;
-  for (const json& s : subjects_of(comparison))
-    if (is_reference(s)) return s;
-  for (const json& s : subjects_of(comparison))
-    if (text(s, "subject") == "exact") return s;
-  return null;
-}
+const char* const dash = "\xE2\x80\x94";
 
 // The detail of a subject's disagreement, from the comparison's list.
-std::string detail_of(const json& comparison, const json& subject)
+std::string detail_of(const Comparison& c, const Subject_row& s)
 {
-  const json& list = field(comparison, "disagreements");
-  if (list.is_array())
-    for (const json& d : list)
-      if (text(d, "subject") == text(subject, "subject")) return text(d, "detail");
-  return text(subject, "subject") + " disagrees with exact (" + text(subject, "cause") + ")";
+  for (const Disagreement& d : c.disagreements)
+    if (d.subject == s.subject) return d.detail;
+  return s.subject + " disagrees with exact (" + s.cause.value_or("") + ")";
 }
 
-bool case_disagrees(const json& comparison)
+bool case_disagrees(const Comparison& c)
 {
-  for (const json& s : subjects_of(comparison))
-    if (disagrees(s)) return true;
+  for (const Subject_row& s : c.subjects)
+    if (s.disagrees()) return true;
   return false;
 }
 
-bool case_has_errors(const json& comparison)
+std::string verdict_text(const Subject_row* s)
 {
-  for (const json& s : subjects_of(comparison))
-    if (failed(s)) return true;
-  return false;
+  if (!s || !s->collide) return dash;
+  return *s->collide ? "collision" : "no collision";
 }
 
-std::string verdict_text(const json& s)
-{
-  int c = flag(s, "collide");
-  return c < 0 ? "\xE2\x80\x94" : (c ? "collision" : "no collision");
-}
+std::string yes_no(const std::optional<bool>& f, const char* unknown = dash) { return !f ? unknown : (*f ? "yes" : "no"); }
 
-std::string yes_no(int f, const char* unknown = "\xE2\x80\x94") { return f < 0 ? unknown : (f ? "yes" : "no"); }
-
-std::string join_strings(const json& a, const char* separator)
+template <class Strings>
+std::string joined(const Strings& a)
 {
   std::string out;
-  if (!a.is_array()) return out;
-  for (const json& e : a) out += (out.empty() ? "" : separator) + (e.is_string() ? e.get<std::string>() : e.dump());
+  for (const auto& e : a) out += (out.empty() ? "" : ", ") + e;
   return out;
 }
 
-// "a, b at (x, y, z, t)" for a witness or earliest object; "a, b" when the
+// "a, b at (x, y, z, t)" for a witness or earliest contact; "a, b" when the
 // subject gives no point (fcl).
-std::string located_text(const json& w)
+std::string located_text(const std::optional<Located>& w)
 {
-  if (!w.is_object()) return "\xE2\x80\x94";
-  if (!field(w, "point").is_array()) return join_strings(field(w, "objects"), ", ");
-  return join_strings(field(w, "objects"), ", ") + " at (" + join_strings(field(w, "point"), ", ") + ")";
+  if (!w) return dash;
+  if (!w->point) return joined(w->objects);
+  return joined(w->objects) + " at (" + joined(*w->point) + ")";
 }
 
 // ---------------------------------------------------------------- summary
@@ -164,23 +113,34 @@ std::string located_text(const json& w)
 struct Tally {
   int answers = 0, agreements = 0, disagreements = 0, errors = 0, skips = 0;
   json by_cause = json::object();
+  std::string semantics;            // as the subject declared it (the last one seen)
+  double seconds = 0;
+  int timed = 0;
 
   Tally() { for (const char* c : all_causes) by_cause[c] = 0; }
-  void add(const json& s)
+  void add(const Subject_row& s)
   {
-    if (skipped(s)) { ++skips; return; }   // no answer to count
+    semantics = s.semantics;
+    if (s.seconds) { seconds += *s.seconds; ++timed; }
+    if (s.skipped) { ++skips; return; }   // no answer to count
     ++answers;
-    if (failed(s)) ++errors;
-    else if (disagrees(s)) {
-      ++disagreements;
-      std::string c = text(s, "cause");
-      by_cause[c] = by_cause.value(c, 0) + 1;
-    } else ++agreements;
+    if (s.cause) by_cause[*s.cause] = by_cause.value(*s.cause, 0) + 1;   // faults (crash, timeout) too
+    if (s.failed()) ++errors;
+    else if (s.disagrees()) ++disagreements;
+    else ++agreements;
   }
   json to_json() const
   {
     return {{"answers", answers}, {"agreements", agreements}, {"disagreements", disagreements},
             {"errors", errors}, {"skipped", skips}, {"by_cause", by_cause}};
+  }
+  // A subject's own line: its semantics and mean time per query beside the rest.
+  json subject_json() const
+  {
+    json j = to_json();
+    j["semantics"] = semantics;
+    j["seconds_per_query"] = timed ? json(seconds / timed) : json();
+    return j;
   }
 };
 
@@ -189,54 +149,58 @@ struct Tally {
 json summary_of(const std::vector<Report_case>& cases)
 {
   int agreeing = 0, disagreeing = 0, with_errors = 0, reference_errors = 0;
-  Tally total;
+  Tally total, reference;
   json by_subject = json::object();
   std::vector<std::string> order;
   std::vector<Tally> tallies;
   for (const Report_case& c : cases) {
-    bool d = case_disagrees(c.comparison), e = case_has_errors(c.comparison);
+    bool d = case_disagrees(c.comparison), e = c.comparison.has_failure();
     agreeing += !d && !e;
     disagreeing += d;
     with_errors += e;
-    for (const json& s : subjects_of(c.comparison)) {
-      if (is_reference(s)) { reference_errors += failed(s); continue; }
-      std::string name = text(s, "subject");
-      auto it = std::find(order.begin(), order.end(), name);
-      if (it == order.end()) { order.push_back(name); tallies.emplace_back(); it = order.end() - 1; }
+    for (const Subject_row& s : c.comparison.subjects) {
+      if (s.reference) {
+        reference_errors += s.failed();
+        reference.add(s);
+        continue;
+      }
+      auto it = std::find(order.begin(), order.end(), s.subject);
+      if (it == order.end()) { order.push_back(s.subject); tallies.emplace_back(); it = order.end() - 1; }
       tallies[it - order.begin()].add(s);
       total.add(s);
     }
   }
-  for (std::size_t i = 0; i < order.size(); ++i) by_subject[order[i]] = tallies[i].to_json();
+  for (std::size_t i = 0; i < order.size(); ++i) by_subject[order[i]] = tallies[i].subject_json();
   json t = total.to_json();
   return {{"scenes", cases.size()}, {"scenes_agreeing", agreeing}, {"scenes_disagreeing", disagreeing},
           {"scenes_with_errors", with_errors}, {"answers", t["answers"]}, {"agreements", t["agreements"]},
           {"disagreements", t["disagreements"]}, {"errors", t["errors"]}, {"skipped", t["skipped"]}, {"reference_errors", reference_errors},
-          {"by_cause", t["by_cause"]}, {"by_subject", by_subject}};
+          {"by_cause", t["by_cause"]}, {"by_subject", by_subject},
+          {"reference_seconds_per_query", reference.subject_json()["seconds_per_query"]}};
 }
 
 std::string report_json(const std::vector<Report_case>& cases, const json& summary)
 {
   json out = {{"format", "clash4d-report/1"}, {"summary", summary}, {"cases", json::array()}};
-  for (const Report_case& c : cases) out["cases"].push_back(c.comparison);
+  for (const Report_case& c : cases) out["cases"].push_back(c.comparison.to_json());
   return out.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 // ---------------------------------------------------------------- JUnit
 
-std::string junit_case(const Report_case& c, const json& s)
+std::string junit_case(const Report_case& c, const Subject_row& s)
 {
   std::ostringstream out;
-  const json& seconds = field(s, "seconds");
-  out << "  <testcase classname=\"" << escape(c.file) << "\" name=\"" << escape(text(s, "subject")) << "\"";
-  if (seconds.is_number()) out << " time=\"" << format("%.6f", seconds.get<double>()) << "\"";
-  if (failed(s)) {
-    std::string e = text(s, "error");
-    out << ">\n    <error message=\"" << escape(e) << "\" type=\"error\">" << escape(e) << "</error>\n  </testcase>\n";
-  } else if (skipped(s)) {
-    out << ">\n    <skipped message=\"" << escape(text(s, "skipped")) << "\"/>\n  </testcase>\n";
-  } else if (disagrees(s)) {
-    out << ">\n    <failure message=\"" << escape(text(s, "cause")) << "\" type=\"disagreement\">"
+  out << "  <testcase classname=\"" << escape(c.file) << "\" name=\"" << escape(s.subject) << "\"";
+  if (s.seconds) out << " time=\"" << format("%.6f", *s.seconds) << "\"";
+  if (s.failed()) {
+    std::string type = s.cause.value_or("error");
+    out << ">\n    <error message=\"" << escape(s.error) << "\" type=\"" << escape(type) << "\">" << escape(s.error)
+        << "</error>\n  </testcase>\n";
+  } else if (s.skipped) {
+    out << ">\n    <skipped message=\"" << escape(*s.skipped) << "\"/>\n  </testcase>\n";
+  } else if (s.disagrees()) {
+    out << ">\n    <failure message=\"" << escape(*s.cause) << "\" type=\"disagreement\">"
         << escape(detail_of(c.comparison, s)) << "</failure>\n  </testcase>\n";
   } else out << "/>\n";
   return out.str();
@@ -248,12 +212,12 @@ std::string junit_xml(const std::vector<Report_case>& cases)
   double seconds = 0;
   std::string body;
   for (const Report_case& c : cases)
-    for (const json& s : subjects_of(c.comparison)) {
+    for (const Subject_row& s : c.comparison.subjects) {
       ++tests;
-      failures += disagrees(s);
-      errors += failed(s);
-      skips += skipped(s);
-      if (field(s, "seconds").is_number()) seconds += field(s, "seconds").get<double>();
+      failures += s.disagrees();
+      errors += s.failed();
+      skips += s.skipped.has_value();
+      seconds += s.seconds.value_or(0);
       body += junit_case(c, s);
     }
   std::ostringstream out;
@@ -299,38 +263,37 @@ Box<double, 3> node_box(const Csg_model<double>& m, int i)
   return b;
 }
 
-std::optional<double> number_of(const json& v)
+std::optional<double> number_of(const std::string& text)
 {
-  if (v.is_number()) return v.get<double>();
-  if (!v.is_string()) return std::nullopt;
-  Number_parse p = parse_number_text(v.get<std::string>(), true);
+  Number_parse p = parse_number_text(text, true);
   if (!p.ok) return std::nullopt;
   double d = round_to_nearest(p.value);
   if (!std::isfinite(d)) return std::nullopt;
   return d;
 }
 
-void add_marker(std::vector<Marker>& out, Marker::Kind kind, const json& located, const std::string& title)
+void add_marker(std::vector<Marker>& out, Marker::Kind kind, const std::optional<Located>& located, const std::string& title)
 {
-  const json& p = field(located, "point");
-  if (!p.is_array() || p.size() != 4) return;
+  if (!located || !located->point) return;
   Marker m{kind, {}, title + ": " + located_text(located)};
   for (std::size_t i = 0; i < 4; ++i) {
-    std::optional<double> d = number_of(p[i]);
+    std::optional<double> d = number_of((*located->point)[i]);
     if (!d) return;
     m.point[i] = *d;
   }
   out.push_back(m);
 }
 
-std::vector<Marker> markers_of(const json& comparison)
+std::vector<Marker> markers_of(const Comparison& comparison)
 {
   std::vector<Marker> out;
-  const json& ref = reference_of(comparison);
-  add_marker(out, Marker::Kind::Witness, field(ref, "witness"), text(ref, "subject") + " witness");
-  add_marker(out, Marker::Kind::Earliest, field(ref, "earliest"), text(ref, "subject") + " earliest contact, t* = " + text(field(ref, "earliest"), "t"));
-  for (const json& s : subjects_of(comparison))
-    if (!is_reference(s)) add_marker(out, Marker::Kind::Other, field(s, "witness"), text(s, "subject") + " witness");
+  if (const Subject_row* ref = comparison.reference()) {
+    add_marker(out, Marker::Kind::Witness, ref->witness, ref->subject + " witness");
+    add_marker(out, Marker::Kind::Earliest, ref->earliest,
+               ref->subject + " earliest contact, t* = " + (ref->earliest ? ref->earliest->t : ""));
+  }
+  for (const Subject_row& s : comparison.subjects)
+    if (!s.reference) add_marker(out, Marker::Kind::Other, s.witness, s.subject + " witness");
   return out;
 }
 
@@ -341,13 +304,9 @@ std::vector<std::size_t> objects_to_draw(const Report_case& c)
   for (std::size_t i = 0; i < c.scene.objects.size(); ++i) all.push_back(i);
   if (all.size() <= max_drawn_objects) return all;
   std::vector<std::string> named;
-  for (const json& s : subjects_of(c.comparison))
-    for (const char* key : {"witness", "earliest"}) {
-      const json& names = field(field(s, key), "objects");
-      if (names.is_array())
-        for (const json& n : names)
-          if (n.is_string()) named.push_back(n.get<std::string>());
-    }
+  for (const Subject_row& s : c.comparison.subjects)
+    for (const auto* l : {&s.witness, &s.earliest})
+      if (*l) named.insert(named.end(), (*l)->objects.begin(), (*l)->objects.end());
   std::vector<std::size_t> chosen;
   for (std::size_t i : all)
     if (std::find(named.begin(), named.end(), c.scene.objects[i].name) != named.end()) chosen.push_back(i);
@@ -602,33 +561,40 @@ std::string summary_html(const json& s)
   for (const char* k : {"scenes", "scenes_agreeing", "scenes_disagreeing", "scenes_with_errors", "answers",
                         "agreements", "disagreements", "errors", "skipped"})
     out << number_cell(s.value(k, 0L));
-  out << "</tr>\n</table>\n<table>\n<tr><th>subject</th><th>answers</th><th>agreements</th>";
+  out << "</tr>\n</table>\n<table>\n<tr><th>subject</th><th>semantics</th><th>time per query</th><th>answers</th><th>agreements</th>";
   for (const auto& c : s["by_cause"].items()) out << "<th>" << escape(c.key()) << "</th>";
   out << "<th>errors</th><th>skipped</th></tr>\n";
+  auto time_cell = [&](const json& t) {
+    const json& v = t.contains("seconds_per_query") ? t["seconds_per_query"] : json();
+    return cell(v.is_number() ? seconds_text(v.get<double>()) : dash, "n whole");
+  };
   auto row = [&](const std::string& name, const json& t) {
-    out << "<tr><td>" << name << "</td>" << number_cell(t["answers"].get<long>()) << number_cell(t["agreements"].get<long>());
+    out << "<tr><td>" << name << "</td>" << cell(escape(t.value("semantics", ""))) << time_cell(t)
+        << number_cell(t["answers"].get<long>()) << number_cell(t["agreements"].get<long>());
     for (const auto& c : s["by_cause"].items()) out << number_cell(t["by_cause"].value(c.key(), 0L));
     out << number_cell(t["errors"].get<long>()) << number_cell(t.value("skipped", 0L)) << "</tr>\n";
   };
   for (const auto& t : s["by_subject"].items()) row(escape(t.key()), t.value());
   row("<b>all</b>", s);
   out << "</table>\n";
+  const json& exact_time = s["reference_seconds_per_query"];
+  if (exact_time.is_number()) out << "<p>exact (the reference): " << seconds_text(exact_time.get<double>()) << " per query.</p>\n";
   return out.str();
 }
 
-std::string status_text(const json& comparison)
+std::string status_text(const Comparison& comparison)
 {
   std::string out;
-  for (const json& s : subjects_of(comparison)) {
-    if (disagrees(s)) out += (out.empty() ? "" : "; ") + text(s, "subject") + ": " + text(s, "cause");
-    else if (failed(s)) out += (out.empty() ? "" : "; ") + text(s, "subject") + ": error";
+  for (const Subject_row& s : comparison.subjects) {
+    if (s.disagrees()) out += (out.empty() ? "" : "; ") + s.subject + ": " + *s.cause;
+    else if (s.failed()) out += (out.empty() ? "" : "; ") + s.subject + ": " + s.cause.value_or("error");
   }
   return out.empty() ? "all agree" : out;
 }
 
-const char* case_class(const json& comparison)
+const char* case_class(const Comparison& comparison)
 {
-  return case_disagrees(comparison) ? "bad" : case_has_errors(comparison) ? "err" : "good";
+  return case_disagrees(comparison) ? "bad" : comparison.has_failure() ? "err" : "good";
 }
 
 std::string index_html(const std::vector<Report_case>& cases, const std::vector<std::size_t>& order)
@@ -636,22 +602,22 @@ std::string index_html(const std::vector<Report_case>& cases, const std::vector<
   std::ostringstream out;
   out << "<h2>Scenes</h2>\n<table>\n<tr><th>file</th><th>name</th><th>exact</th><th>result</th></tr>\n";
   for (std::size_t i : order) {
-    const json& c = cases[i].comparison;
+    const Comparison& c = cases[i].comparison;
     std::string cls = std::string(case_class(c)) + "-cell";
     out << "<tr><td><a href=\"#case-" << i << "\"><code>" << escape(cases[i].file) << "</code></a></td>"
-        << cell(escape(text(c, "name"))) << cell(verdict_text(reference_of(c)))
+        << cell(escape(c.name)) << cell(verdict_text(c.reference()))
         << cell(escape(status_text(c)), cls.c_str()) << "</tr>\n";
   }
   return out.str() + "</table>\n";
 }
 
-std::string result_cell(const json& s)
+std::string result_cell(const Subject_row& s)
 {
-  if (failed(s)) return cell("error: " + escape(text(s, "error")), "err-cell");
-  if (skipped(s)) return cell("skipped: " + escape(text(s, "skipped")));
-  if (disagrees(s)) return cell("disagrees: " + escape(text(s, "cause")), "bad-cell");
-  if (is_reference(s)) return cell("reference");
-  return cell(flag(s, "agrees") == 0 ? "disagrees" : "agrees", flag(s, "agrees") == 0 ? "bad-cell" : "good-cell");
+  if (s.failed()) return cell((s.cause ? *s.cause + ": " : "error: ") + escape(s.error), "err-cell");
+  if (s.skipped) return cell("skipped: " + escape(*s.skipped));
+  if (s.disagrees()) return cell("disagrees: " + escape(*s.cause), "bad-cell");
+  if (s.reference) return cell("reference");
+  return cell(s.agrees == false ? "disagrees" : "agrees", s.agrees == false ? "bad-cell" : "good-cell");
 }
 
 // A number kept on one line unless long (a break in "31/4" would read "3 1/4").
@@ -660,54 +626,49 @@ std::string number_html(const std::string& s)
   return std::string(s.size() <= 24 ? "<code class=\"whole\">" : "<code>") + escape(s) + "</code>";
 }
 
-std::string subject_row(const json& s)
+std::string subject_row(const Subject_row& s)
 {
-  const json& seconds = field(s, "seconds");
-  const json& earliest = field(s, "earliest");
-  std::string t_star = earliest.is_object() ? number_html(text(earliest, "t")) : "\xE2\x80\x94";
-  std::string t_error = text(s, "t_error");
-  return "<tr>" + cell(escape(text(s, "subject"))) + cell(verdict_text(s)) +
-         cell("<span class=\"mono\">" + escape(located_text(field(s, "witness"))) + "</span>") +
-         cell(yes_no(flag(s, "witness_valid"))) + cell(t_star) +
-         cell(t_error.empty() ? "\xE2\x80\x94" : number_html(t_error)) +
-         cell(seconds.is_number() ? seconds_text(seconds.get<double>()) : "\xE2\x80\x94", "n whole") + result_cell(s) + "</tr>\n";
+  std::string t_star = s.earliest ? number_html(s.earliest->t) : dash;
+  return "<tr>" + cell(escape(s.subject)) + cell(escape(s.semantics)) + cell(verdict_text(&s)) +
+         cell("<span class=\"mono\">" + escape(located_text(s.witness)) + "</span>") +
+         cell(yes_no(s.witness_valid)) + cell(t_star) + cell(s.t_error ? number_html(*s.t_error) : dash) +
+         cell(s.seconds ? seconds_text(*s.seconds) : dash, "n whole") + result_cell(s) + "</tr>\n";
 }
 
-std::string details_html(const json& comparison)
+std::string details_html(const Comparison& comparison)
 {
   std::string out;
-  const json& list = field(comparison, "disagreements");
-  if (list.is_array())
-    for (const json& d : list)
-      out += "<li><b>" + escape(text(d, "subject")) + "</b> (" + escape(text(d, "cause")) + "): " + escape(text(d, "detail")) + "</li>\n";
-  for (const json& s : subjects_of(comparison))
-    if (failed(s)) out += "<li><b>" + escape(text(s, "subject")) + "</b> failed: " + escape(text(s, "error")) + "</li>\n";
+  for (const Disagreement& d : comparison.disagreements)
+    out += "<li><b>" + escape(d.subject) + "</b> (" + escape(d.cause) + "): " + escape(d.detail) + "</li>\n";
+  for (const Subject_row& s : comparison.subjects)
+    if (s.failed() && !s.cause) out += "<li><b>" + escape(s.subject) + "</b> failed: " + escape(s.error) + "</li>\n";
   return out.empty() ? "" : "<ul class=\"details\">\n" + out + "</ul>\n";
 }
 
 std::string facts_html(const Report_case& rc)
 {
-  const json& c = rc.comparison;
-  const json& ref = reference_of(c);
-  const json& earliest = field(ref, "earliest");
+  const Comparison& c = rc.comparison;
+  const Subject_row* ref = c.reference();
+  std::optional<Located> none;
+  const std::optional<Located>& earliest = ref ? ref->earliest : none;
   std::string out = "<dl>\n<dt>exact verdict</dt><dd><b>" + verdict_text(ref) + "</b></dd>\n";
-  out += "<dt>exact witness</dt><dd class=\"mono\">" + escape(located_text(field(ref, "witness"))) + "</dd>\n";
+  out += "<dt>exact witness</dt><dd class=\"mono\">" + escape(located_text(ref ? ref->witness : none)) + "</dd>\n";
   out += "<dt>exact earliest</dt><dd class=\"mono\">" +
-         (earliest.is_object() ? "t* = " + escape(text(earliest, "t")) + ", " + escape(located_text(earliest)) : "\xE2\x80\x94") + "</dd>\n";
+         (earliest ? "t* = " + escape(earliest->t) + ", " + escape(located_text(earliest)) : std::string(dash)) + "</dd>\n";
   out += "<dt>time span</dt><dd class=\"mono\">[" + to_string(rc.scene.t_lo) + ", " + to_string(rc.scene.t_hi) + "]</dd>\n";
-  out += "<dt>closed objects touch</dt><dd>" + yes_no(flag(c, "closed_touch"), "not determined") + "</dd>\n";
+  out += "<dt>closed objects touch</dt><dd>" + yes_no(c.closed_touch, "not determined") + "</dd>\n";
   return out + "</dl>\n";
 }
 
 std::string case_html(const Report_case& rc, std::size_t index)
 {
-  const json& c = rc.comparison;
+  const Comparison& c = rc.comparison;
   std::ostringstream out;
   out << "<section class=\"case " << case_class(c) << "\" id=\"case-" << index << "\">\n<h2><code>"
-      << escape(rc.file) << "</code></h2>\n<p class=\"name\">" << escape(text(c, "name")) << "</p>\n" << facts_html(rc)
-      << "<table>\n<tr><th>subject</th><th>verdict</th><th>witness</th><th>witness valid</th><th>t*</th>"
+      << escape(rc.file) << "</code></h2>\n<p class=\"name\">" << escape(c.name) << "</p>\n" << facts_html(rc)
+      << "<table>\n<tr><th>subject</th><th>semantics</th><th>verdict</th><th>witness</th><th>witness valid</th><th>t*</th>"
       << "<th>t error</th><th>time</th><th>result</th></tr>\n";
-  for (const json& s : subjects_of(c)) out << subject_row(s);
+  for (const Subject_row& s : c.subjects) out << subject_row(s);
   out << "</table>\n" << details_html(c);
   Drawing d = drawing_of(rc);
   out << "<div class=\"diagrams\">\n";
@@ -721,7 +682,7 @@ std::string page_html(const std::vector<Report_case>& cases, const json& summary
   std::vector<std::size_t> order(cases.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    auto rank = [&](std::size_t i) { return case_disagrees(cases[i].comparison) ? 0 : case_has_errors(cases[i].comparison) ? 1 : 2; };
+    auto rank = [&](std::size_t i) { return case_disagrees(cases[i].comparison) ? 0 : cases[i].comparison.has_failure() ? 1 : 2; };
     return rank(a) < rank(b);
   });
   std::ostringstream out;
@@ -737,29 +698,6 @@ std::string page_html(const std::vector<Report_case>& cases, const json& summary
 
 // ---------------------------------------------------------------- files
 
-// Writes DIR/.NAME.PID.tmp, then renames it to DIR/NAME.
-void write_atomically(const fs::path& dir, const std::string& name, const std::string& content)
-{
-  fs::path target = dir / name, temporary = dir / ("." + name + "." + std::to_string(::getpid()) + ".tmp");
-  std::error_code ec;
-  {
-    std::ofstream f(temporary, std::ios::binary | std::ios::trunc);
-    if (!f) throw std::runtime_error(temporary.string() + ": cannot write: " + std::strerror(errno));
-    f << content;
-    f.close();
-    if (!f) {
-      fs::remove(temporary, ec);
-      throw std::runtime_error(temporary.string() + ": cannot write (disk full?)");
-    }
-  }
-  fs::rename(temporary, target, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw std::runtime_error(target.string() + ": cannot rename " + temporary.string() + " to it: " + ec.message());
-  }
-}
-
 } // namespace
 
 void write_report(const std::vector<Report_case>& cases, const std::string& dir)
@@ -770,9 +708,9 @@ void write_report(const std::vector<Report_case>& cases, const std::string& dir)
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))
     throw std::runtime_error(dir + ": cannot create the report directory" + (ec ? ": " + ec.message() : ""));
-  write_atomically(dir, "report.json", report);
-  write_atomically(dir, "junit.xml", junit);
-  write_atomically(dir, "index.html", page);
+  write_file_atomically((fs::path(dir) / "report.json").string(), report);
+  write_file_atomically((fs::path(dir) / "junit.xml").string(), junit);
+  write_file_atomically((fs::path(dir) / "index.html").string(), page);
 }
 
 } // namespace clash4d

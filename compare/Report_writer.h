@@ -5,8 +5,8 @@
 #ifndef CLASH4D_COMPARE_REPORT_WRITER_H
 #define CLASH4D_COMPARE_REPORT_WRITER_H
 
+#include "compare/Comparison.h"
 #include "scene/Scene.h"
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -15,7 +15,7 @@ namespace clash4d {
 struct Report_case {
   std::string file;                   // scene path as given
   Scene scene;                        // the parsed scene (exact rationals), for drawing
-  nlohmann::ordered_json comparison;  // one comparison object
+  Comparison comparison;
 };
 
 // Writes DIR/index.html, DIR/report.json, DIR/junit.xml. Each file is written to

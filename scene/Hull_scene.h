@@ -12,7 +12,8 @@
 namespace clash4d {
 
 // The scene file text; successive calls on one generator give the sequence
-// the benchmark reports as "random #i".
+// the benchmark reports as "random #i". Only the generator's raw output is
+// used (scene/Random_draw.h), so the sequence is the same everywhere.
 std::string make_hull_scene(std::mt19937_64& rng);
 
 } // namespace clash4d

@@ -309,7 +309,8 @@ Motion parse_motion(const std::string& text, const std::string& place)
 Scene read_scene(const Json_value& root)
 {
   expect_kind(root, Kind::Object, "");
-  expect_keys(root, {"format", "name", "time", "objects", "ignore"}, "");
+  // meta: provenance written by tools (spec), any JSON value, never read here.
+  expect_keys(root, {"format", "name", "time", "objects", "ignore", "meta"}, "");
   Scene scene;
   const Json_value& format = required(root, "format", "");
   expect_kind(format, Kind::String, "format");

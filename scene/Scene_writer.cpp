@@ -61,7 +61,7 @@ std::string motion_text(const Motion& m)
   return out;
 }
 
-std::string write_scene(const Scene& scene)
+json scene_json(const Scene& scene, const json& meta)
 {
   json j = {{"format", "clash4d-scene/1"}};
   if (!scene.name.empty()) j["name"] = scene.name;
@@ -73,7 +73,13 @@ std::string write_scene(const Scene& scene)
     j["ignore"] = json::array();
     for (const auto& p : scene.ignore) j["ignore"].push_back({scene.objects[p.first].name, scene.objects[p.second].name});
   }
-  return j.dump(2) + "\n";
+  if (!meta.is_null()) j["meta"] = meta;
+  return j;
+}
+
+std::string write_scene(const Scene& scene, const json& meta)
+{
+  return scene_json(scene, meta).dump(2) + "\n";
 }
 
 } // namespace clash4d

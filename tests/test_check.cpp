@@ -1,7 +1,7 @@
 #define BOOST_TEST_MODULE check
 #include <boost/test/unit_test.hpp>
 
-#include "cli/Commands.h"
+#include "support/Cli_run.h"
 #include "scene/Number_text.h"
 #include <nlohmann/json.hpp>
 #include <cstdio>
@@ -10,20 +10,8 @@
 
 using namespace clash4d;
 
-struct Run {
-  int status;
-  std::string out, err;
-};
-
-static Run run(std::vector<std::string> args)
-{
-  args.insert(args.begin(), "clash4d");
-  std::vector<const char*> argv;
-  for (const auto& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  int status = run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {status, out.str(), err.str()};
-}
+using Run = Cli_run;
+static Run run(std::vector<std::string> args) { return run_clash4d(std::move(args)); }
 
 static std::string scene_file(const std::string& name, const std::string& text)
 {

@@ -29,7 +29,7 @@ static json compare_with_fcl(const Scene& scene, const std::string& name, bool e
   Compare_options o;
   o.fcl = true;
   o.earliest = earliest;
-  return compare_scene(scene, name, o);
+  return compare_scene(scene, name, o).to_json();
 }
 
 static const json& subject(const json& c, const std::string& name)
@@ -326,8 +326,8 @@ BOOST_AUTO_TEST_CASE(report_counts_skipped_apart)
   fs::remove_all(dir);
   Scene difference = fixture("contact/difference_dangling_face_touch.json");
   Scene touch = fixture("contact/hull_face_touch.json");
-  write_report({{"difference.json", difference, compare_with_fcl(difference, "difference.json")},
-                {"touch.json", touch, compare_with_fcl(touch, "touch.json")}},
+  write_report({{"difference.json", difference, Comparison::from_json(compare_with_fcl(difference, "difference.json"))},
+                {"touch.json", touch, Comparison::from_json(compare_with_fcl(touch, "touch.json"))}},
                dir.string());
   std::ifstream in(dir / "report.json");
   json r = json::parse(in);
@@ -361,7 +361,7 @@ BOOST_AUTO_TEST_CASE(fuzz_campaign_records_fcl)
     std::ifstream in_finding(f.path());
     json finding = json::parse(in_finding);   // kept: the loop walks inside it
     bool has_fcl = false;
-    for (const auto& s : finding["comparison"]["subjects"]) has_fcl = has_fcl || s["subject"] == "fcl";
+    for (const auto& s : finding["meta"]["comparison"]["subjects"]) has_fcl = has_fcl || s["subject"] == "fcl";
     BOOST_TEST(has_fcl, f.path());
   }
   // The same folder without --fcl is another campaign.

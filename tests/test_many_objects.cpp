@@ -5,6 +5,8 @@
 #include "float/Double_instantiation.h"
 #include "scene/Grid_scene.h"
 #include "scene/Json_reader.h"
+#include "scene/Random_draw.h"
+#include "scene/Scene_builder.h"
 #include "scene/Scene_reader.h"
 #include <random>
 #include <set>
@@ -43,19 +45,18 @@ BOOST_AUTO_TEST_CASE(grid_scenes_report_exactly_the_pairs_built_to_collide)
   }
 }
 
-// A scene of several blocks in random motion; returns its JSON.
+// A scene of several unit blocks in random motion; returns its JSON.
 static std::string random_cluster(std::mt19937_64& rng, int n)
 {
-  std::uniform_int_distribution<int> pos(0, 6), vel(-2, 2);
-  std::string objects;
+  Random_draw draw(rng);
+  Scene_builder b("", 0, 4);
   for (int i = 0; i < n; ++i) {
-    int x = pos(rng), y = pos(rng) / 2, z = 0;
-    objects += std::string(i ? "," : "") + R"({"name":"o)" + std::to_string(i) + R"(","shape":{"block":{"min":[)" +
-               std::to_string(x) + "," + std::to_string(y) + "," + std::to_string(z) + R"(],"max":[)" +
-               std::to_string(x + 1) + "," + std::to_string(y + 1) + "," + std::to_string(z + 1) + R"(]}},"motion":"vel )" +
-               std::to_string(vel(rng)) + "/2 " + std::to_string(vel(rng)) + "/2 0 until 2 rest\"}";
+    long x = draw.range(0, 6), y = draw.range(0, 6) / 2;
+    Rational vx = Rational(draw.range(-2, 2)) / 2, vy = Rational(draw.range(-2, 2)) / 2;
+    Vec3 v = vec(vx, vy, 0);
+    b.object("o" + std::to_string(i), block(vec(x, y, 0), vec(x + 1, y + 1, 1)), piecewise({v, vec(0, 0, 0)}, {2}));
   }
-  return R"({"format":"clash4d-scene/1","time":[0,4],"objects":[)" + objects + "]}";
+  return b.text();
 }
 
 BOOST_AUTO_TEST_CASE(many_objects_equal_the_union_of_pairwise_checks)

@@ -17,7 +17,7 @@ namespace {
 
 Report_case make_case(const std::string& file, const std::string& scene, const std::string& comparison)
 {
-  return {file, read_scene(read_json_text(scene)), json::parse(comparison)};
+  return {file, read_scene(read_json_text(scene)), Comparison::from_json(json::parse(comparison))};
 }
 
 // A ram moving in -x hits a box at t = 2: every subject agrees.
@@ -140,6 +140,11 @@ BOOST_AUTO_TEST_CASE(report_json_counts)
   BOOST_TEST(s["by_subject"]["double"]["disagreements"] == 1);
   BOOST_TEST(s["by_subject"]["double tol=1e-09"]["errors"] == 1);
   BOOST_TEST(!s["by_subject"].contains("exact"));
+  // Per subject: its semantics and mean time per query, exact's beside them
+  // (the cases' seconds: double 0.0001, 0.0001, 0.001; exact 0.0012, 0.002, 0.003).
+  BOOST_TEST(s["by_subject"]["double"]["semantics"] == "regularised");
+  BOOST_TEST(s["by_subject"]["double"]["seconds_per_query"].get<double>() == 0.0004, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(s["reference_seconds_per_query"].get<double>() == 0.0062 / 3, boost::test_tools::tolerance(1e-9));
 }
 
 BOOST_AUTO_TEST_CASE(junit_counts_and_escaping)

@@ -134,3 +134,23 @@ BOOST_AUTO_TEST_CASE(absurd_input_hits_a_named_limit)
   BOOST_TEST(std::string(e.what()).find("256") != std::string::npos);
   expect_error(edited(R"("time":[0,"10"])", R"("time":[0,"1e1000000"])"), "time[1]", "exponent", 3);
 }
+
+// spec: `meta` is any JSON value, never read by the decision; only at the top.
+BOOST_AUTO_TEST_CASE(meta_holds_any_value_and_is_ignored)
+{
+  Scene plain = read_scene(read_json_text(two_blocks));
+  for (const char* meta : {R"({"family":"x","seed":1,"deep":{"a":[1,"2",null]}})", "[1,2,3]", "\"text\"", "-2.5e-300", "null", "true"}) {
+    Scene s = read_scene(read_json_text(edited(R"("name":"n",)", std::string(R"("name":"n","meta":)") + meta + ",")));
+    BOOST_TEST(write_scene(s) == write_scene(plain), meta);
+  }
+  expect_error(edited(R"("name":"n",)", R"("name":"n","meta":1,"meta":2,)"), "", "duplicate key \"meta\"");
+  expect_error(edited(R"("name":"box",)", R"("name":"box","meta":1,)"), "objects[0]", "unknown key \"meta\"");
+}
+
+BOOST_AUTO_TEST_CASE(the_writer_puts_meta_last_and_reads_back)
+{
+  Scene s = read_scene(read_json_text(two_blocks));
+  std::string text = write_scene(s, {{"family", "f"}, {"seed", 3}});
+  BOOST_TEST(text.find("\"meta\"") > text.find("\"objects\""));
+  BOOST_TEST(write_scene(read_scene(read_json_text(text))) == write_scene(s));
+}

@@ -1,0 +1,76 @@
+// The result of comparing one scene across subjects (compare/Comparer.h), as
+// a typed value; JSON only at the edges (`compare --json`, report.json, the
+// `meta` of fuzz findings). The JSON form is documented in compare/README.md.
+#ifndef CLASH4D_COMPARE_COMPARISON_H
+#define CLASH4D_COMPARE_COMPARISON_H
+
+#include <nlohmann/json.hpp>
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace clash4d {
+
+// A witness or an earliest contact: the pair, and the point when the subject
+// gives one (fcl and most external engines give none); `t` for earliest only.
+struct Located {
+  std::array<std::string, 2> objects;
+  std::optional<std::array<std::string, 4>> point;
+  std::string t;
+};
+
+// One subject's answer held against exact. A subject that did not run has
+// `skipped` (the reason) and no answer, agreement or cause.
+struct Subject_row {
+  std::string subject;
+  std::string semantics = "regularised";   // the question it answers (spec: closed or regularised)
+  std::optional<double> tolerance;         // as it declares it
+  bool reference = false;                  // the exact subject
+  bool ok = true;                          // it answered (false: error, or a crash/timeout/protocol fault)
+  std::string error;
+  std::optional<std::string> skipped;
+  std::optional<bool> collide;
+  std::optional<Located> witness;
+  std::optional<bool> witness_valid;       // checked exactly; none without a point
+  std::optional<Located> earliest;
+  std::optional<std::string> t_error;      // |t* - exact t*|, 3 significant digits
+  std::optional<double> seconds;           // none in saved findings (not reproducible)
+  std::optional<bool> agrees;
+  std::optional<std::string> cause;        // why it disagrees, or what went wrong with it
+
+  bool failed() const { return !ok; }
+  // A disagreement with exact (a failure with a cause is a fault, not this).
+  bool disagrees() const { return ok && cause.has_value(); }
+};
+
+struct Disagreement {
+  std::string subject, cause, detail;
+};
+
+struct Comparison {
+  std::string file, name;
+  std::optional<bool> near_contact;   // the exact verdict flips under a tiny move (none: not needed)
+  std::optional<bool> closed_touch;   // near_contact and exact says no collision
+  std::vector<Subject_row> subjects;
+  std::vector<Disagreement> disagreements;
+
+  const Subject_row* reference() const;
+  const Subject_row* find(const std::string& subject) const;
+  // "subject: cause" of each disagreement or fault, in order.
+  std::vector<std::string> disagreement_keys() const;
+  bool has_disagreement() const { return !disagreements.empty(); }
+  bool has_failure() const;
+  // Drops the timings, which differ from run to run.
+  Comparison reproducible() const;
+
+  nlohmann::ordered_json to_json() const;
+  // Reads what to_json wrote (fuzz folders read back by report); missing
+  // keys are absent values. Throws std::runtime_error naming the key on a
+  // value of the wrong type.
+  static Comparison from_json(const nlohmann::ordered_json& j);
+};
+
+} // namespace clash4d
+
+#endif

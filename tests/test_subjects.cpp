@@ -1,0 +1,223 @@
+#define BOOST_TEST_MODULE subjects
+#include <boost/test/unit_test.hpp>
+
+// External subjects (spec: "External subjects"; docs/subject-protocol.md):
+// the toolkit's own exact check run as a subject agrees everywhere; a subject
+// that always says no is flagged on every colliding scene; subjects that
+// crash, hang or print garbage are findings about the subject, and the run
+// completes with no child process left behind.
+
+#include "support/Cli_run.h"
+#include "compare/Comparer.h"
+#include "compare/External_subject.h"
+#include "compare/Fuzz_campaign.h"
+#include "scene/Scene_builder.h"
+#include "scene/Scene_reader.h"
+
+#include <nlohmann/json.hpp>
+#include <dirent.h>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+using namespace clash4d;
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+
+namespace {
+
+// Shell subjects; each request line starts {"id":N, (clash4d writes id first).
+const std::string read_id = R"(id=$(printf '%s\n' "$line" | sed 's/^{"id":\([0-9]*\).*/\1/'); )";
+const std::string hello = R"(echo '{"subject":"t","semantics":"regularised"}'; )";
+const std::string always_no = hello + "while read -r line; do " + read_id + R"(echo "{\"id\":$id,\"collide\":false}"; done)";
+// Answers "no" to its first request, then dies by a signal.
+const std::string crash_on_second = hello + "n=0; while read -r line; do " + read_id +
+    R"(n=$((n+1)); if [ $n -ge 2 ]; then kill -SEGV $$; fi; echo "{\"id\":$id,\"collide\":false}"; done)";
+// Never answers; its sleep (a grandchild of clash4d) must die with it.
+const std::string hangs = hello + "while read -r line; do sleep 937; done";
+const std::string garbage = hello + R"(while read -r line; do echo 'collide: maybe'; done)";
+
+using Cli_result = Cli_run;
+Cli_result run(std::vector<std::string> args) { return run_clash4d(std::move(args)); }
+
+std::string fixture(const std::string& entry) { return std::string(CLASH4D_FIXTURES) + "/" + entry; }
+
+// Scenes of both verdicts, quick to decide.
+std::vector<std::string> some_fixtures()
+{
+  std::vector<std::string> files;
+  for (const char* f : {"contact/face_touch_static.json", "contact/clear_collision_head_on.json",
+                        "contact/hull_face_touch.json", "contact/touch_only_at_tH_overlap_1e-9.json",
+                        "contact/sliding_contact_decimal.json", "contact/approach_stop_decimal_overlap_1e-9.json"})
+    files.push_back(fixture(f));
+  return files;
+}
+
+const json& row(const json& comparison, const std::string& subject)
+{
+  for (const auto& s : comparison["subjects"])
+    if (s["subject"] == subject) return s;
+  BOOST_FAIL("no row " << subject);
+  return comparison;
+}
+
+json compare_json(const std::vector<std::string>& files, const std::string& subject, double timeout = 5)
+{
+  std::vector<std::string> args{"compare"};
+  args.insert(args.end(), files.begin(), files.end());
+  for (std::string a : std::vector<std::string>{"--earliest", "--json", "--subject", "s=" + subject, "--subject-timeout",
+                                                std::to_string(timeout)})
+    args.push_back(a);
+  Cli_result r = run(args);
+  BOOST_TEST_REQUIRE((r.status == 0 || r.status == 1), r.err);
+  return json::parse(r.out);
+}
+
+// Processes still running our marker command (the hanging subject's sleep),
+// and our children that were not reaped.
+std::size_t leftovers()
+{
+  std::size_t n = 0;
+  std::string me = std::to_string(::getpid());
+  for (const auto& e : fs::directory_iterator("/proc")) {
+    std::string pid = e.path().filename().string();
+    if (pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream cmd(e.path() / "cmdline"), stat(e.path() / "stat");
+    std::string c((std::istreambuf_iterator<char>(cmd)), std::istreambuf_iterator<char>()), s;
+    std::getline(stat, s);
+    if (s.find(')') == std::string::npos) continue;   // gone meanwhile
+    std::istringstream fields(s.substr(s.rfind(')') + 2));
+    std::string state, ppid;
+    fields >> state >> ppid;
+    if (c.find(std::string("sleep") + '\0' + "937") != std::string::npos || ppid == me) ++n;
+  }
+  return n;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(the_exact_check_as_a_subject_agrees_everywhere)
+{
+  std::vector<std::string> files = some_fixtures();
+  for (const char* f : {"paper/section5_vehicle_trays.json", "contact/difference_dangling_face_touch.json"})
+    files.push_back(fixture(f));
+  json all = compare_json(files, CLASH4D_EXACT_SUBJECT);
+  BOOST_TEST(all.size() == files.size());
+  for (const auto& c : all) {
+    const json &mine = row(c, "s"), &exact = row(c, "exact");
+    BOOST_TEST(mine["agrees"] == true, c["file"]);
+    BOOST_TEST(mine["collide"] == exact["collide"], c["file"]);
+    if (exact["collide"] == true) {
+      BOOST_TEST(mine["witness_valid"] == true, c["file"]);
+      BOOST_TEST(mine["earliest"]["t"] == exact["earliest"]["t"], c["file"]);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_subject_that_always_says_no_is_flagged_on_every_colliding_scene)
+{
+  json all = compare_json(some_fixtures(), always_no);
+  std::size_t colliding = 0;
+  for (const auto& c : all) {
+    const json &no = row(c, "s"), &exact = row(c, "exact");
+    BOOST_TEST(no["collide"] == false);
+    BOOST_TEST(no["agrees"] == (exact["collide"] == false), c["file"]);
+    if (exact["collide"] == true) {
+      ++colliding;
+      BOOST_TEST(no["cause"].is_string(), c["file"]);
+    }
+  }
+  BOOST_TEST(colliding >= 2u);
+}
+
+// Each misbehaving subject: every scene still gets a row, the faults carry
+// their cause, the subject is restarted after each, and nothing is left running.
+BOOST_AUTO_TEST_CASE(crashes_hangs_and_garbage_are_findings_about_the_subject)
+{
+  std::vector<std::string> files = some_fixtures();
+  struct Expect { std::string command, cause; };
+  for (const Expect& e : {Expect{crash_on_second, "crash"}, Expect{hangs, "timeout"}, Expect{garbage, "protocol"}}) {
+    json all = compare_json(files, e.command, 0.5);
+    BOOST_TEST(all.size() == files.size());
+    std::size_t faults = 0;
+    for (const auto& c : all) {
+      const json& s = row(c, "s");
+      if (s["cause"] != e.cause) continue;
+      ++faults;
+      BOOST_TEST(s["ok"] == false);
+      BOOST_TEST(!s["error"].get<std::string>().empty());
+    }
+    // crash on the 2nd request of each process: a fresh one answers the next.
+    if (e.cause == "crash") BOOST_TEST(faults == files.size() / 2, e.cause);
+    else BOOST_TEST(faults == files.size(), e.cause);
+    BOOST_TEST(leftovers() == 0u, e.cause);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_fuzz_campaign_saves_subject_faults_as_replayable_scenes)
+{
+  fs::path dir = fs::temp_directory_path() / ("clash4d_test_subjects_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  Fuzz_options o;
+  o.seed = 3;
+  o.cases = 8;
+  o.out = dir.string();
+  o.max_shrink_checks = 4;
+  o.compare.externals.push_back(std::make_shared<External_pool>(Subject_spec{"crashy", crash_on_second, 2}));
+  std::ostringstream err;
+  Fuzz_summary s = run_fuzz(o, err);
+  o.compare.externals.clear();
+  BOOST_TEST(s.done == 8u);
+  std::size_t crashes = 0;
+  for (const auto& f : fs::directory_iterator(dir / "findings")) {
+    Scene scene = read_scene_file(f.path().string());   // a scene as it is
+    std::ifstream in(f.path());
+    json meta = json::parse(in)["meta"];
+    for (const auto& d : meta["disagreements"]) crashes += d["subject"] == "crashy" && d["cause"] == "crash";
+    BOOST_TEST(run({"check", f.path().string()}).status <= 1);
+  }
+  BOOST_TEST(crashes >= 2u);   // several workers' processes each crash on their second case
+  BOOST_TEST(leftovers() == 0u);
+  fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(subject_arguments_are_checked)
+{
+  BOOST_TEST(run({"compare", fixture("contact/face_touch_static.json"), "--subject", "nocommand"}).status == 2);
+  BOOST_TEST(run({"compare", fixture("contact/face_touch_static.json"), "--subject", "exact=true"}).status == 2);
+  BOOST_TEST(run({"compare", fixture("contact/face_touch_static.json"), "--subject", "a=x", "--subject", "a=y"}).status == 2);
+  BOOST_TEST(run({"compare", fixture("contact/face_touch_static.json"), "--subject", "a=x", "--subject-timeout", "0"}).status == 2);
+}
+
+#ifdef CLASH4D_PYTHON
+// The naive sampling engine of examples/subjects: a block passing through a
+// thin wall between two of its 21 instants tunnels (exact: collision, it:
+// none, far from contact: arithmetic); faces touching at rest are a
+// collision to it (closed, with tolerance): contact.
+BOOST_AUTO_TEST_CASE(the_python_sampling_subject_tunnels_and_counts_touching)
+{
+  fs::path dir = fs::temp_directory_path() / ("clash4d_test_python_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::string tunnel = (dir / "tunnel.json").string(), touch = (dir / "touch.json").string();
+  std::ofstream(tunnel) << Scene_builder("bullet through a wall", 0, 1)
+                               .object("wall", block(vec(0, 0, 0), vec(Rational(1, 10), 1, 1)))
+                               .object("bullet", block(vec(Rational(-523, 100), 0, 0), vec(Rational(-513, 100), 1, 1)),
+                                       steady(vec(10, 0, 0)))
+                               .text();
+  std::ofstream(touch) << Scene_builder("faces touching", 0, 1)
+                              .object("a", block(vec(0, 0, 0), vec(1, 1, 1)))
+                              .object("b", block(vec(1, 0, 0), vec(2, 1, 1)))
+                              .text();
+  json all = compare_json({tunnel, touch}, std::string(CLASH4D_PYTHON) + " " + CLASH4D_SOURCE "/examples/subjects/sampling_subject.py");
+  const json &t = row(all[0], "s"), &c = row(all[1], "s");
+  BOOST_TEST(row(all[0], "exact")["collide"] == true);
+  BOOST_TEST(t["collide"] == false);
+  BOOST_TEST(t["cause"] == "arithmetic");
+  BOOST_TEST(t["semantics"] == "closed");
+  BOOST_TEST(row(all[1], "exact")["collide"] == false);
+  BOOST_TEST(c["collide"] == true);
+  BOOST_TEST(c["cause"] == "contact");
+  fs::remove_all(dir);
+}
+#endif
