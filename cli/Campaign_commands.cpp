@@ -20,7 +20,8 @@ void add_subject_options(CLI::App& command, Subject_args& args)
 {
   command.add_option("--subject", args.subjects,
                      "NAME=COMMAND: an external collision engine run by /bin/sh -c COMMAND, speaking the protocol of "
-                     "docs/subject-protocol.md; repeatable. '--subject fcl' is the built-in FCL subject (same as --fcl)");
+                     "docs/subject-protocol.md; repeatable. '--subject fcl' and '--subject bullet' select the built-in FCL "
+                     "(same as --fcl) and Bullet subjects");
   command.add_option("--subject-timeout", args.timeout_seconds,
                      "seconds an external subject may take per request before it is killed and restarted (default 10)")
       ->check(CLI::PositiveNumber);
@@ -31,6 +32,7 @@ bool apply_subject_args(const Subject_args& args, Compare_options& o, const char
   std::vector<std::string> names;
   for (const auto& text : args.subjects) {
     if (text == "fcl") { o.fcl = true; continue; }
+    if (text == "bullet") { o.bullet = true; continue; }
     try {
       Subject_spec spec = parse_subject_spec(text, args.timeout_seconds);
       if (std::find(names.begin(), names.end(), spec.name) != names.end())

@@ -1,4 +1,5 @@
 #include "compare/Comparer.h"
+#include "compare/Bullet_subject.h"
 #include "compare/External_subject.h"
 #include "compare/Fcl_subject.h"
 #include "model/Point_classifier.h"
@@ -180,19 +181,20 @@ std::optional<std::array<std::string, 4>> point_of(const std::array<std::string,
   return p;
 }
 
-// FCL's answer, or the subject skipped with the reason FCL cannot express
-// the scene; conversion and query are timed together, as the other subjects'
-// model building is.
-Run fcl_run(const Scene& scene, const Check_options& co)
+// A compiled-in library's answer (fcl, bullet), or the subject skipped
+// with the reason it cannot express the scene; conversion and query are
+// timed together, as the other subjects' model building is.
+template <class Library>
+Run library_run(const char* name, const Scene& scene, const Check_options& co)
 {
   std::string reason;
-  Run r = timed("fcl", false, [&] {
-    Fcl_subject fcl(scene);
-    if (!fcl.expressible()) {
-      reason = fcl.reason();
+  Run r = timed(name, false, [&] {
+    Library library(scene);
+    if (!library.expressible()) {
+      reason = library.reason();
       return Check_answer();
     }
-    return fcl.check(co);
+    return library.check(co);
   });
   r.skipped = reason;
   return r;
@@ -336,7 +338,11 @@ std::vector<Run> builtin_runs(const Scene& scene, const Compare_options& options
   }
   if (options.rounded)
     runs.push_back(timed("exact-rounded", true, [&] { return check_exact(rounded_scene(scene), co); }));
-  if (options.fcl) runs.push_back(fcl_run(scene, co));
+  if (options.fcl) runs.push_back(library_run<Fcl_subject>("fcl", scene, co));
+  if (options.bullet) {
+    runs.push_back(library_run<Bullet_subject>("bullet", scene, co));
+    runs.back().tolerance = Bullet_subject::tolerance;
+  }
   for (Run& r : runs) r.semantics = builtin_semantics(r.subject);
   return runs;
 }
@@ -371,7 +377,10 @@ Comparison compare_scene(const Scene& scene, const std::string& file, const Comp
   return out;
 }
 
-const char* builtin_semantics(const std::string& subject) { return subject == "fcl" ? "closed" : "regularised"; }
+const char* builtin_semantics(const std::string& subject)
+{
+  return subject == "fcl" || subject == "bullet" ? "closed" : "regularised";
+}
 
 std::string tolerance_subject(double tol)
 {

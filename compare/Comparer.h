@@ -12,6 +12,8 @@
 //                    others it is skipped with the reason, which is neither
 //                    an agreement nor a disagreement. It gives no witness
 //                    point, so it is never an "invalid witness".
+//   bullet           optional (--subject bullet): Bullet's continuous convex
+//                    collision, on the same scenes as fcl (compare/Bullet_subject.h).
 //   NAME             each --subject NAME=COMMAND (compare/External_subject.h):
 //                    "unsupported" answers are skipped; its witness point is
 //                    checked against every pair; a crash, time-out or answer
@@ -47,6 +49,7 @@ struct Compare_options {
   bool earliest = false;                  // also compare t* (and report its error)
   bool rounded = true;                    // run the exact-rounded subject
   bool fcl = false;                       // run the fcl subject (skipped where FCL cannot express the scene)
+  bool bullet = false;                    // run the bullet subject (likewise)
   // External subjects (--subject NAME=COMMAND): their processes, shared by
   // every copy of these options and kept for the whole run.
   std::vector<std::shared_ptr<External_pool>> externals;

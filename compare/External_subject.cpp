@@ -119,7 +119,7 @@ Subject_spec parse_subject_spec(const std::string& text, double timeout_seconds)
   if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
     throw std::invalid_argument("--subject expects NAME=COMMAND, found '" + text + "'");
   std::string name = text.substr(0, eq);
-  for (const char* taken : {"exact", "double", "exact-rounded", "fcl"})
+  for (const char* taken : {"exact", "double", "exact-rounded", "fcl", "bullet"})
     if (name == taken) throw std::invalid_argument("--subject: the name '" + name + "' is a built-in subject's");
   if (name.rfind("double tol=", 0) == 0) throw std::invalid_argument("--subject: the name '" + name + "' is a built-in subject's");
   return {name, text.substr(eq + 1), timeout_seconds};

@@ -27,6 +27,7 @@ json campaign_json(const Fuzz_options& o)
 {
   json c = {{"format", "clash4d-fuzz/1"}, {"seed", o.seed}, {"cases", o.cases}, {"tolerances", o.compare.tolerances}};
   if (o.compare.fcl) c["fcl"] = true;   // only when on, so folders of campaigns without it still match
+  if (o.compare.bullet) c["bullet"] = true;
   if (!o.compare.externals.empty()) {
     c["subjects"] = json::array();
     for (const auto& pool : o.compare.externals)
@@ -92,6 +93,7 @@ Scene shrink(const Fuzz_options& o, const Scene& scene, const Disagreement& firs
   for (double tol : o.compare.tolerances)
     if (first.subject == tolerance_subject(tol)) narrow.tolerances.push_back(tol);
   narrow.fcl = o.compare.fcl && first.subject == "fcl";
+  narrow.bullet = o.compare.bullet && first.subject == "bullet";
   narrow.externals.clear();
   for (const auto& pool : o.compare.externals)
     if (pool->spec().name == first.subject) narrow.externals.push_back(pool);
