@@ -12,6 +12,8 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
+#include <memory>
 #include <unistd.h>
 #include <ostream>
 
@@ -233,6 +235,230 @@ int generate(int n, int colliding, std::uint64_t seed, const std::string& file, 
   return 0;
 }
 
+// The instantiation --number names: one dispatch for check, skeleton and
+// extrude.
+struct Instantiation {
+  Check_answer (*check)(const Scene&, const Check_options&, double tolerance);
+  Skeleton_answer (*skeleton)(const Scene&);
+  json (*extrude)(const Scene&);
+};
+
+const Instantiation& instantiation(const std::string& number)
+{
+  static const Instantiation exact{[](const Scene& s, const Check_options& o, double) { return check_exact(s, o); },
+                                   skeleton_exact, extrude_exact};
+  static const Instantiation rational{[](const Scene& s, const Check_options& o, double) { return check_rational(s, o); },
+                                      skeleton_rational, extrude_rational};
+  static const Instantiation dbl{[](const Scene& s, const Check_options& o, double tol) { return check_double(s, tol, o); },
+                                 skeleton_double, extrude_double};
+  return number == "exact" ? exact : number == "rational" ? rational : dbl;
+}
+
+const char* const number_help =
+    "number type: exact (default; interval filter with exact rational fallback), rational (every sign in "
+    "rationals: the reference, same answers, slower) or double";
+
+// What a subcommand does once its options are parsed: the exit status.
+using Command = std::function<int()>;
+
+// Options shared by the commands that read one scene and run one
+// instantiation (extrude, check, skeleton).
+struct Scene_args {
+  std::string file, number = "exact";
+  bool as_json = false;
+};
+
+CLI::App* add_scene_command(CLI::App& app, const char* name, const char* help, Scene_args& a)
+{
+  CLI::App* cmd = app.add_subcommand(name, help);
+  cmd->add_option("SCENE", a.file, "scene file")->required();
+  cmd->add_option("--number", a.number, number_help)->check(CLI::IsMember({"exact", "rational", "double"}));
+  return cmd;
+}
+
+// Reads the scene and runs `run(scene)` guarded (exit status as the spec says).
+template <class Run>
+int with_scene(const Scene_args& a, std::ostream& err, Run run)
+{
+  Scene scene;
+  if (int s = load(a.file, scene, err)) return s;
+  return guarded(a.file, err, [&] { return run(scene); });
+}
+
+Command add_validate(CLI::App& app, std::ostream& out, std::ostream& err)
+{
+  auto files = std::make_shared<std::vector<std::string>>();
+  CLI::App* cmd = app.add_subcommand("validate", "Check scene files against the scene format; exit 0 when all are valid, 2 otherwise.");
+  cmd->add_option("SCENE", *files, "scene files")->required();
+  return [cmd, files, &out, &err] { return cmd->parsed() ? validate(*files, out, err) : -1; };
+}
+
+Command add_extrude(CLI::App& app, std::ostream& out, std::ostream& err)
+{
+  auto a = std::make_shared<Scene_args>();
+  CLI::App* cmd = add_scene_command(app, "extrude", "Print every object's space-time half-space tree per constant-velocity time sub-span (paper §2-3).", *a);
+  cmd->add_flag("--json", a->as_json, "print JSON (numbers as exact strings)");
+  return [cmd, a, &out, &err] {
+    if (!cmd->parsed()) return -1;
+    return with_scene(*a, err, [&](const Scene& scene) {
+      json report = instantiation(a->number).extrude(scene);
+      if (a->as_json) out << report.dump(2) << "\n"; else print_extrusion_text(report, out);
+      return 0;
+    });
+  };
+}
+
+struct Check_args : Scene_args {
+  Check_options options;
+  double tolerance = 0;
+  bool stats = false, no_sbounds = false;
+};
+
+Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
+{
+  auto a = std::make_shared<Check_args>();
+  CLI::App* cmd = add_scene_command(app, "check", "Decide whether any pair of objects collides (regularised: touching is not a collision).", *a);
+  cmd->add_option("--tolerance", a->tolerance, "double only: treat |value| <= EPS as zero (default 0)")->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--all-pairs", a->options.all_pairs, "list every colliding pair instead of stopping at the first");
+  cmd->add_flag("--earliest", a->options.earliest, "find the earliest collision time t* (exact) and a contact point (§5)");
+  cmd->add_flag("--json", a->as_json, "print one JSON object (spec: check)");
+  cmd->add_flag("--stats", a->stats, "report what each stage did");
+  cmd->add_flag("--no-sbounds", a->no_sbounds,
+                "bound by the paper's original procedure (boxes at velocity changes) instead of S-bounds; for reproducing §4.1");
+  return [cmd, a, &out, &err] {
+    if (!cmd->parsed()) return -1;
+    if (a->tolerance != 0 && a->number != "double") {
+      err << "clash4d: --tolerance applies to --number double only\n";
+      return CLASH4D_EXIT_INVALID;
+    }
+    a->options.sbounds = !a->no_sbounds;
+    a->options.json = a->as_json;
+    return with_scene(*a, err, [&](const Scene& scene) {
+      Check_answer answer = instantiation(a->number).check(scene, a->options, a->tolerance);
+      print_check(answer, a->options, a->stats, a->tolerance, out);
+      return answer.collide ? 1 : 0;
+    });
+  };
+}
+
+Command add_skeleton(CLI::App& app, std::ostream& out, std::ostream& err)
+{
+  auto a = std::make_shared<Scene_args>();
+  CLI::App* cmd = add_scene_command(app, "skeleton", "Print every edge of the boundary of each colliding pair's collision region in space-time (§5; a full search, slower than check).", *a);
+  cmd->add_flag("--json", a->as_json, "print JSON (numbers as exact strings)");
+  return [cmd, a, &out, &err] {
+    if (!cmd->parsed()) return -1;
+    return with_scene(*a, err, [&](const Scene& scene) {
+      Skeleton_answer answer = instantiation(a->number).skeleton(scene);
+      print_skeleton(answer, a->as_json, out);
+      return answer.pairs.empty() ? 0 : 1;
+    });
+  };
+}
+
+struct Compare_args {
+  std::vector<std::string> files;
+  std::vector<double> tolerances;
+  bool earliest = false, fcl = false, as_json = false;
+  Subject_args subjects;
+};
+
+Command add_compare(CLI::App& app, std::ostream& out, std::ostream& err)
+{
+  auto a = std::make_shared<Compare_args>();
+  CLI::App* cmd = app.add_subcommand("compare", "Run exact, double, double with tolerances and exact-on-rounded-input on each scene; flag and classify every disagreement with exact (exit 1 when any).");
+  cmd->add_option("SCENE", a->files, "scene files")->required();
+  cmd->add_option("--tolerance", a->tolerances, "a double subject treating |value| <= EPS as zero; repeatable (default 1e-9)")->check(CLI::PositiveNumber);
+  cmd->add_flag("--earliest", a->earliest, "also compare earliest collision times t*");
+  cmd->add_flag("--fcl", a->fcl, "also run FCL's continuous collision (the fcl subject) where FCL can express the scene; skipped with the reason elsewhere");
+  cmd->add_flag("--json", a->as_json, "print one JSON object per scene in a list");
+  add_subject_options(*cmd, a->subjects);
+  return [cmd, a, &out, &err] {
+    if (!cmd->parsed()) return -1;
+    Compare_options o;
+    if (!a->tolerances.empty()) o.tolerances = a->tolerances;
+    o.earliest = a->earliest;
+    o.fcl = a->fcl;
+    if (!apply_subject_args(a->subjects, o, "compare", err)) return CLASH4D_EXIT_INVALID;
+    return compare(a->files, o, a->as_json, out, err);
+  };
+}
+
+struct Fuzz_args {
+  Fuzz_options fuzz;
+  std::string shard;
+  std::uint64_t shard_count = 0;
+  std::vector<std::string> merge_dirs;
+  std::vector<double> tolerances;
+  Subject_args subjects;
+};
+
+Command add_fuzz(CLI::App& app, std::ostream& out, std::ostream& err)
+{
+  auto a = std::make_shared<Fuzz_args>();
+  CLI::App* cmd = app.add_subcommand("fuzz", "A deterministic campaign of contact cases against exact arithmetic; saves and shrinks every disagreement in DIR (resumable; exit 1 when any finding).");
+  cmd->add_option("--seed", a->fuzz.seed, "campaign seed");
+  cmd->add_option("--cases", a->fuzz.cases, "number of cases in the whole campaign");
+  cmd->add_option("--shard", a->shard, "K/S: run the K-th of S disjoint parts (default: from the scheduler, else 1/1)");
+  cmd->add_option("--shard-count", a->shard_count,
+                  "S, without --shard: this is shard K of S with K from SLURM_ARRAY_TASK_ID (minus SLURM_ARRAY_TASK_MIN, "
+                  "plus 1) or JOB_COMPLETION_INDEX (plus 1); Slurm's SLURM_ARRAY_TASK_COUNT gives S when omitted");
+  cmd->add_option("--out", a->fuzz.out, "output folder")->required();
+  cmd->add_option("--tolerance", a->tolerances, "double subjects with tolerance EPS (default 1e-9)")->check(CLI::PositiveNumber);
+  cmd->add_option("--merge", a->merge_dirs, "join these fuzz output folders into --out instead of running");
+  cmd->add_flag("--fcl", a->fuzz.compare.fcl, "also run the fcl subject (FCL's continuous collision) on the cases FCL can express");
+  add_subject_options(*cmd, a->subjects);
+  return [cmd, a, &out, &err] {
+    if (!cmd->parsed()) return -1;
+    Fuzz_options& fuzz = a->fuzz;
+    if (!a->merge_dirs.empty()) return merge_command(a->merge_dirs, fuzz.out, out, err);
+    if (!resolve_shard(a->shard, a->shard_count, std::getenv, fuzz, err)) return CLASH4D_EXIT_INVALID;
+    if (!a->tolerances.empty()) fuzz.compare.tolerances = a->tolerances;
+    if (!apply_subject_args(a->subjects, fuzz.compare, "fuzz", err)) return CLASH4D_EXIT_INVALID;
+    fuzz.progress = isatty(fileno(stderr)) != 0;
+    return fuzz_command(fuzz, out, err);
+  };
+}
+
+struct Report_args {
+  std::vector<std::string> inputs;
+  std::string out;
+  Subject_args subjects;
+};
+
+Command add_report(CLI::App& app, std::ostream& out, std::ostream& err)
+{
+  auto a = std::make_shared<Report_args>();
+  CLI::App* cmd = app.add_subcommand("report", "Compare scenes (files, folders, fuzz outputs) and write DIR/index.html, report.json and junit.xml.");
+  cmd->add_option("INPUT", a->inputs, "scene files, folders of scenes, or fuzz output folders")->required();
+  cmd->add_option("--out", a->out, "output folder")->required();
+  add_subject_options(*cmd, a->subjects);
+  return [cmd, a, &out, &err] {
+    if (!cmd->parsed()) return -1;
+    Compare_options o;
+    o.earliest = true;
+    if (!apply_subject_args(a->subjects, o, "report", err)) return CLASH4D_EXIT_INVALID;
+    return report_command(a->inputs, a->out, o, out, err);
+  };
+}
+
+struct Generate_args {
+  int n = 0, colliding = 0;
+  std::uint64_t seed = 1;
+  std::string out;
+};
+
+Command add_generate(CLI::App& app, std::ostream& out, std::ostream& err)
+{
+  auto a = std::make_shared<Generate_args>();
+  CLI::App* cmd = app.add_subcommand("generate", "Write a scaling scene: N unit blocks on a grid, K pairs of which collide from t* = 5 on (§6 benchmark).");
+  cmd->add_option("--n", a->n, "number of blocks")->required()->check(CLI::Range(2, 1000000));
+  cmd->add_option("--colliding", a->colliding, "colliding pairs (disjoint x-neighbours)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--seed", a->seed, "random seed (motions and which pairs collide)");
+  cmd->add_option("--out", a->out, "output file (default: standard output)");
+  return [cmd, a, &out, &err] { return cmd->parsed() ? generate(a->n, a->colliding, a->seed, a->out, out, err) : -1; };
+}
+
 } // namespace
 
 int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
@@ -240,87 +466,10 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   CLI::App app(about, "clash4d");
   app.require_subcommand(1);
   app.failure_message(CLI::FailureMessage::help);
-
-  std::vector<std::string> validate_files;
-  auto* validate_cmd = app.add_subcommand("validate", "Check scene files against the scene format; exit 0 when all are valid, 2 otherwise.");
-  validate_cmd->add_option("SCENE", validate_files, "scene files")->required();
-
-  std::string file, number = "exact";
-  const char* number_help =
-      "number type: exact (default; interval filter with exact rational fallback), rational (every sign in "
-      "rationals: the reference, same answers, slower) or double";
-  bool as_json = false, all_pairs = false, stats = false;
-  double tolerance = 0;
-  auto* extrude_cmd = app.add_subcommand("extrude", "Print every object's space-time half-space tree per constant-velocity time sub-span (paper §2-3).");
-  extrude_cmd->add_option("SCENE", file, "scene file")->required();
-  extrude_cmd->add_option("--number", number, number_help)->check(CLI::IsMember({"exact", "rational", "double"}));
-  extrude_cmd->add_flag("--json", as_json, "print JSON (numbers as exact strings)");
-
-  auto* check_cmd = app.add_subcommand("check", "Decide whether any pair of objects collides (regularised: touching is not a collision).");
-  check_cmd->add_option("SCENE", file, "scene file")->required();
-  check_cmd->add_option("--number", number, number_help)->check(CLI::IsMember({"exact", "rational", "double"}));
-  check_cmd->add_option("--tolerance", tolerance, "double only: treat |value| <= EPS as zero (default 0)")->check(CLI::NonNegativeNumber);
-  check_cmd->add_flag("--all-pairs", all_pairs, "list every colliding pair instead of stopping at the first");
-  bool earliest = false;
-  check_cmd->add_flag("--earliest", earliest, "find the earliest collision time t* (exact) and a contact point (§5)");
-  check_cmd->add_flag("--json", as_json, "print one JSON object (spec: check)");
-  check_cmd->add_flag("--stats", stats, "report what each stage did");
-  bool no_sbounds = false;
-  check_cmd->add_flag("--no-sbounds", no_sbounds,
-                      "bound by the paper's original procedure (boxes at velocity changes) instead of S-bounds; for reproducing §4.1");
-
-  auto* skeleton_cmd = app.add_subcommand("skeleton", "Print every edge of the boundary of each colliding pair's collision region in space-time (§5; a full search, slower than check).");
-  skeleton_cmd->add_option("SCENE", file, "scene file")->required();
-  skeleton_cmd->add_option("--number", number, number_help)->check(CLI::IsMember({"exact", "rational", "double"}));
-  skeleton_cmd->add_flag("--json", as_json, "print JSON (numbers as exact strings)");
-
-  std::vector<std::string> compare_files;
-  std::vector<double> compare_tolerances;
-  bool compare_earliest = false;
-  auto* compare_cmd = app.add_subcommand("compare", "Run exact, double, double with tolerances and exact-on-rounded-input on each scene; flag and classify every disagreement with exact (exit 1 when any).");
-  compare_cmd->add_option("SCENE", compare_files, "scene files")->required();
-  compare_cmd->add_option("--tolerance", compare_tolerances, "a double subject treating |value| <= EPS as zero; repeatable (default 1e-9)")->check(CLI::PositiveNumber);
-  compare_cmd->add_flag("--earliest", compare_earliest, "also compare earliest collision times t*");
-  bool compare_fcl = false;
-  compare_cmd->add_flag("--fcl", compare_fcl, "also run FCL's continuous collision (the fcl subject) where FCL can express the scene; skipped with the reason elsewhere");
-  compare_cmd->add_flag("--json", as_json, "print one JSON object per scene in a list");
-  Subject_args compare_subjects, fuzz_subjects, report_subjects;
-  add_subject_options(*compare_cmd, compare_subjects);
-
-  Fuzz_options fuzz;
-  std::string shard;
-  std::uint64_t shard_count = 0;
-  std::vector<std::string> merge_dirs;
-  std::vector<double> fuzz_tolerances;
-  auto* fuzz_cmd = app.add_subcommand("fuzz", "A deterministic campaign of contact cases against exact arithmetic; saves and shrinks every disagreement in DIR (resumable; exit 1 when any finding).");
-  fuzz_cmd->add_option("--seed", fuzz.seed, "campaign seed");
-  fuzz_cmd->add_option("--cases", fuzz.cases, "number of cases in the whole campaign");
-  fuzz_cmd->add_option("--shard", shard, "K/S: run the K-th of S disjoint parts (default: from the scheduler, else 1/1)");
-  fuzz_cmd->add_option("--shard-count", shard_count,
-                       "S, without --shard: this is shard K of S with K from SLURM_ARRAY_TASK_ID (minus SLURM_ARRAY_TASK_MIN, "
-                       "plus 1) or JOB_COMPLETION_INDEX (plus 1); Slurm's SLURM_ARRAY_TASK_COUNT gives S when omitted");
-  fuzz_cmd->add_option("--out", fuzz.out, "output folder")->required();
-  fuzz_cmd->add_option("--tolerance", fuzz_tolerances, "double subjects with tolerance EPS (default 1e-9)")->check(CLI::PositiveNumber);
-  fuzz_cmd->add_option("--merge", merge_dirs, "join these fuzz output folders into --out instead of running");
-  fuzz_cmd->add_flag("--fcl", fuzz.compare.fcl, "also run the fcl subject (FCL's continuous collision) on the cases FCL can express");
-  add_subject_options(*fuzz_cmd, fuzz_subjects);
-
-  std::vector<std::string> report_inputs;
-  std::string report_out;
-  auto* report_cmd = app.add_subcommand("report", "Compare scenes (files, folders, fuzz outputs) and write DIR/index.html, report.json and junit.xml.");
-  report_cmd->add_option("INPUT", report_inputs, "scene files, folders of scenes, or fuzz output folders")->required();
-  report_cmd->add_option("--out", report_out, "output folder")->required();
-  add_subject_options(*report_cmd, report_subjects);
-
-  int grid_n = 0, grid_colliding = 0;
-  std::uint64_t grid_seed = 1;
-  std::string grid_out;
-  auto* generate_cmd = app.add_subcommand("generate", "Write a scaling scene: N unit blocks on a grid, K pairs of which collide from t* = 5 on (§6 benchmark).");
-  generate_cmd->add_option("--n", grid_n, "number of blocks")->required()->check(CLI::Range(2, 1000000));
-  generate_cmd->add_option("--colliding", grid_colliding, "colliding pairs (disjoint x-neighbours)")->check(CLI::NonNegativeNumber);
-  generate_cmd->add_option("--seed", grid_seed, "random seed (motions and which pairs collide)");
-  generate_cmd->add_option("--out", grid_out, "output file (default: standard output)");
-
+  // In the order --help lists them; each says -1 when it was not the one given.
+  std::vector<Command> commands{add_validate(app, out, err), add_extrude(app, out, err), add_check(app, out, err),
+                                add_skeleton(app, out, err),  add_compare(app, out, err), add_fuzz(app, out, err),
+                                add_report(app, out, err),    add_generate(app, out, err)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -331,62 +480,9 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     err << "clash4d: " << e.what() << "\n" << "run 'clash4d --help' or 'clash4d COMMAND --help'\n";
     return CLASH4D_EXIT_INVALID;
   }
-
-  if (validate_cmd->parsed()) return validate(validate_files, out, err);
-  if (generate_cmd->parsed()) return generate(grid_n, grid_colliding, grid_seed, grid_out, out, err);
-  if (fuzz_cmd->parsed()) {
-    if (!merge_dirs.empty()) return merge_command(merge_dirs, fuzz.out, out, err);
-    if (!resolve_shard(shard, shard_count, std::getenv, fuzz, err)) return CLASH4D_EXIT_INVALID;
-    if (!fuzz_tolerances.empty()) fuzz.compare.tolerances = fuzz_tolerances;
-    if (!apply_subject_args(fuzz_subjects, fuzz.compare, "fuzz", err)) return CLASH4D_EXIT_INVALID;
-    fuzz.progress = isatty(fileno(stderr)) != 0;
-    return fuzz_command(fuzz, out, err);
-  }
-  if (report_cmd->parsed()) {
-    Compare_options o;
-    o.earliest = true;
-    if (!apply_subject_args(report_subjects, o, "report", err)) return CLASH4D_EXIT_INVALID;
-    return report_command(report_inputs, report_out, o, out, err);
-  }
-  if (compare_cmd->parsed()) {
-    Compare_options o;
-    if (!compare_tolerances.empty()) o.tolerances = compare_tolerances;
-    o.earliest = compare_earliest;
-    o.fcl = compare_fcl;
-    if (!apply_subject_args(compare_subjects, o, "compare", err)) return CLASH4D_EXIT_INVALID;
-    return compare(compare_files, o, as_json, out, err);
-  }
-  if (check_cmd->parsed() && tolerance != 0 && number != "double") {
-    err << "clash4d: --tolerance applies to --number double only\n";
-    return CLASH4D_EXIT_INVALID;
-  }
-  Scene scene;
-  if (int s = load(file, scene, err)) return s;
-  if (skeleton_cmd->parsed())
-    return guarded(file, err, [&] {
-      Skeleton_answer a = number == "exact" ? skeleton_exact(scene)
-                         : number == "rational" ? skeleton_rational(scene) : skeleton_double(scene);
-      print_skeleton(a, as_json, out);
-      return a.pairs.empty() ? 0 : 1;
-    });
-  if (extrude_cmd->parsed())
-    return guarded(file, err, [&] {
-      json report = number == "exact" ? extrude_exact(scene)
-                  : number == "rational" ? extrude_rational(scene) : extrude_double(scene);
-      if (as_json) out << report.dump(2) << "\n"; else print_extrusion_text(report, out);
-      return 0;
-    });
-  return guarded(file, err, [&] {
-    Check_options options;
-    options.all_pairs = all_pairs;
-    options.sbounds = !no_sbounds;
-    options.earliest = earliest;
-    options.json = as_json;
-    Check_answer a = number == "exact" ? check_exact(scene, options)
-                     : number == "rational" ? check_rational(scene, options) : check_double(scene, tolerance, options);
-    print_check(a, options, stats, tolerance, out);
-    return a.collide ? 1 : 0;
-  });
+  for (const Command& run : commands)
+    if (int status = run(); status >= 0) return status;
+  return CLASH4D_EXIT_INVALID;   // require_subcommand makes this unreachable
 }
 
 } // namespace clash4d

@@ -306,6 +306,50 @@ Motion parse_motion(const std::string& text, const std::string& place)
   return m;
 }
 
+// objects[i]: a uniquely named solid with its motion (default: at rest).
+static Scene_object read_object(const Json_value& o, const std::string& path, std::set<std::string>& names)
+{
+  expect_kind(o, Kind::Object, path);
+  expect_keys(o, {"name", "shape", "motion"}, path);
+  Scene_object obj;
+  const Json_value& name = required(o, "name", path);
+  expect_kind(name, Kind::String, dot(path, "name"));
+  if (name.text.empty()) throw Input_error(dot(path, "name"), "the name must not be empty");
+  if (!names.insert(name.text).second) throw Input_error(dot(path, "name"), "duplicate object name \"" + name.text + "\"");
+  obj.name = name.text;
+  obj.shape = read_solid(required(o, "shape", path), dot(path, "shape"));
+  if (const Json_value* motion = o.find("motion")) {
+    expect_kind(*motion, Kind::String, dot(path, "motion"));
+    obj.motion = parse_motion(motion->text, dot(path, "motion"));
+  } else {
+    obj.motion.velocities.push_back({Rational(0), Rational(0), Rational(0)});
+  }
+  return obj;
+}
+
+// ignore: pairs of names of the scene's objects, each pair of two objects.
+static void read_ignore(const Json_value& ignore, Scene& scene)
+{
+  expect_kind(ignore, Kind::Array, "ignore");
+  for (std::size_t i = 0; i < ignore.items.size(); ++i) {
+    std::string path = at("ignore", i);
+    const Json_value& pair = ignore.items[i];
+    expect_kind(pair, Kind::Array, path);
+    if (pair.items.size() != 2) throw Input_error(path, "expected a pair of object names");
+    int idx[2];
+    for (int k = 0; k < 2; ++k) {
+      std::string p = at(path, static_cast<std::size_t>(k));
+      expect_kind(pair.items[k], Kind::String, p);
+      idx[k] = -1;
+      for (std::size_t j = 0; j < scene.objects.size(); ++j)
+        if (scene.objects[j].name == pair.items[k].text) idx[k] = static_cast<int>(j);
+      if (idx[k] < 0) throw Input_error(p, "no object is named \"" + pair.items[k].text + "\"");
+    }
+    if (idx[0] == idx[1]) throw Input_error(path, "an object cannot be ignored against itself");
+    scene.ignore.emplace_back(std::min(idx[0], idx[1]), std::max(idx[0], idx[1]));
+  }
+}
+
 Scene read_scene(const Json_value& root)
 {
   expect_kind(root, Kind::Object, "");
@@ -330,47 +374,9 @@ Scene read_scene(const Json_value& root)
   if (objects.items.size() < 2)
     throw Input_error("objects", "expected at least two objects, found " + std::to_string(objects.items.size()));
   std::set<std::string> names;
-  for (std::size_t i = 0; i < objects.items.size(); ++i) {
-    std::string path = at("objects", i);
-    const Json_value& o = objects.items[i];
-    expect_kind(o, Kind::Object, path);
-    expect_keys(o, {"name", "shape", "motion"}, path);
-    Scene_object obj;
-    const Json_value& name = required(o, "name", path);
-    expect_kind(name, Kind::String, dot(path, "name"));
-    if (name.text.empty()) throw Input_error(dot(path, "name"), "the name must not be empty");
-    if (!names.insert(name.text).second) throw Input_error(dot(path, "name"), "duplicate object name \"" + name.text + "\"");
-    obj.name = name.text;
-    obj.shape = read_solid(required(o, "shape", path), dot(path, "shape"));
-    if (const Json_value* motion = o.find("motion")) {
-      expect_kind(*motion, Kind::String, dot(path, "motion"));
-      obj.motion = parse_motion(motion->text, dot(path, "motion"));
-    } else {
-      obj.motion.velocities.push_back({Rational(0), Rational(0), Rational(0)});
-    }
-    scene.objects.push_back(std::move(obj));
-  }
-
-  if (const Json_value* ignore = root.find("ignore")) {
-    expect_kind(*ignore, Kind::Array, "ignore");
-    for (std::size_t i = 0; i < ignore->items.size(); ++i) {
-      std::string path = at("ignore", i);
-      const Json_value& pair = ignore->items[i];
-      expect_kind(pair, Kind::Array, path);
-      if (pair.items.size() != 2) throw Input_error(path, "expected a pair of object names");
-      int idx[2];
-      for (int k = 0; k < 2; ++k) {
-        std::string p = at(path, static_cast<std::size_t>(k));
-        expect_kind(pair.items[k], Kind::String, p);
-        idx[k] = -1;
-        for (std::size_t j = 0; j < scene.objects.size(); ++j)
-          if (scene.objects[j].name == pair.items[k].text) idx[k] = static_cast<int>(j);
-        if (idx[k] < 0) throw Input_error(p, "no object is named \"" + pair.items[k].text + "\"");
-      }
-      if (idx[0] == idx[1]) throw Input_error(path, "an object cannot be ignored against itself");
-      scene.ignore.emplace_back(std::min(idx[0], idx[1]), std::max(idx[0], idx[1]));
-    }
-  }
+  for (std::size_t i = 0; i < objects.items.size(); ++i)
+    scene.objects.push_back(read_object(objects.items[i], at("objects", i), names));
+  if (const Json_value* ignore = root.find("ignore")) read_ignore(*ignore, scene);
   return scene;
 }
 
