@@ -154,14 +154,16 @@ void add_fuzz_folder(const fs::path& dir, std::vector<Report_case>& cases)
     if (f.path().extension() == ".json") files.push_back(f.path());
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
-    Comparison comparison = finding_comparison(read_json_document(f.string()), f.string());
+    nlohmann::ordered_json document = read_json_document(f.string());
+    Comparison comparison = finding_comparison(document, f.string());
+    std::string family = document["meta"].value("family", "");
     Scene scene;
     try {
       scene = read_scene_file(f.string());
     } catch (const Input_error& e) {
       throw std::runtime_error(e.format(f.string()));
     }
-    cases.push_back({f.string(), scene, comparison});
+    cases.push_back({f.string(), scene, comparison, family});
   }
 }
 
@@ -173,7 +175,7 @@ void add_scene_file(const fs::path& file, const Compare_options& compare, std::v
   } catch (const Input_error& e) {
     throw std::runtime_error(e.format(file.string()));
   }
-  cases.push_back({file.string(), scene, compare_scene(scene, file.string(), compare)});
+  cases.push_back({file.string(), scene, compare_scene(scene, file.string(), compare), ""});
 }
 
 } // namespace

@@ -113,18 +113,20 @@ std::string located_text(const std::optional<Located>& w)
 struct Tally {
   int answers = 0, agreements = 0, disagreements = 0, errors = 0, skips = 0;
   json by_cause = json::object();
+  json by_family = json::object();  // disagreements and faults per fuzz family
   std::string semantics;            // as the subject declared it (the last one seen)
   double seconds = 0;
   int timed = 0;
 
   Tally() { for (const char* c : all_causes) by_cause[c] = 0; }
-  void add(const Subject_row& s)
+  void add(const Subject_row& s, const std::string& family)
   {
     semantics = s.semantics;
     if (s.seconds) { seconds += *s.seconds; ++timed; }
     if (s.skipped) { ++skips; return; }   // no answer to count
     ++answers;
     if (s.cause) by_cause[*s.cause] = by_cause.value(*s.cause, 0) + 1;   // faults (crash, timeout) too
+    if (s.cause && !family.empty()) by_family[family] = by_family.value(family, 0) + 1;
     if (s.failed()) ++errors;
     else if (s.disagrees()) ++disagreements;
     else ++agreements;
@@ -140,6 +142,7 @@ struct Tally {
     json j = to_json();
     j["semantics"] = semantics;
     j["seconds_per_query"] = timed ? json(seconds / timed) : json();
+    j["by_family"] = by_family;
     return j;
   }
 };
@@ -161,13 +164,13 @@ json summary_of(const std::vector<Report_case>& cases)
     for (const Subject_row& s : c.comparison.subjects) {
       if (s.reference) {
         reference_errors += s.failed();
-        reference.add(s);
+        reference.add(s, c.family);
         continue;
       }
       auto it = std::find(order.begin(), order.end(), s.subject);
       if (it == order.end()) { order.push_back(s.subject); tallies.emplace_back(); it = order.end() - 1; }
-      tallies[it - order.begin()].add(s);
-      total.add(s);
+      tallies[it - order.begin()].add(s, c.family);
+      total.add(s, c.family);
     }
   }
   for (std::size_t i = 0; i < order.size(); ++i) by_subject[order[i]] = tallies[i].subject_json();
@@ -553,6 +556,20 @@ std::string cell(const std::string& content, const char* cls = "")
 
 std::string number_cell(long n) { return cell(std::to_string(n), "n"); }
 
+// Fuzz findings: per subject, its disagreements and faults by family.
+std::string family_html(const json& s)
+{
+  std::ostringstream out;
+  for (const auto& t : s["by_subject"].items()) {
+    const json& families = t.value()["by_family"];
+    if (families.empty()) continue;
+    out << "<p>" << escape(t.key()) << ", findings by family:";
+    for (const auto& f : families.items()) out << " " << escape(f.key()) << " " << f.value().get<long>() << ";";
+    out << "</p>\n";
+  }
+  return out.str();
+}
+
 std::string summary_html(const json& s)
 {
   std::ostringstream out;
@@ -576,7 +593,7 @@ std::string summary_html(const json& s)
   };
   for (const auto& t : s["by_subject"].items()) row(escape(t.key()), t.value());
   row("<b>all</b>", s);
-  out << "</table>\n";
+  out << "</table>\n" << family_html(s);
   const json& exact_time = s["reference_seconds_per_query"];
   if (exact_time.is_number()) out << "<p>exact (the reference): " << seconds_text(exact_time.get<double>()) << " per query.</p>\n";
   return out.str();

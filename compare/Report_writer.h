@@ -16,6 +16,7 @@ struct Report_case {
   std::string file;                   // scene path as given
   Scene scene;                        // the parsed scene (exact rationals), for drawing
   Comparison comparison;
+  std::string family;                 // a fuzz finding's family (its meta), else empty
 };
 
 // Writes DIR/index.html, DIR/report.json, DIR/junit.xml. Each file is written to

@@ -17,7 +17,7 @@ namespace {
 
 Report_case make_case(const std::string& file, const std::string& scene, const std::string& comparison)
 {
-  return {file, read_scene(read_json_text(scene)), Comparison::from_json(json::parse(comparison))};
+  return {file, read_scene(read_json_text(scene)), Comparison::from_json(json::parse(comparison)), ""};
 }
 
 // A ram moving in -x hits a box at t = 2: every subject agrees.
@@ -101,7 +101,9 @@ struct Written_report {
   Written_report()
   {
     fs::remove_all(dir);
-    write_report({colliding_case(), contact_case(), floor_case()}, (dir / "out").string());
+    Report_case touch = contact_case();
+    touch.family = "static_touch";   // as a fuzz finding of that family
+    write_report({colliding_case(), touch, floor_case()}, (dir / "out").string());
   }
   ~Written_report() { fs::remove_all(dir); }
   std::string read(const char* name) const { return slurp(dir / "out" / name); }
@@ -140,6 +142,12 @@ BOOST_AUTO_TEST_CASE(report_json_counts)
   BOOST_TEST(s["by_subject"]["double"]["disagreements"] == 1);
   BOOST_TEST(s["by_subject"]["double tol=1e-09"]["errors"] == 1);
   BOOST_TEST(!s["by_subject"].contains("exact"));
+  // Findings by family: double's one disagreement is in the touching case's
+  // family; the tolerance subject's error has no cause, and the other cases
+  // have no family.
+  BOOST_TEST(s["by_subject"]["double"]["by_family"].size() == 1u);
+  BOOST_TEST(s["by_subject"]["double"]["by_family"]["static_touch"] == 1);
+  BOOST_TEST(s["by_subject"]["double tol=1e-09"]["by_family"].empty());
   // Per subject: its semantics and mean time per query, exact's beside them
   // (the cases' seconds: double 0.0001, 0.0001, 0.001; exact 0.0012, 0.002, 0.003).
   BOOST_TEST(s["by_subject"]["double"]["semantics"] == "regularised");
@@ -176,6 +184,7 @@ BOOST_AUTO_TEST_CASE(html_is_self_contained_and_escaped)
   // 7 answers, 5 agreements, 1 disagreement, 1 error.
   BOOST_TEST(h.find("<td class=\"n\">3</td><td class=\"n\">2</td><td class=\"n\">1</td><td class=\"n\">1</td>"
                     "<td class=\"n\">7</td><td class=\"n\">5</td><td class=\"n\">1</td><td class=\"n\">1</td>") != std::string::npos);
+  BOOST_TEST(h.find("<p>double, findings by family: static_touch 1;</p>") != std::string::npos);
   // The disagreeing case comes first.
   BOOST_TEST(h.find("id=\"case-1\"") < h.find("id=\"case-0\""));
   BOOST_TEST(h.find("id=\"case-0\"") < h.find("id=\"case-2\""));
