@@ -51,6 +51,7 @@
 #include <CGAL/Uncertain.h>
 #include <CGAL/enum.h>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -58,36 +59,34 @@ namespace clash4d {
 
 namespace kernel_concept_detail {
 
+template <class K> const K& k();
+template <class K> const typename K::FT& x();
+template <class K> const Vector4<typename K::FT>& v();
+
+// Each member's type, or a substitution failure when it is missing (so a
+// kernel without it is "not a kernel", not a compile error here).
+template <class K>
+using Members = std::tuple<
+    decltype(k<K>().sign(x<K>())), std::decay_t<decltype(k<K>().from_rational(std::declval<const Rational&>()))>,
+    std::decay_t<decltype(k<K>().floor_to_grid(x<K>(), 0))>, std::decay_t<decltype(k<K>().power_of_two(0))>,
+    decltype(k<K>().grid_exponent(x<K>())), decltype(k<K>().to_text(x<K>())), decltype(k<K>().to_stat(x<K>())),
+    decltype(k<K>().compare(x<K>(), x<K>())), decltype(k<K>().less(x<K>(), x<K>())),
+    decltype(k<K>().is_nonnegative(x<K>(), true)), std::decay_t<decltype(k<K>().quotient(x<K>(), x<K>(), CGAL::POSITIVE))>,
+    decltype(k<K>().orientation4(v<K>(), v<K>(), v<K>(), v<K>())), decltype(k<K>().largest_component(v<K>()))>;
+
+// The types the members must have, in Members' order.
+template <class FT>
+using Expected = std::tuple<CGAL::Sign, FT, FT, FT, int, std::string, Stat_number, CGAL::Sign, bool,
+                            CGAL::Uncertain<bool>, FT, CGAL::Sign, int>;
+
 template <class K, class = void>
 struct has_required : std::false_type {};
 
 template <class K>
-struct has_required<
-    K, std::void_t<typename K::FT,
-                   decltype(std::declval<const char*&>() = K::name()),
-                   decltype(bool{K::is_exact}), decltype(bool{K::reads_exact_constructions}),
-                   decltype(int{K::grid_bits})>> {
-  using FT = typename K::FT;
-  static const K& k();
-  static const FT& x();
-  static constexpr bool value =
-      std::is_same_v<decltype(k().sign(x())), CGAL::Sign> &&
-      std::is_same_v<std::decay_t<decltype(k().from_rational(std::declval<const Rational&>()))>, FT> &&
-      std::is_same_v<std::decay_t<decltype(k().floor_to_grid(x(), 0))>, FT> &&
-      std::is_same_v<std::decay_t<decltype(k().power_of_two(0))>, FT> &&
-      std::is_same_v<decltype(k().grid_exponent(x())), int> &&
-      std::is_same_v<decltype(k().to_text(x())), std::string> &&
-      std::is_same_v<decltype(k().to_stat(x())), Stat_number> &&
-      std::is_same_v<decltype(k().compare(x(), x())), CGAL::Sign> &&
-      std::is_same_v<decltype(k().less(x(), x())), bool> &&
-      std::is_same_v<decltype(k().is_nonnegative(x(), true)), CGAL::Uncertain<bool>> &&
-      std::is_same_v<std::decay_t<decltype(k().quotient(x(), x(), CGAL::POSITIVE))>, FT> &&
-      std::is_same_v<decltype(k().orientation4(std::declval<const Vector4<FT>&>(), std::declval<const Vector4<FT>&>(),
-                                               std::declval<const Vector4<FT>&>(),
-                                               std::declval<const Vector4<FT>&>())),
-                     CGAL::Sign> &&
-      std::is_same_v<decltype(k().largest_component(std::declval<const Vector4<FT>&>())), int>;
-};
+struct has_required<K, std::void_t<typename K::FT, decltype(std::declval<const char*&>() = K::name()),
+                                   decltype(bool{K::is_exact}), decltype(bool{K::reads_exact_constructions}),
+                                   decltype(int{K::grid_bits}), Members<K>>>
+  : std::bool_constant<std::is_same_v<Members<K>, Expected<typename K::FT>>> {};
 
 } // namespace kernel_concept_detail
 

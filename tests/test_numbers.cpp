@@ -2,6 +2,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "exact/Interval_kernel.h"
+#include "exact/Rational_kernel.h"
 #include "float/Double_kernel.h"
 #include "scene/Number_text.h"
 #include <CGAL/FPU.h>
@@ -9,6 +10,31 @@
 #include <random>
 
 using namespace clash4d;
+
+// The kernel concept (geometry/Kernel_concept.h) holds for the three
+// kernels and fails for a kernel that lacks one member, here to_stat.
+namespace {
+struct Missing_to_stat : Kernel_base<Missing_to_stat, double> {
+  static constexpr const char* name() { return "incomplete"; }
+  static constexpr bool is_exact = false, reads_exact_constructions = false;
+  CGAL::Sign sign(double x) const { return CGAL::sign(x); }
+  double from_rational(const Rational& r) const { return CGAL::to_double(r); }
+  double floor_to_grid(double x, int) const { return x; }
+  double power_of_two(int e) const { return std::ldexp(1.0, e); }
+  int grid_exponent(double) const { return 0; }
+  std::string to_text(double) const { return ""; }
+};
+struct Complete : Missing_to_stat {
+  Stat_number to_stat(double x) const { return {Stat_number::Kind::Double, Rational(), x, x}; }
+};
+struct Wrong_type : Missing_to_stat {
+  int to_stat(double) const { return 0; }
+};
+static_assert(is_kernel_v<Rational_kernel> && is_kernel_v<Interval_kernel> && is_kernel_v<Double_kernel>);
+static_assert(!is_kernel_v<Wrong_type>, "a member of the wrong type must not pass the concept");
+static_assert(!is_kernel_v<Missing_to_stat>, "a kernel without to_stat must not pass the concept");
+static_assert(is_kernel_v<Complete>, "adding the member makes it a kernel");
+} // namespace
 
 static Rational q(const std::string& text)
 {
