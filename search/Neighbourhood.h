@@ -19,8 +19,8 @@
 #define CLASH4D_SEARCH_NEIGHBOURHOOD_H
 
 #include "numbers/Number_ops.h"
-#include <CGAL/Uncertain.h>
 #include "geometry/kernel_ft4.h"
+#include <CGAL/enum.h>
 #include <algorithm>
 #include <optional>
 #include <vector>
