@@ -3,6 +3,7 @@
 #define CLASH4D_CHECK_CHECK_ANSWER_H
 
 #include "search/Check_stats.h"
+#include "search/Semantics.h"
 #include <array>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@ struct Check_options {
   // velocity changes, intersected; §4.1) instead of S-bounds. Reproduction only.
   bool sbounds = true;
   bool json = false;          // output form (used by the command line only)
+  Semantics semantics = Semantics::regularised;
 };
 
 struct Pair_answer {
@@ -26,10 +28,25 @@ struct Pair_answer {
   std::string t_star;                    // exact t* (or the double's)
   std::array<std::string, 4> contact;    // (x*, t*) in the closure of the collision region
   bool at_start = false;                 // t* = tL: already overlapping when the span starts
+  // The generic points that make the answer checkable (issue 14 item 3;
+  // certificates). A generic point lies on no hyperplane of the pair's
+  // extrusion (regularised-semantics.md item 1), so its cell is decided by
+  // strict signs, and "p in the closure of g's cell" means: every atom h of
+  // both objects has h(p) = 0 or the sign of h(g).
+  //  - closed semantics: witness_cells[0] strictly inside the first object,
+  //    witness_cells[1] strictly inside the second, each with the witness
+  //    point in the closure of its cell (empty strings in regularised mode,
+  //    where the witness is itself generic and inside both);
+  //  - with earliest: contact_cells likewise for the contact point (x*, t*);
+  //    in regularised mode both entries are one generic point strictly
+  //    inside both objects, in the same constant-velocity sub-span as t*.
+  std::array<std::array<std::string, 4>, 2> witness_cells;
+  std::array<std::array<std::string, 4>, 2> contact_cells;
 };
 
 struct Check_answer {
   std::string number;                    // "exact", "rational" or "double"
+  Semantics semantics = Semantics::regularised;   // the question answered
   bool collide = false;
   std::vector<Pair_answer> pairs;        // colliding pairs, in pair order
   int earliest_pair = -1;                // index in pairs of the smallest t* (--earliest)
