@@ -23,6 +23,11 @@ Pair_answer pair_answer(const K& k, const Scene_model<K>& model, const Pair_resu
   for (int i = 0; i < 4; ++i) p.witness[i] = k.to_text(r.witness[i]);
   p.witness_verified = r.witness_verified;
   p.earliest = r.earliest;
+  for (int c = 0; c < 2; ++c)
+    for (int i = 0; i < 4; ++i) {
+      if (r.semantics == Semantics::closed) p.witness_cells[c][i] = k.to_text(r.witness_cells[c][i]);
+      if (r.earliest) p.contact_cells[c][i] = k.to_text(r.contact_cells[c][i]);
+    }
   if (r.earliest) {
     p.t_star = k.to_text(r.t_star);
     for (int i = 0; i < 4; ++i) p.contact[i] = k.to_text(r.contact[i]);
@@ -96,12 +101,14 @@ void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::p
 template <class K>
 std::vector<std::pair<int, int>> candidate_pairs(const K& k, const Scene_model<K>& model,
                                                  const std::vector<typename S_bounds<K>::Bounds>& settled,
-                                                 const Scene& scene, Check_stats& stats)
+                                                 const Scene& scene, Check_stats& stats,
+                                                 Semantics semantics = Semantics::regularised)
 {
   auto start = std::chrono::steady_clock::now();
   std::vector<Box<typename K::FT, 3>> roots;
   for (const auto& b : settled) roots.push_back(b[0]);
-  std::vector<std::pair<int, int>> pairs = Pair_sweep<K>(k).candidates(model, roots, scene);
+  std::vector<std::pair<int, int>> pairs =
+      Pair_sweep<K>(k, semantics == Semantics::closed).candidates(model, roots, scene);
   std::size_t n = model.objects.size();
   stats.object_pairs = n * (n - 1) / 2 - scene.ignore.size();
   stats.candidate_pairs = pairs.size();
@@ -115,14 +122,15 @@ Check_answer run_check(const K& k, const Scene& scene, const Check_options& opti
   using Checker = Collision_checker<K>;
   Check_answer answer;
   answer.number = K::name();
+  answer.semantics = options.semantics;
   auto start = std::chrono::steady_clock::now();
   Scene_model<K> model = Scene_model<K>::build(k, scene);
   answer.stats.seconds_model = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   auto settled = settled_bounds_all(k, model, answer.stats, options.sbounds);
-  std::vector<std::pair<int, int>> pairs = candidate_pairs(k, model, settled, scene, answer.stats);
+  std::vector<std::pair<int, int>> pairs = candidate_pairs(k, model, settled, scene, answer.stats, options.semantics);
   auto check = [&](std::size_t i, const typename K::FT* ceiling, Check_stats& stats) {
     Checker checker(k, model, settled, stats, options.sbounds);
-    return checker.check_pair(pairs[i].first, pairs[i].second, options.earliest, ceiling);
+    return checker.check_pair(pairs[i].first, pairs[i].second, options.earliest, ceiling, options.semantics);
   };
   run_pairs(k, model, pairs, options, check, answer);
   return answer;

@@ -2,7 +2,7 @@
 // region from the S-bounds (§4.3, search/Span_region.h), the pair's
 // extrusion (model/Extrusion.h), divide-and-conquer (§4.1) with
 // generate-and-test (§4.2), and the witness (search/Witness.h) checked
-// against the scene.
+// against the scene; in either semantics (search/Semantics.h).
 #ifndef CLASH4D_CHECK_COLLISION_CHECKER_H
 #define CLASH4D_CHECK_COLLISION_CHECKER_H
 
@@ -25,8 +25,15 @@ struct Pair_result {
   bool has_witness = false;       // false: found, the witness is for another kernel to make
   bool witness_verified = false;  // checked with strict signs against the scene
   bool earliest = false;          // t_star and contact are set (--earliest)
-  FT t_star{};                    // inf of the collision times (§5)
+  FT t_star{};                    // inf of the collision times (§5); closed: the first contact time
   Vector4<FT> contact{};          // (x*, t*) in the closure of the collision region
+  // What makes the answer checkable (check/Check_answer.h, Pair_answer):
+  // closed, generic points inside a and inside b whose cells' closures hold
+  // the witness; earliest, the same for the contact point (regularised: one
+  // point inside both, twice).
+  Semantics semantics = Semantics::regularised;
+  std::array<Vector4<FT>, 2> witness_cells{};
+  std::array<Vector4<FT>, 2> contact_cells{};
 };
 
 // K: the kernel; Policy: search/No_filter.h (a filtered run's is in exact/).
@@ -48,14 +55,17 @@ public:
 
   // earliest: find t* (§5) rather than stopping at the first witness;
   // ceiling: in that mode, ignore collisions that start at or after it.
-  Pair_result<FT> check_pair(int a, int b, bool earliest = false, const FT* ceiling = nullptr)
+  Pair_result<FT> check_pair(int a, int b, bool earliest = false, const FT* ceiling = nullptr,
+                             Semantics semantics = Semantics::regularised)
   {
     ++stats_.pairs;
     Pair_result<FT> r;
     r.a = a;
     r.b = b;
+    r.semantics = semantics;
     Search_goal<FT> goal;
     goal.earliest = earliest;
+    goal.semantics = semantics;
     if (ceiling) { goal.has_ceiling = true; goal.ceiling = *ceiling; }
     std::size_t index = 0;
     for (const auto& span : model_.sub_spans({a, b})) {
@@ -105,7 +115,8 @@ private:
     start = std::chrono::steady_clock::now();
     Motion_groups<FT> groups;
     std::vector<H> table = Extrusion<K>::pair_table(A, B, shear, frame_of_a, use_sbounds_, groups);
-    Formula formula = Extrusion<K>::pair_formula(A, B);
+    std::size_t slab = goal.closed() ? Extrusion<K>::add_time_slab(table, span.lo, span.hi) : 0;
+    Pair_formula formula = Extrusion<K>::pair_formula(A, B, goal.closed() ? &slab : nullptr);
     ss.leaves = formula.leaf_count();
     stats_.spans.push_back(ss);
     Divide_and_conquer<K, Policy> dc(k_, table, stats_, &groups, &policy_);
@@ -125,7 +136,7 @@ private:
     r.has_witness = false;
     if (policy_.witness_certified()) policy_.attempt([&] { make_witness(goal, shear, A, B, span, r); });
     stats_.seconds_witness += seconds_since(start);
-    if (K::is_exact && !r.witness_verified)
+    if (K::is_exact && r.has_witness && !r.witness_verified)
       throw std::logic_error("internal error: the exact witness failed its check; please report this scene");
   }
 
@@ -135,7 +146,8 @@ private:
   std::optional<Box4> span_region(Moving& A, Moving& B, const Time_span<FT>& span, const Search_goal<FT>& goal,
                                   Vector3<FT>& shear, std::array<bool, 3>& frame_of_a, Span_stats& ss)
   {
-    Span_region<K> bounds(k_, stats_);
+    bool closed = goal.closed();
+    Span_region<K> bounds(k_, stats_, closed);
     FT tl = span.lo, th = span.hi;
     bool alive = use_sbounds_ ? bounds.four_d_bounds(A, B, tl, th) : true;
     alive = alive && goal.can_improve(k_, tl);
@@ -156,23 +168,46 @@ private:
     Box4 region = use_sbounds_ ? bounds.fitted(A, B, tl, th, shear, frame_of_a)
                                : bounds.original(A, B, span.lo, span.hi, shear);
     for (int q = 0; q < 4; ++q) ss.region.push_back(range(region.lo[q], region.hi[q]));
-    if (has_no_interior(k_, region)) {
+    if (closed ? is_empty_box(k_, region) : has_no_interior(k_, region)) {
       ss.narrowed.reset();
       return std::nullopt;
     }
     for (int q = 0; q < 3; ++q) ss.frame.push_back(k_.to_stat(shear[q]));
-    return use_sbounds_ ? bounds.on_grid(region, span.lo, span.hi) : region;
+    // Closed, a region without interior (objects that only touch) is
+    // widened to the grid too, so that it can be divided.
+    return use_sbounds_ || closed ? bounds.on_grid(region, span.lo, span.hi) : region;
   }
 
+  // The witness (regularised: generic, strictly inside both; closed: the
+  // point found, with a generic point inside each object whose cell's
+  // closure holds it) and, earliest, the contact point with the same; each
+  // checked against the scene.
   void make_witness(const Search_goal<FT>& goal, const Vector3<FT>& shear, const Moving& A, const Moving& B,
                     const Time_span<FT>& span, Pair_result<FT>& r) const
   {
-    r.witness = Witness<K>(k_).make(goal.inside, shear, A, B, span.lo, span.hi);
-    r.witness_verified = is_valid_witness(k_, model_, r.a, r.b, r.witness);
+    Witness<K> w(k_);
+    V4 contact = goal.contact;
+    for (int q = 0; q < 3; ++q) contact[q] += shear[q] * contact[3];
+    if (goal.closed()) {
+      r.witness = contact;
+      r.witness_cells = {w.near_in_space(goal.contact, goal.toward_a, shear, A),
+                         w.near_in_space(goal.contact, goal.toward_b, shear, B)};
+      r.witness_verified = is_valid_touch(k_, model_, r.a, r.b, r.witness, r.witness_cells[0], r.witness_cells[1]);
+      r.contact_cells = r.witness_cells;
+    } else {
+      r.witness = w.make(goal.inside, shear, A, B, span.lo, span.hi);
+      r.witness_verified = is_valid_witness(k_, model_, r.a, r.b, r.witness);
+      if (goal.earliest) {
+        V4 g = w.near(goal.contact, goal.inside, shear, A, B, span.lo, span.hi);
+        r.contact_cells = {g, g};
+        r.witness_verified = r.witness_verified && is_valid_witness(k_, model_, r.a, r.b, g) &&
+                             is_in_closure_of(k_, model_, r.a, contact, g) &&
+                             is_in_closure_of(k_, model_, r.b, contact, g);
+      }
+    }
     r.has_witness = true;
     r.t_star = goal.t_star;
-    r.contact = goal.contact;
-    for (int q = 0; q < 3; ++q) r.contact[q] += shear[q] * r.contact[3];
+    r.contact = contact;
   }
 
   void count_pruned(const Moving& m, Span_stats& ss)

@@ -25,7 +25,8 @@ public:
   using FT = typename K::FT;
   using Box4 = Box<FT, 4>;
 
-  explicit Pair_sweep(const K& k) : k_(k) {}
+  // closed: boxes that only touch are kept (closed semantics).
+  explicit Pair_sweep(const K& k, bool closed = false) : k_(k), closed_(closed) {}
 
   // roots[i]: object i's root S-bound in its own frame. Returns (i, j), i < j,
   // sorted, without ignored pairs.
@@ -51,6 +52,7 @@ public:
 
 private:
   const K& k_;
+  bool closed_;
   struct Item {
     int object;
     Box4 box;
@@ -89,11 +91,12 @@ private:
     }
   }
 
-  // a's interval on axis q extends strictly past the start of b's.
+  // a's interval on axis q extends strictly past the start of b's (closed:
+  // reaches it).
   bool opens_past(const Box4& a, const Box4& b, int q) const
   {
     if (!a.has_hi[q] || !b.has_lo[q]) return true;
-    return k_.possibly_positive(a.hi[q] - b.lo[q]);
+    return closed_ ? k_.possibly_nonnegative(a.hi[q] - b.lo[q]) : k_.possibly_positive(a.hi[q] - b.lo[q]);
   }
   bool overlaps(const Box4& a, const Box4& b) const
   {

@@ -106,45 +106,75 @@ void print_extrusion_text(const json& report, std::ostream& out)
 }
 
 
+json point_json(const std::array<std::string, 4>& p) { return json(p); }
+
+// The generic points that make a closed witness or an earliest contact
+// checkable (Pair_answer): one per object, in the order of "objects".
+json cells_json(const std::array<std::array<std::string, 4>, 2>& cells)
+{
+  return json::array({point_json(cells[0]), point_json(cells[1])});
+}
+
+json check_json(const Check_answer& a, const Check_options& o, bool stats, double tolerance)
+{
+  bool closed = a.semantics == Semantics::closed;
+  json j = {{"collide", a.collide}, {"number", a.number}, {"semantics", semantics_name(a.semantics)}};
+  if (a.number == "double") j["tolerance"] = tolerance;
+  auto witness_json = [&](const Pair_answer& p) {
+    json w{{"objects", {p.a, p.b}}, {"point", p.witness}, {"verified", p.witness_verified}};
+    if (closed) w["inside"] = cells_json(p.witness_cells);
+    return w;
+  };
+  auto earliest_json = [](const Pair_answer& p) {
+    return json{{"t", p.t_star}, {"point", p.contact}, {"at_start", p.at_start}, {"inside", cells_json(p.contact_cells)}};
+  };
+  const Pair_answer* main = a.reported();
+  if (main) j["witness"] = witness_json(*main);
+  if (main && o.earliest) {
+    j["earliest"] = earliest_json(*main);
+    j["earliest"]["objects"] = {main->a, main->b};
+  }
+  if (o.all_pairs) {
+    j["pairs"] = json::array();
+    for (const auto& p : a.pairs) {
+      json e = {{"objects", {p.a, p.b}}, {"witness", witness_json(p)}};
+      if (o.earliest) e["earliest"] = earliest_json(p);
+      j["pairs"].push_back(e);
+    }
+  }
+  if (stats) j["stats"] = stats_json(a.stats);
+  return j;
+}
+
+std::string point_text(const std::array<std::string, 4>& p)
+{
+  return "x = " + p[0] + ", y = " + p[1] + ", z = " + p[2] + ", t = " + p[3];
+}
+
 void print_check(const Check_answer& a, const Check_options& o, bool stats, double tolerance, std::ostream& out)
 {
   // The earliest pair's witness is the one shown when --earliest is given.
   const Pair_answer* main = a.reported();
   if (o.json) {
-    json j = {{"collide", a.collide}, {"number", a.number}};
-    if (a.number == "double") j["tolerance"] = tolerance;
-    auto witness_json = [](const Pair_answer& p) {
-      return json{{"objects", {p.a, p.b}}, {"point", p.witness}, {"verified", p.witness_verified}};
-    };
-    auto earliest_json = [](const Pair_answer& p) {
-      return json{{"t", p.t_star}, {"point", p.contact}, {"at_start", p.at_start}};
-    };
-    if (main) j["witness"] = witness_json(*main);
-    if (main && o.earliest) {
-      j["earliest"] = earliest_json(*main);
-      j["earliest"]["objects"] = {main->a, main->b};
-    }
-    if (o.all_pairs) {
-      j["pairs"] = json::array();
-      for (const auto& p : a.pairs) {
-        json e = {{"objects", {p.a, p.b}}, {"witness", witness_json(p)}};
-        if (o.earliest) e["earliest"] = earliest_json(p);
-        j["pairs"].push_back(e);
-      }
-    }
-    if (stats) j["stats"] = stats_json(a.stats);
-    out << j.dump(2) << "\n";
+    out << check_json(a, o, stats, tolerance).dump(2) << "\n";
     return;
   }
-  if (!a.collide) out << "no collision (" << a.number << ")\n";
+  bool closed = a.semantics == Semantics::closed;
+  std::string how = a.number + (closed ? ", closed semantics" : "");
+  if (!a.collide) out << "no collision (" << how << (closed ? ": the closed objects do not meet" : "") << ")\n";
   for (const auto& p : a.pairs) {
     if (!o.all_pairs && &p != main) continue;
-    out << "collision: " << p.a << " and " << p.b << " (" << a.number << ")\n";
-    out << "  witness: x = " << p.witness[0] << ", y = " << p.witness[1] << ", z = " << p.witness[2]
-        << ", t = " << p.witness[3] << (p.witness_verified ? "" : "  [NOT verified: fails the strict check]") << "\n";
+    out << (closed ? "contact or collision: " : "collision: ") << p.a << " and " << p.b << " (" << how << ")\n";
+    out << (closed ? "  common point: " : "  witness: ") << point_text(p.witness)
+        << (p.witness_verified ? "" : "  [NOT verified: fails the check against the scene]") << "\n";
+    if (closed) {
+      out << "    in the closure of the cell of " << p.a << " at " << point_text(p.witness_cells[0]) << "\n";
+      out << "    in the closure of the cell of " << p.b << " at " << point_text(p.witness_cells[1]) << "\n";
+    }
     if (p.earliest)
-      out << "  earliest: t* = " << p.t_star << " at x = " << p.contact[0] << ", y = " << p.contact[1]
-          << ", z = " << p.contact[2] << (p.at_start ? "  (already overlapping at the start of the span)" : "") << "\n";
+      out << (closed ? "  first contact: t* = " : "  earliest: t* = ") << p.t_star << " at x = " << p.contact[0]
+          << ", y = " << p.contact[1] << ", z = " << p.contact[2]
+          << (p.at_start ? "  (already in contact at the start of the span)" : "") << "\n";
   }
   if (o.earliest && main && o.all_pairs) out << "earliest pair: " << main->a << " and " << main->b << "\n";
   if (stats) {
@@ -312,7 +342,12 @@ struct Check_args : Scene_args {
   Check_options options;
   double tolerance = 0;
   bool stats = false, no_sbounds = false;
+  std::string semantics = "regularised";
 };
+
+const char* const semantics_help =
+    "regularised (default): a collision is a common interior point, touching is not one; closed: the objects' closed "
+    "sets (closure of the interior) meet within the closed span, touching counts (scene-format.md, Closed semantics)";
 
 Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
 {
@@ -320,7 +355,9 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
   CLI::App* cmd = add_scene_command(app, "check", "Decide whether any pair of objects collides (regularised: touching is not a collision).", *a);
   cmd->add_option("--tolerance", a->tolerance, "double only: treat |value| <= EPS as zero (default 0)")->check(CLI::NonNegativeNumber);
   cmd->add_flag("--all-pairs", a->options.all_pairs, "list every colliding pair instead of stopping at the first");
-  cmd->add_flag("--earliest", a->options.earliest, "find the earliest collision time t* (exact) and a contact point (§5)");
+  cmd->add_flag("--earliest", a->options.earliest,
+                "find the earliest collision time t* (exact) and a contact point (§5); closed: the first contact time");
+  cmd->add_option("--semantics", a->semantics, semantics_help)->check(CLI::IsMember({"regularised", "closed"}));
   cmd->add_flag("--json", a->as_json, "print one JSON object (spec: check)");
   cmd->add_flag("--stats", a->stats, "report what each stage did");
   cmd->add_flag("--no-sbounds", a->no_sbounds,
@@ -333,6 +370,7 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
     }
     a->options.sbounds = !a->no_sbounds;
     a->options.json = a->as_json;
+    a->options.semantics = *semantics_from_name(a->semantics);
     return with_scene(*a, err, [&](const Scene& scene) {
       Check_answer answer = instantiation(a->number).check(scene, a->options, a->tolerance);
       print_check(answer, a->options, a->stats, a->tolerance, out);
@@ -341,13 +379,28 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
   };
 }
 
+struct Skeleton_args : Scene_args {
+  std::string semantics = "regularised";
+};
+
 Command add_skeleton(CLI::App& app, std::ostream& out, std::ostream& err)
 {
-  auto a = std::make_shared<Scene_args>();
+  auto a = std::make_shared<Skeleton_args>();
   CLI::App* cmd = add_scene_command(app, "skeleton", "Print every edge of the boundary of each colliding pair's collision region in space-time (§5; a full search, slower than check).", *a);
   cmd->add_flag("--json", a->as_json, "print JSON (numbers as exact strings)");
+  cmd->add_option("--semantics", a->semantics,
+                  "regularised only: the skeleton is that of the (open) collision region; for contact use check "
+                  "--semantics closed")
+      ->check(CLI::IsMember({"regularised", "closed"}));
   return [cmd, a, &out, &err] {
     if (!cmd->parsed()) return -1;
+    if (a->semantics == "closed") {
+      // The closed touching set may be of any dimension (a point, a face):
+      // it has no skeleton of edges in the paper's sense (§5).
+      err << "clash4d skeleton: --semantics closed is not supported: the skeleton is that of the regularised "
+             "collision region; use 'clash4d check --semantics closed' for contact\n";
+      return CLASH4D_EXIT_INVALID;
+    }
     return with_scene(*a, err, [&](const Scene& scene) {
       Skeleton_answer answer = instantiation(a->number).skeleton(scene);
       print_skeleton(answer, a->as_json, out);

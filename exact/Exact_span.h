@@ -31,11 +31,12 @@ public:
     Generate_and_test<EK, Exact_line_filter>& conquer() { return lines_; }
     // Whether line i, j, m holds a point inside; `known`: it is the line the
     // rational run itself will find (the region was exact).
-    bool has_inside(const Formula& f, std::size_t i, std::size_t j, std::size_t m, bool& known)
+    bool has_inside(const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Semantics semantics,
+                    bool& known)
     {
       CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
       known = exact_;
-      return lines_.line_has_inside(f, i, j, m);
+      return lines_.line_has_inside(f, i, j, m, semantics);
     }
 
   private:
@@ -45,7 +46,8 @@ public:
     bool exact_;
   };
 
-  explicit Exact_span(Runner& runner) : runner_(runner) {}
+  // closed: the tables carry the sub-span's time slab (Extrusion::span_table).
+  explicit Exact_span(Runner& runner, bool closed = false) : runner_(runner), closed_(closed) {}
 
   // Whether two planes are one, each a table entry or (entry -1) a face of
   // the interval run's region; a face whose value the intervals only enclose
@@ -104,6 +106,7 @@ public:
 
 private:
   Runner& runner_;
+  bool closed_;
   std::size_t span_ = static_cast<std::size_t>(-1);
   std::vector<Hyperplane4<EFT>> table_;
   std::vector<Hyperplane4<EFT>> lowest_;        // table entries in lowest terms, as lines need them
@@ -117,7 +120,8 @@ private:
     runner_.need_model(a);
     runner_.need_model(b);
     groups_ = Motion_groups<EFT>();
-    table_ = Extrusion<EK>::span_table(runner_.emodel_, runner_.esettled_, a, b, s, frame, runner_.use_sbounds_, groups_);
+    table_ = Extrusion<EK>::span_table(runner_.emodel_, runner_.esettled_, a, b, s, frame, runner_.use_sbounds_, groups_,
+                                       closed_);
     lowest_.clear();
     answers_.clear();
     span_ = s;

@@ -57,7 +57,7 @@ public:
   {
     Check_answer answer;
     std::vector<std::pair<int, int>> pairs;
-    if (!prepare(answer.stats, pairs)) {
+    if (!prepare(answer.stats, pairs, options.semantics)) {
       answer = run_check(ek_, scene_, options);     // AK could not even build the model
     } else {
       auto check_one = [&](std::size_t i, const EFT* ceiling, Check_stats& stats) {
@@ -66,6 +66,7 @@ public:
       run_pairs(ek_, emodel_, pairs, options, check_one, answer);
     }
     answer.number = EK_name;
+    answer.semantics = options.semantics;
     finish(answer.stats);
     return answer;
   }
@@ -112,16 +113,18 @@ private:
   // make the witness, EK along its trail or from the start.
   Pair_result<EFT> check_pair(int a, int b, const Check_options& options, const EFT* ceiling, Check_stats& stats)
   {
+    bool closed = options.semantics == Semantics::closed;
     Search_trail trail;
     Check_stats astats;
     if (!exact_only_[a] && !exact_only_[b]) {
       try {
         Protector protect;
         AFT aceiling = ceiling ? ak_.from_rational(ek_.to_rational(*ceiling)) : AFT(0);
-        Interval_filter<Filtered_runner> policy(*this, trail, astats, !options.earliest);
+        Interval_filter<Filtered_runner> policy(*this, trail, astats, !options.earliest, closed);
         Collision_checker<AK, Interval_filter<Filtered_runner>> checker(ak_, amodel_, asettled_, astats, use_sbounds_,
                                                                         &policy);
-        Pair_result<AFT> found = checker.check_pair(a, b, options.earliest, ceiling ? &aceiling : nullptr);
+        Pair_result<AFT> found =
+            checker.check_pair(a, b, options.earliest, ceiling ? &aceiling : nullptr, options.semantics);
         if (!found.collide || (found.has_witness && found.witness_verified)) {
           stats = astats;
           if (!found.collide) return Pair_result<EFT>();
@@ -140,7 +143,7 @@ private:
       Check_stats rstats;
       Trail_replay replay(trail);
       Collision_checker<EK, Trail_replay> checker(ek_, emodel_, esettled_, rstats, use_sbounds_, &replay);
-      Pair_result<EFT> r = checker.check_pair(a, b);
+      Pair_result<EFT> r = checker.check_pair(a, b, false, nullptr, options.semantics);
       if (r.collide && !trail.diverged) {
         ++witness_replays_;
         stats = astats;                     // the search, as the interval run did it
@@ -149,7 +152,7 @@ private:
       }
     }
     Collision_checker<EK> checker(ek_, emodel_, esettled_, stats, use_sbounds_);
-    return checker.check_pair(a, b, options.earliest, ceiling);
+    return checker.check_pair(a, b, options.earliest, ceiling, options.semantics);
   }
   const Scene& scene_;
   bool use_sbounds_;
@@ -183,7 +186,8 @@ private:
 
   // AK's model, each object's S-bounds (EK's where AK fails), and the sweep's
   // pairs. False when AK cannot build the model: the whole run goes to EK.
-  bool prepare(Check_stats& stats, std::vector<std::pair<int, int>>& pairs)
+  bool prepare(Check_stats& stats, std::vector<std::pair<int, int>>& pairs,
+               Semantics semantics = Semantics::regularised)
   {
     std::size_t n = scene_.objects.size();
     exact_only_.assign(n, 0);
@@ -201,12 +205,12 @@ private:
     stats.seconds_sbounds += seconds_since(start);
     try {
       Protector protect;
-      pairs = candidate_pairs(ak_, amodel_, asettled_, scene_, stats);
+      pairs = candidate_pairs(ak_, amodel_, asettled_, scene_, stats, semantics);
     } catch (const CGAL::Uncertain_conversion_exception&) {
       // The sweep could not order some motion times: sweep in EK instead.
       ++fallbacks_;
       for (std::size_t i = 0; i < n; ++i) need_exact(static_cast<int>(i));
-      pairs = candidate_pairs(ek_, emodel_, esettled_, scene_, stats);
+      pairs = candidate_pairs(ek_, emodel_, esettled_, scene_, stats, semantics);
     }
     return true;
   }

@@ -27,8 +27,11 @@ public:
 
   Interval_filter() = default;   // only as a stage's unused default
   // record: an any-witness search, whose trail and witness are wanted.
-  Interval_filter(Runner& runner, Search_trail& trail, Check_stats& stats, bool record)
-    : exact_(std::make_unique<Exact_span<Runner>>(runner)), trail_(&trail), stats_(&stats), record_(record) {}
+  // closed: the pair is searched in closed semantics, whose witness (a
+  // touching point, any rational) only a rational run can make.
+  Interval_filter(Runner& runner, Search_trail& trail, Check_stats& stats, bool record, bool closed = false)
+    : exact_(std::make_unique<Exact_span<Runner>>(runner, closed)), trail_(&trail), stats_(&stats), record_(record),
+      closed_(closed) {}
 
   bool skips_span(std::size_t) const { return false; }
   void search_span(int a, int b, std::size_t index, const std::array<bool, 3>& frame_of_a)
@@ -43,7 +46,7 @@ public:
   bool stops_after(std::size_t) const { return false; }
   // The point is the rational run's own when the path was certified (the
   // trail is not approximate) and the intervals found it themselves.
-  bool witness_certified() const { return record_ && !trail_->approximate && !found_in_rationals_; }
+  bool witness_certified() const { return record_ && !closed_ && !trail_->approximate && !found_in_rationals_; }
   template <class F>
   void attempt(F make)
   {
@@ -72,7 +75,7 @@ public:
   // Earliest mode (t* is any rational) is not decided line by line: an
   // uncertain sign there stops the run.
   template <class G>
-  void test_line(G& g, const Formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<AFT>& goal)
+  void test_line(G& g, const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<AFT>& goal)
   {
     bool before = goal.found;
     if (goal.earliest) {
@@ -108,6 +111,7 @@ private:
   Search_trail* trail_ = nullptr;
   Check_stats* stats_ = nullptr;
   bool record_ = false;
+  bool closed_ = false;
   int a_ = -1, b_ = -1;
   std::size_t span_ = 0;
   std::array<bool, 3> frame_{};
@@ -118,7 +122,7 @@ private:
   // One line the intervals could not decide; the same rational conquer
   // serves the rest of this conquer's lines.
   template <class G>
-  void decide_in_rationals(G& g, const Formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<AFT>& goal)
+  void decide_in_rationals(G& g, const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<AFT>& goal)
   {
     if (!lines_ || lines_conquer_ != g.conquers()) {
       lines_ = exact_->lines(a_, b_, span_, frame_, g.layout(), g.region());
@@ -126,7 +130,7 @@ private:
     }
     ++stats_->exact_lines;
     bool known = false;
-    if (lines_->has_inside(f, i, j, m, known)) {
+    if (lines_->has_inside(f, i, j, m, goal.semantics, known)) {
       goal.found = goal.improved = true;
       found_in_rationals_ = true;
       if (record_) trail_->line_known = known;

@@ -75,6 +75,17 @@ bool has_no_interior(const K& k, const Box<FT, D>& b)
   return false;
 }
 
+// Closed semantics keeps boxes without interior: closed objects that touch
+// meet in one. Only a side with hi < lo makes a box empty.
+template <class K, class FT, std::size_t D>
+bool is_empty_box(const K& k, const Box<FT, D>& b)
+{
+  if (b.empty) return true;
+  for (std::size_t i = 0; i < D; ++i)
+    if (b.has_lo[i] && b.has_hi[i] && k.compare(b.hi[i], b.lo[i]) == CGAL::NEGATIVE) return true;
+  return false;
+}
+
 // Same contents on the grid of kernel k (Kernel_base::same_on_grid): the
 // S-bound passes stop when a pass moved no bound by a grid step.
 template <class K, class FT, std::size_t D>

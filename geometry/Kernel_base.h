@@ -57,6 +57,8 @@ public:
   // For conservative filters only (the pair sweep): true unless x is known
   // not to be positive. An interval kernel answers true when unsure.
   bool possibly_positive(const FT& x) const { return derived().sign(x) == CGAL::POSITIVE; }
+  // The same for x >= 0 (closed semantics: touching boxes meet).
+  bool possibly_nonnegative(const FT& x) const { return derived().sign(x) != CGAL::NEGATIVE; }
 
   // For box simplification (§4.1), which may always be skipped
   // (regularised-semantics.md, item 4): whether x >= 0 (x > 0 when strict).

@@ -34,8 +34,8 @@
 // Provided by Kernel_base (a kernel may refine them, as the interval kernel
 // does for speed): compare, less, side, dot_sign, orientation4, is_zero,
 // quotient (a / b with b's sign known), largest_component, round_to_grid,
-// grid_point, same_on_grid, less_on_grid, possibly_positive (conservative
-// filters), is_nonnegative (box simplification, CGAL::Uncertain<bool>).
+// grid_point, same_on_grid, less_on_grid, possibly_positive and
+// possibly_nonnegative (conservative filters), is_nonnegative (box simplification, CGAL::Uncertain<bool>).
 //
 // Optional:
 //   k.to_rational(x)                exact kernels and double: the value as

@@ -11,6 +11,7 @@
 #include "geometry/Box.h"
 #include "geometry/Hyperplane4.h"
 #include "model/Formula.h"
+#include "model/Pair_formula.h"
 #include "model/Motion_groups.h"
 #include "model/Scene_model.h"
 #include <vector>
@@ -71,29 +72,43 @@ public:
   // pair_table of objects a and b on their sub-span `index` (time order),
   // in the frame Appendix B's fitting chose (frame_of_a) or, without
   // S-bounds, the world frame: the table another kernel's run searched.
+  // closed: with the sub-span's time slab after it (add_time_slab).
   static std::vector<H> span_table(const Scene_model<K>& model, const std::vector<std::vector<Box<FT, 3>>>& settled,
                                    int a, int b, std::size_t index, const std::array<bool, 3>& frame_of_a,
-                                   bool fitted, Motion_groups<FT>& groups)
+                                   bool fitted, Motion_groups<FT>& groups, bool closed = false)
   {
     const Time_span<FT> span = model.sub_spans({a, b}).at(index);
     Moving A = moving_on(model, a, span, settled[a]), B = moving_on(model, b, span, settled[b]);
     Vector3<FT> shear;
     for (int q = 0; q < 3; ++q) shear[q] = !fitted ? FT(0) : frame_of_a[q] ? A.v[q] : B.v[q];
-    return pair_table(A, B, shear, frame_of_a, fitted, groups);
+    std::vector<H> table = pair_table(A, B, shear, frame_of_a, fitted, groups);
+    if (closed) add_time_slab(table, span.lo, span.hi);
+    return table;
   }
 
-  // The formula A and B over pair_table's entries.
-  static Formula pair_formula(const Moving& A, const Moving& B)
+  // Closed semantics: the sub-span's slab lo <= t <= hi appended to the
+  // table (two entries, no complements), for pair_formula's `slab`. Each
+  // object on the sub-span is its extrusion restricted to the closed slab
+  // (§2.2: regular because the time domain is closed), so a cell found
+  // around a point at the slab's end lies within the sub-span, where the
+  // velocities are the table's. Returns the first entry's index.
+  static std::size_t add_time_slab(std::vector<H>& table, const FT& lo, const FT& hi)
   {
-    Formula::Builder builder;
-    std::size_t mark = builder.open();
+    table.push_back(time_at_least(lo));
+    table.push_back(time_at_most(hi));
+    return table.size() - 2;
+  }
+
+  // A's formula and B's over pair_table's entries, kept apart
+  // (model/Pair_formula.h); with `slab` (add_time_slab's index), each also
+  // within the sub-span's time slab.
+  static Pair_formula pair_formula(const Moving& A, const Moving& B, const std::size_t* slab = nullptr)
+  {
     std::size_t next = 0;
-    emit(A, 0, false, builder, next);
-    next = 0;
+    Formula a = object_formula(A, next, slab);
     for (const auto& p : A.object->csg.primitives) next += 2 * p.planes.size();   // B's first plane
-    emit(B, 0, false, builder, next);
-    builder.close(Formula::Op::And, mark);
-    return builder.finish();
+    Formula b = object_formula(B, next, slab);
+    return Pair_formula(std::move(a), std::move(b));
   }
 
   // Object i over all time within [tL, tH]: the union over its motion
@@ -129,6 +144,20 @@ public:
   }
 
 private:
+  // One object's tree from table entry `next` on, within the slab when given.
+  static Formula object_formula(const Moving& m, std::size_t next, const std::size_t* slab)
+  {
+    Formula::Builder builder;
+    std::size_t mark = builder.open();
+    emit(m, 0, false, builder, next);
+    if (slab) {
+      builder.leaf(static_cast<std::uint32_t>(*slab));
+      builder.leaf(static_cast<std::uint32_t>(*slab + 1));
+    }
+    builder.close(Formula::Op::And, mark);
+    return builder.finish();
+  }
+
   // Every plane of every primitive, extruded (eq. 4) and sheared, followed by
   // its complement: table[2i] is plane i, table[2i + 1] its complement.
   // In the frame x' = x - w t the object moves with v - w (eq. 4 with that

@@ -52,22 +52,65 @@ Truth classify_point(const K& k, const Csg_model<typename K::FT>& m, const Vecto
   return Truth::Unknown;
 }
 
+// g is strictly inside object i at its time, on none of its planes.
+template <class K>
+bool is_generic_inside(const K& k, const Scene_model<K>& model, int i, const Vector4<typename K::FT>& g)
+{
+  using FT = typename K::FT;
+  const Object_model<FT>& o = model.objects[i];
+  Vector3<FT> d = o.motion.displacement(k, g[3]);
+  Vector3<FT> y{g[0] - d[0], g[1] - d[1], g[2] - d[2]};
+  if (classify_point(k, o.csg, y) != Truth::True) return false;
+  for (const auto& prim : o.csg.primitives)
+    for (const auto& pl : prim.planes)
+      if (k.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], y) == CGAL::ZERO) return false;
+  return true;
+}
+
 // A witness (x, y, z, t) of a collision of objects a and b: tL < t < tH, and
 // x - D(t) strictly inside both solids and on none of their planes. Evaluated
 // on the 3D solids moved back by D(t), independently of the extrusion.
 template <class K>
 bool is_valid_witness(const K& k, const Scene_model<K>& model, int a, int b, const Vector4<typename K::FT>& w)
 {
-  using FT = typename K::FT;
   if (!(k.less(model.t_lo, w[3]) && k.less(w[3], model.t_hi))) return false;
-  for (int i : {a, b}) {
-    const Object_model<FT>& o = model.objects[i];
-    Vector3<FT> d = o.motion.displacement(k, w[3]);
-    Vector3<FT> y{w[0] - d[0], w[1] - d[1], w[2] - d[2]};
-    if (classify_point(k, o.csg, y) != Truth::True) return false;
-    for (const auto& prim : o.csg.primitives)
-      for (const auto& pl : prim.planes)
-        if (k.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], y) == CGAL::ZERO) return false;
+  return is_generic_inside(k, model, a, w) && is_generic_inside(k, model, b, w);
+}
+
+// Whether p = (x, t) is in the closure of the cell of object i holding g:
+// every plane of the object is zero at p or has the sign it has at g (the
+// cell is convex, so the segment from g to p minus p lies in it). Each
+// point is taken back by its own D(t), which is the extrusion's when both
+// times lie in one constant-velocity piece of the motion (the callers'
+// points do).
+template <class K>
+bool is_in_closure_of(const K& k, const Scene_model<K>& model, int i, const Vector4<typename K::FT>& p,
+                      const Vector4<typename K::FT>& g)
+{
+  using FT = typename K::FT;
+  const Object_model<FT>& o = model.objects[i];
+  Vector3<FT> dp = o.motion.displacement(k, p[3]), dg = o.motion.displacement(k, g[3]);
+  Vector3<FT> yp{p[0] - dp[0], p[1] - dp[1], p[2] - dp[2]}, yg{g[0] - dg[0], g[1] - dg[1], g[2] - dg[2]};
+  for (const auto& prim : o.csg.primitives)
+    for (const auto& pl : prim.planes) {
+      Vector3<FT> n{pl[0], pl[1], pl[2]};
+      CGAL::Sign at_p = k.side(n, pl[3], yp);
+      if (at_p != CGAL::ZERO && at_p != k.side(n, pl[3], yg)) return false;
+    }
+  return true;
+}
+
+// Closed semantics (scene-format.md): p with tL <= t <= tH lies in both
+// closed objects, shown by ga strictly inside a, gb strictly inside b, at
+// p's time, each with p in the closure of its cell.
+template <class K>
+bool is_valid_touch(const K& k, const Scene_model<K>& model, int a, int b, const Vector4<typename K::FT>& p,
+                    const Vector4<typename K::FT>& ga, const Vector4<typename K::FT>& gb)
+{
+  if (k.less(p[3], model.t_lo) || k.less(model.t_hi, p[3])) return false;
+  for (auto [i, g] : {std::pair<int, const Vector4<typename K::FT>*>{a, &ga}, {b, &gb}}) {
+    if (k.compare((*g)[3], p[3]) != CGAL::ZERO) return false;
+    if (!is_generic_inside(k, model, i, *g) || !is_in_closure_of(k, model, i, p, *g)) return false;
   }
   return true;
 }

@@ -3,6 +3,9 @@
 // generate-and-test when it is small (fewer leaves than kappa(d) = 2d + 6),
 // otherwise bisect every axis into 16 sub-regions. Depth-first, so memory is
 // proportional to the depth; stops at the first region found inside.
+// Closed semantics (search/Semantics.h) simplifies strictly, so that a
+// half-space touching the closed region only on its boundary stays: a
+// contact there is a closed collision.
 #ifndef CLASH4D_SEARCH_DIVIDE_AND_CONQUER_H
 #define CLASH4D_SEARCH_DIVIDE_AND_CONQUER_H
 
@@ -37,18 +40,22 @@ public:
   static std::size_t kappa(std::size_t d) { return 2 * d + 6; }
 
   // Depth-first, earliest times first; the goal says when to stop.
-  void search(const Box4& region, const Formula& formula, Search_goal<FT>& goal, std::size_t depth = 0)
+  void search(const Box4& region, const Pair_formula& formula, Search_goal<FT>& goal, std::size_t depth = 0)
   {
     if (!goal.can_improve(k_, region.lo[3])) return;
     stats_.visit(depth);
-    Formula f = formula.simplified([&](std::uint32_t h) { return status(table_[h], region); });
+    bool strict = goal.closed();
+    Pair_formula f = formula.simplified([&](std::uint32_t h) { return status(table_[h], region, strict); });
     if (f.value() == Truth::False) return;
     if (f.value() == Truth::True) {
       if (!policy_.decides_here(depth, false)) return;
-      // Every interior point is inside; the earliest is on the face t = lo.
+      // Every interior point is inside (closed: every point of the closed
+      // region, strict signs); the earliest is on the face t = lo.
       Vector4<FT> c = centre(region), low = c;
       low[3] = region.lo[3];
-      goal.record(k_, c, low);
+      Vector4<FT> none{FT(0), FT(0), FT(0), FT(0)};
+      if (strict) goal.record_touch(k_, low, none, none);
+      else goal.record(k_, c, low);
       policy_.found_at(path_, false);
       return;
     }
@@ -95,7 +102,8 @@ public:
   // Over a closed box, min h >= 0 means the leaf is empty there and max h <= 0
   // that it is everything, up to the boundary that regularisation ignores
   // (regularised-semantics.md, item 4). Strict (min > 0, max < 0) keeps the
-  // planes that touch the box, which the skeleton needs.
+  // planes that touch the box, which the skeleton and closed semantics need
+  // (the sign is then fixed on a neighbourhood of the closed box).
   // An approximate kernel that cannot tell keeps the leaf (Unknown), and
   // tells the policy.
   Truth status(const H& h, const Box4& b, bool strict = false) const

@@ -4,12 +4,15 @@
 // neighbourhood test of Appendix A. Every open cell of the arrangement inside
 // a bounded region is a polytope with an edge, and the midpoint of that edge
 // sees the cell, so the search is complete.
+// Closed semantics (search/Semantics.h) tests the ends and cuts of every
+// segment instead, each for a cell inside A and a cell inside B around it
+// (on_line_closed).
 #ifndef CLASH4D_SEARCH_GENERATE_AND_TEST_H
 #define CLASH4D_SEARCH_GENERATE_AND_TEST_H
 
 #include "geometry/Box.h"
 #include "search/Check_stats.h"
-#include "model/Formula.h"
+#include "model/Pair_formula.h"
 #include "geometry/Hyperplane4.h"
 #include "model/Motion_groups.h"
 #include "search/Neighbourhood.h"
@@ -56,7 +59,7 @@ public:
   // Records what it finds in the goal; in earliest mode it examines every
   // edge that could hold an earlier point (the least time over an edge is at
   // one of its ends, and every vertex of a cell's closure ends such an edge).
-  void run(const Formula& f, const Box<FT, 4>& region, Search_goal<FT>& goal)
+  void run(const Pair_formula& f, const Box<FT, 4>& region, Search_goal<FT>& goal)
   {
     collect_planes(f, region);
     std::size_t n = planes_.size();
@@ -72,7 +75,7 @@ public:
 
   // The line of planes i, j, m of this conquer: its edges' midpoints
   // classified, what they hold recorded in the goal.
-  void test_line(const Formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<FT>& goal)
+  void test_line(const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<FT>& goal)
   {
     on_line(f, i, j, m, goal);
   }
@@ -97,9 +100,11 @@ public:
   // One line of an adopted conquer: whether it holds a point inside.
   // Only the verdict is wanted, so the policy may classify the
   // neighbourhoods of the line's points another way first (verdict_first).
-  bool line_has_inside(const Formula& f, std::size_t i, std::size_t j, std::size_t m)
+  bool line_has_inside(const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m,
+                       Semantics semantics = Semantics::regularised)
   {
     Search_goal<FT> goal;
+    goal.semantics = semantics;
     verdict_only_ = true;
     on_line(f, i, j, m, goal);
     verdict_only_ = false;
@@ -146,6 +151,18 @@ private:
   int line_group_ = -1;                   // their common motion group, or -1
   int line_corner_ = -1;                  // a corner all three pass through: the line is its path
   std::vector<int> line_meets_;           // corners two of them pass through: the line meets their paths
+  // on_line_closed: the segment's points, per plane its cut's group (or -1)
+  // and the sign of its slope along the line.
+  struct Point_on_line {
+    FT s;
+    long plane;                           // the plane cut there, -1 for an end of the segment
+    std::vector<std::size_t> more;        // planes cutting there through a corner's path
+  };
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+  std::vector<Point_on_line> points_;
+  std::vector<std::size_t> groups_at_;
+  std::vector<long> group_of_;
+  std::vector<int> cut_sign_;
 
   // Index of h among planes_ (appending it if new) and its orientation;
   // `along` (model/Motion_groups.h) is what h is known to contain, and is
@@ -246,18 +263,18 @@ private:
     return policy_.same_plane(k_, h, planes_[p], entry, face, layout_.entry[p], layout_.face[p], *region_);
   }
 
-  void collect_planes(const Formula& f, const Box<FT, 4>& region)
+  void collect_planes(const Pair_formula& f, const Box<FT, 4>& region)
   {
     ++conquers_;
     region_ = &region;
     planes_.clear();
     layout_ = Plane_layout();
     layout_.leaf_plane.assign(table_.size(), {0, 0});
-    for (const auto& t : f.code())
-      if (t.op == Formula::Op::Leaf && layout_.leaf_plane[t.arg].second == 0)
-        layout_.leaf_plane[t.arg] =
-            intern(table_[t.arg], groups_ && groups_->group(t.arg) >= 0 ? 1u << groups_->group(t.arg) : 0u,
-                   static_cast<long>(t.arg));
+    f.for_each_leaf([&](std::uint32_t h) {
+      if (layout_.leaf_plane[h].second == 0)
+        layout_.leaf_plane[h] =
+            intern(table_[h], groups_ && groups_->group(h) >= 0 ? 1u << groups_->group(h) : 0u, static_cast<long>(h));
+    });
     // Region faces, inside <= 0; they may coincide with leaves, so intern too.
     layout_.first_face = planes_.size();
     for (int which = 0; which < 8; ++which)
@@ -284,8 +301,12 @@ private:
     return true;
   }
 
-  void on_line(const Formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<FT>& goal)
+  void on_line(const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<FT>& goal)
   {
+    if (goal.closed()) {
+      on_line_closed(f, i, j, m, goal);
+      return;
+    }
     V l = line_direction(i, j, m);
     if (k_.is_zero(l)) return;
     ++stats_.lines;
@@ -337,6 +358,114 @@ private:
       FT mid = (cuts[q] + cuts[q + 1]) / FT(2);
       if (auto in = classify(f, base, l, mid)) goal.record(k_, *in, early);
     }
+  }
+
+  // Closed semantics: the touching set of A and B within the closed region
+  // is a union of polytopes (the closure of a cell inside A meeting the
+  // closure of a cell inside B), and each, if non-empty, has a vertex on
+  // the arrangement of the objects' planes and the region's faces: an end
+  // or a cut of the segment of some line of three of them. So every end
+  // and cut is tested; the least time of the touching set is attained at
+  // one (regularised-semantics item 5).
+  void on_line_closed(const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<FT>& goal)
+  {
+    V l = line_direction(i, j, m);
+    if (k_.is_zero(l)) return;
+    ++stats_.lines;
+    V base = base_point(planes_[i], planes_[j], planes_[m], l);
+    FT s_lo(0), s_hi(0);
+    if (!range_in_region(base, l, s_lo, s_hi)) return;
+    if (!goal.can_improve(k_, Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
+    evaluate_planes(base, l, layout_.first_face);
+    collect_points(s_lo, s_hi);
+    // Cheap rejection: A (or B) false whatever the planes meeting the closed
+    // segment do, hence at every point of it and in every cell around one.
+    auto truth = [&](std::uint32_t h) { return leaf_truth(h); };
+    if (f.a().evaluate(truth) == Truth::False || f.b().evaluate(truth) == Truth::False) return;
+    group_points();
+    for (std::size_t g = 0; g < groups_at_.size() && !goal.done(); ++g) {
+      const FT& s = points_[groups_at_[g]].s;
+      if (!goal.can_improve(k_, base[3] + s * l[3])) continue;
+      for (std::size_t p = 0; p < layout_.first_face; ++p)
+        if (group_of_[p] >= 0) sign_[p] = cut_sign_[p] * (g > std::size_t(group_of_[p]) ? 1 : g < std::size_t(group_of_[p]) ? -1 : 0);
+      test_touch(f, point_along(base, s, l), goal);
+    }
+  }
+
+  // The segment's points for on_line_closed: its ends (plane -1) and the
+  // cut of every object plane crossing it, inclusive of the ends. A plane
+  // that meets the line at a corner's path shares the corner's first
+  // plane's cut, written so. Sets sign_ on the segment: the constant sign
+  // of planes not crossing it, 0 for those that do (and for those holding
+  // it); group_of_ is -1 until group_points.
+  void collect_points(const FT& s_lo, const FT& s_hi)
+  {
+    points_.clear();
+    points_.push_back({s_lo, -1, {}});
+    points_.push_back({s_hi, -1, {}});
+    group_of_.assign(layout_.first_face, -1);
+    cut_sign_.assign(layout_.first_face, 0);
+    FT centre = (s_lo + s_hi) / FT(2);
+    std::vector<std::pair<int, std::size_t>> corner_point;   // corner -> index in points_
+    for (std::size_t p = 0; p < layout_.first_face; ++p) {
+      CGAL::Sign sa = k_.sign(along_[p]);
+      sign_[p] = 0;
+      if (sa == CGAL::ZERO) { sign_[p] = static_cast<int>(k_.sign(at_base_[p])); continue; }
+      cut_sign_[p] = static_cast<int>(sa);
+      int corner = meeting_corner(p);
+      auto seen = std::find_if(corner_point.begin(), corner_point.end(), [&](const auto& e) { return e.first == corner; });
+      if (corner >= 0 && seen != corner_point.end()) {
+        if (seen->second != npos) points_[seen->second].more.push_back(p);
+        else sign_[p] = static_cast<int>(k_.sign(at_base_[p] + centre * along_[p]));
+        continue;
+      }
+      FT cut = k_.quotient(-at_base_[p], along_[p], sa);
+      bool on = !k_.less(cut, s_lo) && !k_.less(s_hi, cut);
+      if (corner >= 0) corner_point.emplace_back(corner, on ? points_.size() : npos);
+      if (on) points_.push_back({cut, static_cast<long>(p), {}});
+      else sign_[p] = static_cast<int>(k_.sign(at_base_[p] + centre * along_[p]));
+    }
+  }
+
+  // Sorts the points along the segment and groups those the kernel calls
+  // equal (several planes through one point); group_of_[p] is the group of
+  // plane p's cut, groups_at_[g] a point of group g.
+  void group_points()
+  {
+    std::sort(points_.begin(), points_.end(), [](const Point_on_line& a, const Point_on_line& b) { return a.s < b.s; });
+    groups_at_.clear();
+    for (std::size_t q = 0; q < points_.size(); ++q) {
+      if (q == 0 || k_.compare(points_[q].s, points_[q - 1].s) != CGAL::ZERO) groups_at_.push_back(q);
+      long g = static_cast<long>(groups_at_.size()) - 1;
+      if (points_[q].plane >= 0) group_of_[points_[q].plane] = g;
+      for (std::size_t p : points_[q].more) group_of_[p] = g;
+    }
+  }
+
+  // Point x (signs of the object planes there in sign_): in the closure of
+  // a cell inside A and of a cell inside B? Recorded in the goal if so.
+  void test_touch(const Pair_formula& f, const V& x, Search_goal<FT>& goal)
+  {
+    ++stats_.points_classified;
+    std::vector<std::size_t> through;
+    for (std::size_t p = 0; p < layout_.first_face; ++p)
+      if (sign_[p] == 0) through.push_back(p);
+    auto truth = [&](std::uint32_t h) { return leaf_truth(h); };
+    if (f.a().evaluate(truth) == Truth::False || f.b().evaluate(truth) == Truth::False) return;
+    std::vector<V> normals;
+    for (std::size_t p : through) normals.push_back(planes_[p].n);
+    auto cell_of = [&](const Formula& g) {
+      return [&, g_ptr = &g](const std::vector<int>& signs) {
+        for (std::size_t t = 0; t < through.size(); ++t) sign_[through[t]] = signs[t];
+        return g_ptr->evaluate(truth) == Truth::True;
+      };
+    };
+    Neighbourhood<K> hood(k_);
+    std::optional<V> da = hood.find_inside_around(normals, cell_of(f.a()));
+    std::optional<V> db = da ? hood.find_inside_around(normals, cell_of(f.b())) : std::nullopt;
+    stats_.cells_tested += hood.cells_tested();
+    for (std::size_t p : through) sign_[p] = 0;
+    if (da && db) goal.record_touch(k_, x, *da, *db);
   }
 
   // The line's parameter range inside the closed region, from the faces
@@ -492,7 +621,7 @@ private:
     return p;
   }
 
-  std::optional<V> classify(const Formula& f, const V& base, const V& l, const FT& s)
+  std::optional<V> classify(const Pair_formula& f, const V& base, const V& l, const FT& s)
   {
     ++stats_.points_classified;
     std::vector<std::size_t> through;

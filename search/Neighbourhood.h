@@ -15,6 +15,13 @@
 //    s the sum of two consecutive sector rays lies inside one cell. Every cell
 //    has an extreme ray, so every cell is visited (A.3's counting shortcut is
 //    subsumed: it is this enumeration for coplanar normals).
+// find_inside_around does the same at a point that is not on a common line
+// (a vertex, for closed semantics): with four independent planes through it
+// every one of the 16 sign vectors is a cell; otherwise every cell around a
+// vertex is a pointed cone with an extreme ray on three of the planes, and
+// its cells are found around that ray as above (A.5 one dimension up); when
+// the normals do not span space-time they share a line, and the 3D case
+// applies along it.
 #ifndef CLASH4D_SEARCH_NEIGHBOURHOOD_H
 #define CLASH4D_SEARCH_NEIGHBOURHOOD_H
 
@@ -57,6 +64,20 @@ public:
       return std::nullopt;
     }
     return around_extreme_rays(l, normals, inside);
+  }
+
+  // normals: every plane through the point, in no particular relation.
+  // Returns a direction into the first cell found inside, or nothing.
+  template <class Inside>
+  std::optional<V> find_inside_around(const std::vector<V>& normals, Inside inside)
+  {
+    std::size_t n = normals.size();
+    if (n == 0) return find_inside(V{FT(0), FT(0), FT(0), FT(1)}, normals, inside);
+    if (n == 4 && k_.orientation4(normals[0], normals[1], normals[2], normals[3]) != CGAL::ZERO)
+      return four_independent(normals, inside);
+    std::optional<V> common = common_line(normals);
+    if (common) return find_inside(*common, normals, inside);
+    return around_vertex_rays(normals, inside);
   }
 
   std::size_t cells_tested() const { return tested_; }
@@ -193,6 +214,93 @@ private:
     std::vector<V> sorted;
     for (std::size_t a : order) sorted.push_back(out[a]);
     return sorted;
+  }
+
+  // Four independent normals: g_i orthogonal to the other three, oriented
+  // so n_i.g_i > 0; sum sigma_i g_i is in the cell of signs sigma.
+  template <class Inside>
+  std::optional<V> four_independent(const std::vector<V>& N, Inside& inside)
+  {
+    V g[4];
+    for (int i = 0; i < 4; ++i) {
+      g[i] = generalised_cross(N[(i + 1) % 4], N[(i + 2) % 4], N[(i + 3) % 4]);
+      if (k_.dot_sign(N[i], g[i]) == CGAL::NEGATIVE) g[i] = scaled(g[i], -1);
+    }
+    std::vector<int> signs(4);
+    for (int mask = 0; mask < 16; ++mask) {
+      for (int i = 0; i < 4; ++i) signs[i] = (mask >> i & 1) ? -1 : 1;
+      ++tested_;
+      if (!inside(signs)) continue;
+      V d = scaled(g[0], signs[0]);
+      for (int i = 1; i < 4; ++i) d = sum(d, scaled(g[i], signs[i]));
+      return d;
+    }
+    return std::nullopt;
+  }
+
+  // A non-zero direction every plane contains, when the normals do not span
+  // space-time: orthogonal to three independent ones (rank 3), or to an
+  // independent pair, or a single normal, and one or two coordinate axes.
+  std::optional<V> common_line(const std::vector<V>& N) const
+  {
+    std::size_t n = N.size();
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j)
+        for (std::size_t m = j + 1; m < n; ++m) {
+          V r = generalised_cross(N[i], N[j], N[m]);
+          if (k_.is_zero(r)) continue;
+          for (const V& x : N)
+            if (k_.dot_sign(x, r) != CGAL::ZERO) return std::nullopt;   // rank 4
+          return r;
+        }
+    const V* a = &N[0];
+    const V* b = nullptr;
+    for (std::size_t i = 1; i < n && !b; ++i)
+      if (!parallel(N[0], N[i])) b = &N[i];
+    for (int p = 0; p < 4; ++p)
+      for (int q = p + 1; q < 4; ++q) {
+        V ep{FT(0), FT(0), FT(0), FT(0)}, eq = ep;
+        ep[p] = FT(1);
+        eq[q] = FT(1);
+        V r = b ? generalised_cross(*a, *b, ep) : generalised_cross(*a, ep, eq);
+        if (!k_.is_zero(r)) return r;
+      }
+    return std::nullopt;   // only with a tolerance
+  }
+
+  // Rank 4 with more than four planes: every cell has an extreme ray on
+  // three independent planes; around each such ray r (both ways) the cells
+  // of the planes containing r are those of the 3D case, and r + e d, for
+  // the direction d found there and e small enough that no plane off r
+  // changes sign, leads into the cell from the vertex.
+  template <class Inside>
+  std::optional<V> around_vertex_rays(const std::vector<V>& N, Inside& inside)
+  {
+    std::vector<V> rays;
+    for (std::size_t i = 0; i < N.size(); ++i)
+      for (std::size_t j = i + 1; j < N.size(); ++j)
+        for (std::size_t m = j + 1; m < N.size(); ++m) {
+          V r = generalised_cross(N[i], N[j], N[m]);
+          if (!k_.is_zero(r)) add_both_ways(rays, r);
+        }
+    std::vector<int> signs(N.size());
+    for (const V& r : rays) {
+      std::vector<V> on;
+      std::vector<std::size_t> which;
+      std::vector<char> on_r(N.size(), 0);
+      for (std::size_t t = 0; t < N.size(); ++t) {
+        int s = static_cast<int>(k_.dot_sign(N[t], r));
+        signs[t] = s;
+        if (s == 0) { on.push_back(N[t]); which.push_back(t); on_r[t] = 1; }
+      }
+      auto inside_here = [&](const std::vector<int>& sub) {
+        for (std::size_t t = 0; t < which.size(); ++t) signs[which[t]] = sub[t];
+        return inside(signs);
+      };
+      std::optional<V> d = find_inside(r, on, inside_here);   // counts its own cells
+      if (d) return sum(r, scaled_by(*d, epsilon(r, *d, N, on_r)));
+    }
+    return std::nullopt;
   }
 
   V scaled_by(const V& v, const FT& e) const { return {v[0] * e, v[1] * e, v[2] * e, v[3] * e}; }

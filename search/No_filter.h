@@ -44,7 +44,7 @@
 
 #include "geometry/Box.h"
 #include "geometry/Hyperplane4.h"
-#include "model/Formula.h"
+#include "model/Pair_formula.h"
 #include "search/Search_goal.h"
 #include <array>
 #include <cstddef>
@@ -70,7 +70,7 @@ struct No_filter {
   const std::array<std::size_t, 3>* replay_line() const { return nullptr; }
   void replayed(bool) {}
   template <class G, class FT>
-  void test_line(G& g, const Formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<FT>& goal)
+  void test_line(G& g, const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<FT>& goal)
   {
     g.test_line(f, i, j, m, goal);
   }

@@ -24,7 +24,12 @@ public:
   // of passes (§5, footnote 7), and stopping early only costs pruning.
   static constexpr int max_passes = 16;
 
-  explicit S_bounds(const K& k) : k_(k) {}
+  // closed: for a pair under closed semantics (search/Semantics.h), where
+  // bounds that only touch still meet (a box without interior is kept).
+  // An object's own bounds are settled without it: a node whose bound has
+  // no interior is a null regularised set in either semantics, since both
+  // take the solids as regularised sets.
+  explicit S_bounds(const K& k, bool closed = false) : k_(k), closed_(closed) {}
 
   // Leaves start at their primitive's box, branches at Omega (§4.3.1).
   Bounds initial(const Csg_model<FT>& m) const
@@ -108,11 +113,16 @@ public:
     return !A.box->empty && !B.box->empty;
   }
 
-  // A box with no interior is the empty bound (see has_no_interior).
-  Box3 normalised(const Box3& b) const { return has_no_interior(k_, b) ? Box3::nothing() : b; }
+  // A box with no interior is the empty bound (see has_no_interior); closed,
+  // only an empty one.
+  Box3 normalised(const Box3& b) const
+  {
+    return (closed_ ? is_empty_box(k_, b) : has_no_interior(k_, b)) ? Box3::nothing() : b;
+  }
 
 private:
   const K& k_;
+  bool closed_;
 
   struct Side {   // [lo, hi] of one axis in world coordinates at t = 0
     FT lo, hi;
@@ -140,16 +150,19 @@ private:
     bool has_low = b.has_lo && a.has_hi, has_high = b.has_hi && a.has_lo;
     FT low = has_low ? b.lo - a.hi : FT(0), high = has_high ? b.hi - a.lo : FT(0);
     CGAL::Sign s = k_.sign(w);
+    // Regularised, the span must keep an interior (th > tl); closed, a point
+    // (a touch at one instant) is enough.
+    auto apart = [&](CGAL::Sign gap) { return closed_ ? gap == CGAL::NEGATIVE : gap != CGAL::POSITIVE; };
     if (s == CGAL::ZERO) {
       // Same velocity: the overlap along q is the same at every time.
-      if (has_low && k_.sign(low) != CGAL::NEGATIVE) return false;
-      if (has_high && k_.sign(high) != CGAL::POSITIVE) return false;
-      return !(has_low && has_high && k_.compare(high, low) != CGAL::POSITIVE);
+      if (has_low && apart(CGAL::opposite(k_.sign(low)))) return false;
+      if (has_high && apart(k_.sign(high))) return false;
+      return !(has_low && has_high && apart(k_.compare(high, low)));
     }
     if (s == CGAL::NEGATIVE) std::swap(low, high), std::swap(has_low, has_high);
     if (has_low) tl = Number_ops<FT>::upper(tl, low / w);
     if (has_high) th = Number_ops<FT>::lower(th, high / w);
-    return k_.compare(th, tl) == CGAL::POSITIVE;
+    return !apart(k_.compare(th, tl));
   }
 
   // beta <- beta meet s; true when it moved by a grid step (Box.h).

@@ -1,22 +1,29 @@
 // What the division and generate-and-test stages look for: any point inside
 // the collision region (stop at the first), or the earliest one (§5: examine
 // the earliest regions first and stop only when no earlier point can have
-// been missed).
+// been missed); in the semantics asked for (search/Semantics.h).
 #ifndef CLASH4D_SEARCH_SEARCH_GOAL_H
 #define CLASH4D_SEARCH_SEARCH_GOAL_H
 
 #include "geometry/kernel_ft4.h"
+#include "search/Semantics.h"
 
 namespace clash4d {
 
 template <class FT>
 struct Search_goal {
   bool earliest = false;
+  Semantics semantics = Semantics::regularised;
   bool found = false;
   bool improved = false;        // set whenever a better point is recorded
   // A point of an open cell inside the formula: on none of the formula's
   // planes or the region's faces (the witness is made from it).
+  // Closed semantics: a point of both closed objects instead (it may lie on
+  // their planes), with a direction into a cell inside A around it and one
+  // into a cell inside B (zero when the point lies on no plane of the
+  // object's formula there).
   Vector4<FT> inside{};
+  Vector4<FT> toward_a{}, toward_b{};
   // Earliest mode: the least time seen so far over the closure of the
   // collision region (regularised-semantics item 5: a vertex of the
   // arrangement), and the point there.
@@ -40,6 +47,8 @@ struct Search_goal {
     return !found || (earliest && k.less(t_from, t_star));
   }
 
+  bool closed() const { return semantics == Semantics::closed; }
+
   template <class K>
   void record(const K& k, const Vector4<FT>& in, const Vector4<FT>& lowest)
   {
@@ -48,6 +57,20 @@ struct Search_goal {
     inside = in;
     t_star = lowest[3];
     contact = lowest;
+  }
+
+  // Closed semantics: the point p is in both closed objects; a and b lead
+  // into a cell of each (regularised-semantics item 5: the least time of the
+  // touching set is at such a point, a vertex).
+  template <class K>
+  void record_touch(const K& k, const Vector4<FT>& p, const Vector4<FT>& a, const Vector4<FT>& b)
+  {
+    if (found && !k.less(p[3], t_star)) return;
+    found = improved = true;
+    inside = contact = p;
+    t_star = p[3];
+    toward_a = a;
+    toward_b = b;
   }
 };
 

@@ -22,7 +22,8 @@ public:
   using Box4 = Box<FT, 4>;
   using Moving = Moving_object<FT>;
 
-  Span_region(const K& k, Check_stats& stats) : k_(k), sb_(k), stats_(stats) {}
+  // closed: the pair under closed semantics (S_bounds' closed).
+  Span_region(const K& k, Check_stats& stats, bool closed = false) : k_(k), sb_(k, closed), stats_(stats) {}
 
   // §4.3.2: narrows A's and B's bounds and [tl, th]; false when the pair
   // cannot meet on the sub-span. The passes stop when no bound moved by a

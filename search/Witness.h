@@ -25,20 +25,73 @@ public:
   // p, found in the frame x' = x - shear t on the sub-span [lo, hi].
   V4 make(V4 p, const Vector3<FT>& shear, const Moving& A, const Moving& B, const FT& lo, const FT& hi) const
   {
-    for (int q = 0; q < 3; ++q) p[q] += shear[q] * p[3];
-    std::vector<H> world;
-    for (const Moving* m : {&A, &B})
-      for (const auto& prim : m->object->csg.primitives)
-        for (const H& h : Extrusion<K>::primitive_planes(prim, m->v, m->o)) world.push_back(h);
-    world.push_back(time_at_least(lo));
-    world.push_back(time_at_most(hi));
-    std::vector<FT> values = values_at(p, world);
-    if (make_generic(p, world, values)) values = values_at(p, world);
-    return snap(p, world, values);
+    to_world(p, shear);
+    return generic_snapped(p, world_planes(A, B, lo, hi), 4);
+  }
+
+  // Earliest (regularised): a generic point strictly inside both objects
+  // with the contact point c in the closure of its cell, taken on the open
+  // segment from c to the point `in` found inside (the cell is convex and c
+  // in its closure), within a step that crosses no plane not through c.
+  V4 near(V4 c, V4 in, const Vector3<FT>& shear, const Moving& A, const Moving& B, const FT& lo, const FT& hi) const
+  {
+    to_world(c, shear);
+    to_world(in, shear);
+    std::vector<H> world = world_planes(A, B, lo, hi);
+    V4 d{in[0] - c[0], in[1] - c[1], in[2] - c[2], in[3] - c[3]};
+    V4 p = point_along(c, safe_step(d, world, values_at(c, world)), d);
+    return generic_snapped(p, world, 4);
+  }
+
+  // Closed semantics: a point strictly inside object M, on none of its
+  // planes, at p's time, with p in the closure of its cell; d leads from p
+  // into a cell inside M (frame of the search). M's planes all contain its
+  // motion (v, 1), so d less d_t (v, 1) leads into the same cell at p's
+  // time: the point stays in the sub-span even when p is at its end.
+  V4 near_in_space(V4 p, V4 d, const Vector3<FT>& shear, const Moving& M) const
+  {
+    to_world(p, shear);
+    to_world(d, shear);
+    for (int q = 0; q < 3; ++q) d[q] -= d[3] * M.v[q];
+    d[3] = FT(0);
+    std::vector<H> own = object_planes(M);
+    if (!k_.is_zero(d)) p = point_along(p, safe_step(d, own, values_at(p, own)), d);
+    return generic_snapped(p, own, 3);
   }
 
 private:
   const K& k_;
+
+  static void to_world(V4& p, const Vector3<FT>& shear)
+  {
+    for (int q = 0; q < 3; ++q) p[q] += shear[q] * p[3];
+  }
+
+  static std::vector<H> object_planes(const Moving& m)
+  {
+    std::vector<H> planes;
+    for (const auto& prim : m.object->csg.primitives)
+      for (const H& h : Extrusion<K>::primitive_planes(prim, m.v, m.o)) planes.push_back(h);
+    return planes;
+  }
+
+  static std::vector<H> world_planes(const Moving& A, const Moving& B, const FT& lo, const FT& hi)
+  {
+    std::vector<H> world = object_planes(A), more = object_planes(B);
+    world.insert(world.end(), more.begin(), more.end());
+    world.push_back(time_at_least(lo));
+    world.push_back(time_at_most(hi));
+    return world;
+  }
+
+  // p moved off every plane through it, then snapped; the first `dims`
+  // coordinates move (3: the time stays).
+  V4 generic_snapped(V4 p, const std::vector<H>& planes, int dims) const
+  {
+    std::vector<FT> values = values_at(p, planes);
+    if (make_generic(p, planes, values, dims)) values = values_at(p, planes);
+    return snap(p, planes, values, dims);
+  }
 
   static std::vector<FT> values_at(const V4& p, const std::vector<H>& planes)
   {
@@ -65,16 +118,18 @@ private:
   }
 
   // Steps p off the planes through it; true when it moved.
-  bool make_generic(V4& p, const std::vector<H>& planes, const std::vector<FT>& values) const
+  bool make_generic(V4& p, const std::vector<H>& planes, const std::vector<FT>& values, int dims) const
   {
     std::vector<const H*> through;
     for (std::size_t i = 0; i < planes.size(); ++i)
       if (k_.sign(values[i]) == CGAL::ZERO) through.push_back(&planes[i]);
     if (through.empty()) return false;
     // d = (1, j, j^2, j^3) is orthogonal to a given normal for at most three
-    // values of j, so some j <= 3 * |through| + 1 avoids all of them.
+    // values of j, so some j <= 3 * |through| + 1 avoids all of them (with
+    // dims 3, d = (1, j, j^2, 0) and a normal whose space part is not zero,
+    // as every object plane's is).
     for (int j = 1;; ++j) {
-      V4 d{FT(1), FT(j), FT(j * j), FT(j * j * j)};
+      V4 d{FT(1), FT(j), FT(j * j), dims == 4 ? FT(j * j * j) : FT(0)};
       bool ok = true;
       for (const H* h : through) ok = ok && k_.dot_sign(h->n, d) != CGAL::ZERO;
       if (ok) {
@@ -96,7 +151,7 @@ private:
   // bits is taken for 13/16 of the room: the search makes distances that
   // are powers of two (grid faces, halved steps), and an enclosure of an
   // exact power of two could not say which side of it the room is on.
-  V4 snap(const V4& p, const std::vector<H>& planes, const std::vector<FT>& values) const
+  V4 snap(const V4& p, const std::vector<H>& planes, const std::vector<FT>& values, int dims) const
   {
     FT least = Number_ops<FT>::magnitude(values[0]), widest = Number_ops<FT>::magnitude(planes[0].n[0]);
     for (std::size_t i = 0; i < planes.size(); ++i) {
@@ -106,8 +161,8 @@ private:
     FT room = FT(13) * least / (FT(64) * widest);
     if (k_.sign(room) != CGAL::POSITIVE) return p;   // only with a tolerance: not generic
     int bits = std::max(0, k_.grid_exponent(room));
-    V4 out;
-    for (int q = 0; q < 4; ++q) out[q] = k_.round_to_grid(p[q], bits);
+    V4 out = p;
+    for (int q = 0; q < dims; ++q) out[q] = k_.round_to_grid(p[q], bits);
     return out;
   }
 };
