@@ -44,14 +44,24 @@ std::uint64_t env_number(const char* name, std::uint64_t fallback)
 std::string describe(const Check_answer& a)
 {
   std::ostringstream out;
-  out << (a.collide ? "collide" : "no collision") << " earliest_pair " << a.earliest_pair;
+  out << semantics_name(a.semantics) << ": " << (a.collide ? "collide" : "no collision") << " earliest_pair "
+      << a.earliest_pair;
   for (const auto& p : a.pairs) {
     out << "\n  " << p.a << "/" << p.b << " witness";
     for (const auto& x : p.witness) out << " " << x;
     out << (p.witness_verified ? " verified" : " UNVERIFIED");
+    if (a.semantics == Semantics::closed)
+      for (const auto& cell : p.witness_cells) {
+        out << " inside";
+        for (const auto& x : cell) out << " " << x;
+      }
     if (p.earliest) {
       out << " t* " << p.t_star << (p.at_start ? " (at start)" : "") << " contact";
       for (const auto& x : p.contact) out << " " << x;
+      for (const auto& cell : p.contact_cells) {
+        out << " inside";
+        for (const auto& x : cell) out << " " << x;
+      }
     }
   }
   return out.str();
@@ -64,6 +74,7 @@ Check_answer same_answers(const Scene& scene, const Check_options& o, const std:
   Check_answer filtered = check_exact(scene, o), rational = check_rational(scene, o);
   std::string f = describe(filtered), r = describe(rational);
   BOOST_TEST(f == r, label << (o.earliest ? " --earliest" : "") << (o.all_pairs ? " --all-pairs" : "")
+                           << " --semantics " << semantics_name(o.semantics)
                            << "\nfiltered: " << f << "\nrational: " << r);
   BOOST_TEST(filtered.number == "exact");
   BOOST_TEST(rational.number == "rational");
@@ -104,13 +115,16 @@ std::vector<std::string> fixture_scenes()
 BOOST_DATA_TEST_CASE(fixture_answers_match_rational, data::make(fixture_scenes()), entry)
 {
   Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/" + entry);
-  Check_options o;
-  same_answers(scene, o, entry);
-  o.all_pairs = true;
-  same_answers(scene, o, entry);
-  o.all_pairs = false;
-  o.earliest = true;
-  same_answers(scene, o, entry);
+  for (Semantics s : {Semantics::regularised, Semantics::closed}) {
+    Check_options o;
+    o.semantics = s;
+    same_answers(scene, o, entry);
+    o.all_pairs = true;
+    same_answers(scene, o, entry);
+    o.all_pairs = false;
+    o.earliest = true;
+    same_answers(scene, o, entry);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
@@ -146,6 +160,33 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
   BOOST_TEST(searched > 0u);
 }
 
+// Closed semantics on the same coarse-grid scenes: the filtered run decides
+// "apart" in intervals and a touch through a rational replay of its trail
+// (a touching point is any rational, so intervals never make it).
+BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational_closed)
+{
+  std::uint64_t seed = env_number("CLASH4D_SEED", 20261122ull) + 1, cases = env_number("CLASH4D_FILTER_CASES", 1000) / 2;
+  BOOST_TEST_MESSAGE("filtered vs rational, closed semantics: seed " << seed << ", " << cases << " cases");
+  std::mt19937_64 rng(seed);
+  std::size_t by_intervals = 0, collide = 0, replayed = 0;
+  for (std::uint64_t i = 0; i < cases; ++i) {
+    Random_scene rs = random_scene_with_text(rng);
+    Check_options o;
+    o.semantics = Semantics::closed;
+    o.all_pairs = i % 3 == 1;
+    o.earliest = i % 3 == 2;
+    Check_answer a = same_answers(rs.scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) + ": " + rs.json);
+    by_intervals += decided_by_intervals(a);
+    collide += a.collide;
+    replayed += a.stats.exact_witness_replays;
+  }
+  BOOST_TEST_MESSAGE(by_intervals << " of " << cases << " decided by intervals alone, " << collide << " touch or collide, "
+                                  << replayed << " touching points replayed from the interval run's trail");
+  BOOST_TEST(by_intervals > cases / 5);
+  BOOST_TEST(collide > cases / 5);
+  BOOST_TEST(replayed > collide / 4);
+}
+
 BOOST_AUTO_TEST_CASE(contact_families_match_rational)
 {
   std::uint64_t seed = env_number("CLASH4D_SEED", 20261122ull), cases = env_number("CLASH4D_FILTER_CASES", 1000);
@@ -156,6 +197,7 @@ BOOST_AUTO_TEST_CASE(contact_families_match_rational)
     Scene scene = read_scene(read_json_text(c.json));
     Check_options o;
     o.earliest = i % 2 == 1;
+    o.semantics = i % 4 >= 2 ? Semantics::closed : Semantics::regularised;
     Check_answer a = same_answers(scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) + " (" + c.family + "): " + c.json);
     fell_back += exact_decisions(a) > 0;
   }

@@ -480,6 +480,48 @@ inline bool oracle_earliest(const Scene& scene, int a, int b, Q& t_star)
   return found;
 }
 
+// Closed semantics (scene-format.md, "Closed semantics"), independently: each
+// closed object is the union of the closures of its non-empty open DNF
+// terms (never the formula with <=, which would keep a difference's
+// dangling faces); within [tL, tH] the objects meet when the closures of
+// some pair of terms do, and the first contact time is the least t over
+// those meetings (attained: an LP over closed sets).
+struct Closed_verdict {
+  bool meet = false;
+  Q first;                    // the first contact time, when they meet
+  std::size_t lps = 0;
+};
+
+inline Closed_verdict oracle_closed(const Scene& scene, int a, int b)
+{
+  Closed_verdict out;
+  Object_formula A = object_formula(scene, a), B = object_formula(scene, b);
+  for (const auto& span : slabs(scene, *A.motion, *B.motion)) {
+    Linear_motion ma = linear_on(*A.motion, span.first, span.second);
+    Linear_motion mb = linear_on(*B.motion, span.first, span.second);
+    std::vector<std::vector<Row>> terms[2];
+    int side = 0;
+    for (const Object_formula* f : {&A, &B}) {
+      Term_search search(span.first, span.second, false, out.lps);
+      search.run({}, {{&f->formula, side == 0 ? &ma : &mb}}, [&](const std::vector<Row>& rows, const Lp_answer&) {
+        terms[side].push_back(rows);
+        return false;
+      });
+      ++side;
+    }
+    for (const auto& ta : terms[0])
+      for (const auto& tb : terms[1]) {
+        std::vector<Row> rows = ta;
+        rows.insert(rows.end(), tb.begin(), tb.end());
+        if (CGAL::is_negative(max_slack(rows, span.first, span.second, out.lps).slack)) continue;
+        Q t = min_time(rows, span.first, span.second, out.lps);
+        if (!out.meet || t < out.first) out.first = t;
+        out.meet = true;
+      }
+  }
+  return out;
+}
+
 inline bool oracle_collide(const Scene& scene, int a, int b) { return oracle_pair(scene, a, b).collide; }
 
 // Every pair not ignored, in order; the first colliding pair (or -1, -1).
