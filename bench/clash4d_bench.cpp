@@ -1,7 +1,9 @@
 // `check` per-query time on the paper scenes, the contact fixtures and seeded
 // random general-position scenes: exact (the filtered kernel), rational (the
 // pure rational kernel) and double side by side in one run, with the ratios
-// exact/double and rational/double (issue 6's targets: 1.5 general, 3 contact).
+// exact/double and rational/double (issue 6's targets: 1.5 general, 3 contact),
+// in regularised semantics and, beside them, in closed semantics (issue 14:
+// the same targets).
 //   clash4d_bench [--seed N] [--random M] [--min-seconds S] [--family F] [--dump-random DIR]
 // --family paper|contact|grid|random runs one family only; --dump-random writes the random scenes to DIR/random-I.json (to rerun one
 // with `clash4d check --stats`).
@@ -27,14 +29,15 @@ using namespace clash4d;
 namespace {
 
 
-// Geometric means of the two ratios over one family of scenes.
+// Geometric means of the ratios over one family of scenes: regularised
+// exact/double and rational/double, then closed exact/double.
 struct Means {
-  double log_exact = 0, log_rational = 0;
+  double log_exact = 0, log_rational = 0, log_closed = 0;
   int count = 0;
   void print(const char* family) const
   {
-    std::printf("geometric mean over %s: exact/double %.2f, rational/double %.2f\n\n", family,
-                std::exp(log_exact / count), std::exp(log_rational / count));
+    std::printf("geometric mean over %s: exact/double %.2f, rational/double %.2f; closed exact/double %.2f\n\n", family,
+                std::exp(log_exact / count), std::exp(log_rational / count), std::exp(log_closed / count));
   }
 };
 
@@ -44,13 +47,21 @@ void row(const std::string& name, const Scene& scene, double min_seconds, Means&
   Timing e = time_it([&] { return check_exact(scene, opts).collide; }, min_seconds);
   Timing r = time_it([&] { return check_rational(scene, opts).collide; }, min_seconds);
   Timing d = time_it([&] { return check_double(scene, 0, opts).collide; }, min_seconds);
+  Check_options closed = opts;
+  closed.semantics = Semantics::closed;
+  Timing ce = time_it([&] { return check_exact(scene, closed).collide; }, min_seconds);
+  Timing cd = time_it([&] { return check_double(scene, 0, closed).collide; }, min_seconds);
   double ratio = e.seconds_per_query / d.seconds_per_query, rational_ratio = r.seconds_per_query / d.seconds_per_query;
+  double closed_ratio = ce.seconds_per_query / cd.seconds_per_query;
   means.log_exact += std::log(ratio);
   means.log_rational += std::log(rational_ratio);
+  means.log_closed += std::log(closed_ratio);
   ++means.count;
-  std::printf("%-58s %11.1f %11.1f %11.1f %8.2f %8.2f  %s%s%s\n", name.c_str(), e.seconds_per_query * 1e6,
-              r.seconds_per_query * 1e6, d.seconds_per_query * 1e6, ratio, rational_ratio, e.collide ? "collide" : "no",
-              e.collide == d.collide ? "" : " (double differs)", e.collide == r.collide ? "" : " (RATIONAL DIFFERS)");
+  std::printf("%-58s %11.1f %11.1f %11.1f %8.2f %8.2f %11.1f %11.1f %8.2f  %s%s%s | %s%s\n", name.c_str(),
+              e.seconds_per_query * 1e6, r.seconds_per_query * 1e6, d.seconds_per_query * 1e6, ratio, rational_ratio,
+              ce.seconds_per_query * 1e6, cd.seconds_per_query * 1e6, closed_ratio, e.collide ? "collide" : "no",
+              e.collide == d.collide ? "" : " (double differs)", e.collide == r.collide ? "" : " (RATIONAL DIFFERS)",
+              ce.collide ? "meet" : "apart", ce.collide == cd.collide ? "" : " (double differs)");
 }
 
 } // namespace
@@ -73,8 +84,8 @@ int main(int argc, char** argv)
       return 2;
     }
   }
-  std::printf("%-58s %11s %11s %11s %8s %8s  %s\n", "scene", "exact us", "rational us", "double us", "ex/dbl", "rat/dbl",
-              "exact verdict");
+  std::printf("%-58s %11s %11s %11s %8s %8s %11s %11s %8s  %s\n", "scene", "exact us", "rational us", "double us",
+              "ex/dbl", "rat/dbl", "closed ex", "closed dbl", "cl ratio", "exact verdict | closed");
   auto wanted = [&](const std::string& family) { return only.empty() || only == family; };
   for (const char* family : {"paper", "contact"}) {
     if (!wanted(family)) continue;

@@ -205,7 +205,7 @@ void print_comparison(const Comparison& c, std::ostream& out)
 {
   out << c.file << (c.has_disagreement() ? ": DISAGREEMENT\n" : ": all subjects agree\n");
   for (const Subject_row& s : c.subjects) {
-    out << "  " << s.subject << ": ";
+    out << "  " << s.subject << (s.semantics == "closed" && s.subject != "exact closed" ? " [closed]" : "") << ": ";
     if (s.failed()) {
       out << "failed: " << s.error << (s.cause ? "  <- " + *s.cause : "") << "\n";
       continue;
@@ -413,8 +413,14 @@ struct Compare_args {
   std::vector<std::string> files;
   std::vector<double> tolerances;
   bool earliest = false, fcl = false, as_json = false;
+  std::string semantics = "regularised";
   Subject_args subjects;
 };
+
+const char* const own_semantics_help =
+    "the semantics of the toolkit's own float subjects (double, double tol=EPS, exact-rounded): regularised (default) "
+    "or closed; every subject is judged against exact in its own semantics (fcl and bullet: closed; --subject: as its "
+    "hello line says)";
 
 Command add_compare(CLI::App& app, std::ostream& out, std::ostream& err)
 {
@@ -425,10 +431,12 @@ Command add_compare(CLI::App& app, std::ostream& out, std::ostream& err)
   cmd->add_flag("--earliest", a->earliest, "also compare earliest collision times t*");
   cmd->add_flag("--fcl", a->fcl, "also run FCL's continuous collision (the fcl subject) where FCL can express the scene; skipped with the reason elsewhere");
   cmd->add_flag("--json", a->as_json, "print one JSON object per scene in a list");
+  cmd->add_option("--semantics", a->semantics, own_semantics_help)->check(CLI::IsMember({"regularised", "closed"}));
   add_subject_options(*cmd, a->subjects);
   return [cmd, a, &out, &err] {
     if (!cmd->parsed()) return -1;
     Compare_options o;
+    o.semantics = *semantics_from_name(a->semantics);
     if (!a->tolerances.empty()) o.tolerances = a->tolerances;
     o.earliest = a->earliest;
     o.fcl = a->fcl;
@@ -443,6 +451,7 @@ struct Fuzz_args {
   std::uint64_t shard_count = 0;
   std::vector<std::string> merge_dirs;
   std::vector<double> tolerances;
+  std::string semantics = "regularised";
   Subject_args subjects;
 };
 
@@ -460,6 +469,7 @@ Command add_fuzz(CLI::App& app, std::ostream& out, std::ostream& err)
   cmd->add_option("--tolerance", a->tolerances, "double subjects with tolerance EPS (default 1e-9)")->check(CLI::PositiveNumber);
   cmd->add_option("--merge", a->merge_dirs, "join these fuzz output folders into --out instead of running");
   cmd->add_flag("--fcl", a->fuzz.compare.fcl, "also run the fcl subject (FCL's continuous collision) on the cases FCL can express");
+  cmd->add_option("--semantics", a->semantics, own_semantics_help)->check(CLI::IsMember({"regularised", "closed"}));
   add_subject_options(*cmd, a->subjects);
   return [cmd, a, &out, &err] {
     if (!cmd->parsed()) return -1;
@@ -467,6 +477,7 @@ Command add_fuzz(CLI::App& app, std::ostream& out, std::ostream& err)
     if (!a->merge_dirs.empty()) return merge_command(a->merge_dirs, fuzz.out, out, err);
     if (!resolve_shard(a->shard, a->shard_count, std::getenv, fuzz, err)) return CLASH4D_EXIT_INVALID;
     if (!a->tolerances.empty()) fuzz.compare.tolerances = a->tolerances;
+    fuzz.compare.semantics = *semantics_from_name(a->semantics);
     if (!apply_subject_args(a->subjects, fuzz.compare, "fuzz", err)) return CLASH4D_EXIT_INVALID;
     fuzz.progress = isatty(fileno(stderr)) != 0;
     return fuzz_command(fuzz, out, err);
@@ -476,6 +487,7 @@ Command add_fuzz(CLI::App& app, std::ostream& out, std::ostream& err)
 struct Report_args {
   std::vector<std::string> inputs;
   std::string out;
+  std::string semantics = "regularised";
   Subject_args subjects;
 };
 
@@ -485,11 +497,13 @@ Command add_report(CLI::App& app, std::ostream& out, std::ostream& err)
   CLI::App* cmd = app.add_subcommand("report", "Compare scenes (files, folders, fuzz outputs) and write DIR/index.html, report.json and junit.xml.");
   cmd->add_option("INPUT", a->inputs, "scene files, folders of scenes, or fuzz output folders")->required();
   cmd->add_option("--out", a->out, "output folder")->required();
+  cmd->add_option("--semantics", a->semantics, own_semantics_help)->check(CLI::IsMember({"regularised", "closed"}));
   add_subject_options(*cmd, a->subjects);
   return [cmd, a, &out, &err] {
     if (!cmd->parsed()) return -1;
     Compare_options o;
     o.earliest = true;
+    o.semantics = *semantics_from_name(a->semantics);
     if (!apply_subject_args(a->subjects, o, "report", err)) return CLASH4D_EXIT_INVALID;
     return report_command(a->inputs, a->out, o, out, err);
   };

@@ -2,6 +2,7 @@
 #include "compare/Bullet_subject.h"
 #include "compare/External_subject.h"
 #include "compare/Fcl_subject.h"
+#include "check/Closed_membership.h"
 #include "model/Point_classifier.h"
 #include "exact/Exact_instantiation.h"
 #include "exact/Rational_kernel.h"
@@ -67,6 +68,14 @@ int object_index(const Scene& s, const std::string& name)
   return -1;
 }
 
+// A witness in the subject's own terms, checked exactly against the true
+// scene: regularised, a generic point strictly inside both objects with
+// tL < t < tH; closed, a point of both closed objects with tL <= t <= tH.
+bool holds(const Scene_model<Rational_kernel>& model, int a, int b, const Vector4<Rational>& w, bool closed)
+{
+  return closed ? is_valid_contact(Rational_kernel(), model, a, b, w) : is_valid_witness(Rational_kernel(), model, a, b, w);
+}
+
 bool witness_valid(const Scene_model<Rational_kernel>& model, const Scene& scene, const Run& r)
 {
   const Pair_answer& p = *r.answer.reported();
@@ -74,19 +83,19 @@ bool witness_valid(const Scene_model<Rational_kernel>& model, const Scene& scene
   if (a < 0 || b < 0) return false;   // an external subject's point inside no pair
   Vector4<Rational> w;
   for (int i = 0; i < 4; ++i) w[i] = value_of(p.witness[i], r.exact_numbers);
-  return is_valid_witness(Rational_kernel(), model, a, b, w);
+  return holds(model, a, b, w, r.semantics == "closed");
 }
 
-// The pair (names) whose objects both hold the point strictly, or none:
-// external subjects give a point, not a pair.
+// The pair (names) whose objects both hold the point (in the subject's
+// semantics), or none: external subjects give a point, not a pair.
 std::array<std::string, 2> pair_holding(const Scene_model<Rational_kernel>& model, const Scene& scene,
-                                        const std::array<std::string, 4>& point)
+                                        const std::array<std::string, 4>& point, bool closed)
 {
   Vector4<Rational> w;
   for (int i = 0; i < 4; ++i) w[i] = parse_number_text(point[i], true).value;
   for (std::size_t a = 0; a < scene.objects.size(); ++a)
     for (std::size_t b = a + 1; b < scene.objects.size(); ++b)
-      if (!scene.ignored(int(a), int(b)) && is_valid_witness(Rational_kernel(), model, int(a), int(b), w))
+      if (!scene.ignored(int(a), int(b)) && holds(model, int(a), int(b), w, closed))
         return {scene.objects[a].name, scene.objects[b].name};
   return {"", ""};
 }
@@ -116,7 +125,7 @@ Run external_run(External_pool& pool, const Scene& scene, const Scene_model<Rati
   Pair_answer p;
   if (a.witness) {
     p.witness = *a.witness;
-    std::array<std::string, 2> names = pair_holding(model, scene, *a.witness);
+    std::array<std::string, 2> names = pair_holding(model, scene, *a.witness, r.semantics == "closed");
     p.a = names[0];
     p.b = names[1];
   }
@@ -132,46 +141,6 @@ void map_numbers(Solid& s, const std::function<Rational(const Rational&)>& f)
 {
   for (auto& q : s.numbers) q = f(q);
   for (auto& c : s.children) map_numbers(c, f);
-}
-
-Rational largest_magnitude(const Solid& s)
-{
-  Rational m(1);
-  for (const auto& q : s.numbers) m = std::max(m, q < 0 ? Rational(-q) : q);
-  for (const auto& c : s.children) m = std::max(m, largest_magnitude(c));
-  return m;
-}
-
-// Does the exact verdict flip when object i is moved by eps along an axis or
-// a diagonal (every direction of {-1, 0, 1}^3), eps = 2^-20 of the scene's
-// scale, or 2^-40 of it? Axes first; the diagonals are needed for edge and
-// vertex contacts such as two blocks sharing only an edge, which no move
-// along a single axis makes overlap; the smaller move for small objects far
-// from the origin, which the larger one carries right past each other.
-bool hinges_on_contact(const Scene& scene, const std::vector<int>& objects, bool exact_collide)
-{
-  Rational scale(1);
-  for (const auto& o : scene.objects) scale = std::max(scale, largest_magnitude(o.shape));
-  // The 26 directions of {-1, 0, 1}^3, axes first.
-  std::vector<std::array<int, 3>> directions;
-  for (int nonzero = 1; nonzero <= 3; ++nonzero)
-    for (int x : {1, 0, -1})
-      for (int y : {1, 0, -1})
-        for (int z : {1, 0, -1})
-          if (std::abs(x) + std::abs(y) + std::abs(z) == nonzero) directions.push_back({x, y, z});
-  for (Rational eps : {scale / Rational(1 << 20), scale / Rational(1 << 20) / Rational(1 << 20)})
-    for (int i : objects)
-      for (const auto& d : directions) {
-        Scene moved = scene;
-        Solid wrap;
-        wrap.kind = Solid::Kind::Translate;
-        wrap.path = moved.objects[i].shape.path;
-        wrap.numbers = {eps * Rational(d[0]), eps * Rational(d[1]), eps * Rational(d[2])};
-        wrap.children.push_back(moved.objects[i].shape);
-        moved.objects[i].shape = wrap;
-        if (check_exact(moved, Check_options()).collide != exact_collide) return true;
-      }
-  return false;
 }
 
 // A subject without points (fcl) leaves them empty: none.
@@ -233,71 +202,88 @@ Scene rounded_scene(const Scene& scene)
 
 namespace {
 
+// The exact answers a comparison holds subjects against, one per semantics
+// (each subject is judged in its own: issue 14), and on the rounded scene
+// when a verdict must be told apart from input rounding.
+struct Reference {
+  const Scene& scene;
+  const Check_options& options;   // earliest as asked; semantics is set per use
+  const Run& regularised;
+  const Run& closed;
+  const Run* rounded;             // the exact-rounded subject, in `rounded_in`
+  Semantics rounded_in;
+  int rounding_differs[2] = {-1, -1};   // per semantics: computed on first need
+
+  const Run& in(const std::string& semantics) const { return semantics == "closed" ? closed : regularised; }
+
+  // Does exact on the scene rounded to doubles give another verdict?
+  bool rounding_changes(const std::string& semantics)
+  {
+    Semantics s = semantics == "closed" ? Semantics::closed : Semantics::regularised;
+    int& known = rounding_differs[static_cast<int>(s)];
+    if (known < 0) {
+      bool differs = true;   // a rounded scene that is invalid or has no double differs
+      if (rounded && rounded_in == s) {
+        differs = !rounded->ok || rounded->answer.collide != in(semantics).answer.collide;
+      } else {
+        try {
+          Check_options o = options;
+          o.semantics = s;
+          differs = check_exact(rounded_scene(scene), o).collide != in(semantics).answer.collide;
+        } catch (const std::exception&) {
+        }
+      }
+      known = differs ? 1 : 0;
+    }
+    return known == 1;
+  }
+  // Touching only: the closed objects meet, their interiors do not.
+  bool touching_only() const { return !regularised.answer.collide && closed.answer.collide; }
+};
+
 // The answer fields of a row that ran: verdict, witness (checked exactly
-// against the true scene), t* and its error against exact's.
-void fill_answer(Subject_row& s, const Run& r, const Run& exact, const Scene& scene,
-                 const Scene_model<Rational_kernel>& model)
+// against the true scene, in the subject's semantics), t* and its error
+// against the exact t* of that semantics.
+void fill_answer(Subject_row& s, const Run& r, const Reference& ref, const Scene_model<Rational_kernel>& model)
 {
   const Check_answer& a = r.answer;
   if (r.ok) s.collide = a.collide;
   const Pair_answer* main = a.reported();
   if (!main) return;
   if (!main->a.empty() || !main->witness[0].empty()) s.witness = Located{{main->a, main->b}, point_of(main->witness), ""};
-  if (s.witness && s.witness->point) s.witness_valid = witness_valid(model, scene, r);
+  if (s.witness && s.witness->point) s.witness_valid = witness_valid(model, ref.scene, r);
   if (!main->earliest) return;
   s.earliest = Located{{main->a, main->b}, point_of(main->contact), main->t_star};
-  const Pair_answer* ref = exact.answer.reported();
-  if (ref && ref->earliest) {
-    Rational e = value_of(main->t_star, r.exact_numbers) - value_of(ref->t_star, true);
+  const Pair_answer* exact = ref.in(r.semantics).answer.reported();
+  if (exact && exact->earliest) {
+    Rational e = value_of(main->t_star, r.exact_numbers) - value_of(exact->t_star, true);
     s.t_error = decimal(e < 0 ? Rational(-e) : e);
   }
 }
 
-// What the classification of one comparison needs, computed once.
-struct Reference {
-  const Scene& scene;
-  const Run& exact;
-  const Run* rounded;
-  bool rounding_differs;
-  int contact = -1;   // the exact verdict flips under a tiny move: computed on first need
-};
-
-// The objects a verdict hinges on: the pairs named by the subject and by
-// exact; every object when neither names one (an external subject's bare "yes").
-std::vector<int> objects_at_stake(const Scene& scene, const Pair_answer* main, const Pair_answer* ref)
-{
-  std::vector<int> pair;
-  for (const Pair_answer* p : {main, ref})
-    if (p && object_index(scene, p->a) >= 0 && object_index(scene, p->b) >= 0)
-      pair = {object_index(scene, p->a), object_index(scene, p->b)};
-  if (pair.empty())
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) pair.push_back(static_cast<int>(i));
-  return pair;
-}
-
-// The cause of a subject's disagreement with exact (empty: none), with the detail.
+// The cause of a subject's disagreement with exact in its own semantics
+// (empty: none), with the detail. A verdict is "contact" exactly when the
+// scene is one of touching only (regularised no, closed yes) and "input
+// rounding" when exact on the rounded scene already gives the subject's
+// verdict's opposite of exact's.
 std::string classify(const Run& r, const Subject_row& s, Reference& ref, std::string& detail)
 {
-  const Run& exact = ref.exact;
-  if (&r == &exact) return "";
+  if (s.reference) return "";
   if (!r.fault.empty()) {
     detail = r.subject + ": " + r.fault + ": " + r.error;
     return r.fault;
   }
   if (!r.ok) return "";
+  const Run& exact = ref.in(r.semantics);
   if (r.answer.collide != exact.answer.collide) {
-    detail = r.subject + " says " + (r.answer.collide ? "collision" : "no collision") + ", exact says " +
-             (exact.answer.collide ? "collision" : "no collision");
-    if (&r == ref.rounded || (ref.rounding_differs && r.reads_doubles)) return "input rounding";
-    // Until the exact pipeline decides the closed question too, a closed
-    // subject's touching answers are classified as anyone's: contact.
-    if (ref.contact < 0)
-      ref.contact = hinges_on_contact(ref.scene, objects_at_stake(ref.scene, r.answer.reported(), exact.answer.reported()),
-                                      exact.answer.collide) ? 1 : 0;
-    return ref.contact ? "contact" : "arithmetic";
+    detail = r.subject + " (" + r.semantics + ") says " + (r.answer.collide ? "collision" : "no collision") +
+             ", exact " + r.semantics + " says " + (exact.answer.collide ? "collision" : "no collision");
+    if (&r == ref.rounded || (r.reads_doubles && ref.rounding_changes(r.semantics))) return "input rounding";
+    return ref.touching_only() ? "contact" : "arithmetic";
   }
   if (s.witness_valid == false) {
-    detail = r.subject + "'s witness is not strictly inside both objects of the true scene";
+    detail = r.subject + "'s witness is not " +
+             (r.semantics == "closed" ? "in both closed objects" : "strictly inside both objects") + " of the true scene";
     return "invalid witness";
   }
   return "";
@@ -309,7 +295,7 @@ Subject_row row_of(const Run& r, Reference& ref, const Scene_model<Rational_kern
   s.subject = r.subject;
   s.semantics = r.semantics;
   s.tolerance = r.tolerance;
-  s.reference = &r == &ref.exact;
+  s.reference = &r == &ref.regularised || &r == &ref.closed;
   s.ok = r.ok;
   s.error = r.error;
   s.seconds = r.seconds;
@@ -317,33 +303,43 @@ Subject_row row_of(const Run& r, Reference& ref, const Scene_model<Rational_kern
     s.skipped = r.skipped;
     return s;
   }
-  fill_answer(s, r, ref.exact, ref.scene, model);
+  fill_answer(s, r, ref, model);
   std::string detail, cause = classify(r, s, ref, detail);
   s.agrees = r.ok && cause.empty();
   if (!cause.empty()) {
     s.cause = cause;
-    list.push_back({r.subject, cause, detail});
+    list.push_back({r.subject, cause, detail, r.semantics});
   }
   return s;
 }
 
+// The exact references (regularised, then closed) and the toolkit's own
+// subjects in the semantics asked for, then the libraries (closed).
 std::vector<Run> builtin_runs(const Scene& scene, const Compare_options& options, const Check_options& co)
 {
   std::vector<Run> runs;
+  Check_options closed = co, own = co;
+  closed.semantics = Semantics::closed;
+  own.semantics = options.semantics;
   runs.push_back(timed("exact", true, [&] { return check_exact(scene, co); }));
-  runs.push_back(timed("double", false, [&] { return check_double(scene, 0, co); }));
+  runs.push_back(timed("exact closed", true, [&] { return check_exact(scene, closed); }));
+  runs.back().semantics = "closed";
+  std::size_t own_from = runs.size();
+  runs.push_back(timed("double", false, [&] { return check_double(scene, 0, own); }));
   for (double tol : options.tolerances) {
-    runs.push_back(timed(tolerance_subject(tol), false, [&] { return check_double(scene, tol, co); }));
+    runs.push_back(timed(tolerance_subject(tol), false, [&] { return check_double(scene, tol, own); }));
     runs.back().tolerance = tol;
   }
   if (options.rounded)
-    runs.push_back(timed("exact-rounded", true, [&] { return check_exact(rounded_scene(scene), co); }));
-  if (options.fcl) runs.push_back(library_run<Fcl_subject>("fcl", scene, co));
+    runs.push_back(timed("exact-rounded", true, [&] { return check_exact(rounded_scene(scene), own); }));
+  for (std::size_t i = own_from; i < runs.size(); ++i) runs[i].semantics = semantics_name(options.semantics);
+  if (options.fcl) runs.push_back(library_run<Fcl_subject>("fcl", scene, closed));
   if (options.bullet) {
-    runs.push_back(library_run<Bullet_subject>("bullet", scene, co));
+    runs.push_back(library_run<Bullet_subject>("bullet", scene, closed));
     runs.back().tolerance = Bullet_subject::tolerance;
   }
-  for (Run& r : runs) r.semantics = builtin_semantics(r.subject);
+  for (Run& r : runs)
+    if (r.subject == "fcl" || r.subject == "bullet") r.semantics = builtin_semantics(r.subject);
   return runs;
 }
 
@@ -354,26 +350,21 @@ Comparison compare_scene(const Scene& scene, const std::string& file, const Comp
   Check_options co;
   co.earliest = options.earliest;
   std::vector<Run> runs = builtin_runs(scene, options, co);
-  if (!runs[0].ok) throw std::runtime_error("the exact subject failed: " + runs[0].error);
+  for (int i : {0, 1})
+    if (!runs[i].ok) throw std::runtime_error("the " + runs[i].subject + " subject failed: " + runs[i].error);
   Scene_model<Rational_kernel> model = Scene_model<Rational_kernel>::build(Rational_kernel(), scene);
   for (const auto& pool : options.externals) runs.push_back(external_run(*pool, scene, model, options.earliest));
 
   auto rounded = std::find_if(runs.begin(), runs.end(), [](const Run& r) { return r.subject == "exact-rounded"; });
-  const Run& exact = runs[0];
-  Reference ref{scene, exact, rounded != runs.end() ? &*rounded : nullptr, false};
-  ref.rounding_differs = ref.rounded && (!ref.rounded->ok || ref.rounded->answer.collide != exact.answer.collide);
+  Reference ref{scene, co, runs[0], runs[1], rounded != runs.end() ? &*rounded : nullptr, options.semantics};
 
   Comparison out;
   out.file = file;
   out.name = scene.name;
   for (const Run& r : runs) out.subjects.push_back(row_of(r, ref, model, out.disagreements));
-  // near_contact: the exact verdict flips under a tiny move (none: not
-  // needed); closed_touch: so, and exact says no collision (the closed
-  // objects meet or nearly meet while the regularised intersection is empty).
-  if (ref.contact >= 0) {
-    out.near_contact = ref.contact == 1;
-    out.closed_touch = ref.contact == 1 && !exact.answer.collide;
-  }
+  // Where the regularised answer is no, the closed one says whether the
+  // objects touch (never null there); where it is yes, they collide.
+  if (!ref.regularised.answer.collide) out.closed_touch = ref.closed.answer.collide;
   return out;
 }
 

@@ -1,41 +1,47 @@
 // The comparer: runs every subject on a scene and holds it against the exact
-// answer, in the spirit of CGAL's Kernel_checker (run two kernels side by
-// side; on mismatch report both answers and the inputs). Subjects:
-//   exact            the reference (rationals);
-//   double           the same pipeline on doubles, plain sign tests;
+// answer in the subject's own semantics (issue 14: a subject is wrong only
+// when it is wrong in its own terms), in the spirit of CGAL's Kernel_checker
+// (run two kernels side by side; on mismatch report both answers and the
+// inputs). Subjects:
+//   exact            the reference, regularised (rationals);
+//   exact closed     the reference in closed semantics (touching counts);
+//   double           the same pipeline on doubles, plain sign tests, in the
+//                    semantics asked for (--semantics, default regularised);
 //   double tol=EPS   the same with |value| <= EPS treated as zero;
 //   exact-rounded    exact arithmetic on the scene with every number rounded
 //                    to the nearest double (separates input rounding from
-//                    arithmetic, regularised-semantics item 8);
+//                    arithmetic, regularised-semantics item 8), likewise;
 //   fcl              optional (--fcl): FCL's continuous collision on the
-//                    scenes it can express (compare/Fcl_subject.h); on the
-//                    others it is skipped with the reason, which is neither
-//                    an agreement nor a disagreement. It gives no witness
-//                    point, so it is never an "invalid witness".
+//                    scenes it can express (compare/Fcl_subject.h), closed
+//                    semantics; on the others it is skipped with the reason,
+//                    which is neither an agreement nor a disagreement. It
+//                    gives no witness point, so it is never an "invalid
+//                    witness".
 //   bullet           optional (--subject bullet): Bullet's continuous convex
-//                    collision, on the same scenes as fcl (compare/Bullet_subject.h).
-//   NAME             each --subject NAME=COMMAND (compare/External_subject.h):
-//                    "unsupported" answers are skipped; its witness point is
-//                    checked against every pair; a crash, time-out or answer
-//                    out of protocol is a fault with that cause.
+//                    collision, closed, on the same scenes as fcl
+//                    (compare/Bullet_subject.h).
+//   NAME             each --subject NAME=COMMAND (compare/External_subject.h),
+//                    in the semantics its hello line declares: "unsupported"
+//                    answers are skipped; its witness point is checked against
+//                    every pair; a crash, time-out or answer out of protocol
+//                    is a fault with that cause.
 // Every disagreement is classified by its cause:
-//   input rounding   exact on the rounded scene already disagrees;
-//   contact          the exact verdict flips when one of the two objects is
-//                    moved by a tiny amount (2^-20 or 2^-40 of the scene's
-//                    scale) along an axis or a diagonal ({-1,0,1}^3: two
-//                    blocks sharing an edge need a diagonal; small objects far
-//                    from the origin the smaller move): the closed objects
-//                    touch or nearly do, so the case hinges on regularisation;
+//   input rounding   exact (in the subject's semantics) on the rounded scene
+//                    already disagrees with exact on the true one;
+//   contact          the scene is one of touching only: exact regularised
+//                    says no collision and exact closed says the closed
+//                    objects meet (regularised-semantics item 6), so the
+//                    verdict hinges on what touching means;
 //   arithmetic       otherwise: the subject's own rounding or tolerance;
-//   invalid witness  verdicts agree but the subject's witness is not strictly
-//                    inside both objects of the true scene (checked exactly).
-// Until the exact pipeline decides the closed question, a closed subject's
-// touching answers are classified like anyone's (contact).
+//   invalid witness  verdicts agree but the subject's witness does not hold
+//                    in the true scene (checked exactly: strictly inside both
+//                    objects, or, closed, in both closed objects).
 #ifndef CLASH4D_COMPARE_COMPARER_H
 #define CLASH4D_COMPARE_COMPARER_H
 
 #include "compare/Comparison.h"
 #include "scene/Scene.h"
+#include "search/Semantics.h"
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +51,9 @@ namespace clash4d {
 class External_pool;
 
 struct Compare_options {
+  // The semantics of the toolkit's own float subjects (double, double tol,
+  // exact-rounded); every subject is judged in its own.
+  Semantics semantics = Semantics::regularised;
   std::vector<double> tolerances{1e-9};   // one "double tol=EPS" subject each
   bool earliest = false;                  // also compare t* (and report its error)
   bool rounded = true;                    // run the exact-rounded subject
@@ -66,8 +75,8 @@ Scene rounded_scene(const Scene& scene);
 // The name of the double subject with tolerance tol ("double tol=1e-09").
 std::string tolerance_subject(double tol);
 
-// The semantics a built-in subject decides in: the toolkit's pipelines the
-// regularised question, FCL the closed one (it counts touching).
+// The semantics a compiled-in library decides in: FCL and Bullet the closed
+// question (they count touching).
 const char* builtin_semantics(const std::string& subject);
 
 } // namespace clash4d

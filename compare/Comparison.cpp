@@ -108,11 +108,13 @@ Subject_row row_from_json(const json& s, const std::string& where)
 
 } // namespace
 
-const Subject_row* Comparison::reference() const
+const Subject_row* Comparison::reference() const { return reference_in("regularised"); }
+
+const Subject_row* Comparison::reference_in(const std::string& semantics) const
 {
   for (const auto& s : subjects)
-    if (s.reference) return &s;
-  return find("exact");
+    if (s.reference && s.semantics == semantics) return &s;
+  return semantics == "regularised" ? find("exact") : nullptr;
 }
 
 const Subject_row* Comparison::find(const std::string& subject) const
@@ -158,9 +160,10 @@ json Comparison::to_json() const
     if (s.tolerance) r["tolerance"] = *s.tolerance;
     rows.push_back(r);
   }
-  for (const Disagreement& d : disagreements) list.push_back({{"subject", d.subject}, {"cause", d.cause}, {"detail", d.detail}});
-  return {{"file", file}, {"name", name}, {"near_contact", optional_json(near_contact)},
-          {"closed_touch", optional_json(closed_touch)}, {"subjects", rows}, {"disagreements", list}};
+  for (const Disagreement& d : disagreements)
+    list.push_back({{"subject", d.subject}, {"semantics", d.semantics}, {"cause", d.cause}, {"detail", d.detail}});
+  return {{"file", file}, {"name", name}, {"closed_touch", optional_json(closed_touch)}, {"subjects", rows},
+          {"disagreements", list}};
 }
 
 Comparison Comparison::from_json(const json& j)
@@ -169,7 +172,6 @@ Comparison Comparison::from_json(const json& j)
   Comparison c;
   c.file = opt_string(j, "file", "comparison").value_or("");
   c.name = opt_string(j, "name", "comparison").value_or("");
-  c.near_contact = opt_bool(j, "near_contact", "comparison");
   c.closed_touch = opt_bool(j, "closed_touch", "comparison");
   if (const json* rows = member(j, "subjects")) {
     if (!rows->is_array()) wrong("subjects", "a list");
@@ -183,7 +185,8 @@ Comparison Comparison::from_json(const json& j)
       const json& d = (*list)[i];
       if (!d.is_object()) wrong(where, "an object");
       c.disagreements.push_back({opt_string(d, "subject", where).value_or(""), opt_string(d, "cause", where).value_or(""),
-                                 opt_string(d, "detail", where).value_or("")});
+                                 opt_string(d, "detail", where).value_or(""),
+                                 opt_string(d, "semantics", where).value_or("regularised")});
     }
   }
   return c;

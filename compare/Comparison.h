@@ -46,16 +46,20 @@ struct Subject_row {
 
 struct Disagreement {
   std::string subject, cause, detail;
+  std::string semantics = "regularised";   // the question the subject was judged in
 };
 
 struct Comparison {
   std::string file, name;
-  std::optional<bool> near_contact;   // the exact verdict flips under a tiny move (none: not needed)
-  std::optional<bool> closed_touch;   // near_contact and exact says no collision
+  // Where exact (regularised) says no collision: whether the closed objects
+  // meet all the same (exact closed); none where exact says collision.
+  std::optional<bool> closed_touch;
   std::vector<Subject_row> subjects;
   std::vector<Disagreement> disagreements;
 
+  // The exact answer (regularised), and the exact answer in a semantics.
   const Subject_row* reference() const;
+  const Subject_row* reference_in(const std::string& semantics) const;
   const Subject_row* find(const std::string& subject) const;
   // "subject: cause" of each disagreement or fault, in order.
   std::vector<std::string> disagreement_keys() const;

@@ -27,6 +27,7 @@ json campaign_json(const Fuzz_options& o)
 {
   json c = {{"format", "clash4d-fuzz/1"}, {"seed", o.seed}, {"cases", o.cases}, {"tolerances", o.compare.tolerances}};
   if (o.compare.fcl) c["fcl"] = true;   // only when on, so folders of campaigns without it still match
+  if (o.compare.semantics == Semantics::closed) c["semantics"] = "closed";
   if (o.compare.bullet) c["bullet"] = true;
   if (!o.compare.externals.empty()) {
     c["subjects"] = json::array();
@@ -44,7 +45,7 @@ void prepare(const Fuzz_options& o)
   json want = campaign_json(o);
   if (fs::exists(path)) {
     if (read_json_document(path) != want)
-      throw std::runtime_error(path + ": this folder holds another campaign (seed, cases, tolerances, --fcl or --subject differ)");
+      throw std::runtime_error(path + ": this folder holds another campaign (seed, cases, tolerances, --semantics, --fcl or --subject differ)");
   } else {
     write_file_atomically(path, want.dump(2) + "\n");
   }
@@ -63,7 +64,7 @@ std::string finding_path(const Fuzz_options& o, std::uint64_t index, const char*
 json disagreement_meta(const Comparison& c, const Disagreement& d)
 {
   const Subject_row* row = c.find(d.subject);
-  json m = {{"subject", d.subject}, {"semantics", row ? row->semantics : "regularised"}, {"cause", d.cause}, {"detail", d.detail}};
+  json m = {{"subject", d.subject}, {"semantics", d.semantics}, {"cause", d.cause}, {"detail", d.detail}};
   if (row && row->tolerance) m["tolerance"] = *row->tolerance;
   return m;
 }

@@ -4,7 +4,8 @@
 //
 // Layout of DIR:
 //   campaign.json                 seed, cases, tolerances (and "fcl": true with
-//                                 --fcl): a rerun must match
+//                                 --fcl, "semantics": "closed" with --semantics
+//                                 closed): a rerun must match
 //   progress-K-of-S.json          the next case index of shard K of S
 //   findings/case-I.json          the scene of case I; under its `meta` key the
 //                                 family, seed, index, disagreements (subject,

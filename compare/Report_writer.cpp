@@ -668,12 +668,17 @@ std::string facts_html(const Report_case& rc)
   const Subject_row* ref = c.reference();
   std::optional<Located> none;
   const std::optional<Located>& earliest = ref ? ref->earliest : none;
-  std::string out = "<dl>\n<dt>exact verdict</dt><dd><b>" + verdict_text(ref) + "</b></dd>\n";
+  const Subject_row* closed = c.reference_in("closed");
+  std::string out = "<dl>\n<dt>exact verdict (regularised)</dt><dd><b>" + verdict_text(ref) + "</b></dd>\n";
+  out += "<dt>exact verdict (closed: touching counts)</dt><dd><b>" + verdict_text(closed) + "</b>" +
+         (c.closed_touch == true ? " (touching only: the interiors do not meet)" : "") + "</dd>\n";
   out += "<dt>exact witness</dt><dd class=\"mono\">" + escape(located_text(ref ? ref->witness : none)) + "</dd>\n";
   out += "<dt>exact earliest</dt><dd class=\"mono\">" +
          (earliest ? "t* = " + escape(earliest->t) + ", " + escape(located_text(earliest)) : std::string(dash)) + "</dd>\n";
   out += "<dt>time span</dt><dd class=\"mono\">[" + to_string(rc.scene.t_lo) + ", " + to_string(rc.scene.t_hi) + "]</dd>\n";
-  out += "<dt>closed objects touch</dt><dd>" + yes_no(c.closed_touch, "not determined") + "</dd>\n";
+  if (closed && closed->earliest)
+    out += "<dt>exact first contact (closed)</dt><dd class=\"mono\">t* = " + escape(closed->earliest->t) + ", " +
+           escape(located_text(closed->earliest)) + "</dd>\n";
   return out + "</dl>\n";
 }
 
@@ -705,7 +710,8 @@ std::string page_html(const std::vector<Report_case>& cases, const json& summary
   std::ostringstream out;
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>clash4d verification report</title>\n"
       << "<style>" << page_style << "</style>\n</head>\n<body>\n<h1>clash4d verification report</h1>\n"
-      << "<p>Every subject's answer held against the exact one (regularised semantics: touching is not a collision). "
+      << "<p>Every subject's answer held against the exact one in the subject's own semantics (regularised: touching "
+      << "is not a collision; closed: touching counts). "
       << "Diagrams: each object's extent along one axis over time; doubles, for presentation only.</p>\n"
       << summary_html(summary) << index_html(cases, order);
   for (std::size_t i : order) out << case_html(cases[i], i);

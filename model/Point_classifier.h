@@ -19,37 +19,50 @@ inline Truth truth_and(Truth a, Truth b)
 }
 inline Truth truth_or(Truth a, Truth b) { return truth_not(truth_and(truth_not(a), truth_not(b))); }
 
-template <class K>
-Truth classify_point(const K& k, const Csg_model<typename K::FT>& m, const Vector3<typename K::FT>& y, int node = 0)
+// The CSG tree's truth at y when plane j of primitive p has sign side(p, j)
+// there (Kleene: a zero sign is Unknown). classify_point below takes the
+// signs from the point; a closed-membership test prescribes them for the
+// planes through the point, cell by cell.
+template <class FT, class Side>
+Truth classify_with(const Csg_model<FT>& m, Side side, int node = 0)
 {
-  using FT = typename K::FT;
   const Csg_node& n = m.nodes[node];
   switch (n.op) {
     case Csg_node::Op::Primitive: {
       Truth r = Truth::True;
-      for (const auto& p : m.primitives[n.primitive].planes) {
-        CGAL::Sign s = k.side(Vector3<FT>{p[0], p[1], p[2]}, p[3], y);
+      for (std::size_t j = 0; j < m.primitives[n.primitive].planes.size(); ++j) {
+        CGAL::Sign s = side(n.primitive, j);
         r = truth_and(r, s == CGAL::NEGATIVE ? Truth::True : s == CGAL::POSITIVE ? Truth::False : Truth::Unknown);
       }
       return r;
     }
     case Csg_node::Op::Union: {
       Truth r = Truth::False;
-      for (int c : n.children) r = truth_or(r, classify_point(k, m, y, c));
+      for (int c : n.children) r = truth_or(r, classify_with(m, side, c));
       return r;
     }
     case Csg_node::Op::Intersection: {
       Truth r = Truth::True;
-      for (int c : n.children) r = truth_and(r, classify_point(k, m, y, c));
+      for (int c : n.children) r = truth_and(r, classify_with(m, side, c));
       return r;
     }
     case Csg_node::Op::Difference: {
-      Truth r = classify_point(k, m, y, n.children[0]);
-      for (std::size_t c = 1; c < n.children.size(); ++c) r = truth_and(r, truth_not(classify_point(k, m, y, n.children[c])));
+      Truth r = classify_with(m, side, n.children[0]);
+      for (std::size_t c = 1; c < n.children.size(); ++c) r = truth_and(r, truth_not(classify_with(m, side, n.children[c])));
       return r;
     }
   }
   return Truth::Unknown;
+}
+
+template <class K>
+Truth classify_point(const K& k, const Csg_model<typename K::FT>& m, const Vector3<typename K::FT>& y)
+{
+  using FT = typename K::FT;
+  return classify_with(m, [&](int p, std::size_t j) {
+    const Plane3<FT>& pl = m.primitives[p].planes[j];
+    return k.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], y);
+  });
 }
 
 // g is strictly inside object i at its time, on none of its planes.

@@ -8,6 +8,7 @@
 #define CLASH4D_SEARCH_SEMANTICS_H
 
 #include <optional>
+#include <ostream>
 #include <string>
 
 namespace clash4d {
@@ -15,6 +16,8 @@ namespace clash4d {
 enum class Semantics { regularised, closed };
 
 inline const char* semantics_name(Semantics s) { return s == Semantics::closed ? "closed" : "regularised"; }
+
+inline std::ostream& operator<<(std::ostream& out, Semantics s) { return out << semantics_name(s); }
 
 inline std::optional<Semantics> semantics_from_name(const std::string& name)
 {

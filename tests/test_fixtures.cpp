@@ -37,6 +37,32 @@ static json expectation(const std::string& entry)
   return manifest(entry.substr(0, slash))[entry.substr(slash + 1)];
 }
 
+// Closed semantics (issue 14): the hand-derived verdict and first contact
+// time, on the filtered exact and the rational kernels; every closed witness
+// and contact is verified against the scene by the pipeline itself.
+static void check_closed(const std::string& entry, const Scene& scene, const json& expected)
+{
+  for (bool rational : {false, true}) {
+    Check_options opts;
+    opts.semantics = Semantics::closed;
+    opts.all_pairs = true;
+    opts.earliest = expected.contains("first_contact");
+    Check_answer a = rational ? check_rational(scene, opts) : check_exact(scene, opts);
+    std::string label = entry + (rational ? " (rational)" : " (exact)") + ": " + expected["why"].get<std::string>();
+    BOOST_TEST(a.collide == expected["collide"].get<bool>(), label);
+    BOOST_TEST(a.semantics == Semantics::closed);
+    for (const auto& p : a.pairs) BOOST_TEST(p.witness_verified, label);
+    if (opts.earliest && a.earliest_pair >= 0) {
+      const Pair_answer& p = a.pairs[a.earliest_pair];
+      BOOST_TEST(p.t_star == expected["first_contact"].get<std::string>(), label << ": first contact " << p.t_star);
+      BOOST_TEST(p.contact[3] == p.t_star);
+    }
+  }
+  Check_options opts;
+  opts.semantics = Semantics::closed;
+  BOOST_CHECK_NO_THROW(check_double(scene, 0, opts));
+}
+
 static void check_scene(const std::string& entry)
 {
   json expected = expectation(entry);
@@ -59,6 +85,7 @@ static void check_scene(const std::string& entry)
   // The double instantiation runs the same code; its verdict may differ on
   // contact (that is what the comparer measures), but it must not fail.
   BOOST_CHECK_NO_THROW(check_double(scene, 0, opts));
+  if (expected.contains("closed")) check_closed(entry, scene, expected["closed"]);
 }
 
 BOOST_DATA_TEST_CASE(contact_fixture_verdicts, data::make(entries("contact")), entry) { check_scene(entry); }
