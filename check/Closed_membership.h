@@ -21,8 +21,7 @@ bool in_closed_object(const K& k, const Scene_model<K>& model, int i, const Vect
 {
   using FT = typename K::FT;
   const Object_model<FT>& o = model.objects[i];
-  Vector3<FT> d = o.motion.displacement(k, p[3]);
-  Vector3<FT> y{p[0] - d[0], p[1] - d[1], p[2] - d[2]};
+  Vector3<FT> y = solid_point(k, o, p);
   Truth plain = classify_point(k, o.csg, y);
   if (plain != Truth::Unknown) return plain == Truth::True;
   // The planes through y, and their normals (n, 0).

@@ -65,14 +65,21 @@ Truth classify_point(const K& k, const Csg_model<typename K::FT>& m, const Vecto
   });
 }
 
+// The point of object o's solid that is at p = (x, t) at time t: x - D(t).
+template <class K>
+Vector3<typename K::FT> solid_point(const K& k, const Object_model<typename K::FT>& o, const Vector4<typename K::FT>& p)
+{
+  Vector3<typename K::FT> d = o.motion.displacement(k, p[3]);
+  return {p[0] - d[0], p[1] - d[1], p[2] - d[2]};
+}
+
 // g is strictly inside object i at its time, on none of its planes.
 template <class K>
 bool is_generic_inside(const K& k, const Scene_model<K>& model, int i, const Vector4<typename K::FT>& g)
 {
   using FT = typename K::FT;
   const Object_model<FT>& o = model.objects[i];
-  Vector3<FT> d = o.motion.displacement(k, g[3]);
-  Vector3<FT> y{g[0] - d[0], g[1] - d[1], g[2] - d[2]};
+  Vector3<FT> y = solid_point(k, o, g);
   if (classify_point(k, o.csg, y) != Truth::True) return false;
   for (const auto& prim : o.csg.primitives)
     for (const auto& pl : prim.planes)
@@ -102,8 +109,7 @@ bool is_in_closure_of(const K& k, const Scene_model<K>& model, int i, const Vect
 {
   using FT = typename K::FT;
   const Object_model<FT>& o = model.objects[i];
-  Vector3<FT> dp = o.motion.displacement(k, p[3]), dg = o.motion.displacement(k, g[3]);
-  Vector3<FT> yp{p[0] - dp[0], p[1] - dp[1], p[2] - dp[2]}, yg{g[0] - dg[0], g[1] - dg[1], g[2] - dg[2]};
+  Vector3<FT> yp = solid_point(k, o, p), yg = solid_point(k, o, g);
   for (const auto& prim : o.csg.primitives)
     for (const auto& pl : prim.planes) {
       Vector3<FT> n{pl[0], pl[1], pl[2]};

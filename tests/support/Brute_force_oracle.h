@@ -385,59 +385,6 @@ private:
   std::size_t& lp_count_;
 };
 
-struct Pair_verdict {
-  bool collide = false;
-  std::array<Q, 4> witness;   // (x, y, z, t), strictly inside both when collide
-  bool touch = false;         // closed objects meet though they do not collide (only if asked)
-  std::size_t lps = 0;        // linear programs solved
-};
-
-// The regularised verdict for objects a and b over the scene's span; with
-// want_touch, also whether their closures meet within [tL, tH] when they do
-// not collide (closure of a regularised set = union of the closures of its
-// non-empty open DNF terms).
-inline Pair_verdict oracle_pair(const Scene& scene, int a, int b, bool want_touch = false)
-{
-  Pair_verdict out;
-  Object_formula A = object_formula(scene, a), B = object_formula(scene, b);
-  auto spans = slabs(scene, *A.motion, *B.motion);
-  for (const auto& span : spans) {
-    Linear_motion ma = linear_on(*A.motion, span.first, span.second);
-    Linear_motion mb = linear_on(*B.motion, span.first, span.second);
-    Term_search search(span.first, span.second, false, out.lps);
-    bool found = search.run({}, {{&A.formula, &ma}, {&B.formula, &mb}}, [&](const std::vector<Row>&, const Lp_answer& lp) {
-      out.witness = lp.point;
-      return true;
-    });
-    if (found) { out.collide = true; return out; }
-  }
-  if (!want_touch) return out;
-  for (const auto& span : spans) {
-    Linear_motion ma = linear_on(*A.motion, span.first, span.second);
-    Linear_motion mb = linear_on(*B.motion, span.first, span.second);
-    std::vector<std::vector<Row>> terms[2];
-    int side = 0;
-    for (const Object_formula* f : {&A, &B}) {
-      Term_search search(span.first, span.second, false, out.lps);
-      search.run({}, {{&f->formula, side == 0 ? &ma : &mb}}, [&](const std::vector<Row>& rows, const Lp_answer&) {
-        terms[side].push_back(rows);
-        return false;
-      });
-      ++side;
-    }
-    for (const auto& ta : terms[0])
-      for (const auto& tb : terms[1]) {
-        std::vector<Row> rows = ta;
-        rows.insert(rows.end(), tb.begin(), tb.end());
-        if (!CGAL::is_negative(max_slack(rows, span.first, span.second, out.lps).slack)) {
-          out.touch = true;
-          return out;
-        }
-      }
-  }
-  return out;
-}
-
 // The least t over the closure of [tL, tH] x rows (an LP; rows feasible).
 inline Q min_time(const std::vector<Row>& rows, const Q& lo, const Q& hi, std::size_t& lp_count)
 {
@@ -519,6 +466,39 @@ inline Closed_verdict oracle_closed(const Scene& scene, int a, int b)
         out.meet = true;
       }
   }
+  return out;
+}
+
+struct Pair_verdict {
+  bool collide = false;
+  std::array<Q, 4> witness;   // (x, y, z, t), strictly inside both when collide
+  bool touch = false;         // closed objects meet though they do not collide (only if asked)
+  std::size_t lps = 0;        // linear programs solved
+};
+
+// The regularised verdict for objects a and b over the scene's span; with
+// want_touch, also whether their closures meet within [tL, tH] when they do
+// not collide (closure of a regularised set = union of the closures of its
+// non-empty open DNF terms).
+inline Pair_verdict oracle_pair(const Scene& scene, int a, int b, bool want_touch = false)
+{
+  Pair_verdict out;
+  Object_formula A = object_formula(scene, a), B = object_formula(scene, b);
+  auto spans = slabs(scene, *A.motion, *B.motion);
+  for (const auto& span : spans) {
+    Linear_motion ma = linear_on(*A.motion, span.first, span.second);
+    Linear_motion mb = linear_on(*B.motion, span.first, span.second);
+    Term_search search(span.first, span.second, false, out.lps);
+    bool found = search.run({}, {{&A.formula, &ma}, {&B.formula, &mb}}, [&](const std::vector<Row>&, const Lp_answer& lp) {
+      out.witness = lp.point;
+      return true;
+    });
+    if (found) { out.collide = true; return out; }
+  }
+  if (!want_touch) return out;
+  Closed_verdict closed = oracle_closed(scene, a, b);
+  out.touch = closed.meet;
+  out.lps += closed.lps;
   return out;
 }
 
