@@ -125,11 +125,16 @@ private:
                                                                         &policy);
         Pair_result<AFT> found =
             checker.check_pair(a, b, options.earliest, ceiling ? &aceiling : nullptr, options.semantics);
-        if (!found.collide || (found.has_witness && found.witness_verified)) {
+        if (!found.collide) {
           stats = astats;
-          if (!found.collide) return Pair_result<EFT>();
-          ++witnesses_by_intervals_;
-          return exact_copy(found);
+          return Pair_result<EFT>();
+        }
+        if (found.has_witness && found.witness_verified) {
+          if (std::optional<Pair_result<EFT>> r = exact_copy(found)) {
+            stats = astats;
+            ++witnesses_by_intervals_;
+            return *r;
+          }
         }
         ++witness_runs_;
       } catch (const CGAL::Uncertain_conversion_exception&) {
@@ -167,19 +172,37 @@ private:
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0};
 
-  // A witness AK made on a certified path: its coordinates are grid points
-  // (Witness::snap), exact doubles, so AK's point intervals are
-  // EK's numbers.
-  Pair_result<EFT> exact_copy(const Pair_result<AFT>& found) const
+  // A witness AK made and verified on a certified path, in EK's numbers.
+  // Regularised, its coordinates are grid points (Witness::snap), exact
+  // doubles, so AK's point intervals are EK's numbers. Closed, the touching
+  // point is any rational: kept only when every coordinate of it and of the
+  // generic points is a point interval, whose verification (all signs
+  // certain, zeros only of exact point arithmetic) holds for that point.
+  std::optional<Pair_result<EFT>> exact_copy(const Pair_result<AFT>& found) const
   {
     Pair_result<EFT> r;
     r.a = found.a;
     r.b = found.b;
+    r.semantics = found.semantics;
     r.collide = r.has_witness = r.witness_verified = true;
-    for (int q = 0; q < 4; ++q) {
-      std::optional<Rational> x = ak_.exact_value(found.witness[q]);
-      if (!x) throw std::logic_error("internal error: an interval witness is not a point");
-      r.witness[q] = ek_.from_rational(*x);
+    bool closed = found.semantics == Semantics::closed;
+    auto copy = [&](const Vector4<AFT>& from, Vector4<EFT>& to) {
+      for (int q = 0; q < 4; ++q) {
+        std::optional<Rational> x = ak_.exact_value(from[q]);
+        if (!x) return false;
+        to[q] = ek_.from_rational(*x);
+      }
+      return true;
+    };
+    if (!copy(found.witness, r.witness)) {
+      if (closed) return std::nullopt;
+      throw std::logic_error("internal error: an interval witness is not a point");
+    }
+    if (closed) {
+      for (int i = 0; i < 2; ++i)
+        if (!copy(found.witness_cells[i], r.witness_cells[i])) return std::nullopt;
+      r.contact_cells = r.witness_cells;
+      r.contact = r.witness;
     }
     return r;
   }

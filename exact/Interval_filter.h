@@ -27,8 +27,7 @@ public:
 
   Interval_filter() = default;   // only as a stage's unused default
   // record: an any-witness search, whose trail and witness are wanted.
-  // closed: the pair is searched in closed semantics, whose witness (a
-  // touching point, any rational) only a rational run can make.
+  // closed: the pair is searched in closed semantics.
   Interval_filter(Runner& runner, Search_trail& trail, Check_stats& stats, bool record, bool closed = false)
     : exact_(std::make_unique<Exact_span<Runner>>(runner, closed)), trail_(&trail), stats_(&stats), record_(record),
       closed_(closed) {}
@@ -45,8 +44,11 @@ public:
   }
   bool stops_after(std::size_t) const { return false; }
   // The point is the rational run's own when the path was certified (the
-  // trail is not approximate) and the intervals found it themselves.
-  bool witness_certified() const { return record_ && !closed_ && !trail_->approximate && !found_in_rationals_; }
+  // trail is not approximate) and the intervals found it themselves. A
+  // closed witness (a touching point, any rational) is made too: the runner
+  // keeps it only when every coordinate is a point interval, that is the
+  // rational run's number (Filtered_runner::exact_copy).
+  bool witness_certified() const { return record_ && !trail_->approximate && !found_in_rationals_; }
   template <class F>
   void attempt(F make)
   {
