@@ -36,11 +36,34 @@ Pair_answer pair_answer(const K& k, const Scene_model<K>& model, const Pair_resu
   return p;
 }
 
+// Closed semantics without --earliest: a regularised collision is a closed
+// contact (regularised-semantics item 6), and its generic witness is a
+// touching point inside both objects, so it serves as the point and as the
+// generic point of each object's cell (item 1). The regularised search is
+// the cheaper (S-bounds prune touching pairs, and its witness is a grid
+// point), so it goes first; only a pair it finds apart is searched closed.
+template <class FT, class Check_one>
+Pair_result<FT> closed_pair(std::size_t i, Check_one& check, Check_stats& stats)
+{
+  Pair_result<FT> r = check(i, nullptr, Semantics::regularised, stats);
+  if (r.collide && r.has_witness && r.witness_verified) {
+    r.semantics = Semantics::closed;
+    r.witness_cells = {r.witness, r.witness};
+    r.contact = r.witness;
+    return r;
+  }
+  Check_stats closed_stats;
+  r = check(i, nullptr, Semantics::closed, closed_stats);
+  stats.add(closed_stats);
+  return r;
+}
+
 // Pairs are independent, so they are checked in parallel (TBB); results are
 // kept per pair and merged in pair order, so the answer is the one a single
 // thread gives: the first colliding pair in order, or the smallest t* with
-// the first pair in order among equals. check(i, ceiling, stats) decides pair
-// i (a filtered run may decide it in two kernels; results are in K's numbers).
+// the first pair in order among equals. check(i, ceiling, semantics, stats)
+// decides pair i (a filtered run may decide it in two kernels; results are
+// in K's numbers).
 template <class K, class Check_one>
 void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::pair<int, int>>& pairs,
                const Check_options& options, Check_one check, Check_answer& answer)
@@ -61,7 +84,9 @@ void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::p
       use_ceiling = have_best;
       ceiling = best;
     }
-    results[i] = check(i, use_ceiling ? &ceiling : nullptr, stats[i]);
+    results[i] = options.semantics == Semantics::closed && !options.earliest
+                     ? closed_pair<FT>(i, check, stats[i])
+                     : check(i, use_ceiling ? &ceiling : nullptr, options.semantics, stats[i]);
     if (!results[i].collide) return;
     if (options.earliest) {
       std::lock_guard<std::mutex> lock(best_mutex);
@@ -128,9 +153,9 @@ Check_answer run_check(const K& k, const Scene& scene, const Check_options& opti
   answer.stats.seconds_model = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   auto settled = settled_bounds_all(k, model, answer.stats, options.sbounds);
   std::vector<std::pair<int, int>> pairs = candidate_pairs(k, model, settled, scene, answer.stats, options.semantics);
-  auto check = [&](std::size_t i, const typename K::FT* ceiling, Check_stats& stats) {
+  auto check = [&](std::size_t i, const typename K::FT* ceiling, Semantics semantics, Check_stats& stats) {
     Checker checker(k, model, settled, stats, options.sbounds);
-    return checker.check_pair(pairs[i].first, pairs[i].second, options.earliest, ceiling, options.semantics);
+    return checker.check_pair(pairs[i].first, pairs[i].second, options.earliest, ceiling, semantics);
   };
   run_pairs(k, model, pairs, options, check, answer);
   return answer;

@@ -60,8 +60,10 @@ public:
     if (!prepare(answer.stats, pairs, options.semantics)) {
       answer = run_check(ek_, scene_, options);     // AK could not even build the model
     } else {
-      auto check_one = [&](std::size_t i, const EFT* ceiling, Check_stats& stats) {
-        return check_pair(pairs[i].first, pairs[i].second, options, ceiling, stats);
+      auto check_one = [&](std::size_t i, const EFT* ceiling, Semantics semantics, Check_stats& stats) {
+        Check_options o = options;
+        o.semantics = semantics;
+        return check_pair(pairs[i].first, pairs[i].second, o, ceiling, stats);
       };
       run_pairs(ek_, emodel_, pairs, options, check_one, answer);
     }
