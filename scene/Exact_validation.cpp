@@ -140,7 +140,9 @@ std::string convex_problem(const std::vector<Rational4>& planes)
 Polytope_combinatorics convex_vertex_triples(const std::vector<Rational4>& planes)
 {
   Polytope_combinatorics out;
-  std::vector<Rational3> seen;
+  // Each distinct point is classified once: where many planes pass through
+  // one vertex (a cone's apex), every triple of them gives it again.
+  std::set<Rational3> seen;
   int m = static_cast<int>(planes.size());
   auto normal = [&](int i) { return Rational3{planes[i][0], planes[i][1], planes[i][2]}; };
   for (int i = 0; i < m; ++i)
@@ -150,6 +152,7 @@ Polytope_combinatorics convex_vertex_triples(const std::vector<Rational4>& plane
         Rational det = determinant3(a, b, c);
         if (CGAL::is_zero(det)) continue;
         Rational3 p = vertex_of(planes[i], planes[j], planes[k]);
+        if (!seen.insert(p).second) continue;
         bool inside = true;
         std::vector<int> through;
         for (int h = 0; h < m && inside; ++h) {
@@ -158,10 +161,6 @@ Polytope_combinatorics convex_vertex_triples(const std::vector<Rational4>& plane
           if (s == CGAL::ZERO) through.push_back(h);
         }
         if (!inside) continue;
-        bool repeated = false;
-        for (const auto& q : seen) repeated = repeated || q == p;
-        if (repeated) continue;
-        seen.push_back(p);
         out.triples.push_back({i, j, k});
         if (through.size() >= 4) out.corners.push_back(through);
       }
