@@ -7,6 +7,8 @@
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_decomposition_3.h>
+#include <map>
+#include <numeric>
 
 namespace clash4d {
 namespace {
@@ -52,11 +54,37 @@ Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const M
 {
   if (mesh.convex) return hull_of(mesh.vertices, file_name);
 
-  Surface surface;
-  std::vector<Surface::Vertex_index> handle;
-  for (const auto& p : mesh.vertices) handle.push_back(surface.add_vertex(Point_3(p[0], p[1], p[2])));
-  for (const auto& t : mesh.triangles) surface.add_face(handle[t[0]], handle[t[1]], handle[t[2]]);
-  Nef nef(surface);
+  // Each shell (connected surface) encloses a volume, whatever its
+  // orientation: CGAL's Nef from a polygon mesh reads it so. The shells do
+  // not cross (check_mesh), so they nest, and the solid is the points inside
+  // an odd number of them: the symmetric difference of their volumes. The
+  // volume test below then holds it to the facets' orientation.
+  std::vector<int> parent(mesh.vertices.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (const auto& t : mesh.triangles) {
+    parent[root(t[1])] = root(t[0]);
+    parent[root(t[2])] = root(t[0]);
+  }
+  std::map<int, std::vector<std::array<int, 3>>> shells;
+  for (const auto& t : mesh.triangles) shells[root(t[0])].push_back(t);
+  Nef nef;
+  bool first = true;
+  for (const auto& [r, triangles] : shells) {
+    Surface surface;
+    std::map<int, Surface::Vertex_index> handle;
+    for (const auto& t : triangles)
+      for (int v : t)
+        if (!handle.count(v)) handle[v] = surface.add_vertex(Point_3(mesh.vertices[v][0], mesh.vertices[v][1], mesh.vertices[v][2]));
+    for (const auto& t : triangles) surface.add_face(handle[t[0]], handle[t[1]], handle[t[2]]);
+    Nef shell(surface);
+    nef = first ? shell : nef ^ shell;
+    first = false;
+  }
+  nef.regularization();
   CGAL::convex_decomposition_3(nef);
   Solid u;
   u.kind = Solid::Kind::Union;

@@ -108,6 +108,52 @@ std::vector<char> binary_stl(const std::vector<std::array<float, 9>>& triangles)
 
 std::string_view view(const std::vector<char>& v) { return std::string_view(v.data(), v.size()); }
 
+// OFF text of boxes [lo, hi]^3 shifted by (dx, dy, dz), each as six outward
+// quadrilaterals (inward when flipped), vertices numbered box by box.
+struct Box {
+  int lo, hi, dx, dy, dz;
+  bool inward;
+};
+std::string boxes_off(const std::vector<Box>& boxes)
+{
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  std::string verts, facets;
+  int base = 0;
+  for (const Box& b : boxes) {
+    for (int i = 0; i < 8; ++i)   // index x + 2y + 4z
+      verts += std::to_string((i & 1 ? b.hi : b.lo) + b.dx) + " " + std::to_string((i & 2 ? b.hi : b.lo) + b.dy) + " " +
+               std::to_string((i & 4 ? b.hi : b.lo) + b.dz) + "\n";
+    for (const auto& q : quads) {
+      facets += "4";
+      for (int k = 0; k < 4; ++k) facets += " " + std::to_string(base + q[b.inward ? 3 - k : k]);
+      facets += "\n";
+    }
+    base += 8;
+  }
+  return "OFF\n" + std::to_string(base) + " " + std::to_string(6 * boxes.size()) + " 0\n" + verts + facets;
+}
+
+Solid off_solid(const std::string& text, const std::string& name)
+{
+  return mesh_solid(check_mesh(read_mesh(text, Mesh_format::Off, name), name), name);
+}
+
+Rational pieces_volume(const Solid& s)
+{
+  // Every piece of these tests is an axis-aligned box: the volume of its points' bounding box.
+  Rational total(0);
+  for (const Solid& c : s.children) {
+    std::array<Rational, 3> lo, hi;
+    for (int k = 0; k < 3; ++k) lo[k] = hi[k] = c.numbers[k];
+    for (std::size_t i = 0; i < c.numbers.size(); ++i) {
+      lo[i % 3] = std::min(lo[i % 3], c.numbers[i]);
+      hi[i % 3] = std::max(hi[i % 3], c.numbers[i]);
+    }
+    total += (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+  }
+  return total;
+}
+
 } // namespace
 
 // The L-shaped part as each mesh file and as CSG gives the hand-derived
@@ -176,6 +222,35 @@ BOOST_AUTO_TEST_CASE(non_convex_mesh_is_a_union_of_hulls_convex_one_a_hull)
   BOOST_TEST(scene.objects[1].shape.path == "objects[1].shape.mesh");
   BOOST_TEST(scene.objects[1].shape.children.size() == scene.objects[0].shape.children.size());
   BOOST_TEST(scene.objects[1].shape.children[0].path == "objects[1].shape.mesh[0]");
+}
+
+// Shells: separate solids, a cavity, and the shells that do not bound a solid.
+BOOST_AUTO_TEST_CASE(shells_cavities_crossings_and_pinches)
+{
+  // Two separate unit cubes: one mesh, two pieces.
+  Solid two = off_solid(boxes_off({{0, 1, 0, 0, 0, false}, {0, 1, 3, 0, 0, false}}), "two.off");
+  BOOST_TEST((two.kind == Solid::Kind::Union));
+  BOOST_TEST(two.children.size() == 2u);
+  // [0,4]^3 with the cavity [1,3]^3 (an inner shell facing inward): 64 - 8.
+  Solid hollow = off_solid(boxes_off({{0, 4, 0, 0, 0, false}, {1, 3, 0, 0, 0, true}}), "hollow.off");
+  BOOST_TEST((hollow.kind == Solid::Kind::Union));
+  BOOST_TEST(pieces_volume(hollow) == Rational(56));
+  auto refused = [](const std::string& text, const std::string& name) {
+    return refusal([&] { off_solid(text, name); });
+  };
+  // An inward shell that is no cavity: signed volume 8 - 1 > 0, but no solid.
+  auto stray = refused(boxes_off({{0, 2, 0, 0, 0, false}, {0, 1, 3, 0, 0, true}}), "stray.off");
+  BOOST_TEST(stray.second == CLASH4D_EXIT_INVALID);
+  BOOST_TEST(contains(stray.first, "stray.off: the facets do not bound one solid"), stray.first);
+  // Two overlapping cubes in one file: the surfaces cross.
+  auto crossing = refused(boxes_off({{0, 2, 0, 0, 0, false}, {0, 2, 1, 1, 1, false}}), "crossing.off");
+  BOOST_TEST(crossing.second == CLASH4D_EXIT_INVALID);
+  BOOST_TEST(contains(crossing.first, "crossing.off: facet "), crossing.first);
+  BOOST_TEST(contains(crossing.first, ": the surface intersects itself"), crossing.first);
+  // Two cubes sharing only the corner (1, 1, 1).
+  auto pinched = refused(boxes_off({{0, 1, 0, 0, 0, false}, {0, 1, 1, 1, 1, false}}), "pinched.off");
+  BOOST_TEST(pinched.second == CLASH4D_EXIT_INVALID);
+  BOOST_TEST(contains(pinched.first, "pinched.off: vertex (1, 1, 1): the surface is pinched there: 2 separate fans"), pinched.first);
 }
 
 // Binary STL: every float32 is the dyadic rational it encodes. The expected
