@@ -68,6 +68,8 @@ Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name)
   std::vector<std::vector<int>> facets(mesh.facets.size());
   for (std::size_t f = 0; f < mesh.facets.size(); ++f)
     for (int v : mesh.facets[f]) {
+      if (v < 0 || static_cast<std::size_t>(v) >= mesh.vertices.size())
+        fail(facet_place(static_cast<int>(f)), "vertex index " + std::to_string(v) + " out of range");
       if (id[v] < 0) {
         auto it = id_of.emplace(mesh.vertices[v], static_cast<int>(out.vertices.size())).first;
         if (it->second == static_cast<int>(out.vertices.size())) out.vertices.push_back(mesh.vertices[v]);

@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <gmp.h>
 #include <sstream>
@@ -702,6 +703,8 @@ Mesh read_mesh(std::string_view bytes, Mesh_format format, const std::string& fi
 Mesh read_mesh_file(const std::string& path, const std::string& file_name, const Mesh_limits& limits)
 {
   Mesh_format format = mesh_format_of(file_name);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw Input_error(file_name, "is a directory, not a mesh file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Input_error(file_name, "cannot open the mesh file");
   in.seekg(0, std::ios::end);

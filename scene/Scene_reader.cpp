@@ -222,6 +222,12 @@ Solid read_mesh_body(const Json_value& v, const std::string& path, Reader_contex
       found = ctx.meshes.emplace(key, read_mesh_solid(file.string(), v.text)).first;
     } catch (const Input_error& e) {
       throw Input_error(path, e.place() + ": " + e.what(), e.exit_code());
+    } catch (const std::bad_alloc&) {
+      throw Input_error(path, v.text + ": out of memory", CLASH4D_EXIT_LIMIT);
+    } catch (const std::exception& e) {
+      // A failure of CGAL on a mesh the checks accepted is ours: exit 4, the
+      // internal error status of cli/Commands.cpp, with CGAL's message.
+      throw Input_error(path, v.text + ": internal error making the solid: " + e.what(), 4);
     }
   }
   Solid s = found->second;
