@@ -382,7 +382,8 @@ Mesh read_stl(std::string_view bytes, const Place& place, const Mesh_limits& lim
   check_count(place, "", n, limits.facets, "facets");
   place.fail("", "binary STL of " + std::to_string(n) + " facets should have 84 + 50 * " + std::to_string(n) + " = " +
                      std::to_string(84 + 50 * n) + " bytes, the file has " + std::to_string(bytes.size()) +
-                     (bytes.size() < 84 + 50 * n ? " (truncated)" : ""));
+                     (bytes.size() < 84 + 50 * n ? " (truncated: it ends inside facet " + std::to_string((bytes.size() - 84) / 50) + ")"
+                                                 : " (data after the last facet)"));
 }
 
 // ---- PLY ----------------------------------------------------------------
