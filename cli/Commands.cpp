@@ -28,6 +28,9 @@ const char* const about =
     "(Cameron 1990). Objects are CSG solids of linear half-spaces under piecewise-\n"
     "constant velocities; two objects collide when the regularised intersection\n"
     "of their space-time extrusions is non-empty, so touching is not a collision.\n"
+    "Solids: halfspace, block, convex, prism, hull, mesh (a closed OFF, OBJ, STL or\n"
+    "PLY file relative to the scene: {\"mesh\": \"parts/gripper.stl\"}, docs/meshes.md),\n"
+    "union, intersection, difference, translate, rotate.\n"
     "\nExit status: 0 no collision / valid, 1 collision, 2 invalid input or usage,\n"
     "3 a resource limit was reached, 4 internal error.";
 

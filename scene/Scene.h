@@ -16,7 +16,8 @@ struct Solid {
   std::string path;                    // JSON path of the solid, for messages
   // Kind-dependent numbers, flat: halfspace a b c d; block min max; convex
   // 4 per half-space; prism x y per vertex then z0 z1; hull x y z per point;
-  // translate dx dy dz; rotate w x y z.
+  // translate dx dy dz; rotate w x y z. A mesh file ({"mesh": FILE}) is
+  // read as a Hull or a Union of Hulls (scene/Mesh_solid.h).
   std::vector<Rational> numbers;
   std::vector<Solid> children;
   // Exact combinatorics found by validation, so every number type builds the

@@ -1,10 +1,14 @@
 #include "scene/Scene_reader.h"
 #include "geometry/Polytope_ft.h"
 #include "scene/Exact_validation.h"
+#include "scene/Hull_solid.h"
+#include "scene/Mesh_solid.h"
 #include "scene/Input_error.h"
 #include "scene/Json_reader.h"
 #include "scene/Number_text.h"
 
+#include <filesystem>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -98,15 +102,22 @@ std::array<Rational, N> read_array(const Json_value& v, const std::string& path)
   return out;
 }
 
-Solid read_solid(const Json_value& v, const std::string& path);
+// What one read of a scene shares: the directory mesh paths are relative to,
+// and each mesh file's solid, made once however often the file is used.
+struct Reader_context {
+  std::filesystem::path base;
+  std::map<std::string, Solid> meshes;   // by canonical path
+};
 
-void read_children(const Json_value& list, Solid& s, std::size_t min_count, const std::string& path)
+Solid read_solid(const Json_value& v, const std::string& path, Reader_context& ctx);
+
+void read_children(const Json_value& list, Solid& s, std::size_t min_count, const std::string& path, Reader_context& ctx)
 {
   expect_kind(list, Kind::Array, path);
   if (list.items.size() < min_count)
     throw Input_error(path, "expected at least " + std::to_string(min_count) + " solid" + (min_count > 1 ? "s" : "") +
                                 ", found " + std::to_string(list.items.size()));
-  for (std::size_t i = 0; i < list.items.size(); ++i) s.children.push_back(read_solid(list.items[i], at(path, i)));
+  for (std::size_t i = 0; i < list.items.size(); ++i) s.children.push_back(read_solid(list.items[i], at(path, i), ctx));
 }
 
 void read_block(const Json_value& v, Solid& s, const std::string& path)
@@ -182,29 +193,56 @@ void read_hull(const Json_value& v, Solid& s, const std::string& path)
     throw Input_error(path, "more than the limit of " + std::to_string(CLASH4D_MAX_HULL_POINTS) + " points", CLASH4D_EXIT_LIMIT);
   std::vector<Rational3> points;
   for (std::size_t i = 0; i < v.items.size(); ++i) points.push_back(read_array<3>(v.items[i], at(path, i)));
-  if (points.size() < 4) throw Input_error(path, "a hull needs at least 4 points not in one plane, found " + std::to_string(points.size()));
   try {
-    Polytope_combinatorics c = hull_facets(points);
-    s.triples = c.triples;
-    s.corners = c.corners;
+    make_hull_solid(points, s);
   } catch (const std::invalid_argument& e) {
     throw Input_error(path, e.what());
   }
-  for (const auto& p : points) s.numbers.insert(s.numbers.end(), p.begin(), p.end());
-  for (const auto& t : s.triples) {
-    Rational4 plane = facet_plane(points[t[0]], points[t[1]], points[t[2]]);
-    s.constructed.insert(s.constructed.end(), plane.begin(), plane.end());
-  }
 }
 
-Solid read_solid(const Json_value& v, const std::string& path)
+void set_paths(Solid& s, const std::string& path)
+{
+  s.path = path;
+  for (std::size_t i = 0; i < s.children.size(); ++i) set_paths(s.children[i], at(path, i));
+}
+
+// {"mesh": "FILE"}: a hull or a union of hulls (scene/Mesh_solid.h).
+Solid read_mesh_body(const Json_value& v, const std::string& path, Reader_context& ctx)
+{
+  expect_kind(v, Kind::String, path);
+  if (v.text.empty()) throw Input_error(path, "the mesh file name must not be empty");
+  namespace fs = std::filesystem;
+  fs::path file = fs::path(v.text).is_absolute() ? fs::path(v.text) : ctx.base / v.text;
+  std::error_code ec;
+  fs::path canonical = fs::weakly_canonical(file, ec);
+  std::string key = ec ? file.lexically_normal().string() : canonical.string();
+  auto found = ctx.meshes.find(key);
+  if (found == ctx.meshes.end()) {
+    try {
+      found = ctx.meshes.emplace(key, read_mesh_solid(file.string(), v.text)).first;
+    } catch (const Input_error& e) {
+      throw Input_error(path, e.place() + ": " + e.what(), e.exit_code());
+    } catch (const std::bad_alloc&) {
+      throw Input_error(path, v.text + ": out of memory", CLASH4D_EXIT_LIMIT);
+    } catch (const std::exception& e) {
+      // A failure of CGAL on a mesh the checks accepted is ours: exit 4, the
+      // internal error status of cli/Commands.cpp, with CGAL's message.
+      throw Input_error(path, v.text + ": internal error making the solid: " + e.what(), 4);
+    }
+  }
+  Solid s = found->second;
+  set_paths(s, path);
+  return s;
+}
+
+Solid read_solid(const Json_value& v, const std::string& path, Reader_context& ctx)
 {
   expect_kind(v, Kind::Object, path);
   static const std::pair<const char*, Solid::Kind> kinds[] = {
       {"halfspace", Solid::Kind::Halfspace}, {"block", Solid::Kind::Block}, {"convex", Solid::Kind::Convex},
       {"prism", Solid::Kind::Prism}, {"hull", Solid::Kind::Hull}, {"union", Solid::Kind::Union},
       {"intersection", Solid::Kind::Intersection}, {"difference", Solid::Kind::Difference},
-      {"translate", Solid::Kind::Translate}, {"rotate", Solid::Kind::Rotate}};
+      {"translate", Solid::Kind::Translate}, {"rotate", Solid::Kind::Rotate}, {"mesh", Solid::Kind::Hull}};
   Solid s;
   s.path = path;
   const Json_value* body = nullptr;
@@ -219,10 +257,14 @@ Solid read_solid(const Json_value& v, const std::string& path)
     }
   }
   if (!body) {
-    if (v.members.empty()) throw Input_error(path, "empty solid: expected one of halfspace, block, convex, prism, hull, union, intersection, difference, translate, rotate");
-    throw Input_error(path, "unknown solid \"" + v.members.front().first + "\" (expected halfspace, block, convex, prism, hull, union, intersection, difference, translate or rotate)");
+    if (v.members.empty()) throw Input_error(path, "empty solid: expected one of halfspace, block, convex, prism, hull, mesh, union, intersection, difference, translate, rotate");
+    throw Input_error(path, "unknown solid \"" + v.members.front().first + "\" (expected halfspace, block, convex, prism, hull, mesh, union, intersection, difference, translate or rotate)");
   }
   std::string body_path = dot(path, key);
+  if (key == "mesh") {
+    expect_keys(v, {"mesh"}, path);
+    return read_mesh_body(*body, body_path, ctx);
+  }
   bool transform = s.kind == Solid::Kind::Translate || s.kind == Solid::Kind::Rotate;
   if (transform) expect_keys(v, {key.c_str(), "solid"}, path);
   else expect_keys(v, {key.c_str()}, path);
@@ -233,12 +275,12 @@ Solid read_solid(const Json_value& v, const std::string& path)
     case Solid::Kind::Prism: read_prism(*body, s, body_path); break;
     case Solid::Kind::Hull: read_hull(*body, s, body_path); break;
     case Solid::Kind::Union:
-    case Solid::Kind::Intersection: read_children(*body, s, 1, body_path); break;
-    case Solid::Kind::Difference: read_children(*body, s, 2, body_path); break;
+    case Solid::Kind::Intersection: read_children(*body, s, 1, body_path, ctx); break;
+    case Solid::Kind::Difference: read_children(*body, s, 2, body_path, ctx); break;
     case Solid::Kind::Translate: {
       auto d = read_array<3>(*body, body_path);
       s.numbers.assign(d.begin(), d.end());
-      s.children.push_back(read_solid(required(v, "solid", path), dot(path, "solid")));
+      s.children.push_back(read_solid(required(v, "solid", path), dot(path, "solid"), ctx));
       break;
     }
     case Solid::Kind::Rotate: {
@@ -246,7 +288,7 @@ Solid read_solid(const Json_value& v, const std::string& path)
       if (CGAL::is_zero(q[0]) && CGAL::is_zero(q[1]) && CGAL::is_zero(q[2]) && CGAL::is_zero(q[3]))
         throw Input_error(body_path, "the quaternion must not be zero");
       s.numbers.assign(q.begin(), q.end());
-      s.children.push_back(read_solid(required(v, "solid", path), dot(path, "solid")));
+      s.children.push_back(read_solid(required(v, "solid", path), dot(path, "solid"), ctx));
       break;
     }
   }
@@ -307,7 +349,8 @@ Motion parse_motion(const std::string& text, const std::string& place)
 }
 
 // objects[i]: a uniquely named solid with its motion (default: at rest).
-static Scene_object read_object(const Json_value& o, const std::string& path, std::set<std::string>& names)
+static Scene_object read_object(const Json_value& o, const std::string& path, std::set<std::string>& names,
+                                Reader_context& ctx)
 {
   expect_kind(o, Kind::Object, path);
   expect_keys(o, {"name", "shape", "motion"}, path);
@@ -317,7 +360,7 @@ static Scene_object read_object(const Json_value& o, const std::string& path, st
   if (name.text.empty()) throw Input_error(dot(path, "name"), "the name must not be empty");
   if (!names.insert(name.text).second) throw Input_error(dot(path, "name"), "duplicate object name \"" + name.text + "\"");
   obj.name = name.text;
-  obj.shape = read_solid(required(o, "shape", path), dot(path, "shape"));
+  obj.shape = read_solid(required(o, "shape", path), dot(path, "shape"), ctx);
   if (const Json_value* motion = o.find("motion")) {
     expect_kind(*motion, Kind::String, dot(path, "motion"));
     obj.motion = parse_motion(motion->text, dot(path, "motion"));
@@ -350,8 +393,10 @@ static void read_ignore(const Json_value& ignore, Scene& scene)
   }
 }
 
-Scene read_scene(const Json_value& root)
+Scene read_scene(const Json_value& root, const std::string& base_directory)
 {
+  Reader_context ctx;
+  ctx.base = base_directory.empty() ? std::filesystem::path(".") : std::filesystem::path(base_directory);
   expect_kind(root, Kind::Object, "");
   // meta: provenance written by tools (spec), any JSON value, never read here.
   expect_keys(root, {"format", "name", "time", "objects", "ignore", "meta"}, "");
@@ -375,14 +420,15 @@ Scene read_scene(const Json_value& root)
     throw Input_error("objects", "expected at least two objects, found " + std::to_string(objects.items.size()));
   std::set<std::string> names;
   for (std::size_t i = 0; i < objects.items.size(); ++i)
-    scene.objects.push_back(read_object(objects.items[i], at("objects", i), names));
+    scene.objects.push_back(read_object(objects.items[i], at("objects", i), names, ctx));
   if (const Json_value* ignore = root.find("ignore")) read_ignore(*ignore, scene);
   return scene;
 }
 
 Scene read_scene_file(const std::string& path)
 {
-  return read_scene(read_json_file(path));
+  std::string base = std::filesystem::path(path).parent_path().string();
+  return read_scene(read_json_file(path), base);
 }
 
 } // namespace clash4d

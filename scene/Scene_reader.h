@@ -14,8 +14,10 @@ constexpr std::size_t CLASH4D_MAX_HULL_POINTS = 1000;
 constexpr std::size_t CLASH4D_MAX_MOTION_SEGMENTS = 10000;
 
 // Every check of the spec, decided exactly. Throws Input_error naming the
-// JSON path of the first problem.
-Scene read_scene(const Json_value& root);
+// JSON path of the first problem. Mesh solids' file names are relative to
+// base_directory (empty: the current directory); read_scene_file takes the
+// scene file's own directory.
+Scene read_scene(const Json_value& root, const std::string& base_directory = "");
 Scene read_scene_file(const std::string& path);
 
 // Parses a ROBMOD motion string ("rest until 0 vel 1 2 3 until 5 rest").

@@ -1,0 +1,241 @@
+#include "scene/Mesh_check.h"
+#include "scene/Input_error.h"
+
+#include <CGAL/Cartesian.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+#include <algorithm>
+#include <iterator>
+#include <map>
+#include <numeric>
+#include <set>
+
+namespace clash4d {
+namespace {
+
+using P3 = std::array<Rational, 3>;
+
+P3 sub(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+P3 cross(const P3& a, const P3& b)
+{
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Rational dot(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+bool is_zero(const P3& a) { return CGAL::is_zero(a[0]) && CGAL::is_zero(a[1]) && CGAL::is_zero(a[2]); }
+
+std::string text(const P3& p)
+{
+  return "(" + to_string(p[0]) + ", " + to_string(p[1]) + ", " + to_string(p[2]) + ")";
+}
+
+struct Fail {
+  const std::string& file;
+  [[noreturn]] void operator()(const std::string& where, const std::string& what) const
+  {
+    throw Input_error(where.empty() ? file : file + ": " + where, what);
+  }
+};
+
+std::string facet_place(int f) { return "facet " + std::to_string(f); }
+
+// One side of an edge: the facet and whether it runs from the smaller
+// vertex id to the larger.
+struct Edge_use {
+  int facet;
+  bool forward;
+};
+
+int find_root(std::vector<int>& parent, int i)
+{
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+using Exact_geometry = CGAL::Cartesian<Rational>;
+using Surface = CGAL::Surface_mesh<Exact_geometry::Point_3>;
+
+} // namespace
+
+Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name)
+{
+  Fail fail{file_name};
+  if (mesh.facets.empty()) fail("", "no facets");
+  Checked_mesh out;
+
+  // Equal points are one vertex (STL writes each facet's own copies).
+  std::map<P3, int> id_of;
+  std::vector<int> id(mesh.vertices.size(), -1);
+  std::vector<std::vector<int>> facets(mesh.facets.size());
+  for (std::size_t f = 0; f < mesh.facets.size(); ++f)
+    for (int v : mesh.facets[f]) {
+      if (v < 0 || static_cast<std::size_t>(v) >= mesh.vertices.size())
+        fail(facet_place(static_cast<int>(f)), "vertex index " + std::to_string(v) + " out of range");
+      if (id[v] < 0) {
+        auto it = id_of.emplace(mesh.vertices[v], static_cast<int>(out.vertices.size())).first;
+        if (it->second == static_cast<int>(out.vertices.size())) out.vertices.push_back(mesh.vertices[v]);
+        id[v] = it->second;
+      }
+      facets[f].push_back(id[v]);
+    }
+  const auto& V = out.vertices;
+
+  // Facets: distinct vertices, non-zero area, planar, strictly convex.
+  std::vector<P3> normal(facets.size());
+  for (std::size_t f = 0; f < facets.size(); ++f) {
+    const std::vector<int>& F = facets[f];
+    int fi = static_cast<int>(f);
+    std::size_t n = F.size();
+    std::set<int> seen;
+    for (std::size_t i = 0; i < n; ++i)
+      if (!seen.insert(F[i]).second)
+        fail(facet_place(fi), "vertex " + std::to_string(i) + " " + text(V[F[i]]) + " repeats an earlier vertex of the facet");
+    P3 N{Rational(0), Rational(0), Rational(0)};
+    for (std::size_t i = 0; i < n; ++i) {
+      P3 c = cross(V[F[i]], V[F[(i + 1) % n]]);
+      for (int k = 0; k < 3; ++k) N[k] += c[k];
+    }
+    if (is_zero(N)) fail(facet_place(fi), "zero area (its vertices are collinear)");
+    if (n > 3) {
+      for (std::size_t i = 1; i < n; ++i)
+        if (!CGAL::is_zero(dot(N, sub(V[F[i]], V[F[0]]))))
+          fail(facet_place(fi), "not planar: vertex " + std::to_string(i) + " " + text(V[F[i]]) + " is off the plane of the facet");
+      for (std::size_t i = 0; i < n; ++i) {
+        const P3 &a = V[F[i]], &b = V[F[(i + 1) % n]];
+        for (std::size_t j = 0; j < n; ++j) {
+          if (j == i || j == (i + 1) % n) continue;
+          if (CGAL::sign(dot(cross(sub(b, a), sub(V[F[j]], a)), N)) != CGAL::POSITIVE)
+            fail(facet_place(fi), "not a strictly convex polygon (vertices " + std::to_string(i) + ", " +
+                                      std::to_string((i + 1) % n) + " and " + std::to_string(j) +
+                                      "): facets must be strictly convex, with no three vertices on a line");
+        }
+      }
+    }
+    normal[f] = N;
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+      out.triangles.push_back({F[0], F[i], F[i + 1]});
+      out.facet_of.push_back(fi);
+    }
+  }
+
+  // Edges: each shared by exactly two facets, once in each direction.
+  std::map<std::pair<int, int>, std::vector<Edge_use>> edges;
+  for (std::size_t f = 0; f < facets.size(); ++f)
+    for (std::size_t i = 0; i < facets[f].size(); ++i) {
+      int a = facets[f][i], b = facets[f][(i + 1) % facets[f].size()];
+      edges[{std::min(a, b), std::max(a, b)}].push_back({static_cast<int>(f), a < b});
+    }
+  auto edge_text = [&](const std::pair<int, int>& e) { return "the edge from " + text(V[e.first]) + " to " + text(V[e.second]); };
+  int worst = -1;
+  std::string why;
+  auto note = [&](int facet, const std::string& message) {
+    if (worst < 0 || facet < worst) worst = facet, why = message;
+  };
+  for (const auto& [e, uses] : edges)
+    if (uses.size() > 2) {
+      std::string list;
+      for (const auto& u : uses) list += (list.empty() ? "" : ", ") + std::to_string(u.facet);
+      note(uses.front().facet, "edge shared by " + std::to_string(uses.size()) + " facets (" + list +
+                                   "): the mesh is not a manifold along " + edge_text(e));
+    }
+  if (worst >= 0) fail(facet_place(worst), why);
+  for (const auto& [e, uses] : edges)
+    if (uses.size() == 1)
+      note(uses.front().facet, "edge not shared with any other facet: the mesh has a hole (it is not closed) along " + edge_text(e));
+  if (worst >= 0) fail(facet_place(worst), why);
+  std::vector<int> conflicts(facets.size(), 0);
+  std::vector<std::string> example(facets.size());
+  for (const auto& [e, uses] : edges)
+    if (uses[0].forward == uses[1].forward)
+      for (int k = 0; k < 2; ++k) {
+        int f = uses[k].facet, g = uses[1 - k].facet;
+        if (conflicts[f]++ == 0) example[f] = "facet " + std::to_string(g) + " across " + edge_text(e);
+      }
+  auto most = std::max_element(conflicts.begin(), conflicts.end());
+  if (*most > 0) {
+    int f = static_cast<int>(most - conflicts.begin());
+    fail(facet_place(f), "oriented against its neighbours across " + std::to_string(*most) + " of its edges (" + example[f] +
+                             "): a flipped facet, or facets not consistently oriented");
+  }
+
+  // Vertices: the facets around each form one fan (no pinched vertex).
+  std::map<std::pair<int, int>, int> facet_of_edge;   // directed edge -> facet
+  std::vector<std::vector<std::pair<int, int>>> around(V.size());   // (facet, position)
+  for (std::size_t f = 0; f < facets.size(); ++f)
+    for (std::size_t i = 0; i < facets[f].size(); ++i) {
+      facet_of_edge[{facets[f][i], facets[f][(i + 1) % facets[f].size()]}] = static_cast<int>(f);
+      around[facets[f][i]].push_back({static_cast<int>(f), static_cast<int>(i)});
+    }
+  for (std::size_t v = 0; v < V.size(); ++v) {
+    std::map<int, int> position;
+    for (const auto& fp : around[v]) position[fp.first] = fp.second;
+    std::set<int> visited;
+    int fans = 0;
+    for (const auto& fp : around[v]) {
+      if (visited.count(fp.first)) continue;
+      ++fans;
+      int f = fp.first;
+      while (visited.insert(f).second) {
+        const std::vector<int>& F = facets[f];
+        int next = F[(position[f] + 1) % F.size()];
+        f = facet_of_edge.at({next, static_cast<int>(v)});
+      }
+    }
+    if (fans > 1)
+      fail("vertex " + text(V[v]), "the surface is pinched there: " + std::to_string(fans) +
+                                       " separate fans of facets meet at the point (facet " +
+                                       std::to_string(around[v].front().first) + " is in one)");
+  }
+
+  // Volume: the sum of the triangles' signed tetrahedra from the origin.
+  Rational six_volume(0);
+  for (const auto& t : out.triangles) six_volume += dot(V[t[0]], cross(V[t[1]], V[t[2]]));
+  out.volume = six_volume / Rational(6);
+  if (CGAL::is_zero(out.volume)) fail("", "the mesh bounds no volume (signed volume 0)");
+  if (out.volume < 0)
+    fail("", "the facets are oriented inward (signed volume " + to_string(out.volume) +
+                 " < 0): list each facet's vertices counter-clockwise seen from outside");
+
+  // No two facets cross (CGAL's exact self-intersection test on the triangles).
+  Surface surface;
+  std::vector<Surface::Vertex_index> handle;
+  for (const auto& p : V) handle.push_back(surface.add_vertex(Exact_geometry::Point_3(p[0], p[1], p[2])));
+  std::vector<int> facet_of_face;
+  for (std::size_t t = 0; t < out.triangles.size(); ++t) {
+    const auto& T = out.triangles[t];
+    if (surface.add_face(handle[T[0]], handle[T[1]], handle[T[2]]) == Surface::null_face())
+      fail(facet_place(out.facet_of[t]), "the facet cannot be joined to its neighbours into one surface");
+    facet_of_face.push_back(out.facet_of[t]);
+  }
+  std::vector<std::pair<Surface::Face_index, Surface::Face_index>> crossing;
+  CGAL::Polygon_mesh_processing::self_intersections(surface, std::back_inserter(crossing));
+  if (!crossing.empty()) {
+    int a = facet_of_face[crossing.front().first], b = facet_of_face[crossing.front().second];
+    for (const auto& c : crossing) {
+      int x = facet_of_face[c.first], y = facet_of_face[c.second];
+      if (std::min(x, y) < std::min(a, b)) a = x, b = y;
+    }
+    if (a > b) std::swap(a, b);
+    fail(facet_place(a), "crosses facet " + std::to_string(b) + ": the surface intersects itself");
+  }
+
+  // Convex: one connected surface whose every edge is convex (the facet
+  // beyond the edge is on or below this facet's plane).
+  std::vector<int> parent(facets.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  bool convex = true;
+  for (const auto& [e, uses] : edges) {
+    int f = uses[0].facet, g = uses[1].facet;
+    parent[find_root(parent, f)] = find_root(parent, g);
+    for (int w : facets[g])
+      if (w != e.first && w != e.second) {
+        if (CGAL::sign(dot(normal[f], sub(V[w], V[e.first]))) == CGAL::POSITIVE) convex = false;
+        break;
+      }
+  }
+  int components = 0;
+  for (std::size_t f = 0; f < facets.size(); ++f) components += find_root(parent, static_cast<int>(f)) == static_cast<int>(f);
+  out.convex = convex && components == 1;
+  return out;
+}
+
+} // namespace clash4d

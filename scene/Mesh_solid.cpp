@@ -1,0 +1,121 @@
+#include "scene/Mesh_solid.h"
+#include "scene/Hull_solid.h"
+#include "scene/Input_error.h"
+
+#include <CGAL/Cartesian.h>
+#include <CGAL/Nef_polyhedron_3.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/convex_decomposition_3.h>
+#include <map>
+#include <numeric>
+
+namespace clash4d {
+namespace {
+
+using Exact_geometry = CGAL::Cartesian<Rational>;
+using Point_3 = Exact_geometry::Point_3;
+using Surface = CGAL::Surface_mesh<Point_3>;
+using Nef = CGAL::Nef_polyhedron_3<Exact_geometry>;
+using Piece = CGAL::Polyhedron_3<Exact_geometry>;
+
+Solid hull_of(const std::vector<Rational3>& points, const std::string& file_name)
+{
+  Solid s;
+  try {
+    make_hull_solid(points, s);
+  } catch (const std::invalid_argument& e) {
+    throw Input_error(file_name, e.what());
+  }
+  return s;
+}
+
+// Six times the signed volume of a closed polyhedron (fans of its facets).
+Rational six_volume(const Piece& p)
+{
+  Rational sum(0);
+  for (auto f = p.facets_begin(); f != p.facets_end(); ++f) {
+    std::vector<const Point_3*> pts;
+    auto h = f->facet_begin();
+    do pts.push_back(&h->vertex()->point());
+    while (++h != f->facet_begin());
+    const Point_3& a = *pts[0];
+    for (std::size_t i = 1; i + 1 < pts.size(); ++i) {
+      const Point_3 &b = *pts[i], &c = *pts[i + 1];
+      sum += CGAL::determinant(a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z());
+    }
+  }
+  return sum;
+}
+
+} // namespace
+
+Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits)
+{
+  if (mesh.convex) return hull_of(mesh.vertices, file_name);
+
+  // Each shell (connected surface) encloses a volume, whatever its
+  // orientation: CGAL's Nef from a polygon mesh reads it so. The shells do
+  // not cross (check_mesh), so they nest, and the solid is the points inside
+  // an odd number of them: the symmetric difference of their volumes. The
+  // volume test below then holds it to the facets' orientation.
+  std::vector<int> parent(mesh.vertices.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (const auto& t : mesh.triangles) {
+    parent[root(t[1])] = root(t[0]);
+    parent[root(t[2])] = root(t[0]);
+  }
+  std::map<int, std::vector<std::array<int, 3>>> shells;
+  for (const auto& t : mesh.triangles) shells[root(t[0])].push_back(t);
+  Nef nef;
+  bool first = true;
+  for (const auto& [r, triangles] : shells) {
+    Surface surface;
+    std::map<int, Surface::Vertex_index> handle;
+    for (const auto& t : triangles)
+      for (int v : t)
+        if (!handle.count(v)) handle[v] = surface.add_vertex(Point_3(mesh.vertices[v][0], mesh.vertices[v][1], mesh.vertices[v][2]));
+    for (const auto& t : triangles) surface.add_face(handle[t[0]], handle[t[1]], handle[t[2]]);
+    Nef shell(surface);
+    nef = first ? shell : nef ^ shell;
+    first = false;
+  }
+  nef.regularization();
+  CGAL::convex_decomposition_3(nef);
+  Solid u;
+  u.kind = Solid::Kind::Union;
+  Rational total(0);
+  for (auto volume = ++nef.volumes_begin(); volume != nef.volumes_end(); ++volume) {
+    if (!volume->mark()) continue;
+    if (u.children.size() >= limits.pieces)
+      throw Input_error(file_name, "the decomposition has more than the limit of " + std::to_string(limits.pieces) +
+                                       " convex pieces", CLASH4D_EXIT_LIMIT);
+    Piece piece;
+    nef.convert_inner_shell_to_polyhedron(volume->shells_begin(), piece);
+    Rational v = six_volume(piece);
+    total += v < 0 ? -v : v;
+    std::vector<Rational3> points;
+    for (auto p = piece.vertices_begin(); p != piece.vertices_end(); ++p)
+      points.push_back({p->point().x(), p->point().y(), p->point().z()});
+    u.children.push_back(hull_of(points, file_name));
+  }
+  // The pieces fill the solid exactly once: their volumes add up to the
+  // facets' signed volume (shells nested and oriented as a solid's are).
+  if (total / Rational(6) != mesh.volume)
+    throw Input_error(file_name, "the facets do not bound one solid: the solid read from them has volume " +
+                                     to_string(total / Rational(6)) + ", their signed volume is " + to_string(mesh.volume) +
+                                     " (a shell inside out or shells overlapping?)");
+  if (u.children.empty()) throw Input_error(file_name, "the mesh bounds no volume");
+  return u;
+}
+
+Solid read_mesh_solid(const std::string& path, const std::string& file_name, const Mesh_limits& limits)
+{
+  return mesh_solid(check_mesh(read_mesh_file(path, file_name, limits), file_name), file_name, limits);
+}
+
+} // namespace clash4d

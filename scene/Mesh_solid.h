@@ -1,0 +1,22 @@
+// A checked mesh as a solid of the scene (docs/meshes.md): a convex mesh is
+// the hull of its vertices; any other is the exact union of the convex
+// pieces of CGAL's Nef_polyhedron_3 convex_decomposition_3, each the hull of
+// its vertices. Exact throughout (CGAL::Cartesian over the toolkit's Rational).
+#ifndef CLASH4D_SCENE_MESH_SOLID_H
+#define CLASH4D_SCENE_MESH_SOLID_H
+
+#include "scene/Mesh_check.h"
+#include "scene/Scene.h"
+
+namespace clash4d {
+
+// Kind Hull, or Union of Hull children. Throws Input_error with place
+// file_name: exit 3 beyond limits.pieces convex pieces.
+Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits = Mesh_limits());
+
+// read_mesh_file, check_mesh and mesh_solid in turn.
+Solid read_mesh_solid(const std::string& path, const std::string& file_name, const Mesh_limits& limits = Mesh_limits());
+
+} // namespace clash4d
+
+#endif

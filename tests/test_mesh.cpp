@@ -1,0 +1,452 @@
+#define BOOST_TEST_MODULE mesh
+#include <boost/test/unit_test.hpp>
+
+#include "exact/Exact_instantiation.h"
+#include "scene/Input_error.h"
+#include "scene/Json_reader.h"
+#include "scene/Mesh_check.h"
+#include "scene/Mesh_reader.h"
+#include "scene/Mesh_solid.h"
+#include "scene/Number_text.h"
+#include "scene/Scene_reader.h"
+#include "support/Cli_run.h"
+
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <nlohmann/json.hpp>
+
+using namespace clash4d;
+using json = nlohmann::json;
+
+namespace {
+
+const std::string meshes = std::string(CLASH4D_FIXTURES) + "/meshes";
+
+Rational exact(const std::string& text)
+{
+  Number_parse p = parse_number_text(text, true);
+  BOOST_REQUIRE(p.ok);
+  return p.value;
+}
+
+std::string file_text(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The message of the Input_error that f throws ("" when none), with its exit code.
+template <class F>
+std::pair<std::string, int> refusal(F f)
+{
+  try {
+    f();
+  } catch (const Input_error& e) {
+    return {e.format("scene"), e.exit_code()};
+  }
+  return {"", 0};
+}
+
+std::pair<std::string, int> mesh_refusal(const std::string& name, const Mesh_limits& limits = Mesh_limits())
+{
+  return refusal([&] { read_mesh_solid(meshes + "/" + name, name, limits); });
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// One scene: the part (L) at rest and a probe.
+std::string scene_text(const json& part, const json& probe, const std::string& motion)
+{
+  json s = {{"format", "clash4d-scene/1"},
+            {"time", {0, 10}},
+            {"objects", {{{"name", "part"}, {"shape", part}}, {{"name", "probe"}, {"shape", probe}, {"motion", motion}}}}};
+  return s.dump();
+}
+
+struct Answer {
+  bool collide = false;
+  std::string time;   // t* (regularised) or first contact (closed), when colliding
+};
+
+Answer run(const Scene& scene, Semantics semantics)
+{
+  Check_options opts;
+  opts.semantics = semantics;
+  opts.earliest = true;
+  Check_answer a = check_exact(scene, opts);
+  Answer out;
+  out.collide = a.collide;
+  if (a.collide) {
+    BOOST_REQUIRE(a.earliest_pair >= 0);
+    out.time = a.pairs[a.earliest_pair].t_star;
+    BOOST_TEST(a.pairs[a.earliest_pair].witness_verified);
+  }
+  return out;
+}
+
+const std::vector<std::string> l_part_files = {"l_part.off",       "l_part.obj",    "l_part_ascii.stl", "l_part_binary.stl",
+                                               "l_part_ascii.ply", "l_part_le.ply", "l_part_be.ply"};
+
+std::vector<char> binary_stl(const std::vector<std::array<float, 9>>& triangles)
+{
+  std::vector<char> bytes(84, ' ');
+  std::uint32_t n = static_cast<std::uint32_t>(triangles.size());
+  for (int k = 0; k < 4; ++k) bytes[80 + k] = static_cast<char>((n >> (8 * k)) & 0xff);   // little endian
+  for (const auto& t : triangles) {
+    char facet[50] = {};
+    for (int k = 0; k < 9; ++k) {
+      std::uint32_t bits;
+      std::memcpy(&bits, &t[k], 4);
+      for (int b = 0; b < 4; ++b) facet[12 + 4 * k + b] = static_cast<char>((bits >> (8 * b)) & 0xff);
+    }
+    bytes.insert(bytes.end(), facet, facet + 50);
+  }
+  return bytes;
+}
+
+std::string_view view(const std::vector<char>& v) { return std::string_view(v.data(), v.size()); }
+
+// OFF text of boxes [lo, hi]^3 shifted by (dx, dy, dz), each as six outward
+// quadrilaterals (inward when flipped), vertices numbered box by box.
+struct Box {
+  int lo, hi, dx, dy, dz;
+  bool inward;
+};
+std::string boxes_off(const std::vector<Box>& boxes)
+{
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  std::string verts, facets;
+  int base = 0;
+  for (const Box& b : boxes) {
+    for (int i = 0; i < 8; ++i)   // index x + 2y + 4z
+      verts += std::to_string((i & 1 ? b.hi : b.lo) + b.dx) + " " + std::to_string((i & 2 ? b.hi : b.lo) + b.dy) + " " +
+               std::to_string((i & 4 ? b.hi : b.lo) + b.dz) + "\n";
+    for (const auto& q : quads) {
+      facets += "4";
+      for (int k = 0; k < 4; ++k) facets += " " + std::to_string(base + q[b.inward ? 3 - k : k]);
+      facets += "\n";
+    }
+    base += 8;
+  }
+  return "OFF\n" + std::to_string(base) + " " + std::to_string(6 * boxes.size()) + " 0\n" + verts + facets;
+}
+
+Solid off_solid(const std::string& text, const std::string& name)
+{
+  return mesh_solid(check_mesh(read_mesh(text, Mesh_format::Off, name), name), name);
+}
+
+Rational pieces_volume(const Solid& s)
+{
+  // Every piece of these tests is an axis-aligned box: the volume of its points' bounding box.
+  Rational total(0);
+  for (const Solid& c : s.children) {
+    std::array<Rational, 3> lo, hi;
+    for (int k = 0; k < 3; ++k) lo[k] = hi[k] = c.numbers[k];
+    for (std::size_t i = 0; i < c.numbers.size(); ++i) {
+      lo[i % 3] = std::min(lo[i % 3], c.numbers[i]);
+      hi[i % 3] = std::max(hi[i % 3], c.numbers[i]);
+    }
+    total += (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+  }
+  return total;
+}
+
+} // namespace
+
+// The L-shaped part as each mesh file and as CSG gives the hand-derived
+// answers of fixtures/meshes/expected.json, and exactly the CSG's answers.
+BOOST_AUTO_TEST_CASE(l_part_meshes_answer_as_the_csg_part)
+{
+  json expected = json::parse(file_text(meshes + "/expected.json"));
+  json csg = json::parse(R"({"union": [{"block": {"min": [0, 0, 0], "max": [2, 1, 1]}},
+                                         {"block": {"min": [0, 1, 0], "max": [1, 2, 1]}}]})");
+  for (const auto& [name, s] : expected["scenes"].items()) {
+    std::string motion = s.value("motion", "rest");
+    std::string why = name + ": " + s["why"].get<std::string>();
+    Scene csg_scene = read_scene(read_json_text(scene_text(csg, s["probe"], motion)));
+    Answer csg_regular = run(csg_scene, Semantics::regularised), csg_closed = run(csg_scene, Semantics::closed);
+    BOOST_TEST(csg_regular.collide == s["regularised"]["collide"].get<bool>(), "csg " << why);
+    BOOST_TEST(csg_regular.time == s["regularised"].value("earliest", ""), "csg " << why);
+    BOOST_TEST(csg_closed.collide == s["closed"]["collide"].get<bool>(), "csg closed " << why);
+    BOOST_TEST(csg_closed.time == s["closed"].value("first_contact", ""), "csg closed " << why);
+    for (const auto& file : l_part_files) {
+      Scene scene = read_scene(read_json_text(scene_text({{"mesh", file}}, s["probe"], motion)), meshes);
+      Answer regular = run(scene, Semantics::regularised), closed = run(scene, Semantics::closed);
+      BOOST_TEST(regular.collide == csg_regular.collide, file << " " << why);
+      BOOST_TEST(regular.time == csg_regular.time, file << " " << why);
+      BOOST_TEST(closed.collide == csg_closed.collide, file << " closed " << why);
+      BOOST_TEST(closed.time == csg_closed.time, file << " closed " << why);
+      BOOST_TEST(regular.collide == s["regularised"]["collide"].get<bool>(), file << " " << why);
+      BOOST_TEST(regular.time == s["regularised"].value("earliest", ""), file << " " << why);
+      BOOST_TEST(closed.collide == s["closed"]["collide"].get<bool>(), file << " closed " << why);
+      BOOST_TEST(closed.time == s["closed"].value("first_contact", ""), file << " closed " << why);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(every_format_reads_the_same_l_part)
+{
+  Checked_mesh reference = check_mesh(read_mesh_file(meshes + "/l_part.off", "l_part.off"), "l_part.off");
+  BOOST_TEST(reference.vertices.size() == 12u);
+  BOOST_TEST(reference.volume == Rational(3));   // 2 + 1
+  BOOST_TEST(!reference.convex);
+  std::set<std::array<Rational, 3>> points(reference.vertices.begin(), reference.vertices.end());
+  for (const auto& file : l_part_files) {
+    Checked_mesh m = check_mesh(read_mesh_file(meshes + "/" + file, file), file);
+    BOOST_TEST(m.volume == Rational(3), file);
+    BOOST_TEST(!m.convex, file);
+    BOOST_TEST((std::set<std::array<Rational, 3>>(m.vertices.begin(), m.vertices.end()) == points), file);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(non_convex_mesh_is_a_union_of_hulls_convex_one_a_hull)
+{
+  Solid l = read_mesh_solid(meshes + "/l_part.obj", "l_part.obj");
+  BOOST_TEST((l.kind == Solid::Kind::Union));
+  BOOST_TEST(l.children.size() >= 2u);
+  for (const auto& c : l.children) {
+    BOOST_TEST((c.kind == Solid::Kind::Hull));
+    BOOST_TEST(!c.triples.empty());
+    BOOST_TEST(c.constructed.size() == 4 * c.triples.size());
+  }
+  Solid cube = read_mesh_solid(meshes + "/cube.off", "cube.off");
+  BOOST_TEST((cube.kind == Solid::Kind::Hull));
+  BOOST_TEST(cube.numbers.size() == 24u);
+  BOOST_TEST(cube.triples.size() == 6u);   // one triple per facet plane
+  // The same file twice in one scene: one solid, re-pathed.
+  std::string text = scene_text({{"mesh", "l_part.off"}}, {{"mesh", "./l_part.off"}}, "vel 0 0 1");
+  Scene scene = read_scene(read_json_text(text), meshes);
+  BOOST_TEST(scene.objects[1].shape.path == "objects[1].shape.mesh");
+  BOOST_TEST(scene.objects[1].shape.children.size() == scene.objects[0].shape.children.size());
+  BOOST_TEST(scene.objects[1].shape.children[0].path == "objects[1].shape.mesh[0]");
+}
+
+// Shells: separate solids, a cavity, and the shells that do not bound a solid.
+BOOST_AUTO_TEST_CASE(shells_cavities_crossings_and_pinches)
+{
+  // Two separate unit cubes: one mesh, two pieces.
+  Solid two = off_solid(boxes_off({{0, 1, 0, 0, 0, false}, {0, 1, 3, 0, 0, false}}), "two.off");
+  BOOST_TEST((two.kind == Solid::Kind::Union));
+  BOOST_TEST(two.children.size() == 2u);
+  // [0,4]^3 with the cavity [1,3]^3 (an inner shell facing inward): 64 - 8.
+  Solid hollow = off_solid(boxes_off({{0, 4, 0, 0, 0, false}, {1, 3, 0, 0, 0, true}}), "hollow.off");
+  BOOST_TEST((hollow.kind == Solid::Kind::Union));
+  BOOST_TEST(pieces_volume(hollow) == Rational(56));
+  auto refused = [](const std::string& text, const std::string& name) {
+    return refusal([&] { off_solid(text, name); });
+  };
+  // An inward shell that is no cavity: signed volume 8 - 1 > 0, but no solid.
+  auto stray = refused(boxes_off({{0, 2, 0, 0, 0, false}, {0, 1, 3, 0, 0, true}}), "stray.off");
+  BOOST_TEST(stray.second == CLASH4D_EXIT_INVALID);
+  BOOST_TEST(contains(stray.first, "stray.off: the facets do not bound one solid"), stray.first);
+  // Two overlapping cubes in one file: the surfaces cross.
+  auto crossing = refused(boxes_off({{0, 2, 0, 0, 0, false}, {0, 2, 1, 1, 1, false}}), "crossing.off");
+  BOOST_TEST(crossing.second == CLASH4D_EXIT_INVALID);
+  BOOST_TEST(contains(crossing.first, "crossing.off: facet "), crossing.first);
+  BOOST_TEST(contains(crossing.first, ": the surface intersects itself"), crossing.first);
+  // Two cubes sharing only the corner (1, 1, 1).
+  auto pinched = refused(boxes_off({{0, 1, 0, 0, 0, false}, {0, 1, 1, 1, 1, false}}), "pinched.off");
+  BOOST_TEST(pinched.second == CLASH4D_EXIT_INVALID);
+  BOOST_TEST(contains(pinched.first, "pinched.off: vertex (1, 1, 1): the surface is pinched there: 2 separate fans"), pinched.first);
+}
+
+// Binary STL: every float32 is the dyadic rational it encodes. The expected
+// values are Python's fractions.Fraction of the same float32 values.
+BOOST_AUTO_TEST_CASE(binary_stl_floats_are_exact)
+{
+  float a = 0.1f, b = 1e-7f, c = 3.3f, d = -2.5f, e = 1e-40f, f = 16777217.0f;
+  std::vector<char> bytes = binary_stl({{a, b, c, d, e, f, 0, 0, 0}});
+  Mesh m = read_mesh(view(bytes), Mesh_format::Stl, "floats.stl");
+  BOOST_REQUIRE(m.vertices.size() == 3u);
+  BOOST_TEST(m.vertices[0][0] == exact("13421773/134217728"));
+  BOOST_TEST(m.vertices[0][1] == exact("14073749/140737488355328"));
+  BOOST_TEST(m.vertices[0][2] == exact("13841203/4194304"));
+  BOOST_TEST(m.vertices[1][0] == exact("-5/2"));
+  BOOST_TEST(m.vertices[1][1] == exact("35681/356811923176489970264571492362373784095686656"));   // subnormal
+  BOOST_TEST(m.vertices[1][2] == exact("16777216"));   // 16777217 rounds to 2^24 in float32
+  BOOST_TEST(CGAL::is_zero(m.vertices[2][0]));
+  // Not the decimal the float was written from.
+  BOOST_TEST(m.vertices[0][0] != exact("0.1"));
+  // The bits themselves (sign, biased exponent, fraction), taken apart independently.
+  BOOST_TEST(exact_float32(0x3f800000u) == Rational(1));
+  BOOST_TEST(exact_float32(0x80000001u) == -exact("1/713623846352979940529142984724747568191373312"));   // -2^-149
+  BOOST_TEST(exact_float64(0x3fb999999999999aull) == exact("3602879701896397/36028797018963968"));      // 0.1
+}
+
+BOOST_AUTO_TEST_CASE(binary_ply_doubles_are_exact)
+{
+  // A big-endian PLY tetrahedron with 0.1 (double) on each axis.
+  std::string head = "ply\nformat binary_big_endian 1.0\nelement vertex 4\nproperty double x\nproperty double y\n"
+                     "property double z\nelement face 4\nproperty list uchar uint vertex_indices\nend_header\n";
+  std::string bytes = head;
+  auto put64 = [&](std::uint64_t u) { for (int k = 7; k >= 0; --k) bytes += static_cast<char>((u >> (8 * k)) & 0xff); };
+  auto put32 = [&](std::uint32_t u) { for (int k = 3; k >= 0; --k) bytes += static_cast<char>((u >> (8 * k)) & 0xff); };
+  const std::uint64_t tenth = 0x3fb999999999999aull;
+  std::uint64_t v[4][3] = {{0, 0, 0}, {tenth, 0, 0}, {0, tenth, 0}, {0, 0, tenth}};
+  for (auto& p : v) for (auto x : p) put64(x);
+  std::uint32_t f[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  for (auto& t : f) { bytes += '\3'; for (auto i : t) put32(i); }
+  Mesh m = read_mesh(bytes, Mesh_format::Ply, "tenth.ply");
+  BOOST_TEST(m.vertices[1][0] == exact("3602879701896397/36028797018963968"));
+  Checked_mesh c = check_mesh(m, "tenth.ply");
+  BOOST_TEST(c.convex);
+  BOOST_TEST(c.volume == exact("3602879701896397/36028797018963968") * exact("3602879701896397/36028797018963968") *
+                             exact("3602879701896397/36028797018963968") / Rational(6));
+}
+
+BOOST_AUTO_TEST_CASE(decimal_text_is_exact)
+{
+  for (std::string file : {"tenth.off", "tenth.obj"}) {
+    Mesh m = read_mesh_file(meshes + "/" + file, file);
+    BOOST_TEST(m.vertices[1][0] == exact("1/10"), file);
+    BOOST_TEST(m.vertices[3][2] == exact("1/10"), file);
+    Checked_mesh c = check_mesh(m, file);
+    BOOST_TEST(c.convex);
+    BOOST_TEST(c.volume == exact("1/6000"), file);   // (1/10)^3 / 6
+  }
+  // Forms mesh writers use beyond JSON's grammar.
+  std::string obj = "v +1. .5 -0.25e1\nv 1E+0 007 5.e-1\nv 0 0 0\nf 1 2 3\n";
+  Mesh m = read_mesh(obj, Mesh_format::Obj, "forms.obj");
+  BOOST_TEST(m.vertices[0][0] == Rational(1));
+  BOOST_TEST(m.vertices[0][1] == exact("1/2"));
+  BOOST_TEST(m.vertices[0][2] == exact("-5/2"));
+  BOOST_TEST(m.vertices[1][1] == Rational(7));
+  BOOST_TEST(m.vertices[1][2] == exact("1/2"));
+}
+
+// The three refusals of the issue, then the others.
+BOOST_AUTO_TEST_CASE(hole_flipped_and_non_manifold_are_refused)
+{
+  auto hole = mesh_refusal("hole.off");
+  BOOST_TEST(hole.second == CLASH4D_EXIT_INVALID);
+  BOOST_TEST(contains(hole.first, "hole.off: facet 0: edge not shared with any other facet: the mesh has a hole"), hole.first);
+  auto flipped = mesh_refusal("flipped.off");
+  BOOST_TEST(flipped.second == CLASH4D_EXIT_INVALID);
+  BOOST_TEST(contains(flipped.first, "flipped.off: facet 3: oriented against its neighbours across 4 of its edges"), flipped.first);
+  auto nonmanifold = mesh_refusal("nonmanifold.off");
+  BOOST_TEST(nonmanifold.second == CLASH4D_EXIT_INVALID);
+  BOOST_TEST(contains(nonmanifold.first, "nonmanifold.off: facet 3: edge shared by 4 facets (3, 5, 8, 10)"), nonmanifold.first);
+}
+
+BOOST_AUTO_TEST_CASE(other_bad_meshes_are_refused_with_their_place)
+{
+  struct Case {
+    const char* file;
+    const char* message;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"index_out_of_range.off", "index_out_of_range.off: line 15: vertex index 8 out of range (the file has 8 vertices"},
+           {"bad_token.obj", "bad_token.obj: line 3: 'x' is not a number"},
+           {"empty.stl", "empty.stl: empty file"},
+           {"inside_out.off", "inside_out.off: the facets are oriented inward (signed volume -1 < 0)"}}) {
+    auto r = mesh_refusal(c.file);
+    BOOST_TEST(r.second == CLASH4D_EXIT_INVALID, c.file);
+    BOOST_TEST(contains(r.first, c.message), r.first);
+  }
+  auto refused = [](const std::string& text, Mesh_format format, const std::string& name) {
+    return refusal([&] { check_mesh(read_mesh(text, format, name), name); });
+  };
+  // Degenerate facets.
+  auto flat = refused("OFF 4 4 0  0 0 0  1 0 0  2 0 0  0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n", Mesh_format::Off, "flat.off");
+  BOOST_TEST(contains(flat.first, "flat.off: facet 0: zero area (its vertices are collinear)"), flat.first);
+  auto repeated = refused("OFF 4 1 0  0 0 0  1 0 0  0 1 0  1 0 0\n4 0 1 2 3\n", Mesh_format::Off, "repeated.off");
+  BOOST_TEST(contains(repeated.first, "repeated.off: facet 0: vertex 3 (1, 0, 0) repeats an earlier vertex"), repeated.first);
+  auto skew = refused("OFF 4 1 0  0 0 0  1 0 0  1 1 1  0 1 0\n4 0 1 2 3\n", Mesh_format::Off, "skew.off");
+  BOOST_TEST(contains(skew.first, "skew.off: facet 0: not planar"), skew.first);
+  auto obj_zero = refused("v 0 0 0\nf 0 1 2\n", Mesh_format::Obj, "zero.obj");
+  BOOST_TEST(contains(obj_zero.first, "zero.obj: line 2: vertex index 0"), obj_zero.first);
+  auto ascii = refused("solid x\nfacet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\n", Mesh_format::Stl, "short.stl");
+  BOOST_TEST(contains(ascii.first, "short.stl: line 6: expected \"vertex\", found 'endloop'"), ascii.first);
+  BOOST_TEST(contains(refused("", Mesh_format::Off, "e.off").first, "e.off: empty file"));
+  BOOST_TEST(contains(refused("ply\nformat ascii 1.0\nend_header\n", Mesh_format::Ply, "e.ply").first, "e.ply: no facets"));
+  BOOST_TEST(contains(refusal([] { mesh_format_of("part.step"); }).first, "unknown mesh format '.step'"));
+}
+
+BOOST_AUTO_TEST_CASE(bad_binary_stl_is_refused)
+{
+  float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  std::vector<char> two = binary_stl({{0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 0, 0, 1, 0, nan, 0, 1}});
+  auto r = refusal([&] { read_mesh(view(two), Mesh_format::Stl, "nan.stl"); });
+  BOOST_TEST(r.second == CLASH4D_EXIT_INVALID);
+  BOOST_TEST(contains(r.first, "nan.stl: facet 1: vertex 2 coordinate x is NaN"), r.first);
+  std::vector<char> infinite = binary_stl({{0, 0, 0, 1, inf, 0, 0, 1, 0}});
+  BOOST_TEST(contains(refusal([&] { read_mesh(view(infinite), Mesh_format::Stl, "inf.stl"); }).first,
+                      "inf.stl: facet 0: vertex 1 coordinate y is infinite"));
+  // Truncated: the header says 2 facets, one is there.
+  two.resize(two.size() - 50);
+  two[80] = 2;
+  r = refusal([&] { read_mesh(view(two), Mesh_format::Stl, "cut.stl"); });
+  BOOST_TEST(r.second == CLASH4D_EXIT_INVALID);
+  BOOST_TEST(contains(r.first, "cut.stl: binary STL of 2 facets should have 84 + 50 * 2 = 184 bytes, the file has 134 (truncated: it ends inside facet 1)"), r.first);
+  std::vector<char> header(60, 'x');
+  BOOST_TEST(contains(refusal([&] { read_mesh(view(header), Mesh_format::Stl, "tiny.stl"); }).first, "tiny.stl: not an STL file"));
+}
+
+BOOST_AUTO_TEST_CASE(limits_give_exit_3)
+{
+  // A binary STL header claiming 2^31 facets, in an 84-byte file.
+  std::vector<char> huge = binary_stl({});
+  huge[83] = static_cast<char>(0x80);
+  auto r = refusal([&] { read_mesh(view(huge), Mesh_format::Stl, "huge.stl"); });
+  BOOST_TEST(r.second == CLASH4D_EXIT_LIMIT);
+  BOOST_TEST(contains(r.first, "huge.stl: 2147483648 facets is more than the limit of 100000"), r.first);
+  // Claimed counts in text headers are refused before anything is read.
+  r = refusal([] { read_mesh("OFF\n999999999 1 0\n", Mesh_format::Off, "big.off"); });
+  BOOST_TEST(r.second == CLASH4D_EXIT_LIMIT);
+  BOOST_TEST(contains(r.first, "big.off: line 2: 999999999 vertices is more than the limit of 100000"), r.first);
+  r = refusal([] { read_mesh("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nelement face 4000000\n"
+                             "property list uchar int vertex_indices\nend_header\n", Mesh_format::Ply, "big.ply"); });
+  BOOST_TEST(r.second == CLASH4D_EXIT_LIMIT);
+  // Smaller limits, injected.
+  Mesh_limits small;
+  small.facets = 5;
+  r = mesh_refusal("l_part_binary.stl", small);
+  BOOST_TEST(r.second == CLASH4D_EXIT_LIMIT);
+  BOOST_TEST(contains(r.first, "l_part_binary.stl: 20 facets is more than the limit of 5"), r.first);
+  BOOST_TEST(mesh_refusal("l_part.obj", small).second == CLASH4D_EXIT_LIMIT);
+  small = Mesh_limits();
+  small.vertices = 11;
+  BOOST_TEST(mesh_refusal("l_part_ascii.ply", small).second == CLASH4D_EXIT_LIMIT);
+  small = Mesh_limits();
+  small.file_bytes = 100;
+  r = mesh_refusal("l_part_ascii.stl", small);
+  BOOST_TEST(r.second == CLASH4D_EXIT_LIMIT);
+  BOOST_TEST(contains(r.first, "is larger than the limit of 100 bytes"), r.first);
+  small = Mesh_limits();
+  small.pieces = 1;
+  r = mesh_refusal("l_part.off", small);
+  BOOST_TEST(r.second == CLASH4D_EXIT_LIMIT);
+  BOOST_TEST(contains(r.first, "l_part.off: the decomposition has more than the limit of 1 convex pieces"), r.first);
+  BOOST_TEST(mesh_refusal("cube.off", small).second == 0);   // convex: one hull, no decomposition
+}
+
+// Through the command line, as a user runs it.
+BOOST_AUTO_TEST_CASE(cli_checks_mesh_scenes_and_reports_bad_meshes)
+{
+  Cli_run ok = run_clash4d({"check", meshes + "/scene_l_part.json"});
+  BOOST_TEST(ok.status == 1, ok.out << ok.err);
+  Cli_run earliest = run_clash4d({"check", meshes + "/scene_l_part.json", "--earliest", "--json"});
+  BOOST_TEST(earliest.status == 1, earliest.err);
+  BOOST_TEST(contains(earliest.out, "\"1/4\""), earliest.out);
+  Cli_run bad = run_clash4d({"check", meshes + "/scene_hole.json"});
+  BOOST_TEST(bad.status == 2);
+  BOOST_TEST(contains(bad.err, "scene_hole.json: objects[1].shape.mesh: hole.off: facet 0: edge not shared with any other facet"), bad.err);
+  Cli_run missing = run_clash4d({"validate", meshes + "/scene_missing.json"});
+  BOOST_TEST(missing.status == 2);
+  BOOST_TEST(contains(missing.err, "objects[0].shape.mesh: no_such_part.stl: cannot open the mesh file"), missing.err);
+  Cli_run valid = run_clash4d({"validate", meshes + "/scene_l_part.json"});
+  BOOST_TEST(valid.status == 0, valid.err);
+}
+
+BOOST_AUTO_TEST_CASE(mesh_key_is_strict)
+{
+  auto r = refusal([] { read_scene(read_json_text(scene_text({{"mesh", 3}}, {{"mesh", "x.off"}}, "rest"))); });
+  BOOST_TEST(contains(r.first, "objects[0].shape.mesh: expected a string"), r.first);
+  r = refusal([] { read_scene(read_json_text(scene_text({{"mesh", "cube.off"}, {"scale", 2}}, {{"mesh", "x.off"}}, "rest"))); });
+  BOOST_TEST(contains(r.first, "unknown key \"scale\""), r.first);
+  r = refusal([] { read_scene(read_json_text(scene_text({{"sphere", 1}}, {{"mesh", "x.off"}}, "rest"))); });
+  BOOST_TEST(contains(r.first, "hull, mesh, union"), r.first);
+}
