@@ -344,9 +344,9 @@ BOOST_AUTO_TEST_CASE(report_counts_skipped_apart)
   Scene difference = fixture("contact/difference_dangling_face_touch.json");
   Scene touch = fixture("contact/hull_face_touch.json");
   Scene miss = fixture("found/fcl_contact_near_miss_reported_as_collision.json");
-  write_report({{"difference.json", difference, Comparison::from_json(compare_with_fcl(difference, "difference.json"))},
-                {"touch.json", touch, Comparison::from_json(compare_with_fcl(touch, "touch.json"))},
-                {"miss.json", miss, Comparison::from_json(compare_with_fcl(miss, "miss.json"))}},
+  write_report({{"difference.json", difference, Comparison::from_json(compare_with_fcl(difference, "difference.json")), ""},
+                {"touch.json", touch, Comparison::from_json(compare_with_fcl(touch, "touch.json")), ""},
+                {"miss.json", miss, Comparison::from_json(compare_with_fcl(miss, "miss.json")), ""}},
                dir.string());
   std::ifstream in(dir / "report.json");
   json r = json::parse(in);

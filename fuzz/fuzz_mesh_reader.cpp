@@ -1,0 +1,34 @@
+// libFuzzer target: the mesh readers (scene/Mesh_reader: OFF, OBJ, STL ASCII
+// and binary, PLY), their checks (scene/Mesh_check) and the solid made of a
+// mesh (scene/Mesh_solid: a hull, or the union of a Nef decomposition).
+// The first byte picks the format, the rest is the file. Bad input must end
+// in Input_error with exit 2 or 3; anything else escaping (exit 4 included:
+// CGAL failing inside), a crash, a leak or a hang is a finding.
+#include "scene/Input_error.h"
+#include "scene/Mesh_check.h"
+#include "scene/Mesh_reader.h"
+#include "scene/Mesh_solid.h"
+#include <cstdint>
+#include <cstdlib>
+#include <string_view>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  using namespace clash4d;
+  if (size == 0) return 0;
+  static const Mesh_format formats[] = {Mesh_format::Off, Mesh_format::Obj, Mesh_format::Stl, Mesh_format::Ply};
+  Mesh_format format = formats[data[0] % 4];
+  std::string_view bytes(reinterpret_cast<const char*>(data + 1), size - 1);
+  // Small limits keep one input's decomposition short; the limits' own code
+  // is what is fuzzed, not their size.
+  Mesh_limits limits;
+  limits.facets = limits.vertices = 400;
+  limits.pieces = 100;
+  try {
+    Checked_mesh mesh = check_mesh(read_mesh(bytes, format, "fuzz", limits), "fuzz");
+    mesh_solid(mesh, "fuzz", limits);
+  } catch (const Input_error& e) {
+    if (e.exit_code() != CLASH4D_EXIT_INVALID && e.exit_code() != CLASH4D_EXIT_LIMIT) std::abort();
+  }
+  return 0;
+}
