@@ -179,6 +179,7 @@ public:
   // The scene in the file format, every number an exact string.
   std::string to_json() const;
 
+  // The pipeline's scene: the library's own use (its type is not public).
   struct Impl;
   const Impl& impl() const { return *impl_; }
 
