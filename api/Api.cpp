@@ -1,0 +1,469 @@
+// The public API (clash4d/clash4d.h) on the pipeline: scenes are written in
+// the scene format and read by scene/Scene_reader.h, check runs the
+// instantiation the command line runs (exact/, float/), compare runs
+// compare/Comparer.h; answers are converted here, at the edge, from the
+// pipeline's text answers (check/Check_answer.h) to exact api::Rational.
+// Inside namespace clash4d::api the public names hide the pipeline's
+// (Rational, Scene, ...); the pipeline's are written in::Name.
+#include "clash4d/clash4d.h"
+
+#include "compare/Comparer.h"
+#include "exact/Exact_instantiation.h"
+#include "float/Double_instantiation.h"
+#include "numbers/Rational.h"
+#include "scene/Input_error.h"
+#include "scene/Json_reader.h"
+#include "scene/Number_text.h"
+#include "scene/Scene_reader.h"
+#include "scene/Scene_writer.h"
+
+#include <nlohmann/json.hpp>
+#include <new>
+
+namespace clash4d {
+namespace api {
+namespace in = ::clash4d;
+
+#ifndef CLASH4D_VERSION
+#define CLASH4D_VERSION "0.1.0"
+#endif
+
+const char* version() { return CLASH4D_VERSION; }
+
+// ---------------------------------------------------------------- numbers
+
+namespace {
+
+in::Rational internal(const Rational& r) { return in::Rational(r.to_string()); }
+
+// Sets num and den from an exact rational in lowest terms.
+void split(const in::Rational& q, std::string& num, std::string& den)
+{
+  std::string text = in::to_string(q);
+  auto slash = text.find('/');
+  num = text.substr(0, slash);
+  den = slash == std::string::npos ? "1" : text.substr(slash + 1);
+}
+
+Rational external(const in::Rational& q)
+{
+  return Rational(in::to_string(q));
+}
+
+} // namespace
+
+Rational::Rational() = default;
+
+Rational::Rational(long long n) : num_(std::to_string(n)) {}
+
+Rational::Rational(long long p, long long q)
+{
+  if (q == 0) throw std::invalid_argument("clash4d::api::Rational: zero denominator");
+  in::Rational r(p);
+  r /= in::Rational(q);
+  split(r, num_, den_);
+}
+
+Rational::Rational(const std::string& text)
+{
+  in::Number_parse n = in::parse_number_text(text, true);
+  if (!n.ok) throw std::invalid_argument("not an exact number: \"" + text + "\": " + n.error);
+  split(n.value, num_, den_);
+}
+
+std::string Rational::to_string() const { return den_ == "1" ? num_ : num_ + "/" + den_; }
+
+double Rational::to_double() const { return in::round_to_nearest(internal(*this)); }
+
+bool operator==(const Rational& a, const Rational& b)
+{
+  return a.numerator() == b.numerator() && a.denominator() == b.denominator();   // lowest terms
+}
+
+bool operator<(const Rational& a, const Rational& b) { return internal(a) < internal(b); }
+
+Rational operator+(const Rational& a, const Rational& b) { return external(internal(a) + internal(b)); }
+Rational operator-(const Rational& a, const Rational& b) { return external(internal(a) - internal(b)); }
+Rational operator*(const Rational& a, const Rational& b) { return external(internal(a) * internal(b)); }
+Rational operator-(const Rational& a) { return external(-internal(a)); }
+
+Rational operator/(const Rational& a, const Rational& b)
+{
+  if (b == Rational(0)) throw std::domain_error("clash4d::api::Rational: division by zero");
+  return external(internal(a) / internal(b));
+}
+
+// ---------------------------------------------------------------- errors
+
+Input_error::Input_error(std::string file, std::string place, std::string message, int exit_code)
+  : std::runtime_error(file + ": " + (place.empty() ? "" : place + ": ") + message),
+    file_(std::move(file)), place_(std::move(place)), message_(std::move(message)), exit_code_(exit_code) {}
+
+namespace {
+
+// Runs f, turning the pipeline's input failures into api::Input_error as the
+// command line turns them into messages and exit statuses (cli/Commands.cpp).
+template <class F>
+auto guarded(const std::string& file, F f) -> decltype(f())
+{
+  try {
+    return f();
+  } catch (const in::Input_error& e) {
+    throw Input_error(file, e.place(), e.what(), e.exit_code());
+  } catch (const std::range_error& e) {
+    throw Input_error(file, "", std::string(e.what()) + " (the double instantiation cannot read this scene)",
+                      exit_invalid);
+  } catch (const std::bad_alloc&) {
+    throw Input_error(file, "", "out of memory", exit_limit);
+  }
+}
+
+} // namespace
+
+// ---------------------------------------------------------------- scenes
+
+namespace {
+
+std::string quoted(const std::string& s) { return nlohmann::json(s).dump(); }
+std::string number(const Rational& r) { return quoted(r.to_string()); }
+
+template <class Seq>
+std::string numbers(const Seq& xs)
+{
+  std::string out = "[";
+  for (const auto& x : xs) out += (out.size() > 1 ? ", " : "") + number(x);
+  return out + "]";
+}
+
+template <class Seq, class Each>
+std::string list(const Seq& xs, Each each)
+{
+  std::string out = "[";
+  bool first = true;
+  for (const auto& x : xs) {
+    out += (first ? "" : ", ") + each(x);
+    first = false;
+  }
+  return out + "]";
+}
+
+std::string solids(const std::vector<Solid>& xs)
+{
+  return list(xs, [](const Solid& s) { return s.json(); });
+}
+
+} // namespace
+
+Solid Solid::halfspace(const Plane& h) { return Solid("{\"halfspace\": " + numbers(h) + "}"); }
+
+Solid Solid::block(const Vec3& min, const Vec3& max)
+{
+  return Solid("{\"block\": {\"min\": " + numbers(min) + ", \"max\": " + numbers(max) + "}}");
+}
+
+Solid Solid::convex(const std::vector<Plane>& halfspaces)
+{
+  return Solid("{\"convex\": " + list(halfspaces, [](const Plane& h) { return numbers(h); }) + "}");
+}
+
+Solid Solid::prism(const std::vector<std::array<Rational, 2>>& base, const Rational& z0, const Rational& z1)
+{
+  return Solid("{\"prism\": {\"base\": " + list(base, [](const std::array<Rational, 2>& p) { return numbers(p); }) +
+               ", \"z\": " + numbers(std::array<Rational, 2>{z0, z1}) + "}}");
+}
+
+Solid Solid::hull(const std::vector<Vec3>& points)
+{
+  return Solid("{\"hull\": " + list(points, [](const Vec3& p) { return numbers(p); }) + "}");
+}
+
+Solid Solid::unite(const std::vector<Solid>& xs) { return Solid("{\"union\": " + solids(xs) + "}"); }
+
+Solid Solid::intersection(const std::vector<Solid>& xs) { return Solid("{\"intersection\": " + solids(xs) + "}"); }
+
+Solid Solid::difference(const Solid& from, const std::vector<Solid>& removed)
+{
+  std::vector<Solid> all{from};
+  all.insert(all.end(), removed.begin(), removed.end());
+  return Solid("{\"difference\": " + solids(all) + "}");
+}
+
+Solid Solid::translate(const Vec3& d, const Solid& solid)
+{
+  return Solid("{\"translate\": " + numbers(d) + ", \"solid\": " + solid.json() + "}");
+}
+
+Solid Solid::rotate(const std::array<Rational, 4>& q, const Solid& solid)
+{
+  return Solid("{\"rotate\": " + numbers(q) + ", \"solid\": " + solid.json() + "}");
+}
+
+Solid Solid::from_json(const std::string& json) { return Solid(json); }
+
+Motion Motion::rest() { return Motion("rest"); }
+
+Motion Motion::steady(const Vec3& v)
+{
+  return Motion("vel " + v[0].to_string() + " " + v[1].to_string() + " " + v[2].to_string());
+}
+
+Motion Motion::piecewise(const std::vector<Vec3>& velocities, const std::vector<Rational>& times)
+{
+  if (velocities.size() != times.size() + 1)
+    throw std::invalid_argument("clash4d::api::Motion::piecewise: needs one velocity more than times");
+  std::string text;
+  for (std::size_t i = 0; i < velocities.size(); ++i) {
+    if (i > 0) text += " until " + times[i - 1].to_string() + " ";
+    text += steady(velocities[i]).text();
+  }
+  return Motion(text);
+}
+
+Motion Motion::from_text(const std::string& robmod) { return Motion(robmod); }
+
+struct Scene::Impl {
+  std::string file;
+  in::Scene scene;
+};
+
+Scene Scene::read_file(const std::string& path)
+{
+  return guarded(path, [&] {
+    return Scene(std::make_shared<const Impl>(Impl{path, in::read_scene_file(path)}));
+  });
+}
+
+Scene Scene::parse(const std::string& json, const std::string& file)
+{
+  return guarded(file, [&] {
+    return Scene(std::make_shared<const Impl>(Impl{file, in::read_scene(in::read_json_text(json))}));
+  });
+}
+
+const std::string& Scene::file() const { return impl_->file; }
+const std::string& Scene::name() const { return impl_->scene.name; }
+Rational Scene::t_lo() const { return external(impl_->scene.t_lo); }
+Rational Scene::t_hi() const { return external(impl_->scene.t_hi); }
+
+std::vector<std::string> Scene::object_names() const
+{
+  std::vector<std::string> names;
+  for (const auto& o : impl_->scene.objects) names.push_back(o.name);
+  return names;
+}
+
+std::string Scene::to_json() const { return in::write_scene(impl_->scene); }
+
+Scene_builder::Scene_builder(std::string name, const Rational& t_lo, const Rational& t_hi)
+  : name_(std::move(name)), t_lo_(t_lo), t_hi_(t_hi) {}
+
+Scene_builder& Scene_builder::object(const std::string& name, const Solid& shape, const Motion& motion)
+{
+  objects_.push_back("{\"name\": " + quoted(name) + ", \"shape\": " + shape.json() + ", \"motion\": " +
+                     quoted(motion.text()) + "}");
+  return *this;
+}
+
+Scene_builder& Scene_builder::ignore(const std::string& a, const std::string& b)
+{
+  ignore_.push_back("[" + quoted(a) + ", " + quoted(b) + "]");
+  return *this;
+}
+
+std::string Scene_builder::json() const
+{
+  auto lines = [](const std::vector<std::string>& xs) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < xs.size(); ++i) out += (i ? ",\n    " : "\n    ") + xs[i];
+    return out + (xs.empty() ? "]" : "\n  ]");
+  };
+  std::string text = "{\n  \"format\": \"clash4d-scene/1\",\n  \"name\": " + quoted(name_) + ",\n  \"time\": " +
+                     numbers(std::array<Rational, 2>{t_lo_, t_hi_}) + ",\n  \"objects\": " + lines(objects_);
+  if (!ignore_.empty()) text += ",\n  \"ignore\": " + lines(ignore_);
+  return text + "\n}\n";
+}
+
+Scene Scene_builder::build() const { return Scene::parse(json(), "<built scene>"); }
+
+void validate(const std::string& path) { Scene::read_file(path); }
+
+// ---------------------------------------------------------------- check
+
+const char* name(Number n)
+{
+  switch (n) {
+  case Number::exact: return "exact";
+  case Number::rational: return "rational";
+  case Number::double_: return "double";
+  }
+  return "?";
+}
+
+const char* name(Semantics s) { return s == Semantics::closed ? "closed" : "regularised"; }
+
+Number number_from_name(const std::string& name)
+{
+  if (name == "exact") return Number::exact;
+  if (name == "rational") return Number::rational;
+  if (name == "double") return Number::double_;
+  throw std::invalid_argument("unknown number \"" + name + "\": exact, rational or double");
+}
+
+Semantics semantics_from_name(const std::string& name)
+{
+  if (name == "regularised") return Semantics::regularised;
+  if (name == "closed") return Semantics::closed;
+  throw std::invalid_argument("unknown semantics \"" + name + "\": regularised or closed");
+}
+
+const Colliding_pair* Check_result::reported() const
+{
+  if (reported_index < 0 || reported_index >= static_cast<int>(pairs.size())) return nullptr;
+  return &pairs[reported_index];
+}
+
+namespace {
+
+in::Semantics internal(Semantics s) { return s == Semantics::closed ? in::Semantics::closed : in::Semantics::regularised; }
+
+// A number of an answer: exact text, or a double's shortest decimal.
+Rational answer_number(const std::string& text)
+{
+  in::Number_parse n = in::parse_number_text(text, true);
+  if (!n.ok) throw std::runtime_error("clash4d: the answer holds \"" + text + "\", not a finite number");
+  return external(n.value);
+}
+
+template <std::size_t N>
+std::array<Rational, N> answer_point(const std::array<std::string, 4>& p)
+{
+  std::array<Rational, N> out;
+  for (std::size_t i = 0; i < N; ++i) out[i] = answer_number(p[i]);
+  return out;
+}
+
+std::array<Point4, 2> answer_cells(const std::array<std::array<std::string, 4>, 2>& c)
+{
+  return {answer_point<4>(c[0]), answer_point<4>(c[1])};
+}
+
+Colliding_pair answer_pair(const in::Pair_answer& p, Semantics semantics)
+{
+  Colliding_pair out;
+  out.a = p.a;
+  out.b = p.b;
+  out.witness = answer_point<4>(p.witness);
+  out.witness_verified = p.witness_verified;
+  if (semantics == Semantics::closed) out.witness_inside = answer_cells(p.witness_cells);
+  if (p.earliest) {
+    Earliest e;
+    e.t = answer_number(p.t_star);
+    e.point = answer_point<3>(p.contact);
+    e.at_start = p.at_start;
+    e.inside = answer_cells(p.contact_cells);
+    out.earliest = e;
+  }
+  return out;
+}
+
+} // namespace
+
+Check_result check(const Scene& scene, const Check_options& options)
+{
+  if (options.tolerance != 0 && options.number != Number::double_)
+    throw std::invalid_argument("clash4d::api::check: a tolerance applies to Number::double_ only");
+  if (!(options.tolerance >= 0)) throw std::invalid_argument("clash4d::api::check: the tolerance must be >= 0");
+  in::Check_options o;
+  o.all_pairs = options.all_pairs;
+  o.earliest = options.earliest;
+  o.semantics = internal(options.semantics);
+  const in::Scene& s = scene.impl().scene;
+  in::Check_answer a = guarded(scene.file(), [&] {
+    switch (options.number) {
+    case Number::exact: return in::check_exact(s, o);
+    case Number::rational: return in::check_rational(s, o);
+    case Number::double_: break;
+    }
+    return in::check_double(s, options.tolerance, o);
+  });
+  Check_result r;
+  r.number = options.number;
+  r.semantics = options.semantics;
+  r.collide = a.collide;
+  for (const auto& p : a.pairs) r.pairs.push_back(answer_pair(p, options.semantics));
+  if (const in::Pair_answer* main = a.reported()) r.reported_index = static_cast<int>(main - a.pairs.data());
+  return r;
+}
+
+// ---------------------------------------------------------------- compare
+
+namespace {
+
+std::optional<Rational> maybe_number(const std::string& text)
+{
+  if (text.empty()) return std::nullopt;
+  in::Number_parse n = in::parse_number_text(text, true);
+  if (!n.ok) return std::nullopt;
+  return external(n.value);
+}
+
+std::optional<Located> located(const std::optional<in::Located>& l)
+{
+  if (!l) return std::nullopt;
+  Located out;
+  out.objects = l->objects;
+  if (l->point) {
+    Point4 p;
+    bool ok = true;
+    for (int i = 0; i < 4 && ok; ++i) {
+      std::optional<Rational> x = maybe_number((*l->point)[i]);
+      if (x) p[i] = *x; else ok = false;
+    }
+    if (ok) out.point = p;
+  }
+  out.t = maybe_number(l->t);
+  return out;
+}
+
+} // namespace
+
+Comparison compare(const Scene& scene, const Compare_options& options)
+{
+  in::Compare_options o;
+  o.semantics = internal(options.semantics);
+  o.tolerances = options.tolerances;
+  o.earliest = options.earliest;
+  o.rounded = options.rounded;
+  o.fcl = options.fcl;
+  o.bullet = options.bullet;
+  in::Comparison c = guarded(scene.file(), [&] { return in::compare_scene(scene.impl().scene, scene.file(), o); });
+  Comparison out;
+  out.file = c.file;
+  out.name = c.name;
+  out.closed_touch = c.closed_touch;
+  for (const in::Subject_row& s : c.subjects) {
+    Subject_row row;
+    row.subject = s.subject;
+    row.semantics = s.semantics;
+    row.tolerance = s.tolerance;
+    row.reference = s.reference;
+    row.ok = s.ok;
+    row.error = s.error;
+    row.skipped = s.skipped;
+    row.collide = s.collide;
+    row.witness = located(s.witness);
+    row.witness_valid = s.witness_valid;
+    row.earliest = located(s.earliest);
+    row.t_error = s.t_error;
+    row.agrees = s.agrees;
+    row.cause = s.cause;
+    out.subjects.push_back(row);
+  }
+  for (const in::Disagreement& d : c.disagreements)
+    out.disagreements.push_back({d.subject, d.cause, d.detail, d.semantics});
+  out.json = c.to_json().dump(2);
+  return out;
+}
+
+} // namespace api
+} // namespace clash4d

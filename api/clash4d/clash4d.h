@@ -1,0 +1,340 @@
+// clash4d's public C++ API: exact collision detection for moving polyhedral
+// CSG solids (Cameron's four-dimensional intersection testing).
+//
+//   find_package(clash4d)                                  # CMake
+//   target_link_libraries(app PRIVATE clash4d::clash4d)
+//   #include <clash4d/clash4d.h>
+//
+// This header needs only the C++17 standard library: CGAL, GMP, TBB and the
+// rest stay inside libclash4d. Everything is in namespace clash4d::api.
+//
+//   namespace c4 = clash4d::api;
+//   c4::Scene_builder b("approach", 0, 10);
+//   b.object("box", c4::Solid::block({0, 0, 0}, {1, 1, 1}));
+//   b.object("ram", c4::Solid::block({2, 0, 0}, {3, 1, 1}), c4::Motion::steady({-1, 0, 0}));
+//   c4::Check_options o;
+//   o.earliest = true;
+//   c4::Check_result r = c4::check(b.build(), o);
+//   // r.collide == true; r.reported()->earliest->t == c4::Rational(1)
+//
+// Scenes are those of the scene format (../shared/spec/scene-format.md in
+// the project; `clash4d validate --help`): a scene built here is written in
+// that format and read back by the same reader as `clash4d check`, so it is
+// validated exactly like a file. Every number is an exact rational: nothing
+// on the exact path goes through a double.
+//
+// Errors: invalid input throws clash4d::api::Input_error (file, place,
+// message, exit code 2 = invalid or 3 = a resource limit, as the command line
+// exits). An internal error (a bug) throws std::logic_error.
+//
+// Not here yet: "verify" (certificates) does not exist in the toolkit yet.
+#ifndef CLASH4D_API_CLASH4D_H
+#define CLASH4D_API_CLASH4D_H
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+// The library is built with hidden visibility; what this header declares
+// is its interface (default visibility, also when a user builds hidden).
+#if defined(__GNUC__) || defined(__clang__)
+#define CLASH4D_API __attribute__((visibility("default")))
+#else
+#define CLASH4D_API
+#endif
+
+namespace clash4d {
+namespace api {
+
+// The library's version, "major.minor.patch".
+CLASH4D_API const char* version();
+
+// ---------------------------------------------------------------- numbers
+
+// An exact rational p/q in lowest terms with q > 0, its numerator and
+// denominator as decimal digit strings (of any length).
+class CLASH4D_API Rational {
+public:
+  Rational();                                  // 0
+  Rational(long long n);                       // n (implicit: Rational r = 3;)
+  Rational(long long p, long long q);          // p/q; throws std::invalid_argument when q = 0
+  // Exactly the number the text means, in the scene format's forms: an
+  // integer "-3", a decimal with an optional exponent "0.1" (= 1/10),
+  // "-2.5e-3" (= -1/400), or a fraction "p/q". Throws std::invalid_argument
+  // on anything else.
+  explicit Rational(const std::string& text);
+
+  const std::string& numerator() const { return num_; }      // "-1"
+  const std::string& denominator() const { return den_; }    // "2"
+  // "p/q", or "p" when q = 1 (the form of the scene format and of --json).
+  std::string to_string() const;
+  // The double nearest to it (ties to even); for display only.
+  double to_double() const;
+
+private:
+  std::string num_ = "0", den_ = "1";
+};
+CLASH4D_API bool operator==(const Rational& a, const Rational& b);
+CLASH4D_API bool operator<(const Rational& a, const Rational& b);
+// Exact arithmetic; division by zero throws std::domain_error.
+CLASH4D_API Rational operator+(const Rational& a, const Rational& b);
+CLASH4D_API Rational operator-(const Rational& a, const Rational& b);
+CLASH4D_API Rational operator*(const Rational& a, const Rational& b);
+CLASH4D_API Rational operator/(const Rational& a, const Rational& b);
+CLASH4D_API Rational operator-(const Rational& a);
+inline bool operator!=(const Rational& a, const Rational& b) { return !(a == b); }
+inline bool operator>(const Rational& a, const Rational& b) { return b < a; }
+inline bool operator<=(const Rational& a, const Rational& b) { return !(b < a); }
+inline bool operator>=(const Rational& a, const Rational& b) { return !(a < b); }
+
+using Vec3 = std::array<Rational, 3>;      // x, y, z
+using Point4 = std::array<Rational, 4>;    // x, y, z, t
+using Plane = std::array<Rational, 4>;     // a, b, c, d: the half-space a x + b y + c z + d <= 0
+
+// ---------------------------------------------------------------- errors
+
+constexpr int exit_invalid = 2;   // invalid input (the command line's exit status 2)
+constexpr int exit_limit = 3;     // a resource limit was reached (exit status 3)
+
+// Bad input: a scene that is not valid (or cannot be read, or needs more than
+// a named limit allows). what() is "file: place: message", the line the
+// command line prints.
+class CLASH4D_API Input_error : public std::runtime_error {
+public:
+  Input_error(std::string file, std::string place, std::string message, int exit_code);
+  const std::string& file() const { return file_; }        // the scene file, or "<scene>" for text
+  const std::string& place() const { return place_; }      // e.g. "objects[1].shape.block.min" (may be empty)
+  const std::string& message() const { return message_; }  // e.g. "expected 3 numbers"
+  int exit_code() const { return exit_code_; }             // exit_invalid or exit_limit
+  bool is_limit() const { return exit_code_ == exit_limit; }
+
+private:
+  std::string file_, place_, message_;
+  int exit_code_;
+};
+
+// ---------------------------------------------------------------- scenes
+
+// A solid of the scene format, held as its JSON text. The factories check
+// nothing: Scene_builder::build validates the whole scene.
+class CLASH4D_API Solid {
+public:
+  static Solid halfspace(const Plane& h);                          // a x + b y + c z + d <= 0
+  static Solid block(const Vec3& min, const Vec3& max);            // axis-aligned box
+  static Solid convex(const std::vector<Plane>& halfspaces);        // bounded intersection with interior
+  // Strictly convex counter-clockwise base (x, y) times z0 <= z <= z1.
+  static Solid prism(const std::vector<std::array<Rational, 2>>& base, const Rational& z0, const Rational& z1);
+  static Solid hull(const std::vector<Vec3>& points);              // convex hull, not all coplanar
+  static Solid unite(const std::vector<Solid>& solids);            // regularised union ("union")
+  static Solid intersection(const std::vector<Solid>& solids);     // regularised intersection
+  static Solid difference(const Solid& from, const std::vector<Solid>& removed);   // from minus the union of removed
+  static Solid translate(const Vec3& d, const Solid& solid);
+  static Solid rotate(const std::array<Rational, 4>& quaternion, const Solid& solid);   // (w, x, y, z), not 0
+  // Any solid of the scene format as JSON text, e.g. one the format gains
+  // later ({"mesh": "part.stl"}, relative paths from the current directory).
+  static Solid from_json(const std::string& json);
+
+  const std::string& json() const { return json_; }
+
+private:
+  explicit Solid(std::string json) : json_(std::move(json)) {}
+  std::string json_;
+};
+
+// A motion: piecewise-constant velocity, D(0) = 0 (the scene format's
+// ROBMOD notation, e.g. "rest until 0 vel 1 0 0 until 5 rest").
+class CLASH4D_API Motion {
+public:
+  static Motion rest();                          // the default: never moves
+  static Motion steady(const Vec3& velocity);    // this velocity at all times
+  // velocities[0] before times[0], velocities[i] between times[i-1] and
+  // times[i], the last after the last time (velocities.size() = times.size() + 1).
+  static Motion piecewise(const std::vector<Vec3>& velocities, const std::vector<Rational>& times);
+  static Motion from_text(const std::string& robmod);
+
+  const std::string& text() const { return text_; }
+
+private:
+  explicit Motion(std::string text) : text_(std::move(text)) {}
+  std::string text_;
+};
+
+// A scene read and validated: immutable, cheap to copy (shared).
+class CLASH4D_API Scene {
+public:
+  // A scene file (JSON); throws Input_error naming the file and the place.
+  static Scene read_file(const std::string& path);
+  // A scene as JSON text; `file` names it in error messages.
+  static Scene parse(const std::string& json, const std::string& file = "<scene>");
+
+  const std::string& file() const;                 // the path, or the name given to parse
+  const std::string& name() const;                 // the scene's "name" ("" when none)
+  Rational t_lo() const;                           // the time span [t_lo, t_hi]
+  Rational t_hi() const;
+  std::vector<std::string> object_names() const;
+  // The scene in the file format, every number an exact string.
+  std::string to_json() const;
+
+  // The pipeline's scene: the library's own use (its type is not public).
+  struct Impl;
+  const Impl& impl() const { return *impl_; }
+
+private:
+  explicit Scene(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
+  std::shared_ptr<const Impl> impl_;
+};
+
+// Builds a scene in code: objects with solids and motions over a time span.
+class CLASH4D_API Scene_builder {
+public:
+  Scene_builder(std::string name, const Rational& t_lo, const Rational& t_hi);
+  Scene_builder& object(const std::string& name, const Solid& shape, const Motion& motion = Motion::rest());
+  Scene_builder& ignore(const std::string& a, const std::string& b);   // never test this pair
+  // The scene file text.
+  std::string json() const;
+  // Validates and returns the scene; throws Input_error (file "<built scene>"
+  // and the place in json()) when it is not valid.
+  Scene build() const;
+
+private:
+  std::string name_;
+  Rational t_lo_, t_hi_;
+  std::vector<std::string> objects_, ignore_;   // JSON text of each
+};
+
+// Throws Input_error when the file is not a valid scene (`clash4d validate`).
+CLASH4D_API void validate(const std::string& path);
+
+// ---------------------------------------------------------------- check
+
+enum class Number {
+  exact,      // filtered exact: intervals, falling back to rationals (the default)
+  rational,   // every sign in rationals (the reference; same answers, slower)
+  double_     // plain doubles: the float answer, to hold against exact
+};
+enum class Semantics {
+  regularised,   // a collision is a common interior point: touching is not one (the default)
+  closed         // the closed objects meet within the closed span: touching counts
+};
+
+struct Check_options {
+  Number number = Number::exact;
+  Semantics semantics = Semantics::regularised;
+  bool earliest = false;     // the earliest collision (closed: first contact) time t* and a contact point
+  bool all_pairs = false;    // every colliding pair, not only the first
+  double tolerance = 0;      // Number::double_ only: |value| <= tolerance counts as zero
+};
+
+// The earliest collision of a pair: t* (the infimum of collision times) and
+// a contact point x* with (x*, t*) in the closure of the collision region.
+struct Earliest {
+  Rational t;
+  Vec3 point;
+  bool at_start = false;   // t* = t_lo: already colliding when the span starts
+  // Generic points that make the answer checkable: one strictly inside each
+  // object (the same point twice in regularised semantics), each with
+  // (x*, t*) in the closure of its cell.
+  std::array<Point4, 2> inside;
+};
+
+struct Colliding_pair {
+  std::string a, b;            // object names, in scene order
+  // Regularised: a point (x, y, z, t), t_lo < t < t_hi, strictly inside both
+  // objects. Closed: a point of both closed objects, t_lo <= t <= t_hi.
+  Point4 witness;
+  bool witness_verified = false;   // checked against the scene exactly
+  // Closed semantics only: a generic point strictly inside each object whose
+  // cell's closure holds the witness.
+  std::optional<std::array<Point4, 2>> witness_inside;
+  std::optional<Earliest> earliest;   // with Check_options::earliest
+};
+
+struct CLASH4D_API Check_result {
+  Number number = Number::exact;
+  Semantics semantics = Semantics::regularised;
+  bool collide = false;
+  // The colliding pairs found: the first one in pair order, or (earliest)
+  // the one with the smallest t*, or (all_pairs) every one in pair order.
+  std::vector<Colliding_pair> pairs;
+  // The pair whose witness is reported (the earliest with `earliest`); null
+  // when nothing collides.
+  const Colliding_pair* reported() const;
+  int reported_index = -1;
+};
+// With Number::double_ the numbers are those of the double run's shortest
+// round-trip decimal text (so "0.1" is 1/10), not exact answers.
+
+CLASH4D_API Check_result check(const Scene& scene, const Check_options& options = {});
+
+CLASH4D_API const char* name(Number n);        // "exact", "rational", "double"
+CLASH4D_API const char* name(Semantics s);     // "regularised", "closed"
+// Throws std::invalid_argument on an unknown name.
+CLASH4D_API Number number_from_name(const std::string& name);
+CLASH4D_API Semantics semantics_from_name(const std::string& name);
+
+// ---------------------------------------------------------------- compare
+
+// `clash4d compare`: every subject (double, double with tolerances, exact on
+// the rounded scene, optionally FCL and Bullet) held against the exact
+// answer in the subject's own semantics.
+struct Compare_options {
+  Semantics semantics = Semantics::regularised;   // of the toolkit's own float subjects
+  std::vector<double> tolerances{1e-9};           // one "double tol=EPS" subject each
+  bool earliest = false;                          // also compare t*
+  bool rounded = true;                            // the exact-rounded subject
+  bool fcl = false;                               // FCL's continuous collision, where built in
+  bool bullet = false;                            // Bullet's, likewise
+};
+
+// A witness or an earliest contact as a subject gave it.
+struct Located {
+  std::array<std::string, 2> objects;
+  std::optional<Point4> point;       // none when the subject gives no point
+  std::optional<Rational> t;         // earliest only
+};
+
+// One subject's answer held against exact.
+struct Subject_row {
+  std::string subject;               // "exact", "exact closed", "double", "double tol=1e-09", ...
+  std::string semantics;             // "regularised" or "closed"
+  std::optional<double> tolerance;
+  bool reference = false;            // the exact subject
+  bool ok = true;                    // it answered (false: error, in `error`)
+  std::string error;
+  std::optional<std::string> skipped;   // did not run, and why
+  std::optional<bool> collide;
+  std::optional<Located> witness;
+  std::optional<bool> witness_valid;    // checked exactly
+  std::optional<Located> earliest;
+  std::optional<std::string> t_error;   // |t* - exact t*|, 3 significant digits
+  std::optional<bool> agrees;
+  // Why it disagrees ("arithmetic", "input rounding", "contact", "invalid
+  // witness"), or what went wrong with it.
+  std::optional<std::string> cause;
+};
+
+struct Disagreement {
+  std::string subject, cause, detail, semantics;
+};
+
+struct Comparison {
+  std::string file, name;
+  // Where exact (regularised) says no collision: whether the closed objects
+  // meet all the same.
+  std::optional<bool> closed_touch;
+  std::vector<Subject_row> subjects;
+  std::vector<Disagreement> disagreements;
+  bool agree() const { return disagreements.empty(); }
+  std::string json;   // the form of `clash4d compare --json` (one scene)
+};
+
+CLASH4D_API Comparison compare(const Scene& scene, const Compare_options& options = {});
+
+} // namespace api
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,112 @@
+// Uses the installed clash4d package: builds a scene in code and reads one
+// from the fixtures, checks them, prints the answers and exits 1 when an
+// answer is not the hand-derived one.
+//   clash4d_example FIXTURES_DIR
+#include <clash4d/clash4d.h>
+
+#include <iostream>
+#include <string>
+
+namespace c4 = clash4d::api;
+
+namespace {
+
+int failures = 0;
+
+void expect(bool ok, const std::string& what)
+{
+  std::cout << (ok ? "  ok: " : "  FAILED: ") << what << "\n";
+  if (!ok) ++failures;
+}
+
+std::string text(const c4::Point4& p)
+{
+  return "(" + p[0].to_string() + ", " + p[1].to_string() + ", " + p[2].to_string() + ", " + p[3].to_string() + ")";
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if (argc != 2) {
+    std::cerr << "usage: clash4d_example FIXTURES_DIR\n";
+    return 2;
+  }
+  const std::string fixtures = argv[1];
+  std::cout << "clash4d " << c4::version() << "\n";
+
+  // Two unit blocks approaching at unit speed with a gap of 1: a = [t, 1+t] and
+  // b = [2-t, 3-t] in x (y, z in [0, 1]) meet at t* = 1/2 at x = 3/2.
+  c4::Scene_builder builder("approach", 0, 10);
+  builder.object("a", c4::Solid::block({0, 0, 0}, {1, 1, 1}), c4::Motion::steady({1, 0, 0}));
+  builder.object("b", c4::Solid::block({2, 0, 0}, {3, 1, 1}), c4::Motion::steady({-1, 0, 0}));
+  c4::Scene approach = builder.build();
+
+  c4::Check_options options;
+  options.earliest = true;
+  c4::Check_result r = c4::check(approach, options);
+  std::cout << "built scene: " << (r.collide ? "collision" : "no collision") << "\n";
+  expect(r.collide, "the approaching blocks collide");
+  if (const c4::Colliding_pair* p = r.reported()) {
+    std::cout << "  " << p->a << " and " << p->b << ", witness " << text(p->witness) << "\n";
+    const c4::Point4& w = p->witness;
+    const c4::Rational& t = w[3];
+    expect(p->a == "a" && p->b == "b", "the pair is a and b");
+    expect(p->witness_verified, "the witness is verified");
+    expect(w[1] > c4::Rational(0) && w[1] < c4::Rational(1) && w[2] > c4::Rational(0) && w[2] < c4::Rational(1),
+           "the witness has 0 < y, z < 1");
+    expect(t > c4::Rational(1, 2) && t < c4::Rational(10), "the witness time is after t* = 1/2");
+    // At time t, a is t < x < 1 + t and b is 2 - t < x < 3 - t.
+    expect(w[0] > t && w[0] < 1 + t && w[0] > 2 - t && w[0] < 3 - t, "the witness x is strictly inside a and b");
+    if (p->earliest) {
+      std::cout << "  earliest: t* = " << p->earliest->t.to_string() << " at x = " << p->earliest->point[0].to_string()
+                << ", y = " << p->earliest->point[1].to_string() << ", z = " << p->earliest->point[2].to_string() << "\n";
+      expect(p->earliest->t == c4::Rational(1, 2), "t* = 1/2");
+      expect(p->earliest->point[0] == c4::Rational("1.5"), "the contact point has x = 3/2");
+      expect(p->earliest->point[1] >= c4::Rational(0) && p->earliest->point[1] <= c4::Rational(1), "its y is in [0, 1]");
+    } else {
+      expect(false, "an earliest answer was asked for");
+    }
+  }
+
+  // The same blocks with a gap of 1 but b at rest and a stopping after
+  // covering 1: they touch at t = 1 and never overlap.
+  c4::Scene_builder touching("touch", 0, 10);
+  touching.object("a", c4::Solid::block({0, 0, 0}, {1, 1, 1}), c4::Motion::piecewise({{0, 0, 0}, {1, 0, 0}, {0, 0, 0}}, {0, 1}));
+  touching.object("b", c4::Solid::block({2, 0, 0}, {3, 1, 1}));
+  c4::Scene touch = touching.build();
+  expect(!c4::check(touch).collide, "touching is not a collision (regularised)");
+  options.semantics = c4::Semantics::closed;
+  c4::Check_result closed = c4::check(touch, options);
+  expect(closed.collide && closed.reported() && closed.reported()->earliest &&
+             closed.reported()->earliest->t == c4::Rational(1),
+         "closed semantics: first contact at t = 1");
+
+  // A fixture: two blocks moving towards each other, meeting at t = 2.
+  c4::Scene head_on = c4::Scene::read_file(fixtures + "/contact/clear_collision_head_on.json");
+  options.semantics = c4::Semantics::regularised;
+  c4::Check_result h = c4::check(head_on, options);
+  std::cout << head_on.file() << ": " << (h.collide ? "collision" : "no collision") << "\n";
+  expect(h.collide && h.reported()->earliest && h.reported()->earliest->t == c4::Rational(2), "the fixture's t* = 2");
+
+  // The double instantiation agrees on it; the comparer finds no disagreement.
+  options.number = c4::Number::double_;
+  expect(c4::check(head_on, options).collide, "double agrees");
+  c4::Comparison c = c4::compare(head_on);
+  for (const c4::Subject_row& s : c.subjects)
+    std::cout << "  " << s.subject << ": " << (s.skipped ? "skipped" : s.collide.value_or(false) ? "collision" : "no collision")
+              << (s.cause ? " <- " + *s.cause : "") << "\n";
+  expect(c.agree(), "every subject agrees with exact");
+
+  // Invalid input is an Input_error with the file and the place.
+  try {
+    c4::Scene::read_file(fixtures + "/bad/block_min_two_numbers.json");
+    expect(false, "a bad scene is refused");
+  } catch (const c4::Input_error& e) {
+    std::cout << "  refused: " << e.what() << "\n";
+    expect(e.place() == "objects[0].shape.block.min" && e.exit_code() == c4::exit_invalid, "the error names the place");
+  }
+
+  std::cout << (failures ? "FAILED\n" : "all answers as expected\n");
+  return failures ? 1 : 0;
+}
