@@ -1,6 +1,7 @@
 #define BOOST_TEST_MODULE scene_reader
 #include <boost/test/unit_test.hpp>
 
+#include "scene/Exact_validation.h"
 #include "scene/Input_error.h"
 #include "scene/Json_reader.h"
 #include "scene/Number_text.h"
@@ -153,4 +154,28 @@ BOOST_AUTO_TEST_CASE(the_writer_puts_meta_last_and_reads_back)
   std::string text = write_scene(s, {{"family", "f"}, {"seed", 3}});
   BOOST_TEST(text.find("\"meta\"") > text.find("\"objects\""));
   BOOST_TEST(write_scene(read_scene(read_json_text(text))) == write_scene(s));
+}
+
+// A cone: side planes a x + b y + z <= 1 for 34 rational points (a, b) of the
+// unit circle (((1 - u^2) / (1 + u^2), 2 u / (1 + u^2)) for u = -8, -15/2,
+// ..., 8, and (-1, 0)), all through the apex (0, 0, 1), and the base z >= 0.
+// The points are in strictly convex position around the origin, so every
+// side plane is a facet and the base is a 34-gon: 35 vertices, each listed
+// once, and one corner (the apex, on all 34 side planes). Every triple of
+// side planes meets at the apex, the case a fuzzer found slow (each triple
+// classified the same point again).
+BOOST_AUTO_TEST_CASE(cone_apex_is_one_vertex)
+{
+  std::vector<Rational4> planes;
+  for (int j = -16; j <= 16; ++j) {
+    Rational u(j, 2), den = 1 + u * u;
+    planes.push_back({(1 - u * u) / den, 2 * u / den, Rational(1), Rational(-1)});
+  }
+  planes.push_back({Rational(-1), Rational(0), Rational(1), Rational(-1)});
+  planes.push_back({Rational(0), Rational(0), Rational(-1), Rational(0)});
+  BOOST_TEST(convex_problem(planes).empty());
+  Polytope_combinatorics c = convex_vertex_triples(planes);
+  BOOST_TEST(c.triples.size() == 35u);
+  BOOST_REQUIRE(c.corners.size() == 1u);
+  BOOST_TEST(c.corners[0].size() == 34u);
 }
