@@ -7,6 +7,7 @@
 #include "scene/Files.h"
 #include "scene/Input_error.h"
 #include "scene/Grid_scene.h"
+#include "search/Work_budget.h"
 #include "scene/Scene_reader.h"
 
 #include <CLI/CLI.hpp>
@@ -540,6 +541,14 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   std::vector<Command> commands{add_validate(app, out, err), add_extrude(app, out, err), add_check(app, out, err),
                                 add_skeleton(app, out, err),  add_compare(app, out, err), add_fuzz(app, out, err),
                                 add_report(app, out, err),    add_generate(app, out, err)};
+  // The work budget (search/Work_budget.h), on the commands that search.
+  double max_seconds = 0;
+  for (const char* name : {"check", "skeleton", "compare", "fuzz", "report"})
+    app.get_subcommand(name)
+        ->add_option("--max-seconds", max_seconds,
+                     "stop with exit 3 when the run takes longer than S seconds, printing no answer (fuzz: saved "
+                     "up to its last finished batch, resumable; default: unlimited)")
+        ->check(CLI::PositiveNumber);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -550,8 +559,20 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     err << "clash4d: " << e.what() << "\n" << "run 'clash4d --help' or 'clash4d COMMAND --help'\n";
     return CLASH4D_EXIT_INVALID;
   }
-  for (const Command& run : commands)
-    if (int status = run(); status >= 0) return status;
+  Work_budget::start(max_seconds);
+  try {
+    for (const Command& run : commands)
+      if (int status = run(); status >= 0) return status;
+  } catch (const Budget_exceeded& e) {
+    std::string name = app.get_subcommands().front()->get_name();
+    err << "clash4d " << name << ": the work budget of --max-seconds " << e.seconds
+        << " ran out before an answer (exit 3)"
+        << (name == "fuzz" ? "; the campaign is saved up to its last finished batch: run the same command again to "
+                             "resume"
+                           : "")
+        << "\n";
+    return CLASH4D_EXIT_LIMIT;
+  }
   return CLASH4D_EXIT_INVALID;   // require_subcommand makes this unreachable
 }
 

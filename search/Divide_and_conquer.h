@@ -43,6 +43,7 @@ public:
   void search(const Box4& region, const Pair_formula& formula, Search_goal<FT>& goal, std::size_t depth = 0)
   {
     if (!goal.can_improve(k_, region.lo[3])) return;
+    Work_budget::check();
     stats_.visit(depth);
     bool strict = goal.closed();
     Pair_formula f = formula.simplified([&](std::uint32_t h) { return status(table_[h], region, strict); });
@@ -86,6 +87,7 @@ public:
   void skeleton(const Box4& region, const Formula& formula, std::vector<std::array<Vector4<FT>, 2>>& out,
                 std::size_t depth = 0)
   {
+    Work_budget::check();
     stats_.visit(depth);
     Formula f = formula.simplified([&](std::uint32_t h) { return status(table_[h], region, true); });
     if (f.value() != Truth::Unknown) return;

@@ -18,6 +18,7 @@
 #include "search/Neighbourhood.h"
 #include "search/No_filter.h"
 #include "search/Search_goal.h"
+#include "search/Work_budget.h"
 #include <algorithm>
 #include <array>
 #include <optional>
@@ -70,7 +71,10 @@ public:
     }
     for (std::size_t i = 0; i < n && !goal.done(); ++i)
       for (std::size_t j = i + 1; j < n && !goal.done(); ++j)
-        for (std::size_t m = j + 1; m < n && !goal.done(); ++m) policy_.test_line(*this, f, i, j, m, goal);
+        for (std::size_t m = j + 1; m < n && !goal.done(); ++m) {
+          Work_budget::check();
+          policy_.test_line(*this, f, i, j, m, goal);
+        }
   }
 
   // The line of planes i, j, m of this conquer: its edges' midpoints

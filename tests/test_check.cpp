@@ -161,3 +161,24 @@ BOOST_AUTO_TEST_CASE(generate_writes_a_valid_scene)
   BOOST_TEST(run({"generate", "--n", "4", "--colliding", "9"}).status == 2);   // does not fit
   BOOST_TEST(run({"generate", "--n", "1"}).status == 2);
 }
+
+// --max-seconds (issue 16, a work budget): the skewed §6 scene takes seconds
+// exact (papers/cameron1990/README.md), far beyond a budget of 1 ms, so the
+// run stops with exit 3 naming the limit and prints no answer; within a
+// generous budget a scene is answered as without one.
+BOOST_AUTO_TEST_CASE(a_run_past_its_work_budget_exits_3_with_no_answer)
+{
+  std::string slow = std::string(CLASH4D_FIXTURES) + "/paper/section6_weaving_vehicle_skewed.json";
+  for (const char* number : {"exact", "rational"}) {
+    Run r = run({"check", slow, "--number", number, "--max-seconds", "0.001"});
+    BOOST_TEST(r.status == 3);
+    BOOST_TEST(r.out.empty());
+    BOOST_TEST(r.err.find("--max-seconds 0.001") != std::string::npos);
+  }
+  Run c = run({"compare", slow, "--max-seconds", "0.001"});
+  BOOST_TEST(c.status == 3);
+  BOOST_TEST(c.out.empty());
+  Run ok = run({"check", scene_file("budget", spec_example), "--max-seconds", "1000"});
+  BOOST_TEST(ok.status == 1);
+  BOOST_TEST(run({"check", scene_file("budget", spec_example), "--max-seconds", "0"}).status == 2);
+}

@@ -3,6 +3,7 @@
 
 #include "cli/Commands.h"
 #include "compare/Fuzz_campaign.h"
+#include "search/Work_budget.h"
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -77,6 +78,24 @@ BOOST_AUTO_TEST_CASE(an_interrupted_campaign_resumes_and_loses_nothing)
   Fuzz_summary s = run_fuzz(campaign(cut), err);
   BOOST_TEST(s.resumed_from == 16u);
   fs::remove(cut / "findings" / "case-17.json.tmp");
+  BOOST_TEST((contents(cut / "findings") == contents(full / "findings")));
+}
+
+// --max-seconds (search/Work_budget.h): a budget that runs out in the first
+// case stops the campaign with Budget_exceeded before any batch is saved;
+// run again without it, the campaign ends with the findings of a run never
+// stopped.
+BOOST_AUTO_TEST_CASE(a_campaign_stopped_by_its_budget_resumes_and_loses_nothing)
+{
+  std::ostringstream err;
+  fs::path full = fresh("budget_full"), cut = fresh("budget_cut");
+  run_fuzz(campaign(full), err);
+  Work_budget::start(1e-9);
+  BOOST_CHECK_THROW(run_fuzz(campaign(cut), err), Budget_exceeded);
+  Work_budget::start(0);
+  BOOST_TEST(!fs::exists(cut / "progress-1-of-1.json"));
+  Fuzz_summary s = run_fuzz(campaign(cut), err);
+  BOOST_TEST(s.done == 24u);
   BOOST_TEST((contents(cut / "findings") == contents(full / "findings")));
 }
 
