@@ -1,6 +1,7 @@
 #include "cli/Commands.h"
 #include "cli/Campaign_commands.h"
 #include "cli/Stats_json.h"
+#include "certify/Certificate_writer.h"
 #include "compare/Comparer.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
@@ -119,7 +120,7 @@ json cells_json(const std::array<std::array<std::string, 4>, 2>& cells)
   return json::array({point_json(cells[0]), point_json(cells[1])});
 }
 
-json check_json(const Check_answer& a, const Check_options& o, bool stats, double tolerance)
+json check_json(const Check_answer& a, const Check_options& o, bool stats, double tolerance, const std::string& certificate)
 {
   bool closed = a.semantics == Semantics::closed;
   json j = {{"collide", a.collide}, {"number", a.number}, {"semantics", semantics_name(a.semantics)}};
@@ -146,6 +147,7 @@ json check_json(const Check_answer& a, const Check_options& o, bool stats, doubl
       j["pairs"].push_back(e);
     }
   }
+  if (!certificate.empty()) j["certificate"] = certificate;
   if (stats) j["stats"] = stats_json(a.stats);
   return j;
 }
@@ -155,14 +157,16 @@ std::string point_text(const std::array<std::string, 4>& p)
   return "x = " + p[0] + ", y = " + p[1] + ", z = " + p[2] + ", t = " + p[3];
 }
 
-void print_check(const Check_answer& a, const Check_options& o, bool stats, double tolerance, std::ostream& out)
+void print_check(const Check_answer& a, const Check_options& o, bool stats, double tolerance, std::ostream& out,
+                 const std::string& certificate = "")
 {
   // The earliest pair's witness is the one shown when --earliest is given.
   const Pair_answer* main = a.reported();
   if (o.json) {
-    out << check_json(a, o, stats, tolerance).dump(2) << "\n";
+    out << check_json(a, o, stats, tolerance, certificate).dump(2) << "\n";
     return;
   }
+  if (!certificate.empty()) out << "certificate: " << certificate << " (clash4d verify SCENE " << certificate << ")\n";
   bool closed = a.semantics == Semantics::closed;
   std::string how = a.number + (closed ? ", closed semantics" : "");
   if (!a.collide) out << "no collision (" << how << (closed ? ": the closed objects do not meet" : "") << ")\n";
@@ -344,6 +348,8 @@ Command add_extrude(CLI::App& app, std::ostream& out, std::ostream& err)
 
 struct Check_args : Scene_args {
   Check_options options;
+  std::string certificate;
+  double certificate_max_mb = 256;
   double tolerance = 0;
   bool stats = false, no_sbounds = false;
   std::string semantics = "regularised";
@@ -366,10 +372,19 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
   cmd->add_flag("--stats", a->stats, "report what each stage did");
   cmd->add_flag("--no-sbounds", a->no_sbounds,
                 "bound by the paper's original procedure (boxes at velocity changes) instead of S-bounds; for reproducing §4.1");
+  cmd->add_option("--certificate", a->certificate,
+                  "also write a proof of the answer to FILE, checkable by 'clash4d verify SCENE FILE' "
+                  "(exact kernels only; docs/certificate-format.md)");
+  cmd->add_option("--certificate-max-mb", a->certificate_max_mb, "refuse (exit 3) a certificate larger than this (default 256)")
+      ->check(CLI::PositiveNumber);
   return [cmd, a, &out, &err] {
     if (!cmd->parsed()) return -1;
     if (a->tolerance != 0 && a->number != "double") {
       err << "clash4d: --tolerance applies to --number double only\n";
+      return CLASH4D_EXIT_INVALID;
+    }
+    if (!a->certificate.empty() && a->number == "double") {
+      err << "clash4d: --certificate needs an exact answer (--number exact or rational)\n";
       return CLASH4D_EXIT_INVALID;
     }
     a->options.sbounds = !a->no_sbounds;
@@ -377,7 +392,18 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
     a->options.semantics = *semantics_from_name(a->semantics);
     return with_scene(*a, err, [&](const Scene& scene) {
       Check_answer answer = instantiation(a->number).check(scene, a->options, a->tolerance);
-      print_check(answer, a->options, a->stats, a->tolerance, out);
+      if (!a->certificate.empty()) {
+        // Before the answer is printed: a certificate that cannot be made
+        // leaves no answer behind it (exit 3 names the limit).
+        try {
+          auto max = static_cast<std::size_t>(a->certificate_max_mb * 1024 * 1024);
+          write_certificate(a->certificate, make_certificate(scene, answer, a->options), max);
+        } catch (const Certificate_limit& e) {
+          err << a->file << ": " << e.what() << " (exit 3)\n";
+          return CLASH4D_EXIT_LIMIT;
+        }
+      }
+      print_check(answer, a->options, a->stats, a->tolerance, out, a->certificate);
       return answer.collide ? 1 : 0;
     });
   };

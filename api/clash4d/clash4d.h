@@ -27,7 +27,7 @@
 // message, exit code 2 = invalid or 3 = a resource limit, as the command line
 // exits). An internal error (a bug) throws std::logic_error.
 //
-// Not here yet: "verify" (certificates) does not exist in the toolkit yet.
+// Not here yet: certificates (clash4d check --certificate, clash4d verify).
 #ifndef CLASH4D_API_CLASH4D_H
 #define CLASH4D_API_CLASH4D_H
 

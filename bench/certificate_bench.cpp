@@ -1,0 +1,117 @@
+// The cost of certificates (issue 15), per family: `check` alone, `check`
+// plus making and serialising its certificate, the certificate's size, and
+// the independent checker's time on it (verify/), all in process and exact
+// (the filtered kernel), in regularised and closed semantics, plain and
+// --earliest. Targets: writing at most 3x check; verifying faster than
+// deciding.
+//   clash4d_certificate_bench [--seed N] [--random M] [--min-seconds S] [--family paper|contact|random]
+#include "bench/Timing.h"
+#include "certify/Certificate_writer.h"
+#include "exact/Exact_instantiation.h"
+#include "scene/Hull_scene.h"
+#include "scene/Json_reader.h"
+#include "scene/Scene_reader.h"
+#include "verify/Certificate_checker.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+#include <string>
+
+using namespace clash4d;
+
+namespace {
+
+struct Means {
+  double log_write = 0, log_verify = 0, bytes = 0;
+  int count = 0, rejected = 0;
+  void print(const std::string& family) const
+  {
+    std::printf("geometric mean over %s: (check + certificate)/check %.2f, verify/check %.2f; mean size %.0f bytes%s\n\n",
+                family.c_str(), std::exp(log_write / count), std::exp(log_verify / count), bytes / count,
+                rejected ? "; SOME CERTIFICATES REJECTED" : "");
+  }
+};
+
+void row(const std::string& name, const Scene& scene, const Check_options& opts, double min_seconds, Means& means)
+{
+  Timing check = time_it([&] { return check_exact(scene, opts).collide; }, min_seconds);
+  std::size_t bytes = 0;
+  Timing write = time_it([&] {
+    Check_answer a = check_exact(scene, opts);
+    bytes = make_certificate(scene, a, opts).dump(1).size();
+    return a.collide;
+  }, min_seconds);
+  Check_answer a = check_exact(scene, opts);
+  nlohmann::json cert = nlohmann::json::parse(make_certificate(scene, a, opts).dump());
+  bool ok = false;
+  Timing verify = time_it([&] { return ok = verify_certificate(scene, cert).ok; }, min_seconds);
+  double w = write.seconds_per_query / check.seconds_per_query, v = verify.seconds_per_query / check.seconds_per_query;
+  means.log_write += std::log(w);
+  means.log_verify += std::log(v);
+  means.bytes += static_cast<double>(bytes);
+  means.rejected += !ok;
+  ++means.count;
+  std::printf("%-66s %10.1f %10.1f %10.1f %7.2f %7.2f %9zu  %s%s\n", name.c_str(), check.seconds_per_query * 1e6,
+              write.seconds_per_query * 1e6, verify.seconds_per_query * 1e6, w, v, bytes, a.collide ? "collide" : "apart",
+              ok ? "" : " REJECTED");
+}
+
+std::vector<std::pair<std::string, Check_options>> modes()
+{
+  std::vector<std::pair<std::string, Check_options>> out;
+  for (Semantics s : {Semantics::regularised, Semantics::closed})
+    for (bool earliest : {false, true}) {
+      Check_options o;
+      o.semantics = s;
+      o.earliest = earliest;
+      out.push_back({std::string(semantics_name(s)) + (earliest ? " --earliest" : ""), o});
+    }
+  return out;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  unsigned long seed = 1990;
+  int random_count = 20;
+  double min_seconds = 0.05;
+  std::string only;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    std::string a = argv[i];
+    if (a == "--seed") seed = std::stoul(argv[i + 1]);
+    else if (a == "--random") random_count = std::stoi(argv[i + 1]);
+    else if (a == "--min-seconds") min_seconds = std::stod(argv[i + 1]);
+    else if (a == "--family") only = argv[i + 1];
+    else {
+      std::fprintf(stderr, "clash4d_certificate_bench: unknown option %s\n", a.c_str());
+      return 2;
+    }
+  }
+  std::printf("%-66s %10s %10s %10s %7s %7s %9s  %s\n", "scene (mode)", "check us", "+cert us", "verify us", "write", "verify",
+              "bytes", "verdict");
+  for (const auto& [mode, opts] : modes()) {
+    for (const char* family : {"paper", "contact"}) {
+      if (!only.empty() && only != family) continue;
+      Means means;
+      std::vector<std::filesystem::path> files;
+      for (const auto& f : std::filesystem::directory_iterator(std::string(CLASH4D_FIXTURES) + "/" + family))
+        if (f.path().extension() == ".json" && f.path().filename() != "expected.json") files.push_back(f.path());
+      std::sort(files.begin(), files.end());
+      for (const auto& f : files)
+        row(std::string(family) + "/" + f.filename().string() + " (" + mode + ")", read_scene_file(f.string()), opts,
+            min_seconds, means);
+      means.print(std::string(family) + ", " + mode);
+    }
+    if (!only.empty() && only != "random") continue;
+    std::mt19937_64 rng(seed);
+    Means means;
+    for (int i = 0; i < random_count; ++i)
+      row("random #" + std::to_string(i) + " (" + mode + ")", read_scene(read_json_text(make_hull_scene(rng))), opts,
+          min_seconds, means);
+    if (means.count) means.print("random (seed " + std::to_string(seed) + "), " + mode);
+  }
+}

@@ -1,0 +1,45 @@
+// The proof that a pair does not collide (or touch) before a time: the
+// span [tL, until] cut at every velocity change of the pair, and on each
+// piece the conflicts that close off every term of the pair's formula
+// (docs/certificate-format.md, APART). The formulas are the pipeline's own
+// extrusion (model/Extrusion.h) over the rational kernel, with no S-bound
+// pruning: the proof must not rest on a step it does not show.
+#ifndef CLASH4D_CERTIFY_APART_PROVER_H
+#define CLASH4D_CERTIFY_APART_PROVER_H
+
+#include "certify/Term_search.h"
+#include "exact/Rational_kernel.h"
+#include "model/Scene_model.h"
+#include <nlohmann/json.hpp>
+
+namespace clash4d {
+
+class Apart_prover {
+public:
+  Apart_prover(const Scene& scene, Semantics semantics, std::uint64_t step_limit);
+
+  // APART for objects a and b until `until`; strict_end: the closed proof of
+  // an earliest time, which leaves t = until out. Throws Term_feasible,
+  // Term_limit.
+  nlohmann::ordered_json prove(int a, int b, const Rational& until, bool strict_end);
+
+  std::uint64_t steps() const { return steps_; }
+  std::size_t conflicts() const { return conflicts_; }
+
+private:
+  using K = Rational_kernel;
+  K k_;
+  Scene_model<K> model_;
+  Semantics semantics_;
+  std::uint64_t limit_, steps_ = 0;
+  std::size_t conflicts_ = 0;
+
+  nlohmann::ordered_json piece(int a, int b, const Rational& lo, const Rational& hi, bool strict_end);
+};
+
+// A literal's JSON form: five integers as strings.
+nlohmann::ordered_json literal_json(const Literal_coefficients& h);
+
+} // namespace clash4d
+
+#endif

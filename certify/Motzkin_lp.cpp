@@ -1,0 +1,88 @@
+#include "certify/Motzkin_lp.h"
+
+#include <CGAL/Gmpz.h>
+#include <CGAL/Gmpzf.h>
+#include <CGAL/QP_functions.h>
+#include <CGAL/QP_models.h>
+
+namespace clash4d {
+namespace {
+
+using Lp = CGAL::Quadratic_program<CGAL::Gmpz>;
+
+// Gmpzf is man * 2^exp.
+Rational to_rational(const CGAL::Gmpzf& x)
+{
+  Rational m(x.man());
+  long e = x.exp();
+  return e >= 0 ? m * power_of_two(static_cast<int>(e)) : m / power_of_two(static_cast<int>(-e));
+}
+
+CGAL::Gmpz integer(const Rational& q) { return q.numerator(); }   // literals are integers
+
+// sum lambda (a, b, c, e_t) = 0 and sum lambda = 1 over lambda >= 0.
+Lp dual_program(const std::vector<Motzkin_row>& rows)
+{
+  Lp lp(CGAL::EQUAL, true, 0, false, 0);
+  for (int j = 0; j < static_cast<int>(rows.size()); ++j) {
+    for (int i = 0; i < 4; ++i) lp.set_a(j, i, integer((*rows[j].h)[i]));
+    lp.set_a(j, 4, 1);
+  }
+  for (int i = 0; i < 4; ++i) lp.set_b(i, 0);
+  lp.set_b(4, 1);
+  return lp;
+}
+
+std::optional<std::vector<Rational>> solved(const Lp& lp, std::size_t n)
+{
+  CGAL::Quadratic_program_solution<CGAL::Gmpzf> s = CGAL::solve_linear_program(lp, CGAL::Gmpzf());
+  if (!s.is_optimal()) return std::nullopt;
+  std::vector<Rational> lambda;
+  for (auto it = s.variable_values_begin(); it != s.variable_values_end(); ++it)
+    lambda.push_back(to_rational(it->numerator()) / to_rational(it->denominator()));
+  lambda.resize(n, Rational(0));
+  return lambda;
+}
+
+} // namespace
+
+bool proves_infeasible(const std::vector<Motzkin_row>& rows, const std::vector<Rational>& lambda)
+{
+  if (lambda.size() != rows.size()) return false;
+  std::array<Rational, 5> sum{};
+  bool any = false, strict_part = false;
+  for (std::size_t j = 0; j < rows.size(); ++j) {
+    if (CGAL::sign(lambda[j]) == CGAL::NEGATIVE) return false;
+    if (CGAL::sign(lambda[j]) == CGAL::ZERO) continue;
+    any = true;
+    strict_part = strict_part || rows[j].strict;
+    for (int i = 0; i < 5; ++i) sum[i] += lambda[j] * (*rows[j].h)[i];
+  }
+  for (int i = 0; i < 4; ++i)
+    if (CGAL::sign(sum[i]) != CGAL::ZERO) return false;
+  CGAL::Sign e = CGAL::sign(sum[4]);
+  return any && (e == CGAL::POSITIVE || (e == CGAL::ZERO && strict_part));
+}
+
+std::optional<std::vector<Rational>> motzkin_multipliers(const std::vector<Motzkin_row>& rows)
+{
+  if (rows.empty()) return std::nullopt;
+  Lp lp = dual_program(rows);
+  for (int j = 0; j < static_cast<int>(rows.size()); ++j) lp.set_c(j, -integer((*rows[j].h)[4]));   // max sum lambda e
+  auto lambda = solved(lp, rows.size());
+  if (!lambda) return std::nullopt;
+  if (proves_infeasible(rows, *lambda)) return lambda;
+  // Optimum 0 (or below): a proof needs weight on a strict row with sum e >= 0.
+  Lp second = dual_program(rows);
+  for (int j = 0; j < static_cast<int>(rows.size()); ++j) {
+    second.set_a(j, 5, integer((*rows[j].h)[4]));
+    if (rows[j].strict) second.set_c(j, -1);
+  }
+  second.set_b(5, 0);
+  second.set_r(5, CGAL::LARGER);
+  lambda = solved(second, rows.size());
+  if (lambda && proves_infeasible(rows, *lambda)) return lambda;
+  return std::nullopt;
+}
+
+} // namespace clash4d
