@@ -79,8 +79,8 @@ bool Object_model::strict_true(int k, const Point4& p) const { return eval(formu
 
 bool Object_model::signs_follow(int k, const Point4& c, const Point4& w) const
 {
-  for (const Atom* h : atoms_) {
-    int sc = sgn(value(*h, k, c)), sw = sgn(value(*h, k, w));
+  for (const Atom& h : atoms_) {
+    int sc = sgn(value(h, k, c)), sw = sgn(value(h, k, w));
     if (sc != 0 && sc != sw) return false;
   }
   return true;

@@ -35,7 +35,7 @@ private:
   bool eval(const Formula& f, int k, const Point4& p) const;
   std::string name_;
   Formula formula_;
-  std::vector<const Atom*> atoms_;
+  std::vector<Atom> atoms_;
   std::vector<mpq_class> times_;
   std::vector<std::array<mpq_class, 3>> v_, o_;   // per segment
 };

@@ -154,9 +154,9 @@ Formula solid_formula(const Solid& s)
   throw std::invalid_argument(s.path + ": a solid the checker cannot read");
 }
 
-void collect_atoms(const Formula& f, std::vector<const Atom*>& out)
+void collect_atoms(const Formula& f, std::vector<Atom>& out)
 {
-  if (f.op == Formula::Op::Atom) out.push_back(&f.atom);
+  if (f.op == Formula::Op::Atom) out.push_back(f.atom);
   for (const Formula& k : f.kids) collect_atoms(k, out);
 }
 

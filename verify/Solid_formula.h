@@ -27,7 +27,7 @@ struct Formula {
 Formula solid_formula(const Solid& s);
 
 // Every atom of f, in order (for the generic-witness check of section 3).
-void collect_atoms(const Formula& f, std::vector<const Atom*>& out);
+void collect_atoms(const Formula& f, std::vector<Atom>& out);
 
 } // namespace clash4d
 
