@@ -222,6 +222,33 @@ BOOST_AUTO_TEST_CASE(a_block_moving_into_another_earliest)
             "verified: collision (regularised): box and ram at (3/4, 1/2, 1/2, 5/2)");
 }
 
+// Rule 4 with a third object "far" = [10,11]x[0,1]^2: the other pairs need
+// only be apart until t* = 2. box/far: x - 1 and 10 - x, constants 9.
+// ram/far on [0, 2]: ram's x + t - 4, far's 10 - x and the slab's -t (0 - t),
+// lambda 1 each: x and t cancel, constants 6.
+BOOST_AUTO_TEST_CASE(earliest_needs_the_others_apart_until_t_star)
+{
+  std::string s = scene(block("box", "[0,0,0]", "[1,1,1]") + "," +
+                        block("ram", "[3,0,0]", "[4,1,1]", "rest until 0 vel -1 0 0 until 5 rest") + "," +
+                        block("far", "[10,0,0]", "[11,1,1]"));
+  Json c = cert("regularised", true, true, false, ram_pairs);
+  c["pairs"].push_back(Json::parse(R"({"objects":["box","far"],"collide":false,"apart":{"until":"2","pieces":[{"t":["0","2"],
+    "proof":{"conflicts":[{"literals":[["1","0","0","0","-1"],["-1","0","0","0","10"]],"lambda":["1","1"]}]}}]}})"));
+  c["pairs"].push_back(Json::parse(R"({"objects":["ram","far"],"collide":false,"apart":{"until":"2","pieces":[{"t":["0","2"],
+    "proof":{"conflicts":[{"literals":[["1","0","0","1","-4"],["-1","0","0","0","10"],["0","0","0","-1","0"]],"lambda":["1","1","1"]}]}}]}})"));
+  expect_ok(verify(s, c), "verified: earliest collision (regularised): box and ram at t* = 2, contact (1, 1/2, 1/2, 2)");
+  Json short_of = c;   // box/far only until 1 < t*
+  short_of["pairs"][1]["apart"]["until"] = "1";
+  short_of["pairs"][1]["apart"]["pieces"][0]["t"][1] = "1";
+  expect_rejected(verify(s, short_of), "pairs[1].apart.until", "before t* = 2");
+  Json all = c;   // all_pairs: the others must reach tH
+  all["claim"]["all_pairs"] = true;
+  expect_rejected(verify(s, all), "pairs[1].apart.until", "not until tH = 10");
+  Json missing = c;   // rule 4: every pair not ignored has a PAIR
+  missing["pairs"].erase(2);
+  expect_rejected(verify(s, missing), "pairs", "no PAIR for ram/far");
+}
+
 // Closed: the ram first touches the box at t* = 2 too; the slab's end t = 2
 // is then strict, so the same conflict (constants sum 0) holds through the
 // strict t - 2. WA = (1/2, 1/2, 1/2, 3) is in the box, WB = (3/2, 1/2, 1/2, 1)

@@ -248,7 +248,7 @@ void Certificate_checker::check_node(const Json& j, const std::string& at, const
 {
   if (!j.is_object() || !j.contains("split")) return check_leaf(j, at, piece, path);
   expect_keys(j, at, {"split", "below", "above"});
-  if (path.size() >= 10000) reject(at, "splits nested deeper than 10000");
+  if (path.size() >= 2000) reject(at, "splits nested deeper than 2000");   // section 4: paths grow with depth
   std::array<mpz_class, 5> s = read_literal(j["split"], key_at(at, "split"));
   // The hyperplane s = 0 must be a null set, or a split would prove anything.
   if (s[0] == 0 && s[1] == 0 && s[2] == 0 && s[3] == 0) reject(key_at(at, "split"), "a split needs a non-zero coefficient of x, y, z or t");
