@@ -1,0 +1,56 @@
+// Reading the certificate's JSON by the letter of docs/certificate-format.md:
+// numbers are strings (section 1), unknown keys are errors (section 3).
+#ifndef CLASH4D_VERIFY_CERT_READER_H
+#define CLASH4D_VERIFY_CERT_READER_H
+
+#include "verify/Object_model.h"
+#include <nlohmann/json.hpp>
+#include <initializer_list>
+#include <stdexcept>
+#include <string>
+
+namespace clash4d {
+
+using Json = nlohmann::json;
+
+constexpr int CLASH4D_VERIFY_REJECTED = 1;     // the certificate does not prove its claim
+constexpr int CLASH4D_VERIFY_UNREADABLE = 2;   // not a certificate of this format
+
+// The first failure: its exit status, its JSON path, the reason.
+class Cert_failure : public std::runtime_error {
+public:
+  Cert_failure(int exit_code, std::string where, const std::string& reason)
+    : std::runtime_error(reason), exit_code_(exit_code), where_(std::move(where)) {}
+  int exit_code() const { return exit_code_; }
+  const std::string& where() const { return where_; }
+private:
+  int exit_code_;
+  std::string where_;
+};
+
+[[noreturn]] void reject(const std::string& where, const std::string& reason);
+
+// JSON paths: "pairs[2].apart" and so on.
+std::string key_at(const std::string& at, const std::string& key);
+std::string index_at(const std::string& at, std::size_t i);
+
+// j must be an object holding every required key (else unreadable) and no
+// key outside required and optional (else rejected: an unknown key).
+void expect_keys(const Json& j, const std::string& at, std::initializer_list<const char*> required,
+                 std::initializer_list<const char*> optional = {});
+// An array, of exactly `size` elements when size >= 0.
+const Json& read_array(const Json& j, const std::string& at, long size = -1);
+bool read_bool(const Json& j, const std::string& at);
+std::string read_text(const Json& j, const std::string& at);
+mpq_class read_number(const Json& j, const std::string& at);   // "p/q" or "p"
+Point4 read_point(const Json& j, const std::string& at);
+// A literal as written: five integer strings, not all zero.
+std::array<mpz_class, 5> read_literal(const Json& j, const std::string& at);
+
+std::string text(const mpq_class& q);                            // "p/q" or "p", lowest terms
+std::string text(const Point4& p);                               // "(x, y, z, t)"
+std::string text(const Literal& l);                              // "[a,b,c,e_t,e]"
+
+} // namespace clash4d
+
+#endif
