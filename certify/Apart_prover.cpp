@@ -72,7 +72,10 @@ json Apart_prover::prove(int a, int b, const Rational& until, bool strict_end)
   json pieces = json::array();
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
     pieces.push_back(piece(a, b, cuts[i], cuts[i + 1], strict_end && i + 2 == cuts.size()));
-  return json{{"until", to_string(until)}, {"pieces", pieces}};
+  json out{{"until", to_string(until)}};
+  if (strict_end) out["open_end"] = true;
+  out["pieces"] = pieces;
+  return out;
 }
 
 // One piece: the pair's extrusion on it (no shear, no S-bounds), its

@@ -58,7 +58,7 @@ public:
         if (scene_.ignored(i, j)) continue;
         auto it = colliding.find({i, j});
         if (it != colliding.end()) pairs.push_back(with_proof(*it->second));
-        else if (every_pair) pairs.push_back(apart_entry(i, j, first ? rational(first->t_star) : scene_.t_hi));
+        else if (every_pair) pairs.push_back(apart_entry(i, j, first));
       }
     if (stats) stats->pairs_apart = apart_, stats->conflicts = prover_.conflicts(), stats->steps = prover_.steps();
     return json{{"format", "clash4d-certificate/1"},
@@ -104,12 +104,15 @@ private:
     return e;
   }
 
-  json apart_entry(int i, int j, const Rational& until)
+  // Apart until tH, or before the earliest pair's t* (rule 4: in closed
+  // semantics t* itself is left out, another pair may touch then too).
+  json apart_entry(int i, int j, const Pair_answer* first)
   {
     ++apart_;
+    Rational until = first ? rational(first->t_star) : scene_.t_hi;
     return json{{"objects", json::array({scene_.objects[i].name, scene_.objects[j].name})},
                 {"collide", false},
-                {"apart", prover_.prove(i, j, until, false)}};
+                {"apart", prover_.prove(i, j, until, closed_ && first)}};
   }
 };
 

@@ -56,6 +56,18 @@ void certify_and_verify(const std::string& scene, const std::vector<std::string>
 {
   std::string cert = (work / "cert.json").string();
   fs::remove(cert);
+  // A failing scene is kept beside the certificate, to rerun by hand.
+  struct Keep {
+    std::string scene, what;
+    bool done = false;
+    ~Keep()
+    {
+      if (done) return;
+      std::string name = "failed-" + what + ".json";
+      for (char& ch : name) if (ch == ' ' || ch == '/' || ch == '(' || ch == ')') ch = '_';
+      fs::copy_file(scene, work / name, fs::copy_options::overwrite_existing);
+    }
+  } keep{scene, what};
   std::vector<std::string> args{"check", scene, "--number", number, "--certificate", cert};
   args.insert(args.end(), mode.begin(), mode.end());
   Cli_run c = run_clash4d(args);
@@ -66,6 +78,7 @@ void certify_and_verify(const std::string& scene, const std::vector<std::string>
   bool says_apart = v.out.find("verified: no collision") != std::string::npos;
   BOOST_TEST((v.out.rfind("verified: ", 0) == 0 && says_apart == !collide),
              what << mode_text(mode) << ": check exit " << c.status << ", verify printed " << v.out);
+  keep.done = v.status == 0;
 }
 
 std::vector<fs::path> fixture_scenes(const std::string& folder)

@@ -153,6 +153,28 @@ BOOST_AUTO_TEST_CASE(touching_blocks_apart_regularised_and_touching_closed)
                   "for closed semantics");
 }
 
+// ram [3,4] moves at -1 until t = 2 and stops, its face x = 1 on the box's:
+// the touch at t = 2, a velocity change of ram. A generic witness at that
+// very time is fine (either segment's literals have the same signs there),
+// and so is one at t = 3 (no change strictly between 2 and 3). One at t = 1 from before, with c at t = 5/2 after
+// the stop, has the change t = 2 strictly between: rejected.
+BOOST_AUTO_TEST_CASE(a_generic_witness_may_sit_at_a_velocity_change)
+{
+  std::string stop = scene(block("A", "[0,0,0]", "[1,1,1]") + "," +
+                           block("B", "[3,0,0]", "[4,1,1]", "rest until 0 vel -1 0 0 until 2 rest"));
+  std::string touch = R"([{"objects":["A","B"],"collide":true,"touch":{"point":["1","1/2","1/2","2"],
+    "inside":[["1/2","1/2","1/2","2"],["3/2","1/2","1/2","2"]]}}])";
+  expect_ok(verify(stop, cert("closed", true, false, false, touch)), "verified: collision (closed): A and B at (1, 1/2, 1/2, 2)");
+  Json later = cert("closed", true, false, false, touch);
+  later["pairs"][0]["touch"]["inside"][1] = {"3/2", "1/2", "1/2", "3"};
+  expect_ok(verify(stop, later), "verified: collision (closed): A and B at (1, 1/2, 1/2, 2)");
+  Json across = cert("closed", true, false, false, touch);
+  across["pairs"][0]["touch"]["point"] = {"1", "1/2", "1/2", "5/2"};
+  across["pairs"][0]["touch"]["inside"][0] = {"1/2", "1/2", "1/2", "5/2"};
+  across["pairs"][0]["touch"]["inside"][1] = {"5/2", "1/2", "1/2", "1"};
+  expect_rejected(verify(stop, across), "pairs[0].touch.inside[1][3]", "lies between the contact's time and this one");
+}
+
 BOOST_AUTO_TEST_CASE(a_certificate_on_a_scene_moved_by_1e_9_is_rejected)
 {
   // B's min x moves to 1 - 1e-9: its literal is now [-1e9,0,0,0,999999999],
@@ -257,6 +279,10 @@ BOOST_AUTO_TEST_CASE(closed_earliest_uses_the_strict_end)
 {
   Json c = cert("closed", true, true, false, ram_pairs);
   c["pairs"][0]["earliest"]["inside"] = Json::parse(R"([["1/2","1/2","1/2","3"],["5/2","1/2","1/2","1"]])");
+  // Without open_end, t - 2 <= 0 is non-strict: the sum 0 proves nothing
+  // (the blocks do touch at t = 2).
+  expect_rejected(verify(ram_scene, c), leaf + ".conflicts[0]", "no strict literal has lambda > 0");
+  c["pairs"][0]["apart"]["open_end"] = true;
   expect_ok(verify(ram_scene, c), "verified: earliest collision (closed): box and ram at t* = 2, contact (1, 1/2, 1/2, 2)");
   // Without the strict t - 2 the sum 0 proves nothing.
   Json& conflict = c["pairs"][0]["apart"]["pieces"][0]["proof"]["conflicts"][0];

@@ -104,6 +104,8 @@ std::string Certificate_checker::check_claim(const Json& claim, const std::vecto
     if (single && pairs[i].until < pairs[hits[0]].t_star)
       reject(at, "apart until " + text(pairs[i].until) + " only, before t* = " + text(pairs[hits[0]].t_star));
     if (!single && pairs[i].until != t_hi_) reject(at, "apart until " + text(pairs[i].until) + ", not until tH = " + text(t_hi_));
+    if (!single && !regularised_ && pairs[i].open_end)
+      reject(key_at(index_at("pairs", i), "apart.open_end"), "closed semantics: apart until tH must include t = tH (open_end false)");
   }
   std::string sem = " (" + semantics_ + "): ";
   auto names = [&](const Pair_result& p, const char* sep) { return objects_[p.a].name() + sep + objects_[p.b].name(); };
@@ -143,7 +145,7 @@ Certificate_checker::Pair_result Certificate_checker::check_pair(const Json& p, 
   int proofs = int(p.contains("witness")) + int(p.contains("touch")) + int(p.contains("earliest"));
   if (!r.collide) {
     if (proofs != 0 || !p.contains("apart")) reject(at, "a PAIR with collide false holds apart and nothing else");
-    r.until = check_apart(p["apart"], key_at(at, "apart"), r.a, r.b, false);
+    r.until = check_apart(p["apart"], key_at(at, "apart"), r.a, r.b, r.open_end);
   } else if (proofs != 1 || p.contains("apart") != p.contains("earliest")) {
     reject(at, "a colliding PAIR holds one of witness, touch, or earliest with apart");
   } else if (p.contains("witness")) {
@@ -161,7 +163,7 @@ Certificate_checker::Pair_result Certificate_checker::check_pair(const Json& p, 
   } else {
     r.earliest = true;
     r.t_star = check_earliest(p["earliest"], key_at(at, "earliest"), r.a, r.b, r.shown);
-    r.until = check_apart(p["apart"], key_at(at, "apart"), r.a, r.b, true);
+    r.until = check_apart(p["apart"], key_at(at, "apart"), r.a, r.b, r.open_end);
     if (r.until != r.t_star) reject(key_at(at, "apart.until"), "an earliest proof's apart must end at t* = " + text(r.t_star));
   }
   return r;
@@ -186,9 +188,11 @@ void Certificate_checker::check_generic(const Point4& c, const Json& j, const st
   Point4 w = read_point(j, at);
   for (int o : objects) {
     const Object_model& m = objects_[o];
-    if (m.is_change(w[3])) reject(index_at(at, 3), "t = " + text(w[3]) + " is a velocity change of " + m.name());
     if (m.change_between(c[3], w[3])) reject(index_at(at, 3), "a velocity change of " + m.name() + " lies between the contact's time and this one");
-    int k = m.segment_at(w[3]);
+    // The segment holding the times strictly between c and w; when c.t =
+    // w.t (which may be a velocity change) either segment's literals have
+    // the same signs there, D being continuous.
+    int k = m.segment_at((c[3] + w[3]) / 2);
     if (!m.strict_true(k, w)) reject(at, "the point " + text(w) + " is not strictly inside " + m.name());
     if (!m.signs_follow(k, c, w)) reject(at, "a literal of " + m.name() + " is non-zero at the contact with a sign other than here");
   }
@@ -216,10 +220,11 @@ mpq_class Certificate_checker::check_earliest(const Json& j, const std::string& 
 }
 
 // Pieces cover [tL, until] contiguously, no velocity change inside (section 3).
-mpq_class Certificate_checker::check_apart(const Json& j, const std::string& at, int a, int b, bool earliest)
+mpq_class Certificate_checker::check_apart(const Json& j, const std::string& at, int a, int b, bool& open_end)
 {
-  expect_keys(j, at, {"until", "pieces"});
+  expect_keys(j, at, {"until", "pieces"}, {"open_end"});
   mpq_class until = read_number(j["until"], key_at(at, "until"));
+  open_end = j.contains("open_end") && read_bool(j["open_end"], key_at(at, "open_end"));
   if (until > t_hi_) reject(key_at(at, "until"), "until is after tH = " + text(t_hi_));
   const Json& pieces = read_array(j["pieces"], key_at(at, "pieces"));
   mpq_class prev = t_lo_;
@@ -235,7 +240,7 @@ mpq_class Certificate_checker::check_apart(const Json& j, const std::string& at,
     mpq_class mid = (lo + hi) / 2;
     Piece piece{a, b, objects_[a].segment_at(mid), objects_[b].segment_at(mid), {}, -1};
     piece.slab = {intern({0, 0, 0, -1, lo}), intern({0, 0, 0, 1, -hi})};   // lo - t, t - hi
-    if (earliest && !regularised_ && hi == until) piece.strict_end = piece.slab[1];
+    if (open_end && !regularised_ && hi == until) piece.strict_end = piece.slab[1];
     std::vector<int> path;
     check_node(pieces[i]["proof"], key_at(pa, "proof"), piece, path);
     prev = hi;

@@ -29,7 +29,7 @@ public:
 private:
   struct Pair_result {
     int a = 0, b = 0;
-    bool collide = false, earliest = false;
+    bool collide = false, earliest = false, open_end = false;
     mpq_class until, t_star;   // apart until; earliest time
     Point4 shown;              // witness, touch or contact point
   };
@@ -45,7 +45,7 @@ private:
   Point4 check_witness(const Json& j, const std::string& at, int a, int b);
   void check_generic(const Point4& c, const Json& w, const std::string& at, std::vector<int> objects);
   mpq_class check_earliest(const Json& j, const std::string& at, int a, int b, Point4& contact);
-  mpq_class check_apart(const Json& j, const std::string& at, int a, int b, bool earliest);
+  mpq_class check_apart(const Json& j, const std::string& at, int a, int b, bool& open_end);
   void check_node(const Json& j, const std::string& at, const Piece& piece, std::vector<int>& path);
   void check_leaf(const Json& j, const std::string& at, const Piece& piece, const std::vector<int>& path);
   Leaf_conflict check_conflict(const Json& j, const std::string& at, const Piece& piece);
