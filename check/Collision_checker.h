@@ -147,7 +147,7 @@ private:
                                   Vector3<FT>& shear, std::array<bool, 3>& frame_of_a, Span_stats& ss)
   {
     bool closed = goal.closed();
-    Span_region<K> bounds(k_, stats_, closed);
+    Span_region<K> bounds(k_, stats_, model_.far_exponent, closed);
     FT tl = span.lo, th = span.hi;
     bool alive = use_sbounds_ ? bounds.four_d_bounds(A, B, tl, th) : true;
     alive = alive && goal.can_improve(k_, tl);

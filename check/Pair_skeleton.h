@@ -5,6 +5,10 @@
 // segment with its time slab, §3, Extrusion::whole), so that edges on a
 // velocity change are classified with both segments and the span's ends tL,
 // tH are real faces.
+// A pair unbounded along an axis is searched within the far bound
+// (model/Far_bound.h): every edge meets that box (its closure, cut by the
+// coordinate hyperplanes, has a vertex inside), and an unbounded edge is
+// reported clipped to it.
 #ifndef CLASH4D_CHECK_PAIR_SKELETON_H
 #define CLASH4D_CHECK_PAIR_SKELETON_H
 
@@ -32,7 +36,7 @@ public:
   {
     ++stats_.pairs;
     std::vector<Segment> edges;
-    Span_region<K> bounds(k_, stats_);
+    Span_region<K> bounds(k_, stats_, model_.far_exponent);
     for (const auto& span : model_.sub_spans({a, b})) {
       ++stats_.sub_spans;
       Moving_object<FT> A = moving_on(model_, a, span, settled_[a]), B = moving_on(model_, b, span, settled_[b]);

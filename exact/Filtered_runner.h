@@ -220,6 +220,7 @@ private:
     try {
       Protector protect;
       amodel_ = Scene_model<AK>::build(ak_, scene_);
+      emodel_.far_exponent = amodel_.far_exponent;   // one exponent, from the scene: EK's runs take AK's path
     } catch (const CGAL::Uncertain_conversion_exception&) {
       ++fallbacks_;
       return false;

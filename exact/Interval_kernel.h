@@ -90,6 +90,13 @@ public:
     return FT(-(-n / d), n / d);
   }
   FT power_of_two(int e) const { return FT(power_of_two_double(e)); }
+  // Beyond 2^900 a region face times the grid's 2^20 and a plane's
+  // coefficients leave the double range: the rational run takes the pair.
+  FT far_power_of_two(int e) const
+  {
+    if (e > 900) throw CGAL::Uncertain_conversion_exception("a far bound beyond the double range");
+    return power_of_two(e);
+  }
   // The number a point interval is (grid values, snapped witnesses); none
   // for an interval that only encloses one.
   std::optional<Rational> exact_value(const FT& x) const

@@ -8,6 +8,7 @@
 #include "geometry/Kernel_concept.h"
 #include "numbers/Rational.h"
 #include "numbers/Stat_number.h"
+#include "scene/Input_error.h"
 #include <cmath>
 #include <string>
 
@@ -34,6 +35,16 @@ public:
     return std::floor(x * power_of_two_double(bits)) * power_of_two_double(-bits);
   }
   double power_of_two(int e) const { return power_of_two_double(e); }
+  // The far bound (model/Far_bound.h) beyond 2^900 leaves no room for the
+  // search's products in doubles (Interval_kernel's limit): refused, exit 3.
+  double far_power_of_two(int e) const
+  {
+    if (e > 900)
+      throw Input_error("", "the search box of a pair unbounded along an axis reaches 2^" + std::to_string(e) +
+                                ", beyond what the double instantiation can search (use --number exact or rational)",
+                        CLASH4D_EXIT_LIMIT);
+    return power_of_two(e);
+  }
   int grid_exponent(double x) const
   {
     int e = 0;

@@ -54,6 +54,12 @@ public:
     return derived().floor_to_grid(x + derived().power_of_two(-bits - 1), bits);
   }
 
+  // 2^e for the far bound R of a pair unbounded along an axis
+  // (model/Far_bound.h, search/Span_region.h). A kernel whose numbers cannot
+  // hold R with room for the search refines it: the interval kernel hands
+  // the pair to the rationals, the double kernel refuses (exit 3).
+  FT far_power_of_two(int e) const { return derived().power_of_two(e); }
+
   // For conservative filters only (the pair sweep): true unless x is known
   // not to be positive. An interval kernel answers true when unsure.
   bool possibly_positive(const FT& x) const { return derived().sign(x) == CGAL::POSITIVE; }

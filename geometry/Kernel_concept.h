@@ -35,7 +35,9 @@
 // does for speed): compare, less, side, dot_sign, orientation4, is_zero,
 // quotient (a / b with b's sign known), largest_component, round_to_grid,
 // grid_point, same_on_grid, less_on_grid, possibly_positive and
-// possibly_nonnegative (conservative filters), is_nonnegative (box simplification, CGAL::Uncertain<bool>).
+// possibly_nonnegative (conservative filters), is_nonnegative (box simplification, CGAL::Uncertain<bool>),
+// far_power_of_two (2^e for the far bound of unbounded pairs; a kernel that
+// cannot hold it refines it to fail).
 //
 // Optional:
 //   k.to_rational(x)                exact kernels and double: the value as

@@ -3,6 +3,7 @@
 #ifndef CLASH4D_MODEL_SCENE_MODEL_H
 #define CLASH4D_MODEL_SCENE_MODEL_H
 
+#include "model/Far_bound.h"
 #include "model/Model_builder.h"
 #include "model/Motion_path.h"
 #include "scene/Scene.h"
@@ -30,6 +31,11 @@ struct Scene_model {
   K kernel;                              // whose signs order times
   FT t_lo, t_hi;
   std::vector<Object_model<FT>> objects;
+  // R = 2^far_exponent bounds the vertices of the scene's arrangement
+  // (model/Far_bound.h): the search box on an axis along which neither
+  // object of a pair is bounded. One exponent from the scene's rationals,
+  // the same in every kernel (path identity); -1: no pair needs it.
+  int far_exponent = -1;
 
   static Scene_model build(const K& k, const Scene& scene)
   {
@@ -37,6 +43,7 @@ struct Scene_model {
     m.kernel = k;
     m.t_lo = k.from_rational(scene.t_lo);
     m.t_hi = k.from_rational(scene.t_hi);
+    m.far_exponent = clash4d::far_exponent(scene);
     Model_builder<K> builder(k);
     for (const auto& o : scene.objects)
       m.objects.push_back({o.name, builder.build(o.shape), Motion_path<FT>::build(k, o.motion)});

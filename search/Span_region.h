@@ -3,14 +3,15 @@
 // Appendix B's closed form at the root, repeated until nothing shrinks),
 // then Appendix B's optimal fitting of one box in a sheared frame, with its
 // faces moved out to the search's dyadic grid. §4.1's original bound (no
-// S-bounds) is kept for comparison (--no-sbounds).
+// S-bounds) is kept for comparison (--no-sbounds). A pair unbounded along
+// an axis is searched within the scene's far bound (model/Far_bound.h).
 #ifndef CLASH4D_SEARCH_SPAN_REGION_H
 #define CLASH4D_SEARCH_SPAN_REGION_H
 
 #include "model/Extrusion.h"
-#include "scene/Input_error.h"
 #include "search/Check_stats.h"
 #include "search/S_bounds.h"
+#include <stdexcept>
 
 namespace clash4d {
 
@@ -22,8 +23,11 @@ public:
   using Box4 = Box<FT, 4>;
   using Moving = Moving_object<FT>;
 
-  // closed: the pair under closed semantics (S_bounds' closed).
-  Span_region(const K& k, Check_stats& stats, bool closed = false) : k_(k), sb_(k, closed), stats_(stats) {}
+  // far_exponent: Scene_model::far_exponent, R = 2^far_exponent
+  // (model/Far_bound.h); closed: the pair under closed semantics (S_bounds'
+  // closed).
+  Span_region(const K& k, Check_stats& stats, int far_exponent, bool closed = false)
+    : k_(k), sb_(k, closed), stats_(stats), far_exponent_(far_exponent) {}
 
   // §4.3.2: narrows A's and B's bounds and [tl, th]; false when the pair
   // cannot meet on the sub-span. The passes stop when no bound moved by a
@@ -50,18 +54,20 @@ public:
   // Appendix B, "optimal fitting": per axis, measure q in the frame of the
   // object whose bound is narrower there (q' = q - w t with w its velocity),
   // the widths compared on the grid (Kernel_base::less_on_grid). Sets the
-  // shear w per axis and whose frame it is (frame_of_a).
+  // shear w per axis and whose frame it is (frame_of_a). An axis along
+  // which neither is bounded on both sides gets the far bound (far_axis).
   Box4 fitted(const Moving& A, const Moving& B, const FT& tl, const FT& th, Vector3<FT>& shear,
               std::array<bool, 3>& frame_of_a) const
   {
     Box4 region;
-    const char* axis = "xyz";
     for (int q = 0; q < 3; ++q) {
       const Box3 &ba = A.beta[0], &bb = B.beta[0];
       bool fa = ba.has_lo[q] && ba.has_hi[q], fb = bb.has_lo[q] && bb.has_hi[q];
-      if (!fa && !fb)
-        throw Input_error("", std::string("both objects are unbounded along ") + axis[q] +
-                              ": this version needs one of each pair bounded", CLASH4D_EXIT_LIMIT);
+      if (!fa && !fb) {
+        frame_of_a[q] = true;
+        far_axis(A, B, q, tl, th, region, shear);
+        continue;
+      }
       bool use_a = fa && (!fb || !k_.less_on_grid(bb.hi[q] - bb.lo[q], ba.hi[q] - ba.lo[q]));
       frame_of_a[q] = use_a;
       const Moving& m = use_a ? A : B;
@@ -91,9 +97,9 @@ public:
     Box3 both = meet(sweep[0], sweep[1]);
     Box4 region;
     for (int q = 0; q < 3; ++q) {
-      if (!both.has_lo[q] || !both.has_hi[q])
-        throw Input_error("", "the original bounding procedure needs bounded objects", CLASH4D_EXIT_LIMIT);
-      region.set(q, both.lo[q], both.hi[q]);
+      // Unbounded sides: the far bound, in this world frame as everywhere
+      // (model/Far_bound.h: every vertex has |x_q| < R).
+      region.set(q, both.has_lo[q] ? both.lo[q] : -far(), both.has_hi[q] ? both.hi[q] : far());
       shear[q] = FT(0);
     }
     region.set(3, lo, hi);
@@ -124,6 +130,43 @@ private:
   const K& k_;
   S_bounds<K> sb_;
   Check_stats& stats_;
+  int far_exponent_;
+
+  FT far() const
+  {
+    if (far_exponent_ < 0) throw std::logic_error("internal error: a pair unbounded along an axis without a far bound");
+    return k_.far_power_of_two(far_exponent_);
+  }
+
+  // Neither object bounded on both sides of axis q. It is measured in A's
+  // frame (x' = x - v_A t; frame_of_a, so a run in another kernel rebuilds
+  // the same table, Extrusion::span_table), within [-R, R] (R: the far
+  // bound, beyond every vertex of the scene's arrangement in every such
+  // frame, model/Far_bound.h), narrowed by A's sides (constant in its
+  // frame) and B's swept over [tl, th] (x'_q - (v_B - v_A) t lies in B's
+  // bound). Why nothing is lost: every non-empty face of the pair's
+  // collision region has a vertex v of the arrangement in its closure
+  // (Far_bound.h); an open cell has points as near v as wished, |v'_q| < R,
+  // and they lie within the other axes' S-bounds and [tl, th] as the whole
+  // region does, so the box meets the cell in an open set (on_grid moves the
+  // faces outward past v). Closed semantics: v itself is a touching point in
+  // the box. --earliest: t* is attained at such a vertex (the least t over a
+  // pointed polyhedron), so the box's t* is the pair's.
+  void far_axis(const Moving& A, const Moving& B, int q, const FT& tl, const FT& th, Box4& region,
+                Vector3<FT>& shear) const
+  {
+    using Ops = Number_ops<FT>;
+    const Box3 &ba = A.beta[0], &bb = B.beta[0];
+    const FT R = far();
+    FT lo = -R, hi = R;
+    if (ba.has_lo[q]) lo = Ops::upper(lo, ba.lo[q] + A.o[q]);
+    if (ba.has_hi[q]) hi = Ops::lower(hi, ba.hi[q] + A.o[q]);
+    const FT d = B.v[q] - A.v[q], at_l = d * tl + B.o[q], at_h = d * th + B.o[q];
+    if (bb.has_lo[q]) lo = Ops::upper(lo, bb.lo[q] + Ops::lower(at_l, at_h));
+    if (bb.has_hi[q]) hi = Ops::lower(hi, bb.hi[q] + Ops::upper(at_l, at_h));
+    shear[q] = A.v[q];
+    region.set(q, lo, hi);
+  }
 };
 
 } // namespace clash4d

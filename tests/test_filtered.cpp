@@ -98,7 +98,7 @@ std::size_t exact_decisions(const Check_answer& a)
 std::vector<std::string> fixture_scenes()
 {
   std::vector<std::string> out;
-  for (const char* family : {"paper", "contact"})
+  for (const char* family : {"paper", "contact", "unbounded"})
     for (const auto& f : std::filesystem::directory_iterator(std::string(CLASH4D_FIXTURES) + "/" + family)) {
       std::string name = f.path().filename().string();
       // The skewed §6 scenes take a rational run of 4-17 s each (issue 6's
@@ -373,7 +373,9 @@ BOOST_DATA_TEST_CASE(skeleton_matches_rational,
                      data::make(std::vector<std::string>{"contact/face_touch_static_overlap_1e-9.json",
                                                          "contact/union_seam_straddle.json",
                                                          "paper/section3_block_path_obstacle.json",
-                                                         "contact/crossing_paths_collide.json"}),
+                                                         "contact/crossing_paths_collide.json",
+                                                         "unbounded/crossing_halfspaces.json",
+                                                         "unbounded/slab_block_up.json"}),
                      entry)
 {
   Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/" + entry);

@@ -91,6 +91,8 @@ static void check_scene(const std::string& entry)
 BOOST_DATA_TEST_CASE(contact_fixture_verdicts, data::make(entries("contact")), entry) { check_scene(entry); }
 BOOST_DATA_TEST_CASE(paper_fixture_verdicts, data::make(entries("paper")), entry) { check_scene(entry); }
 BOOST_DATA_TEST_CASE(found_fixture_verdicts, data::make(entries("found")), entry) { check_scene(entry); }
+// Pairs unbounded along an axis (issue 16); tests/test_unbounded.cpp checks their points.
+BOOST_DATA_TEST_CASE(unbounded_fixture_verdicts, data::make(entries("unbounded")), entry) { check_scene(entry); }
 
 BOOST_DATA_TEST_CASE(bad_fixtures_are_refused_with_their_place, data::make(entries("bad")), entry)
 {
@@ -112,4 +114,5 @@ BOOST_AUTO_TEST_CASE(manifests_are_not_empty)
   BOOST_TEST(entries("contact").size() >= 20u);
   BOOST_TEST(entries("paper").size() >= 4u);
   BOOST_TEST(entries("bad").size() >= 20u);
+  BOOST_TEST(entries("unbounded").size() >= 5u);
 }
