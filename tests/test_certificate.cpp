@@ -10,6 +10,7 @@
 #include "support/Cli_run.h"
 #include "support/Random_scene.h"
 #include <nlohmann/json.hpp>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -94,11 +95,18 @@ std::vector<fs::path> fixture_scenes(const std::string& folder)
 // they are certified in the default mode only.
 bool slow(const fs::path& p) { return p.filename().string().find("skewed") != std::string::npos; }
 
+// Random cases: CLASH4D_CERTIFICATE_CASES (the sanitizer run shortens it).
+int cases(int full)
+{
+  const char* env = std::getenv("CLASH4D_CERTIFICATE_CASES");
+  return env ? std::min(full, std::atoi(env)) : full;
+}
+
 } // namespace
 
 BOOST_AUTO_TEST_CASE(every_fixture_in_every_mode_is_certified_and_verified)
 {
-  for (const char* folder : {"paper", "contact", "found"})
+  for (const char* folder : {"paper", "contact", "found", "unbounded"})
     for (const auto& scene : fixture_scenes(folder))
       for (const auto& mode : modes) {
         if (slow(scene) && !mode.empty()) continue;
@@ -118,7 +126,7 @@ BOOST_AUTO_TEST_CASE(seeded_random_scenes_in_every_mode)
   const std::uint64_t seed = 20261125;
   BOOST_TEST_MESSAGE("random scenes: seed " << seed);
   std::mt19937_64 rng(seed);
-  for (int i = 0; i < 1200; ++i) {
+  for (int i = 0; i < cases(1200); ++i) {
     Random_scene r = random_scene_with_text(rng);
     std::string path = write_text("random.json", r.json);
     certify_and_verify(path, modes[i % modes.size()], i % 3 ? "exact" : "rational",
@@ -130,7 +138,7 @@ BOOST_AUTO_TEST_CASE(contact_family_scenes_in_every_mode)
 {
   const std::uint64_t seed = 7;
   BOOST_TEST_MESSAGE("contact families: seed " << seed);
-  for (std::uint64_t i = 0; i < 800; ++i) {
+  for (std::uint64_t i = 0; i < static_cast<std::uint64_t>(cases(800)); ++i) {
     Fuzz_case f = make_fuzz_case(seed, i);
     std::string path = write_text("family.json", f.json);
     certify_and_verify(path, modes[(i / 13) % modes.size()], "exact",
