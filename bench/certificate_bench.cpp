@@ -47,7 +47,7 @@ void row(const std::string& name, const Scene& scene, const Check_options& opts,
   Check_answer a = check_exact(scene, opts);
   nlohmann::json cert = nlohmann::json::parse(make_certificate(scene, a, opts).dump());
   bool ok = false;
-  Timing verify = time_it([&] { return ok = verify_certificate(scene, cert).ok; }, min_seconds);
+  Timing verify = time_it([&] { return ok = verifier::verify_certificate(scene, cert).ok; }, min_seconds);
   double w = write.seconds_per_query / check.seconds_per_query, v = verify.seconds_per_query / check.seconds_per_query;
   means.log_write += std::log(w);
   means.log_verify += std::log(v);

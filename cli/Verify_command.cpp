@@ -10,6 +10,8 @@
 
 namespace clash4d {
 
+using namespace verifier;
+
 int run_verify(const std::string& scene_file, const std::string& cert_file, std::ostream& out, std::ostream& err)
 {
   Scene scene;

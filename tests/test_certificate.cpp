@@ -6,6 +6,7 @@
 #define BOOST_TEST_MODULE certificate
 #include <boost/test/unit_test.hpp>
 
+#include "certify/Motzkin_lp.h"
 #include "compare/Contact_families.h"
 #include "support/Cli_run.h"
 #include "support/Random_scene.h"
@@ -112,6 +113,14 @@ BOOST_AUTO_TEST_CASE(every_fixture_in_every_mode_is_certified_and_verified)
         if (slow(scene) && !mode.empty()) continue;
         certify_and_verify(scene.string(), mode, "exact", scene.filename().string());
       }
+}
+
+// A mesh solid (an L-shaped part, the exact union of the reader's convex
+// pieces) against a probe, in every mode.
+BOOST_AUTO_TEST_CASE(a_mesh_scene_in_every_mode)
+{
+  std::string scene = (fs::path(CLASH4D_FIXTURES) / "meshes" / "scene_l_part.json").string();
+  for (const auto& mode : modes) certify_and_verify(scene, mode, "exact", "meshes/scene_l_part.json");
 }
 
 BOOST_AUTO_TEST_CASE(the_rational_kernel_certifies_too)
@@ -330,4 +339,51 @@ BOOST_AUTO_TEST_CASE(json_output_names_the_certificate)
   Cli_run c = run_clash4d({"check", scene, "--json", "--certificate", cert});
   BOOST_TEST(c.status == 1);
   BOOST_TEST(json::parse(c.out)["certificate"] == cert);
+}
+
+// ---- The LP behind the conflicts (certify/Motzkin_lp.h), on hand-derived
+// systems: its answers are checked exactly, so it may only ever say less.
+
+namespace {
+
+Literal_coefficients lit(long a, long b, long c, long t, long e)
+{
+  return {Rational(a), Rational(b), Rational(c), Rational(t), Rational(e)};
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(motzkin_multipliers_on_hand_derived_systems)
+{
+  // x - 1 < 0 and 2 - x < 0: lambda (1, 1) sums the x's to 0 and the
+  // constants to 1 >= 0; any proof is a positive multiple of it.
+  Literal_coefficients h1 = lit(1, 0, 0, 0, -1), h2 = lit(-1, 0, 0, 0, 2);
+  auto l = motzkin_multipliers({{&h1, true}, {&h2, true}});
+  BOOST_TEST_REQUIRE(l.has_value());
+  BOOST_TEST(((*l)[0] == (*l)[1] && CGAL::sign((*l)[0]) == CGAL::POSITIVE));
+  // x - 1 < 0 and -x < 0: 0 < x < 1 has points, no proof.
+  Literal_coefficients h3 = lit(-1, 0, 0, 0, 0);
+  BOOST_TEST(!motzkin_multipliers({{&h1, true}, {&h3, true}}).has_value());
+  // x <= 0 and -x <= 0 meet at x = 0 (closed: no proof); with x < 0 strict
+  // as well they do not (the strict row carries weight, sum e = 0).
+  Literal_coefficients x = lit(1, 0, 0, 0, 0), minus_x = lit(-1, 0, 0, 0, 0);
+  BOOST_TEST(!motzkin_multipliers({{&x, false}, {&minus_x, false}}).has_value());
+  auto strict = motzkin_multipliers({{&x, false}, {&minus_x, false}, {&x, true}});
+  BOOST_TEST_REQUIRE(strict.has_value());
+  BOOST_TEST(CGAL::sign((*strict)[2]) == CGAL::POSITIVE);
+  // Coefficients 10^12 apart (the double guess sees a wide range): the
+  // 4D simplex x, y, z, t > 0, x + y + z + t < 10^-12 scaled up, and a far
+  // slab t > 10^12; the exact answer still comes.
+  Literal_coefficients a = lit(-1, 0, 0, 0, 0), b = lit(0, -1, 0, 0, 0), c = lit(0, 0, -1, 0, 0),
+                       d = lit(0, 0, 0, -1, 0), e = lit(1000000000000, 1000000000000, 1000000000000, 1000000000000, -1),
+                       far = lit(0, 0, 0, -1, 1000000000000);
+  auto wide = motzkin_multipliers({{&a, true}, {&b, true}, {&c, true}, {&d, true}, {&e, true}, {&far, true}});
+  BOOST_TEST_REQUIRE(wide.has_value());
+  std::vector<Motzkin_row> rows{{&a, true}, {&b, true}, {&c, true}, {&d, true}, {&e, true}, {&far, true}};
+  BOOST_TEST(proves_infeasible(rows, *wide));
+  // A flipped multiplier proves nothing.
+  std::vector<Rational> flipped = *wide;
+  for (auto& v : flipped)
+    if (CGAL::sign(v) == CGAL::POSITIVE) { v = -v; break; }
+  BOOST_TEST(!proves_infeasible(rows, flipped));
 }

@@ -12,6 +12,7 @@
 #include <fstream>
 
 using namespace clash4d;
+using namespace clash4d::verifier;
 
 namespace {
 

@@ -2,7 +2,7 @@
 #include <algorithm>
 #include <cctype>
 
-namespace clash4d {
+namespace clash4d::verifier {
 namespace {
 
 [[noreturn]] void unreadable(const std::string& where, const std::string& reason)
@@ -102,4 +102,4 @@ std::string text(const Literal& l)
   return "[" + l[0].get_str() + "," + l[1].get_str() + "," + l[2].get_str() + "," + l[3].get_str() + "," + l[4].get_str() + "]";
 }
 
-} // namespace clash4d
+} // namespace clash4d::verifier

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace clash4d {
+namespace clash4d::verifier {
 
 using Json = nlohmann::json;
 
@@ -51,6 +51,6 @@ std::string text(const mpq_class& q);                            // "p/q" or "p"
 std::string text(const Point4& p);                               // "(x, y, z, t)"
 std::string text(const Literal& l);                              // "[a,b,c,e_t,e]"
 
-} // namespace clash4d
+} // namespace clash4d::verifier
 
 #endif

@@ -1,7 +1,7 @@
 #include "verify/Certificate_checker.h"
 #include <functional>
 
-namespace clash4d {
+namespace clash4d::verifier {
 namespace {
 
 std::array<mpq_class, 5> as_rationals(const std::array<mpz_class, 5>& l)
@@ -340,4 +340,4 @@ Verify_result verify_certificate(const Scene& scene, const Json& certificate)
   return r;
 }
 
-} // namespace clash4d
+} // namespace clash4d::verifier

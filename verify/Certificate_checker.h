@@ -1,4 +1,5 @@
-// The independent certificate checker of `clash4d verify`: proves a
+// The independent certificate checker of `clash4d verify` (namespace
+// clash4d::verifier, apart from the pipeline's names): proves a
 // certificate's claim about a scene by docs/certificate-format.md alone. It
 // shares nothing with the decision pipeline but the scene reader (section 7).
 #ifndef CLASH4D_VERIFY_CERTIFICATE_CHECKER_H
@@ -8,7 +9,7 @@
 #include "verify/Term_enumerator.h"
 #include <map>
 
-namespace clash4d {
+namespace clash4d::verifier {
 
 // ok: claim is the line `verify` prints (section 5). Otherwise exit_code is 1
 // (rejected) or 2 (unreadable), where the JSON path of the failure.
@@ -66,6 +67,6 @@ private:
   Term_enumerator terms_{steps_};
 };
 
-} // namespace clash4d
+} // namespace clash4d::verifier
 
 #endif

@@ -1,7 +1,7 @@
 #include "verify/Object_model.h"
 #include <algorithm>
 
-namespace clash4d {
+namespace clash4d::verifier {
 
 Literal coprime(const std::array<mpq_class, 5>& v)
 {
@@ -86,4 +86,4 @@ bool Object_model::signs_follow(int k, const Point4& c, const Point4& w) const
   return true;
 }
 
-} // namespace clash4d
+} // namespace clash4d::verifier

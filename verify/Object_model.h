@@ -6,7 +6,7 @@
 #include "verify/Solid_formula.h"
 #include <string>
 
-namespace clash4d {
+namespace clash4d::verifier {
 
 using Point4 = std::array<mpq_class, 4>;     // x y z t
 using Literal = std::array<mpz_class, 5>;    // a b c e_t e, coprime (section 2.2)
@@ -40,6 +40,6 @@ private:
   std::vector<std::array<mpq_class, 3>> v_, o_;   // per segment
 };
 
-} // namespace clash4d
+} // namespace clash4d::verifier
 
 #endif

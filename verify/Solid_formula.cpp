@@ -2,7 +2,7 @@
 #include <set>
 #include <stdexcept>
 
-namespace clash4d {
+namespace clash4d::verifier {
 namespace {
 
 mpq_class num(const Solid& s, std::size_t i)
@@ -160,4 +160,4 @@ void collect_atoms(const Formula& f, std::vector<Atom>& out)
   for (const Formula& k : f.kids) collect_atoms(k, out);
 }
 
-} // namespace clash4d
+} // namespace clash4d::verifier

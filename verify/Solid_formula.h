@@ -8,7 +8,7 @@
 #include <array>
 #include <vector>
 
-namespace clash4d {
+namespace clash4d::verifier {
 
 // a x + b y + c z + d <= 0, (a, b, c) != 0.
 using Atom = std::array<mpq_class, 4>;
@@ -29,6 +29,6 @@ Formula solid_formula(const Solid& s);
 // Every atom of f, in order (for the generic-witness check of section 3).
 void collect_atoms(const Formula& f, std::vector<Atom>& out);
 
-} // namespace clash4d
+} // namespace clash4d::verifier
 
 #endif

@@ -1,6 +1,6 @@
 #include "verify/Term_enumerator.h"
 
-namespace clash4d {
+namespace clash4d::verifier {
 
 bool Term_enumerator::present(int lit, unsigned sides) const
 {
@@ -97,4 +97,4 @@ bool Term_enumerator::walk(Side side)
   return ok;
 }
 
-} // namespace clash4d
+} // namespace clash4d::verifier

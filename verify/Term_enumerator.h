@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-namespace clash4d {
+namespace clash4d::verifier {
 
 // Section 4: the steps of term enumeration one certificate may take.
 constexpr long long CLASH4D_VERIFY_MAX_STEPS = 10000000;
@@ -62,6 +62,6 @@ private:
   std::vector<std::pair<int, Side>> term_, uncovered_;
 };
 
-} // namespace clash4d
+} // namespace clash4d::verifier
 
 #endif
