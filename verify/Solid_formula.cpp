@@ -43,36 +43,54 @@ void map_atoms(Formula& f, const Map& map)
   for (Formula& k : f.kids) map_atoms(k, map);
 }
 
+// The points scaled by one common denominator L to integers, so the
+// brute force below runs on integers (no gcd per operation).
+std::vector<std::array<mpz_class, 3>> integer_points(const Solid& s, mpz_class& L)
+{
+  L = 1;
+  for (std::size_t i = 0; i < s.numbers.size(); ++i) L = lcm(L, num(s, i).get_den());
+  std::vector<std::array<mpz_class, 3>> p(s.numbers.size() / 3);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      mpq_class v = num(s, 3 * i + c) * L;
+      p[i][c] = v.get_num();
+    }
+  return p;
+}
+
 // Every plane through three non-collinear points with all points on its
 // <= 0 side, oriented so; a plane found twice is one atom (section 2.1).
+// In the scaled points P = L p the plane is n.P + e <= 0, that is
+// n.p + e / L <= 0 in the scene's.
 std::vector<Atom> hull_atoms(const Solid& s)
 {
-  std::vector<std::array<mpq_class, 3>> p(s.numbers.size() / 3);
-  for (std::size_t i = 0; i < p.size(); ++i) p[i] = {num(s, 3 * i), num(s, 3 * i + 1), num(s, 3 * i + 2)};
+  mpz_class L;
+  const auto p = integer_points(s, L);
   std::vector<Atom> atoms;
-  std::set<std::array<mpq_class, 4>> seen;   // planes scaled so the first non-zero coefficient is +-1
+  std::set<std::array<mpz_class, 4>> seen;   // coprime forms
   for (std::size_t i = 0; i < p.size(); ++i)
     for (std::size_t j = i + 1; j < p.size(); ++j)
       for (std::size_t k = j + 1; k < p.size(); ++k) {
-        std::array<mpq_class, 3> u, v;
+        std::array<mpz_class, 3> u, v;
         for (int c = 0; c < 3; ++c) u[c] = p[j][c] - p[i][c], v[c] = p[k][c] - p[i][c];
-        Atom h{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0], 0};
+        std::array<mpz_class, 4> h{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0], 0};
         if (h[0] == 0 && h[1] == 0 && h[2] == 0) continue;   // collinear
         h[3] = -(h[0] * p[i][0] + h[1] * p[i][1] + h[2] * p[i][2]);
         int side = 0;
         bool mixed = false;
         for (std::size_t m = 0; m < p.size() && !mixed; ++m) {
-          mpq_class val = h[0] * p[m][0] + h[1] * p[m][1] + h[2] * p[m][2] + h[3];
-          int sg = sgn(val);
+          int sg = sgn(h[0] * p[m][0] + h[1] * p[m][1] + h[2] * p[m][2] + h[3]);
           if (sg != 0 && side != 0 && sg != side) mixed = true;
           if (sg != 0) side = sg;
         }
         if (mixed || side == 0) continue;
-        if (side > 0)
-          for (mpq_class& c : h) c = -c;
-        mpq_class lead = abs(h[0] != 0 ? h[0] : h[1] != 0 ? h[1] : h[2]);
-        Atom key{h[0] / lead, h[1] / lead, h[2] / lead, h[3] / lead};
-        if (seen.insert(key).second) atoms.push_back(h);
+        mpz_class g = gcd(gcd(h[0], h[1]), gcd(h[2], h[3]));
+        if (side > 0) g = -g;
+        for (mpz_class& c : h) c /= g;
+        if (!seen.insert(h).second) continue;
+        mpq_class e(h[3], L);
+        e.canonicalize();   // GMP wants fractions in lowest terms
+        atoms.push_back({mpq_class(h[0]), mpq_class(h[1]), mpq_class(h[2]), e});
       }
   return atoms;
 }
