@@ -1,5 +1,6 @@
 #include "certify/Term_search.h"
 
+#include "search/Work_budget.h"
 #include <algorithm>
 #include <climits>
 
@@ -38,6 +39,7 @@ int Term_search::walk()
 {
   if (++steps_ > limit_)
     throw Term_limit("closing off the terms took more than " + std::to_string(limit_) + " steps");
+  if ((steps_ & 1023) == 0) Work_budget::check();   // --max-seconds covers the certificate too
   if (pending_.empty()) return complete();
   int n = pending_.back();
   pending_.pop_back();
