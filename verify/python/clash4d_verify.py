@@ -14,12 +14,14 @@ import json
 import math
 import re
 import sys
+import threading
 from fractions import Fraction
 
 PROG = "clash4d_verify.py"
 STEP_LIMIT = 10_000_000      # s4: steps of term enumeration in one certificate
 MAX_SPLIT_DEPTH = 2000       # s4: splits nested deeper are refused
 SEMANTICS = ("regularised", "closed")
+MAX_EXPONENT = 1000          # the scene reader's limit on a decimal exponent
 
 
 class Unreadable(Exception):
@@ -56,8 +58,11 @@ CERT_NUMBER = re.compile(r"-?\d+(/\d+)?")         # s1: "-12" or "p/q"
 
 def scene_number_from_text(text):
     """A number of the scene format, exactly, from its text (decimal, exponent, p/q)."""
-    if not SCENE_NUMBER.fullmatch(text):
+    m = SCENE_NUMBER.fullmatch(text)
+    if not m:
         raise ValueError(f"not a number: {text!r}")
+    if m.group(3) and abs(int(m.group(3)[1:])) > MAX_EXPONENT:
+        raise ValueError(f"exponent beyond the limit of +-{MAX_EXPONENT}: {text!r}")
     if "/" in text and int(text.split("/")[1]) == 0:
         raise ValueError(f"zero denominator: {text!r}")
     return Fraction(text)
@@ -167,9 +172,8 @@ class Motion:
             T = times[k]
             offs[k] = tuple(offs[k + 1][i] + (vels[k + 1][i] - vels[k][i]) * T for i in range(3))
         self.offs = offs
-        # A velocity change is a listed time where the velocity does change: at a time
-        # listed between two equal velocities, both sides have the same literals.
-        self.changes = [times[k] for k in range(len(times)) if vels[k] != vels[k + 1]]
+        # A velocity change is every time the motion lists (s3), even between equal velocities.
+        self.changes = list(times)
 
     def segment(self, t):
         return sum(1 for T in self.times if T < t)
@@ -225,8 +229,10 @@ class SceneReader:
     def __init__(self, filename):
         self.file = filename
         doc = load_json(filename, parse_float=scene_number_from_text, parse_int=Fraction,
-                        parse_constant=self.constant)
+                        parse_constant=self.constant, object_pairs_hook=self.unique_keys)
         self.keys(doc, "", {"format", "time", "objects"}, {"name", "ignore", "meta"})
+        if not isinstance(doc.get("name", ""), str):
+            self.bad("name", "expected a string")
         if doc["format"] != "clash4d-scene/1":
             self.bad("format", "expected \"clash4d-scene/1\"")
         self.time = self.numbers(doc["time"], "time", 2)
@@ -251,10 +257,17 @@ class SceneReader:
         if not isinstance(ign, list):
             self.bad("ignore", "expected a list of name pairs")
         for i, pr in enumerate(ign):
-            if (not isinstance(pr, list) or len(pr) != 2
+            if (not isinstance(pr, list) or len(pr) != 2 or pr[0] == pr[1]
                     or not all(isinstance(n, str) and n in self.objects for n in pr)):
-                self.bad(f"ignore[{i}]", "expected two object names")
+                self.bad(f"ignore[{i}]", "expected two distinct object names")
             self.ignored.add(frozenset(pr))
+
+    @staticmethod
+    def unique_keys(pairs):
+        keys = [k for k, _ in pairs]
+        if len(set(keys)) != len(keys):
+            raise ValueError("a key appears twice in one object")
+        return dict(pairs)
 
     def constant(self, name):
         raise ValueError(f"{name} is not a number")
@@ -275,7 +288,7 @@ class SceneReader:
             return v
         if isinstance(v, str):
             try:
-                return scene_number_from_text(v.strip())
+                return scene_number_from_text(v)
             except ValueError as e:
                 self.bad(path, str(e))
         self.bad(path, "expected a number")
@@ -316,6 +329,8 @@ class SceneReader:
         if kind == "block":
             self.keys(arg, p, {"min", "max"})
             m, M = self.numbers(arg["min"], p + ".min", 3), self.numbers(arg["max"], p + ".max", 3)
+            if not all(m[i] < M[i] for i in range(3)):
+                self.bad(p, "expected min < max on every axis")
             atoms = []
             for i in range(3):
                 e = [0, 0, 0]
@@ -327,15 +342,20 @@ class SceneReader:
             self.keys(arg, p, {"base", "z"})
             base = self.rows(arg["base"], p + ".base", 2, 3)
             z0, z1 = self.numbers(arg["z"], p + ".z", 2)
-            atoms = []
+            if not z0 < z1:
+                self.bad(p + ".z", "expected z0 < z1")
+            atoms, n = [], len(base)
             for i, (xi, yi) in enumerate(base):
-                xj, yj = base[(i + 1) % len(base)]
+                xj, yj = base[(i + 1) % n]
                 dx, dy = xj - xi, yj - yi                      # dy (x - x_i) - dx (y - y_i)
+                # strictly convex, counter-clockwise: every other vertex strictly left of the edge
+                if any(dy * (x - xi) - dx * (y - yi) >= 0 for x, y in base[:i] + base[i + 2:] if (x, y) != (xj, yj)):
+                    self.bad(p + ".base", "expected a strictly convex counter-clockwise polygon")
                 atoms.append(self.halfspace((dy, -dx, 0, -dy * xi + dx * yi), f"{p}.base[{i}]"))
             return conj(atoms + [(0, 0, 1, -z1), (0, 0, -1, z0)])
         if kind == "hull":
             atoms = hull_atoms(self.rows(arg, p, 3, 4))
-            if not atoms:
+            if len(atoms) < 4:
                 self.bad(p, "the points have no hull with an interior")
             return conj(atoms)
         if kind in ("union", "intersection", "difference"):
@@ -436,8 +456,8 @@ class Checker:
     def literal(self, v, path):
         """A literal as written: five integers (s1, s3)."""
         nums = [self.num(x, f"{path}[{i}]") for i, x in enumerate(self.array(v, path, 5))]
-        for i, x in enumerate(nums):
-            if x.denominator != 1:
+        for i, x in enumerate(self.array(v, path, 5)):
+            if "/" in x:
                 self.bad(f"{path}[{i}]", "a literal holds integers only")
         lit = tuple(int(x) for x in nums)
         if not any(lit):
@@ -449,20 +469,18 @@ class Checker:
         if not isinstance(doc, dict):
             self.bad("$", "expected an object")
         self.keys(doc, "$", {"format", "semantics", "time", "claim", "pairs"}, {"scene"})
-        if doc["format"] != "clash4d-certificate/1":
+        if not isinstance(doc["format"], str) or doc["format"] != "clash4d-certificate/1":
             self.bad("format", "expected \"clash4d-certificate/1\"")
-        if doc["semantics"] not in SEMANTICS:
+        if not isinstance(doc["semantics"], str) or doc["semantics"] not in SEMANTICS:
             self.bad("semantics", "expected \"regularised\" or \"closed\"")
         if "scene" in doc and not isinstance(doc["scene"], str):
             self.bad("scene", "expected a string")
         self.closed = doc["semantics"] == "closed"
         tL, tH = self.scene.time
-        time = tuple(self.num(x, f"time[{i}]") for i, x in enumerate(self.array(doc["time"], "time", 2)))
-        if time != (tL, tH):
-            raise Failed("time", f"[{time[0]}, {time[1]}] is not the scene's [{tL}, {tH}]")
+        for i, x in enumerate(self.array(doc["time"], "time", 2)):
+            if self.num(x, f"time[{i}]") != (tL, tH)[i]:
+                raise Failed(f"time[{i}]", f"{x} is not the scene's {('tL', 'tH')[i]} = {(tL, tH)[i]}")
         claim = self.keys(doc["claim"], "claim", {"collide", "earliest", "all_pairs"})
-        collide, earliest, all_pairs = (self.boolean(claim[k], "claim." + k)
-                                        for k in ("collide", "earliest", "all_pairs"))
         pairs = self.array(doc["pairs"], "pairs")
         records, seen = [], set()
         for i, pair in enumerate(pairs):                         # rule 1
@@ -479,10 +497,12 @@ class Checker:
                 raise Failed(path + ".objects", "the two objects are the same")
             if key in self.scene.ignored:
                 raise Failed(path + ".objects", f"the pair {names[0]}/{names[1]} is ignored")
+            records.append(self.pair(pair, path, *(self.scene.objects[n] for n in names)))
             if key in seen:
                 raise Failed(path + ".objects", f"the pair {names[0]}/{names[1]} appears twice")
             seen.add(key)
-            records.append(self.pair(pair, path, *(self.scene.objects[n] for n in names)))
+        collide, earliest, all_pairs = (self.boolean(claim[k], "claim." + k)
+                                        for k in ("collide", "earliest", "all_pairs"))
         return self.claim(records, seen, collide, earliest, all_pairs)
 
     def claim(self, records, seen, collide, earliest, all_pairs):
@@ -539,22 +559,16 @@ class Checker:
         rec = {"path": path, "names": (A.name, B.name), "tstar": None, "point": None,
                "until": None, "open_end": False}
         rec["collide"] = collide = self.boolean(pair["collide"], path + ".collide")
-        present = [k for k in ("apart", "witness", "touch", "earliest") if k in pair]
-        if not collide:
-            allowed, needed = {"apart"}, {"apart"}
-        elif "earliest" in pair:
-            allowed, needed = {"earliest", "apart"}, {"earliest", "apart"}
-        elif "witness" in pair and not self.closed:
-            allowed, needed = {"witness"}, {"witness"}
-        elif "touch" in pair and self.closed:
-            allowed, needed = {"touch"}, {"touch"}
-        else:
-            self.bad(path, "missing key \"" + ("touch" if self.closed else "witness") + "\" or \"earliest\"")
-        for k in present:
-            if k not in allowed:
-                raise Failed(f"{path}.{k}", "unknown key for this PAIR")
-        for k in needed - set(present):
-            self.bad(path, f"missing key \"{k}\"")
+        # The proofs a PAIR holds: a wrong combination is a failure (1), as an unknown key.
+        present = {k for k in ("apart", "witness", "touch", "earliest") if k in pair}
+        if not collide and present != {"apart"}:
+            raise Failed(path, "a PAIR with collide false holds apart and nothing else")
+        if collide and present not in ({"witness"}, {"touch"}, {"earliest", "apart"}):
+            raise Failed(path, "a colliding PAIR holds one of witness, touch, or earliest with apart")
+        if present == {"witness"} and self.closed:
+            raise Failed(path + ".witness", "a witness is for regularised semantics (closed: touch)")
+        if present == {"touch"} and not self.closed:
+            raise Failed(path + ".touch", "a touch is for closed semantics (regularised: witness)")
         if not collide:
             rec["until"], rec["open_end"] = self.apart(pair["apart"], path + ".apart", A, B)
         elif "witness" in pair:
@@ -611,7 +625,7 @@ class Checker:
         for O in objs:
             for T in O.motion.changes:
                 if lo < T < hi:
-                    raise Failed(path, f"a velocity change of {O.name} at t = {T} lies between "
+                    raise Failed(path + "[3]", f"a velocity change of {O.name} at t = {T} lies between "
                                        f"{c[3]} and {w[3]}")
         for O in objs:
             f = O.formula_at((lo + hi) / 2)
@@ -632,8 +646,6 @@ class Checker:
         if until > tH:
             raise Failed(path + ".until", f"{until} is after tH = {tH}")
         pieces = self.array(ap["pieces"], path + ".pieces")
-        if not pieces and until != tL:
-            raise Failed(path + ".pieces", f"no pieces cover [{tL}, {until}]")
         at = tL
         for i, pc in enumerate(pieces):
             pp = f"{path}.pieces[{i}]"
@@ -642,20 +654,19 @@ class Checker:
             if lo != at:
                 raise Failed(pp + ".t[0]", f"{lo} is not {at}" + (" (tL)" if i == 0 else " (the previous hi)"))
             if not lo < hi:
-                raise Failed(pp + ".t", f"lo = {lo} is not below hi = {hi}")
-            last = i == len(pieces) - 1
-            if last and hi != until:
-                raise Failed(pp + ".t[1]", f"{hi} is not until = {until}")
+                raise Failed(pp + ".t[1]", f"lo = {lo} is not below hi = {hi}")
             for O in (A, B):
                 for T in O.motion.changes:
                     if lo < T < hi:
                         raise Failed(pp + ".t", f"a velocity change of {O.name} at t = {T} lies inside")
             mid = (lo + hi) / 2
             slab_lo, slab_hi = primitive((0, 0, 0, -1, lo)), primitive((0, 0, 0, 1, -hi))
-            strict_hi = slab_hi if self.closed and open_end and last else None
+            strict_hi = slab_hi if self.closed and open_end and hi == until else None
             self.node(pc["proof"], pp + ".proof", A.formula_at(mid), B.formula_at(mid),
                       [slab_lo, slab_hi], [], strict_hi)
             at = hi
+        if at != until:
+            raise Failed(path + ".until", f"the pieces end at {at}, not at until = {until}")
         return until, open_end
 
     def node(self, v, path, fa, fb, slab, split_path, strict_hi):
@@ -685,24 +696,27 @@ class Checker:
             cp = f"{path}.conflicts[{j}]"
             cf = self.keys(cf, cp, {"literals", "lambda"}, {"of"})
             of = cf.get("of", "both")
+            if not isinstance(of, str):
+                self.bad(cp + ".of", "expected a string")
             if of not in ("both", "A", "B"):
-                self.bad(cp + ".of", "expected \"both\", \"A\" or \"B\"")
+                raise Failed(cp + ".of", "expected \"both\", \"A\" or \"B\"")
             if not self.closed:
                 of = "both"                       # regularised ignores `of`
-            lits = [self.literal(x, f"{cp}.literals[{i}]")
-                    for i, x in enumerate(self.array(cf["literals"], cp + ".literals"))]
-            lams = [self.num(x, f"{cp}.lambda[{i}]")
-                    for i, x in enumerate(self.array(cf["lambda"], cp + ".lambda"))]
-            if not lits:
+            raw_lits = self.array(cf["literals"], cp + ".literals")
+            raw_lams = self.array(cf["lambda"], cp + ".lambda")
+            if not raw_lits:
                 raise Failed(cp + ".literals", "a conflict needs at least one literal")
-            if len(lams) != len(lits):
-                raise Failed(cp + ".lambda", f"{len(lams)} multipliers for {len(lits)} literals")
-            for i, lam in enumerate(lams):
-                if not lam > 0:
-                    raise Failed(f"{cp}.lambda[{i}]", f"{lam} is not positive")
+            if len(raw_lams) != len(raw_lits):
+                raise Failed(cp + ".lambda", f"{len(raw_lams)} multipliers for {len(raw_lits)} literals")
+            lits, lams = [], []
+            for i, (lit, lam) in enumerate(zip(raw_lits, raw_lams)):
+                lits.append(self.literal(lit, f"{cp}.literals[{i}]"))
+                lams.append(self.num(lam, f"{cp}.lambda[{i}]"))
+                if not lams[-1] > 0:
+                    raise Failed(f"{cp}.lambda[{i}]", f"{lams[-1]} is not positive")
             total = [sum(lam * lit[m] for lam, lit in zip(lams, lits)) for m in range(5)]
             if any(total[:4]):
-                raise Failed(cp + ".lambda", "sum lambda_i (a_i, b_i, c_i, e_t,i) = "
+                raise Failed(cp, "sum lambda_i (a_i, b_i, c_i, e_t,i) = "
                              f"({', '.join(map(str, total[:4]))}), not zero")
             keys = [primitive(lit) for lit in lits]
             if not self.closed or of != "both":                # every literal strict
@@ -710,7 +724,7 @@ class Checker:
             else:                                             # non-strict, but for t - hi
                 ok = total[4] > 0 or (total[4] == 0 and strict_hi is not None and strict_hi in keys)
             if not ok:
-                raise Failed(cp + ".lambda", f"sum lambda_i e_i = {total[4]}: the literals "
+                raise Failed(cp, f"sum lambda_i e_i = {total[4]}: the literals "
                              "are not in conflict")
             conflicts.append((of, frozenset(keys)))
         self.terms(path, fa, fb, slab, spl, conflicts)
@@ -789,7 +803,7 @@ class Checker:
                 # a whole term that no conflict closes off: the first failure
                 shown = "; ".join(("A " if closed and s == 0 else "B " if closed else "")
                                   + str(list(k)) for k, s in term)
-                raise Failed(path + ".conflicts", "no conflict closes off the term "
+                raise Failed(path, "no conflict closes off the term "
                              + ("" if closed else "(with the path and slab) ") + f"[{shown}]")
             finally:
                 for k, side in reversed(added):
@@ -799,10 +813,28 @@ class Checker:
 
 
 def main(argv):
+    """Runs the check in a thread with a large stack: deep JSON and formulas recurse."""
+    result = [2]
+
+    def run():
+        result[0] = check_files(argv)
+    old_limit, old_stack = sys.getrecursionlimit(), threading.stack_size()
+    sys.setrecursionlimit(50000)
+    threading.stack_size(256 << 20)
+    try:
+        t = threading.Thread(target=run)
+        t.start()
+        t.join()
+    finally:
+        sys.setrecursionlimit(old_limit)
+        threading.stack_size(old_stack)
+    return result[0]
+
+
+def check_files(argv):
     if len(argv) != 3:
         print(f"usage: {PROG} SCENE.json CERT.json", file=sys.stderr)
         return 2
-    sys.setrecursionlimit(100000)
     try:
         scene = SceneReader(argv[1])
         doc = load_json(argv[2])
