@@ -56,17 +56,24 @@ json literal_json(const Literal_coefficients& h)
 }
 
 Apart_prover::Apart_prover(const Scene& scene, Semantics semantics, std::uint64_t step_limit)
-    : model_(Scene_model<K>::build(k_, scene)), semantics_(semantics), limit_(step_limit)
+    : scene_(scene), semantics_(semantics), limit_(step_limit)
 {
+}
+
+const Scene_model<K>& Apart_prover::model()
+{
+  if (!model_) model_ = Scene_model<K>::build(k_, scene_);
+  return *model_;
 }
 
 json Apart_prover::prove(int a, int b, const Rational& until, bool strict_end)
 {
   // Pieces: [tL, until] cut at the pair's velocity changes inside it.
-  std::vector<Rational> cuts{model_.t_lo, until};
+  const Scene_model<K>& m = model();
+  std::vector<Rational> cuts{m.t_lo, until};
   for (int i : {a, b})
-    for (const Rational& t : model_.objects[i].motion.times)
-      if (model_.t_lo < t && t < until) cuts.push_back(t);
+    for (const Rational& t : m.objects[i].motion.times)
+      if (m.t_lo < t && t < until) cuts.push_back(t);
   std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
   json pieces = json::array();
@@ -83,8 +90,9 @@ json Apart_prover::prove(int a, int b, const Rational& until, bool strict_end)
 json Apart_prover::piece(int a, int b, const Rational& lo, const Rational& hi, bool strict_end)
 {
   const Time_span<Rational> span{lo, hi};
-  auto everything = [&](int i) { return std::vector<Box<Rational, 3>>(model_.objects[i].csg.nodes.size()); };
-  Moving_object<Rational> A = moving_on(model_, a, span, everything(a)), B = moving_on(model_, b, span, everything(b));
+  const Scene_model<K>& m = model();
+  auto everything = [&](int i) { return std::vector<Box<Rational, 3>>(m.objects[i].csg.nodes.size()); };
+  Moving_object<Rational> A = moving_on(m, a, span, everything(a)), B = moving_on(m, b, span, everything(b));
   Motion_groups<Rational> groups;
   const Vector3<Rational> no_shear{Rational(0), Rational(0), Rational(0)};
   auto table = Extrusion<K>::pair_table(A, B, no_shear, {false, false, false}, false, groups);

@@ -11,6 +11,7 @@
 #include "exact/Rational_kernel.h"
 #include "model/Scene_model.h"
 #include <nlohmann/json.hpp>
+#include <optional>
 
 namespace clash4d {
 
@@ -29,12 +30,14 @@ public:
 private:
   using K = Rational_kernel;
   K k_;
-  Scene_model<K> model_;
+  const Scene& scene_;
+  std::optional<Scene_model<K>> model_;   // built at the first proof: a witness needs none
   Semantics semantics_;
   std::uint64_t limit_, steps_ = 0;
   std::size_t conflicts_ = 0;
 
   nlohmann::ordered_json piece(int a, int b, const Rational& lo, const Rational& hi, bool strict_end);
+  const Scene_model<K>& model();
 };
 
 // A literal's JSON form: five integers as strings.
