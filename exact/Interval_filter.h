@@ -11,6 +11,20 @@
 // rationals. For an any-witness search it records where the first point
 // inside was found (exact/Search_trail.h), so a rational run can go
 // straight there (exact/Trail_replay.h).
+//
+// Earliest mode, regularised (resolve_earliest): t* is any rational, which
+// intervals only enclose, and the vertex at t* ends several edges, whose
+// times tie with it. So a line that improves the goal, or has a sign the
+// intervals cannot certify, is examined again in rationals, on the same
+// layout (Exact_span::Lines::earliest), against the goal's exact t* (kept
+// here beside the goal's enclosure of it): the goal then holds the
+// rational run's own t*, enclosed, and every comparison certified against
+// that enclosure is the rational run's. A line the intervals examined to
+// the end without recording anything records nothing in rationals either.
+// A region folded to "inside" records its own lower time, a grid point.
+// The trail then ends at the last improvement (the rational run's last),
+// and a rational run replays it (Earliest_replay) to make t*, the contact
+// point and the witness, instead of searching the whole pair again.
 #ifndef CLASH4D_EXACT_INTERVAL_FILTER_H
 #define CLASH4D_EXACT_INTERVAL_FILTER_H
 
@@ -24,13 +38,26 @@ class Interval_filter {
 public:
   using AK = typename Runner::Approximate_kernel;
   using AFT = typename AK::FT;
+  using EK = typename Runner::Exact_kernel;
+  using EFT = typename EK::FT;
 
   Interval_filter() = default;   // only as a stage's unused default
   // record: an any-witness search, whose trail and witness are wanted.
   // closed: the pair is searched in closed semantics.
   Interval_filter(Runner& runner, Search_trail& trail, Check_stats& stats, bool record, bool closed = false)
-    : exact_(std::make_unique<Exact_span<Runner>>(runner, closed)), trail_(&trail), stats_(&stats), record_(record),
-      closed_(closed) {}
+    : runner_(&runner), exact_(std::make_unique<Exact_span<Runner>>(runner, closed)), trail_(&trail), stats_(&stats),
+      record_(record), closed_(closed) {}
+
+  // Earliest mode, regularised: lines decided against the exact t* (see
+  // above); ceiling: the runner's, in rationals.
+  void resolve_earliest(const EFT* ceiling)
+  {
+    earliest_ = true;
+    ceiling_ = ceiling;
+  }
+  // Whether the trail leads to the rational run's last improvement, made
+  // on a certified path (an earliest-mode rational run can replay it).
+  bool earliest_trail() const { return earliest_ && trail_->complete && !trail_->approximate && !pending_; }
 
   bool skips_span(std::size_t) const { return false; }
   void search_span(int a, int b, std::size_t index, const std::array<bool, 3>& frame_of_a)
@@ -40,7 +67,7 @@ public:
   }
   void found_in_span(std::size_t index)
   {
-    if (record_) trail_->span = index;
+    if (record_ || earliest_) trail_->span = index;
   }
   bool stops_after(std::size_t) const { return false; }
   // The point is the rational run's own when the path was certified (the
@@ -65,6 +92,19 @@ public:
   bool decides_here(std::size_t, bool) const { return true; }
   void found_at(const std::vector<int>& path, bool on_line)
   {
+    if (earliest_) {
+      // A fold reached in earliest mode improves the goal (its lower time
+      // passed the same comparison on entry); a conquer may not have.
+      if (on_line && !pending_) return;
+      trail_->path = path;
+      trail_->on_line = on_line;
+      trail_->line = pending_line_;
+      trail_->line_known = true;
+      trail_->complete = true;
+      pending_ = false;
+      fold_unsynced_ = !on_line;
+      return;
+    }
     if (!record_ || trail_->complete) return;
     trail_->path = path;
     trail_->on_line = on_line;
@@ -81,7 +121,8 @@ public:
   {
     bool before = goal.found;
     if (goal.earliest) {
-      g.test_line(f, i, j, m, goal);
+      if (earliest_) earliest_line(g, f, i, j, m, goal);
+      else g.test_line(f, i, j, m, goal);
       return;
     }
     try {
@@ -109,6 +150,7 @@ public:
   }
 
 private:
+  Runner* runner_ = nullptr;
   std::unique_ptr<Exact_span<Runner>> exact_;
   Search_trail* trail_ = nullptr;
   Check_stats* stats_ = nullptr;
@@ -120,6 +162,74 @@ private:
   std::shared_ptr<typename Exact_span<Runner>::Lines> lines_;   // this conquer's, once one is needed
   std::size_t lines_conquer_ = 0;                               // which conquer they are for
   bool found_in_rationals_ = false;                             // the point is for a rational run to make
+  bool earliest_ = false;                                       // resolve_earliest
+  const EFT* ceiling_ = nullptr;
+  std::optional<EFT> t_star_;                                   // the goal's t*, exact, once found
+  bool fold_unsynced_ = false;                                  // a fold recorded a t* not yet in t_star_
+  bool pending_ = false;                                        // a line improved; its conquer's path follows
+  std::array<std::size_t, 3> pending_line_{};
+  std::optional<EFT> floor_;                                    // the conquer's lower time, when exact
+  std::size_t floor_conquer_ = 0;                               // which conquer it is for
+
+  static bool same(const AFT& x, const AFT& y) { return x.inf() == y.inf() && x.sup() == y.sup(); }
+
+  // Earliest mode: the line in intervals; in rationals when it improves the
+  // goal or cannot be certified.
+  template <class G>
+  void earliest_line(G& g, const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<AFT>& goal)
+  {
+    if (fold_unsynced_) {
+      // A fold's t* is its region's lower time, a grid point.
+      std::optional<Rational> t = runner_->ak_.exact_value(goal.t_star);
+      if (!t) throw CGAL::Uncertain_conversion_exception("a fold's time the intervals only enclose");
+      t_star_ = runner_->ek_.from_rational(*t);
+      fold_unsynced_ = false;
+    }
+    // Every point of the closed region is at or after its lower time: once
+    // t* is there, no line of the conquer improves it (decided exactly).
+    if (t_star_ && goal.found) {
+      if (floor_conquer_ != g.conquers()) {
+        floor_conquer_ = g.conquers();
+        std::optional<Rational> lo = runner_->ak_.exact_value(g.region().lo[3]);
+        floor_ = lo ? std::optional<EFT>(runner_->ek_.from_rational(*lo)) : std::nullopt;
+      }
+      if (floor_ && !runner_->ek_.less(*floor_, *t_star_)) return;
+    }
+    Search_goal<AFT> saved = goal;
+    try {
+      g.test_line(f, i, j, m, goal);
+      if (goal.found == saved.found && (!goal.found || same(goal.t_star, saved.t_star))) return;
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+    }
+    goal = saved;
+    if (!lines_ || lines_conquer_ != g.conquers()) {
+      lines_ = exact_->lines(a_, b_, span_, frame_, g.layout(), g.region());
+      lines_conquer_ = g.conquers();
+    }
+    if (!lines_->exact()) throw CGAL::Uncertain_conversion_exception("earliest mode on a widened region");
+    ++stats_->exact_lines;
+    Search_goal<EFT> e;
+    e.earliest = true;
+    e.semantics = goal.semantics;
+    e.found = goal.found;
+    if (e.found) e.t_star = *t_star_;
+    if (ceiling_) {
+      e.has_ceiling = true;
+      e.ceiling = *ceiling_;
+    }
+    lines_->earliest(f, i, j, m, e);
+    if (!e.improved) return;
+    t_star_ = e.t_star;
+    auto enclose = [&](const EFT& x) { return runner_->ak_.from_rational(runner_->ek_.to_rational(x)); };
+    goal.found = goal.improved = true;
+    goal.t_star = enclose(e.t_star);
+    for (int q = 0; q < 4; ++q) {
+      goal.contact[q] = enclose(e.contact[q]);
+      goal.inside[q] = enclose(e.inside[q]);
+    }
+    pending_ = true;
+    pending_line_ = {i, j, m};
+  }
 
   // One line the intervals could not decide; the same rational conquer
   // serves the rest of this conquer's lines.
