@@ -14,13 +14,16 @@
 //
 // Earliest mode, regularised (resolve_earliest): t* is any rational, which
 // intervals only enclose, and the vertex at t* ends several edges, whose
-// times tie with it. So a line that improves the goal, or has a sign the
-// intervals cannot certify, is examined again in rationals, on the same
-// layout (Exact_span::Lines::earliest), against the goal's exact t* (kept
-// here beside the goal's enclosure of it): the goal then holds the
-// rational run's own t*, enclosed, and every comparison certified against
-// that enclosure is the rational run's. A line the intervals examined to
-// the end without recording anything records nothing in rationals either.
+// times tie with it. So a line with a sign the intervals cannot certify is
+// examined again in rationals, on the same layout
+// (Exact_span::Lines::earliest), against the goal's exact t* (kept here
+// beside the goal's enclosure of it), and the goal then holds the rational
+// run's own t*, enclosed. A line the intervals examined to the end made
+// the rational run's decisions: if it recorded nothing, the rational run
+// records nothing there either; if it improved the goal, the goal holds an
+// enclosure of the rational run's t*, whose exact value is made only when
+// a later line needs it (the line again in rationals, from nothing found:
+// its least time, below the previous t*, is recorded either way).
 // A region folded to "inside" records its own lower time, a grid point.
 // The trail then ends at the last improvement (the rational run's last),
 // and a rational run replays it (Earliest_replay) to make t*, the contact
@@ -168,10 +171,42 @@ private:
   bool fold_unsynced_ = false;                                  // a fold recorded a t* not yet in t_star_
   bool pending_ = false;                                        // a line improved; its conquer's path follows
   std::array<std::size_t, 3> pending_line_{};
+  // The line that last improved the goal in intervals, while t_star_ lags.
+  struct Stale {
+    std::size_t span;
+    std::array<bool, 3> frame;
+    Plane_layout layout;
+    Box<AFT, 4> region;
+    Pair_formula formula;
+    std::array<std::size_t, 3> line;
+  };
+  std::optional<Stale> stale_;
   std::optional<EFT> floor_;                                    // the conquer's lower time, when exact
   std::size_t floor_conquer_ = 0;                               // which conquer it is for
 
   static bool same(const AFT& x, const AFT& y) { return x.inf() == y.inf() && x.sup() == y.sup(); }
+
+  // t_star_ for the goal the stale line left: that line in rationals, from
+  // nothing found (its least time is below the t* before it, which the
+  // intervals certified). The conquer's own region must be exact.
+  void make_exact()
+  {
+    Stale s = std::move(*stale_);
+    stale_.reset();
+    std::shared_ptr<typename Exact_span<Runner>::Lines> lines = exact_->lines(a_, b_, s.span, s.frame, s.layout, s.region);
+    if (!lines->exact()) throw CGAL::Uncertain_conversion_exception("earliest mode on a widened region");
+    ++stats_->exact_lines;
+    Search_goal<EFT> e;
+    e.earliest = true;
+    if (ceiling_) {
+      e.has_ceiling = true;
+      e.ceiling = *ceiling_;
+    }
+    lines->earliest(s.formula, s.line[0], s.line[1], s.line[2], e);
+    if (!e.found) throw std::logic_error("internal error: a line the intervals certified found nothing in rationals");
+    t_star_ = e.t_star;
+    lines_.reset();   // the span's table may have been another's
+  }
 
   // Earliest mode: the line in intervals; in rationals when it improves the
   // goal or cannot be certified.
@@ -184,10 +219,11 @@ private:
       if (!t) throw CGAL::Uncertain_conversion_exception("a fold's time the intervals only enclose");
       t_star_ = runner_->ek_.from_rational(*t);
       fold_unsynced_ = false;
+      stale_.reset();
     }
     // Every point of the closed region is at or after its lower time: once
     // t* is there, no line of the conquer improves it (decided exactly).
-    if (t_star_ && goal.found) {
+    if (t_star_ && goal.found && !stale_) {
       if (floor_conquer_ != g.conquers()) {
         floor_conquer_ = g.conquers();
         std::optional<Rational> lo = runner_->ak_.exact_value(g.region().lo[3]);
@@ -199,9 +235,15 @@ private:
     try {
       g.test_line(f, i, j, m, goal);
       if (goal.found == saved.found && (!goal.found || same(goal.t_star, saved.t_star))) return;
+      // Improved, every decision certified: the exact t* is made when needed.
+      stale_ = Stale{span_, frame_, g.layout(), g.region(), f, {i, j, m}};
+      pending_ = true;
+      pending_line_ = {i, j, m};
+      return;
     } catch (const CGAL::Uncertain_conversion_exception&) {
     }
     goal = saved;
+    if (stale_) make_exact();
     if (!lines_ || lines_conquer_ != g.conquers()) {
       lines_ = exact_->lines(a_, b_, span_, frame_, g.layout(), g.region());
       lines_conquer_ = g.conquers();
