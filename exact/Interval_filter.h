@@ -33,6 +33,7 @@
 
 #include "exact/Exact_span.h"
 #include "exact/Search_trail.h"
+#include <cmath>
 
 namespace clash4d {
 
@@ -185,6 +186,12 @@ private:
   std::size_t floor_conquer_ = 0;                               // which conquer it is for
 
   static bool same(const AFT& x, const AFT& y) { return x.inf() == y.inf() && x.sup() == y.sup(); }
+  // Whether the enclosure holds a multiple of 2^-40 (region times are).
+  static bool near_grid(const AFT& x)
+  {
+    double s = std::ldexp(1.0, 40), lo = x.inf() * s, hi = x.sup() * s;
+    return std::isfinite(lo) && std::isfinite(hi) && std::floor(hi) >= std::ceil(lo);
+  }
 
   // t_star_ for the goal the stale line left: that line in rationals, from
   // nothing found (its least time is below the t* before it, which the
@@ -239,6 +246,15 @@ private:
       stale_ = Stale{span_, frame_, g.layout(), g.region(), f, {i, j, m}};
       pending_ = true;
       pending_line_ = {i, j, m};
+      if (std::optional<Rational> t = runner_->ak_.exact_value(goal.t_star)) {
+        t_star_ = runner_->ek_.from_rational(*t);   // a point: the exact t* itself
+        stale_.reset();
+      } else if (near_grid(goal.t_star)) {
+        // Likely a region's face (S-bounds fitted to the contact time):
+        // the later comparisons with region times need the exact t*.
+        make_exact();
+        goal.t_star = runner_->ak_.from_rational(runner_->ek_.to_rational(*t_star_));
+      }
       return;
     } catch (const CGAL::Uncertain_conversion_exception&) {
     }
