@@ -266,6 +266,11 @@ private:
     }
     if (!lines_->exact()) throw CGAL::Uncertain_conversion_exception("earliest mode on a widened region");
     ++stats_->exact_lines;
+    // Nothing found yet (no tie with t* possible): most such lines hold no
+    // point inside at all, which the verdict alone (its neighbourhoods
+    // classified in intervals first) says more cheaply.
+    bool known = false;
+    if (!goal.found && !lines_->has_inside(f, i, j, m, goal.semantics, known)) return;
     Search_goal<EFT> e;
     e.earliest = true;
     e.semantics = goal.semantics;
