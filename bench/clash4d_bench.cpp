@@ -4,7 +4,8 @@
 // exact/double and rational/double (issue 6's targets: 1.5 general, 3 contact),
 // in regularised semantics and, beside them, in closed semantics (issue 14:
 // the same targets).
-//   clash4d_bench [--seed N] [--random M] [--min-seconds S] [--family F] [--dump-random DIR]
+//   clash4d_bench [--seed N] [--random M] [--min-seconds S] [--family F] [--dump-random DIR] [--earliest]
+// --earliest times `check --earliest` (t* and the contact point) everywhere.
 // --family paper|contact|grid|random runs one family only; --dump-random writes the random scenes to DIR/random-I.json (to rerun one
 // with `clash4d check --stats`).
 #include "bench/Timing.h"
@@ -28,6 +29,7 @@ using namespace clash4d;
 
 namespace {
 
+bool earliest_mode = false;   // --earliest: every query asks for t* (§5)
 
 // Geometric means of the ratios over one family of scenes: regularised
 // exact/double and rational/double, then closed exact/double.
@@ -44,6 +46,7 @@ struct Means {
 void row(const std::string& name, const Scene& scene, double min_seconds, Means& means,
          Check_options opts = Check_options())
 {
+  opts.earliest = opts.earliest || earliest_mode;
   Timing e = time_it([&] { return check_exact(scene, opts).collide; }, min_seconds);
   Timing r = time_it([&] { return check_rational(scene, opts).collide; }, min_seconds);
   Timing d = time_it([&] { return check_double(scene, 0, opts).collide; }, min_seconds);
@@ -72,8 +75,17 @@ int main(int argc, char** argv)
   int random_count = 20;
   double min_seconds = 0.05;
   std::string dump_dir, only;
-  for (int i = 1; i + 1 < argc; i += 2) {
+  for (int i = 1; i < argc; i += 2) {
     std::string a = argv[i];
+    if (a == "--earliest") {
+      earliest_mode = true;
+      --i;
+      continue;
+    }
+    if (i + 1 >= argc) {
+      std::fprintf(stderr, "clash4d_bench: %s needs a value\n", a.c_str());
+      return 2;
+    }
     if (a == "--seed") seed = std::stoul(argv[i + 1]);
     else if (a == "--random") random_count = std::stoi(argv[i + 1]);
     else if (a == "--min-seconds") min_seconds = std::stod(argv[i + 1]);

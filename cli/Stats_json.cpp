@@ -75,6 +75,7 @@ json stats_json(const Check_stats& s)
           {"exact_lines", s.exact_lines},
           {"exact_plane_tests", s.exact_plane_tests},
           {"witnesses_by_intervals", s.witnesses_by_intervals},
+          {"earliest_by_intervals", s.earliest_by_intervals},
           {"seconds", {{"model", s.seconds_model}, {"sweep", s.seconds_sweep}, {"sbounds", s.seconds_sbounds},
                        {"divide_and_conquer", s.seconds_divide}, {"witness", s.seconds_witness}}}};
 }

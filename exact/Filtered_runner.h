@@ -15,7 +15,12 @@
 // from its enclosures. Otherwise the pair is run again on EK: an
 // any-witness search goes straight to the point AK found, along AK's trail
 // (exact/Trail_replay.h), and falls back to the whole search when EK's path
-// differs; earliest mode (t* is any rational) always runs the whole search.
+// differs. Earliest mode, regularised: the interval run decides in
+// rationals the lines that improve the goal or tie with its t*
+// (exact/Interval_filter.h), so its path is the rational run's, and a
+// rational run replays its last improvement (Earliest_replay) for t*, the
+// contact point and the witness; closed, or where that fails, earliest
+// mode runs the whole search in rationals.
 //
 // EK's model is built object by object, only for objects that need it.
 #ifndef CLASH4D_EXACT_FILTERED_RUNNER_H
@@ -109,6 +114,7 @@ public:
 
 private:
   template <class Runner> friend class Exact_span;
+  template <class Runner> friend class Interval_filter;
   static constexpr const char* EK_name = "exact";
 
   // One pair: the interval run, then, when it could not decide or could not
@@ -118,11 +124,13 @@ private:
     bool closed = options.semantics == Semantics::closed;
     Search_trail trail;
     Check_stats astats;
+    bool earliest_trail = false;
     if (!exact_only_[a] && !exact_only_[b]) {
       try {
         Protector protect;
         AFT aceiling = ceiling ? ak_.from_rational(ek_.to_rational(*ceiling)) : AFT(0);
         Interval_filter<Filtered_runner> policy(*this, trail, astats, !options.earliest, closed);
+        if (options.earliest && !closed) policy.resolve_earliest(ceiling);
         Collision_checker<AK, Interval_filter<Filtered_runner>> checker(ak_, amodel_, asettled_, astats, use_sbounds_,
                                                                         &policy);
         Pair_result<AFT> found =
@@ -138,6 +146,7 @@ private:
             return *r;
           }
         }
+        earliest_trail = options.earliest && policy.earliest_trail();
         ++witness_runs_;
       } catch (const CGAL::Uncertain_conversion_exception&) {
         ++fallbacks_;
@@ -146,7 +155,19 @@ private:
     }
     need_exact(a);
     need_exact(b);
-    if (trail.complete && !trail.approximate) {
+    if (earliest_trail) {
+      Check_stats rstats;
+      Earliest_replay replay(trail);
+      Collision_checker<EK, Earliest_replay> checker(ek_, emodel_, esettled_, rstats, use_sbounds_, &replay);
+      Pair_result<EFT> r = checker.check_pair(a, b, true, nullptr, options.semantics);
+      if (r.collide && !trail.diverged) {
+        ++earliest_by_intervals_;
+        stats = astats;                     // the search, as the interval run did it
+        stats.seconds_witness += rstats.seconds_witness;
+        return r;
+      }
+    }
+    if (!options.earliest && trail.complete && !trail.approximate) {
       Check_stats rstats;
       Trail_replay replay(trail);
       Collision_checker<EK, Trail_replay> checker(ek_, emodel_, esettled_, rstats, use_sbounds_, &replay);
@@ -172,7 +193,7 @@ private:
   std::vector<typename S_bounds<EK>::Bounds> esettled_;
   std::unique_ptr<std::once_flag[]> built_, settled_;   // EK's model of an object, and its S-bounds
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
-      witnesses_by_intervals_{0};
+      witnesses_by_intervals_{0}, earliest_by_intervals_{0};
 
   // A witness AK made and verified on a certified path, in EK's numbers.
   // Regularised, its coordinates are grid points (Witness::snap), exact
@@ -296,6 +317,7 @@ private:
     stats.exact_regions = exact_regions_.load();
     stats.exact_plane_tests = exact_planes_.load();
     stats.witnesses_by_intervals = witnesses_by_intervals_.load();
+    stats.earliest_by_intervals = earliest_by_intervals_.load();
   }
 
   static double seconds_since(std::chrono::steady_clock::time_point t)

@@ -11,11 +11,29 @@
 // rationals. For an any-witness search it records where the first point
 // inside was found (exact/Search_trail.h), so a rational run can go
 // straight there (exact/Trail_replay.h).
+//
+// Earliest mode, regularised (resolve_earliest): t* is any rational, which
+// intervals only enclose, and the vertex at t* ends several edges, whose
+// times tie with it. So a line with a sign the intervals cannot certify is
+// examined again in rationals, on the same layout
+// (Exact_span::Lines::earliest), against the goal's exact t* (kept here
+// beside the goal's enclosure of it), and the goal then holds the rational
+// run's own t*, enclosed. A line the intervals examined to the end made
+// the rational run's decisions: if it recorded nothing, the rational run
+// records nothing there either; if it improved the goal, the goal holds an
+// enclosure of the rational run's t*, whose exact value is made only when
+// a later line needs it (the line again in rationals, from nothing found:
+// its least time, below the previous t*, is recorded either way).
+// A region folded to "inside" records its own lower time, a grid point.
+// The trail then ends at the last improvement (the rational run's last),
+// and a rational run replays it (Earliest_replay) to make t*, the contact
+// point and the witness, instead of searching the whole pair again.
 #ifndef CLASH4D_EXACT_INTERVAL_FILTER_H
 #define CLASH4D_EXACT_INTERVAL_FILTER_H
 
 #include "exact/Exact_span.h"
 #include "exact/Search_trail.h"
+#include <cmath>
 
 namespace clash4d {
 
@@ -24,13 +42,26 @@ class Interval_filter {
 public:
   using AK = typename Runner::Approximate_kernel;
   using AFT = typename AK::FT;
+  using EK = typename Runner::Exact_kernel;
+  using EFT = typename EK::FT;
 
   Interval_filter() = default;   // only as a stage's unused default
   // record: an any-witness search, whose trail and witness are wanted.
   // closed: the pair is searched in closed semantics.
   Interval_filter(Runner& runner, Search_trail& trail, Check_stats& stats, bool record, bool closed = false)
-    : exact_(std::make_unique<Exact_span<Runner>>(runner, closed)), trail_(&trail), stats_(&stats), record_(record),
-      closed_(closed) {}
+    : runner_(&runner), exact_(std::make_unique<Exact_span<Runner>>(runner, closed)), trail_(&trail), stats_(&stats),
+      record_(record), closed_(closed) {}
+
+  // Earliest mode, regularised: lines decided against the exact t* (see
+  // above); ceiling: the runner's, in rationals.
+  void resolve_earliest(const EFT* ceiling)
+  {
+    earliest_ = true;
+    ceiling_ = ceiling;
+  }
+  // Whether the trail leads to the rational run's last improvement, made
+  // on a certified path (an earliest-mode rational run can replay it).
+  bool earliest_trail() const { return earliest_ && trail_->complete && !trail_->approximate && !pending_; }
 
   bool skips_span(std::size_t) const { return false; }
   void search_span(int a, int b, std::size_t index, const std::array<bool, 3>& frame_of_a)
@@ -40,7 +71,7 @@ public:
   }
   void found_in_span(std::size_t index)
   {
-    if (record_) trail_->span = index;
+    if (record_ || earliest_) trail_->span = index;
   }
   bool stops_after(std::size_t) const { return false; }
   // The point is the rational run's own when the path was certified (the
@@ -65,6 +96,19 @@ public:
   bool decides_here(std::size_t, bool) const { return true; }
   void found_at(const std::vector<int>& path, bool on_line)
   {
+    if (earliest_) {
+      // A fold reached in earliest mode improves the goal (its lower time
+      // passed the same comparison on entry); a conquer may not have.
+      if (on_line && !pending_) return;
+      trail_->path = path;
+      trail_->on_line = on_line;
+      trail_->line = pending_line_;
+      trail_->line_known = true;
+      trail_->complete = true;
+      pending_ = false;
+      fold_unsynced_ = !on_line;
+      return;
+    }
     if (!record_ || trail_->complete) return;
     trail_->path = path;
     trail_->on_line = on_line;
@@ -81,7 +125,8 @@ public:
   {
     bool before = goal.found;
     if (goal.earliest) {
-      g.test_line(f, i, j, m, goal);
+      if (earliest_) earliest_line(g, f, i, j, m, goal);
+      else g.test_line(f, i, j, m, goal);
       return;
     }
     try {
@@ -109,6 +154,7 @@ public:
   }
 
 private:
+  Runner* runner_ = nullptr;
   std::unique_ptr<Exact_span<Runner>> exact_;
   Search_trail* trail_ = nullptr;
   Check_stats* stats_ = nullptr;
@@ -120,6 +166,133 @@ private:
   std::shared_ptr<typename Exact_span<Runner>::Lines> lines_;   // this conquer's, once one is needed
   std::size_t lines_conquer_ = 0;                               // which conquer they are for
   bool found_in_rationals_ = false;                             // the point is for a rational run to make
+  bool earliest_ = false;                                       // resolve_earliest
+  const EFT* ceiling_ = nullptr;
+  std::optional<EFT> t_star_;                                   // the goal's t*, exact, once found
+  bool fold_unsynced_ = false;                                  // a fold recorded a t* not yet in t_star_
+  bool pending_ = false;                                        // a line improved; its conquer's path follows
+  std::array<std::size_t, 3> pending_line_{};
+  // The line that last improved the goal in intervals, while t_star_ lags.
+  struct Stale {
+    std::size_t span;
+    std::array<bool, 3> frame;
+    Plane_layout layout;
+    Box<AFT, 4> region;
+    Pair_formula formula;
+    std::array<std::size_t, 3> line;
+  };
+  std::optional<Stale> stale_;
+  std::optional<EFT> floor_;                                    // the conquer's lower time, when exact
+  std::size_t floor_conquer_ = 0;                               // which conquer it is for
+
+  static bool same(const AFT& x, const AFT& y) { return x.inf() == y.inf() && x.sup() == y.sup(); }
+  // Whether the enclosure holds a multiple of 2^-40 (region times are).
+  static bool near_grid(const AFT& x)
+  {
+    double s = std::ldexp(1.0, 40), lo = x.inf() * s, hi = x.sup() * s;
+    return std::isfinite(lo) && std::isfinite(hi) && std::floor(hi) >= std::ceil(lo);
+  }
+
+  // t_star_ for the goal the stale line left: that line in rationals, from
+  // nothing found (its least time is below the t* before it, which the
+  // intervals certified). The conquer's own region must be exact.
+  void make_exact()
+  {
+    Stale s = std::move(*stale_);
+    stale_.reset();
+    std::shared_ptr<typename Exact_span<Runner>::Lines> lines = exact_->lines(a_, b_, s.span, s.frame, s.layout, s.region);
+    if (!lines->exact()) throw CGAL::Uncertain_conversion_exception("earliest mode on a widened region");
+    ++stats_->exact_lines;
+    Search_goal<EFT> e;
+    e.earliest = true;
+    if (ceiling_) {
+      e.has_ceiling = true;
+      e.ceiling = *ceiling_;
+    }
+    lines->earliest(s.formula, s.line[0], s.line[1], s.line[2], e);
+    if (!e.found) throw std::logic_error("internal error: a line the intervals certified found nothing in rationals");
+    t_star_ = e.t_star;
+    lines_.reset();   // the span's table may have been another's
+  }
+
+  // Earliest mode: the line in intervals; in rationals when it improves the
+  // goal or cannot be certified.
+  template <class G>
+  void earliest_line(G& g, const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<AFT>& goal)
+  {
+    if (fold_unsynced_) {
+      // A fold's t* is its region's lower time, a grid point.
+      std::optional<Rational> t = runner_->ak_.exact_value(goal.t_star);
+      if (!t) throw CGAL::Uncertain_conversion_exception("a fold's time the intervals only enclose");
+      t_star_ = runner_->ek_.from_rational(*t);
+      fold_unsynced_ = false;
+      stale_.reset();
+    }
+    // Every point of the closed region is at or after its lower time: once
+    // t* is there, no line of the conquer improves it (decided exactly).
+    if (t_star_ && goal.found && !stale_) {
+      if (floor_conquer_ != g.conquers()) {
+        floor_conquer_ = g.conquers();
+        std::optional<Rational> lo = runner_->ak_.exact_value(g.region().lo[3]);
+        floor_ = lo ? std::optional<EFT>(runner_->ek_.from_rational(*lo)) : std::nullopt;
+      }
+      if (floor_ && !runner_->ek_.less(*floor_, *t_star_)) return;
+    }
+    Search_goal<AFT> saved = goal;
+    try {
+      g.test_line(f, i, j, m, goal);
+      if (goal.found == saved.found && (!goal.found || same(goal.t_star, saved.t_star))) return;
+      // Improved, every decision certified: the exact t* is made when needed.
+      stale_ = Stale{span_, frame_, g.layout(), g.region(), f, {i, j, m}};
+      pending_ = true;
+      pending_line_ = {i, j, m};
+      if (std::optional<Rational> t = runner_->ak_.exact_value(goal.t_star)) {
+        t_star_ = runner_->ek_.from_rational(*t);   // a point: the exact t* itself
+        stale_.reset();
+      } else if (near_grid(goal.t_star)) {
+        // Likely a region's face (S-bounds fitted to the contact time):
+        // the later comparisons with region times need the exact t*.
+        make_exact();
+        goal.t_star = runner_->ak_.from_rational(runner_->ek_.to_rational(*t_star_));
+      }
+      return;
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+    }
+    goal = saved;
+    if (stale_) make_exact();
+    if (!lines_ || lines_conquer_ != g.conquers()) {
+      lines_ = exact_->lines(a_, b_, span_, frame_, g.layout(), g.region());
+      lines_conquer_ = g.conquers();
+    }
+    if (!lines_->exact()) throw CGAL::Uncertain_conversion_exception("earliest mode on a widened region");
+    ++stats_->exact_lines;
+    // Nothing found yet (no tie with t* possible): most such lines hold no
+    // point inside at all, which the verdict alone (its neighbourhoods
+    // classified in intervals first) says more cheaply.
+    bool known = false;
+    if (!goal.found && !lines_->has_inside(f, i, j, m, goal.semantics, known)) return;
+    Search_goal<EFT> e;
+    e.earliest = true;
+    e.semantics = goal.semantics;
+    e.found = goal.found;
+    if (e.found) e.t_star = *t_star_;
+    if (ceiling_) {
+      e.has_ceiling = true;
+      e.ceiling = *ceiling_;
+    }
+    lines_->earliest(f, i, j, m, e);
+    if (!e.improved) return;
+    t_star_ = e.t_star;
+    auto enclose = [&](const EFT& x) { return runner_->ak_.from_rational(runner_->ek_.to_rational(x)); };
+    goal.found = goal.improved = true;
+    goal.t_star = enclose(e.t_star);
+    for (int q = 0; q < 4; ++q) {
+      goal.contact[q] = enclose(e.contact[q]);
+      goal.inside[q] = enclose(e.inside[q]);
+    }
+    pending_ = true;
+    pending_line_ = {i, j, m};
+  }
 
   // One line the intervals could not decide; the same rational conquer
   // serves the rest of this conquer's lines.

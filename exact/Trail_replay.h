@@ -50,6 +50,20 @@ private:
   Search_trail* trail_ = nullptr;
 };
 
+// Earliest mode: the trail ends at the interval run's last improvement,
+// the rational run's (exact/Interval_filter.h). The rational run starts
+// from nothing found in the trail's sub-span and examines only the trail's
+// line (or fold): the least time of the points inside there is t*, first
+// recorded at the edge the whole search records last, so the goal, the
+// witness and the contact point are the whole search's. Later sub-spans
+// cannot improve on t* (none did in the interval run): the run stops.
+class Earliest_replay : public Trail_replay {
+public:
+  Earliest_replay() = default;
+  explicit Earliest_replay(Search_trail& trail) : Trail_replay(trail) {}
+  bool stops_after(std::size_t) const { return true; }
+};
+
 } // namespace clash4d
 
 #endif

@@ -132,7 +132,8 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
   std::uint64_t seed = env_number("CLASH4D_SEED", 20261122ull), cases = env_number("CLASH4D_FILTER_CASES", 1000);
   BOOST_TEST_MESSAGE("filtered vs rational, coarse-grid scenes: seed " << seed << ", " << cases << " cases");
   std::mt19937_64 rng(seed);
-  std::size_t by_intervals = 0, collide = 0, witnessed = 0, replayed = 0, searched = 0;
+  std::size_t by_intervals = 0, collide = 0, witnessed = 0, replayed = 0, searched = 0, earliest_colliding = 0,
+              earliest_by_intervals = 0;
   for (std::uint64_t i = 0; i < cases; ++i) {
     Random_scene rs = random_scene_with_text(rng);
     Check_options o;
@@ -143,12 +144,18 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
     replayed += a.stats.exact_witness_replays;
     o.earliest = true;
     Check_answer e = same_answers(rs.scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) + ": " + rs.json);
-    searched += e.stats.exact_witness_runs - e.stats.exact_witness_replays;
+    searched += e.stats.exact_witness_runs - e.stats.exact_witness_replays - e.stats.earliest_by_intervals;
+    earliest_colliding += e.stats.exact_witness_runs;
+    earliest_by_intervals += e.stats.earliest_by_intervals;
   }
   BOOST_TEST_MESSAGE(by_intervals << " of " << cases << " decided by intervals alone, " << collide << " collide, "
                                   << witnessed << " witnesses made by the interval run, " << replayed
                                   << " replayed from its trail in rationals, " << searched
-                                  << " earliest-mode pairs searched again in rationals");
+                                  << " earliest-mode pairs searched again in rationals, " << earliest_by_intervals
+                                  << " of " << earliest_colliding
+                                  << " colliding earliest-mode pairs searched by intervals, the rational run "
+                                     "replaying the last improvement (seed "
+                                  << seed << ")");
   // The comparison must exercise every path: many answers from intervals
   // alone (coarse-grid numbers are exact doubles), witnesses made by the
   // interval run itself, and the rational reruns, through the trail replay
@@ -158,6 +165,11 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
   BOOST_TEST(witnessed > collide / 4);
   BOOST_TEST(replayed > 0u);
   BOOST_TEST(searched > 0u);
+  // Earliest mode (issue 16): most colliding pairs' t* comes from the
+  // interval search, ties with t* decided in rationals line by line, and
+  // a replay of its last improvement, not from a whole rational search.
+  BOOST_TEST(earliest_by_intervals * 4 > earliest_colliding * 3, "seed " << seed << ": " << earliest_by_intervals
+                                                                     << " of " << earliest_colliding);
 }
 
 // Closed semantics on the same coarse-grid scenes: the filtered run decides
@@ -235,6 +247,9 @@ BOOST_AUTO_TEST_CASE(no_fallback_in_general_position)
   BOOST_TEST(e.stats.witnesses_by_intervals == 0u);
   BOOST_TEST(e.stats.exact_witness_runs + e.stats.exact_fallbacks == 1u);
   BOOST_TEST(e.stats.exact_witness_replays == 0u);
+  // ... by replaying the interval search's last improvement (issue 16).
+  BOOST_TEST(e.stats.earliest_by_intervals == 1u);
+  BOOST_TEST(e.stats.exact_fallbacks == 0u);
 }
 
 // Corners (model/Motion_groups.h): a square pyramid's apex lies on four
