@@ -164,7 +164,8 @@ private:
   std::vector<V> plane_key_;
   std::vector<H> whole_key_;              // plane_keys, per plane (a face: itself)
   V line_key_{};
-  bool line_keyed_ = false;
+  bool line_keyed_ = false;               // keys are known for this line
+  bool line_key_made_ = false;            // line_key_ is this line's
   // on_line_closed: the segment's points, per plane its cut's group (or -1)
   // and the sign of its slope along the line.
   struct Point_on_line {
@@ -253,7 +254,7 @@ private:
       if (common & (1u << g)) line_group_ = g;
     line_ = {i, j, m};
     find_line_corners(i, j, m);
-    line_keyed_ = false;
+    line_keyed_ = line_key_made_ = false;
     if (const std::vector<V>* keys = policy_.template normal_keys<FT>()) {
       if (keys != keys_) {
         keys_ = keys;
@@ -266,11 +267,7 @@ private:
           if (whole) whole_key_.push_back(e >= 0 ? (*whole)[static_cast<std::size_t>(e)] : planes_[p]);
         }
       }
-      line_key_ = generalised_cross(plane_key_[i], plane_key_[j], plane_key_[m]);
       line_keyed_ = true;
-      if (certainly_zero(line_key_[0]) && certainly_zero(line_key_[1]) && certainly_zero(line_key_[2]) &&
-          certainly_zero(line_key_[3]))
-        return {FT(0), FT(0), FT(0), FT(0)};
     }
     V l;
     if (line_group_ < 0) {
@@ -281,11 +278,23 @@ private:
       l = {d * r[0], d * r[1], d * r[2], d};
     }
     // The keys' line is a nonzero multiple of this one: its zero
-    // coordinates are this one's.
-    if (line_keyed_)
+    // coordinates are this one's (made only when some coordinate may be zero).
+    if (line_keyed_ && (possibly_zero(l[0]) || possibly_zero(l[1]) || possibly_zero(l[2]) || possibly_zero(l[3]))) {
+      const V& lk = line_key();
       for (int q = 0; q < 4; ++q)
-        if (certainly_zero(line_key_[q])) l[q] = FT(0);
+        if (certainly_zero(lk[q])) l[q] = FT(0);
+    }
     return l;
+  }
+
+  // The current line's direction from the keys, made once per line.
+  const V& line_key()
+  {
+    if (!line_key_made_) {
+      line_key_ = generalised_cross(plane_key_[line_[0]], plane_key_[line_[1]], plane_key_[line_[2]]);
+      line_key_made_ = true;
+    }
+    return line_key_;
   }
 
   // Whether plane p, parallel to the current line, contains it, beyond
@@ -311,6 +320,7 @@ private:
 
   // Whether x is zero beyond doubt (no sign is asked: it may be unknown).
   bool certainly_zero(const FT& x) const { return !k_.possibly_positive(x) && !k_.possibly_positive(-x); }
+  bool possibly_zero(const FT& x) const { return k_.possibly_nonnegative(x) && k_.possibly_nonnegative(-x); }
 
   // The groups whose motion a face x_a = c contains (still along axis a).
   unsigned face_along(int a) const
@@ -578,9 +588,18 @@ private:
   void evaluate_plane(std::size_t p, const V& base, const V& l)
   {
     bool holds = p == line_[0] || p == line_[1] || p == line_[2] || (line_corner_ >= 0 && through_corner(p, line_corner_));
-    bool parallel = holds || (line_group_ >= 0 && (layout_.moves_along[p] >> line_group_ & 1u)) ||
-                    (line_keyed_ && certainly_zero(dot(plane_key_[p], line_key_)));
-    if (parallel && !holds && line_keyed_ && contains_line(p)) holds = true;
+    bool parallel = holds || (line_group_ >= 0 && (layout_.moves_along[p] >> line_group_ & 1u));
+    // The keys are asked only about values the intervals leave open.
+    if (line_keyed_ && !parallel) {
+      int which = layout_.face[p];
+      FT along = which >= 0 ? (which % 2 ? l[which / 2] : -l[which / 2]) : dot(planes_[p].n, l);
+      parallel = possibly_zero(along) && certainly_zero(dot(plane_key_[p], line_key()));
+    }
+    if (parallel && !holds && line_keyed_) {
+      int which = layout_.face[p];
+      FT value = which >= 0 ? (which % 2 ? base[which / 2] : -base[which / 2]) + planes_[p].c : planes_[p].value(base);
+      holds = possibly_zero(value) && contains_line(p);
+    }
     if (int which = layout_.face[p]; which >= 0) {
       // A region face, +-x_a + c: two terms, not the eight of a product.
       int a = which / 2;
