@@ -114,6 +114,38 @@ public:
     return conquer;
   }
 
+  // Per table entry of the sub-span, its rational normal scaled to coprime
+  // integers (normals), and the whole plane, normal and offset, scaled to
+  // coprime integers (planes), enclosed in intervals (point intervals
+  // unless the integers are beyond a double's): nonzero multiples of the
+  // interval run's entry, so a determinant or dot product of keys the
+  // intervals certify zero is zero for those planes, exactly.
+  void keys(int a, int b, std::size_t s, const std::array<bool, 3>& frame, std::vector<Vector4<AFT>>& normals,
+            std::vector<Hyperplane4<AFT>>& planes)
+  {
+    std::vector<std::array<Rational, 4>> exact;
+    std::vector<std::array<Rational, 5>> whole;
+    {
+      CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+      enter(a, b, s, frame);
+      for (const auto& h : table_) {
+        std::array<Rational, 4> x;
+        std::array<Rational, 5> y;
+        for (int q = 0; q < 4; ++q) y[q] = x[q] = runner_.ek_.to_rational(h.n[q]);
+        y[4] = runner_.ek_.to_rational(h.c);
+        scale_to_coprime_integers(x.data(), 4);
+        scale_to_coprime_integers(y.data(), 5);
+        exact.push_back(x);
+        whole.push_back(y);
+      }
+    }
+    auto to = [&](const Rational& x) { return runner_.ak_.from_rational(x); };
+    normals.clear();
+    planes.clear();
+    for (const auto& x : exact) normals.push_back({to(x[0]), to(x[1]), to(x[2]), to(x[3])});
+    for (const auto& y : whole) planes.push_back({{to(y[0]), to(y[1]), to(y[2]), to(y[3])}, to(y[4])});
+  }
+
 private:
   Runner& runner_;
   bool closed_;

@@ -6,7 +6,12 @@
 //    alone (exact/Exact_span.h) and the run goes on;
 //  - two planes the intervals cannot tell apart are compared on the
 //    rational planes;
-//  - a witness the intervals cannot make is left to a rational run.
+//  - a witness the intervals cannot make is left to a rational run;
+//  - once a line of a sub-span was uncertain, generate-and-test gets the
+//    normals of the sub-span's rational planes in lowest terms
+//    (normal_keys, Exact_span::normal_keys): small integers, on which
+//    intervals are exact, so planes that are parallel after a rational
+//    rotation (and lines of dependent normals) are zeros it writes.
 // Anything else uncertain stops the run, and the runner redoes the pair in
 // rationals. For an any-witness search it records where the first point
 // inside was found (exact/Search_trail.h), so a rational run can go
@@ -34,6 +39,7 @@
 #include "exact/Exact_span.h"
 #include "exact/Search_trail.h"
 #include <cmath>
+#include <type_traits>
 
 namespace clash4d {
 
@@ -68,6 +74,9 @@ public:
   {
     a_ = a, b_ = b, span_ = index, frame_ = frame_of_a;
     lines_.reset();   // a new search: its conquers count from zero again
+    keyed_ = false;
+    keys_.clear();
+    plane_keys_.clear();
   }
   void found_in_span(std::size_t index)
   {
@@ -145,6 +154,20 @@ public:
     } catch (const CGAL::Uncertain_conversion_exception&) {
       return exact_->proportional(a_, b_, span_, frame_, eh, fh, eg, fg, region);
     }
+  }
+
+  // The normal keys of the sub-span's table, once it had an uncertain line.
+  template <class FT>
+  const std::vector<Vector4<FT>>* normal_keys() const
+  {
+    static_assert(std::is_same_v<FT, AFT>, "normal keys are the interval run's");
+    return keyed_ ? &keys_ : nullptr;
+  }
+  template <class FT>
+  const std::vector<Hyperplane4<FT>>* plane_keys() const
+  {
+    static_assert(std::is_same_v<FT, AFT>, "plane keys are the interval run's");
+    return keyed_ ? &plane_keys_ : nullptr;
   }
 
   template <class V, class Inside>
@@ -293,6 +316,9 @@ private:
     pending_ = true;
     pending_line_ = {i, j, m};
   }
+  bool keyed_ = false;                                          // keys_ made for this sub-span
+  std::vector<Vector4<AFT>> keys_;
+  std::vector<Hyperplane4<AFT>> plane_keys_;
 
   // One line the intervals could not decide; the same rational conquer
   // serves the rest of this conquer's lines.
@@ -302,6 +328,10 @@ private:
     if (!lines_ || lines_conquer_ != g.conquers()) {
       lines_ = exact_->lines(a_, b_, span_, frame_, g.layout(), g.region());
       lines_conquer_ = g.conquers();
+    }
+    if (!keyed_) {
+      exact_->keys(a_, b_, span_, frame_, keys_, plane_keys_);
+      keyed_ = true;
     }
     ++stats_->exact_lines;
     bool known = false;

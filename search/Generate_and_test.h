@@ -96,6 +96,7 @@ public:
   {
     layout_ = layout;
     planes_.clear();
+    keys_ = nullptr;
     for (std::size_t p = 0; p < layout.entry.size(); ++p)
       planes_.push_back(layout.entry[p] >= 0 ? table_[layout.entry[p]] : face(region, layout.face[p]));
     resize_values();
@@ -155,6 +156,16 @@ private:
   int line_group_ = -1;                   // their common motion group, or -1
   int line_corner_ = -1;                  // a corner all three pass through: the line is its path
   std::vector<int> line_meets_;           // corners two of them pass through: the line meets their paths
+  // The policy's normal keys (normal_keys), per plane (a face's own normal),
+  // and the current line's direction made from them: a zero certified on
+  // those is a zero of the exact arithmetic, written so (planes parallel
+  // after a rational rotation, which intervals would only enclose).
+  const std::vector<V>* keys_ = nullptr;
+  std::vector<V> plane_key_;
+  std::vector<H> whole_key_;              // plane_keys, per plane (a face: itself)
+  V line_key_{};
+  bool line_keyed_ = false;               // keys are known for this line
+  bool line_key_made_ = false;            // line_key_ is this line's
   // on_line_closed: the segment's points, per plane its cut's group (or -1)
   // and the sign of its slope along the line.
   struct Point_on_line {
@@ -243,11 +254,73 @@ private:
       if (common & (1u << g)) line_group_ = g;
     line_ = {i, j, m};
     find_line_corners(i, j, m);
-    if (line_group_ < 0) return generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n);
-    const Vector3<FT>& r = groups_->velocity[line_group_];
-    FT d = generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n)[3];
-    return {d * r[0], d * r[1], d * r[2], d};
+    line_keyed_ = line_key_made_ = false;
+    if (const std::vector<V>* keys = policy_.template normal_keys<FT>()) {
+      if (keys != keys_) {
+        keys_ = keys;
+        plane_key_.clear();
+        whole_key_.clear();
+        const std::vector<H>* whole = policy_.template plane_keys<FT>();
+        for (std::size_t p = 0; p < planes_.size(); ++p) {
+          long e = layout_.entry[p];
+          plane_key_.push_back(e >= 0 ? (*keys)[static_cast<std::size_t>(e)] : planes_[p].n);
+          if (whole) whole_key_.push_back(e >= 0 ? (*whole)[static_cast<std::size_t>(e)] : planes_[p]);
+        }
+      }
+      line_keyed_ = true;
+    }
+    V l;
+    if (line_group_ < 0) {
+      l = generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n);
+    } else {
+      const Vector3<FT>& r = groups_->velocity[line_group_];
+      FT d = generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n)[3];
+      l = {d * r[0], d * r[1], d * r[2], d};
+    }
+    // The keys' line is a nonzero multiple of this one: its zero
+    // coordinates are this one's (made only when some coordinate may be zero).
+    if (line_keyed_ && (possibly_zero(l[0]) || possibly_zero(l[1]) || possibly_zero(l[2]) || possibly_zero(l[3]))) {
+      const V& lk = line_key();
+      for (int q = 0; q < 4; ++q)
+        if (certainly_zero(lk[q])) l[q] = FT(0);
+    }
+    return l;
   }
+
+  // The current line's direction from the keys, made once per line.
+  const V& line_key()
+  {
+    if (!line_key_made_) {
+      line_key_ = generalised_cross(plane_key_[line_[0]], plane_key_[line_[1]], plane_key_[line_[2]]);
+      line_key_made_ = true;
+    }
+    return line_key_;
+  }
+
+  // Whether plane p, parallel to the current line, contains it, beyond
+  // doubt on the whole keys: the line's three planes are independent, so
+  // p contains the line when its key is a combination of theirs, that is
+  // when every 4x4 minor with the offset column is zero (the one without
+  // it is, p being parallel).
+  bool contains_line(std::size_t p) const
+  {
+    if (whole_key_.empty()) return false;
+    const H* rows[4] = {&whole_key_[line_[0]], &whole_key_[line_[1]], &whole_key_[line_[2]], &whole_key_[p]};
+    for (int drop = 0; drop < 4; ++drop) {
+      V m[4];
+      for (int r = 0; r < 4; ++r) {
+        for (int q = 0, col = 0; q < 4; ++q)
+          if (q != drop) m[r][col++] = rows[r]->n[q];
+        m[r][3] = rows[r]->c;
+      }
+      if (!certainly_zero(determinant4(m[0], m[1], m[2], m[3]))) return false;
+    }
+    return true;
+  }
+
+  // Whether x is zero beyond doubt (no sign is asked: it may be unknown).
+  bool certainly_zero(const FT& x) const { return !k_.possibly_positive(x) && !k_.possibly_positive(-x); }
+  bool possibly_zero(const FT& x) const { return k_.possibly_nonnegative(x) && k_.possibly_nonnegative(-x); }
 
   // The groups whose motion a face x_a = c contains (still along axis a).
   unsigned face_along(int a) const
@@ -272,6 +345,7 @@ private:
     ++conquers_;
     region_ = &region;
     planes_.clear();
+    keys_ = nullptr;
     layout_ = Plane_layout();
     layout_.leaf_plane.assign(table_.size(), {0, 0});
     f.for_each_leaf([&](std::uint32_t h) {
@@ -515,6 +589,17 @@ private:
   {
     bool holds = p == line_[0] || p == line_[1] || p == line_[2] || (line_corner_ >= 0 && through_corner(p, line_corner_));
     bool parallel = holds || (line_group_ >= 0 && (layout_.moves_along[p] >> line_group_ & 1u));
+    // The keys are asked only about values the intervals leave open.
+    if (line_keyed_ && !parallel) {
+      int which = layout_.face[p];
+      FT along = which >= 0 ? (which % 2 ? l[which / 2] : -l[which / 2]) : dot(planes_[p].n, l);
+      parallel = possibly_zero(along) && certainly_zero(dot(plane_key_[p], line_key()));
+    }
+    if (parallel && !holds && line_keyed_) {
+      int which = layout_.face[p];
+      FT value = which >= 0 ? (which % 2 ? base[which / 2] : -base[which / 2]) + planes_[p].c : planes_[p].value(base);
+      holds = possibly_zero(value) && contains_line(p);
+    }
     if (int which = layout_.face[p]; which >= 0) {
       // A region face, +-x_a + c: two terms, not the eight of a product.
       int a = which / 2;

@@ -39,6 +39,17 @@
 //       verdict_first(l, normals, inside, tested)   only a verdict is wanted:
 //                                      decide the neighbourhood another way
 //                                      first (nothing: classify it here)
+//     template <class FT> const std::vector<Vector4<FT>>* normal_keys()
+//                                      per table entry, a nonzero multiple of
+//                                      its normal in numbers this kernel
+//                                      computes with exactly (small integers),
+//                                      or nothing: zeros certified on them are
+//                                      written (Generate_and_test)
+//     template <class FT> const std::vector<Hyperplane4<FT>>* plane_keys()
+//                                      the same for whole planes (normal and
+//                                      offset): a plane parallel to a line
+//                                      whose key is a combination of the
+//                                      line's planes' keys contains it
 #ifndef CLASH4D_SEARCH_NO_FILTER_H
 #define CLASH4D_SEARCH_NO_FILTER_H
 
@@ -84,6 +95,16 @@ struct No_filter {
   std::optional<bool> verdict_first(const V&, const std::vector<V>&, Inside&, std::size_t&)
   {
     return std::nullopt;
+  }
+  template <class FT>
+  const std::vector<Vector4<FT>>* normal_keys() const
+  {
+    return nullptr;
+  }
+  template <class FT>
+  const std::vector<Hyperplane4<FT>>* plane_keys() const
+  {
+    return nullptr;
   }
 };
 
