@@ -167,7 +167,6 @@ void print_check(const Check_answer& a, const Check_options& o, bool stats, doub
     out << check_json(a, o, stats, tolerance, certificate).dump(2) << "\n";
     return;
   }
-  if (!certificate.empty()) out << "certificate: " << certificate << " (clash4d verify SCENE " << certificate << ")\n";
   bool closed = a.semantics == Semantics::closed;
   std::string how = a.number + (closed ? ", closed semantics" : "");
   if (!a.collide) out << "no collision (" << how << (closed ? ": the closed objects do not meet" : "") << ")\n";
@@ -186,6 +185,7 @@ void print_check(const Check_answer& a, const Check_options& o, bool stats, doub
           << (p.at_start ? "  (already in contact at the start of the span)" : "") << "\n";
   }
   if (o.earliest && main && o.all_pairs) out << "earliest pair: " << main->a << " and " << main->b << "\n";
+  if (!certificate.empty()) out << "certificate: " << certificate << " (check it: clash4d verify SCENE " << certificate << ")\n";
   if (stats) {
     out << "stats:\n";
     json s = stats_json(a.stats);

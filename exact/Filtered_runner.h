@@ -155,33 +155,32 @@ private:
     }
     need_exact(a);
     need_exact(b);
-    if (earliest_trail) {
-      Check_stats rstats;
-      Earliest_replay replay(trail);
-      Collision_checker<EK, Earliest_replay> checker(ek_, emodel_, esettled_, rstats, use_sbounds_, &replay);
-      Pair_result<EFT> r = checker.check_pair(a, b, true, nullptr, options.semantics);
-      if (r.collide && !trail.diverged) {
-        ++earliest_by_intervals_;
-        stats = astats;                     // the search, as the interval run did it
-        stats.seconds_witness += rstats.seconds_witness;
-        return r;
-      }
-    }
-    if (!options.earliest && trail.complete && !trail.approximate) {
-      Check_stats rstats;
-      Trail_replay replay(trail);
-      Collision_checker<EK, Trail_replay> checker(ek_, emodel_, esettled_, rstats, use_sbounds_, &replay);
-      Pair_result<EFT> r = checker.check_pair(a, b, false, nullptr, options.semantics);
-      if (r.collide && !trail.diverged) {
-        ++witness_replays_;
-        stats = astats;                     // the search, as the interval run did it
-        stats.seconds_witness += rstats.seconds_witness;
-        return r;
-      }
-    }
+    if (earliest_trail)
+      if (auto r = replayed<Earliest_replay>(trail, a, b, true, options.semantics, astats, stats, earliest_by_intervals_))
+        return *r;
+    if (!options.earliest && trail.complete && !trail.approximate)
+      if (auto r = replayed<Trail_replay>(trail, a, b, false, options.semantics, astats, stats, witness_replays_))
+        return *r;
     Collision_checker<EK> checker(ek_, emodel_, esettled_, stats, use_sbounds_);
     return checker.check_pair(a, b, options.earliest, ceiling, options.semantics);
   }
+  // EK along the interval run's trail (Replay: the witness's or the
+  // earliest improvement's); the answer when the trail held, counted.
+  template <class Replay>
+  std::optional<Pair_result<EFT>> replayed(Search_trail& trail, int a, int b, bool earliest, Semantics semantics,
+                                           const Check_stats& astats, Check_stats& stats, std::atomic<std::size_t>& count)
+  {
+    Check_stats rstats;
+    Replay replay(trail);
+    Collision_checker<EK, Replay> checker(ek_, emodel_, esettled_, rstats, use_sbounds_, &replay);
+    Pair_result<EFT> r = checker.check_pair(a, b, earliest, nullptr, semantics);
+    if (!r.collide || trail.diverged) return std::nullopt;
+    ++count;
+    stats = astats;                     // the search, as the interval run did it
+    stats.seconds_witness += rstats.seconds_witness;
+    return r;
+  }
+
   const Scene& scene_;
   bool use_sbounds_;
   AK ak_;
