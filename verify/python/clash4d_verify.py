@@ -223,6 +223,19 @@ def strictly_true(node, p):
     return any(strictly_true(c, p) for c in arg)
 
 
+def check_keys(obj, path, required, optional, bad, unknown):
+    """The keys of a JSON object: not an object or a missing key goes to
+    bad (exit 2), a key outside required and optional to unknown (the
+    scene's reader: exit 2; the certificate's: exit 1, section 3)."""
+    if not isinstance(obj, dict):
+        bad(path, "expected an object")
+    for k in sorted(required - obj.keys()):
+        bad(path, f"missing key \"{k}\"")
+    for k in sorted(obj.keys() - required - optional):
+        unknown(k)
+    return obj
+
+
 class SceneReader:
     """Reads what it needs of a scene; what it cannot interpret is exit 2."""
 
@@ -276,12 +289,7 @@ class SceneReader:
         raise Unreadable(f"{self.file}: {path}" if path else self.file, reason)
 
     def keys(self, obj, path, required, optional=frozenset()):
-        if not isinstance(obj, dict):
-            self.bad(path, "expected an object")
-        for k in sorted(required - obj.keys()):
-            self.bad(path, f"missing key \"{k}\"")
-        for k in sorted(obj.keys() - required - optional):
-            self.bad(path, f"unknown key \"{k}\"")
+        check_keys(obj, path, required, optional, self.bad, lambda k: self.bad(path, f"unknown key \"{k}\""))
 
     def number(self, v, path):
         if isinstance(v, Fraction):
@@ -425,13 +433,9 @@ class Checker:
         raise Unreadable(f"{self.file}: {path}", reason)
 
     def keys(self, obj, path, required, optional=frozenset()):
-        if not isinstance(obj, dict):
-            self.bad(path, "expected an object")
-        for k in sorted(required - obj.keys()):
-            self.bad(path, f"missing key \"{k}\"")
-        for k in sorted(obj.keys() - required - optional):
+        def unknown(k):
             raise Failed(f"{path}.{k}", "unknown key")
-        return obj
+        return check_keys(obj, path, required, optional, self.bad, unknown)
 
     def array(self, v, path, count=None):
         if not isinstance(v, list) or (count is not None and len(v) != count):
