@@ -4,11 +4,17 @@
 // exact/double and rational/double (issue 6's targets: 1.5 general, 3 contact),
 // in regularised semantics and, beside them, in closed semantics (issue 14:
 // the same targets).
-//   clash4d_bench [--seed N] [--random M] [--min-seconds S] [--family F] [--dump-random DIR] [--earliest]
+//   clash4d_bench [--seed N] [--random M] [--fuzz K] [--min-seconds S] [--family F] [--dump-random DIR] [--earliest]
+//                 [--scene FILE]
 // --earliest times `check --earliest` (t* and the contact point) everywhere.
-// --family paper|contact|grid|random runs one family only; --dump-random writes the random scenes to DIR/random-I.json (to rerun one
-// with `clash4d check --stats`).
+// --family paper|contact|grid|random|fuzz runs one family only; fuzz is the
+// first K cases (default 40) of `clash4d fuzz --seed N`'s contact families
+// (compare/Contact_families.h: rotations, pockets, nested CSG, decimal
+// values), the nearest public stand-in for a set of user contact scenes
+// (--dump-random writes them too, as DIR/fuzz-I.json); --dump-random writes the random scenes to DIR/random-I.json (to rerun one
+// with `clash4d check --stats`); --scene times one scene file alone (to profile it).
 #include "bench/Timing.h"
+#include "compare/Contact_families.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
 #include "scene/Grid_scene.h"
@@ -72,9 +78,9 @@ void row(const std::string& name, const Scene& scene, double min_seconds, Means&
 int main(int argc, char** argv)
 {
   unsigned long seed = 1990;
-  int random_count = 20;
+  int random_count = 20, fuzz_count = 40;
   double min_seconds = 0.05;
-  std::string dump_dir, only;
+  std::string dump_dir, only, scene_file;
   for (int i = 1; i < argc; i += 2) {
     std::string a = argv[i];
     if (a == "--earliest") {
@@ -88,9 +94,11 @@ int main(int argc, char** argv)
     }
     if (a == "--seed") seed = std::stoul(argv[i + 1]);
     else if (a == "--random") random_count = std::stoi(argv[i + 1]);
+    else if (a == "--fuzz") fuzz_count = std::stoi(argv[i + 1]);
     else if (a == "--min-seconds") min_seconds = std::stod(argv[i + 1]);
     else if (a == "--dump-random") dump_dir = argv[i + 1];
     else if (a == "--family") only = argv[i + 1];
+    else if (a == "--scene") scene_file = argv[i + 1];
     else {
       std::fprintf(stderr, "clash4d_bench: unknown option %s\n", a.c_str());
       return 2;
@@ -98,6 +106,11 @@ int main(int argc, char** argv)
   }
   std::printf("%-58s %11s %11s %11s %8s %8s %11s %11s %8s  %s\n", "scene", "exact us", "rational us", "double us",
               "ex/dbl", "rat/dbl", "closed ex", "closed dbl", "cl ratio", "exact verdict | closed");
+  if (!scene_file.empty()) {
+    Means means;
+    row(scene_file, read_scene_file(scene_file), min_seconds, means);
+    return 0;
+  }
   auto wanted = [&](const std::string& family) { return only.empty() || only == family; };
   for (const char* family : {"paper", "contact"}) {
     if (!wanted(family)) continue;
@@ -120,6 +133,16 @@ int main(int argc, char** argv)
       row("grid n=" + std::to_string(n) + " --all-pairs", grid, min_seconds, means, all);
     }
     means.print("grid");
+  }
+  if (wanted("fuzz")) {
+    Means means;
+    std::printf("contact families (clash4d fuzz), seed %lu\n", seed);
+    for (int i = 0; i < fuzz_count; ++i) {
+      Fuzz_case c = make_fuzz_case(seed, static_cast<std::uint64_t>(i));
+      if (!dump_dir.empty()) std::ofstream(dump_dir + "/fuzz-" + std::to_string(i) + ".json") << c.json << "\n";
+      row("fuzz #" + std::to_string(i) + " " + c.family, read_scene(read_json_text(c.json)), min_seconds, means);
+    }
+    if (means.count > 0) means.print("fuzz");
   }
   if (!wanted("random")) return 0;
   std::mt19937_64 rng(seed);

@@ -7,7 +7,8 @@
 //  - two planes the intervals cannot tell apart are compared on the
 //    rational planes;
 //  - a witness the intervals cannot make is left to a rational run;
-//  - once a line of a sub-span was uncertain, generate-and-test gets the
+//  - once a line or a box simplification of a sub-span was uncertain,
+//    generate-and-test and divide-and-conquer get the
 //    normals of the sub-span's rational planes in lowest terms
 //    (normal_keys, Exact_span::normal_keys): small integers, on which
 //    intervals are exact, so planes that are parallel after a rational
@@ -169,11 +170,28 @@ public:
     static_assert(std::is_same_v<FT, AFT>, "plane keys are the interval run's");
     return keyed_ ? &plane_keys_ : nullptr;
   }
-
-  template <class V, class Inside>
-  std::optional<bool> verdict_first(const V&, const std::vector<V>&, Inside&, std::size_t&)
+  // A box simplification the intervals leave open: the keys now (a plane
+  // through a corner of a grid region is a zero on them).
+  template <class FT>
+  const std::vector<Hyperplane4<FT>>* plane_keys_on_doubt()
   {
-    return std::nullopt;
+    static_assert(std::is_same_v<FT, AFT>, "plane keys are the interval run's");
+    make_keys();
+    return &plane_keys_;
+  }
+
+  // A keyed line's neighbourhoods on the keys (Generate_and_test::classify
+  // and, closed, test_touch): whether some cell is inside, or nothing when
+  // even the keys leave a sign open.
+  template <class V, class Inside>
+  std::optional<bool> verdict_first(const V& l, const std::vector<V>& keys, Inside& inside, std::size_t& tested)
+  {
+    return on_keys(tested, [&](Neighbourhood<AK>& hood) { return hood.find_inside(l, keys, inside).has_value(); });
+  }
+  template <class V, class Inside>
+  std::optional<bool> verdict_around(const std::vector<V>& keys, Inside inside, std::size_t& tested)
+  {
+    return on_keys(tested, [&](Neighbourhood<AK>& hood) { return hood.find_inside_around(keys, inside).has_value(); });
   }
 
 private:
@@ -316,6 +334,26 @@ private:
     pending_ = true;
     pending_line_ = {i, j, m};
   }
+  template <class Find>
+  std::optional<bool> on_keys(std::size_t& tested, Find find) const
+  {
+    Neighbourhood<AK> hood(runner_->ak_);
+    try {
+      bool found = find(hood);
+      tested += hood.cells_tested();
+      return found;
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      return std::nullopt;
+    }
+  }
+
+  void make_keys()
+  {
+    if (keyed_) return;
+    exact_->keys(a_, b_, span_, frame_, keys_, plane_keys_);
+    keyed_ = true;
+  }
+
   bool keyed_ = false;                                          // keys_ made for this sub-span
   std::vector<Vector4<AFT>> keys_;
   std::vector<Hyperplane4<AFT>> plane_keys_;
@@ -329,10 +367,7 @@ private:
       lines_ = exact_->lines(a_, b_, span_, frame_, g.layout(), g.region());
       lines_conquer_ = g.conquers();
     }
-    if (!keyed_) {
-      exact_->keys(a_, b_, span_, frame_, keys_, plane_keys_);
-      keyed_ = true;
-    }
+    make_keys();
     ++stats_->exact_lines;
     bool known = false;
     if (lines_->has_inside(f, i, j, m, goal.semantics, known)) {

@@ -46,7 +46,7 @@ public:
     Work_budget::check();
     stats_.visit(depth);
     bool strict = goal.closed();
-    Pair_formula f = formula.simplified([&](std::uint32_t h) { return status(table_[h], region, strict); });
+    Pair_formula f = formula.simplified([&](std::uint32_t h) { return leaf_status(h, region, strict); });
     if (f.value() == Truth::False) return;
     if (f.value() == Truth::True) {
       if (!policy_.decides_here(depth, false)) return;
@@ -89,7 +89,7 @@ public:
   {
     Work_budget::check();
     stats_.visit(depth);
-    Formula f = formula.simplified([&](std::uint32_t h) { return status(table_[h], region, true); });
+    Formula f = formula.simplified([&](std::uint32_t h) { return leaf_status(h, region, true); });
     if (f.value() != Truth::Unknown) return;
     std::size_t leaves = f.leaf_count();
     if (leaves < kappa(depth) || depth >= max_depth) {
@@ -106,9 +106,9 @@ public:
   // (regularised-semantics.md, item 4). Strict (min > 0, max < 0) keeps the
   // planes that touch the box, which the skeleton and closed semantics need
   // (the sign is then fixed on a neighbourhood of the closed box).
-  // An approximate kernel that cannot tell keeps the leaf (Unknown), and
-  // tells the policy.
-  Truth status(const H& h, const Box4& b, bool strict = false) const
+  // An approximate kernel that cannot tell keeps the leaf (Unknown):
+  // `doubt` says so.
+  Truth status(const H& h, const Box4& b, bool strict, bool& doubt) const
   {
     FT lo = h.c, hi = h.c;
     for (int a = 0; a < 4; ++a) {
@@ -116,9 +116,32 @@ public:
       lo += Number_ops<FT>::lower(x, y);
       hi += Number_ops<FT>::upper(x, y);
     }
-    if (decided(k_.is_nonnegative(lo, strict))) return Truth::False;
-    if (decided(k_.is_nonnegative(-hi, strict))) return Truth::True;
+    if (decided(k_.is_nonnegative(lo, strict), doubt)) return Truth::False;
+    if (decided(k_.is_nonnegative(-hi, strict), doubt)) return Truth::True;
     return Truth::Unknown;
+  }
+  Truth status(const H& h, const Box4& b, bool strict = false) const
+  {
+    bool doubt = false;
+    return status(h, b, strict, doubt);
+  }
+
+  // Table entry e's status over the region. When the kernel cannot tell,
+  // again on the entry's key (the policy's plane_keys_on_doubt: a positive
+  // multiple in small integers, so on a grid region a plane through a
+  // corner is a zero intervals certify, as under rational rotations); still
+  // open, the leaf is kept and the policy told.
+  Truth leaf_status(std::uint32_t e, const Box4& region, bool strict)
+  {
+    bool doubt = false;
+    Truth t = status(table_[e], region, strict, doubt);
+    if (doubt)
+      if (const std::vector<H>* keys = policy_.template plane_keys_on_doubt<FT>()) {
+        doubt = false;
+        t = status((*keys)[e], region, strict, doubt);
+      }
+    if (doubt) policy_.uncertain_simplification();
+    return t;
   }
 
   // Child `child` of the 16-way bisection; bit a set: upper half of axis a.
@@ -146,12 +169,13 @@ private:
   Generate_and_test<K, Policy> conquer_;
   std::vector<int> path_;                 // child indices from the root region to here
 
-  bool decided(CGAL::Uncertain<bool> u) const
+  static bool decided(CGAL::Uncertain<bool> u, bool& doubt)
   {
     if (CGAL::is_certain(u)) return CGAL::get_certain(u);
-    policy_.uncertain_simplification();
+    doubt = true;
     return false;
   }
+
 
   static Vector4<FT> centre(const Box4& b)
   {

@@ -149,7 +149,14 @@ private:
   std::vector<H> planes_;                 // distinct hyperplanes, region faces last
   Plane_layout layout_;                   // where they come from
   bool verdict_only_ = false;             // line_has_inside: no point will be made
-  std::vector<FT> cuts_;                  // on_line's cuts of the current line
+  // A cut of the current line: its parameter and the plane cutting there
+  // (a region face too; npos: not known), by which ties are recognised.
+  struct Cut {
+    FT s;
+    std::size_t plane;
+  };
+  std::vector<Cut> cuts_;                 // on_line's cuts of the current line
+  std::size_t lo_plane_ = 0, hi_plane_ = 0;   // range_in_region: the faces at the segment's ends (or npos)
   std::vector<FT> at_base_, along_;       // per plane: value at the base point, slope along l
   std::vector<int> sign_;                 // per plane at the current test point: -1, 0, +1
   std::array<std::size_t, 3> line_{};     // the planes that meet in the current line
@@ -172,6 +179,7 @@ private:
     FT s;
     long plane;                           // the plane cut there, -1 for an end of the segment
     std::vector<std::size_t> more;        // planes cutting there through a corner's path
+    std::size_t by;                       // the plane (a face for an end) cutting there, or npos
   };
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
   std::vector<Point_on_line> points_;
@@ -393,8 +401,8 @@ private:
     if (!range_in_region(base, l, s_lo, s_hi)) return;
     if (!goal.can_improve(k_, Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
     evaluate_planes(base, l, layout_.first_face);
-    std::vector<FT>& cuts = cuts_;          // reused: a line's cuts, no allocation per line
-    cuts.assign({s_lo, s_hi});
+    std::vector<Cut>& cuts = cuts_;         // reused: a line's cuts, no allocation per line
+    cuts.assign({{s_lo, lo_plane_}, {s_hi, hi_plane_}});
     FT centre = (s_lo + s_hi) / FT(2);
     // Per corner whose path the line meets: whether that point is on the
     // segment (every plane of the corner cuts the line there).
@@ -415,8 +423,9 @@ private:
         inside = seen->second;                 // the same point as the corner's first plane
       } else {
         FT cut = k_.quotient(-at_base_[p], along_[p], sa);
-        inside = k_.less(s_lo, cut) && k_.less(cut, s_hi);
-        if (inside) cuts.push_back(cut);
+        inside = compare_cuts(s_lo, lo_plane_, cut, p) == CGAL::NEGATIVE &&
+                 compare_cuts(cut, p, s_hi, hi_plane_) == CGAL::NEGATIVE;
+        if (inside) cuts.push_back({cut, p});
         if (corner >= 0) meets.emplace_back(corner, inside);
       }
       if (!inside) sign_[p] = static_cast<int>(k_.sign(at_base_[p] + centre * along_[p]));
@@ -424,16 +433,18 @@ private:
     // Cheap rejection of the whole segment: false whatever the planes that
     // cut it (or contain it) do, hence false at every midpoint on it.
     if (f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) == Truth::False) return;
-    // Sorted by the number type's own order, which is an order for every
-    // kernel (a tolerance is not); cuts the kernel calls equal are skipped.
-    std::sort(cuts.begin(), cuts.end());
+    // Sorted by the kernel's order of the numbers, which is an order for
+    // every kernel (a tolerance is not); cuts the kernel calls equal are
+    // skipped.
+    std::sort(cuts.begin(), cuts.end(),
+              [&](const Cut& a, const Cut& b) { return compare_cuts(a.s, a.plane, b.s, b.plane) == CGAL::NEGATIVE; });
     for (std::size_t q = 0; q + 1 < cuts.size() && !goal.done(); ++q) {
-      if (k_.compare(cuts[q + 1], cuts[q]) == CGAL::ZERO) continue;
+      if (compare_cuts(cuts[q + 1].s, cuts[q + 1].plane, cuts[q].s, cuts[q].plane) == CGAL::ZERO) continue;
       // The edge's earlier end (time is linear along it).
-      const FT& s_early = k_.sign(l[3]) == CGAL::NEGATIVE ? cuts[q + 1] : cuts[q];
+      const FT& s_early = k_.sign(l[3]) == CGAL::NEGATIVE ? cuts[q + 1].s : cuts[q].s;
       V early = point_along(base, s_early, l);
       if (!goal.can_improve(k_, early[3])) continue;
-      FT mid = (cuts[q] + cuts[q + 1]) / FT(2);
+      FT mid = (cuts[q].s + cuts[q + 1].s) / FT(2);
       if (auto in = classify(f, base, l, mid)) goal.record(k_, *in, early);
     }
   }
@@ -479,8 +490,8 @@ private:
   void collect_points(const FT& s_lo, const FT& s_hi)
   {
     points_.clear();
-    points_.push_back({s_lo, -1, {}});
-    points_.push_back({s_hi, -1, {}});
+    points_.push_back({s_lo, -1, {}, lo_plane_});
+    points_.push_back({s_hi, -1, {}, hi_plane_});
     group_of_.assign(layout_.first_face, -1);
     cut_sign_.assign(layout_.first_face, 0);
     FT centre = (s_lo + s_hi) / FT(2);
@@ -498,9 +509,10 @@ private:
         continue;
       }
       FT cut = k_.quotient(-at_base_[p], along_[p], sa);
-      bool on = !k_.less(cut, s_lo) && !k_.less(s_hi, cut);
+      bool on = compare_cuts(cut, p, s_lo, lo_plane_) != CGAL::NEGATIVE &&
+                compare_cuts(s_hi, hi_plane_, cut, p) != CGAL::NEGATIVE;
       if (corner >= 0) corner_point.emplace_back(corner, on ? points_.size() : npos);
-      if (on) points_.push_back({cut, static_cast<long>(p), {}});
+      if (on) points_.push_back({cut, static_cast<long>(p), {}, p});
       else sign_[p] = static_cast<int>(k_.sign(at_base_[p] + centre * along_[p]));
     }
   }
@@ -510,10 +522,12 @@ private:
   // plane p's cut, groups_at_[g] a point of group g.
   void group_points()
   {
-    std::sort(points_.begin(), points_.end(), [](const Point_on_line& a, const Point_on_line& b) { return a.s < b.s; });
+    auto order = [&](const Point_on_line& a, const Point_on_line& b) { return compare_cuts(a.s, a.by, b.s, b.by); };
+    std::sort(points_.begin(), points_.end(),
+              [&](const Point_on_line& a, const Point_on_line& b) { return order(a, b) == CGAL::NEGATIVE; });
     groups_at_.clear();
     for (std::size_t q = 0; q < points_.size(); ++q) {
-      if (q == 0 || k_.compare(points_[q].s, points_[q - 1].s) != CGAL::ZERO) groups_at_.push_back(q);
+      if (q == 0 || order(points_[q], points_[q - 1]) != CGAL::ZERO) groups_at_.push_back(q);
       long g = static_cast<long>(groups_at_.size()) - 1;
       if (points_[q].plane >= 0) group_of_[points_[q].plane] = g;
       for (std::size_t p : points_[q].more) group_of_[p] = g;
@@ -538,6 +552,18 @@ private:
         return g_ptr->evaluate(truth) == Truth::True;
       };
     };
+    if (line_keyed_ && !through.empty()) {
+      // On the keys first (as classify): no cell inside one object, no touch.
+      std::vector<V> keys;
+      for (std::size_t p : through) keys.push_back(plane_key_[p]);
+      for (const Formula* g : {&f.a(), &f.b()}) {
+        std::optional<bool> in = policy_.verdict_around(keys, cell_of(*g), stats_.cells_tested);
+        if (in && !*in) {
+          for (std::size_t p : through) sign_[p] = 0;
+          return;
+        }
+      }
+    }
     Neighbourhood<K> hood(k_);
     std::optional<V> da = hood.find_inside_around(normals, cell_of(f.a()));
     std::optional<V> db = da ? hood.find_inside_around(normals, cell_of(f.b())) : std::nullopt;
@@ -552,6 +578,7 @@ private:
   bool range_in_region(const V& base, const V& l, FT& s_lo, FT& s_hi)
   {
     bool has_lo = false, has_hi = false;
+    lo_plane_ = hi_plane_ = npos;
     for (const auto& fp : layout_.face_plane) {
       std::size_t p = fp.first;
       evaluate_plane(p, base, l);
@@ -562,10 +589,60 @@ private:
         continue;
       }
       FT cut = k_.quotient(-at_base_[p], along_[p], sa);
-      if (e > 0) { s_hi = has_hi ? Number_ops<FT>::lower(s_hi, cut) : cut; has_hi = true; }
-      else { s_lo = has_lo ? Number_ops<FT>::upper(s_lo, cut) : cut; has_lo = true; }
+      if (e > 0) {
+        hi_plane_ = has_hi ? attaining(s_hi, hi_plane_, cut, p, false) : p;
+        s_hi = has_hi ? Number_ops<FT>::lower(s_hi, cut) : cut;
+        has_hi = true;
+      } else {
+        lo_plane_ = has_lo ? attaining(s_lo, lo_plane_, cut, p, true) : p;
+        s_lo = has_lo ? Number_ops<FT>::upper(s_lo, cut) : cut;
+        has_lo = true;
+      }
     }
-    return has_lo && has_hi && k_.compare(s_hi, s_lo) == CGAL::POSITIVE;
+    return has_lo && has_hi && compare_cuts(s_hi, hi_plane_, s_lo, lo_plane_) == CGAL::POSITIVE;
+  }
+
+  // The order of two cuts of the current line, a by plane pa and b by
+  // plane pb. On the keys, a tie is recognised beyond doubt (concurrent):
+  // a vertex where five planes meet, as under rational rotations, which
+  // intervals would only enclose. Otherwise the kernel's comparison.
+  CGAL::Sign compare_cuts(const FT& a, std::size_t pa, const FT& b, std::size_t pb) const
+  {
+    if (line_keyed_ && pa != npos && pb != npos && possibly_zero(a - b) && concurrent(pa, pb)) return CGAL::ZERO;
+    return k_.compare(a, b);
+  }
+
+  // Which plane's cut bounds the segment after cut b (plane pb) is taken
+  // with cut a (plane pa): the greater for the lower end, the lesser for
+  // the upper; npos when no sign says so without asking one the kernel may
+  // not certify (only keyed lines need the answer).
+  std::size_t attaining(const FT& a, std::size_t pa, const FT& b, std::size_t pb, bool greater) const
+  {
+    if (!line_keyed_) return npos;
+    FT d = b - a;
+    if (!k_.possibly_nonnegative(d)) return greater ? pa : pb;       // b < a
+    if (!k_.possibly_nonnegative(-d)) return greater ? pb : pa;      // b > a
+    return pa != npos && concurrent(pa, pb) ? pa : npos;             // equal
+  }
+
+  // Whether planes p and q cut the current line at one point, beyond doubt
+  // on the whole keys. The line's three planes and p (not parallel to the
+  // line) meet in one point v; q holds v exactly when the five rows
+  // (n, c) are dependent: det5 = sum_r (-1)^r c_r det4(normals but r) = 0.
+  bool concurrent(std::size_t p, std::size_t q) const
+  {
+    if (whole_key_.empty()) return false;
+    const H* rows[5] = {&whole_key_[line_[0]], &whole_key_[line_[1]], &whole_key_[line_[2]], &whole_key_[p],
+                        &whole_key_[q]};
+    FT det(0);
+    for (int r = 0; r < 5; ++r) {
+      V m[4];
+      for (int t = 0, u = 0; t < 5; ++t)
+        if (t != r) m[u++] = rows[t]->n;
+      FT term = rows[r]->c * determinant4(m[0], m[1], m[2], m[3]);
+      det = r % 2 ? det - term : det + term;
+    }
+    return certainly_zero(det);
   }
 
   void evaluate_planes(const V& base, const V& l, std::size_t count)
@@ -727,11 +804,21 @@ private:
       for (std::size_t i = 0; i < through.size(); ++i) sign_[through[i]] = signs[i];
       return inside_region() && f.evaluate([&](std::uint32_t h) { return leaf_truth(h); }) == Truth::True;
     };
-    if (verdict_only_)
-      if (std::optional<bool> found = policy_.verdict_first(l, normals, inside, stats_.cells_tested)) {
+    // On a keyed line the policy may first classify on the keys (positive
+    // multiples of the normals: the same cells), where the zeros of planes
+    // made parallel by a rational rotation are certain; the point itself is
+    // then made on the planes, as every run makes it.
+    bool keyed = line_keyed_ && !through.empty();
+    if (verdict_only_ || keyed) {
+      std::vector<V> keys;
+      for (std::size_t p : through)
+        if (keyed) keys.push_back(plane_key_[p]);
+      if (std::optional<bool> found = policy_.verdict_first(keyed ? line_key() : l, keyed ? keys : normals, inside,
+                                                            stats_.cells_tested)) {
         if (!*found) return std::nullopt;
-        return point_along(base, s, l);      // inside: a verdict, the point is not used
+        if (verdict_only_) return point_along(base, s, l);   // inside: a verdict, the point is not used
       }
+    }
     std::optional<V> d = hood.find_inside(l, normals, inside);
     stats_.cells_tested += hood.cells_tested();
     if (!d) return std::nullopt;

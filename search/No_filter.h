@@ -19,6 +19,9 @@
 //     template <class F> void attempt(F make)   make the witness; a filter
 //                                      failing on the way leaves it unmade
 //   Divide_and_conquer:
+//     template <class FT> const std::vector<Hyperplane4<FT>>*
+//       plane_keys_on_doubt()          plane_keys (below), made now if need
+//                                      be: a box simplification is open
 //     void uncertain_simplification()  a box simplification was not decided
 //                                      (the leaf was kept: regularised-
 //                                      semantics item 4)
@@ -38,7 +41,12 @@
 //     template <class V, class Inside> std::optional<bool>
 //       verdict_first(l, normals, inside, tested)   only a verdict is wanted:
 //                                      decide the neighbourhood another way
-//                                      first (nothing: classify it here)
+//                                      first (nothing: classify it here);
+//                                      also asked, on a keyed line, with the
+//                                      keys of the planes through the point
+//     template <class V, class Inside> std::optional<bool>
+//       verdict_around(keys, inside, tested)   the same for a closed touch
+//                                      point's neighbourhood, on the keys
 //     template <class FT> const std::vector<Vector4<FT>>* normal_keys()
 //                                      per table entry, a nonzero multiple of
 //                                      its normal in numbers this kernel
@@ -96,6 +104,11 @@ struct No_filter {
   {
     return std::nullopt;
   }
+  template <class V, class Inside>
+  std::optional<bool> verdict_around(const std::vector<V>&, Inside, std::size_t&)
+  {
+    return std::nullopt;
+  }
   template <class FT>
   const std::vector<Vector4<FT>>* normal_keys() const
   {
@@ -103,6 +116,11 @@ struct No_filter {
   }
   template <class FT>
   const std::vector<Hyperplane4<FT>>* plane_keys() const
+  {
+    return nullptr;
+  }
+  template <class FT>
+  const std::vector<Hyperplane4<FT>>* plane_keys_on_doubt()
   {
     return nullptr;
   }
