@@ -105,7 +105,7 @@ private:
     Vector3<FT> shear;
     std::array<bool, 3> frame_of_a{};
     Span_stats ss;
-    std::optional<Box4> region = span_region(A, B, span, goal, shear, frame_of_a, ss);
+    std::optional<Box4> region = span_region(a, b, index, A, B, span, goal, shear, frame_of_a, ss);
     stats_.seconds_sbounds += seconds_since(start);
     if (!region) {
       stats_.spans.push_back(ss);
@@ -142,18 +142,20 @@ private:
 
   // The region the sub-span is searched in, in the frame x' = x - shear t
   // (search/Span_region.h), with the S-bound stage's statistics; nothing
-  // when the pair cannot collide on the span.
-  std::optional<Box4> span_region(Moving& A, Moving& B, const Time_span<FT>& span, const Search_goal<FT>& goal,
-                                  Vector3<FT>& shear, std::array<bool, 3>& frame_of_a, Span_stats& ss)
+  // when the pair cannot collide on the span. The policy may make the stage
+  // in another kernel (region_stage).
+  std::optional<Box4> span_region(int a, int b, std::size_t index, Moving& A, Moving& B, const Time_span<FT>& span,
+                                  const Search_goal<FT>& goal, Vector3<FT>& shear, std::array<bool, 3>& frame_of_a,
+                                  Span_stats& ss)
   {
-    bool closed = goal.closed();
-    Span_region<K> bounds(k_, stats_, model_.far_exponent, closed);
-    FT tl = span.lo, th = span.hi;
-    bool alive = use_sbounds_ ? bounds.four_d_bounds(A, B, tl, th) : true;
-    alive = alive && goal.can_improve(k_, tl);
+    Region_stage<FT> st;
+    policy_.region_stage(a, b, index, A, B, st, [&] {
+      st = Span_region<K>(k_, stats_, model_.far_exponent, goal.closed()).stage(A, B, span.lo, span.hi, use_sbounds_);
+    });
+    bool alive = st.alive && goal.can_improve(k_, st.tl);
     ss.pair = A.object->name + "/" + B.object->name;
     ss.span = range(span.lo, span.hi);
-    if (alive) ss.narrowed = range(tl, th);
+    if (alive) ss.narrowed = range(st.tl, st.th);
     count_pruned(A, ss);
     count_pruned(B, ss);
     if (!stats_.span_before) {
@@ -165,17 +167,15 @@ private:
       return std::nullopt;
     }
     stats_.conquered_box.clear();
-    Box4 region = use_sbounds_ ? bounds.fitted(A, B, tl, th, shear, frame_of_a)
-                               : bounds.original(A, B, span.lo, span.hi, shear);
-    for (int q = 0; q < 4; ++q) ss.region.push_back(range(region.lo[q], region.hi[q]));
-    if (closed ? is_empty_box(k_, region) : has_no_interior(k_, region)) {
+    for (int q = 0; q < 4; ++q) ss.region.push_back(range(st.fitted.lo[q], st.fitted.hi[q]));
+    if (!st.region) {
       ss.narrowed.reset();
       return std::nullopt;
     }
-    for (int q = 0; q < 3; ++q) ss.frame.push_back(k_.to_stat(shear[q]));
-    // Closed, a region without interior (objects that only touch) is
-    // widened to the grid too, so that it can be divided.
-    return use_sbounds_ || closed ? bounds.on_grid(region, span.lo, span.hi) : region;
+    for (int q = 0; q < 3; ++q) ss.frame.push_back(k_.to_stat(st.shear[q]));
+    shear = st.shear;
+    frame_of_a = st.frame_of_a;
+    return st.region;
   }
 
   // The witness (regularised: generic, strictly inside both; closed: the

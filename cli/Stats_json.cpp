@@ -74,6 +74,7 @@ json stats_json(const Check_stats& s)
           {"exact_regions", s.exact_regions},
           {"exact_lines", s.exact_lines},
           {"exact_plane_tests", s.exact_plane_tests},
+          {"exact_region_stages", s.exact_region_stages},
           {"witnesses_by_intervals", s.witnesses_by_intervals},
           {"earliest_by_intervals", s.earliest_by_intervals},
           {"seconds", {{"model", s.seconds_model}, {"sweep", s.seconds_sweep}, {"sbounds", s.seconds_sbounds},

@@ -9,6 +9,7 @@
 #include "exact/Exact_line_filter.h"
 #include "model/Extrusion.h"
 #include "search/Generate_and_test.h"
+#include "search/Span_region.h"
 #include <map>
 #include <memory>
 
@@ -112,6 +113,51 @@ public:
     auto conquer = std::make_shared<Lines>(runner_.ek_, lowest_terms(layout), groups_, exact);
     conquer->conquer().adopt(layout, outer);
     return conquer;
+  }
+
+  // The region stage of sub-span s (Span_region::stage) in rationals, for
+  // an interval run that could not certify it: the rational run's own
+  // narrowed times, fitted box and region (grid points, exact in
+  // intervals), enclosed, and its emptied S-bounds copied onto the interval
+  // run's A and B (only their emptiness shapes the formula,
+  // Extrusion::emit). The shear is made from A's and B's velocities by the
+  // frame, as the interval run makes it (Extrusion::span_table).
+  template <class M>
+  void region_stage(int a, int b, std::size_t s, M& A, M& B, Region_stage<AFT>& st)
+  {
+    Region_stage<EFT> e;
+    Moving_object<EFT> EA, EB;
+    {
+      CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+      runner_.need_exact(a);   // the model and its settled S-bounds
+      runner_.need_exact(b);
+      const Scene_model<EK>& model = runner_.emodel_;
+      const Time_span<EFT> span = model.sub_spans({a, b}).at(s);
+      EA = moving_on(model, a, span, runner_.esettled_[a]);
+      EB = moving_on(model, b, span, runner_.esettled_[b]);
+      Check_stats scratch;
+      e = Span_region<EK>(runner_.ek_, scratch, model.far_exponent, closed_)
+              .stage(EA, EB, span.lo, span.hi, runner_.use_sbounds_);
+    }
+    ++runner_.exact_stages_;
+    auto to = [&](const EFT& x) { return runner_.ak_.from_rational(runner_.ek_.to_rational(x)); };
+    auto box = [&](const Box<EFT, 4>& x) {
+      Box<AFT, 4> y;
+      for (int q = 0; q < 4; ++q) y.set(q, to(x.lo[q]), to(x.hi[q]));
+      return y;
+    };
+    for (std::size_t n = 0; n < A.beta.size(); ++n) A.beta[n].empty = EA.beta[n].empty;
+    for (std::size_t n = 0; n < B.beta.size(); ++n) B.beta[n].empty = EB.beta[n].empty;
+    st = Region_stage<AFT>();
+    st.alive = e.alive;
+    st.tl = to(e.tl);
+    st.th = to(e.th);
+    if (!e.alive) return;
+    st.fitted = box(e.fitted);
+    if (e.region) st.region = box(*e.region);
+    st.frame_of_a = e.frame_of_a;
+    for (int q = 0; q < 3; ++q)
+      st.shear[q] = !runner_.use_sbounds_ ? AFT(0) : e.frame_of_a[q] ? A.v[q] : B.v[q];
   }
 
   // Per table entry of the sub-span, its rational normal scaled to coprime

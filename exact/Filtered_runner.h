@@ -53,6 +53,7 @@ public:
   {
     emodel_.t_lo = ek_.from_rational(scene.t_lo);
     emodel_.t_hi = ek_.from_rational(scene.t_hi);
+    emodel_.set_exact_span(scene);
     emodel_.objects.resize(scene.objects.size());
     esettled_.resize(scene.objects.size());
     for (std::size_t i = 0; i < scene.objects.size(); ++i) emodel_.objects[i].name = scene.objects[i].name;
@@ -192,7 +193,7 @@ private:
   std::vector<typename S_bounds<EK>::Bounds> esettled_;
   std::unique_ptr<std::once_flag[]> built_, settled_;   // EK's model of an object, and its S-bounds
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
-      witnesses_by_intervals_{0}, earliest_by_intervals_{0};
+      witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0};
 
   // A witness AK made and verified on a certified path, in EK's numbers.
   // Regularised, its coordinates are grid points (Witness::snap), exact
@@ -315,6 +316,7 @@ private:
     stats.exact_witness_replays = witness_replays_.load();
     stats.exact_regions = exact_regions_.load();
     stats.exact_plane_tests = exact_planes_.load();
+    stats.exact_region_stages = exact_stages_.load();
     stats.witnesses_by_intervals = witnesses_by_intervals_.load();
     stats.earliest_by_intervals = earliest_by_intervals_.load();
   }

@@ -71,6 +71,19 @@ public:
   bool earliest_trail() const { return earliest_ && trail_->complete && !trail_->approximate && !pending_; }
 
   bool skips_span(std::size_t) const { return false; }
+  // The region stage; where the intervals leave a decision open (S-bounds
+  // meeting exactly: objects in contact), the stage in rationals, adopted:
+  // the run goes on from the rational run's own region and pruning.
+  template <class M, class Stage, class Run>
+  void region_stage(int a, int b, std::size_t index, M& A, M& B, Stage& st, Run run)
+  {
+    try {
+      run();
+      return;
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+    }
+    exact_->region_stage(a, b, index, A, B, st);
+  }
   void search_span(int a, int b, std::size_t index, const std::array<bool, 3>& frame_of_a)
   {
     a_ = a, b_ = b, span_ = index, frame_ = frame_of_a;

@@ -13,6 +13,7 @@ namespace clash4d {
 template <class FT>
 struct Motion_path {
   std::vector<FT> times;                 // breakpoints, strictly increasing
+  std::vector<Rational> exact_times;     // the same, the scene's own numbers (build)
   std::vector<Vector3<FT>> velocity;     // times.size() + 1 segments
   std::vector<Vector3<FT>> offset;
 
@@ -21,6 +22,7 @@ struct Motion_path {
   {
     Motion_path p;
     for (const auto& t : m.times) p.times.push_back(k.from_rational(t));
+    p.exact_times = m.times;
     for (const auto& v : m.velocities) p.velocity.push_back({k.from_rational(v[0]), k.from_rational(v[1]), k.from_rational(v[2])});
     std::size_t n = p.velocity.size();
     p.offset.assign(n, Vector3<FT>{FT(0), FT(0), FT(0)});

@@ -30,6 +30,8 @@ struct Scene_model {
   using FT = typename K::FT;
   K kernel;                              // whose signs order times
   FT t_lo, t_hi;
+  Rational exact_t_lo, exact_t_hi;       // the scene's own (build): sub_spans orders times on them
+  bool exact_span = false;
   std::vector<Object_model<FT>> objects;
   // R = 2^far_exponent bounds the vertices of the scene's arrangement
   // (model/Far_bound.h): the search box on an axis along which neither
@@ -43,6 +45,7 @@ struct Scene_model {
     m.kernel = k;
     m.t_lo = k.from_rational(scene.t_lo);
     m.t_hi = k.from_rational(scene.t_hi);
+    m.set_exact_span(scene);
     m.far_exponent = clash4d::far_exponent(scene);
     Model_builder<K> builder(k);
     for (const auto& o : scene.objects)
@@ -50,9 +53,39 @@ struct Scene_model {
     return m;
   }
 
+  void set_exact_span(const Scene& scene)
+  {
+    exact_t_lo = scene.t_lo;
+    exact_t_hi = scene.t_hi;
+    exact_span = true;
+  }
+
   // [tL, tH] split at every velocity change of the given objects inside it, so
   // that each of them has one constant velocity on every sub-span (§4.3.2).
+  // The times are ordered and merged on the scene's own rationals when the
+  // model has them: a kernel that only encloses times (intervals) could not
+  // tell two objects' coinciding velocity changes apart.
   std::vector<Time_span<FT>> sub_spans(const std::vector<int>& which) const
+  {
+    std::vector<std::pair<Rational, FT>> exact{{exact_t_lo, t_lo}, {exact_t_hi, t_hi}};
+    bool known = exact_span;
+    for (int i : which) {
+      const Motion_path<FT>& m = objects[i].motion;
+      known = known && m.exact_times.size() == m.times.size();
+      for (std::size_t k = 0; known && k < m.times.size(); ++k)
+        if (exact_t_lo < m.exact_times[k] && m.exact_times[k] < exact_t_hi) exact.emplace_back(m.exact_times[k], m.times[k]);
+    }
+    if (!known) return sub_spans_by_kernel(which);
+    std::sort(exact.begin(), exact.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    exact.erase(std::unique(exact.begin(), exact.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
+                exact.end());
+    std::vector<Time_span<FT>> spans;
+    for (std::size_t i = 0; i + 1 < exact.size(); ++i) spans.push_back({exact[i].second, exact[i + 1].second});
+    return spans;
+  }
+
+  // The same in the kernel's order (a model built without the scene).
+  std::vector<Time_span<FT>> sub_spans_by_kernel(const std::vector<int>& which) const
   {
     std::vector<FT> cuts{t_lo, t_hi};
     for (int i : which)

@@ -49,13 +49,17 @@ struct Check_stats {
   // the regions they were in;
   // exact_plane_tests: pairs of planes the intervals could not tell apart
   // or identify (parallel faces), decided on the rational planes instead;
+  // exact_region_stages: sub-spans whose S-bounds and region the intervals
+  // could not certify (bounds that meet exactly: a contact), made in
+  // rationals and adopted by the interval run, which goes on;
   // witnesses_by_intervals: colliding pairs whose witness the interval run
   // made itself, on a path certified to be the rational run's (no rerun);
   // earliest_by_intervals: earliest-mode colliding pairs whose search the
   // interval run made (ties with t* decided in rationals), the rational run
   // only replaying its last improvement (of exact_witness_runs).
   std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_witness_replays = 0, exact_regions = 0,
-              exact_lines = 0, exact_plane_tests = 0, witnesses_by_intervals = 0, earliest_by_intervals = 0;
+              exact_lines = 0, exact_plane_tests = 0, exact_region_stages = 0, witnesses_by_intervals = 0,
+              earliest_by_intervals = 0;
   // Time per stage, seconds
   double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
 

@@ -12,6 +12,11 @@
 // A policy P provides:
 //   Collision_checker, per sub-span of a pair (in time order):
 //     bool skips_span(index)           the span is known to hold no collision
+//     template <class M, class Stage, class Run>
+//       void region_stage(a, b, index, A, B, stage, run)   the S-bounds and
+//                                      region: run() makes them here; a
+//                                      filter may make them elsewhere and
+//                                      set A's and B's emptied bounds
 //     void search_span(a, b, index, frame_of_a)   the span about to be searched
 //     void found_in_span(index)        a (better) point inside was found there
 //     bool stops_after(index)          after a span that found nothing: stop
@@ -74,6 +79,11 @@ namespace clash4d {
 
 struct No_filter {
   bool skips_span(std::size_t) const { return false; }
+  template <class M, class Stage, class Run>
+  void region_stage(int, int, std::size_t, M&, M&, Stage&, Run run)
+  {
+    run();
+  }
   void search_span(int, int, std::size_t, const std::array<bool, 3>&) {}
   void found_in_span(std::size_t) {}
   bool stops_after(std::size_t) const { return false; }

@@ -11,9 +11,25 @@
 #include "model/Extrusion.h"
 #include "search/Check_stats.h"
 #include "search/S_bounds.h"
+#include <optional>
 #include <stdexcept>
 
 namespace clash4d {
+
+// The region stage's outcome for one pair on one sub-span (Span_region::
+// stage): whether the S-bounds leave the pair a chance there, the narrowed
+// times, the fitted box (for statistics) and the region searched (on the
+// grid; nothing when the fitted box is empty), with its frame. A run in
+// another kernel may adopt it (exact/Interval_filter.h).
+template <class FT>
+struct Region_stage {
+  bool alive = false;
+  FT tl{}, th{};
+  Box<FT, 4> fitted;
+  std::optional<Box<FT, 4>> region;
+  Vector3<FT> shear{};
+  std::array<bool, 3> frame_of_a{};
+};
 
 template <class K>
 class Span_region {
@@ -27,7 +43,24 @@ public:
   // (model/Far_bound.h); closed: the pair under closed semantics (S_bounds'
   // closed).
   Span_region(const K& k, Check_stats& stats, int far_exponent, bool closed = false)
-    : k_(k), sb_(k, closed), stats_(stats), far_exponent_(far_exponent) {}
+    : k_(k), sb_(k, closed), stats_(stats), far_exponent_(far_exponent), closed_(closed) {}
+
+  // The whole stage on the sub-span [lo, hi]: the 4D S-bounds (narrowing
+  // A's and B's bounds; none with use_sbounds off), then the fitted box
+  // (or §4.1's original), moved out to the grid. Closed, a box without
+  // interior (objects that only touch) is kept and widened too.
+  Region_stage<FT> stage(Moving& A, Moving& B, const FT& lo, const FT& hi, bool use_sbounds)
+  {
+    Region_stage<FT> st;
+    st.tl = lo;
+    st.th = hi;
+    st.alive = use_sbounds ? four_d_bounds(A, B, st.tl, st.th) : true;
+    if (!st.alive) return st;
+    st.fitted = use_sbounds ? fitted(A, B, st.tl, st.th, st.shear, st.frame_of_a) : original(A, B, lo, hi, st.shear);
+    if (closed_ ? is_empty_box(k_, st.fitted) : has_no_interior(k_, st.fitted)) return st;
+    st.region = use_sbounds || closed_ ? on_grid(st.fitted, lo, hi) : st.fitted;
+    return st;
+  }
 
   // §4.3.2: narrows A's and B's bounds and [tl, th]; false when the pair
   // cannot meet on the sub-span. The passes stop when no bound moved by a
@@ -111,7 +144,11 @@ public:
   // their faces pass through the objects' vertex lines: a degeneracy of the
   // bound, not of the scene, which interval arithmetic cannot certify. Grid
   // values are exact in every kernel, and so are the bisections of §4.1.
-  // Time stays within the sub-span [lo, hi] (the formula has no time slab).
+  // Regularised, time stays within the sub-span [lo, hi] (the formula has no
+  // time slab). Closed, the formula holds the sub-span's closed slab
+  // (Extrusion::add_time_slab), so the time faces stay on the grid too: a
+  // face at a velocity change such as t = 3/10 would be a plane of the
+  // formula that intervals could only enclose.
   // The rounding jumps at half-grid points, not at the grid points that
   // integer and short binary bounds sit on, so an interval enclosing such a
   // bound still rounds to one grid point; the margin is at least half a step.
@@ -121,6 +158,7 @@ public:
     auto below = [&](const FT& x) { return k_.grid_point(x) - step; };
     Box4 out = region;
     for (int q = 0; q < 4; ++q) out.set(q, below(region.lo[q]), -below(-region.hi[q]));
+    if (closed_) return out;
     out.lo[3] = Number_ops<FT>::upper(out.lo[3], lo);
     out.hi[3] = Number_ops<FT>::lower(out.hi[3], hi);
     return out;
@@ -131,6 +169,7 @@ private:
   S_bounds<K> sb_;
   Check_stats& stats_;
   int far_exponent_;
+  bool closed_;
 
   FT far() const
   {
