@@ -150,7 +150,7 @@ private:
   {
     Region_stage<FT> st;
     policy_.region_stage(a, b, index, A, B, st, [&] {
-      st = Span_region<K>(k_, stats_, model_.far_exponent, goal.closed()).stage(A, B, span.lo, span.hi, use_sbounds_);
+      st = Span_region<K>(k_, stats_, model_.far_exponent, goal.closed()).stage(A, B, span, use_sbounds_);
     });
     bool alive = st.alive && goal.can_improve(k_, st.tl);
     ss.pair = A.object->name + "/" + B.object->name;

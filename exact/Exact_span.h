@@ -137,7 +137,7 @@ public:
       EB = moving_on(model, b, span, runner_.esettled_[b]);
       Check_stats scratch;
       e = Span_region<EK>(runner_.ek_, scratch, model.far_exponent, closed_)
-              .stage(EA, EB, span.lo, span.hi, runner_.use_sbounds_);
+              .stage(EA, EB, span, runner_.use_sbounds_);
     }
     ++runner_.exact_stages_;
     auto to = [&](const EFT& x) { return runner_.ak_.from_rational(runner_.ek_.to_rational(x)); };

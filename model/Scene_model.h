@@ -23,6 +23,10 @@ struct Object_model {
 template <class FT>
 struct Time_span {
   FT lo, hi;
+  // Whether each end is a point of the search's dyadic grid (a double),
+  // decided on the scene's rationals (sub_spans): closed semantics keeps a
+  // region's time face at an end only then (Span_region::on_grid).
+  bool lo_on_grid = true, hi_on_grid = true;
 };
 
 template <class K>
@@ -80,9 +84,12 @@ struct Scene_model {
     exact.erase(std::unique(exact.begin(), exact.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
                 exact.end());
     std::vector<Time_span<FT>> spans;
-    for (std::size_t i = 0; i + 1 < exact.size(); ++i) spans.push_back({exact[i].second, exact[i + 1].second});
+    for (std::size_t i = 0; i + 1 < exact.size(); ++i)
+      spans.push_back({exact[i].second, exact[i + 1].second, on_grid(exact[i].first), on_grid(exact[i + 1].first)});
     return spans;
   }
+
+  static bool on_grid(const Rational& t) { return is_exact_dyadic(t, K::grid_bits); }
 
   // The same in the kernel's order (a model built without the scene).
   std::vector<Time_span<FT>> sub_spans_by_kernel(const std::vector<int>& which) const

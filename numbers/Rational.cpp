@@ -32,6 +32,14 @@ Rational floor_to_grid(const Rational& q, int bits)
   return out;
 }
 
+bool is_exact_dyadic(const Rational& q, int bits)
+{
+  const mpz_srcptr den = mpq_denref(q.mpq()), num = mpq_numref(q.mpq());
+  bool power_of_two = mpz_popcount(den) == 1;
+  return power_of_two && mpz_sizeinbase(den, 2) <= static_cast<std::size_t>(bits) + 1 &&
+         (mpz_sgn(num) == 0 || mpz_sizeinbase(num, 2) <= 53);
+}
+
 void scale_to_coprime_integers(Rational* x, std::size_t n)
 {
   mpz_t lcm, gcd, t;

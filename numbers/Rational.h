@@ -55,6 +55,9 @@ void scale_to_coprime_integers(Rational* x, std::size_t n);
 // The largest multiple of 2^-bits at or below q (bits >= 0).
 Rational floor_to_grid(const Rational& q, int bits);
 
+// Whether q is a multiple of 2^-bits that a double holds exactly.
+bool is_exact_dyadic(const Rational& q, int bits);
+
 // 2^e, exactly.
 Rational power_of_two(int e);
 

@@ -49,8 +49,9 @@ public:
   // A's and B's bounds; none with use_sbounds off), then the fitted box
   // (or §4.1's original), moved out to the grid. Closed, a box without
   // interior (objects that only touch) is kept and widened too.
-  Region_stage<FT> stage(Moving& A, Moving& B, const FT& lo, const FT& hi, bool use_sbounds)
+  Region_stage<FT> stage(Moving& A, Moving& B, const Time_span<FT>& span, bool use_sbounds)
   {
+    const FT &lo = span.lo, &hi = span.hi;
     Region_stage<FT> st;
     st.tl = lo;
     st.th = hi;
@@ -58,7 +59,7 @@ public:
     if (!st.alive) return st;
     st.fitted = use_sbounds ? fitted(A, B, st.tl, st.th, st.shear, st.frame_of_a) : original(A, B, lo, hi, st.shear);
     if (closed_ ? is_empty_box(k_, st.fitted) : has_no_interior(k_, st.fitted)) return st;
-    st.region = use_sbounds || closed_ ? on_grid(st.fitted, lo, hi) : st.fitted;
+    st.region = use_sbounds || closed_ ? on_grid(st.fitted, span) : st.fitted;
     return st;
   }
 
@@ -146,21 +147,23 @@ public:
   // values are exact in every kernel, and so are the bisections of §4.1.
   // Regularised, time stays within the sub-span [lo, hi] (the formula has no
   // time slab). Closed, the formula holds the sub-span's closed slab
-  // (Extrusion::add_time_slab), so the time faces stay on the grid too: a
-  // face at a velocity change such as t = 3/10 would be a plane of the
-  // formula that intervals could only enclose.
+  // (Extrusion::add_time_slab), so at an end off the grid (a velocity
+  // change at t = 3/10, say) the time face stays on the grid: a face there
+  // would be a plane of the formula that intervals could only enclose. At
+  // an end on the grid the face is the end (a region then folds or
+  // simplifies against the slab, as every kernel decides alike).
   // The rounding jumps at half-grid points, not at the grid points that
   // integer and short binary bounds sit on, so an interval enclosing such a
   // bound still rounds to one grid point; the margin is at least half a step.
-  Box4 on_grid(const Box4& region, const FT& lo, const FT& hi) const
+  Box4 on_grid(const Box4& region, const Time_span<FT>& span) const
   {
+    const FT &lo = span.lo, &hi = span.hi;
     const FT step = k_.power_of_two(-K::grid_bits);
     auto below = [&](const FT& x) { return k_.grid_point(x) - step; };
     Box4 out = region;
     for (int q = 0; q < 4; ++q) out.set(q, below(region.lo[q]), -below(-region.hi[q]));
-    if (closed_) return out;
-    out.lo[3] = Number_ops<FT>::upper(out.lo[3], lo);
-    out.hi[3] = Number_ops<FT>::lower(out.hi[3], hi);
+    if (!closed_ || span.lo_on_grid) out.lo[3] = Number_ops<FT>::upper(out.lo[3], lo);
+    if (!closed_ || span.hi_on_grid) out.hi[3] = Number_ops<FT>::lower(out.hi[3], hi);
     return out;
   }
 
