@@ -20,6 +20,23 @@ struct Exact_line_filter : No_filter {
   std::optional<bool> verdict_first(const Vector4<FT>& l, const std::vector<Vector4<FT>>& normals, Inside& inside,
                                     std::size_t& tested)
   {
+    return on_enclosures(normals, tested, [&](Neighbourhood<Interval_kernel>& hood, const auto& near, auto enclose) {
+      return hood.find_inside(enclose(l), near, inside).has_value();
+    });
+  }
+  // The same around a closed touch point (Generate_and_test::test_touch).
+  template <class FT, class Inside>
+  std::optional<bool> verdict_around(const std::vector<Vector4<FT>>& normals, Inside inside, std::size_t& tested)
+  {
+    return on_enclosures(normals, tested, [&](Neighbourhood<Interval_kernel>& hood, const auto& near, auto) {
+      return hood.find_inside_around(near, inside).has_value();
+    });
+  }
+
+private:
+  template <class FT, class Find>
+  static std::optional<bool> on_enclosures(const std::vector<Vector4<FT>>& normals, std::size_t& tested, Find find)
+  {
     Interval_kernel::Protector protect;
     Interval_kernel ak;
     auto enclose = [&](const Vector4<FT>& v) {
@@ -30,7 +47,7 @@ struct Exact_line_filter : No_filter {
     for (const auto& n : normals) near.push_back(enclose(n));
     Neighbourhood<Interval_kernel> hood(ak);
     try {
-      bool found = hood.find_inside(enclose(l), near, inside).has_value();
+      bool found = find(hood, near, enclose);
       tested += hood.cells_tested();
       return found;
     } catch (const CGAL::Uncertain_conversion_exception&) {

@@ -9,7 +9,7 @@
 #include "exact/Exact_line_filter.h"
 #include "model/Extrusion.h"
 #include "search/Generate_and_test.h"
-#include "search/Span_region.h"
+#include "exact/Exact_stage.h"
 #include <map>
 #include <memory>
 
@@ -140,6 +140,10 @@ public:
               .stage(EA, EB, span, runner_.use_sbounds_);
     }
     ++runner_.exact_stages_;
+    Exact_stage<EFT>& kept = stages_[s];
+    kept.stage = e;
+    for (const auto& n : EA.beta) kept.empty_a.push_back(n.empty);
+    for (const auto& n : EB.beta) kept.empty_b.push_back(n.empty);
     auto to = [&](const EFT& x) { return runner_.ak_.from_rational(runner_.ek_.to_rational(x)); };
     auto box = [&](const Box<EFT, 4>& x) {
       Box<AFT, 4> y;
@@ -159,6 +163,9 @@ public:
     for (int q = 0; q < 3; ++q)
       st.shear[q] = !runner_.use_sbounds_ ? AFT(0) : e.frame_of_a[q] ? A.v[q] : B.v[q];
   }
+
+  // The stages region_stage made, per sub-span (for the trail's replay).
+  Exact_stages<EFT>& stages() { return stages_; }
 
   // Per table entry of the sub-span, its rational normal scaled to coprime
   // integers (normals), and the whole plane, normal and offset, scaled to
@@ -201,6 +208,7 @@ private:
   std::vector<char> lowest_made_;
   Motion_groups<EFT> groups_;
   std::map<std::pair<long, long>, int> answers_;
+  Exact_stages<EFT> stages_;
 
   void enter(int a, int b, std::size_t s, const std::array<bool, 3>& frame)
   {

@@ -126,6 +126,7 @@ private:
     Search_trail trail;
     Check_stats astats;
     bool earliest_trail = false;
+    Exact_stages<EFT> stages;   // region stages the interval run made in rationals, for the replay
     if (!exact_only_[a] && !exact_only_[b]) {
       try {
         Protector protect;
@@ -148,6 +149,7 @@ private:
           }
         }
         earliest_trail = options.earliest && policy.earliest_trail();
+        stages = policy.take_stages();
         ++witness_runs_;
       } catch (const CGAL::Uncertain_conversion_exception&) {
         ++fallbacks_;
@@ -157,10 +159,12 @@ private:
     need_exact(a);
     need_exact(b);
     if (earliest_trail)
-      if (auto r = replayed<Earliest_replay>(trail, a, b, true, options.semantics, astats, stats, earliest_by_intervals_))
+      if (auto r = replayed<Earliest_replay<EFT>>(trail, stages, a, b, true, options.semantics, astats, stats,
+                                                  earliest_by_intervals_))
         return *r;
     if (!options.earliest && trail.complete && !trail.approximate)
-      if (auto r = replayed<Trail_replay>(trail, a, b, false, options.semantics, astats, stats, witness_replays_))
+      if (auto r = replayed<Trail_replay<EFT>>(trail, stages, a, b, false, options.semantics, astats, stats,
+                                               witness_replays_))
         return *r;
     Collision_checker<EK> checker(ek_, emodel_, esettled_, stats, use_sbounds_);
     return checker.check_pair(a, b, options.earliest, ceiling, options.semantics);
@@ -168,11 +172,12 @@ private:
   // EK along the interval run's trail (Replay: the witness's or the
   // earliest improvement's); the answer when the trail held, counted.
   template <class Replay>
-  std::optional<Pair_result<EFT>> replayed(Search_trail& trail, int a, int b, bool earliest, Semantics semantics,
-                                           const Check_stats& astats, Check_stats& stats, std::atomic<std::size_t>& count)
+  std::optional<Pair_result<EFT>> replayed(Search_trail& trail, const Exact_stages<EFT>& stages, int a, int b,
+                                           bool earliest, Semantics semantics, const Check_stats& astats,
+                                           Check_stats& stats, std::atomic<std::size_t>& count)
   {
     Check_stats rstats;
-    Replay replay(trail);
+    Replay replay(trail, &stages);
     Collision_checker<EK, Replay> checker(ek_, emodel_, esettled_, rstats, use_sbounds_, &replay);
     Pair_result<EFT> r = checker.check_pair(a, b, earliest, nullptr, semantics);
     if (!r.collide || trail.diverged) return std::nullopt;

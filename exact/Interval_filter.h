@@ -84,6 +84,9 @@ public:
     }
     exact_->region_stage(a, b, index, A, B, st);
   }
+  // The region stages made in rationals, handed on to the trail's replay.
+  Exact_stages<EFT> take_stages() { return std::move(exact_->stages()); }
+
   void search_span(int a, int b, std::size_t index, const std::array<bool, 3>& frame_of_a)
   {
     a_ = a, b_ = b, span_ = index, frame_ = frame_of_a;

@@ -3,19 +3,34 @@
 // run's own point): earlier sub-spans are skipped, the division takes only
 // the trail's child at each depth, and generate-and-test only the trail's
 // line. Wherever the rational run's path leaves the trail, the trail is
-// marked diverged and the runner searches the whole pair again.
+// marked diverged and the runner searches the whole pair again. A
+// sub-span's region stage the interval run had made in rationals
+// (exact/Exact_stage.h) is adopted, not made again.
 #ifndef CLASH4D_EXACT_TRAIL_REPLAY_H
 #define CLASH4D_EXACT_TRAIL_REPLAY_H
 
+#include "exact/Exact_stage.h"
 #include "exact/Search_trail.h"
 #include "search/No_filter.h"
 
 namespace clash4d {
 
+template <class FT>
 class Trail_replay : public No_filter {
 public:
   Trail_replay() = default;   // only as a stage's unused default
-  explicit Trail_replay(Search_trail& trail) : trail_(&trail) {}
+  explicit Trail_replay(Search_trail& trail, const Exact_stages<FT>* stages = nullptr) : trail_(&trail), stages_(stages) {}
+
+  template <class M, class Run>
+  void region_stage(int, int, std::size_t index, M& A, M& B, Region_stage<FT>& st, Run run)
+  {
+    if (stages_)
+      if (auto it = stages_->find(index); it != stages_->end()) {
+        it->second.adopt(A, B, st);
+        return;
+      }
+    run();
+  }
 
   // Earlier spans were proven free of collisions; the trail's must hold it.
   bool skips_span(std::size_t index) const { return index < trail_->span; }
@@ -48,6 +63,7 @@ public:
 
 private:
   Search_trail* trail_ = nullptr;
+  const Exact_stages<FT>* stages_ = nullptr;
 };
 
 // Earliest mode: the trail ends at the interval run's last improvement,
@@ -57,10 +73,12 @@ private:
 // recorded at the edge the whole search records last, so the goal, the
 // witness and the contact point are the whole search's. Later sub-spans
 // cannot improve on t* (none did in the interval run): the run stops.
-class Earliest_replay : public Trail_replay {
+template <class FT>
+class Earliest_replay : public Trail_replay<FT> {
 public:
   Earliest_replay() = default;
-  explicit Earliest_replay(Search_trail& trail) : Trail_replay(trail) {}
+  explicit Earliest_replay(Search_trail& trail, const Exact_stages<FT>* stages = nullptr)
+    : Trail_replay<FT>(trail, stages) {}
   bool stops_after(std::size_t) const { return true; }
 };
 

@@ -552,16 +552,28 @@ private:
         return g_ptr->evaluate(truth) == Truth::True;
       };
     };
-    if (line_keyed_ && !through.empty()) {
-      // On the keys first (as classify): no cell inside one object, no touch.
+    // As classify: the policy may decide the verdicts another way first (on
+    // the keys of a keyed line); no cell inside one object, no touch. Only
+    // a verdict wanted and both known: the touch, without its directions.
+    bool keyed = line_keyed_ && !through.empty();
+    if (verdict_only_ || keyed) {
       std::vector<V> keys;
-      for (std::size_t p : through) keys.push_back(plane_key_[p]);
+      for (std::size_t p : through)
+        if (keyed) keys.push_back(plane_key_[p]);
+      bool both = true;
       for (const Formula* g : {&f.a(), &f.b()}) {
-        std::optional<bool> in = policy_.verdict_around(keys, cell_of(*g), stats_.cells_tested);
+        std::optional<bool> in = policy_.verdict_around(keyed ? keys : normals, cell_of(*g), stats_.cells_tested);
+        both = both && in && *in;
         if (in && !*in) {
           for (std::size_t p : through) sign_[p] = 0;
           return;
         }
+      }
+      if (verdict_only_ && both) {
+        for (std::size_t p : through) sign_[p] = 0;
+        V none{FT(0), FT(0), FT(0), FT(0)};
+        goal.record_touch(k_, x, none, none);
+        return;
       }
     }
     Neighbourhood<K> hood(k_);
