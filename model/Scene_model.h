@@ -35,7 +35,7 @@ struct Scene_model {
   K kernel;                              // whose signs order times
   FT t_lo, t_hi;
   Rational exact_t_lo, exact_t_hi;       // the scene's own (build): sub_spans orders times on them
-  bool exact_span = false;
+  bool exact_span = false, lo_on_grid = true, hi_on_grid = true;
   std::vector<Object_model<FT>> objects;
   // R = 2^far_exponent bounds the vertices of the scene's arrangement
   // (model/Far_bound.h): the search box on an axis along which neither
@@ -62,6 +62,8 @@ struct Scene_model {
     exact_t_lo = scene.t_lo;
     exact_t_hi = scene.t_hi;
     exact_span = true;
+    lo_on_grid = on_grid(exact_t_lo);
+    hi_on_grid = on_grid(exact_t_hi);
   }
 
   // [tL, tH] split at every velocity change of the given objects inside it, so
@@ -71,6 +73,9 @@ struct Scene_model {
   // tell two objects' coinciding velocity changes apart.
   std::vector<Time_span<FT>> sub_spans(const std::vector<int>& which) const
   {
+    bool still = true;   // no velocity change at all: the whole span (most pairs)
+    for (int i : which) still = still && objects[i].motion.times.empty();
+    if (still && exact_span) return {{t_lo, t_hi, lo_on_grid, hi_on_grid}};
     std::vector<std::pair<Rational, FT>> exact{{exact_t_lo, t_lo}, {exact_t_hi, t_hi}};
     bool known = exact_span;
     for (int i : which) {
