@@ -162,8 +162,9 @@ BOOST_AUTO_TEST_CASE(generate_writes_a_valid_scene)
   BOOST_TEST(run({"generate", "--n", "1"}).status == 2);
 }
 
-// --max-seconds (issue 16, a work budget): the skewed §6 scene takes seconds
-// exact (papers/cameron1990/README.md), far beyond a budget of 1 ms, so the
+// --max-seconds (issue 16, a work budget): the skewed §6 scene takes a third
+// of a second exact and seconds in rationals (papers/cameron1990/README.md),
+// far beyond a budget of 1 ms, so the
 // run stops with exit 3 naming the limit and prints no answer; within a
 // generous budget a scene is answered as without one.
 BOOST_AUTO_TEST_CASE(a_run_past_its_work_budget_exits_3_with_no_answer)
