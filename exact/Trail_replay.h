@@ -19,7 +19,8 @@ template <class FT>
 class Trail_replay : public No_filter {
 public:
   Trail_replay() = default;   // only as a stage's unused default
-  explicit Trail_replay(Search_trail& trail, const Exact_stages<FT>* stages = nullptr) : trail_(&trail), stages_(stages) {}
+  explicit Trail_replay(Search_trail& trail, const Exact_stages<FT>* stages = nullptr)
+    : trail_(&trail), stages_(stages) {}
 
   template <class M, class Run>
   void region_stage(int, int, std::size_t index, M& A, M& B, Region_stage<FT>& st, Run run)

@@ -82,12 +82,13 @@ struct Scene_model {
       const Motion_path<FT>& m = objects[i].motion;
       known = known && m.exact_times.size() == m.times.size();
       for (std::size_t k = 0; known && k < m.times.size(); ++k)
-        if (exact_t_lo < m.exact_times[k] && m.exact_times[k] < exact_t_hi) exact.emplace_back(m.exact_times[k], m.times[k]);
+        if (exact_t_lo < m.exact_times[k] && m.exact_times[k] < exact_t_hi)
+          exact.emplace_back(m.exact_times[k], m.times[k]);
     }
     if (!known) return sub_spans_by_kernel(which);
     std::sort(exact.begin(), exact.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-    exact.erase(std::unique(exact.begin(), exact.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
-                exact.end());
+    auto same = [](const auto& x, const auto& y) { return x.first == y.first; };
+    exact.erase(std::unique(exact.begin(), exact.end(), same), exact.end());
     std::vector<Time_span<FT>> spans;
     for (std::size_t i = 0; i + 1 < exact.size(); ++i)
       spans.push_back({exact[i].second, exact[i + 1].second, on_grid(exact[i].first), on_grid(exact[i + 1].first)});
