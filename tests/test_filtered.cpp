@@ -208,6 +208,28 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational_closed)
   BOOST_TEST(searched > 0u);   // closed earliest mode: the whole search in rationals
 }
 
+// Two objects change velocity at one decimal time, t = 3/10, and stop
+// touching face to face there (hand-derived: a's face x = 1 + t/10 and b's
+// x = 1.06 - t/10 meet at 1.03 and stay): no collision, a closed contact.
+// The sub-spans are cut on the scene's rationals (intervals could not
+// order 3/10 with itself), and the S-bounds that meet exactly are made in
+// rationals and adopted: the interval run goes on, nothing is run again
+// whole, in either semantics, and the answers are the rational run's.
+BOOST_AUTO_TEST_CASE(coinciding_decimal_velocity_changes_stay_in_intervals)
+{
+  Scene scene = read_scene(read_json_text(R"({"format": "clash4d-scene/1", "time": [0, 1], "objects": [
+    {"name": "a", "shape": {"block": {"min": [0, 0, 0], "max": [1, 1, 1]}}, "motion": "vel 0.1 0 0 until 0.3 rest"},
+    {"name": "b", "shape": {"block": {"min": [1.06, 0, 0], "max": [2.06, 1, 1]}}, "motion": "vel -0.1 0 0 until 0.3 rest"}]})"));
+  for (Semantics s : {Semantics::regularised, Semantics::closed}) {
+    Check_options o;
+    o.semantics = s;
+    Check_answer a = same_answers(scene, o, "coinciding decimal velocity changes");
+    BOOST_TEST(a.collide == (s == Semantics::closed));
+    BOOST_TEST(a.stats.exact_fallbacks == 0u);
+    BOOST_TEST(a.stats.exact_region_stages > 0u);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(contact_families_match_rational)
 {
   std::uint64_t seed = env_number("CLASH4D_SEED", 20261122ull), cases = env_number("CLASH4D_FILTER_CASES", 1000);

@@ -160,3 +160,17 @@ BOOST_AUTO_TEST_CASE(quotient_of_known_sign_is_cgal_division)
     BOOST_TEST((q.inf() == r.inf() && q.sup() == r.sup()), i);
   }
 }
+
+// Time_span::lo_on_grid (model/Scene_model.h): a multiple of 2^-bits that a
+// double holds, decided on the rational; at the edges of both conditions.
+BOOST_AUTO_TEST_CASE(exact_dyadics_at_their_edges)
+{
+  BOOST_TEST(is_exact_dyadic(q("0"), 20));
+  BOOST_TEST(is_exact_dyadic(q("-3"), 20));
+  BOOST_TEST(is_exact_dyadic(q("5/1048576"), 20));        // 5 * 2^-20
+  BOOST_TEST(!is_exact_dyadic(q("5/2097152"), 20));       // 5 * 2^-21: off the grid
+  BOOST_TEST(!is_exact_dyadic(q("3/10"), 20));            // not dyadic
+  BOOST_TEST(!is_exact_dyadic(q("1/3"), 20));
+  BOOST_TEST(is_exact_dyadic(q("9007199254740991"), 20));  // 2^53 - 1
+  BOOST_TEST(!is_exact_dyadic(q("9007199254740993"), 20)); // 2^53 + 1: no double holds it
+}
