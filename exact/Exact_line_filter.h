@@ -12,6 +12,22 @@
 
 namespace clash4d {
 
+// A neighbourhood's verdict in intervals (find: on a Neighbourhood of the
+// interval kernel ak), or nothing when they leave a sign open; the cells it
+// tested are added to `tested`. Shared by the filter's policies.
+template <class Find>
+std::optional<bool> interval_verdict(const Interval_kernel& ak, std::size_t& tested, Find find)
+{
+  Neighbourhood<Interval_kernel> hood(ak);
+  try {
+    bool found = find(hood);
+    tested += hood.cells_tested();
+    return found;
+  } catch (const CGAL::Uncertain_conversion_exception&) {
+    return std::nullopt;
+  }
+}
+
 struct Exact_line_filter : No_filter {
   // Whether some open cell around the point is inside; nothing when the
   // intervals cannot tell. The direction into the cell is the intervals',
@@ -20,7 +36,7 @@ struct Exact_line_filter : No_filter {
   std::optional<bool> verdict_first(const Vector4<FT>& l, const std::vector<Vector4<FT>>& normals, Inside& inside,
                                     std::size_t& tested)
   {
-    return on_enclosures(normals, tested, [&](Neighbourhood<Interval_kernel>& hood, const auto& near, auto enclose) {
+    return on_enclosures(normals, tested, [&](auto& hood, const auto& near, auto enclose) {
       return hood.find_inside(enclose(l), near, inside).has_value();
     });
   }
@@ -28,7 +44,7 @@ struct Exact_line_filter : No_filter {
   template <class FT, class Inside>
   std::optional<bool> verdict_around(const std::vector<Vector4<FT>>& normals, Inside inside, std::size_t& tested)
   {
-    return on_enclosures(normals, tested, [&](Neighbourhood<Interval_kernel>& hood, const auto& near, auto) {
+    return on_enclosures(normals, tested, [&](auto& hood, const auto& near, auto) {
       return hood.find_inside_around(near, inside).has_value();
     });
   }
@@ -45,14 +61,7 @@ private:
     };
     std::vector<Vector4<Interval>> near;
     for (const auto& n : normals) near.push_back(enclose(n));
-    Neighbourhood<Interval_kernel> hood(ak);
-    try {
-      bool found = find(hood, near, enclose);
-      tested += hood.cells_tested();
-      return found;
-    } catch (const CGAL::Uncertain_conversion_exception&) {
-      return std::nullopt;
-    }
+    return interval_verdict(ak, tested, [&](auto& hood) { return find(hood, near, enclose); });
   }
 };
 

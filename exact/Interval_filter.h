@@ -202,12 +202,14 @@ public:
   template <class V, class Inside>
   std::optional<bool> verdict_first(const V& l, const std::vector<V>& keys, Inside& inside, std::size_t& tested)
   {
-    return on_keys(tested, [&](Neighbourhood<AK>& hood) { return hood.find_inside(l, keys, inside).has_value(); });
+    return interval_verdict(runner_->ak_, tested,
+                            [&](auto& hood) { return hood.find_inside(l, keys, inside).has_value(); });
   }
   template <class V, class Inside>
   std::optional<bool> verdict_around(const std::vector<V>& keys, Inside inside, std::size_t& tested)
   {
-    return on_keys(tested, [&](Neighbourhood<AK>& hood) { return hood.find_inside_around(keys, inside).has_value(); });
+    return interval_verdict(runner_->ak_, tested,
+                            [&](auto& hood) { return hood.find_inside_around(keys, inside).has_value(); });
   }
 
 private:
@@ -350,19 +352,6 @@ private:
     pending_ = true;
     pending_line_ = {i, j, m};
   }
-  template <class Find>
-  std::optional<bool> on_keys(std::size_t& tested, Find find) const
-  {
-    Neighbourhood<AK> hood(runner_->ak_);
-    try {
-      bool found = find(hood);
-      tested += hood.cells_tested();
-      return found;
-    } catch (const CGAL::Uncertain_conversion_exception&) {
-      return std::nullopt;
-    }
-  }
-
   void make_keys()
   {
     if (keyed_) return;

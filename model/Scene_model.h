@@ -8,6 +8,7 @@
 #include "model/Motion_path.h"
 #include "scene/Scene.h"
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -68,9 +69,10 @@ struct Scene_model {
 
   // [tL, tH] split at every velocity change of the given objects inside it, so
   // that each of them has one constant velocity on every sub-span (§4.3.2).
-  // The times are ordered and merged on the scene's own rationals when the
-  // model has them: a kernel that only encloses times (intervals) could not
-  // tell two objects' coinciding velocity changes apart.
+  // The times are ordered and merged on the scene's own rationals (every
+  // model is built from its scene, set_exact_span): a kernel that only
+  // encloses times (intervals) could not tell two objects' coinciding
+  // velocity changes apart.
   std::vector<Time_span<FT>> sub_spans(const std::vector<int>& which) const
   {
     bool still = true;   // no velocity change at all: the whole span (most pairs)
@@ -85,7 +87,7 @@ struct Scene_model {
         if (exact_t_lo < m.exact_times[k] && m.exact_times[k] < exact_t_hi)
           exact.emplace_back(m.exact_times[k], m.times[k]);
     }
-    if (!known) return sub_spans_by_kernel(which);
+    if (!known) throw std::logic_error("internal error: a model without its scene's times");
     std::sort(exact.begin(), exact.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     auto same = [](const auto& x, const auto& y) { return x.first == y.first; };
     exact.erase(std::unique(exact.begin(), exact.end(), same), exact.end());
@@ -96,23 +98,6 @@ struct Scene_model {
   }
 
   static bool on_grid(const Rational& t) { return is_exact_dyadic(t, K::grid_bits); }
-
-  // The same in the kernel's order (a model built without the scene).
-  std::vector<Time_span<FT>> sub_spans_by_kernel(const std::vector<int>& which) const
-  {
-    std::vector<FT> cuts{t_lo, t_hi};
-    for (int i : which)
-      for (const FT& t : objects[i].motion.times)
-        if (kernel.less(t_lo, t) && kernel.less(t, t_hi)) cuts.push_back(t);
-    // FT's own order sorts (a tolerance is no order); the kernel merges.
-    std::sort(cuts.begin(), cuts.end());
-    cuts.erase(std::unique(cuts.begin(), cuts.end(),
-                           [&](const FT& x, const FT& y) { return kernel.compare(x, y) == CGAL::ZERO; }),
-               cuts.end());
-    std::vector<Time_span<FT>> spans;
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) spans.push_back({cuts[i], cuts[i + 1]});
-    return spans;
-  }
 
   // The motion segment of object i on a sub-span (constant there).
   std::size_t segment_on(int i, const Time_span<FT>& s) const
