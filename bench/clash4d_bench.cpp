@@ -75,7 +75,9 @@ void row(const std::string& name, const Scene& scene, double min_seconds, Means&
 
 } // namespace
 
-int main(int argc, char** argv)
+namespace {
+
+int run_bench(int argc, char** argv)
 {
   unsigned long seed = 1990;
   int random_count = 20, fuzz_count = 40;
@@ -154,4 +156,18 @@ int main(int argc, char** argv)
     row("random #" + std::to_string(i), read_scene(read_json_text(text)), min_seconds, means);
   }
   if (means.count > 0) means.print("random");
+  return 0;
+}
+
+} // namespace
+
+// Bad options and unreadable scene files end with a message and exit 2.
+int main(int argc, char** argv)
+{
+  try {
+    return run_bench(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "clash4d_bench: %s\n", e.what());
+    return 2;
+  }
 }
