@@ -166,6 +166,9 @@ int main(int argc, char** argv)
 {
   try {
     return run_bench(argc, argv);
+  } catch (const std::logic_error& e) {   // std::stoi, std::stod: invalid_argument, out_of_range
+    std::fprintf(stderr, "clash4d_bench: an option's value is not a number in range (%s)\n", e.what());
+    return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "clash4d_bench: %s\n", e.what());
     return 2;
