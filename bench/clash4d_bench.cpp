@@ -29,6 +29,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 using namespace clash4d;
@@ -166,8 +167,11 @@ int main(int argc, char** argv)
 {
   try {
     return run_bench(argc, argv);
-  } catch (const std::logic_error& e) {   // std::stoi, std::stod: invalid_argument, out_of_range
-    std::fprintf(stderr, "clash4d_bench: an option's value is not a number in range (%s)\n", e.what());
+  } catch (const std::invalid_argument& e) {   // std::stoi, std::stod
+    std::fprintf(stderr, "clash4d_bench: an option's value is not a number (%s)\n", e.what());
+    return 2;
+  } catch (const std::out_of_range& e) {
+    std::fprintf(stderr, "clash4d_bench: an option's value is out of range (%s)\n", e.what());
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "clash4d_bench: %s\n", e.what());
