@@ -86,6 +86,13 @@ int run_bench(int argc, char** argv)
   std::string dump_dir, only, scene_file;
   for (int i = 1; i < argc; i += 2) {
     std::string a = argv[i];
+    if (a == "--help" || a == "-h") {
+      std::printf("usage: clash4d_bench [--seed N] [--random M] [--fuzz K] [--min-seconds S] [--family F] [--earliest]\n"
+                  "                     [--scene FILE] [--dump-random DIR]\n"
+                  "  times check per query, exact (filtered), rational and double, in both semantics;\n"
+                  "  families: paper, contact, grid, fuzz (clash4d fuzz's contact families), random\n");
+      return 0;
+    }
     if (a == "--earliest") {
       earliest_mode = true;
       --i;
