@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 using namespace clash4d;
 using json = nlohmann::ordered_json;
@@ -22,7 +23,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path work = fs::temp_directory_path() / "clash4d_test_certificate";
+// One folder per process: two checkouts testing at once keep apart.
+const fs::path work = fs::temp_directory_path() / ("clash4d_test_certificate_" + std::to_string(::getpid()));
 
 std::string write_text(const std::string& name, const std::string& text)
 {
@@ -56,6 +58,7 @@ std::string mode_text(const std::vector<std::string>& m)
 void certify_and_verify(const std::string& scene, const std::vector<std::string>& mode, const std::string& number,
                         const std::string& what)
 {
+  fs::create_directories(work);  // a fresh machine has no such folder yet
   std::string cert = (work / "cert.json").string();
   fs::remove(cert);
   // A failing scene is kept beside the certificate, to rerun by hand.
@@ -67,7 +70,8 @@ void certify_and_verify(const std::string& scene, const std::vector<std::string>
       if (done) return;
       std::string name = "failed-" + what + ".json";
       for (char& ch : name) if (ch == ' ' || ch == '/' || ch == '(' || ch == ')') ch = '_';
-      fs::copy_file(scene, work / name, fs::copy_options::overwrite_existing);
+      std::error_code ec;  // never throws while a failed check unwinds
+      fs::copy_file(scene, work / name, fs::copy_options::overwrite_existing, ec);
     }
   } keep{scene, what};
   std::vector<std::string> args{"check", scene, "--number", number, "--certificate", cert};
@@ -103,7 +107,22 @@ int cases(int full)
   return env ? std::min(full, std::atoi(env)) : full;
 }
 
+// The work folder goes when the module ends; failed scenes are kept for a
+// rerun by hand.
+struct Work_folder {
+  ~Work_folder()
+  {
+    std::error_code ec;
+    bool failed = false;
+    for (const auto& e : fs::directory_iterator(work, ec))
+      failed = failed || e.path().filename().string().rfind("failed-", 0) == 0;
+    if (!failed) fs::remove_all(work, ec);
+  }
+};
+
 } // namespace
+
+BOOST_TEST_GLOBAL_FIXTURE(Work_folder);
 
 BOOST_AUTO_TEST_CASE(every_fixture_in_every_mode_is_certified_and_verified)
 {
