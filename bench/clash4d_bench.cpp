@@ -17,6 +17,7 @@
 #include "compare/Contact_families.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
+#include "scene/Files.h"
 #include "scene/Grid_scene.h"
 #include "scene/Hull_scene.h"
 #include "scene/Json_reader.h"
@@ -27,7 +28,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -114,6 +114,8 @@ int run_bench(int argc, char** argv)
       return 2;
     }
   }
+  if (!dump_dir.empty() && !std::filesystem::is_directory(dump_dir))
+    throw std::runtime_error("--dump-random " + dump_dir + ": not a directory");
   std::printf("%-58s %11s %11s %11s %8s %8s %11s %11s %8s  %s\n", "scene", "exact us", "rational us", "double us",
               "ex/dbl", "rat/dbl", "closed ex", "closed dbl", "cl ratio", "exact verdict | closed");
   if (!scene_file.empty()) {
@@ -149,7 +151,7 @@ int run_bench(int argc, char** argv)
     std::printf("contact families (clash4d fuzz), seed %lu\n", seed);
     for (int i = 0; i < fuzz_count; ++i) {
       Fuzz_case c = make_fuzz_case(seed, static_cast<std::uint64_t>(i));
-      if (!dump_dir.empty()) std::ofstream(dump_dir + "/fuzz-" + std::to_string(i) + ".json") << c.json << "\n";
+      if (!dump_dir.empty()) write_file_atomically(dump_dir + "/fuzz-" + std::to_string(i) + ".json", c.json + "\n");
       row("fuzz #" + std::to_string(i) + " " + c.family, read_scene(read_json_text(c.json)), min_seconds, means);
     }
     if (means.count > 0) means.print("fuzz");
@@ -160,7 +162,7 @@ int run_bench(int argc, char** argv)
   Means means;
   for (int i = 0; i < random_count; ++i) {
     std::string text = make_hull_scene(rng);
-    if (!dump_dir.empty()) std::ofstream(dump_dir + "/random-" + std::to_string(i) + ".json") << text << "\n";
+    if (!dump_dir.empty()) write_file_atomically(dump_dir + "/random-" + std::to_string(i) + ".json", text + "\n");
     row("random #" + std::to_string(i), read_scene(read_json_text(text)), min_seconds, means);
   }
   if (means.count > 0) means.print("random");

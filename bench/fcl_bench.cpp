@@ -3,7 +3,9 @@
 // conservative advancement on fcl::Convexd) on the same convex pairs under
 // translation: box-box and hull-hull (12-point random hulls), each touching,
 // separated and penetrating. Issue 6: FCL measured beside exact for speed.
-//   clash4d_fcl_bench [--seed N] [--min-seconds S]
+//   clash4d_fcl_bench [--seed N] [--min-seconds S] [--dump-scenes DIR]
+// --dump-scenes writes each case's scene to DIR (box-box-touching.json, ...)
+// to rerun or profile one with `clash4d check` or `clash4d_bench --scene`.
 //
 // What each column times: exact and double run `check` on the scene (their
 // model is built from the scene's numbers on every query, as `check` does);
@@ -14,14 +16,17 @@
 #include "bench/Timing.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
+#include "scene/Files.h"
 #include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <random>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -74,8 +79,14 @@ std::string scene_json(const std::string& name, const std::string& a, const std:
 
 struct Case {
   std::string name;
+  std::string json;
   Scene scene;
 };
+
+Case make_case(const std::string& name, const std::string& json)
+{
+  return {name, json, read_scene(read_json_text(json))};
+}
 
 // a = [0,1]^3 at rest; b a unit block sliding along y past a's face x = 1:
 // flush (touching, no collision), 1/2 away, or 1/2 into a (collision at t = 2).
@@ -86,7 +97,7 @@ std::vector<Case> box_cases()
   for (auto [what, x] : {std::pair<const char*, const char*>{"touching", "1"}, {"separated", "3/2"}, {"penetrating", "1/2"}}) {
     std::string b = "{\"translate\":[\"" + std::string(x) + "\",-3,0],\"solid\":{\"block\":{\"min\":[0,0,0],\"max\":[1,1,1]}}}";
     std::string name = std::string("box-box ") + what;
-    out.push_back({name, read_scene(read_json_text(scene_json(name, a, b, "vel 0 1 0")))});
+    out.push_back(make_case(name, scene_json(name, a, b, "vel 0 1 0")));
   }
   return out;
 }
@@ -109,7 +120,7 @@ std::vector<Case> hull_cases(std::mt19937_64& rng)
   std::vector<Case> out;
   auto add = [&](const char* what, const std::string& moved) {
     std::string name = std::string("hull-hull ") + what;
-    out.push_back({name, read_scene(read_json_text(scene_json(name, a, moved, "vel 0 1 0")))});
+    out.push_back(make_case(name, scene_json(name, a, moved, "vel 0 1 0")));
   };
   add("touching", translated(b, touch, 997));
   add("separated", translated(b, {2 * touch[0] + 997, 2 * touch[1], 2 * touch[2]}, 2 * 997));
@@ -137,26 +148,69 @@ void row(const Case& c, double min_seconds)
               d.seconds_per_query / f.seconds_per_query, verdict(e.collide), verdict(d.collide), verdict(f.collide));
 }
 
-} // namespace
+const char* usage = "usage: clash4d_fcl_bench [--seed N] [--min-seconds S] [--dump-scenes DIR]\n";
 
-int main(int argc, char** argv)
+int run_bench(int argc, char** argv)
 {
   unsigned long seed = 1990;
   double min_seconds = 0.05;
+  std::string dump_dir;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
-    if (a == "--seed" && i + 1 < argc) seed = std::stoul(argv[++i]);
-    else if (a == "--min-seconds" && i + 1 < argc) min_seconds = std::stod(argv[++i]);
+    if (a == "--help" || a == "-h") {
+      std::printf("%s  times check per query, exact (filtered) and double, beside FCL's continuous collision,\n"
+                  "  on box-box and hull-hull pairs (touching, separated, penetrating)\n", usage);
+      return 0;
+    }
+    // A number option's whole value, or an error naming the option.
+    auto value = [&](auto parse) {
+      std::string text = argv[++i];
+      std::size_t used = 0;
+      try {
+        auto v = parse(text, &used);
+        if (used == text.size()) return v;
+      } catch (const std::logic_error&) {   // std::invalid_argument, std::out_of_range
+      }
+      throw std::invalid_argument(a + " " + text + ": not a number in range");
+    };
+    if (a == "--seed" && i + 1 < argc) seed = value([](const std::string& t, std::size_t* n) { return std::stoul(t, n); });
+    else if (a == "--min-seconds" && i + 1 < argc)
+      min_seconds = value([](const std::string& t, std::size_t* n) { return std::stod(t, n); });
+    else if (a == "--dump-scenes" && i + 1 < argc) dump_dir = argv[++i];
     else {
-      std::fprintf(stderr, "usage: clash4d_fcl_bench [--seed N] [--min-seconds S]\n");
+      std::fprintf(stderr, "clash4d_fcl_bench: unknown option or missing value: %s\n%s", a.c_str(), usage);
       return 2;
     }
   }
+  if (!(min_seconds > 0)) throw std::invalid_argument("--min-seconds must be positive");
+  if (!dump_dir.empty() && !std::filesystem::is_directory(dump_dir))
+    throw std::invalid_argument("--dump-scenes " + dump_dir + ": not a directory");
   std::printf("clash4d_fcl_bench: seed %lu (hulls), at least %g s per measurement\n", seed, min_seconds);
   std::printf("%-22s %9s %9s %9s %12s %9s %10s   %-7s %-7s %-7s\n", "case", "exact us", "double us", "fcl us",
               "fcl+build us", "exact/fcl", "double/fcl", "exact", "double", "fcl");
   std::mt19937_64 rng(seed);
   std::vector<Case> cases = box_cases();
   for (Case& c : hull_cases(rng)) cases.push_back(std::move(c));
-  for (const Case& c : cases) row(c, min_seconds);
+  for (const Case& c : cases) {
+    if (!dump_dir.empty()) {
+      std::string file = c.name;
+      std::replace(file.begin(), file.end(), ' ', '-');
+      write_file_atomically(dump_dir + "/" + file + ".json", c.json + "\n");
+    }
+    row(c, min_seconds);
+  }
+  return 0;
+}
+
+} // namespace
+
+// Bad options end with a message and exit 2.
+int main(int argc, char** argv)
+{
+  try {
+    return run_bench(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "clash4d_fcl_bench: %s\n", e.what());
+    return 2;
+  }
 }
