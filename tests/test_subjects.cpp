@@ -16,9 +16,11 @@
 
 #include <nlohmann/json.hpp>
 #include <dirent.h>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 #include <unistd.h>
 
 using namespace clash4d;
@@ -76,7 +78,7 @@ json compare_json(const std::vector<std::string>& files, const std::string& subj
 
 // Processes still running our marker command (the hanging subject's sleep),
 // and our children that were not reaped.
-std::size_t leftovers()
+std::size_t leftovers_now()
 {
   std::size_t n = 0;
   std::string me = std::to_string(::getpid());
@@ -91,6 +93,21 @@ std::size_t leftovers()
     std::string state, ppid;
     fields >> state >> ppid;
     if (c.find(std::string("sleep") + '\0' + "937") != std::string::npos || ppid == me) ++n;
+  }
+  return n;
+}
+
+// The leftovers once the kills have landed. kill(2) returns before its target
+// exits, and the hanging subject's sleep is a grandchild we cannot wait for:
+// on a loaded machine it can still be listed for a moment after its group was
+// killed. A process that is really left running is still there after 10 s.
+std::size_t leftovers()
+{
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  std::size_t n = leftovers_now();
+  while (n != 0 && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    n = leftovers_now();
   }
   return n;
 }
