@@ -15,12 +15,13 @@
 // from its enclosures. Otherwise the pair is run again on EK: an
 // any-witness search goes straight to the point AK found, along AK's trail
 // (exact/Trail_replay.h), and falls back to the whole search when EK's path
-// differs. Earliest mode, regularised: the interval run decides in
+// differs. Earliest mode, in both semantics: the interval run decides in
 // rationals the lines that improve the goal or tie with its t*
-// (exact/Interval_filter.h), so its path is the rational run's, and a
-// rational run replays its last improvement (Earliest_replay) for t*, the
-// contact point and the witness; closed, or where that fails, earliest
-// mode runs the whole search in rationals.
+// (exact/Interval_filter.h), so its path is the rational run's; t*, the
+// contact point and the witness are its own where they come out as points,
+// and otherwise a rational run replays its last improvement
+// (Earliest_replay) to make them; where that fails, earliest mode runs the
+// whole search in rationals.
 //
 // EK's model is built object by object, only for objects that need it.
 #ifndef CLASH4D_EXACT_FILTERED_RUNNER_H
@@ -132,7 +133,7 @@ private:
         Protector protect;
         AFT aceiling = ceiling ? ak_.from_rational(ek_.to_rational(*ceiling)) : AFT(0);
         Interval_filter<Filtered_runner> policy(*this, trail, astats, !options.earliest, closed);
-        if (options.earliest && !closed) policy.resolve_earliest(ceiling);
+        if (options.earliest) policy.resolve_earliest(ceiling);
         Collision_checker<AK, Interval_filter<Filtered_runner>> checker(ak_, amodel_, asettled_, astats, use_sbounds_,
                                                                         &policy);
         Pair_result<AFT> found =
@@ -231,6 +232,18 @@ private:
         if (!copy(found.witness_cells[i], r.witness_cells[i])) return std::nullopt;
       r.contact_cells = r.witness_cells;
       r.contact = r.witness;
+    }
+    // Earliest: t*, the contact point and its generic points (closed: the
+    // first touch, kept above), each kept only as a point interval, the
+    // rational run's number (the goal encloses that run's,
+    // exact/Interval_filter.h).
+    if (found.earliest) {
+      std::optional<Rational> t = ak_.exact_value(found.t_star);
+      if (!t || !copy(found.contact, r.contact)) return std::nullopt;
+      for (int i = 0; i < 2; ++i)
+        if (!copy(found.contact_cells[i], r.contact_cells[i])) return std::nullopt;
+      r.t_star = ek_.from_rational(*t);
+      r.earliest = true;
     }
     return r;
   }

@@ -18,7 +18,8 @@
 // inside was found (exact/Search_trail.h), so a rational run can go
 // straight there (exact/Trail_replay.h).
 //
-// Earliest mode, regularised (resolve_earliest): t* is any rational, which
+// Earliest mode, in both semantics (resolve_earliest; closed: t* is the
+// first touch): t* is any rational, which
 // intervals only enclose, and the vertex at t* ends several edges, whose
 // times tie with it. So a line with a sign the intervals cannot certify is
 // examined again in rationals, on the same layout
@@ -59,8 +60,8 @@ public:
     : runner_(&runner), exact_(std::make_unique<Exact_span<Runner>>(runner, closed)), trail_(&trail), stats_(&stats),
       record_(record), closed_(closed) {}
 
-  // Earliest mode, regularised: lines decided against the exact t* (see
-  // above); ceiling: the runner's, in rationals.
+  // Earliest mode: lines decided against the exact t* (see above);
+  // ceiling: the runner's, in rationals.
   void resolve_earliest(const EFT* ceiling)
   {
     earliest_ = true;
@@ -105,7 +106,17 @@ public:
   // closed witness (a touching point, any rational) is made too: the runner
   // keeps it only when every coordinate is a point interval, that is the
   // rational run's number (Filtered_runner::exact_copy).
-  bool witness_certified() const { return record_ && !trail_->approximate && !found_in_rationals_; }
+  // Earliest mode: the goal then encloses the rational run's
+  // t*, contact point and point inside (see above), unless its last
+  // improvement was a line examined in rationals on keys (planes scaled to
+  // lowest terms give other generic points), so the witness and contact
+  // cells made from it are the rational run's where they come out as
+  // points (the runner keeps them only then).
+  bool witness_certified() const
+  {
+    bool earliest_here = earliest_ && !pending_ && !improved_on_keys_;
+    return (record_ || earliest_here) && !trail_->approximate && !found_in_rationals_;
+  }
   template <class F>
   void attempt(F make)
   {
@@ -120,12 +131,15 @@ public:
   void uncertain_simplification() { trail_->approximate = true; }
   bool takes_child(std::size_t, int) const { return true; }
   bool decides_here(std::size_t, bool) const { return true; }
-  void found_at(const std::vector<int>& path, bool on_line)
+  template <class FT>
+  void found_at(const std::vector<int>& path, bool on_line, const Box<FT, 4>& region, const Pair_formula& f)
   {
     if (earliest_) {
       // A fold reached in earliest mode improves the goal (its lower time
       // passed the same comparison on entry); a conquer may not have.
       if (on_line && !pending_) return;
+      if (!on_line) improved_on_keys_ = false;   // a fold: its region's centre and lower face
+      keep_region(region, f);
       trail_->path = path;
       trail_->on_line = on_line;
       trail_->line = pending_line_;
@@ -136,11 +150,14 @@ public:
       return;
     }
     if (!record_ || trail_->complete) return;
+    keep_region(region, f);
     trail_->path = path;
     trail_->on_line = on_line;
     trail_->complete = true;
   }
 
+  template <class FT>
+  bool jumps_to(Box<FT, 4>&, Pair_formula&, bool&, std::vector<int>&) const { return false; }
   const std::array<std::size_t, 3>* replay_line() const { return nullptr; }
   void replayed(bool) {}
 
@@ -230,6 +247,7 @@ private:
   std::optional<EFT> t_star_;                                   // the goal's t*, exact, once found
   bool fold_unsynced_ = false;                                  // a fold recorded a t* not yet in t_star_
   bool pending_ = false;                                        // a line improved; its conquer's path follows
+  bool improved_on_keys_ = false;                               // the last improvement: a line in rationals
   std::array<std::size_t, 3> pending_line_{};
   // The line that last improved the goal in intervals, while t_star_ lags.
   struct Stale {
@@ -264,6 +282,7 @@ private:
     ++stats_->exact_lines;
     Search_goal<EFT> e;
     e.earliest = true;
+    e.semantics = closed_ ? Semantics::closed : Semantics::regularised;
     if (ceiling_) {
       e.has_ceiling = true;
       e.ceiling = *ceiling_;
@@ -303,6 +322,7 @@ private:
       if (goal.found == saved.found && (!goal.found || same(goal.t_star, saved.t_star))) return;
       // Improved, every decision certified: the exact t* is made when needed.
       stale_ = Stale{span_, frame_, g.layout(), g.region(), f, {i, j, m}};
+      improved_on_keys_ = false;
       pending_ = true;
       pending_line_ = {i, j, m};
       if (std::optional<Rational> t = runner_->ak_.exact_value(goal.t_star)) {
@@ -342,15 +362,33 @@ private:
     lines_->earliest(f, i, j, m, e);
     if (!e.improved) return;
     t_star_ = e.t_star;
+    improved_on_keys_ = true;
     auto enclose = [&](const EFT& x) { return runner_->ak_.from_rational(runner_->ek_.to_rational(x)); };
     goal.found = goal.improved = true;
+    goal.vertex_known = false;   // the rational conquer's record, not this one's
     goal.t_star = enclose(e.t_star);
     for (int q = 0; q < 4; ++q) {
       goal.contact[q] = enclose(e.contact[q]);
       goal.inside[q] = enclose(e.inside[q]);
+      goal.toward_a[q] = enclose(e.toward_a[q]);
+      goal.toward_b[q] = enclose(e.toward_b[q]);
     }
     pending_ = true;
     pending_line_ = {i, j, m};
+  }
+  // The deciding region, for the replay to go to directly, when its faces
+  // are points (the rational run's region).
+  void keep_region(const Box<AFT, 4>& region, const Pair_formula& f)
+  {
+    trail_->region_known = false;
+    for (int q = 0; q < 4; ++q) {
+      std::optional<Rational> lo = runner_->ak_.exact_value(region.lo[q]), hi = runner_->ak_.exact_value(region.hi[q]);
+      if (!lo || !hi) return;
+      trail_->region[2 * q] = *lo;
+      trail_->region[2 * q + 1] = *hi;
+    }
+    trail_->formula = f;
+    trail_->region_known = true;
   }
   void make_keys()
   {

@@ -18,6 +18,8 @@
 #ifndef CLASH4D_EXACT_SEARCH_TRAIL_H
 #define CLASH4D_EXACT_SEARCH_TRAIL_H
 
+#include "model/Pair_formula.h"
+#include "numbers/Rational.h"
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -38,6 +40,13 @@ struct Search_trail {
   std::array<std::size_t, 3> line{};    // the line's three planes, in generate-and-test's order
   bool line_known = true;               // false: found on a line decided in rationals over a widened
                                         // region (Filtered_runner::Exact_span::lines): replay the region
+  // The region at the end of the path, when its faces are exact (point
+  // intervals: the rational run's region), with the formula simplified
+  // there (the rational run's: every simplification on the way was
+  // certified): the replay goes there directly (Divide_and_conquer::jumped).
+  bool region_known = false;
+  std::array<Rational, 8> region;       // lo and hi per axis, x y z t
+  Pair_formula formula;
 
   bool recording() const { return mode == Mode::Record; }
   bool replaying() const { return mode == Mode::Replay; }

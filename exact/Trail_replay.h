@@ -12,6 +12,7 @@
 #include "exact/Exact_stage.h"
 #include "exact/Search_trail.h"
 #include "search/No_filter.h"
+#include <type_traits>
 
 namespace clash4d {
 
@@ -56,6 +57,19 @@ public:
     if (depth == trail_->path.size() && trail_->on_line == conquers) return true;
     trail_->diverged = true;
     return false;
+  }
+
+  // The region at the trail's end, when the interval run knew it exactly:
+  // the rational run's own, with its own simplified formula.
+  bool jumps_to(Box<FT, 4>& region, Pair_formula& f, bool& on_line, std::vector<int>& path) const
+  {
+    static_assert(std::is_same_v<FT, Rational>, "a trail's region is in rationals");
+    if (!trail_->region_known) return false;
+    for (int q = 0; q < 4; ++q) region.set(q, trail_->region[2 * q], trail_->region[2 * q + 1]);
+    f = trail_->formula;
+    on_line = trail_->on_line;
+    path = trail_->path;
+    return true;
   }
 
   // Every line before the trail's was certified to hold no point inside.

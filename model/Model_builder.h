@@ -17,6 +17,10 @@ struct Affine3 {
   std::array<Vector3<FT>, 3> R;   // rows
   Vector3<FT> b;
   bool is_identity = false;       // no transform above: the primitive is used as read
+  // R = I (translations only, the common case): products with R are skipped.
+  // They would give the same numbers in every kernel (products with 0 and 1
+  // are exact); in rationals they cost a normalised product each.
+  bool linear_identity = false;
 
   static Affine3 identity()
   {
@@ -24,10 +28,14 @@ struct Affine3 {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) a.R[i][j] = FT(i == j ? 1 : 0);
     a.b = {FT(0), FT(0), FT(0)};
-    a.is_identity = true;
+    a.is_identity = a.linear_identity = true;
     return a;
   }
-  Vector3<FT> linear(const Vector3<FT>& v) const { return {dot(R[0], v), dot(R[1], v), dot(R[2], v)}; }
+  Vector3<FT> linear(const Vector3<FT>& v) const
+  {
+    if (linear_identity) return v;
+    return {dot(R[0], v), dot(R[1], v), dot(R[2], v)};
+  }
   Vector3<FT> apply(const Vector3<FT>& v) const
   {
     Vector3<FT> r = linear(v);
@@ -40,12 +48,17 @@ struct Affine3 {
     Vector3<FT> n = linear({p[0], p[1], p[2]});
     return {n[0], n[1], n[2], p[3] - dot(n, b)};
   }
-  // this o (x -> M x + t)
-  Affine3 then_local(const std::array<Vector3<FT>, 3>& M, const Vector3<FT>& t) const
+  // this o (x -> M x + t); M_identity: M = I (a translation).
+  Affine3 then_local(const std::array<Vector3<FT>, 3>& M, const Vector3<FT>& t, bool M_identity = false) const
   {
     Affine3 r;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) r.R[i][j] = R[i][0] * M[0][j] + R[i][1] * M[1][j] + R[i][2] * M[2][j];
+    if (M_identity || linear_identity) {
+      r.R = M_identity ? R : M;
+      r.linear_identity = M_identity && linear_identity;
+    } else {
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) r.R[i][j] = R[i][0] * M[0][j] + R[i][1] * M[1][j] + R[i][2] * M[2][j];
+    }
     r.b = apply(t);
     return r;
   }
@@ -103,7 +116,7 @@ private:
     using K_ = Solid::Kind;
     if (s.kind == K_::Translate) {
       std::array<Vector3<FT>, 3> I = Affine3<FT>::identity().R;
-      return add(s.children[0], T.then_local(I, vec3(s, 0)), parent);
+      return add(s.children[0], T.then_local(I, vec3(s, 0), true), parent);
     }
     if (s.kind == K_::Rotate) {
       auto M = rotation_matrix(num(s, 0), num(s, 1), num(s, 2), num(s, 3));

@@ -52,8 +52,9 @@ struct Check_stats {
   // exact_region_stages: sub-spans whose S-bounds and region the intervals
   // could not certify (bounds that meet exactly: a contact), made in
   // rationals and adopted by the interval run, which goes on;
-  // witnesses_by_intervals: colliding pairs whose witness the interval run
-  // made itself, on a path certified to be the rational run's (no rerun);
+  // witnesses_by_intervals: colliding pairs whose witness (earliest mode:
+  // and t* and the contact point) the interval run made itself, as points,
+  // on a path certified to be the rational run's (no rerun);
   // earliest_by_intervals: earliest-mode colliding pairs whose search the
   // interval run made (ties with t* decided in rationals), the rational run
   // only replaying its last improvement (of exact_witness_runs).

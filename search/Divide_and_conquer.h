@@ -44,31 +44,20 @@ public:
   {
     if (!goal.can_improve(k_, region.lo[3])) return;
     Work_budget::check();
+    if (depth == 0 && jumped(goal)) return;
     stats_.visit(depth);
     bool strict = goal.closed();
     Pair_formula f = formula.simplified([&](std::uint32_t h) { return leaf_status(h, region, strict); });
     if (f.value() == Truth::False) return;
     if (f.value() == Truth::True) {
       if (!policy_.decides_here(depth, false)) return;
-      // Every interior point is inside (closed: every point of the closed
-      // region, strict signs); the earliest is on the face t = lo.
-      Vector4<FT> c = centre(region), low = c;
-      low[3] = region.lo[3];
-      Vector4<FT> none{FT(0), FT(0), FT(0), FT(0)};
-      if (strict) goal.record_touch(k_, low, none, none);
-      else goal.record(k_, c, low);
-      policy_.found_at(path_, false);
+      fold(region, f, goal);
       return;
     }
     std::size_t leaves = f.leaf_count();
     if (leaves < kappa(depth) || depth >= max_depth) {
       if (!policy_.decides_here(depth, true)) return;
-      ++stats_.conquers;
-      conquered_ = join(conquered_, region);
-      stats_.leaves_at_conquer += leaves;
-      stats_.max_leaves_at_conquer = std::max(stats_.max_leaves_at_conquer, leaves);
-      conquer_.run(f, region, goal);
-      if (goal.found) policy_.found_at(path_, true);
+      conquer(region, f, goal);
       return;
     }
     // Sixteen sub-regions, earliest in time first.
@@ -78,6 +67,42 @@ public:
       search(sub_region(region, child), f, goal, depth + 1);
       path_.pop_back();
     }
+  }
+
+  // Every interior point is inside (closed: every point of the closed
+  // region, strict signs); the earliest is on the face t = lo.
+  void fold(const Box4& region, const Pair_formula& f, Search_goal<FT>& goal)
+  {
+    Vector4<FT> c = centre(region), low = c;
+    low[3] = region.lo[3];
+    Vector4<FT> none{FT(0), FT(0), FT(0), FT(0)};
+    if (goal.closed()) goal.record_touch(k_, low, none, none);
+    else goal.record(k_, c, low);
+    policy_.found_at(path_, false, region, f);
+  }
+
+  void conquer(const Box4& region, const Pair_formula& f, Search_goal<FT>& goal)
+  {
+    std::size_t leaves = f.leaf_count();
+    ++stats_.conquers;
+    conquered_ = join(conquered_, region);
+    stats_.leaves_at_conquer += leaves;
+    stats_.max_leaves_at_conquer = std::max(stats_.max_leaves_at_conquer, leaves);
+    conquer_.run(f, region, goal);
+    if (goal.found) policy_.found_at(path_, true, region, f);
+  }
+
+  // A replay that knows the region deciding and its formula goes there
+  // directly (exact/Trail_replay.h), instead of simplifying down the path.
+  bool jumped(Search_goal<FT>& goal)
+  {
+    Box4 at;
+    Pair_formula f;
+    bool on_line = false;
+    if (!policy_.jumps_to(at, f, on_line, path_)) return false;
+    if (on_line) conquer(at, f, goal);
+    else fold(at, f, goal);
+    return true;
   }
 
   // Skeleton mode (§5): the full search, never stopping. Simplification is

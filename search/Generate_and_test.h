@@ -63,6 +63,7 @@ public:
   void run(const Pair_formula& f, const Box<FT, 4>& region, Search_goal<FT>& goal)
   {
     collect_planes(f, region);
+    goal.vertex_known = false;   // another conquer's layout
     std::size_t n = planes_.size();
     if (const std::array<std::size_t, 3>* t = policy_.replay_line()) {
       if ((*t)[2] < n) test_line(f, (*t)[0], (*t)[1], (*t)[2], goal);
@@ -399,6 +400,9 @@ private:
     V base = base_point(planes_[i], planes_[j], planes_[m], l);
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return;
+    // The segment's earliest end at the recorded contact point: a tie with
+    // t*, which cannot improve (Search_goal::vertex).
+    if (goal.vertex_known && at_contact(goal, i, j, m, end_plane(k_.sign(l[3]) != CGAL::NEGATIVE))) return;
     if (!goal.can_improve(k_, Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
     evaluate_planes(base, l, layout_.first_face);
     std::vector<Cut>& cuts = cuts_;         // reused: a line's cuts, no allocation per line
@@ -438,15 +442,82 @@ private:
     // skipped.
     std::sort(cuts.begin(), cuts.end(),
               [&](const Cut& a, const Cut& b) { return compare_cuts(a.s, a.plane, b.s, b.plane) == CGAL::NEGATIVE; });
+    bool up = k_.sign(l[3]) != CGAL::NEGATIVE;   // time grows along the line
     for (std::size_t q = 0; q + 1 < cuts.size() && !goal.done(); ++q) {
       if (compare_cuts(cuts[q + 1].s, cuts[q + 1].plane, cuts[q].s, cuts[q].plane) == CGAL::ZERO) continue;
       // The edge's earlier end (time is linear along it).
-      const FT& s_early = k_.sign(l[3]) == CGAL::NEGATIVE ? cuts[q + 1].s : cuts[q].s;
-      V early = point_along(base, s_early, l);
+      const Cut& end = up ? cuts[q] : cuts[q + 1];
+      // The plane cutting there (a face at a segment's end: asked only at
+      // a possible tie and at a record, earliest mode).
+      bool segment_end = up ? q == 0 : q + 2 == cuts.size();
+      auto by = [&] { return end.plane == npos && segment_end ? end_plane(up) : end.plane; };
+      if (goal.vertex_known && at_contact(goal, i, j, m, by())) continue;
+      V early = point_along(base, end.s, l);
       if (!goal.can_improve(k_, early[3])) continue;
       FT mid = (cuts[q].s + cuts[q + 1].s) / FT(2);
-      if (auto in = classify(f, base, l, mid)) goal.record(k_, *in, early);
+      if (auto in = classify(f, base, l, mid))
+        if (goal.record(k_, *in, early) && goal.earliest) remember_contact(goal, i, j, m, by());
     }
+  }
+
+  // The face at the segment's lower (lo) or upper end, when one face's cut
+  // is certainly beyond every other's there (range_in_region records it
+  // only on keyed lines); npos otherwise. Asked only at ties and records.
+  std::size_t end_plane(bool lo) const
+  {
+    std::size_t best = lo ? lo_plane_ : hi_plane_;
+    if (best != npos) return best;
+    auto cut_of = [&](std::size_t p, CGAL::Sign sa) { return k_.quotient(-at_base_[p], along_[p], sa); };
+    // The faces bounding this end: cuts of faces with e < 0 bound it below
+    // (the greatest is the end), e > 0 above (the least), as in
+    // range_in_region.
+    std::optional<FT> top;
+    for (int pass = 0; pass < 2; ++pass)
+      for (const auto& fp : layout_.face_plane) {
+        std::size_t p = fp.first;
+        CGAL::Sign sa = k_.sign(along_[p]);
+        int e = sa * fp.second;
+        if (e == 0 || (e < 0) != lo || p == best) continue;
+        FT cut = cut_of(p, sa);
+        if (!top) {
+          best = p;
+          top = cut;
+          continue;
+        }
+        FT d = lo ? cut - *top : *top - cut;   // > 0: beyond the best
+        if (pass == 0 && !k_.possibly_nonnegative(-d)) {
+          best = p;
+          top = cut;
+        } else if (pass == 1 && k_.possibly_nonnegative(d)) {
+          return npos;   // not certainly short of the best
+        }
+      }
+    return best;
+  }
+
+  // Whether the point where plane p cuts line i, j, m is the goal's
+  // recorded contact point (earliest mode, this conquer): its time is t*.
+  static bool at_contact(const Search_goal<FT>& goal, std::size_t i, std::size_t j, std::size_t m, std::size_t p)
+  {
+    return goal.earliest && goal.vertex_known && p != npos && vertex_of(i, j, m, p) == goal.vertex;
+  }
+
+  // The contact point just recorded is where plane p cuts line i, j, m.
+  static void remember_contact(Search_goal<FT>& goal, std::size_t i, std::size_t j, std::size_t m, std::size_t p)
+  {
+    if (p == npos) return;
+    goal.vertex = vertex_of(i, j, m, p);
+    goal.vertex_known = true;
+  }
+
+  // The line's three planes and the plane cutting it, sorted: the four
+  // planes (independent: the line is a point's, and p cuts it) meeting at
+  // one point, the same point for every line of three of them.
+  static std::array<std::size_t, 4> vertex_of(std::size_t i, std::size_t j, std::size_t m, std::size_t p)
+  {
+    std::array<std::size_t, 4> v{i, j, m, p};
+    std::sort(v.begin(), v.end());
+    return v;
   }
 
   // Closed semantics: the touching set of A and B within the closed region
@@ -464,6 +535,8 @@ private:
     V base = base_point(planes_[i], planes_[j], planes_[m], l);
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return;
+    // A tie with t* (Search_goal::vertex).
+    if (goal.vertex_known && at_contact(goal, i, j, m, end_plane(k_.sign(l[3]) != CGAL::NEGATIVE))) return;
     if (!goal.can_improve(k_, Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
     evaluate_planes(base, l, layout_.first_face);
     collect_points(s_lo, s_hi);
@@ -473,11 +546,15 @@ private:
     if (f.a().evaluate(truth) == Truth::False || f.b().evaluate(truth) == Truth::False) return;
     group_points();
     for (std::size_t g = 0; g < groups_at_.size() && !goal.done(); ++g) {
-      const FT& s = points_[groups_at_[g]].s;
-      if (!goal.can_improve(k_, base[3] + s * l[3])) continue;
+      const Point_on_line& at = points_[groups_at_[g]];
+      auto by = [&] { return at.by == npos && at.plane < 0 ? end_plane(g == 0) : at.by; };
+      if (goal.vertex_known && at_contact(goal, i, j, m, by())) continue;
+      if (!goal.can_improve(k_, base[3] + at.s * l[3])) continue;
       for (std::size_t p = 0; p < layout_.first_face; ++p)
         if (group_of_[p] >= 0) sign_[p] = cut_sign_[p] * (g > std::size_t(group_of_[p]) ? 1 : g < std::size_t(group_of_[p]) ? -1 : 0);
-      test_touch(f, point_along(base, s, l), goal);
+      std::size_t before = goal.records;
+      test_touch(f, point_along(base, at.s, l), goal);
+      if (goal.earliest && goal.records != before) remember_contact(goal, i, j, m, by());
     }
   }
 

@@ -33,8 +33,14 @@
 //     bool takes_child(depth, child)   whether to search this sub-region
 //     bool decides_here(depth, conquers)  a region decides (folds to inside,
 //                                      or is conquered): whether to go on
-//     void found_at(path, on_line)     the first point inside was found in
-//                                      the region at this division path
+//     template <class FT> void found_at(path, on_line, region, formula)
+//                                      the first point inside was found in
+//                                      the region at this division path,
+//                                      with the formula simplified there
+//     template <class FT> bool jumps_to(region, formula, on_line, path)
+//                                      the region that decides is known
+//                                      (with its formula, whether it
+//                                      conquers, its path): go there directly
 //   Generate_and_test:
 //     const std::array<std::size_t, 3>* replay_line()  go straight to it
 //     void replayed(found)             what going straight there gave
@@ -94,7 +100,10 @@ struct No_filter {
   void uncertain_simplification() {}
   bool takes_child(std::size_t, int) const { return true; }
   bool decides_here(std::size_t, bool) const { return true; }
-  void found_at(const std::vector<int>&, bool) {}
+  template <class FT>
+  void found_at(const std::vector<int>&, bool, const Box<FT, 4>&, const Pair_formula&) {}
+  template <class FT>
+  bool jumps_to(Box<FT, 4>&, Pair_formula&, bool&, std::vector<int>&) const { return false; }
 
   const std::array<std::size_t, 3>* replay_line() const { return nullptr; }
   void replayed(bool) {}

@@ -7,6 +7,8 @@
 
 #include "geometry/kernel_ft4.h"
 #include "search/Semantics.h"
+#include <array>
+#include <cstddef>
 
 namespace clash4d {
 
@@ -29,6 +31,15 @@ struct Search_goal {
   // arrangement), and the point there.
   FT t_star{};
   Vector4<FT> contact{};
+  // Earliest mode: the four planes (the current conquer's layout) that meet
+  // at the contact point, when a line of this conquer recorded it
+  // (Generate_and_test). An edge of the conquer ending where the same four
+  // planes meet ends at that very point, whose time is t* exactly: it
+  // cannot improve, and no comparison is asked (a tie, which intervals
+  // could not certify). Cleared by every other record.
+  std::array<std::size_t, 4> vertex{};
+  bool vertex_known = false;
+  std::size_t records = 0;      // improvements so far (a caller sees whether it made one)
 
   // Earliest mode across pairs: a pair whose collision cannot start before
   // the best time of the pairs already examined need not be searched.
@@ -49,14 +60,18 @@ struct Search_goal {
 
   bool closed() const { return semantics == Semantics::closed; }
 
+  // Whether it improved.
   template <class K>
-  void record(const K& k, const Vector4<FT>& in, const Vector4<FT>& lowest)
+  bool record(const K& k, const Vector4<FT>& in, const Vector4<FT>& lowest)
   {
-    if (found && !k.less(lowest[3], t_star)) return;
+    if (found && !k.less(lowest[3], t_star)) return false;
     found = improved = true;
     inside = in;
     t_star = lowest[3];
     contact = lowest;
+    vertex_known = false;
+    ++records;
+    return true;
   }
 
   // Closed semantics: the point p is in both closed objects; a and b lead
@@ -69,6 +84,8 @@ struct Search_goal {
     found = improved = true;
     inside = contact = p;
     t_star = p[3];
+    vertex_known = false;
+    ++records;
     toward_a = a;
     toward_b = b;
   }
