@@ -7,7 +7,7 @@
 #ifndef CLASH4D_CERTIFY_APART_PROVER_H
 #define CLASH4D_CERTIFY_APART_PROVER_H
 
-#include "certify/Term_search.h"
+#include "search/Term_search.h"
 #include "exact/Rational_kernel.h"
 #include "model/Scene_model.h"
 #include <nlohmann/json.hpp>
@@ -36,7 +36,6 @@ private:
   std::uint64_t limit_, steps_ = 0;
   std::size_t conflicts_ = 0;
 
-  nlohmann::ordered_json piece(int a, int b, const Rational& lo, const Rational& hi, bool strict_end);
   const Scene_model<K>& model();
 };
 

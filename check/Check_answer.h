@@ -16,6 +16,10 @@ struct Check_options {
   // false: the paper's "original" bounding (the objects' boxes at the
   // velocity changes, intersected; §4.1) instead of S-bounds. Reproduction only.
   bool sbounds = true;
+  // false: the exact kernel never hands a long search over to a proof by
+  // conflicts (exact/Interval_filter.h, decides_here): generate-and-test
+  // decides every pair, as in the paper (tests of that search).
+  bool apart_proofs = true;
   bool json = false;          // output form (used by the command line only)
   Semantics semantics = Semantics::regularised;
 };

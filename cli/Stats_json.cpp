@@ -77,6 +77,8 @@ json stats_json(const Check_stats& s)
           {"exact_region_stages", s.exact_region_stages},
           {"witnesses_by_intervals", s.witnesses_by_intervals},
           {"earliest_by_intervals", s.earliest_by_intervals},
+          {"apart_proofs", s.apart_proofs},
+          {"apart_attempts", s.apart_attempts},
           {"seconds", {{"model", s.seconds_model}, {"sweep", s.seconds_sweep}, {"sbounds", s.seconds_sbounds},
                        {"divide_and_conquer", s.seconds_divide}, {"witness", s.seconds_witness}}}};
 }

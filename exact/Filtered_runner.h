@@ -30,7 +30,10 @@
 #include "check/Check_runner.h"
 #include "exact/Interval_filter.h"
 #include "exact/Trail_replay.h"
+#include "search/Apart_pieces.h"
 #include <CGAL/Uncertain.h>
+#include <algorithm>
+#include <chrono>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -128,12 +131,14 @@ private:
     Check_stats astats;
     bool earliest_trail = false;
     Exact_stages<EFT> stages;   // region stages the interval run made in rationals, for the replay
+    auto start = std::chrono::steady_clock::now();
     if (!exact_only_[a] && !exact_only_[b]) {
       try {
         Protector protect;
         AFT aceiling = ceiling ? ak_.from_rational(ek_.to_rational(*ceiling)) : AFT(0);
         Interval_filter<Filtered_runner> policy(*this, trail, astats, !options.earliest, closed);
         if (options.earliest) policy.resolve_earliest(ceiling);
+        if (!options.apart_proofs) policy.never_hand_over();
         Collision_checker<AK, Interval_filter<Filtered_runner>> checker(ak_, amodel_, asettled_, astats, use_sbounds_,
                                                                         &policy);
         Pair_result<AFT> found =
@@ -155,6 +160,13 @@ private:
       } catch (const CGAL::Uncertain_conversion_exception&) {
         ++fallbacks_;
         trail.complete = false;
+      } catch (const Proven_apart&) {
+        // The search stopped inside a span: its time, and the proof's, are
+        // the search's.
+        stats = astats;
+        double counted = astats.seconds_sbounds + astats.seconds_divide + astats.seconds_witness;
+        stats.seconds_divide += std::max(0.0, seconds_since(start) - counted);
+        return Pair_result<EFT>();
       }
     }
     need_exact(a);
@@ -170,6 +182,32 @@ private:
     Collision_checker<EK> checker(ek_, emodel_, esettled_, stats, use_sbounds_);
     return checker.check_pair(a, b, options.earliest, ceiling, options.semantics);
   }
+  // A long search handed over (Interval_filter::decides_here):
+  // whether conflicts close off every term of the pair's formula on the
+  // scene's whole span, exact LPs on EK's model (search/Apart_pieces.h):
+  // proven, that is the pair's "no collision", as its certificate proves
+  // it. Not: a term the double simplex's guess does not close off (it may
+  // have a point; asking again would meet it again), or past step_limit.
+  enum class Apart { proven, not_proven, out_of_steps };
+  Apart proves_apart(int a, int b, bool closed, std::uint64_t step_limit)
+  {
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    need_model(a);
+    need_model(b);
+    ++apart_attempts_;
+    try {
+      Apart_pieces<EK>(emodel_, closed ? Semantics::closed : Semantics::regularised, step_limit, Lp_effort::quick)
+          .prove(a, b, ek_.to_rational(emodel_.t_hi), false);
+    } catch (const Term_feasible&) {
+      return Apart::not_proven;
+    } catch (const Term_limit&) {
+      return Apart::out_of_steps;
+    }
+    --apart_attempts_;
+    ++apart_proofs_;
+    return Apart::proven;
+  }
+
   // EK along the interval run's trail (Replay: the witness's or the
   // earliest improvement's); the answer when the trail held, counted.
   template <class Replay>
@@ -199,7 +237,7 @@ private:
   std::vector<typename S_bounds<EK>::Bounds> esettled_;
   std::unique_ptr<std::once_flag[]> built_, settled_;   // EK's model of an object, and its S-bounds
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
-      witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0};
+      witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0};
 
   // A witness AK made and verified on a certified path, in EK's numbers.
   // Regularised, its coordinates are grid points (Witness::snap), exact
@@ -337,6 +375,8 @@ private:
     stats.exact_region_stages = exact_stages_.load();
     stats.witnesses_by_intervals = witnesses_by_intervals_.load();
     stats.earliest_by_intervals = earliest_by_intervals_.load();
+    stats.apart_proofs = apart_proofs_.load();
+    stats.apart_attempts = apart_attempts_.load();
   }
 
   static double seconds_since(std::chrono::steady_clock::time_point t)

@@ -41,9 +41,13 @@
 #include "exact/Exact_span.h"
 #include "exact/Search_trail.h"
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 namespace clash4d {
+
+// The interval run stopped: the runner proved the pair apart.
+struct Proven_apart {};
 
 template <class Runner>
 class Interval_filter {
@@ -130,7 +134,26 @@ public:
   // The leaf was kept: the path may now differ from the rational run's.
   void uncertain_simplification() { trail_->approximate = true; }
   bool takes_child(std::size_t, int) const { return true; }
-  bool decides_here(std::size_t, bool) const { return true; }
+  // A long search is handed over: past apart_after_ lines, the
+  // runner asks whether conflicts close off every term of the pair's
+  // formula (Filtered_runner::proves_apart; one exact LP per conflict, where
+  // generate-and-test examines many lines per conflict). Proven, the run
+  // stops with Proven_apart, the pair's "no collision"; otherwise it goes on
+  // where it was (a pair proven apart on the whole span has no t* either:
+  // earliest mode too, until a point inside is found). Out of steps, it asks again at 16 times the lines with 16
+  // times the steps, so the asking costs a bounded share of the search; a
+  // term left open would be met again, so then it never asks again.
+  void never_hand_over() { apart_after_ = std::numeric_limits<std::size_t>::max(); }
+  bool decides_here(std::size_t, bool conquers)
+  {
+    if (!conquers || found_any_ || stats_->lines < apart_after_) return true;
+    switch (runner_->proves_apart(a_, b_, closed_, apart_steps_)) {
+    case Runner::Apart::proven: throw Proven_apart();
+    case Runner::Apart::out_of_steps: apart_after_ *= 16, apart_steps_ *= 16; break;
+    case Runner::Apart::not_proven: apart_after_ = std::numeric_limits<std::size_t>::max(); break;
+    }
+    return true;
+  }
   template <class FT>
   void found_at(const std::vector<int>& path, bool on_line, const Box<FT, 4>& region, const Pair_formula& f)
   {
@@ -167,9 +190,11 @@ public:
   void test_line(G& g, const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<AFT>& goal)
   {
     bool before = goal.found;
+    found_any_ = found_any_ || before;   // a fold found it (earliest mode goes on)
     if (goal.earliest) {
       if (earliest_) earliest_line(g, f, i, j, m, goal);
       else g.test_line(f, i, j, m, goal);
+      found_any_ = found_any_ || goal.found;
       return;
     }
     try {
@@ -238,6 +263,12 @@ private:
   bool closed_ = false;
   int a_ = -1, b_ = -1;
   std::size_t span_ = 0;
+  // When to ask for an apart proof (decides_here): lines examined so far,
+  // and the proof's step bound. The first: a search of a few hundred lines
+  // costs about as much as a small pair's proof (tens of exact LPs).
+  std::size_t apart_after_ = 512;
+  std::uint64_t apart_steps_ = 32768;
+  bool found_any_ = false;   // a point inside was found: the pair is not apart
   std::array<bool, 3> frame_{};
   std::shared_ptr<typename Exact_span<Runner>::Lines> lines_;   // this conquer's, once one is needed
   std::size_t lines_conquer_ = 0;                               // which conquer they are for

@@ -6,7 +6,7 @@
 #define BOOST_TEST_MODULE certificate
 #include <boost/test/unit_test.hpp>
 
-#include "certify/Motzkin_lp.h"
+#include "search/Motzkin_lp.h"
 #include "compare/Contact_families.h"
 #include "support/Cli_run.h"
 #include "support/Random_scene.h"
@@ -360,7 +360,7 @@ BOOST_AUTO_TEST_CASE(json_output_names_the_certificate)
   BOOST_TEST(json::parse(c.out)["certificate"] == cert);
 }
 
-// ---- The LP behind the conflicts (certify/Motzkin_lp.h), on hand-derived
+// ---- The LP behind the conflicts (search/Motzkin_lp.h), on hand-derived
 // systems: its answers are checked exactly, so it may only ever say less.
 
 namespace {

@@ -1,6 +1,6 @@
-#include "certify/Motzkin_lp.h"
+#include "search/Motzkin_lp.h"
 
-#include "certify/Double_simplex.h"
+#include "search/Double_simplex.h"
 #include <CGAL/Gmpz.h>
 #include <CGAL/Gmpzf.h>
 #include <CGAL/QP_functions.h>
@@ -112,12 +112,18 @@ std::optional<std::vector<Rational>> on_support(const std::vector<Motzkin_row>& 
 
 } // namespace
 
-std::optional<std::vector<Rational>> motzkin_multipliers(const std::vector<Motzkin_row>& rows)
+std::optional<std::vector<Rational>> motzkin_multipliers(const std::vector<Motzkin_row>& rows, Lp_effort effort)
 {
   if (rows.empty()) return std::nullopt;
   // The exact LP over every row costs about a millisecond; the exact LP
   // over the few rows a double simplex picks, tens of microseconds.
-  if (auto support = Double_simplex(rows).support(); support && !support->empty())
+  std::optional<std::vector<int>> support = Double_simplex(rows).support();
+  if (effort == Lp_effort::quick) {   // the guess's basic solution alone: one small exact solve
+    if (!support || support->empty()) return std::nullopt;
+    auto lambda = basic_solution(rows, *support);
+    return lambda && proves_infeasible(rows, *lambda) ? lambda : std::nullopt;
+  }
+  if (support && !support->empty())
     if (auto lambda = on_support(rows, *support)) return lambda;
   Lp lp = dual_program(rows);
   for (int j = 0; j < static_cast<int>(rows.size()); ++j) lp.set_c(j, -integer((*rows[j].h)[4]));   // max sum lambda e

@@ -1,4 +1,4 @@
-#include "certify/Term_search.h"
+#include "search/Term_search.h"
 
 #include "search/Work_budget.h"
 #include <algorithm>
@@ -7,9 +7,9 @@
 namespace clash4d {
 
 Term_search::Term_search(Literal_table& table, std::vector<Term_node> nodes, int root, std::vector<int> slab,
-                         Semantics semantics, bool strict_end, std::uint64_t step_limit)
+                         Semantics semantics, bool strict_end, std::uint64_t step_limit, Lp_effort effort)
     : table_(table), nodes_(std::move(nodes)), root_(root), slab_(std::move(slab)),
-      closed_(semantics == Semantics::closed), strict_end_(strict_end), limit_(step_limit)
+      closed_(semantics == Semantics::closed), strict_end_(strict_end), limit_(step_limit), effort_(effort)
 {
   // Regularised semantics has one term over both objects: one side.
   if (!closed_)
@@ -116,7 +116,7 @@ bool Term_search::learn(std::vector<int> literals, Conflict::Of of, const std::v
 {
   std::vector<Motzkin_row> rows;
   for (std::size_t i = 0; i < literals.size(); ++i) rows.push_back({&table_.form(literals[i]), strict[i]});
-  auto lambda = motzkin_multipliers(rows);
+  auto lambda = motzkin_multipliers(rows, effort_);
   if (!lambda) return false;
   Conflict c;
   c.of = of;
@@ -156,6 +156,7 @@ int Term_search::complete()
     auto [lb, sb] = with_slab(sides[1], true);
     learnt = learn(l, Conflict::Of::Both, s) || learn(la, Conflict::Of::A, sa) || learn(lb, Conflict::Of::B, sb);
   }
+  if (!learnt && effort_ == Lp_effort::quick) throw Term_feasible("a term of the pair's formula was not closed off");
   if (!learnt) throw Term_feasible("a term of the pair's formula has a point: the apart claim does not hold");
   const Conflict& c = conflicts_.back();
   int level = 0;

@@ -1,9 +1,9 @@
 // The literals of one piece of a pair's proof, each once, in the coprime
 // integer form the certificate format matches them by (section 2.2).
-#ifndef CLASH4D_CERTIFY_LITERAL_TABLE_H
-#define CLASH4D_CERTIFY_LITERAL_TABLE_H
+#ifndef CLASH4D_SEARCH_LITERAL_TABLE_H
+#define CLASH4D_SEARCH_LITERAL_TABLE_H
 
-#include "certify/Motzkin_lp.h"
+#include "search/Motzkin_lp.h"
 #include <map>
 #include <vector>
 

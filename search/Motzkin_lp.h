@@ -1,8 +1,8 @@
 // Multipliers that prove a system of half-spaces infeasible, found by one
 // exact linear program (CGAL's QP solver): the conflicts of a certificate
 // (docs/certificate-format.md, section 4).
-#ifndef CLASH4D_CERTIFY_MOTZKIN_LP_H
-#define CLASH4D_CERTIFY_MOTZKIN_LP_H
+#ifndef CLASH4D_SEARCH_MOTZKIN_LP_H
+#define CLASH4D_SEARCH_MOTZKIN_LP_H
 
 #include "numbers/Rational.h"
 #include <array>
@@ -27,7 +27,17 @@ struct Motzkin_row {
 // one: at most five non-zero); a second LP asks for a strict row's weight
 // when the first optimum is 0. Returns lambda (one per row, zeros included),
 // checked exactly, or nothing when the system is feasible.
-std::optional<std::vector<Rational>> motzkin_multipliers(const std::vector<Motzkin_row>& rows);
+// complete: where the double simplex's guess at the support proves
+// nothing, the exact LP over every row (about a millisecond) decides, so
+// nothing returned means feasible; quick: only the basic solution on the
+// guessed support is tried (one small exact solve), and nothing returned
+// means only "not found", for a caller that can decide another way (a
+// search handing a long run over, exact/Interval_filter.h). Multipliers
+// returned are checked exactly either way.
+enum class Lp_effort { complete, quick };
+
+std::optional<std::vector<Rational>> motzkin_multipliers(const std::vector<Motzkin_row>& rows,
+                                                        Lp_effort effort = Lp_effort::complete);
 
 // Whether lambda proves rows infeasible, by the rule above (exact).
 bool proves_infeasible(const std::vector<Motzkin_row>& rows, const std::vector<Rational>& lambda);

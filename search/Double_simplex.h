@@ -1,9 +1,9 @@
-// The dual LP of certify/Motzkin_lp.h in doubles, for a guess at which few
+// The dual LP of search/Motzkin_lp.h in doubles, for a guess at which few
 // rows carry the multipliers.
-#ifndef CLASH4D_CERTIFY_DOUBLE_SIMPLEX_H
-#define CLASH4D_CERTIFY_DOUBLE_SIMPLEX_H
+#ifndef CLASH4D_SEARCH_DOUBLE_SIMPLEX_H
+#define CLASH4D_SEARCH_DOUBLE_SIMPLEX_H
 
-#include "certify/Motzkin_lp.h"
+#include "search/Motzkin_lp.h"
 #include <algorithm>
 #include <cmath>
 #include <optional>

@@ -1,14 +1,14 @@
 // Learns the conflicts that close off every DNF term of a pair's formula on
 // one piece of time: a depth-first walk of the terms that stops a branch as
 // soon as its literals hold a known conflict, asks one exact LP for a new
-// conflict at each term still open (certify/Motzkin_lp.h), and jumps back to
+// conflict at each term still open (search/Motzkin_lp.h), and jumps back to
 // where that conflict was complete. The rules are the checker's
 // (docs/certificate-format.md, section 4), so a term this closes off is
 // closed off there.
-#ifndef CLASH4D_CERTIFY_TERM_SEARCH_H
-#define CLASH4D_CERTIFY_TERM_SEARCH_H
+#ifndef CLASH4D_SEARCH_TERM_SEARCH_H
+#define CLASH4D_SEARCH_TERM_SEARCH_H
 
-#include "certify/Literal_table.h"
+#include "search/Literal_table.h"
 #include "search/Semantics.h"
 #include <cstdint>
 #include <stdexcept>
@@ -48,8 +48,12 @@ public:
   // root: nodes[root] is A AND B. slab: the piece's literals lo - t and
   // t - hi; strict_end: t - hi is strict in closed semantics (the end of an
   // earliest proof).
+  // effort: Lp_effort::quick, a term the double simplex's guess does not
+  // close off stops the search with Term_feasible too (not proven; only
+  // complete says the term has a point).
   Term_search(Literal_table& table, std::vector<Term_node> nodes, int root, std::vector<int> slab,
-              Semantics semantics, bool strict_end, std::uint64_t step_limit);
+              Semantics semantics, bool strict_end, std::uint64_t step_limit,
+              Lp_effort effort = Lp_effort::complete);
 
   std::vector<Conflict> run();
   std::uint64_t steps() const { return steps_; }
@@ -61,6 +65,7 @@ private:
   std::vector<int> slab_;
   bool closed_, strict_end_;
   std::uint64_t limit_, steps_ = 0;
+  Lp_effort effort_;
   std::vector<Conflict> conflicts_;
   std::vector<std::vector<int>> with_;      // per literal: conflicts holding it
   std::vector<int> count_[2];               // per side and literal: times in the term
