@@ -79,6 +79,7 @@ json stats_json(const Check_stats& s)
           {"earliest_by_intervals", s.earliest_by_intervals},
           {"apart_proofs", s.apart_proofs},
           {"apart_attempts", s.apart_attempts},
+          {"replay_stages_adopted", s.replay_stages_adopted},
           {"seconds", {{"model", s.seconds_model}, {"sweep", s.seconds_sweep}, {"sbounds", s.seconds_sbounds},
                        {"divide_and_conquer", s.seconds_divide}, {"witness", s.seconds_witness}}}};
 }

@@ -221,6 +221,7 @@ private:
     Pair_result<EFT> r = checker.check_pair(a, b, earliest, nullptr, semantics);
     if (!r.collide || trail.diverged) return std::nullopt;
     ++count;
+    stages_adopted_ += replay.adopted();
     stats = astats;                     // the search, as the interval run did it
     stats.seconds_witness += rstats.seconds_witness;
     return r;
@@ -237,7 +238,8 @@ private:
   std::vector<typename S_bounds<EK>::Bounds> esettled_;
   std::unique_ptr<std::once_flag[]> built_, settled_;   // EK's model of an object, and its S-bounds
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
-      witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0};
+      witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
+      stages_adopted_{0};
 
   // A witness AK made and verified on a certified path, in EK's numbers.
   // Regularised, its coordinates are grid points (Witness::snap), exact
@@ -377,6 +379,7 @@ private:
     stats.earliest_by_intervals = earliest_by_intervals_.load();
     stats.apart_proofs = apart_proofs_.load();
     stats.apart_attempts = apart_attempts_.load();
+    stats.replay_stages_adopted = stages_adopted_.load();
   }
 
   static double seconds_since(std::chrono::steady_clock::time_point t)

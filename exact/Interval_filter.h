@@ -84,11 +84,50 @@ public:
   {
     try {
       run();
+      keep_for_replay(index, A, B, st);
       return;
     } catch (const CGAL::Uncertain_conversion_exception&) {
     }
     exact_->region_stage(a, b, index, A, B, st);
   }
+  // A stage the intervals made, kept for the trail's replay when it is the
+  // rational run's in its own numbers: its emptied nodes were certified,
+  // and its region (on the grid) and frame came out as point intervals.
+  // What the replay reads of a stage is only that (and, in earliest mode,
+  // the narrowed times, which are S-bound values: not kept then).
+  template <class M>
+  void keep_for_replay(std::size_t index, const M& A, const M& B, const Region_stage<AFT>& st)
+  {
+    if (!record_ || earliest_) return;
+    const AK& ak = runner_->ak_;
+    const EK& ek = runner_->ek_;
+    Exact_stage<EFT> kept;
+    kept.stage.alive = st.alive;
+    kept.stage.frame_of_a = st.frame_of_a;
+    auto exact = [&](const AFT& x, EFT& to) {
+      std::optional<Rational> v = ak.exact_value(x);
+      if (v) to = ek.from_rational(*v);
+      return v.has_value();
+    };
+    if (st.region) {
+      Box<EFT, 4> r;
+      for (int q = 0; q < 4; ++q) {
+        EFT lo, hi;
+        if (!exact(st.region->lo[q], lo) || !exact(st.region->hi[q], hi)) return;
+        r.set(q, lo, hi);
+      }
+      for (int q = 0; q < 3; ++q)
+        if (!exact(st.shear[q], kept.stage.shear[q])) return;
+      kept.stage.region = r;
+      kept.stage.fitted = r;            // statistics only, and the replay's are not kept
+      kept.stage.tl = r.lo[3];          // read only by an earliest goal
+      kept.stage.th = r.hi[3];
+    }
+    for (const auto& n : A.beta) kept.empty_a.push_back(n.empty);
+    for (const auto& n : B.beta) kept.empty_b.push_back(n.empty);
+    exact_->stages().emplace(index, std::move(kept));
+  }
+
   // The region stages made in rationals, handed on to the trail's replay.
   Exact_stages<EFT> take_stages() { return std::move(exact_->stages()); }
 

@@ -4,8 +4,9 @@
 // the trail's child at each depth, and generate-and-test only the trail's
 // line. Wherever the rational run's path leaves the trail, the trail is
 // marked diverged and the runner searches the whole pair again. A
-// sub-span's region stage the interval run had made in rationals
-// (exact/Exact_stage.h) is adopted, not made again.
+// sub-span's region stage the interval run had made in rationals, or made
+// itself in numbers that came out exact (exact/Exact_stage.h), is adopted,
+// not made again.
 #ifndef CLASH4D_EXACT_TRAIL_REPLAY_H
 #define CLASH4D_EXACT_TRAIL_REPLAY_H
 
@@ -29,6 +30,7 @@ public:
     if (stages_)
       if (auto it = stages_->find(index); it != stages_->end()) {
         it->second.adopt(A, B, st);
+        ++adopted_;
         return;
       }
     run();
@@ -76,9 +78,13 @@ public:
   const std::array<std::size_t, 3>* replay_line() const { return trail_->line_known ? &trail_->line : nullptr; }
   void replayed(bool found) { trail_->diverged = trail_->diverged || !found; }
 
+  // Region stages adopted instead of made again.
+  std::size_t adopted() const { return adopted_; }
+
 private:
   Search_trail* trail_ = nullptr;
   const Exact_stages<FT>* stages_ = nullptr;
+  std::size_t adopted_ = 0;
 };
 
 // Earliest mode: the trail ends at the interval run's last improvement,

@@ -61,10 +61,14 @@ struct Check_stats {
   // apart_proofs: pairs whose long search was handed over to conflicts
   // that close off every term (search/Apart_pieces.h) and proven apart;
   // apart_attempts: such hand-overs that did not prove it (a term has a
-  // point, or the step bound), the search going on.
+  // point, or the step bound), the search going on;
+  // replay_stages_adopted: sub-span region stages a rational replay took
+  // from the interval run (made there in rationals, or in intervals with
+  // every number exact) instead of making them again.
   std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_witness_replays = 0, exact_regions = 0,
               exact_lines = 0, exact_plane_tests = 0, exact_region_stages = 0, witnesses_by_intervals = 0,
-              earliest_by_intervals = 0, apart_proofs = 0, apart_attempts = 0;
+              earliest_by_intervals = 0, apart_proofs = 0, apart_attempts = 0,
+              replay_stages_adopted = 0;
   // Time per stage, seconds
   double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
 

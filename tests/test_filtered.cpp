@@ -135,7 +135,7 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
   BOOST_TEST_MESSAGE("filtered vs rational, coarse-grid scenes: seed " << seed << ", " << cases << " cases");
   std::mt19937_64 rng(seed);
   std::size_t by_intervals = 0, collide = 0, witnessed = 0, replayed = 0, searched = 0, earliest_colliding = 0,
-              earliest_by_intervals = 0, earliest_made = 0;
+              earliest_by_intervals = 0, earliest_made = 0, adopted = 0;
   for (std::uint64_t i = 0; i < cases; ++i) {
     Random_scene rs = random_scene_with_text(rng);
     Check_options o;
@@ -144,6 +144,7 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
     collide += a.collide;
     witnessed += a.stats.witnesses_by_intervals;
     replayed += a.stats.exact_witness_replays;
+    adopted += a.stats.replay_stages_adopted;
     o.earliest = true;
     Check_answer e = same_answers(rs.scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) + ": " + rs.json);
     searched += e.stats.exact_witness_runs - e.stats.exact_witness_replays - e.stats.earliest_by_intervals;
@@ -153,7 +154,8 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
   }
   BOOST_TEST_MESSAGE(by_intervals << " of " << cases << " decided by intervals alone, " << collide << " collide, "
                                   << witnessed << " witnesses made by the interval run, " << replayed
-                                  << " replayed from its trail in rationals, " << searched
+                                  << " replayed from its trail in rationals (" << adopted
+                                  << " adopting the interval run's region stage), " << searched
                                   << " earliest-mode pairs searched again in rationals; of " << earliest_colliding
                                   << " colliding earliest-mode pairs, " << earliest_made
                                   << " had t*, contact and witness made by the interval run, " << earliest_by_intervals
@@ -170,6 +172,9 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
   BOOST_TEST(collide > cases / 10);
   BOOST_TEST(witnessed > collide / 4);
   BOOST_TEST(replayed > 0u);
+  // A replay adopts the interval run's region stage where its numbers came
+  // out exact (Interval_filter::keep_for_replay): most replays here.
+  BOOST_TEST(adopted * 2 > replayed, adopted << " of " << replayed);
   // Earliest mode (issue 16): most colliding pairs' t* comes from the
   // interval search, ties with t* decided in rationals line by line, not
   // from a whole rational search: either the interval run made t*, the
