@@ -33,7 +33,9 @@ struct Conflict {
 };
 
 // A term the LP finds feasible: the answer being certified is wrong, or the
-// pipeline and the certifier disagree; never written as a proof.
+// pipeline and the certifier disagree; never written as a proof. With
+// Lp_effort::quick, only a term the guided LP did not close off (a search
+// handing over goes on instead).
 struct Term_feasible : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
