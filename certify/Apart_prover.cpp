@@ -45,15 +45,10 @@ json Apart_prover::prove(int a, int b, const Rational& until, bool strict_end)
 {
   Apart_pieces<K> pieces(model(), semantics_, limit_ - std::min(limit_, steps_));
   json list = json::array();
-  try {
-    for (const Apart_piece& p : pieces.prove(a, b, until, strict_end)) {
-      json conflicts = json::array();
-      for (const auto& c : p.conflicts) conflicts.push_back(conflict_json(c, p.literals, semantics_ == Semantics::closed));
-      list.push_back(json{{"t", json::array({to_string(p.lo), to_string(p.hi)})}, {"proof", json{{"conflicts", conflicts}}}});
-    }
-  } catch (...) {
-    steps_ += pieces.steps();
-    throw;
+  for (const Apart_piece& p : pieces.prove(a, b, until, strict_end)) {
+    json conflicts = json::array();
+    for (const auto& c : p.conflicts) conflicts.push_back(conflict_json(c, p.literals, semantics_ == Semantics::closed));
+    list.push_back(json{{"t", json::array({to_string(p.lo), to_string(p.hi)})}, {"proof", json{{"conflicts", conflicts}}}});
   }
   steps_ += pieces.steps();
   conflicts_ += pieces.conflicts();

@@ -194,16 +194,16 @@ private:
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     need_model(a);
     need_model(b);
-    ++apart_attempts_;
     try {
       Apart_pieces<EK>(emodel_, closed ? Semantics::closed : Semantics::regularised, step_limit, Lp_effort::quick)
           .prove(a, b, ek_.to_rational(emodel_.t_hi), false);
     } catch (const Term_feasible&) {
+      ++apart_attempts_;
       return Apart::not_proven;
     } catch (const Term_limit&) {
+      ++apart_attempts_;
       return Apart::out_of_steps;
     }
-    --apart_attempts_;
     ++apart_proofs_;
     return Apart::proven;
   }
@@ -256,11 +256,8 @@ private:
     r.collide = r.has_witness = r.witness_verified = true;
     bool closed = found.semantics == Semantics::closed;
     auto copy = [&](const Vector4<AFT>& from, Vector4<EFT>& to) {
-      for (int q = 0; q < 4; ++q) {
-        std::optional<Rational> x = ak_.exact_value(from[q]);
-        if (!x) return false;
-        to[q] = ek_.from_rational(*x);
-      }
+      for (int q = 0; q < 4; ++q)
+        if (!to_exact(from[q], to[q])) return false;
       return true;
     };
     if (!copy(found.witness, r.witness)) {
@@ -278,14 +275,21 @@ private:
     // rational run's number (the goal encloses that run's,
     // exact/Interval_filter.h).
     if (found.earliest) {
-      std::optional<Rational> t = ak_.exact_value(found.t_star);
-      if (!t || !copy(found.contact, r.contact)) return std::nullopt;
+      if (!to_exact(found.t_star, r.t_star) || !copy(found.contact, r.contact)) return std::nullopt;
       for (int i = 0; i < 2; ++i)
         if (!copy(found.contact_cells[i], r.contact_cells[i])) return std::nullopt;
-      r.t_star = ek_.from_rational(*t);
       r.earliest = true;
     }
     return r;
+  }
+
+  // AK's number x in EK when it is a point interval: then it is the exact
+  // number the rational run has there.
+  bool to_exact(const AFT& x, EFT& to) const
+  {
+    std::optional<Rational> v = ak_.exact_value(x);
+    if (v) to = ek_.from_rational(*v);
+    return v.has_value();
   }
 
   // AK's model, each object's S-bounds (EK's where AK fails), and the sweep's

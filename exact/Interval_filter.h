@@ -99,25 +99,18 @@ public:
   void keep_for_replay(std::size_t index, const M& A, const M& B, const Region_stage<AFT>& st)
   {
     if (!record_ || earliest_) return;
-    const AK& ak = runner_->ak_;
-    const EK& ek = runner_->ek_;
     Exact_stage<EFT> kept;
     kept.stage.alive = st.alive;
     kept.stage.frame_of_a = st.frame_of_a;
-    auto exact = [&](const AFT& x, EFT& to) {
-      std::optional<Rational> v = ak.exact_value(x);
-      if (v) to = ek.from_rational(*v);
-      return v.has_value();
-    };
     if (st.region) {
       Box<EFT, 4> r;
       for (int q = 0; q < 4; ++q) {
         EFT lo, hi;
-        if (!exact(st.region->lo[q], lo) || !exact(st.region->hi[q], hi)) return;
+        if (!runner_->to_exact(st.region->lo[q], lo) || !runner_->to_exact(st.region->hi[q], hi)) return;
         r.set(q, lo, hi);
       }
       for (int q = 0; q < 3; ++q)
-        if (!exact(st.shear[q], kept.stage.shear[q])) return;
+        if (!runner_->to_exact(st.shear[q], kept.stage.shear[q])) return;
       kept.stage.region = r;
       kept.stage.fitted = r;            // statistics only, and the replay's are not kept
       kept.stage.tl = r.lo[3];          // read only by an earliest goal
@@ -173,15 +166,16 @@ public:
   // The leaf was kept: the path may now differ from the rational run's.
   void uncertain_simplification() { trail_->approximate = true; }
   bool takes_child(std::size_t, int) const { return true; }
-  // A long search is handed over: past apart_after_ lines, the
-  // runner asks whether conflicts close off every term of the pair's
-  // formula (Filtered_runner::proves_apart; one exact LP per conflict, where
+  // A long search is handed over: past apart_after_ lines, the runner asks
+  // whether conflicts close off every term of the pair's formula
+  // (Filtered_runner::proves_apart; one exact LP per conflict, where
   // generate-and-test examines many lines per conflict). Proven, the run
-  // stops with Proven_apart, the pair's "no collision"; otherwise it goes on
-  // where it was (a pair proven apart on the whole span has no t* either:
-  // earliest mode too, until a point inside is found). Out of steps, it asks again at 16 times the lines with 16
-  // times the steps, so the asking costs a bounded share of the search; a
-  // term left open would be met again, so then it never asks again.
+  // stops with Proven_apart, the pair's "no collision" (a pair apart on the
+  // whole span has no t* either: earliest mode too, until a point inside is
+  // found); otherwise it goes on where it was. Out of steps, it asks again
+  // at 16 times the lines with 16 times the steps, so the asking costs a
+  // bounded share of the search; a term left open would be met again, so
+  // then it never asks again.
   void never_hand_over() { apart_after_ = std::numeric_limits<std::size_t>::max(); }
   bool decides_here(std::size_t, bool conquers)
   {

@@ -86,12 +86,7 @@ private:
     const int root = static_cast<int>(nodes.size()) - 1;
     Term_search search(out.literals, std::move(nodes), root, slab, semantics_, strict_end,
                        limit_ - std::min(limit_, steps_), effort_);
-    try {
-      out.conflicts = search.run();
-    } catch (...) {
-      steps_ += search.steps();
-      throw;
-    }
+    out.conflicts = search.run();
     steps_ += search.steps();
     conflicts_ += out.conflicts.size();
     return out;
