@@ -80,8 +80,42 @@ public:
     return r;
   }
 
-private:
   using Moving = Moving_object<FT>;
+
+  // The witness (regularised: generic, strictly inside both; closed: the
+  // point found, with a generic point inside each object whose cell's
+  // closure holds it) and, earliest, the contact point with the same; each
+  // checked against the scene. Found on `span`, where A and B move as
+  // given, in the frame x' = x - shear t.
+  void make_witness(const Search_goal<FT>& goal, const Vector3<FT>& shear, const Moving& A, const Moving& B,
+                    const Time_span<FT>& span, Pair_result<FT>& r) const
+  {
+    Witness<K> w(k_);
+    V4 contact = goal.contact;
+    for (int q = 0; q < 3; ++q) contact[q] += shear[q] * contact[3];
+    if (goal.closed()) {
+      r.witness = contact;
+      r.witness_cells = {w.near_in_space(goal.contact, goal.toward_a, shear, A),
+                         w.near_in_space(goal.contact, goal.toward_b, shear, B)};
+      r.witness_verified = is_valid_touch(k_, model_, r.a, r.b, r.witness, r.witness_cells[0], r.witness_cells[1]);
+      r.contact_cells = r.witness_cells;
+    } else {
+      r.witness = w.make(goal.inside, shear, A, B, span.lo, span.hi);
+      r.witness_verified = is_valid_witness(k_, model_, r.a, r.b, r.witness);
+      if (goal.earliest) {
+        V4 g = w.near(goal.contact, goal.inside, shear, A, B, span.lo, span.hi);
+        r.contact_cells = {g, g};
+        r.witness_verified = r.witness_verified && is_valid_witness(k_, model_, r.a, r.b, g) &&
+                             is_in_closure_of(k_, model_, r.a, contact, g) &&
+                             is_in_closure_of(k_, model_, r.b, contact, g);
+      }
+    }
+    r.has_witness = true;
+    r.t_star = goal.t_star;
+    r.contact = contact;
+  }
+
+private:
 
   const K& k_;
   const Scene_model<K>& model_;
@@ -176,38 +210,6 @@ private:
     shear = st.shear;
     frame_of_a = st.frame_of_a;
     return st.region;
-  }
-
-  // The witness (regularised: generic, strictly inside both; closed: the
-  // point found, with a generic point inside each object whose cell's
-  // closure holds it) and, earliest, the contact point with the same; each
-  // checked against the scene.
-  void make_witness(const Search_goal<FT>& goal, const Vector3<FT>& shear, const Moving& A, const Moving& B,
-                    const Time_span<FT>& span, Pair_result<FT>& r) const
-  {
-    Witness<K> w(k_);
-    V4 contact = goal.contact;
-    for (int q = 0; q < 3; ++q) contact[q] += shear[q] * contact[3];
-    if (goal.closed()) {
-      r.witness = contact;
-      r.witness_cells = {w.near_in_space(goal.contact, goal.toward_a, shear, A),
-                         w.near_in_space(goal.contact, goal.toward_b, shear, B)};
-      r.witness_verified = is_valid_touch(k_, model_, r.a, r.b, r.witness, r.witness_cells[0], r.witness_cells[1]);
-      r.contact_cells = r.witness_cells;
-    } else {
-      r.witness = w.make(goal.inside, shear, A, B, span.lo, span.hi);
-      r.witness_verified = is_valid_witness(k_, model_, r.a, r.b, r.witness);
-      if (goal.earliest) {
-        V4 g = w.near(goal.contact, goal.inside, shear, A, B, span.lo, span.hi);
-        r.contact_cells = {g, g};
-        r.witness_verified = r.witness_verified && is_valid_witness(k_, model_, r.a, r.b, g) &&
-                             is_in_closure_of(k_, model_, r.a, contact, g) &&
-                             is_in_closure_of(k_, model_, r.b, contact, g);
-      }
-    }
-    r.has_witness = true;
-    r.t_star = goal.t_star;
-    r.contact = contact;
   }
 
   void count_pruned(const Moving& m, Span_stats& ss)

@@ -80,6 +80,7 @@ json stats_json(const Check_stats& s)
           {"apart_proofs", s.apart_proofs},
           {"apart_attempts", s.apart_attempts},
           {"replay_stages_adopted", s.replay_stages_adopted},
+          {"earliest_lines_rerun", s.earliest_lines_rerun},
           {"seconds", {{"model", s.seconds_model}, {"sweep", s.seconds_sweep}, {"sbounds", s.seconds_sbounds},
                        {"divide_and_conquer", s.seconds_divide}, {"witness", s.seconds_witness}}}};
 }

@@ -97,8 +97,10 @@ public:
   // points inside, which send the pair to the rational run anyway. When the
   // interval region is exact (grid faces: point intervals) it is the
   // rational run's own, and a line found is the one that run will find.
+  // as_is: on the table's own planes (a point found is then the rational
+  // run's), not in lowest terms.
   std::shared_ptr<Lines> lines(int a, int b, std::size_t s, const std::array<bool, 3>& frame, const Plane_layout& layout,
-                               const Box<AFT, 4>& region)
+                               const Box<AFT, 4>& region, bool as_is = false)
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     enter(a, b, s, frame);
@@ -110,7 +112,7 @@ public:
       exact = exact && lo.first == lo.second && hi.first == hi.second;
       outer.set(q, EFT(lo.first), EFT(hi.second));
     }
-    auto conquer = std::make_shared<Lines>(runner_.ek_, lowest_terms(layout), groups_, exact);
+    auto conquer = std::make_shared<Lines>(runner_.ek_, as_is ? table_ : lowest_terms(layout), groups_, exact);
     conquer->conquer().adopt(layout, outer);
     return conquer;
   }

@@ -154,6 +154,17 @@ private:
             return *r;
           }
         }
+        if (options.earliest) {
+          auto made = std::chrono::steady_clock::now();
+          if (std::optional<Pair_result<EFT>> r = witness_from(policy, a, b, options.semantics)) {
+            stats = astats;
+            stats.seconds_witness += seconds_since(made);
+            ++witness_runs_;
+            ++earliest_by_intervals_;
+            ++lines_rerun_;
+            return *r;
+          }
+        }
         earliest_trail = options.earliest && policy.earliest_trail();
         stages = policy.take_stages();
         ++witness_runs_;
@@ -208,6 +219,31 @@ private:
     return Apart::proven;
   }
 
+  // Earliest mode, when the intervals made t* but not the witness: the
+  // rational run's goal, made from the line that found it
+  // (Interval_filter::exact_goal), and its witness made in EK as the
+  // rational run makes it, instead of replaying the search to that line.
+  std::optional<Pair_result<EFT>> witness_from(Interval_filter<Filtered_runner>& policy, int a, int b,
+                                               Semantics semantics)
+  {
+    std::optional<typename Interval_filter<Filtered_runner>::Exact_goal> g = policy.exact_goal();
+    if (!g) return std::nullopt;
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    const Time_span<EFT> span = emodel_.sub_spans({a, b}).at(g->span);
+    Moving_object<EFT> A = moving_on(emodel_, a, span, {}), B = moving_on(emodel_, b, span, {});
+    Pair_result<EFT> r;
+    r.a = a;
+    r.b = b;
+    r.semantics = semantics;
+    r.collide = true;
+    Check_stats ignored;
+    Collision_checker<EK>(ek_, emodel_, esettled_, ignored, use_sbounds_)
+        .make_witness(g->goal, Extrusion<EK>::shear_of(A, B, g->frame, use_sbounds_), A, B, span, r);
+    if (!r.witness_verified) return std::nullopt;   // not expected: the search in rationals decides
+    r.earliest = true;
+    return r;
+  }
+
   // EK along the interval run's trail (Replay: the witness's or the
   // earliest improvement's); the answer when the trail held, counted.
   template <class Replay>
@@ -239,7 +275,7 @@ private:
   std::unique_ptr<std::once_flag[]> built_, settled_;   // EK's model of an object, and its S-bounds
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
-      stages_adopted_{0};
+      stages_adopted_{0}, lines_rerun_{0};
 
   // A witness AK made and verified on a certified path, in EK's numbers.
   // Regularised, its coordinates are grid points (Witness::snap), exact
@@ -384,6 +420,7 @@ private:
     stats.apart_proofs = apart_proofs_.load();
     stats.apart_attempts = apart_attempts_.load();
     stats.replay_stages_adopted = stages_adopted_.load();
+    stats.earliest_lines_rerun = lines_rerun_.load();
   }
 
   static double seconds_since(std::chrono::steady_clock::time_point t)

@@ -121,6 +121,25 @@ public:
     exact_->stages().emplace(index, std::move(kept));
   }
 
+  // Earliest mode, regularised, on a certified path whose last improvement
+  // was a line the intervals examined: the rational run's goal, made from
+  // that line (exact_last), with the sub-span and frame it was found in;
+  // nothing otherwise. A witness the intervals could not make (the
+  // generic point near a contact point they only enclose: which planes
+  // pass through it is for exact arithmetic to say) is made from it.
+  struct Exact_goal {
+    Search_goal<EFT> goal;
+    std::size_t span;
+    std::array<bool, 3> frame;
+  };
+  std::optional<Exact_goal> exact_goal()
+  {
+    if (closed_ || !last_ || !witness_certified()) return std::nullopt;
+    std::optional<Search_goal<EFT>> e = exact_last(true);
+    if (!e) return std::nullopt;
+    return Exact_goal{std::move(*e), last_->span, last_->frame};
+  }
+
   // The region stages made in rationals, handed on to the trail's replay.
   Exact_stages<EFT> take_stages() { return std::move(exact_->stages()); }
 
@@ -194,7 +213,10 @@ public:
       // A fold reached in earliest mode improves the goal (its lower time
       // passed the same comparison on entry); a conquer may not have.
       if (on_line && !pending_) return;
-      if (!on_line) improved_on_keys_ = false;   // a fold: its region's centre and lower face
+      if (!on_line) {
+        improved_on_keys_ = false;   // a fold: its region's centre and lower face
+        last_.reset();
+      }
       keep_region(region, f);
       trail_->path = path;
       trail_->on_line = on_line;
@@ -313,7 +335,8 @@ private:
   bool pending_ = false;                                        // a line improved; its conquer's path follows
   bool improved_on_keys_ = false;                               // the last improvement: a line in rationals
   std::array<std::size_t, 3> pending_line_{};
-  // The line that last improved the goal in intervals, while t_star_ lags.
+  // The line that last improved the goal in intervals (stale_: while
+  // t_star_ lags).
   struct Stale {
     std::size_t span;
     std::array<bool, 3> frame;
@@ -322,7 +345,8 @@ private:
     Pair_formula formula;
     std::array<std::size_t, 3> line;
   };
-  std::optional<Stale> stale_;
+  std::optional<Stale> last_;
+  bool stale_ = false;
   std::optional<EFT> floor_;                                    // the conquer's lower time, when exact
   std::size_t floor_conquer_ = 0;                               // which conquer it is for
 
@@ -334,15 +358,26 @@ private:
     return std::isfinite(lo) && std::isfinite(hi) && std::floor(hi) >= std::ceil(lo);
   }
 
-  // t_star_ for the goal the stale line left: that line in rationals, from
-  // nothing found (its least time is below the t* before it, which the
-  // intervals certified). The conquer's own region must be exact.
+  // t_star_ for the goal the stale line left.
   void make_exact()
   {
-    Stale s = std::move(*stale_);
-    stale_.reset();
-    std::shared_ptr<typename Exact_span<Runner>::Lines> lines = exact_->lines(a_, b_, s.span, s.frame, s.layout, s.region);
-    if (!lines->exact()) throw CGAL::Uncertain_conversion_exception("earliest mode on a widened region");
+    stale_ = false;
+    if (!exact_last(false)) throw CGAL::Uncertain_conversion_exception("earliest mode on a widened region");
+  }
+
+  // The goal the last line left, and t_star_: that line in rationals, from
+  // nothing found (its least time is below the t* before it, which the
+  // intervals certified), records the rational run's own t* and contact
+  // point. as_is: on the table's own planes, not in lowest terms, so that
+  // the point inside is the rational run's too. The conquer's own region
+  // must be exact; nothing otherwise.
+  std::optional<Search_goal<EFT>> exact_last(bool as_is)
+  {
+    const Stale& s = *last_;
+    std::shared_ptr<typename Exact_span<Runner>::Lines> lines =
+        exact_->lines(a_, b_, s.span, s.frame, s.layout, s.region, as_is);
+    lines_.reset();   // the span's table may have been another's
+    if (!lines->exact()) return std::nullopt;
     ++stats_->exact_lines;
     Search_goal<EFT> e;
     e.earliest = true;
@@ -354,7 +389,7 @@ private:
     lines->earliest(s.formula, s.line[0], s.line[1], s.line[2], e);
     if (!e.found) throw std::logic_error("internal error: a line the intervals certified found nothing in rationals");
     t_star_ = e.t_star;
-    lines_.reset();   // the span's table may have been another's
+    return e;
   }
 
   // Earliest mode: the line in intervals; in rationals when it improves the
@@ -368,7 +403,7 @@ private:
       if (!t) throw CGAL::Uncertain_conversion_exception("a fold's time the intervals only enclose");
       t_star_ = runner_->ek_.from_rational(*t);
       fold_unsynced_ = false;
-      stale_.reset();
+      stale_ = false;
     }
     // Every point of the closed region is at or after its lower time: once
     // t* is there, no line of the conquer improves it (decided exactly).
@@ -385,13 +420,14 @@ private:
       g.test_line(f, i, j, m, goal);
       if (goal.found == saved.found && (!goal.found || same(goal.t_star, saved.t_star))) return;
       // Improved, every decision certified: the exact t* is made when needed.
-      stale_ = Stale{span_, frame_, g.layout(), g.region(), f, {i, j, m}};
+      last_ = Stale{span_, frame_, g.layout(), g.region(), f, {i, j, m}};
+      stale_ = true;
       improved_on_keys_ = false;
       pending_ = true;
       pending_line_ = {i, j, m};
       if (std::optional<Rational> t = runner_->ak_.exact_value(goal.t_star)) {
         t_star_ = runner_->ek_.from_rational(*t);   // a point: the exact t* itself
-        stale_.reset();
+        stale_ = false;
       } else if (near_grid(goal.t_star)) {
         // Likely a region's face (S-bounds fitted to the contact time):
         // the later comparisons with region times need the exact t*.
@@ -427,6 +463,7 @@ private:
     if (!e.improved) return;
     t_star_ = e.t_star;
     improved_on_keys_ = true;
+    last_.reset();
     auto enclose = [&](const EFT& x) { return runner_->ak_.from_rational(runner_->ek_.to_rational(x)); };
     goal.found = goal.improved = true;
     goal.vertex_known = false;   // the rational conquer's record, not this one's

@@ -79,11 +79,18 @@ public:
   {
     const Time_span<FT> span = model.sub_spans({a, b}).at(index);
     Moving A = moving_on(model, a, span, settled[a]), B = moving_on(model, b, span, settled[b]);
-    Vector3<FT> shear;
-    for (int q = 0; q < 3; ++q) shear[q] = !fitted ? FT(0) : frame_of_a[q] ? A.v[q] : B.v[q];
-    std::vector<H> table = pair_table(A, B, shear, frame_of_a, fitted, groups);
+    std::vector<H> table = pair_table(A, B, shear_of(A, B, frame_of_a, fitted), frame_of_a, fitted, groups);
     if (closed) add_time_slab(table, span.lo, span.hi);
     return table;
+  }
+
+  // The frame's shear (x' = x - shear t): per axis A's velocity or B's
+  // (frame_of_a); unfitted, the world frame.
+  static Vector3<FT> shear_of(const Moving& A, const Moving& B, const std::array<bool, 3>& frame_of_a, bool fitted)
+  {
+    Vector3<FT> shear;
+    for (int q = 0; q < 3; ++q) shear[q] = !fitted ? FT(0) : frame_of_a[q] ? A.v[q] : B.v[q];
+    return shear;
   }
 
   // Closed semantics: the sub-span's slab lo <= t <= hi appended to the

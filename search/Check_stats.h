@@ -58,6 +58,9 @@ struct Check_stats {
   // earliest_by_intervals: earliest-mode colliding pairs whose search the
   // interval run made (ties with t* decided in rationals), the rational run
   // only replaying its last improvement (of exact_witness_runs);
+  // earliest_lines_rerun: of those, pairs (regularised) where only that
+  // improvement's line was run again in rationals, and the witness made
+  // from it, instead of a replay;
   // apart_proofs: pairs whose long search was handed over to conflicts
   // that close off every term (search/Apart_pieces.h) and proven apart;
   // apart_attempts: such hand-overs that did not prove it (a term has a
@@ -68,7 +71,7 @@ struct Check_stats {
   std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_witness_replays = 0, exact_regions = 0,
               exact_lines = 0, exact_plane_tests = 0, exact_region_stages = 0, witnesses_by_intervals = 0,
               earliest_by_intervals = 0, apart_proofs = 0, apart_attempts = 0,
-              replay_stages_adopted = 0;
+              replay_stages_adopted = 0, earliest_lines_rerun = 0;
   // Time per stage, seconds
   double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
 
