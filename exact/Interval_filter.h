@@ -347,8 +347,16 @@ private:
   };
   std::optional<Stale> last_;
   bool stale_ = false;
-  std::optional<EFT> floor_;                                    // the conquer's lower time, when exact
-  std::size_t floor_conquer_ = 0;                               // which conquer it is for
+  // Whether t* is at the conquer's lower time (no line of it improves),
+  // for which conquer and which t* (set_t_star counts them).
+  bool floor_reached_ = false;
+  std::size_t floor_conquer_ = 0, floor_t_star_ = 0, t_stars_ = 0;
+
+  void set_t_star(EFT t)
+  {
+    t_star_ = std::move(t);
+    ++t_stars_;
+  }
 
   static bool same(const AFT& x, const AFT& y) { return x.inf() == y.inf() && x.sup() == y.sup(); }
   // Whether the enclosure holds a multiple of 2^-40 (region times are).
@@ -388,7 +396,7 @@ private:
     }
     lines->earliest(s.formula, s.line[0], s.line[1], s.line[2], e);
     if (!e.found) throw std::logic_error("internal error: a line the intervals certified found nothing in rationals");
-    t_star_ = e.t_star;
+    set_t_star(e.t_star);
     return e;
   }
 
@@ -401,19 +409,21 @@ private:
       // A fold's t* is its region's lower time, a grid point.
       std::optional<Rational> t = runner_->ak_.exact_value(goal.t_star);
       if (!t) throw CGAL::Uncertain_conversion_exception("a fold's time the intervals only enclose");
-      t_star_ = runner_->ek_.from_rational(*t);
+      set_t_star(runner_->ek_.from_rational(*t));
       fold_unsynced_ = false;
       stale_ = false;
     }
     // Every point of the closed region is at or after its lower time: once
-    // t* is there, no line of the conquer improves it (decided exactly).
+    // t* is there, no line of the conquer improves it (decided exactly,
+    // once per conquer and t*).
     if (t_star_ && goal.found && !stale_) {
-      if (floor_conquer_ != g.conquers()) {
+      if (floor_conquer_ != g.conquers() || floor_t_star_ != t_stars_) {
         floor_conquer_ = g.conquers();
+        floor_t_star_ = t_stars_;
         std::optional<Rational> lo = runner_->ak_.exact_value(g.region().lo[3]);
-        floor_ = lo ? std::optional<EFT>(runner_->ek_.from_rational(*lo)) : std::nullopt;
+        floor_reached_ = lo && !runner_->ek_.less(runner_->ek_.from_rational(*lo), *t_star_);
       }
-      if (floor_ && !runner_->ek_.less(*floor_, *t_star_)) return;
+      if (floor_reached_) return;
     }
     Search_goal<AFT> saved = goal;
     try {
@@ -426,7 +436,7 @@ private:
       pending_ = true;
       pending_line_ = {i, j, m};
       if (std::optional<Rational> t = runner_->ak_.exact_value(goal.t_star)) {
-        t_star_ = runner_->ek_.from_rational(*t);   // a point: the exact t* itself
+        set_t_star(runner_->ek_.from_rational(*t));   // a point: the exact t* itself
         stale_ = false;
       } else if (near_grid(goal.t_star)) {
         // Likely a region's face (S-bounds fitted to the contact time):
@@ -461,7 +471,7 @@ private:
     }
     lines_->earliest(f, i, j, m, e);
     if (!e.improved) return;
-    t_star_ = e.t_star;
+    set_t_star(e.t_star);
     improved_on_keys_ = true;
     last_.reset();
     auto enclose = [&](const EFT& x) { return runner_->ak_.from_rational(runner_->ek_.to_rational(x)); };
