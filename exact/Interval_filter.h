@@ -448,6 +448,7 @@ private:
     } catch (const CGAL::Uncertain_conversion_exception&) {
     }
     goal = saved;
+    make_keys();
     if (stale_) make_exact();
     if (!lines_ || lines_conquer_ != g.conquers()) {
       lines_ = exact_->lines(a_, b_, span_, frame_, g.layout(), g.region());
