@@ -98,9 +98,10 @@ public:
   // interval region is exact (grid faces: point intervals) it is the
   // rational run's own, and a line found is the one that run will find.
   // as_is: on the table's own planes (a point found is then the rational
-  // run's), not in lowest terms.
+  // run's), not in lowest terms. own: the rational run's region, when the
+  // caller knows it (exact/Region_faces.h).
   std::shared_ptr<Lines> lines(int a, int b, std::size_t s, const std::array<bool, 3>& frame, const Plane_layout& layout,
-                               const Box<AFT, 4>& region, bool as_is = false)
+                               const Box<AFT, 4>& region, bool as_is = false, const Box<EFT, 4>* own = nullptr)
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     enter(a, b, s, frame);
@@ -111,6 +112,10 @@ public:
       auto lo = CGAL::to_interval(region.lo[q]), hi = CGAL::to_interval(region.hi[q]);
       exact = exact && lo.first == lo.second && hi.first == hi.second;
       outer.set(q, EFT(lo.first), EFT(hi.second));
+    }
+    if (own) {
+      outer = *own;
+      exact = true;
     }
     auto conquer = std::make_shared<Lines>(runner_.ek_, as_is ? table_ : lowest_terms(layout), groups_, exact);
     conquer->conquer().adopt(layout, outer);

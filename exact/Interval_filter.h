@@ -39,6 +39,7 @@
 #define CLASH4D_EXACT_INTERVAL_FILTER_H
 
 #include "exact/Exact_span.h"
+#include "exact/Region_faces.h"
 #include "exact/Search_trail.h"
 #include <cmath>
 #include <limits>
@@ -85,10 +86,12 @@ public:
     try {
       run();
       keep_for_replay(index, A, B, st);
+      if (st.region) roots_[index] = *st.region;
       return;
     } catch (const CGAL::Uncertain_conversion_exception&) {
     }
     exact_->region_stage(a, b, index, A, B, st);
+    if (st.region) exact_roots_[index] = exact_->stages().at(index).stage.region;
   }
   // A stage the intervals made, kept for the trail's replay when it is the
   // rational run's in its own numbers: its emptied nodes were certified,
@@ -383,7 +386,7 @@ private:
   {
     const Stale& s = *last_;
     std::shared_ptr<typename Exact_span<Runner>::Lines> lines =
-        exact_->lines(a_, b_, s.span, s.frame, s.layout, s.region, as_is);
+        lines_on(s.span, s.frame, s.layout, s.region, as_is);
     lines_.reset();   // the span's table may have been another's
     if (!lines->exact()) return std::nullopt;
     ++stats_->exact_lines;
@@ -451,7 +454,7 @@ private:
     make_keys();
     if (stale_) make_exact();
     if (!lines_ || lines_conquer_ != g.conquers()) {
-      lines_ = exact_->lines(a_, b_, span_, frame_, g.layout(), g.region());
+      lines_ = lines_on(span_, frame_, g.layout(), g.region());
       lines_conquer_ = g.conquers();
     }
     if (!lines_->exact()) throw CGAL::Uncertain_conversion_exception("earliest mode on a widened region");
@@ -502,6 +505,43 @@ private:
     trail_->formula = f;
     trail_->region_known = true;
   }
+  // A conquer's lines in rationals (Exact_span::lines), on the rational
+  // run's own region when the intervals only enclose a face of it but it
+  // follows from the sub-span's root (exact/Region_faces.h).
+  std::shared_ptr<typename Exact_span<Runner>::Lines> lines_on(std::size_t s, const std::array<bool, 3>& frame,
+                                                               const Plane_layout& layout, const Box<AFT, 4>& region,
+                                                               bool as_is = false)
+  {
+    std::optional<Box<EFT, 4>> exact;
+    bool points = true;
+    for (int q = 0; q < 4; ++q) points = points && region.lo[q].is_point() && region.hi[q].is_point();
+    if (!points)
+      if (std::optional<Box<EFT, 4>> root = exact_root(s))
+        exact = Region_faces<AK, EK>(runner_->ak_, runner_->ek_).descendant(region, *root);
+    return exact_->lines(a_, b_, s, frame, layout, region, as_is, exact ? &*exact : nullptr);
+  }
+
+  // Sub-span s's root region in rationals: the stage's own when it was made
+  // in rationals; from the interval stage's faces (Region_faces::root) when
+  // it was made with S-bounds in regularised semantics (Span_region::
+  // on_grid); made once, when first needed.
+  std::optional<Box<EFT, 4>> exact_root(std::size_t s)
+  {
+    auto known = exact_roots_.find(s);
+    if (known != exact_roots_.end()) return known->second;
+    std::optional<Box<EFT, 4>>& root = exact_roots_[s];
+    auto it = roots_.find(s);
+    if (it == roots_.end() || closed_ || !runner_->use_sbounds_) return root;
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    runner_->need_model(a_);
+    runner_->need_model(b_);
+    const Time_span<EFT> span = runner_->emodel_.sub_spans({a_, b_}).at(s);
+    root = Region_faces<AK, EK>(runner_->ak_, runner_->ek_).root(it->second, span.lo, span.hi);
+    return root;
+  }
+  std::map<std::size_t, Box<AFT, 4>> roots_;                         // the interval stages' regions
+  std::map<std::size_t, std::optional<Box<EFT, 4>>> exact_roots_;    // exact_root's, per sub-span
+
   void make_keys()
   {
     if (keyed_) return;
@@ -519,7 +559,7 @@ private:
   void decide_in_rationals(G& g, const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<AFT>& goal)
   {
     if (!lines_ || lines_conquer_ != g.conquers()) {
-      lines_ = exact_->lines(a_, b_, span_, frame_, g.layout(), g.region());
+      lines_ = lines_on(span_, frame_, g.layout(), g.region());
       lines_conquer_ = g.conquers();
     }
     make_keys();

@@ -320,6 +320,26 @@ BOOST_AUTO_TEST_CASE(no_fallback_in_general_position)
 // say. The line that found it is run again in rationals on its own planes
 // and the witness made from it, without a replay of the search, and the
 // answer is the rational run's, witness and generic point included.
+// A sub-span that ends off the grid (b stops at t = 2.000000001): the
+// region's time face there is a number intervals only enclose, so until
+// now an earliest-mode line decided in rationals had no exact region and
+// the whole pair was searched again in rationals. The rational run's region
+// follows from the root's faces and the bisections (exact/Region_faces.h):
+// the interval run goes on, and the answer is the rational run's.
+BOOST_AUTO_TEST_CASE(earliest_mode_keeps_regions_exact_at_off_grid_ends)
+{
+  Scene late = read_scene_file(std::string(CLASH4D_FIXTURES) + "/contact/rotated_skew_approach_stop_overlap_1e-9.json");
+  Check_options earliest;
+  earliest.earliest = true;
+  Check_answer e = same_answers(late, earliest, "rotated_skew_approach_stop_overlap_1e-9");
+  BOOST_REQUIRE(e.collide);
+  // A rotated copy of approach_stop_at_contact_overlap_1e-9: b's face
+  // reaches a's at t = 2 and stops 1e-9 beyond (expected.json).
+  BOOST_TEST(e.reported()->t_star == "2");
+  BOOST_TEST(e.stats.exact_fallbacks == 0u);
+  BOOST_TEST(e.stats.exact_lines > 0u);
+}
+
 BOOST_AUTO_TEST_CASE(earliest_contact_off_the_grid_is_made_from_its_line)
 {
   Scene thin = read_scene_file(std::string(CLASH4D_FIXTURES) + "/contact/face_touch_static_overlap_1e-9.json");
