@@ -188,6 +188,25 @@ public:
   // The leaf was kept: the path may now differ from the rational run's.
   void uncertain_simplification() { trail_->approximate = true; }
   bool takes_child(std::size_t, int) const { return true; }
+  // Earliest mode: a region whose lower time ties with t* (a sub-span end
+  // off the grid, where the objects are already in contact) is compared
+  // exactly, on the rational run's region (exact/Region_faces.h) and t*.
+  template <class FT>
+  bool can_enter(const AK& k, const Search_goal<FT>& goal, const Box<FT, 4>& region)
+  {
+    try {
+      return goal.can_improve(k, region.lo[3]);
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      if (!earliest_ || fold_unsynced_) throw;
+    }
+    std::optional<Box<EFT, 4>> exact = exact_region(span_, region);
+    if (!exact) throw CGAL::Uncertain_conversion_exception("a region's time the intervals only enclose");
+    if (stale_) make_exact();
+    if (goal.found && !t_star_) throw CGAL::Uncertain_conversion_exception("t* not yet exact");
+    const EK& ek = runner_->ek_;
+    if (ceiling_ && ek.less(*ceiling_, exact->lo[3])) return false;
+    return !goal.found || ek.less(exact->lo[3], *t_star_);
+  }
   // A long search is handed over: past apart_after_ lines, the runner asks
   // whether conflicts close off every term of the pair's formula
   // (Filtered_runner::proves_apart; one exact LP per conflict, where
@@ -512,13 +531,19 @@ private:
                                                                const Plane_layout& layout, const Box<AFT, 4>& region,
                                                                bool as_is = false)
   {
-    std::optional<Box<EFT, 4>> exact;
     bool points = true;
     for (int q = 0; q < 4; ++q) points = points && region.lo[q].is_point() && region.hi[q].is_point();
-    if (!points)
-      if (std::optional<Box<EFT, 4>> root = exact_root(s))
-        exact = Region_faces<AK, EK>(runner_->ak_, runner_->ek_).descendant(region, *root);
+    std::optional<Box<EFT, 4>> exact = points ? std::nullopt : exact_region(s, region);
     return exact_->lines(a_, b_, s, frame, layout, region, as_is, exact ? &*exact : nullptr);
+  }
+
+  // The rational run's region of sub-span s that the interval region
+  // encloses, when it follows from the sub-span's root.
+  std::optional<Box<EFT, 4>> exact_region(std::size_t s, const Box<AFT, 4>& region)
+  {
+    std::optional<Box<EFT, 4>> root = exact_root(s);
+    if (!root) return std::nullopt;
+    return Region_faces<AK, EK>(runner_->ak_, runner_->ek_).descendant(region, *root);
   }
 
   // Sub-span s's root region in rationals: the stage's own when it was made

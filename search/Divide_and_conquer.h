@@ -42,7 +42,7 @@ public:
   // Depth-first, earliest times first; the goal says when to stop.
   void search(const Box4& region, const Pair_formula& formula, Search_goal<FT>& goal, std::size_t depth = 0)
   {
-    if (!goal.can_improve(k_, region.lo[3])) return;
+    if (!policy_.can_enter(k_, goal, region)) return;
     Work_budget::check();
     if (depth == 0 && jumped(goal)) return;
     stats_.visit(depth);

@@ -31,6 +31,10 @@
 //                                      (the leaf was kept: regularised-
 //                                      semantics item 4)
 //     bool takes_child(depth, child)   whether to search this sub-region
+//     template <class K, class FT> bool can_enter(k, goal, region)
+//                                      whether the region could hold a
+//                                      better point (Search_goal::can_improve
+//                                      at its lower time)
 //     bool decides_here(depth, conquers)  a region decides (folds to inside,
 //                                      or is conquered): whether to go on
 //     template <class FT> void found_at(path, on_line, region, formula)
@@ -99,6 +103,11 @@ struct No_filter {
 
   void uncertain_simplification() {}
   bool takes_child(std::size_t, int) const { return true; }
+  template <class K, class FT>
+  bool can_enter(const K& k, const Search_goal<FT>& goal, const Box<FT, 4>& region) const
+  {
+    return goal.can_improve(k, region.lo[3]);
+  }
   bool decides_here(std::size_t, bool) const { return true; }
   template <class FT>
   void found_at(const std::vector<int>&, bool, const Box<FT, 4>&, const Pair_formula&) {}

@@ -338,6 +338,16 @@ BOOST_AUTO_TEST_CASE(earliest_mode_keeps_regions_exact_at_off_grid_ends)
   BOOST_TEST(e.reported()->t_star == "2");
   BOOST_TEST(e.stats.exact_fallbacks == 0u);
   BOOST_TEST(e.stats.exact_lines > 0u);
+  // The span starts at -1e-9, where b already overlaps a by 1e-9, so
+  // t* = tL (expected.json): regions whose lower time is that end tie with
+  // t*, which intervals cannot tell; the comparison is made exactly
+  // (Interval_filter::can_enter) instead of searching again in rationals.
+  Scene early = read_scene_file(std::string(CLASH4D_FIXTURES) + "/contact/touch_only_at_tL_overlap_1e-9.json");
+  Check_answer t = same_answers(early, earliest, "touch_only_at_tL_overlap_1e-9");
+  BOOST_REQUIRE(t.collide);
+  BOOST_TEST(t.reported()->t_star == "-1/1000000000");
+  BOOST_TEST(t.reported()->at_start);
+  BOOST_TEST(t.stats.exact_fallbacks == 0u);
 }
 
 BOOST_AUTO_TEST_CASE(earliest_contact_off_the_grid_is_made_from_its_line)
