@@ -313,13 +313,19 @@ BOOST_AUTO_TEST_CASE(no_fallback_in_general_position)
   BOOST_TEST(e.stats.earliest_by_intervals == 0u);
 }
 
-// Earliest mode on a thin overlap (issue 16): b starts at x = 0.999999999
-// inside a, static, so t* = tL = 0 (expected.json) and the contact point
-// lies on that face, which intervals only enclose; the generic point near
-// it needs to know which planes pass through it, which intervals cannot
-// say. The line that found it is run again in rationals on its own planes
-// and the witness made from it, without a replay of the search, and the
-// answer is the rational run's, witness and generic point included.
+namespace {
+
+// A contact fixture in earliest mode, held to the rational run's answer.
+Check_answer earliest_fixture(const std::string& name)
+{
+  Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/contact/" + name + ".json");
+  Check_options earliest;
+  earliest.earliest = true;
+  return same_answers(scene, earliest, name);
+}
+
+} // namespace
+
 // A sub-span that ends off the grid (b stops at t = 2.000000001): the
 // region's time face there is a number intervals only enclose, so until
 // now an earliest-mode line decided in rationals had no exact region and
@@ -328,10 +334,7 @@ BOOST_AUTO_TEST_CASE(no_fallback_in_general_position)
 // the interval run goes on, and the answer is the rational run's.
 BOOST_AUTO_TEST_CASE(earliest_mode_keeps_regions_exact_at_off_grid_ends)
 {
-  Scene late = read_scene_file(std::string(CLASH4D_FIXTURES) + "/contact/rotated_skew_approach_stop_overlap_1e-9.json");
-  Check_options earliest;
-  earliest.earliest = true;
-  Check_answer e = same_answers(late, earliest, "rotated_skew_approach_stop_overlap_1e-9");
+  Check_answer e = earliest_fixture("rotated_skew_approach_stop_overlap_1e-9");
   BOOST_REQUIRE(e.collide);
   // A rotated copy of approach_stop_at_contact_overlap_1e-9: b's face
   // reaches a's at t = 2 and stops 1e-9 beyond (expected.json).
@@ -342,20 +345,23 @@ BOOST_AUTO_TEST_CASE(earliest_mode_keeps_regions_exact_at_off_grid_ends)
   // t* = tL (expected.json): regions whose lower time is that end tie with
   // t*, which intervals cannot tell; the comparison is made exactly
   // (Interval_filter::can_enter) instead of searching again in rationals.
-  Scene early = read_scene_file(std::string(CLASH4D_FIXTURES) + "/contact/touch_only_at_tL_overlap_1e-9.json");
-  Check_answer t = same_answers(early, earliest, "touch_only_at_tL_overlap_1e-9");
+  Check_answer t = earliest_fixture("touch_only_at_tL_overlap_1e-9");
   BOOST_REQUIRE(t.collide);
   BOOST_TEST(t.reported()->t_star == "-1/1000000000");
   BOOST_TEST(t.reported()->at_start);
   BOOST_TEST(t.stats.exact_fallbacks == 0u);
 }
 
+// Earliest mode on a thin overlap (issue 16): b starts at x = 0.999999999
+// inside a, static, so t* = tL = 0 (expected.json) and the contact point
+// lies on that face, which intervals only enclose; the generic point near
+// it needs to know which planes pass through it, which intervals cannot
+// say. The line that found it is run again in rationals on its own planes
+// and the witness made from it, without a replay of the search, and the
+// answer is the rational run's, witness and generic point included.
 BOOST_AUTO_TEST_CASE(earliest_contact_off_the_grid_is_made_from_its_line)
 {
-  Scene thin = read_scene_file(std::string(CLASH4D_FIXTURES) + "/contact/face_touch_static_overlap_1e-9.json");
-  Check_options earliest;
-  earliest.earliest = true;
-  Check_answer e = same_answers(thin, earliest, "face_touch_static_overlap_1e-9");
+  Check_answer e = earliest_fixture("face_touch_static_overlap_1e-9");
   BOOST_REQUIRE(e.collide);
   BOOST_TEST(e.reported()->t_star == "0");
   BOOST_TEST(e.reported()->at_start);
