@@ -203,9 +203,7 @@ public:
     if (!exact) throw CGAL::Uncertain_conversion_exception("a region's time the intervals only enclose");
     if (stale_) make_exact();
     if (goal.found && !t_star_) throw CGAL::Uncertain_conversion_exception("t* not yet exact");
-    const EK& ek = runner_->ek_;
-    if (ceiling_ && ek.less(*ceiling_, exact->lo[3])) return false;
-    return !goal.found || ek.less(exact->lo[3], *t_star_);
+    return rational_goal(goal.found).can_improve(runner_->ek_, exact->lo[3]);
   }
   // A long search is handed over: past apart_after_ lines, the runner asks
   // whether conflicts close off every term of the pair's formula
@@ -388,6 +386,22 @@ private:
     return std::isfinite(lo) && std::isfinite(hi) && std::floor(hi) >= std::ceil(lo);
   }
 
+  // The earliest-mode goal in rationals: the pair's semantics and ceiling,
+  // and, when found, the exact t* (t_star_, in step).
+  Search_goal<EFT> rational_goal(bool found) const
+  {
+    Search_goal<EFT> e;
+    e.earliest = true;
+    e.semantics = closed_ ? Semantics::closed : Semantics::regularised;
+    e.found = found;
+    if (found) e.t_star = *t_star_;
+    if (ceiling_) {
+      e.has_ceiling = true;
+      e.ceiling = *ceiling_;
+    }
+    return e;
+  }
+
   // t_star_ for the goal the stale line left.
   void make_exact()
   {
@@ -409,13 +423,7 @@ private:
     lines_.reset();   // the span's table may have been another's
     if (!lines->exact()) return std::nullopt;
     ++stats_->exact_lines;
-    Search_goal<EFT> e;
-    e.earliest = true;
-    e.semantics = closed_ ? Semantics::closed : Semantics::regularised;
-    if (ceiling_) {
-      e.has_ceiling = true;
-      e.ceiling = *ceiling_;
-    }
+    Search_goal<EFT> e = rational_goal(false);
     lines->earliest(s.formula, s.line[0], s.line[1], s.line[2], e);
     if (!e.found) throw std::logic_error("internal error: a line the intervals certified found nothing in rationals");
     set_t_star(e.t_star);
@@ -483,15 +491,7 @@ private:
     // classified in intervals first) says more cheaply.
     bool known = false;
     if (!goal.found && !lines_->has_inside(f, i, j, m, goal.semantics, known)) return;
-    Search_goal<EFT> e;
-    e.earliest = true;
-    e.semantics = goal.semantics;
-    e.found = goal.found;
-    if (e.found) e.t_star = *t_star_;
-    if (ceiling_) {
-      e.has_ceiling = true;
-      e.ceiling = *ceiling_;
-    }
+    Search_goal<EFT> e = rational_goal(goal.found);
     lines_->earliest(f, i, j, m, e);
     if (!e.improved) return;
     set_t_star(e.t_star);
