@@ -30,6 +30,7 @@ public:
     Lines(const EK& k, const std::vector<Hyperplane4<EFT>>& table, const Motion_groups<EFT>& groups, bool exact)
       : lines_(k, table, stats_, &groups, &policy_), exact_(exact) {}
     Generate_and_test<EK, Exact_line_filter>& conquer() { return lines_; }
+    const Generate_and_test<EK, Exact_line_filter>& conquer() const { return lines_; }
     // Whether line i, j, m holds a point inside; `known`: it is the line the
     // rational run itself will find (the region was exact).
     bool has_inside(const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Semantics semantics,

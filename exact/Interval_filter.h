@@ -205,6 +205,74 @@ public:
     if (goal.found && !t_star_) throw CGAL::Uncertain_conversion_exception("t* not yet exact");
     return rational_goal(goal.found).can_improve(runner_->ek_, exact->lo[3]);
   }
+  // Earliest mode: a point of a line (an edge's end, a segment's earliest
+  // end) whose time the intervals cannot tell from t*: a tie, the vertex at
+  // t* ending edges of other conquers too. Its time is that of the vertex
+  // where the line's three planes and the one cutting it there meet: one
+  // 4x4 solve on the rational planes of the conquer (on the rational run's
+  // region, exact/Region_faces.h), compared with the exact t* as the
+  // rational run compares it, instead of the whole line in rationals.
+  template <class G, class FT, class Fourth>
+  bool improves(const AK& k, const G& g, const Search_goal<FT>& goal, const FT& t,
+                const std::array<std::size_t, 3>& line, Fourth fourth)
+  {
+    try {
+      return goal.can_improve(k, t);
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      if (!earliest_ || !goal.earliest || fold_unsynced_) throw;
+    }
+    std::size_t p = fourth();
+    if (p == static_cast<std::size_t>(-1)) throw CGAL::Uncertain_conversion_exception("a tie at an unknown vertex");
+    if (stale_) make_exact();
+    if (goal.found && !t_star_) throw CGAL::Uncertain_conversion_exception("t* not yet exact");
+    typename Exact_span<Runner>::Lines& lines = conquer_lines(g);
+    if (!lines.exact()) throw CGAL::Uncertain_conversion_exception("a tie on a widened region");
+    const auto& e = lines.conquer();
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    std::array<EFT, 2> time = meeting_time(e.plane(line[0]), e.plane(line[1]), e.plane(line[2]), e.plane(p));
+    CGAL::Sign den = runner_->ek_.sign(time[1]);
+    if (den == CGAL::ZERO) throw CGAL::Uncertain_conversion_exception("a tie where the planes meet in no point");
+    ++stats_->exact_ties;
+    return rational_goal(goal.found).can_improve(runner_->ek_, runner_->ek_.quotient(time[0], time[1], den));
+  }
+  // Two cuts of a line the intervals cannot order (several planes through
+  // one point the intervals only enclose: the contact vertex, a decimal
+  // face) are ordered on the rational planes of the conquer, when both
+  // planes are known: the rational run's order, instead of the whole line
+  // in rationals. A face's cut needs the rational run's region.
+  template <class G, class FT>
+  CGAL::Sign compare_cuts(const AK& k, const G& g, const FT& a, std::size_t pa, const FT& b, std::size_t pb,
+                          const std::array<std::size_t, 3>& line)
+  {
+    try {
+      return k.compare(a, b);
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      constexpr std::size_t npos = static_cast<std::size_t>(-1);
+      if (pa == npos || pb == npos) throw;
+    }
+    typename Exact_span<Runner>::Lines& lines = conquer_lines(g);
+    std::size_t faces = g.layout().first_face;
+    if ((pa >= faces || pb >= faces || line[0] >= faces || line[1] >= faces || line[2] >= faces) && !lines.exact())
+      throw CGAL::Uncertain_conversion_exception("cuts of a widened region's faces");
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    ++stats_->exact_cut_orders;
+    return lines.conquer().cut_order(line, pa, pb);
+  }
+  // A zero the intervals leave open (a plane parallel to a line, or
+  // containing it, under decimal coefficients the keys do not hold
+  // exactly: the contact face of a thin overlap) is asked of the rational
+  // planes of the conquer: the rational run's zero. Not zero there, the
+  // interval sign is asked later and the line goes to rationals as before.
+  template <class G>
+  bool zero_on_line(const AK&, const G& g, const std::array<std::size_t, 3>& line, std::size_t p, bool along)
+  {
+    typename Exact_span<Runner>::Lines& lines = conquer_lines(g);
+    std::size_t faces = g.layout().first_face;
+    if ((p >= faces || line[0] >= faces || line[1] >= faces || line[2] >= faces) && !lines.exact()) return false;
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    ++stats_->exact_zeros;
+    return lines.conquer().zero_on_line(line, p, along);
+  }
   // A long search is handed over: past apart_after_ lines, the runner asks
   // whether conflicts close off every term of the pair's formula
   // (Filtered_runner::proves_apart; one exact LP per conflict, where
@@ -402,11 +470,12 @@ private:
     return e;
   }
 
-  // t_star_ for the goal the stale line left.
+  // t_star_ for the goal the stale line left (still stale when it cannot
+  // be made: a caller catching the exception must not go on with the old).
   void make_exact()
   {
-    stale_ = false;
     if (!exact_last(false)) throw CGAL::Uncertain_conversion_exception("earliest mode on a widened region");
+    stale_ = false;
   }
 
   // The goal the last line left, and t_star_: that line in rationals, from
@@ -480,11 +549,7 @@ private:
     goal = saved;
     make_keys();
     if (stale_) make_exact();
-    if (!lines_ || lines_conquer_ != g.conquers()) {
-      lines_ = lines_on(span_, frame_, g.layout(), g.region());
-      lines_conquer_ = g.conquers();
-    }
-    if (!lines_->exact()) throw CGAL::Uncertain_conversion_exception("earliest mode on a widened region");
+    if (!conquer_lines(g).exact()) throw CGAL::Uncertain_conversion_exception("earliest mode on a widened region");
     ++stats_->exact_lines;
     // Nothing found yet (no tie with t* possible): most such lines hold no
     // point inside at all, which the verdict alone (its neighbourhoods
@@ -523,6 +588,16 @@ private:
     }
     trail_->formula = f;
     trail_->region_known = true;
+  }
+  // The current conquer's lines in rationals (lines_), made once per conquer.
+  template <class G>
+  typename Exact_span<Runner>::Lines& conquer_lines(const G& g)
+  {
+    if (!lines_ || lines_conquer_ != g.conquers()) {
+      lines_ = lines_on(span_, frame_, g.layout(), g.region());
+      lines_conquer_ = g.conquers();
+    }
+    return *lines_;
   }
   // A conquer's lines in rationals (Exact_span::lines), on the rational
   // run's own region when the intervals only enclose a face of it but it
@@ -583,10 +658,7 @@ private:
   template <class G>
   void decide_in_rationals(G& g, const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<AFT>& goal)
   {
-    if (!lines_ || lines_conquer_ != g.conquers()) {
-      lines_ = lines_on(span_, frame_, g.layout(), g.region());
-      lines_conquer_ = g.conquers();
-    }
+    conquer_lines(g);
     make_keys();
     ++stats_->exact_lines;
     bool known = false;

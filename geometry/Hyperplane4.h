@@ -30,6 +30,18 @@ int proportional(const K& k, const Hyperplane4<FT>& h, const Hyperplane4<FT>& g)
   return k.sign(h.n[j]) == k.sign(g.n[j]) ? 1 : -1;
 }
 
+// The time of the point where four hyperplanes n_k.x + c_k = 0 meet, as
+// num / den by Cramer's rule: den = det[n_k], num = det[n_k0 n_k1 n_k2 -c_k]
+// (rows k); den is zero when they do not meet in one point. No division
+// here: the caller's kernel signs den.
+template <class FT>
+std::array<FT, 2> meeting_time(const Hyperplane4<FT>& a, const Hyperplane4<FT>& b, const Hyperplane4<FT>& c,
+                               const Hyperplane4<FT>& d)
+{
+  auto row = [](const Hyperplane4<FT>& h) { return Vector4<FT>{h.n[0], h.n[1], h.n[2], -h.c}; };
+  return {determinant4(row(a), row(b), row(c), row(d)), determinant4(a.n, b.n, c.n, d.n)};
+}
+
 // Equation (4): the plane n.x + d <= 0 moving with D(t) = v t + o becomes
 // n.x - (n.v) t + (d - n.o) <= 0.
 template <class FT>

@@ -61,6 +61,13 @@ struct Check_stats {
   // earliest_lines_rerun: of those, pairs (regularised) where only that
   // improvement's line was run again in rationals, and the witness made
   // from it, instead of a replay;
+  // exact_ties: points of lines whose time the intervals could not tell
+  // from t* (earliest mode), compared exactly by the time of the one
+  // vertex there instead of the line in rationals;
+  // exact_cut_orders: two cuts of a line the intervals could not order,
+  // ordered on the rational planes instead of the line in rationals;
+  // exact_zeros: planes the intervals could not call parallel to a line
+  // (or containing it), asked of the rational planes;
   // apart_proofs: pairs whose long search was handed over to conflicts
   // that close off every term (search/Apart_pieces.h) and proven apart;
   // apart_attempts: such hand-overs that did not prove it (a term has a
@@ -71,7 +78,8 @@ struct Check_stats {
   std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_witness_replays = 0, exact_regions = 0,
               exact_lines = 0, exact_plane_tests = 0, exact_region_stages = 0, witnesses_by_intervals = 0,
               earliest_by_intervals = 0, apart_proofs = 0, apart_attempts = 0,
-              replay_stages_adopted = 0, earliest_lines_rerun = 0;
+              replay_stages_adopted = 0, earliest_lines_rerun = 0, exact_ties = 0,
+              exact_cut_orders = 0, exact_zeros = 0;
   // Time per stage, seconds
   double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
 
@@ -89,6 +97,9 @@ struct Check_stats {
     if (!o.conquered_box.empty()) conquered_box = o.conquered_box;
     lines += o.lines; points_classified += o.points_classified; cells_tested += o.cells_tested;
     exact_lines += o.exact_lines;
+    exact_ties += o.exact_ties;
+    exact_cut_orders += o.exact_cut_orders;
+    exact_zeros += o.exact_zeros;
     seconds_sbounds += o.seconds_sbounds; seconds_divide += o.seconds_divide; seconds_witness += o.seconds_witness;
   }
 

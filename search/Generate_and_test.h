@@ -90,6 +90,38 @@ public:
   const Plane_layout& layout() const { return layout_; }
   const Box<FT, 4>& region() const { return *region_; }
   std::size_t conquers() const { return conquers_; }
+  const H& plane(std::size_t p) const { return planes_[p]; }
+
+  // Whether plane p is parallel to the line of planes i, j, m (along:
+  // n_p . l = 0), or, being parallel, contains it (its value at a point of
+  // the line is zero), in this kernel: for a policy deciding a zero its own
+  // kernel left open.
+  bool zero_on_line(const std::array<std::size_t, 3>& line, std::size_t p, bool along) const
+  {
+    const H &a = planes_[line[0]], &b = planes_[line[1]], &c = planes_[line[2]];
+    V l = generalised_cross(a.n, b.n, c.n);
+    if (along) return k_.sign(dot(planes_[p].n, l)) == CGAL::ZERO;
+    return k_.sign(planes_[p].value(base_point(a, b, c, l))) == CGAL::ZERO;
+  }
+
+  // The order of the cuts of planes p and q (neither parallel to it) on the
+  // line of planes i, j, m, oriented as on_line orients it (the generalised
+  // cross product; a positive multiple of it in another kernel's planes
+  // scaled by positive factors): for a policy deciding an order its own
+  // kernel left open. The cut of h at base + s l is s = -h(base) / (n.l).
+  CGAL::Sign cut_order(const std::array<std::size_t, 3>& line, std::size_t p, std::size_t q) const
+  {
+    const H &a = planes_[line[0]], &b = planes_[line[1]], &c = planes_[line[2]];
+    V l = generalised_cross(a.n, b.n, c.n);
+    V base = base_point(a, b, c, l);
+    auto cut = [&](const H& h) {
+      FT along = dot(h.n, l);
+      CGAL::Sign sa = k_.sign(along);
+      if (sa == CGAL::ZERO) throw std::logic_error("internal error: a cut of a plane parallel to the line");
+      return k_.quotient(-h.value(base), along, sa);
+    };
+    return k_.compare(cut(planes_[p]), cut(planes_[q]));
+  }
 
   // Another kernel's conquer, rebuilt in this one: the layout's planes made
   // from this kernel's table and region.
@@ -400,10 +432,13 @@ private:
     V base = base_point(planes_[i], planes_[j], planes_[m], l);
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return;
-    // The segment's earliest end at the recorded contact point: a tie with
-    // t*, which cannot improve (Search_goal::vertex).
-    if (goal.vertex_known && at_contact(goal, i, j, m, end_plane(k_.sign(l[3]) != CGAL::NEGATIVE))) return;
-    if (!goal.can_improve(k_, Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
+    // The segment's earliest end (time is linear along it), where the
+    // face end_plane cuts it.
+    auto earliest_end = [&] { return end_plane(k_.sign(l[3]) != CGAL::NEGATIVE); };
+    // At the recorded contact point: a tie with t*, which cannot improve
+    // (Search_goal::vertex).
+    if (goal.vertex_known && at_contact(goal, i, j, m, earliest_end())) return;
+    if (!improves(goal, Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]), earliest_end)) return;
     evaluate_planes(base, l, layout_.first_face);
     std::vector<Cut>& cuts = cuts_;         // reused: a line's cuts, no allocation per line
     cuts.assign({{s_lo, lo_plane_}, {s_hi, hi_plane_}});
@@ -453,7 +488,7 @@ private:
       auto by = [&] { return end.plane == npos && segment_end ? end_plane(up) : end.plane; };
       if (goal.vertex_known && at_contact(goal, i, j, m, by())) continue;
       V early = point_along(base, end.s, l);
-      if (!goal.can_improve(k_, early[3])) continue;
+      if (!improves(goal, early[3], by)) continue;
       FT mid = (cuts[q].s + cuts[q + 1].s) / FT(2);
       if (auto in = classify(f, base, l, mid))
         if (goal.record(k_, *in, early) && goal.earliest) remember_contact(goal, i, j, m, by());
@@ -493,6 +528,16 @@ private:
         }
       }
     return best;
+  }
+
+  // Whether a point of the current line at time t, where plane fourth()
+  // cuts it (npos: not known; asked only by a filter at a tie it cannot
+  // decide), could improve the goal: Search_goal::can_improve, through the
+  // policy (improves).
+  template <class Fourth>
+  bool improves(const Search_goal<FT>& goal, const FT& t, Fourth fourth)
+  {
+    return policy_.improves(k_, *this, goal, t, line_, fourth);
   }
 
   // Whether the point where plane p cuts line i, j, m is the goal's
@@ -535,9 +580,10 @@ private:
     V base = base_point(planes_[i], planes_[j], planes_[m], l);
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return;
+    auto earliest_end = [&] { return end_plane(k_.sign(l[3]) != CGAL::NEGATIVE); };
     // A tie with t* (Search_goal::vertex).
-    if (goal.vertex_known && at_contact(goal, i, j, m, end_plane(k_.sign(l[3]) != CGAL::NEGATIVE))) return;
-    if (!goal.can_improve(k_, Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]))) return;
+    if (goal.vertex_known && at_contact(goal, i, j, m, earliest_end())) return;
+    if (!improves(goal, Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]), earliest_end)) return;
     evaluate_planes(base, l, layout_.first_face);
     collect_points(s_lo, s_hi);
     // Cheap rejection: A (or B) false whatever the planes meeting the closed
@@ -549,7 +595,7 @@ private:
       const Point_on_line& at = points_[groups_at_[g]];
       auto by = [&] { return at.by == npos && at.plane < 0 ? end_plane(g == 0) : at.by; };
       if (goal.vertex_known && at_contact(goal, i, j, m, by())) continue;
-      if (!goal.can_improve(k_, base[3] + at.s * l[3])) continue;
+      if (!improves(goal, base[3] + at.s * l[3], by)) continue;
       for (std::size_t p = 0; p < layout_.first_face; ++p)
         if (group_of_[p] >= 0) sign_[p] = cut_sign_[p] * (g > std::size_t(group_of_[p]) ? 1 : g < std::size_t(group_of_[p]) ? -1 : 0);
       std::size_t before = goal.records;
@@ -695,10 +741,12 @@ private:
   // plane pb. On the keys, a tie is recognised beyond doubt (concurrent):
   // a vertex where five planes meet, as under rational rotations, which
   // intervals would only enclose. Otherwise the kernel's comparison.
+  // Otherwise the kernel's comparison, through the policy (compare_cuts),
+  // which may decide an order the kernel leaves open on the planes.
   CGAL::Sign compare_cuts(const FT& a, std::size_t pa, const FT& b, std::size_t pb) const
   {
     if (line_keyed_ && pa != npos && pb != npos && possibly_zero(a - b) && concurrent(pa, pb)) return CGAL::ZERO;
-    return k_.compare(a, b);
+    return policy_.compare_cuts(k_, *this, a, pa, b, pb, line_);
   }
 
   // Which plane's cut bounds the segment after cut b (plane pb) is taken
@@ -761,10 +809,17 @@ private:
       FT along = which >= 0 ? (which % 2 ? l[which / 2] : -l[which / 2]) : dot(planes_[p].n, l);
       parallel = possibly_zero(along) && certainly_zero(dot(plane_key_[p], line_key()));
     }
-    if (parallel && !holds && line_keyed_) {
+    // Then of the policy (zero_on_line: the other kernel's planes).
+    if (!parallel) {
+      int which = layout_.face[p];
+      FT along = which >= 0 ? (which % 2 ? l[which / 2] : -l[which / 2]) : dot(planes_[p].n, l);
+      parallel = possibly_zero(along) && !certainly_zero(along) && policy_.zero_on_line(k_, *this, line_, p, true);
+    }
+    if (parallel && !holds) {
       int which = layout_.face[p];
       FT value = which >= 0 ? (which % 2 ? base[which / 2] : -base[which / 2]) + planes_[p].c : planes_[p].value(base);
-      holds = possibly_zero(value) && contains_line(p);
+      holds = possibly_zero(value) && ((line_keyed_ && contains_line(p)) ||
+                                       (!certainly_zero(value) && policy_.zero_on_line(k_, *this, line_, p, false)));
     }
     if (int which = layout_.face[p]; which >= 0) {
       // A region face, +-x_a + c: two terms, not the eight of a product.

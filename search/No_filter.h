@@ -50,6 +50,23 @@
 //     void replayed(found)             what going straight there gave
 //     template <class G> void test_line(G& g, f, i, j, m, goal)
 //                                      decide one line (g.test_line)
+//     template <class K, class G, class FT, class Fourth>
+//       bool improves(k, g, goal, t, line, fourth)   whether a point of
+//                                      line (three plane indices of g's
+//                                      layout) at time t, where plane
+//                                      fourth() cuts it (npos: unknown),
+//                                      could improve the goal
+//                                      (Search_goal::can_improve)
+//     template <class K, class G, class FT> CGAL::Sign
+//       compare_cuts(k, g, a, pa, b, pb, line)   the order of cuts a and b
+//                                      (by planes pa and pb of g's layout,
+//                                      or npos) of line (three plane
+//                                      indices): k.compare(a, b)
+//     template <class K, class G> bool zero_on_line(k, g, line, p, along)
+//                                      a zero k left open: whether plane p
+//                                      of g's layout is parallel to line
+//                                      (along), or contains it; false: the
+//                                      kernel's own sign is asked later
 //     int same_plane(k, h, g, entry_h, face_h, entry_g, face_g, region)
 //                                      +1/-1/0 as geometry/Hyperplane4.h's
 //                                      proportional
@@ -120,6 +137,23 @@ struct No_filter {
   void test_line(G& g, const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<FT>& goal)
   {
     g.test_line(f, i, j, m, goal);
+  }
+  template <class K, class G, class FT, class Fourth>
+  bool improves(const K& k, const G&, const Search_goal<FT>& goal, const FT& t, const std::array<std::size_t, 3>&,
+                Fourth) const
+  {
+    return goal.can_improve(k, t);
+  }
+  template <class K, class G, class FT>
+  CGAL::Sign compare_cuts(const K& k, const G&, const FT& a, std::size_t, const FT& b, std::size_t,
+                          const std::array<std::size_t, 3>&) const
+  {
+    return k.compare(a, b);
+  }
+  template <class K, class G>
+  bool zero_on_line(const K&, const G&, const std::array<std::size_t, 3>&, std::size_t, bool) const
+  {
+    return false;
   }
   template <class K, class FT>
   int same_plane(const K& k, const Hyperplane4<FT>& h, const Hyperplane4<FT>& g, long, int, long, int,

@@ -415,3 +415,50 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(random_moving_boxes_agree_with_interval_overlap, K
   BOOST_TEST(collide > 0u);
   BOOST_TEST(contacts > 0u);   // the regularised boundary is exercised
 }
+
+// The exact decisions a filter asks of another kernel's conquer
+// (exact/Interval_filter.h: improves, compare_cuts, zero_on_line), on
+// planes whose answers follow by hand.
+BOOST_AUTO_TEST_CASE_TEMPLATE(vertex_times_cut_orders_and_zeros_on_a_line, K, Kernels)
+{
+  using FT = typename K::FT;
+  K k;
+  auto plane = [](long a, long b, long c, long d, long e) { return H<FT>{{FT(a), FT(b), FT(c), FT(d)}, FT(e)}; };
+  // x = 1, y = 2, z = 3 and x + y + z + t = 10 meet at t = 4; as num / den
+  // the sign of den may be either, the quotient is 4.
+  std::array<FT, 2> t = meeting_time(plane(1, 0, 0, 0, -1), plane(0, 1, 0, 0, -2), plane(0, 0, 1, 0, -3),
+                                     plane(1, 1, 1, 1, -10));
+  BOOST_REQUIRE(k.sign(t[1]) != CGAL::ZERO);
+  BOOST_TEST(k.sign(t[0] - FT(4) * t[1]) == CGAL::ZERO);
+  // Four planes through one line meet in no point: den = 0.
+  BOOST_TEST(k.sign(meeting_time(plane(1, 0, 0, 0, -1), plane(0, 1, 0, 0, -2), plane(0, 0, 1, 0, -3),
+                                 plane(1, 1, 0, 0, -3))[1]) == CGAL::ZERO);
+  // The line x = 1, y = 2, z = 3 (planes 0-2), oriented by the generalised
+  // cross product of their normals: for e_x, e_y, e_z it is (0, 0, 0, M3)
+  // with M3 = det(I3) = 1 (geometry/kernel_ft4.h), so time grows along it.
+  // t = 4 (plane 3) and t = 5 (plane 4) cut it: t = 4 comes first. Plane 5, x + y = 3, contains it; plane 6, x = 2, is
+  // parallel to it without containing it.
+  std::vector<H<FT>> table{plane(1, 0, 0, 0, -1), plane(0, 1, 0, 0, -2), plane(0, 0, 1, 0, -3),
+                           plane(0, 0, 0, 1, -4), plane(0, 0, 0, 2, -10), plane(1, 1, 0, 0, -3),
+                           plane(1, 0, 0, 0, -2)};
+  Check_stats stats;
+  Generate_and_test<K> g(k, table, stats);
+  Plane_layout layout;
+  for (long e = 0; e < 7; ++e) {
+    layout.entry.push_back(e);
+    layout.face.push_back(-1);
+    layout.moves_along.push_back(0);
+    layout.corners.emplace_back();
+  }
+  layout.first_face = 7;
+  g.adopt(layout, region<FT>({0, 0, 0, 0}, {8, 8, 8, 8}));
+  const std::array<std::size_t, 3> line{0, 1, 2};
+  BOOST_TEST(g.cut_order(line, 3, 4) == CGAL::SMALLER);
+  BOOST_TEST(g.cut_order(line, 4, 3) == CGAL::LARGER);
+  BOOST_TEST(g.cut_order(line, 3, 3) == CGAL::EQUAL);
+  BOOST_TEST(!g.zero_on_line(line, 3, true));
+  BOOST_TEST(g.zero_on_line(line, 5, true));
+  BOOST_TEST(g.zero_on_line(line, 5, false));
+  BOOST_TEST(g.zero_on_line(line, 6, true));
+  BOOST_TEST(!g.zero_on_line(line, 6, false));
+}
