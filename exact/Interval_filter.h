@@ -2,8 +2,12 @@
 // filtered exact kernel (exact/Filtered_runner.h). The interval kernel
 // throws CGAL::Uncertain_conversion_exception for a sign it cannot
 // certify; this policy is where that is caught:
-//  - a line of generate-and-test with such a sign is decided in rationals
-//    alone (exact/Exact_span.h) and the run goes on;
+//  - a zero of a plane on a line (parallel, containing), the order of two
+//    cuts of a line, and (earliest mode) a tie of a vertex with t* are
+//    asked of the conquer's rational planes alone (zero_on_line,
+//    compare_cuts, improves);
+//  - a line of generate-and-test with another such sign is decided in
+//    rationals alone (exact/Exact_span.h) and the run goes on;
 //  - two planes the intervals cannot tell apart are compared on the
 //    rational planes;
 //  - a witness the intervals cannot make is left to a rational run;

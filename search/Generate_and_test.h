@@ -130,6 +130,7 @@ public:
     layout_ = layout;
     planes_.clear();
     keys_ = nullptr;
+    memo_line_ = {npos, npos, npos};
     for (std::size_t p = 0; p < layout.entry.size(); ++p)
       planes_.push_back(layout.entry[p] >= 0 ? table_[layout.entry[p]] : face(region, layout.face[p]));
     resize_values();
@@ -215,6 +216,12 @@ private:
     std::size_t by;                       // the plane (a face for an end) cutting there, or npos
   };
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+  // classify's cells around the current line, for the planes through the
+  // point (Neighbourhood::Memo): the same at every point of the line
+  // between cuts. Kept for one examination of one line.
+  typename Neighbourhood<K>::Memo memo_;
+  std::array<std::size_t, 3> memo_line_{npos, npos, npos};
+  std::vector<std::size_t> memo_through_;
   std::vector<Point_on_line> points_;
   std::vector<std::size_t> groups_at_;
   std::vector<long> group_of_;
@@ -294,6 +301,7 @@ private:
     for (int g = 0; common && line_group_ < 0; ++g)
       if (common & (1u << g)) line_group_ = g;
     line_ = {i, j, m};
+    memo_line_ = {npos, npos, npos};   // each examination of a line anew
     find_line_corners(i, j, m);
     line_keyed_ = line_key_made_ = false;
     if (const std::vector<V>* keys = policy_.template normal_keys<FT>()) {
@@ -386,6 +394,7 @@ private:
     ++conquers_;
     region_ = &region;
     planes_.clear();
+    memo_line_ = {npos, npos, npos};
     keys_ = nullptr;
     layout_ = Plane_layout();
     layout_.leaf_plane.assign(table_.size(), {0, 0});
@@ -963,7 +972,12 @@ private:
         if (verdict_only_) return point_along(base, s, l);   // inside: a verdict, the point is not used
       }
     }
-    std::optional<V> d = hood.find_inside(l, normals, inside);
+    if (memo_line_ != line_ || memo_through_ != through) {
+      memo_ = {};
+      memo_line_ = line_;
+      memo_through_ = through;
+    }
+    std::optional<V> d = hood.find_inside(l, normals, inside, &memo_);
     stats_.cells_tested += hood.cells_tested();
     if (!d) return std::nullopt;
     V p = point_along(base, s, l);

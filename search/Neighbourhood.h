@@ -42,11 +42,25 @@ public:
 
   explicit Neighbourhood(const K& k) : k_(k) {}
 
+  // The cells around a line that find_inside enumerated, in its order: a
+  // direction into each and the signs there. Every point of a line between
+  // two cuts has the same planes through it, hence the same cells; only
+  // the formula's answer (inside) differs from one edge to the next. So
+  // the caller may keep one per line and planes through it, and each later
+  // point of it asks inside over these, in the same order, instead of
+  // constructing the rays and sectors again: the same first cell inside,
+  // the same direction. complete: every cell is there.
+  struct Memo {
+    std::vector<std::pair<V, std::vector<int>>> cells;
+    bool complete = false;
+  };
+
   // normals: the planes through the point. inside(signs) says whether the
   // formula holds in the open cell where plane i has sign signs[i] (+1/-1).
   // Returns a direction into the first cell found inside, or nothing.
+  // memo: the cells found for the same line and normals before, or empty.
   template <class Inside>
-  std::optional<V> find_inside(const V& l, const std::vector<V>& normals, Inside inside)
+  std::optional<V> find_inside(const V& l, const std::vector<V>& normals, Inside inside, Memo* memo = nullptr)
   {
     std::size_t n = normals.size();
     std::vector<int> signs(n);
@@ -63,7 +77,16 @@ public:
       }
       return std::nullopt;
     }
-    return around_extreme_rays(l, normals, inside);
+    if (!memo) return around_extreme_rays(l, normals, inside, nullptr);
+    for (const auto& cell : memo->cells) {
+      ++tested_;
+      if (inside(cell.second)) return cell.first;
+    }
+    if (memo->complete) return std::nullopt;
+    memo->cells.clear();   // a prefix: enumerate again, recording every cell
+    std::optional<V> d = around_extreme_rays(l, normals, inside, memo);
+    memo->complete = !d;
+    return d;
   }
 
   // normals: every plane through the point, in no particular relation.
@@ -148,8 +171,9 @@ private:
     }
   }
 
+  // memo: records every cell tested, in order.
   template <class Inside>
-  std::optional<V> around_extreme_rays(const V& l, const std::vector<V>& N, Inside& inside)
+  std::optional<V> around_extreme_rays(const V& l, const std::vector<V>& N, Inside& inside, Memo* memo)
   {
     struct Ray {
       V r;
@@ -174,7 +198,9 @@ private:
       for (std::size_t a = 0; a < sector.size(); ++a) {
         V s = sum(sector[a], sector[(a + 1) % sector.size()]);
         V d = sum(r, scaled_by(s, epsilon(r, s, N, on_r)));
-        if (test(N, d, signs, inside)) return d;
+        bool in = test(N, d, signs, inside);
+        if (memo) memo->cells.emplace_back(d, signs);
+        if (in) return d;
       }
     }
     return std::nullopt;

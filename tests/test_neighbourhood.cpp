@@ -327,3 +327,50 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(random_arrangements_offer_every_cell_once, K, Kern
   BOOST_TEST_MESSAGE(total_cells << " cells checked; " << degenerate << " arrangements not in general position");
   BOOST_TEST(degenerate > 0u);
 }
+
+// The memo of one line's cells (Neighbourhood::Memo, kept by generate-and-
+// test for the edges of one line): a second point of the line, asked with
+// another formula, gets the same first cell inside and the same direction
+// as a fresh enumeration, in the same order, without constructing the
+// rays again. x, y, z and x + y + z around t (14 cells, as above).
+BOOST_AUTO_TEST_CASE_TEMPLATE(a_memo_of_a_lines_cells_gives_the_fresh_answer, K, Kernels)
+{
+  using FT = typename K::FT;
+  K k;
+  const Vector4<FT> l = vec<FT>(0, 0, 0, 1);
+  const std::vector<Vector4<FT>> N{vec<FT>(1, 0, 0, 0), vec<FT>(0, 1, 0, 0), vec<FT>(0, 0, 1, 0), vec<FT>(1, 1, 1, 0)};
+  auto wants = [](const Signs& want) { return [want](const Signs& s) { return s == want; }; };
+  typename Neighbourhood<K>::Memo memo;
+  // Nothing inside: every cell tested (some more than once: a cell has
+  // several extreme rays), the memo complete with each test, 14 cells.
+  Neighbourhood<K> first(k);
+  BOOST_TEST(!first.find_inside(l, N, [](const Signs&) { return false; }, &memo).has_value());
+  BOOST_TEST(memo.complete);
+  const std::size_t tested = memo.cells.size();
+  BOOST_TEST(tested == first.cells_tested());
+  std::set<Signs> distinct;
+  for (const auto& cell : memo.cells) distinct.insert(cell.second);
+  BOOST_TEST(distinct.size() == 14u);
+  for (const Signs& want : {Signs{-1, -1, 1, -1}, Signs{1, 1, 1, 1}, Signs{1, -1, -1, 1}}) {
+    Neighbourhood<K> fresh(k), again(k);
+    std::optional<Vector4<FT>> a = fresh.find_inside(l, N, wants(want));
+    std::optional<Vector4<FT>> b = again.find_inside(l, N, wants(want), &memo);
+    BOOST_REQUIRE(a.has_value());
+    BOOST_REQUIRE(b.has_value());
+    for (int q = 0; q < 4; ++q) BOOST_TEST(k.sign((*a)[q] - (*b)[q]) == CGAL::ZERO, text(want));
+    BOOST_TEST(again.cells_tested() == fresh.cells_tested(), text(want));   // the same order
+    BOOST_TEST(memo.cells.size() == tested);                                // nothing constructed again
+  }
+  // A memo left partial (the first cell asked for was found early) is
+  // completed when a later point needs more of it.
+  typename Neighbourhood<K>::Memo partial;
+  Neighbourhood<K> early(k), late(k), fresh(k);
+  BOOST_TEST(early.find_inside(l, N, [](const Signs&) { return true; }, &partial).has_value());
+  BOOST_TEST(!partial.complete);
+  BOOST_TEST(partial.cells.size() == 1u);
+  std::optional<Vector4<FT>> b = late.find_inside(l, N, wants({1, 1, 1, 1}), &partial);
+  std::optional<Vector4<FT>> a = fresh.find_inside(l, N, wants({1, 1, 1, 1}));
+  BOOST_REQUIRE(a.has_value());
+  BOOST_REQUIRE(b.has_value());
+  for (int q = 0; q < 4; ++q) BOOST_TEST(k.sign((*a)[q] - (*b)[q]) == CGAL::ZERO);
+}
