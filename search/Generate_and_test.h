@@ -749,9 +749,9 @@ private:
   // The order of two cuts of the current line, a by plane pa and b by
   // plane pb. On the keys, a tie is recognised beyond doubt (concurrent):
   // a vertex where five planes meet, as under rational rotations, which
-  // intervals would only enclose. Otherwise the kernel's comparison.
-  // Otherwise the kernel's comparison, through the policy (compare_cuts),
-  // which may decide an order the kernel leaves open on the planes.
+  // intervals would only enclose. Otherwise the kernel's comparison,
+  // through the policy (compare_cuts), which may decide an order the kernel
+  // leaves open on the planes.
   CGAL::Sign compare_cuts(const FT& a, std::size_t pa, const FT& b, std::size_t pb) const
   {
     if (line_keyed_ && pa != npos && pb != npos && possibly_zero(a - b) && concurrent(pa, pb)) return CGAL::ZERO;
@@ -812,33 +812,21 @@ private:
   {
     bool holds = p == line_[0] || p == line_[1] || p == line_[2] || (line_corner_ >= 0 && through_corner(p, line_corner_));
     bool parallel = holds || (line_group_ >= 0 && (layout_.moves_along[p] >> line_group_ & 1u));
-    // The keys are asked only about values the intervals leave open.
-    if (line_keyed_ && !parallel) {
-      int which = layout_.face[p];
-      FT along = which >= 0 ? (which % 2 ? l[which / 2] : -l[which / 2]) : dot(planes_[p].n, l);
-      parallel = possibly_zero(along) && certainly_zero(dot(plane_key_[p], line_key()));
-    }
-    // Then of the policy (zero_on_line: the other kernel's planes).
-    if (!parallel) {
-      int which = layout_.face[p];
-      FT along = which >= 0 ? (which % 2 ? l[which / 2] : -l[which / 2]) : dot(planes_[p].n, l);
+    // A region face, +-x_a + c: two terms, not the eight of a product.
+    int which = layout_.face[p];
+    FT along = parallel ? FT(0) : which >= 0 ? (which % 2 ? l[which / 2] : -l[which / 2]) : dot(planes_[p].n, l);
+    // The keys are asked only about values the intervals leave open, then
+    // the policy (zero_on_line: the other kernel's planes).
+    if (line_keyed_ && !parallel) parallel = possibly_zero(along) && certainly_zero(dot(plane_key_[p], line_key()));
+    if (!parallel)
       parallel = possibly_zero(along) && !certainly_zero(along) && policy_.zero_on_line(k_, *this, line_, p, true);
-    }
-    if (parallel && !holds) {
-      int which = layout_.face[p];
-      FT value = which >= 0 ? (which % 2 ? base[which / 2] : -base[which / 2]) + planes_[p].c : planes_[p].value(base);
+    FT value = holds ? FT(0) : which >= 0 ? (which % 2 ? base[which / 2] : -base[which / 2]) + planes_[p].c
+                                          : planes_[p].value(base);
+    if (parallel && !holds)
       holds = possibly_zero(value) && ((line_keyed_ && contains_line(p)) ||
                                        (!certainly_zero(value) && policy_.zero_on_line(k_, *this, line_, p, false)));
-    }
-    if (int which = layout_.face[p]; which >= 0) {
-      // A region face, +-x_a + c: two terms, not the eight of a product.
-      int a = which / 2;
-      at_base_[p] = holds ? FT(0) : (which % 2 ? base[a] : -base[a]) + planes_[p].c;
-      along_[p] = parallel ? FT(0) : (which % 2 ? l[a] : -l[a]);
-      return;
-    }
-    at_base_[p] = holds ? FT(0) : planes_[p].value(base);
-    along_[p] = parallel ? FT(0) : dot(planes_[p].n, l);
+    at_base_[p] = holds ? FT(0) : value;
+    along_[p] = parallel ? FT(0) : along;
   }
 
   // The segment of the line through planes i, j, m inside the closed region,
