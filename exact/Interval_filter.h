@@ -226,7 +226,7 @@ public:
       if (!earliest_ || !goal.earliest || fold_unsynced_) throw;
     }
     std::size_t p = fourth();
-    if (p == static_cast<std::size_t>(-1)) throw CGAL::Uncertain_conversion_exception("a tie at an unknown vertex");
+    if (p == npos) throw CGAL::Uncertain_conversion_exception("a tie at an unknown vertex");
     if (stale_) make_exact();
     if (goal.found && !t_star_) throw CGAL::Uncertain_conversion_exception("t* not yet exact");
     typename Exact_span<Runner>::Lines& lines = conquer_lines(g);
@@ -251,16 +251,13 @@ public:
     try {
       return k.compare(a, b);
     } catch (const CGAL::Uncertain_conversion_exception&) {
-      constexpr std::size_t npos = static_cast<std::size_t>(-1);
       if (pa == npos || pb == npos) throw;
     }
-    typename Exact_span<Runner>::Lines& lines = conquer_lines(g);
-    std::size_t faces = g.layout().first_face;
-    if ((pa >= faces || pb >= faces || line[0] >= faces || line[1] >= faces || line[2] >= faces) && !lines.exact())
-      throw CGAL::Uncertain_conversion_exception("cuts of a widened region's faces");
+    const auto* e = exact_planes(g, line, pa, pb);
+    if (!e) throw CGAL::Uncertain_conversion_exception("cuts of a widened region's faces");
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     ++stats_->exact_cut_orders;
-    return lines.conquer().cut_order(line, pa, pb);
+    return e->cut_order(line, pa, pb);
   }
   // A zero the intervals leave open (a plane parallel to a line, or
   // containing it, under decimal coefficients the keys do not hold
@@ -270,12 +267,11 @@ public:
   template <class G>
   bool zero_on_line(const AK&, const G& g, const std::array<std::size_t, 3>& line, std::size_t p, bool along)
   {
-    typename Exact_span<Runner>::Lines& lines = conquer_lines(g);
-    std::size_t faces = g.layout().first_face;
-    if ((p >= faces || line[0] >= faces || line[1] >= faces || line[2] >= faces) && !lines.exact()) return false;
+    const auto* e = exact_planes(g, line, p, p);
+    if (!e) return false;
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     ++stats_->exact_zeros;
-    return lines.conquer().zero_on_line(line, p, along);
+    return e->zero_on_line(line, p, along);
   }
   // A long search is handed over: past apart_after_ lines, the runner asks
   // whether conflicts close off every term of the pair's formula
@@ -402,6 +398,7 @@ public:
   }
 
 private:
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);   // no plane (Generate_and_test's)
   Runner* runner_ = nullptr;
   std::unique_ptr<Exact_span<Runner>> exact_;
   Search_trail* trail_ = nullptr;
@@ -592,6 +589,18 @@ private:
     }
     trail_->formula = f;
     trail_->region_known = true;
+  }
+  // The current conquer in rationals, when the line's planes and p and q
+  // there are the rational run's: table planes always, region faces only
+  // on the rational run's region; nothing otherwise.
+  template <class G>
+  const Generate_and_test<EK, Exact_line_filter>* exact_planes(const G& g, const std::array<std::size_t, 3>& line,
+                                                               std::size_t p, std::size_t q)
+  {
+    typename Exact_span<Runner>::Lines& lines = conquer_lines(g);
+    std::size_t faces = g.layout().first_face;
+    bool face = p >= faces || q >= faces || line[0] >= faces || line[1] >= faces || line[2] >= faces;
+    return face && !lines.exact() ? nullptr : &lines.conquer();
   }
   // The current conquer's lines in rationals (lines_), made once per conquer.
   template <class G>

@@ -98,10 +98,9 @@ public:
   // kernel left open.
   bool zero_on_line(const std::array<std::size_t, 3>& line, std::size_t p, bool along) const
   {
-    const H &a = planes_[line[0]], &b = planes_[line[1]], &c = planes_[line[2]];
-    V l = generalised_cross(a.n, b.n, c.n);
-    if (along) return k_.sign(dot(planes_[p].n, l)) == CGAL::ZERO;
-    return k_.sign(planes_[p].value(base_point(a, b, c, l))) == CGAL::ZERO;
+    V l, base;
+    line_of(line, l, base);
+    return k_.sign(along ? dot(planes_[p].n, l) : planes_[p].value(base)) == CGAL::ZERO;
   }
 
   // The order of the cuts of planes p and q (neither parallel to it) on the
@@ -111,9 +110,8 @@ public:
   // kernel left open. The cut of h at base + s l is s = -h(base) / (n.l).
   CGAL::Sign cut_order(const std::array<std::size_t, 3>& line, std::size_t p, std::size_t q) const
   {
-    const H &a = planes_[line[0]], &b = planes_[line[1]], &c = planes_[line[2]];
-    V l = generalised_cross(a.n, b.n, c.n);
-    V base = base_point(a, b, c, l);
+    V l, base;
+    line_of(line, l, base);
     auto cut = [&](const H& h) {
       FT along = dot(h.n, l);
       CGAL::Sign sa = k_.sign(along);
@@ -123,6 +121,16 @@ public:
     return k_.compare(cut(planes_[p]), cut(planes_[q]));
   }
 
+  // The direction of the line of three planes (the generalised cross
+  // product of their normals) and a point of it: for a policy's questions
+  // about a line, asked outside on_line.
+  void line_of(const std::array<std::size_t, 3>& line, V& l, V& base) const
+  {
+    const H &a = planes_[line[0]], &b = planes_[line[1]], &c = planes_[line[2]];
+    l = generalised_cross(a.n, b.n, c.n);
+    base = base_point(a, b, c, l);
+  }
+
   // Another kernel's conquer, rebuilt in this one: the layout's planes made
   // from this kernel's table and region.
   void adopt(const Plane_layout& layout, const Box<FT, 4>& region)
@@ -130,7 +138,6 @@ public:
     layout_ = layout;
     planes_.clear();
     keys_ = nullptr;
-    memo_line_ = {npos, npos, npos};
     for (std::size_t p = 0; p < layout.entry.size(); ++p)
       planes_.push_back(layout.entry[p] >= 0 ? table_[layout.entry[p]] : face(region, layout.face[p]));
     resize_values();
@@ -218,10 +225,10 @@ private:
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
   // classify's cells around the current line, for the planes through the
   // point (Neighbourhood::Memo): the same at every point of the line
-  // between cuts. Kept for one examination of one line.
+  // between cuts. Kept for one examination of one line (memo_open_).
   typename Neighbourhood<K>::Memo memo_;
-  std::array<std::size_t, 3> memo_line_{npos, npos, npos};
   std::vector<std::size_t> memo_through_;
+  bool memo_open_ = false;
   std::vector<Point_on_line> points_;
   std::vector<std::size_t> groups_at_;
   std::vector<long> group_of_;
@@ -301,7 +308,7 @@ private:
     for (int g = 0; common && line_group_ < 0; ++g)
       if (common & (1u << g)) line_group_ = g;
     line_ = {i, j, m};
-    memo_line_ = {npos, npos, npos};   // each examination of a line anew
+    memo_open_ = false;   // each examination of a line anew
     find_line_corners(i, j, m);
     line_keyed_ = line_key_made_ = false;
     if (const std::vector<V>* keys = policy_.template normal_keys<FT>()) {
@@ -394,7 +401,6 @@ private:
     ++conquers_;
     region_ = &region;
     planes_.clear();
-    memo_line_ = {npos, npos, npos};
     keys_ = nullptr;
     layout_ = Plane_layout();
     layout_.leaf_plane.assign(table_.size(), {0, 0});
@@ -960,10 +966,11 @@ private:
         if (verdict_only_) return point_along(base, s, l);   // inside: a verdict, the point is not used
       }
     }
-    if (memo_line_ != line_ || memo_through_ != through) {
-      memo_ = {};
-      memo_line_ = line_;
+    if (!memo_open_ || memo_through_ != through) {
+      memo_.cells.clear();
+      memo_.complete = false;
       memo_through_ = through;
+      memo_open_ = true;
     }
     std::optional<V> d = hood.find_inside(l, normals, inside, &memo_);
     stats_.cells_tested += hood.cells_tested();
