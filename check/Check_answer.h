@@ -20,6 +20,10 @@ struct Check_options {
   // conflicts (exact/Interval_filter.h, decides_here): generate-and-test
   // decides every pair, as in the paper (tests of that search).
   bool apart_proofs = true;
+  // false: convex pairs too go through the paper's cascade instead of
+  // being decided by linear programs first (search/Convex_pair.h;
+  // --no-convex-lp: reproduction, and tests of the cascade).
+  bool convex_lp = true;
   bool json = false;          // output form (used by the command line only)
   Semantics semantics = Semantics::regularised;
 };

@@ -155,6 +155,7 @@ Check_answer run_check(const K& k, const Scene& scene, const Check_options& opti
   std::vector<std::pair<int, int>> pairs = candidate_pairs(k, model, settled, scene, answer.stats, options.semantics);
   auto check = [&](std::size_t i, const typename K::FT* ceiling, Semantics semantics, Check_stats& stats) {
     Checker checker(k, model, settled, stats, options.sbounds);
+    checker.use_convex_lp(options.convex_lp);
     return checker.check_pair(pairs[i].first, pairs[i].second, options.earliest, ceiling, semantics);
   };
   run_pairs(k, model, pairs, options, check, answer);

@@ -8,6 +8,7 @@
 
 #include "model/Extrusion.h"
 #include "model/Point_classifier.h"
+#include "search/Convex_pair.h"
 #include "search/Divide_and_conquer.h"
 #include "search/Span_region.h"
 #include "search/Witness.h"
@@ -53,30 +54,28 @@ public:
   Collision_checker(const Collision_checker&) = delete;
   Collision_checker& operator=(const Collision_checker&) = delete;
 
+  // Convex pairs are decided by linear programs first (search/Convex_pair.h,
+  // beyond the paper); off, every pair goes through the paper's cascade.
+  void use_convex_lp(bool on) { convex_lp_ = on; }
+
   // earliest: find t* (§5) rather than stopping at the first witness;
   // ceiling: in that mode, ignore collisions that start at or after it.
   Pair_result<FT> check_pair(int a, int b, bool earliest = false, const FT* ceiling = nullptr,
                              Semantics semantics = Semantics::regularised)
   {
-    ++stats_.pairs;
     Pair_result<FT> r;
-    r.a = a;
-    r.b = b;
-    r.semantics = semantics;
-    Search_goal<FT> goal;
-    goal.earliest = earliest;
-    goal.semantics = semantics;
-    if (ceiling) { goal.has_ceiling = true; goal.ceiling = *ceiling; }
-    std::size_t index = 0;
-    for (const auto& span : model_.sub_spans({a, b})) {
-      std::size_t here = index++;
-      if (!goal.can_improve(k_, span.lo)) break;   // spans come in time order
-      if (policy_.skips_span(here)) continue;
-      ++stats_.sub_spans;
-      check_span(a, b, here, span, r, goal);
-      if (goal.done() || policy_.stops_after(here)) break;
-    }
-    r.earliest = earliest && r.collide;
+    spans(a, b, earliest, ceiling, semantics, r, false);
+    return r;
+  }
+
+  // The same answer when the linear programs decide every sub-span it
+  // needs (the model's S-bounds are not read); nothing when a sub-span is
+  // left to the cascade or the pair is not convex.
+  std::optional<Pair_result<FT>> check_convex_pair(int a, int b, bool earliest, const FT* ceiling, Semantics semantics)
+  {
+    Pair_result<FT> r;
+    if (!convex_lp_ || !Convex_pair<K>::applies(model_, a, b) || !spans(a, b, earliest, ceiling, semantics, r, true))
+      return std::nullopt;
     return r;
   }
 
@@ -120,7 +119,7 @@ private:
   const K& k_;
   const Scene_model<K>& model_;
   Check_stats& stats_;
-  bool use_sbounds_;
+  bool use_sbounds_, convex_lp_ = true;
   const std::vector<Bounds>& settled_;
   Policy own_policy_;
   Policy& policy_;
@@ -130,12 +129,56 @@ private:
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - s).count();
   }
 
-  // One sub-span: its region (§4.3), then its extrusion searched (§4.1,
-  // §4.2), then the witness of what was found.
-  void check_span(int a, int b, std::size_t index, const Time_span<FT>& span, Pair_result<FT>& r, Search_goal<FT>& goal)
+  // The pair's sub-spans in time order, until the goal is met; false when
+  // convex_only and a sub-span was left to the cascade.
+  bool spans(int a, int b, bool earliest, const FT* ceiling, Semantics semantics, Pair_result<FT>& r,
+             bool convex_only)
+  {
+    ++stats_.pairs;
+    r.a = a;
+    r.b = b;
+    r.semantics = semantics;
+    Search_goal<FT> goal;
+    goal.earliest = earliest;
+    goal.semantics = semantics;
+    if (ceiling) { goal.has_ceiling = true; goal.ceiling = *ceiling; }
+    std::optional<Convex_pair<K>> convex;
+    if (convex_lp_ && Convex_pair<K>::applies(model_, a, b)) convex.emplace(k_, model_, a, b);
+    std::size_t index = 0;
+    for (const auto& span : model_.sub_spans({a, b})) {
+      std::size_t here = index++;
+      if (!goal.can_improve(k_, span.lo)) break;   // spans come in time order
+      if (policy_.skips_span(here)) continue;
+      ++stats_.sub_spans;
+      if (!check_span(a, b, here, span, r, goal, convex ? &*convex : nullptr, convex_only)) return false;
+      if (goal.done() || policy_.stops_after(here)) break;
+    }
+    r.earliest = earliest && r.collide;
+    return true;
+  }
+
+  // One sub-span: a convex pair's linear programs, or its region (§4.3),
+  // then its extrusion searched (§4.1, §4.2); then the witness of what was
+  // found. False: left to the cascade, when convex_only.
+  bool check_span(int a, int b, std::size_t index, const Time_span<FT>& span, Pair_result<FT>& r,
+                  Search_goal<FT>& goal, Convex_pair<K>* convex, bool convex_only)
   {
     auto start = std::chrono::steady_clock::now();
     Moving A = moving_on(model_, a, span, settled_[a]), B = moving_on(model_, b, span, settled_[b]);
+    if (convex) {
+      goal.improved = false;
+      typename Convex_pair<K>::Verdict v = policy_.convex_stage([&] { return convex->decide(A, B, span, goal); });
+      stats_.seconds_divide += seconds_since(start);
+      if (v == Convex_pair<K>::Verdict::undecided) {
+        ++stats_.convex_undecided;
+        if (convex_only) return false;
+      } else {
+        ++stats_.convex_spans;
+        if (goal.improved) found(index, goal, Vector3<FT>{FT(0), FT(0), FT(0)}, A, B, span, r);
+        return true;
+      }
+      start = std::chrono::steady_clock::now();
+    }
     Vector3<FT> shear;
     std::array<bool, 3> frame_of_a{};
     Span_stats ss;
@@ -143,7 +186,7 @@ private:
     stats_.seconds_sbounds += seconds_since(start);
     if (!region) {
       stats_.spans.push_back(ss);
-      return;
+      return true;
     }
 
     start = std::chrono::steady_clock::now();
@@ -157,15 +200,20 @@ private:
     goal.improved = false;
     policy_.search_span(a, b, index, frame_of_a);
     dc.search(*region, formula, goal);
-    if (goal.improved) policy_.found_in_span(index);
     stats_.seconds_divide += seconds_since(start);
     if (!dc.conquered().empty)
       for (int q = 0; q < 4; ++q) stats_.conquered_box.push_back(range(dc.conquered().lo[q], dc.conquered().hi[q]));
-    if (!goal.improved) return;
+    if (goal.improved) found(index, goal, shear, A, B, span, r);
+    return true;
+  }
 
-    // Found here (or, earliest mode, earlier than before): the witness and
-    // contact point are made with this span's planes and frame.
-    start = std::chrono::steady_clock::now();
+  // Found on sub-span `index` (or, earliest mode, earlier than before): the
+  // witness and contact point are made with this span's planes and frame.
+  void found(std::size_t index, const Search_goal<FT>& goal, const Vector3<FT>& shear, const Moving& A,
+             const Moving& B, const Time_span<FT>& span, Pair_result<FT>& r)
+  {
+    policy_.found_in_span(index);
+    auto start = std::chrono::steady_clock::now();
     r.collide = true;
     r.has_witness = false;
     if (policy_.witness_certified()) policy_.attempt([&] { make_witness(goal, shear, A, B, span, r); });

@@ -352,7 +352,7 @@ struct Check_args : Scene_args {
   std::string certificate;
   double certificate_max_mb = 256;
   double tolerance = 0;
-  bool stats = false, no_sbounds = false;
+  bool stats = false, no_sbounds = false, no_convex_lp = false;
   std::string semantics = "regularised";
 };
 
@@ -373,6 +373,9 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
   cmd->add_flag("--stats", a->stats, "report what each stage did");
   cmd->add_flag("--no-sbounds", a->no_sbounds,
                 "bound by the paper's original procedure (boxes at velocity changes) instead of S-bounds; for reproducing §4.1");
+  cmd->add_flag("--no-convex-lp", a->no_convex_lp,
+                "search pairs of convex objects with the paper's cascade too, instead of deciding them by linear "
+                "programs first (beyond the paper); for reproducing the paper's statistics");
   cmd->add_option("--certificate", a->certificate,
                   "also write a proof of the answer to FILE, checkable by 'clash4d verify SCENE FILE' "
                   "(exact kernels only; docs/certificate-format.md)");
@@ -389,6 +392,7 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
       return CLASH4D_EXIT_INVALID;
     }
     a->options.sbounds = !a->no_sbounds;
+    a->options.convex_lp = !a->no_convex_lp;
     a->options.json = a->as_json;
     a->options.semantics = *semantics_from_name(a->semantics);
     return with_scene(*a, err, [&](const Scene& scene) {

@@ -68,6 +68,8 @@ json stats_json(const Check_stats& s)
           {"lines", s.lines},
           {"points_classified", s.points_classified},
           {"cells_tested", s.cells_tested},
+          {"convex_spans", s.convex_spans},
+          {"convex_undecided", s.convex_undecided},
           {"exact_fallbacks", s.exact_fallbacks},
           {"exact_witness_runs", s.exact_witness_runs},
           {"exact_witness_replays", s.exact_witness_replays},
@@ -84,6 +86,7 @@ json stats_json(const Check_stats& s)
           {"apart_attempts", s.apart_attempts},
           {"replay_stages_adopted", s.replay_stages_adopted},
           {"earliest_lines_rerun", s.earliest_lines_rerun},
+          {"convex_rational", s.convex_rational},
           {"seconds", {{"model", s.seconds_model}, {"sweep", s.seconds_sweep}, {"sbounds", s.seconds_sbounds},
                        {"divide_and_conquer", s.seconds_divide}, {"witness", s.seconds_witness}}}};
 }

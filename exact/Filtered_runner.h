@@ -58,6 +58,7 @@ public:
     emodel_.t_lo = ek_.from_rational(scene.t_lo);
     emodel_.t_hi = ek_.from_rational(scene.t_hi);
     emodel_.set_exact_span(scene);
+    emodel_.scene = &scene;
     emodel_.objects.resize(scene.objects.size());
     esettled_.resize(scene.objects.size());
     for (std::size_t i = 0; i < scene.objects.size(); ++i) emodel_.objects[i].name = scene.objects[i].name;
@@ -65,6 +66,7 @@ public:
 
   Check_answer check(const Check_options& options)
   {
+    convex_lp_ = options.convex_lp;
     Check_answer answer;
     std::vector<std::pair<int, int>> pairs;
     if (!prepare(answer.stats, pairs, options.semantics)) {
@@ -141,6 +143,7 @@ private:
         if (!options.apart_proofs) policy.never_hand_over();
         Collision_checker<AK, Interval_filter<Filtered_runner>> checker(ak_, amodel_, asettled_, astats, use_sbounds_,
                                                                         &policy);
+        checker.use_convex_lp(convex_lp_);
         Pair_result<AFT> found =
             checker.check_pair(a, b, options.earliest, ceiling ? &aceiling : nullptr, options.semantics);
         if (!found.collide) {
@@ -171,6 +174,8 @@ private:
       } catch (const CGAL::Uncertain_conversion_exception&) {
         ++fallbacks_;
         trail.complete = false;
+      } catch (const Convex_uncertain&) {
+        trail.complete = false;   // decided below, in rationals
       } catch (const Proven_apart&) {
         // The search stopped inside a span: its time, and the proof's, are
         // the search's.
@@ -180,6 +185,7 @@ private:
         return Pair_result<EFT>();
       }
     }
+    if (std::optional<Pair_result<EFT>> r = convex_in_rationals(a, b, options, ceiling, stats)) return *r;
     need_exact(a);
     need_exact(b);
     if (earliest_trail)
@@ -191,7 +197,29 @@ private:
                                                witness_replays_))
         return *r;
     Collision_checker<EK> checker(ek_, emodel_, esettled_, stats, use_sbounds_);
+    checker.use_convex_lp(convex_lp_);
     return checker.check_pair(a, b, options.earliest, ceiling, options.semantics);
+  }
+
+  // A convex pair the interval run could not decide or answer as points
+  // (a touch: a multiplier sum that is exactly zero; a vertex at t*): its
+  // linear programs in rationals alone, on EK's model without S-bounds
+  // (search/Convex_pair.h), when they decide every sub-span; the rational
+  // run decides the pair by them first, so this is its answer.
+  std::optional<Pair_result<EFT>> convex_in_rationals(int a, int b, const Check_options& options, const EFT* ceiling,
+                                                      Check_stats& stats)
+  {
+    if (!convex_lp_ || !Convex_pair<AK>::applies(amodel_, a, b)) return std::nullopt;
+    need_model(a);
+    need_model(b);
+    Check_stats estats;
+    Collision_checker<EK> checker(ek_, emodel_, esettled_, estats, use_sbounds_);
+    std::optional<Pair_result<EFT>> r = checker.check_convex_pair(a, b, options.earliest, ceiling, options.semantics);
+    if (r) {
+      stats = estats;
+      ++convex_rational_;
+    }
+    return r;
   }
   // A long search handed over (Interval_filter::decides_here):
   // whether conflicts close off every term of the pair's formula on the
@@ -254,6 +282,7 @@ private:
     Check_stats rstats;
     Replay replay(trail, &stages);
     Collision_checker<EK, Replay> checker(ek_, emodel_, esettled_, rstats, use_sbounds_, &replay);
+    checker.use_convex_lp(convex_lp_);
     Pair_result<EFT> r = checker.check_pair(a, b, earliest, nullptr, semantics);
     if (!r.collide || trail.diverged) return std::nullopt;
     ++count;
@@ -264,7 +293,7 @@ private:
   }
 
   const Scene& scene_;
-  bool use_sbounds_;
+  bool use_sbounds_, convex_lp_ = true;
   AK ak_;
   EK ek_;
   Scene_model<AK> amodel_;
@@ -275,7 +304,7 @@ private:
   std::unique_ptr<std::once_flag[]> built_, settled_;   // EK's model of an object, and its S-bounds
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
-      stages_adopted_{0}, lines_rerun_{0};
+      stages_adopted_{0}, lines_rerun_{0}, convex_rational_{0};
 
   // A witness AK made and verified on a certified path, in EK's numbers.
   // Regularised, its coordinates are grid points (Witness::snap), exact
@@ -421,6 +450,7 @@ private:
     stats.apart_attempts = apart_attempts_.load();
     stats.replay_stages_adopted = stages_adopted_.load();
     stats.earliest_lines_rerun = lines_rerun_.load();
+    stats.convex_rational = convex_rational_.load();
   }
 
   static double seconds_since(std::chrono::steady_clock::time_point t)

@@ -53,6 +53,10 @@ namespace clash4d {
 
 // The interval run stopped: the runner proved the pair apart.
 struct Proven_apart {};
+// The interval run stopped in a convex pair's linear programs (a sign they
+// could not certify: a touch's multiplier sum, a vertex on a fifth row):
+// the runner decides them in rationals (Filtered_runner::convex_in_rationals).
+struct Convex_uncertain {};
 
 template <class Runner>
 class Interval_filter {
@@ -81,6 +85,15 @@ public:
   bool earliest_trail() const { return earliest_ && trail_->complete && !trail_->approximate && !pending_; }
 
   bool skips_span(std::size_t) const { return false; }
+  template <class Decide>
+  auto convex_stage(Decide decide)
+  {
+    try {
+      return decide();
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      throw Convex_uncertain();
+    }
+  }
   // The region stage; where the intervals leave a decision open (S-bounds
   // meeting exactly: objects in contact), the stage in rationals, adopted:
   // the run goes on from the rational run's own region and pruning.

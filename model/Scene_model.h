@@ -28,6 +28,10 @@ struct Time_span {
   // decided on the scene's rationals (sub_spans): closed semantics keeps a
   // region's time face at an end only then (Span_region::on_grid).
   bool lo_on_grid = true, hi_on_grid = true;
+  // The ends as the scene's own numbers (in the model that made the span):
+  // for guesses that must be the same in every kernel (search/Convex_pair.h).
+  const Rational* exact_lo = nullptr;
+  const Rational* exact_hi = nullptr;
 };
 
 template <class K>
@@ -43,11 +47,15 @@ struct Scene_model {
   // object of a pair is bounded. One exponent from the scene's rationals,
   // the same in every kernel (path identity); -1: no pair needs it.
   int far_exponent = -1;
+  // The scene the model was built from (guesses made from its own numbers,
+  // the same in every kernel: search/Convex_pair.h); none: no such guesses.
+  const Scene* scene = nullptr;
 
   static Scene_model build(const K& k, const Scene& scene)
   {
     Scene_model m;
     m.kernel = k;
+    m.scene = &scene;
     m.t_lo = k.from_rational(scene.t_lo);
     m.t_hi = k.from_rational(scene.t_hi);
     m.set_exact_span(scene);
@@ -77,23 +85,24 @@ struct Scene_model {
   {
     bool still = true;   // no velocity change at all: the whole span (most pairs)
     for (int i : which) still = still && objects[i].motion.times.empty();
-    if (still && exact_span) return {{t_lo, t_hi, lo_on_grid, hi_on_grid}};
-    std::vector<std::pair<Rational, FT>> exact{{exact_t_lo, t_lo}, {exact_t_hi, t_hi}};
+    if (still && exact_span) return {{t_lo, t_hi, lo_on_grid, hi_on_grid, &exact_t_lo, &exact_t_hi}};
+    std::vector<std::pair<const Rational*, FT>> exact{{&exact_t_lo, t_lo}, {&exact_t_hi, t_hi}};
     bool known = exact_span;
     for (int i : which) {
       const Motion_path<FT>& m = objects[i].motion;
       known = known && m.exact_times.size() == m.times.size();
       for (std::size_t k = 0; known && k < m.times.size(); ++k)
         if (exact_t_lo < m.exact_times[k] && m.exact_times[k] < exact_t_hi)
-          exact.emplace_back(m.exact_times[k], m.times[k]);
+          exact.emplace_back(&m.exact_times[k], m.times[k]);
     }
     if (!known) throw std::logic_error("internal error: a model without its scene's times");
-    std::sort(exact.begin(), exact.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-    auto same = [](const auto& x, const auto& y) { return x.first == y.first; };
+    std::sort(exact.begin(), exact.end(), [](const auto& x, const auto& y) { return *x.first < *y.first; });
+    auto same = [](const auto& x, const auto& y) { return *x.first == *y.first; };
     exact.erase(std::unique(exact.begin(), exact.end(), same), exact.end());
     std::vector<Time_span<FT>> spans;
     for (std::size_t i = 0; i + 1 < exact.size(); ++i)
-      spans.push_back({exact[i].second, exact[i + 1].second, on_grid(exact[i].first), on_grid(exact[i + 1].first)});
+      spans.push_back({exact[i].second, exact[i + 1].second, on_grid(*exact[i].first), on_grid(*exact[i + 1].first),
+                       exact[i].first, exact[i + 1].first});
     return spans;
   }
 

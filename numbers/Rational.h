@@ -36,6 +36,17 @@ inline bool small_double(mpz_srcptr z, double& out)
   return true;
 }
 
+// The double nearest to q, as round_to_nearest, with the quick path for a
+// numerator and denominator of at most 53 bits (exact doubles, whose IEEE
+// quotient is the nearest double when the rounding mode is to nearest, as
+// the caller must make it). How the double instantiation reads a scene.
+inline double nearest_double(const Rational& q)
+{
+  double n = 0, d = 0;
+  if (small_double(mpq_numref(q.mpq()), n) && small_double(mpq_denref(q.mpq()), d)) return n / d;
+  return round_to_nearest(q);
+}
+
 // 2^e as a double, made from its bits in the normal range (no libm call:
 // the grid roundings of the search take it on every comparison).
 inline double power_of_two_double(int e)

@@ -37,6 +37,9 @@ struct Check_stats {
   std::vector<Stat_range> conquered_box;   // hull of the regions conquered (last span), per axis
   // Generate-and-test (§4.2, Appendix A)
   std::size_t lines = 0, points_classified = 0, cells_tested = 0;
+  // Convex pairs (search/Convex_pair.h, beyond the paper): sub-spans the
+  // linear programs decided, and those they left to the cascade.
+  std::size_t convex_spans = 0, convex_undecided = 0;
   // Filtered exact kernel (set once per run; 0 for other kernels):
   // exact_fallbacks: interval runs (object bounds, pairs) stopped by a sign
   // the intervals could not certify, each then redone in rationals;
@@ -74,12 +77,15 @@ struct Check_stats {
   // point, or the step bound), the search going on;
   // replay_stages_adopted: sub-span region stages a rational replay took
   // from the interval run (made there in rationals, or in intervals with
-  // every number exact) instead of making them again.
+  // every number exact) instead of making them again;
+  // convex_rational: convex pairs whose linear programs the intervals could
+  // not decide or answer as points (a touch, a vertex at t*), decided by
+  // them in rationals alone (search/Convex_pair.h).
   std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_witness_replays = 0, exact_regions = 0,
               exact_lines = 0, exact_plane_tests = 0, exact_region_stages = 0, witnesses_by_intervals = 0,
               earliest_by_intervals = 0, apart_proofs = 0, apart_attempts = 0,
               replay_stages_adopted = 0, earliest_lines_rerun = 0, exact_ties = 0,
-              exact_cut_orders = 0, exact_zeros = 0;
+              exact_cut_orders = 0, exact_zeros = 0, convex_rational = 0;
   // Time per stage, seconds
   double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
 
@@ -96,6 +102,7 @@ struct Check_stats {
     if (o.max_leaves_at_conquer > max_leaves_at_conquer) max_leaves_at_conquer = o.max_leaves_at_conquer;
     if (!o.conquered_box.empty()) conquered_box = o.conquered_box;
     lines += o.lines; points_classified += o.points_classified; cells_tested += o.cells_tested;
+    convex_spans += o.convex_spans; convex_undecided += o.convex_undecided;
     exact_lines += o.exact_lines;
     exact_ties += o.exact_ties;
     exact_cut_orders += o.exact_cut_orders;

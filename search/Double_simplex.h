@@ -1,74 +1,99 @@
-// The dual LP of search/Motzkin_lp.h in doubles, for a guess at which few
-// rows carry the multipliers.
+// Small linear programs in doubles, for guesses only: which few rows carry
+// the multipliers of a Motzkin proof (search/Motzkin_lp.h), and where a
+// convex pair's programs are optimal (search/Convex_pair.h). What is
+// answered is always made from the guess and checked in exact arithmetic.
 #ifndef CLASH4D_SEARCH_DOUBLE_SIMPLEX_H
 #define CLASH4D_SEARCH_DOUBLE_SIMPLEX_H
 
-#include "search/Motzkin_lp.h"
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <vector>
 
 namespace clash4d {
 
-// A guess at the support of an optimal lambda: the dual LP solved in
-// doubles, a two-phase simplex on a dense tableau with Bland's rule. Only a
-// guess: the exact solution on the guessed columns decides, and the full
-// exact LP runs when it does not prove the system infeasible.
+// maximise cost . y  subject to  A y = b, y >= 0, with A of at most five
+// rows: a two-phase simplex on a dense tableau with Bland's rule. Only a
+// guess: nothing here is exact, and a caller checks what it takes from it.
 class Double_simplex {
 public:
-  explicit Double_simplex(const std::vector<Motzkin_row>& rows)
-      : m_(static_cast<int>(rows.size())), W_(m_ + R + 1), T_(static_cast<std::size_t>((R + 1) * W_), 0.0),
-        cost_(rows.size()), basis_{m_, m_ + 1, m_ + 2, m_ + 3, m_ + 4}
+  static constexpr int max_rows = 5;
+  using Row_vector = std::array<double, max_rows>;
+
+  // rows <= max_rows equality rows with right-hand side b; columns y_j.
+  Double_simplex(int rows, int columns, const Row_vector& b)
+      : R_(rows), m_(columns), W_(m_ + R_ + 1), T_(static_cast<std::size_t>((R_ + 1) * W_), 0.0),
+        cost_(static_cast<std::size_t>(columns), 0.0), b_(b), flip_{}, basis_(static_cast<std::size_t>(rows))
   {
-    for (int j = 0; j < m_; ++j) {
-      double big = 1.0;
-      for (int i = 0; i < 4; ++i) big = std::max(big, std::abs(CGAL::to_double((*rows[j].h)[i])));
-      // The normalisation sum lambda_j big_j = 1 instead of sum lambda_j = 1
-      // (any positive weights exclude lambda = 0 alike): every scaled column
-      // has entries of at most 1, and a 1 in the last row.
-      for (int i = 0; i < 4; ++i) at(i, j) = CGAL::to_double((*rows[j].h)[i]) / big;
-      at(4, j) = 1.0;
-      cost_[static_cast<std::size_t>(j)] = CGAL::to_double((*rows[j].h)[4]) / big;
+    // Rows with b < 0 are negated, so that the artificials start feasible.
+    for (int i = 0; i < R_; ++i) {
+      flip_[i] = b[i] < 0 ? -1.0 : 1.0;
+      at(i, m_ + i) = 1.0;
+      at(i, W_ - 1) = flip_[i] * b[i];
+      basis_[static_cast<std::size_t>(i)] = m_ + i;
     }
-    for (int i = 0; i < R; ++i) at(i, m_ + i) = 1.0;
-    at(4, W_ - 1) = 1.0;
   }
 
-  // The basic lambda columns of an optimum, or nothing when unsure.
-  std::optional<std::vector<int>> support()
+  // Column j: its `rows` entries a and its cost.
+  void column(int j, const double* a, double cost)
+  {
+    for (int i = 0; i < R_; ++i) at(i, j) = flip_[i] * a[i];
+    cost_[static_cast<std::size_t>(j)] = cost;
+  }
+
+  struct Optimum {
+    std::vector<int> basis;   // the basic y columns (artificials at zero left out)
+    std::vector<double> y;    // their values
+    Row_vector pi{};          // row multipliers: pi . a_j >= cost_j, with equality on the basis
+    double value = 0;         // pi . b, the optimum of cost . y
+  };
+
+  // An optimum, or nothing when the program looks infeasible or unbounded
+  // (or the run fails to settle in doubles).
+  std::optional<Optimum> solve()
   {
     // Phase 1: the artificials' sum, minimised.
     for (int c = 0; c < W_; ++c) {
       double sum = 0;
-      for (int r = 0; r < R; ++r) sum += at(r, c);
-      at(R, c) = c >= m_ && c < m_ + R ? 0.0 : -sum;
+      for (int r = 0; r < R_; ++r) sum += at(r, c);
+      at(R_, c) = c >= m_ && c < m_ + R_ ? 0.0 : -sum;
     }
-    if (!run() || std::abs(at(R, W_ - 1)) > 1e-7) return std::nullopt;
+    double scale = 1.0;
+    for (int r = 0; r < R_; ++r) scale = std::max(scale, std::abs(at(r, W_ - 1)));
+    if (!run() || std::abs(at(R_, W_ - 1)) > 1e-7 * scale) return std::nullopt;
     // Artificials left in the basis (at zero) leave it, so that phase 2's
-    // ratio tests see every row; a row with no lambda entry is redundant.
-    for (int r = 0; r < R; ++r)
-      if (basis_[r] >= m_) {
+    // ratio tests see every row; a row with no y entry is redundant.
+    for (int r = 0; r < R_; ++r)
+      if (basis_[static_cast<std::size_t>(r)] >= m_) {
         int c = 0;
         while (c < m_ && std::abs(at(r, c)) <= eps) ++c;
         if (c < m_) pivot(r, c);
       }
-    // Phase 2: sum lambda e maximised (its negation minimised).
-    for (int c = 0; c < W_; ++c) at(R, c) = c < m_ ? -cost_[static_cast<std::size_t>(c)] : 0.0;
-    for (int r = 0; r < R; ++r)
-      if (basis_[r] < m_) eliminate(R, r, basis_[r]);
+    // Phase 2: cost . y maximised (its negation minimised). An artificial
+    // column's reduced cost is then its row's multiplier.
+    for (int c = 0; c < W_; ++c) at(R_, c) = c < m_ ? -cost_[static_cast<std::size_t>(c)] : 0.0;
+    for (int r = 0; r < R_; ++r)
+      if (basis_[static_cast<std::size_t>(r)] < m_) eliminate(R_, r, basis_[static_cast<std::size_t>(r)]);
     if (!run()) return std::nullopt;
-    std::vector<int> out;
-    for (int b : basis_)
-      if (b < m_) out.push_back(b);
-    return out;
+    Optimum o;
+    for (int r = 0; r < R_; ++r)
+      if (basis_[static_cast<std::size_t>(r)] < m_) {
+        o.basis.push_back(basis_[static_cast<std::size_t>(r)]);
+        o.y.push_back(at(r, W_ - 1));
+      }
+    for (int i = 0; i < R_; ++i) {
+      o.pi[i] = flip_[i] * at(R_, m_ + i);
+      o.value += o.pi[i] * b_[i];
+    }
+    return o;
   }
 
 private:
-  static constexpr int R = 5;          // rows: a_x, a_y, a_z, a_t, the normalisation
   static constexpr double eps = 1e-9;
-  int m_, W_;                          // lambda columns; columns with artificials and rhs
+  int R_, m_, W_;                      // rows; y columns; columns with artificials and rhs
   std::vector<double> T_, cost_;
+  Row_vector b_, flip_;
   std::vector<int> basis_;
 
   double& at(int r, int c) { return T_[static_cast<std::size_t>(r * W_ + c)]; }
@@ -84,26 +109,28 @@ private:
   {
     double p = at(leave, enter);
     for (int c = 0; c < W_; ++c) at(leave, c) /= p;
-    for (int r = 0; r <= R; ++r)
+    for (int r = 0; r <= R_; ++r)
       if (r != leave) eliminate(r, leave, enter);
-    basis_[leave] = enter;
+    basis_[static_cast<std::size_t>(leave)] = enter;
   }
 
-  // Pivots until no lambda column has a negative reduced cost; false when
-  // the run looks unbounded or cycles (it cannot, in exact arithmetic).
+  // Pivots until no y column has a negative reduced cost; false when the
+  // run looks unbounded or cycles (it cannot, in exact arithmetic).
   bool run()
   {
-    for (int iteration = 0; iteration < 50 * (m_ + R); ++iteration) {
+    for (int iteration = 0; iteration < 50 * (m_ + R_); ++iteration) {
       int enter = -1;
       for (int c = 0; c < m_ && enter < 0; ++c)
-        if (at(R, c) < -eps) enter = c;
+        if (at(R_, c) < -eps) enter = c;
       if (enter < 0) return true;
       int leave = -1;
       double best = 0;
-      for (int r = 0; r < R; ++r)
+      for (int r = 0; r < R_; ++r)
         if (at(r, enter) > eps) {
           double ratio = at(r, W_ - 1) / at(r, enter);
-          if (leave < 0 || ratio < best - eps || (ratio <= best + eps && basis_[r] < basis_[leave])) leave = r, best = ratio;
+          if (leave < 0 || ratio < best - eps || (ratio <= best + eps && basis_[static_cast<std::size_t>(r)] <
+                                                                            basis_[static_cast<std::size_t>(leave)]))
+            leave = r, best = ratio;
         }
       if (leave < 0) return false;
       pivot(leave, enter);

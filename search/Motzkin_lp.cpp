@@ -96,6 +96,27 @@ bool proves_infeasible(const std::vector<Motzkin_row>& rows, const std::vector<R
 
 namespace {
 
+// A guess at the support of an optimal lambda: the dual LP in doubles, with
+// the normalisation sum lambda_j big_j = 1 instead of sum lambda_j = 1 (any
+// positive weights exclude lambda = 0 alike): every scaled column has
+// entries of at most 1, and a 1 in the last row.
+std::optional<std::vector<int>> guessed_support(const std::vector<Motzkin_row>& rows)
+{
+  Double_simplex lp(5, static_cast<int>(rows.size()), {0, 0, 0, 0, 1});
+  for (std::size_t j = 0; j < rows.size(); ++j) {
+    const Literal_coefficients& h = *rows[j].h;
+    double big = 1.0;
+    for (int i = 0; i < 4; ++i) big = std::max(big, std::abs(CGAL::to_double(h[i])));
+    double a[5];
+    for (int i = 0; i < 4; ++i) a[i] = CGAL::to_double(h[i]) / big;
+    a[4] = 1.0;
+    lp.column(static_cast<int>(j), a, CGAL::to_double(h[4]) / big);
+  }
+  std::optional<Double_simplex::Optimum> o = lp.solve();
+  if (!o) return std::nullopt;
+  return o->basis;
+}
+
 std::optional<std::vector<Rational>> on_support(const std::vector<Motzkin_row>& rows, const std::vector<int>& support)
 {
   if (auto lambda = basic_solution(rows, support); lambda && proves_infeasible(rows, *lambda)) return lambda;
@@ -117,7 +138,7 @@ std::optional<std::vector<Rational>> motzkin_multipliers(const std::vector<Motzk
   if (rows.empty()) return std::nullopt;
   // The exact LP over every row costs about a millisecond; the exact LP
   // over the few rows a double simplex picks, tens of microseconds.
-  std::optional<std::vector<int>> support = Double_simplex(rows).support();
+  std::optional<std::vector<int>> support = guessed_support(rows);
   if (effort == Lp_effort::quick) {   // the guess's basic solution alone: one small exact solve
     if (!support || support->empty()) return std::nullopt;
     auto lambda = basic_solution(rows, *support);

@@ -12,6 +12,10 @@
 // A policy P provides:
 //   Collision_checker, per sub-span of a pair (in time order):
 //     bool skips_span(index)           the span is known to hold no collision
+//     template <class Decide> auto convex_stage(decide)   a convex pair's
+//                                      linear programs (search/Convex_pair.h):
+//                                      decide() gives the verdict; a filter
+//                                      failing in it may hand the pair on
 //     template <class M, class Stage, class Run>
 //       void region_stage(a, b, index, A, B, stage, run)   the S-bounds and
 //                                      region: run() makes them here; a
@@ -106,6 +110,11 @@ namespace clash4d {
 
 struct No_filter {
   bool skips_span(std::size_t) const { return false; }
+  template <class Decide>
+  auto convex_stage(Decide decide)
+  {
+    return decide();
+  }
   template <class M, class Stage, class Run>
   void region_stage(int, int, std::size_t, M&, M&, Stage&, Run run)
   {

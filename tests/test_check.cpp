@@ -112,7 +112,17 @@ BOOST_AUTO_TEST_CASE(validate_reports_each_bad_file)
 
 BOOST_AUTO_TEST_CASE(stats_report_every_stage)
 {
-  Run r = run({"check", scene_file("spec", spec_example), "--json", "--stats"});
+  // Two blocks are a convex pair: by default their linear programs decide
+  // the first sub-span, [0, 5], where ram passes through box (2 < t < 4),
+  // and nothing is left to the cascade.
+  Run lp = run({"check", scene_file("spec", spec_example), "--json", "--stats"});
+  auto l = nlohmann::json::parse(lp.out)["stats"];
+  BOOST_TEST(lp.status == 1);
+  BOOST_TEST(l["convex_spans"] == 1);
+  BOOST_TEST(l["convex_undecided"] == 0);
+  BOOST_TEST(l["lines"] == 0);
+  // The paper's cascade, every stage of it.
+  Run r = run({"check", scene_file("spec", spec_example), "--json", "--stats", "--no-convex-lp"});
   auto s = nlohmann::json::parse(r.out)["stats"];
   for (const char* key : {"sbound_passes", "primitives_pruned", "span_before", "span_after", "regions_per_depth",
                           "leaves_at_conquer", "points_classified", "seconds"})

@@ -99,7 +99,12 @@ BOOST_AUTO_TEST_CASE(causes_follow_their_definitions_on_all_fixtures)
         BOOST_TEST(c["disagreements"].size() <= c["subjects"].size() - 2);
       }
   BOOST_TEST(disagreements > 0u);   // the fixtures do make float code err
-  BOOST_TEST(contact > 0u);         // ... on touching scenes too
+  // On touching scenes too, before convex pairs were decided by linear
+  // programs (search/Convex_pair.h): the double pipeline called
+  // rotated_skew_approach_stop a collision. It no longer errs on a touching
+  // fixture; the cause is held on FCL's findings (test_fcl), and here
+  // wherever it occurs.
+  BOOST_TEST_MESSAGE(contact << " disagreements of cause contact");
 }
 
 BOOST_AUTO_TEST_CASE(rounding_can_make_a_scene_invalid)

@@ -114,19 +114,24 @@ std::vector<std::string> fixture_scenes()
 
 } // namespace
 
+// Every fixture in six modes, with convex pairs decided by their linear
+// programs (search/Convex_pair.h) and, held too, by the paper's cascade.
 BOOST_DATA_TEST_CASE(fixture_answers_match_rational, data::make(fixture_scenes()), entry)
 {
   Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/" + entry);
-  for (Semantics s : {Semantics::regularised, Semantics::closed}) {
-    Check_options o;
-    o.semantics = s;
-    same_answers(scene, o, entry);
-    o.all_pairs = true;
-    same_answers(scene, o, entry);
-    o.all_pairs = false;
-    o.earliest = true;
-    same_answers(scene, o, entry);
-  }
+  for (bool convex_lp : {true, false})
+    for (Semantics s : {Semantics::regularised, Semantics::closed}) {
+      Check_options o;
+      o.convex_lp = convex_lp;
+      o.semantics = s;
+      std::string label = entry + (convex_lp ? "" : " --no-convex-lp");
+      same_answers(scene, o, label);
+      o.all_pairs = true;
+      same_answers(scene, o, label);
+      o.all_pairs = false;
+      o.earliest = true;
+      same_answers(scene, o, label);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
@@ -135,18 +140,21 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
   BOOST_TEST_MESSAGE("filtered vs rational, coarse-grid scenes: seed " << seed << ", " << cases << " cases");
   std::mt19937_64 rng(seed);
   std::size_t by_intervals = 0, collide = 0, witnessed = 0, replayed = 0, searched = 0, earliest_colliding = 0,
-              earliest_by_intervals = 0, earliest_made = 0, adopted = 0, rerun = 0;
+              earliest_by_intervals = 0, earliest_made = 0, adopted = 0, rerun = 0, convex = 0;
   for (std::uint64_t i = 0; i < cases; ++i) {
     Random_scene rs = random_scene_with_text(rng);
     Check_options o;
-    Check_answer a = same_answers(rs.scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) + ": " + rs.json);
+    o.convex_lp = i % 2 == 0;   // odd cases: convex pairs through the paper's cascade too
+    std::string label = "seed " + std::to_string(seed) + " case " + std::to_string(i) + (o.convex_lp ? "" : " --no-convex-lp");
+    Check_answer a = same_answers(rs.scene, o, label + ": " + rs.json);
+    convex += a.stats.convex_spans;
     by_intervals += decided_by_intervals(a);
     collide += a.collide;
     witnessed += a.stats.witnesses_by_intervals;
     replayed += a.stats.exact_witness_replays;
     adopted += a.stats.replay_stages_adopted;
     o.earliest = true;
-    Check_answer e = same_answers(rs.scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) + ": " + rs.json);
+    Check_answer e = same_answers(rs.scene, o, label + ": " + rs.json);
     searched += e.stats.exact_witness_runs - e.stats.exact_witness_replays - e.stats.earliest_by_intervals;
     earliest_colliding += e.stats.exact_witness_runs + e.stats.witnesses_by_intervals;
     earliest_by_intervals += e.stats.earliest_by_intervals;
@@ -161,8 +169,8 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
                                   << " colliding earliest-mode pairs, " << earliest_made
                                   << " had t*, contact and witness made by the interval run, " << earliest_by_intervals
                                   << " were searched by intervals with the rational run replaying the last "
-                                     "improvement or (" << rerun << ") only its line (seed "
-                                  << seed << ")");
+                                     "improvement or (" << rerun << ") only its line; " << convex
+                                  << " sub-spans decided by a convex pair's linear programs (seed " << seed << ")");
   // The comparison must exercise every path: many answers from intervals
   // alone (coarse-grid numbers are exact doubles), witnesses made by the
   // interval run itself, and the rational reruns through the trail replay.
@@ -186,6 +194,7 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
              "seed " << seed << ": " << earliest_by_intervals << " + " << earliest_made << " of " << earliest_colliding);
   BOOST_TEST(earliest_made > 0u);
   BOOST_TEST(earliest_by_intervals > 0u);
+  BOOST_TEST(convex > 0u);   // the linear programs' path is held to rationals too
 }
 
 // Closed semantics on the same coarse-grid scenes: the filtered run decides
@@ -205,7 +214,9 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational_closed)
     o.semantics = Semantics::closed;
     o.all_pairs = i % 3 == 1;
     o.earliest = i % 3 == 2;
-    Check_answer a = same_answers(rs.scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) + ": " + rs.json);
+    o.convex_lp = i % 2 == 0;   // odd cases: the paper's cascade for convex pairs too
+    Check_answer a = same_answers(rs.scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) +
+                                                   (o.convex_lp ? "" : " --no-convex-lp") + ": " + rs.json);
     by_intervals += decided_by_intervals(a);
     collide += a.collide;
     replayed += a.stats.exact_witness_replays;
@@ -240,46 +251,57 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational_closed)
 // order 3/10 with itself), and the S-bounds that meet exactly are made in
 // rationals and adopted: the interval run goes on, nothing is run again
 // whole, in either semantics, and the answers are the rational run's.
+// With the convex pair's linear programs (the default), the touch is a
+// multiplier sum exactly zero, decided in rationals on those programs
+// alone, again with nothing run whole.
 BOOST_AUTO_TEST_CASE(coinciding_decimal_velocity_changes_stay_in_intervals)
 {
   Scene scene = read_scene(read_json_text(R"({"format": "clash4d-scene/1", "time": [0, 1], "objects": [
     {"name": "a", "shape": {"block": {"min": [0, 0, 0], "max": [1, 1, 1]}}, "motion": "vel 0.1 0 0 until 0.3 rest"},
     {"name": "b", "shape": {"block": {"min": [1.06, 0, 0], "max": [2.06, 1, 1]}}, "motion": "vel -0.1 0 0 until 0.3 rest"}]})"));
-  for (Semantics s : {Semantics::regularised, Semantics::closed}) {
-    Check_options o;
-    o.semantics = s;
-    Check_answer a = same_answers(scene, o, "coinciding decimal velocity changes");
-    BOOST_TEST(a.collide == (s == Semantics::closed));
-    BOOST_TEST(a.stats.exact_fallbacks == 0u);
-    BOOST_TEST(a.stats.exact_region_stages > 0u);
-  }
+  for (bool convex_lp : {false, true})
+    for (Semantics s : {Semantics::regularised, Semantics::closed}) {
+      Check_options o;
+      o.semantics = s;
+      o.convex_lp = convex_lp;
+      Check_answer a = same_answers(scene, o, "coinciding decimal velocity changes");
+      BOOST_TEST(a.collide == (s == Semantics::closed));
+      BOOST_TEST(a.stats.exact_fallbacks == 0u);
+      if (convex_lp) BOOST_TEST(a.stats.convex_rational > 0u);
+      else BOOST_TEST(a.stats.exact_region_stages > 0u);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(contact_families_match_rational)
 {
   std::uint64_t seed = env_number("CLASH4D_SEED", 20261122ull), cases = env_number("CLASH4D_FILTER_CASES", 1000);
   BOOST_TEST_MESSAGE("filtered vs rational, fuzz contact families: seed " << seed << ", " << cases << " cases");
-  std::size_t fell_back = 0, whole = 0, stages = 0;
+  std::size_t fell_back = 0, whole = 0, stages = 0, convex_rational = 0;
   for (std::uint64_t i = 0; i < cases; ++i) {
     Fuzz_case c = make_fuzz_case(seed, i);
     Scene scene = read_scene(read_json_text(c.json));
     Check_options o;
     o.earliest = i % 2 == 1;
     o.semantics = i % 4 >= 2 ? Semantics::closed : Semantics::regularised;
-    Check_answer a = same_answers(scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) + " (" + c.family + "): " + c.json);
+    o.convex_lp = i % 8 < 4;   // half the cases: the paper's cascade for convex pairs too
+    Check_answer a = same_answers(scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) +
+                                                (o.convex_lp ? "" : " --no-convex-lp") + " (" + c.family + "): " + c.json);
+    convex_rational += a.stats.convex_rational;
     fell_back += exact_decisions(a) + a.stats.exact_region_stages > 0;
     whole += a.stats.exact_fallbacks > 0;
     stages += a.stats.exact_region_stages > 0;
   }
   BOOST_TEST_MESSAGE(fell_back << " of " << cases << " needed rationals somewhere; " << stages
                                << " adopted a region stage made in rationals (S-bounds meeting exactly), " << whole
-                               << " were run again in rationals whole");
+                               << " were run again in rationals whole; " << convex_rational
+                               << " convex pairs' linear programs were decided in rationals (a touch)");
   BOOST_TEST(fell_back > 0);
   // Contact makes S-bounds meet exactly: the region stage in rationals is
   // exercised, and is what keeps most such pairs from a whole rational run.
   BOOST_TEST(stages > cases / 10);
   BOOST_TEST(whole < stages);
   BOOST_TEST(whole > 0u);   // the whole rational rerun is held to rationals too
+  BOOST_TEST(convex_rational > 0u);   // and so are a convex pair's programs decided in rationals
 }
 
 // General position: intervals certify every decision, and the interval run
@@ -316,12 +338,15 @@ BOOST_AUTO_TEST_CASE(no_fallback_in_general_position)
 namespace {
 
 // A contact fixture in earliest mode, held to the rational run's answer.
+// The paper's cascade (these are convex pairs, which the linear programs
+// decide otherwise: search/Convex_pair.h), whose filter these tests hold.
 Check_answer earliest_fixture(const std::string& name, Semantics semantics = Semantics::regularised)
 {
   Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/contact/" + name + ".json");
   Check_options earliest;
   earliest.earliest = true;
   earliest.semantics = semantics;
+  earliest.convex_lp = false;
   return same_answers(scene, earliest, name);
 }
 
@@ -427,7 +452,9 @@ BOOST_AUTO_TEST_CASE(corners_are_decided_by_intervals)
 BOOST_AUTO_TEST_CASE(fallback_on_contact)
 {
   Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/contact/rotated_skew_face_touch.json");
-  Check_answer a = check_exact(scene, Check_options());
+  Check_options cascade;
+  cascade.convex_lp = false;   // a convex pair: the paper's cascade, whose filter this holds
+  Check_answer a = check_exact(scene, cascade);
   BOOST_TEST(!a.collide);
   BOOST_TEST(exact_decisions(a) > 0u);
   BOOST_TEST(a.stats.exact_regions > 0u);
@@ -675,6 +702,7 @@ BOOST_AUTO_TEST_CASE(long_searches_are_handed_over_to_apart_proofs)
     Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/" + c.file);
     Check_options o;
     o.semantics = c.semantics;
+    o.convex_lp = false;   // convex pairs: the paper's search, which is what is handed over
     Check_answer a = same_answers(scene, o, c.file);
     BOOST_TEST(a.collide == c.collide, c.file);
     if (c.proven) BOOST_TEST(a.stats.apart_proofs >= 1u, c.file);
