@@ -92,7 +92,16 @@ public:
     Witness<K> w(k_);
     V4 contact = goal.contact;
     for (int q = 0; q < 3; ++q) contact[q] += shear[q] * contact[3];
-    if (goal.closed()) {
+    if (goal.closed() && goal.convex) {
+      // The point lies in both objects (the programs proved every row <= 0
+      // there) and each cell point strictly inside its object at its time
+      // (Convex_pair::cell): only the cell points are left to check.
+      r.witness = contact;
+      r.witness_cells = {goal.cell_a, goal.cell_b};
+      r.witness_verified =
+          is_generic_inside(k_, model_, r.a, goal.cell_a) && is_generic_inside(k_, model_, r.b, goal.cell_b);
+      r.contact_cells = r.witness_cells;
+    } else if (goal.closed()) {
       r.witness = contact;
       r.witness_cells = {w.near_in_space(goal.contact, goal.toward_a, shear, A),
                          w.near_in_space(goal.contact, goal.toward_b, shear, B)};
@@ -101,7 +110,12 @@ public:
     } else {
       r.witness = w.make(goal.inside, shear, A, B, span.lo, span.hi);
       r.witness_verified = is_valid_witness(k_, model_, r.a, r.b, r.witness);
-      if (goal.earliest) {
+      if (goal.earliest && goal.convex) {
+        // A convex pair's region is one cell, whose closure holds the
+        // contact point (it lies in P, proven row by row): the witness is
+        // the generic point near it.
+        r.contact_cells = {r.witness, r.witness};
+      } else if (goal.earliest) {
         V4 g = w.near(goal.contact, goal.inside, shear, A, B, span.lo, span.hi);
         r.contact_cells = {g, g};
         r.witness_verified = r.witness_verified && is_valid_witness(k_, model_, r.a, r.b, g) &&
@@ -142,8 +156,8 @@ private:
     goal.earliest = earliest;
     goal.semantics = semantics;
     if (ceiling) { goal.has_ceiling = true; goal.ceiling = *ceiling; }
-    std::optional<Convex_pair<K>> convex;
-    if (convex_lp_ && Convex_pair<K>::applies(model_, a, b)) convex.emplace(k_, model_, a, b);
+    std::optional<Convex_pair<K, Policy>> convex;
+    if (convex_lp_ && Convex_pair<K>::applies(model_, a, b)) convex.emplace(k_, model_, a, b, &policy_);
     std::size_t index = 0;
     for (const auto& span : model_.sub_spans({a, b})) {
       std::size_t here = index++;
@@ -161,15 +175,16 @@ private:
   // then its extrusion searched (§4.1, §4.2); then the witness of what was
   // found. False: left to the cascade, when convex_only.
   bool check_span(int a, int b, std::size_t index, const Time_span<FT>& span, Pair_result<FT>& r,
-                  Search_goal<FT>& goal, Convex_pair<K>* convex, bool convex_only)
+                  Search_goal<FT>& goal, Convex_pair<K, Policy>* convex, bool convex_only)
   {
     auto start = std::chrono::steady_clock::now();
     Moving A = moving_on(model_, a, span, settled_[a]), B = moving_on(model_, b, span, settled_[b]);
     if (convex) {
       goal.improved = false;
-      typename Convex_pair<K>::Verdict v = policy_.convex_stage([&] { return convex->decide(A, B, span, goal); });
+      using Verdict = typename Convex_pair<K, Policy>::Verdict;
+      Verdict v = policy_.convex_stage([&] { return convex->decide(index, A, B, span, goal); });
       stats_.seconds_divide += seconds_since(start);
-      if (v == Convex_pair<K>::Verdict::undecided) {
+      if (v == Verdict::undecided) {
         ++stats_.convex_undecided;
         if (convex_only) return false;
       } else {

@@ -157,6 +157,10 @@ private:
             return *r;
           }
         }
+        if (std::optional<Pair_result<EFT>> r = policy.convex_answer(found)) {
+          stats = astats;
+          return *r;
+        }
         if (options.earliest) {
           auto made = std::chrono::steady_clock::now();
           if (std::optional<Pair_result<EFT>> r = witness_from(policy, a, b, options.semantics)) {

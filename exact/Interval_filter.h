@@ -94,6 +94,65 @@ public:
       throw Convex_uncertain();
     }
   }
+  // A sign of a convex pair's programs the intervals cannot certify (a
+  // touch's multiplier sum, a fifth row through a vertex): the same
+  // predicate of the rational run's stage on the sub-span, whose rows are
+  // made only as asked.
+  template <class Stage, class Predicate>
+  auto convex_certain(Stage& stage, Predicate p)
+  {
+    try {
+      return p(stage);
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+    }
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    ++stats_->convex_exact_signs;
+    return p(exact_convex(stage.a(), stage.b(), stage.span_index()));
+  }
+  template <class Stage>
+  void convex_found(const Stage& stage)
+  {
+    convex_found_ = stage.found();
+  }
+  // A convex pair's answer where the intervals made its point inside (or
+  // its guess point) but only enclose the vertex at t* or the closed
+  // point's time: that vertex, and each object's deep point at its time,
+  // made by the rational run's stage, the rest copied (points, the
+  // rational run's numbers). Valid as the stage proved it (Convex_pair).
+  std::optional<Pair_result<EFT>> convex_answer(const Pair_result<AFT>& found)
+  {
+    if (!convex_found_ || !found.collide) return std::nullopt;
+    bool closed = found.semantics == Semantics::closed;
+    Pair_result<EFT> r;
+    r.a = found.a, r.b = found.b;
+    r.semantics = found.semantics;
+    r.collide = r.has_witness = r.witness_verified = true;
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    ++stats_->convex_exact_signs;
+    Convex_pair<EK>& e = exact_convex(found.a, found.b, convex_found_->index);
+    const Convex_found& f = *convex_found_;
+    Vector4<EFT> g{EFT(f.point[0]), EFT(f.point[1]), EFT(f.point[2]), EFT(f.point[3])};
+    if (!closed && !(found.has_witness && found.witness_verified && exact_point(found.witness, r.witness))) {
+      // A point inside the intervals could not snap (an overlap as thin as
+      // their enclosures): the witness made from it in rationals.
+      const Exact_convex& x = *exact_convex_;
+      Vector3<EFT> world{EFT(0), EFT(0), EFT(0)};
+      r.witness = Witness<EK>(runner_->ek_).make(f.at_centre ? e.centre(f.centre_rows) : g, world, x.A, x.B,
+                                                 x.span.lo, x.span.hi);
+      if (!is_valid_witness(runner_->ek_, runner_->emodel_, r.a, r.b, r.witness)) return std::nullopt;
+    }
+    Vector4<EFT> p = f.at_vertex ? e.vertex(f.basis) : f.at_centre ? r.witness : g;
+    if (closed) {
+      r.witness = p;
+      r.witness_cells = r.contact_cells = {e.cell(0, p[3]), e.cell(1, p[3])};
+    } else {
+      r.contact_cells = {r.witness, r.witness};
+    }
+    r.contact = p;
+    r.t_star = p[3];
+    r.earliest = found.earliest;
+    return r;
+  }
   // The region stage; where the intervals leave a decision open (S-bounds
   // meeting exactly: objects in contact), the stage in rationals, adopted:
   // the run goes on from the rational run's own region and pruning.
@@ -413,6 +472,42 @@ public:
 private:
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);   // no plane (Generate_and_test's)
   Runner* runner_ = nullptr;
+  // A convex pair's stage in rationals on one sub-span (EK's model of the
+  // two objects, no S-bounds), for the signs the intervals leave open.
+  struct Exact_convex {
+    int a, b;
+    std::size_t index;
+    Time_span<EFT> span;
+    Moving_object<EFT> A, B;
+    Convex_pair<EK> stage;
+    Exact_convex(Runner& runner, int a_, int b_, std::size_t i)
+      : a(a_), b(b_), index(i), span(runner.emodel_.sub_spans({a_, b_}).at(i)),
+        A(moving_on(runner.emodel_, a_, span, {})), B(moving_on(runner.emodel_, b_, span, {})),
+        stage(runner.ek_, runner.emodel_, a_, b_)
+    {
+      stage.start_span(i, A, B, span);
+    }
+  };
+  std::unique_ptr<Exact_convex> exact_convex_;
+  std::optional<Convex_found> convex_found_;
+
+  Convex_pair<EK>& exact_convex(int a, int b, std::size_t index)
+  {
+    if (!exact_convex_ || exact_convex_->a != a || exact_convex_->b != b || exact_convex_->index != index) {
+      runner_->need_model(a);
+      runner_->need_model(b);
+      exact_convex_ = std::make_unique<Exact_convex>(*runner_, a, b, index);
+    }
+    return exact_convex_->stage;
+  }
+
+  // x in EK when every coordinate is a point interval (the rational run's number).
+  bool exact_point(const Vector4<AFT>& x, Vector4<EFT>& to) const
+  {
+    for (int q = 0; q < 4; ++q)
+      if (!runner_->to_exact(x[q], to[q])) return false;
+    return true;
+  }
   std::unique_ptr<Exact_span<Runner>> exact_;
   Search_trail* trail_ = nullptr;
   Check_stats* stats_ = nullptr;

@@ -38,8 +38,11 @@ struct Check_stats {
   // Generate-and-test (§4.2, Appendix A)
   std::size_t lines = 0, points_classified = 0, cells_tested = 0;
   // Convex pairs (search/Convex_pair.h, beyond the paper): sub-spans the
-  // linear programs decided, and those they left to the cascade.
-  std::size_t convex_spans = 0, convex_undecided = 0;
+  // linear programs decided, and those they left to the cascade; filtered
+  // kernel, convex_exact_signs: signs of the programs the intervals could
+  // not certify (a touch, a fifth row through a vertex), and vertices at t*
+  // they only enclosed, each asked of the rational run's stage alone.
+  std::size_t convex_spans = 0, convex_undecided = 0, convex_exact_signs = 0;
   // Filtered exact kernel (set once per run; 0 for other kernels):
   // exact_fallbacks: interval runs (object bounds, pairs) stopped by a sign
   // the intervals could not certify, each then redone in rationals;
@@ -103,6 +106,7 @@ struct Check_stats {
     if (!o.conquered_box.empty()) conquered_box = o.conquered_box;
     lines += o.lines; points_classified += o.points_classified; cells_tested += o.cells_tested;
     convex_spans += o.convex_spans; convex_undecided += o.convex_undecided;
+    convex_exact_signs += o.convex_exact_signs;
     exact_lines += o.exact_lines;
     exact_ties += o.exact_ties;
     exact_cut_orders += o.exact_cut_orders;

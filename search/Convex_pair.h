@@ -15,19 +15,26 @@
 //  - earliest: t* = min t over P (item 5: P is the closure of its interior
 //    when that is not empty), attained at a vertex where four rows meet,
 //    proven least by y >= 0 on those rows with e_t + sum y_j n_j = 0.
+// The points that make the answer checkable follow from convexity: P's
+// interior is one cell of the pair's arrangement, whose closure holds
+// every point of P (the contact point too), and a point strictly inside an
+// object at the contact's time sees it in its cell's closure likewise.
 // A double simplex on the pair's guide (the same planes in doubles, made
 // from the scene's own numbers, rounding to nearest: the same doubles in
 // every kernel's run) guesses the point inside, the support of the
 // multipliers and the vertex's four rows. Every verdict is then made from
-// the guess and checked with the kernel's signs, so every kernel takes the
-// same decisions (a filtered run's are the rational run's), and a guess that
-// proves nothing leaves the sub-span to the paper's cascade (undecided).
+// the guess with the kernel's signs, each sign one predicate whose
+// arguments are guesses (Policy::convex_certain: a filter asks its exact
+// kernel's stage on the same sub-span where its own kernel cannot tell), so
+// every kernel takes the same decisions; a guess that proves nothing
+// leaves the sub-span to the paper's cascade (undecided).
 #ifndef CLASH4D_SEARCH_CONVEX_PAIR_H
 #define CLASH4D_SEARCH_CONVEX_PAIR_H
 
 #include "model/Extrusion.h"
 #include "model/Model_builder.h"
 #include "search/Double_simplex.h"
+#include "search/No_filter.h"
 #include "search/Search_goal.h"
 #include <CGAL/FPU.h>
 #include <algorithm>
@@ -46,7 +53,20 @@ struct Guide_numbers {
   CGAL::Sign sign(double x) const { return CGAL::sign(x); }
 };
 
-template <class K>
+// What a convex pair's stage recorded in the goal, for a filter making the
+// answer in another kernel: the sub-span, the guess point (regularised:
+// inside P; closed, when not at a vertex, the witness) and the vertex's
+// four rows (the contact point, or the closed witness).
+struct Convex_found {
+  std::size_t index = 0;
+  bool at_vertex = false;
+  std::array<int, 4> basis{};
+  Vector4<double> point{};
+  bool at_centre = false;             // regularised: the point inside is the centre of these rows
+  std::array<int, 5> centre_rows{};
+};
+
+template <class K, class Policy = No_filter>
 class Convex_pair {
 public:
   using FT = typename K::FT;
@@ -54,8 +74,12 @@ public:
   using V4 = Vector4<FT>;
   using Moving = Moving_object<FT>;
   using G = Hyperplane4<double>;
+  using Point = Vector4<double>;      // a guess: the same doubles in every kernel's run
+  using Basis = std::array<int, 4>;   // four rows meeting at a vertex
+  using Centre = std::array<int, 5>;  // five rows whose margins are equal at the centre
 
   enum class Verdict { undecided, apart, collide };
+  using Found = Convex_found;
 
   // Each object one primitive, one of them bounded (so the programs are
   // bounded), in a model that knows its scene (the guide's numbers).
@@ -69,59 +93,66 @@ public:
     return model.scene && single(a) && single(b) && (bounded(a) || bounded(b));
   }
 
-  Convex_pair(const K& k, const Scene_model<K>& model, int a, int b) : k_(k), model_(model), a_(a), b_(b)
+  // Holds a reference into itself (its own policy when none is given).
+  Convex_pair(const Convex_pair&) = delete;
+  Convex_pair& operator=(const Convex_pair&) = delete;
+
+  Convex_pair(const K& k, const Scene_model<K>& model, int a, int b, Policy* policy = nullptr)
+    : k_(k), model_(model), a_(a), b_(b), policy_(policy ? *policy : own_policy_)
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     Guide_numbers g;
-    for (int i : {a, b}) {
-      const Scene_object& o = model.scene->objects[static_cast<std::size_t>(i)];
-      guide_[i == a ? 0 : 1] = {o.name, Model_builder<Guide_numbers>(g).build(o.shape),
-                                Motion_path<double>::build(g, o.motion)};
+    for (int o = 0; o < 2; ++o) {
+      const Scene_object& obj = model.scene->objects[static_cast<std::size_t>(o == 0 ? a : b)];
+      guide_[o] = {obj.name, Model_builder<Guide_numbers>(g).build(obj.shape), Motion_path<double>::build(g, obj.motion)};
+      deep_[o] = deep_point(guide_[o].csg.primitives[0]);
     }
   }
 
-  // The sub-span where A and B move as given: apart, or collide with the
-  // goal holding what the cascade would record (the point inside, or the
-  // closed point with directions into each object; earliest, the least
-  // time and its vertex), or undecided (nothing recorded).
-  Verdict decide(const Moving& A, const Moving& B, const Time_span<FT>& span, Search_goal<FT>& goal)
+  int a() const { return a_; }
+  int b() const { return b_; }
+  std::size_t span_index() const { return index_; }
+  const Found& found() const { return found_; }
+
+  // Sub-span `index` (time order), where A and B move as given: apart, or
+  // collide with the goal holding what the cascade would record (the
+  // point inside; closed, the point with a point inside each object at its
+  // time; earliest, the least time and its vertex), or undecided (nothing
+  // recorded).
+  Verdict decide(std::size_t index, const Moving& A, const Moving& B, const Time_span<FT>& span,
+                 Search_goal<FT>& goal)
   {
     if (!span.exact_lo || !span.exact_hi) return Verdict::undecided;
-    start_span(A, B, span);
-    std::optional<Double_simplex::Optimum> margin = widest_margin();
+    start_span(index, A, B, span);
+    std::optional<Double_simplex::Optimum> margin = guide_finite() ? widest_margin() : std::nullopt;
     if (!margin) return Verdict::undecided;
+    Point g = guess_point(margin->pi);
+    if (!finite(g)) return Verdict::undecided;
+    std::vector<std::size_t> tight = support(*margin);
     if (!goal.closed()) {
-      if (margin->value < 0 && inside(guess_point(margin->pi)))
-        return goal.earliest ? earliest_inside(goal) : record_inside(goal, inside_);
-      return proves_empty(*margin, false) ? Verdict::apart : Verdict::undecided;
+      if (margin->value < 0 && in(g, true, tight)) return earliest_or_point(goal, exact_point(g), g, nullptr);
+      if (certain([&](auto& s) { return s.proves_empty(tight, false); })) return Verdict::apart;
+      // A thin overlap the guess misses (its rounding of the scene moved a
+      // face by more than the overlap): the programs' optimum itself, made
+      // exactly from the guess's five rows.
+      std::optional<Centre> rows = centre_rows(*margin);
+      if (rows && strictly_inside_centre(*rows)) return earliest_or_point(goal, centre(*rows), g, &*rows);
+      return Verdict::undecided;
     }
     // Closed, any point: the guess itself when it lies in P (a float
-    // kernel's tolerance takes a thin overlap for a touch), tried on the
-    // rows it holds tight first.
-    if (!goal.earliest && in_closed(guess_point(margin->pi), margin->basis)) {
-      goal.record_touch(k_, inside_, into(0, inside_), into(1, inside_));
-      return Verdict::collide;
-    }
-    if (margin->value >= 0 && proves_empty(*margin, true)) return Verdict::apart;
-    return touch(goal);
+    // kernel's tolerance takes a thin overlap for a touch).
+    if (!goal.earliest && in(g, false, tight) && deep_inside()) return touch(goal, g, nullptr);
+    if (margin->value >= 0 && certain([&](auto& s) { return s.proves_empty(tight, true); })) return Verdict::apart;
+    std::optional<Basis> rows = least_vertex(goal.earliest);
+    return rows && deep_inside() ? touch(goal, g, &*rows) : Verdict::undecided;
   }
 
-private:
-  const K& k_;
-  const Scene_model<K>& model_;
-  int a_, b_;
-  Object_model<double> guide_[2];
-  std::vector<G> guide_rows_;              // the sub-span's rows in doubles, in the order of rows_
-  std::vector<H> rows_;                    // A's planes, B's, t >= lo, t <= hi: extruded on first use
-  std::vector<char> made_;
-  const Moving* moving_[2] = {nullptr, nullptr};
-  std::size_t count_a_ = 0, count_b_ = 0;
-  FT lo_{}, hi_{};
-  V4 inside_{};
-
-  void start_span(const Moving& A, const Moving& B, const Time_span<FT>& span)
+  // The sub-span's rows, from its motions (another kernel's stage is set
+  // on the same sub-span to take the decisions its own leaves open).
+  void start_span(std::size_t index, const Moving& A, const Moving& B, const Time_span<FT>& span)
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    index_ = index;
     moving_[0] = &A, moving_[1] = &B;
     lo_ = span.lo, hi_ = span.hi;
     guide_rows_.clear();
@@ -137,7 +168,131 @@ private:
     guide_rows_.push_back(time_at_most(nearest_double(*span.exact_hi)));
     rows_.assign(guide_rows_.size(), H{});
     made_.assign(guide_rows_.size(), 0);
+    vertex_basis_.reset();
+    centre_rows_.reset();
   }
+
+  // --- Predicates: arguments and results the same in every kernel. ---
+
+  // The sign of row j at p.
+  CGAL::Sign row_sign(std::size_t j, const Point& p) { return k_.sign(row(j).value(exact_point(p))); }
+
+  // Whether lambda >= 0 with sum lambda_i n_i = 0 over the rows `which`
+  // (their one line of dependencies) has sum lambda_i c_i >= 0 (strict:
+  // > 0): the strict system (strict: P) is empty.
+  bool proves_empty(const std::vector<std::size_t>& which, bool strict)
+  {
+    std::optional<std::vector<FT>> lambda = null_vector(which);
+    if (!lambda) return false;
+    FT sum(0);
+    for (std::size_t i = 0; i < which.size(); ++i) {
+      if (k_.sign((*lambda)[i]) == CGAL::NEGATIVE) return false;
+      sum += (*lambda)[i] * row(which[i]).c;
+    }
+    CGAL::Sign s = k_.sign(sum);
+    return strict ? s == CGAL::POSITIVE : s != CGAL::NEGATIVE;
+  }
+
+  // Whether the four rows meet in one point (their normals independent).
+  bool vertex_exists(const Basis& B) { return k_.sign(normals_det(B, -1)) != CGAL::ZERO; }
+
+  // The sign of row j at the vertex of B.
+  CGAL::Sign vertex_sign(const Basis& B, std::size_t j) { return k_.sign(row(j).value(vertex(B))); }
+
+  // The sign of y_i in sum_B y_i n_i = -e_t: by Cramer, y_i =
+  // -det(N with row i replaced by e_t) / det N.
+  CGAL::Sign dual_sign(const Basis& B, int i)
+  {
+    CGAL::Sign num = k_.sign(normals_det(B, i)), den = k_.sign(normals_det(B, -1));
+    return CGAL::Sign(-static_cast<int>(num) * static_cast<int>(den));
+  }
+
+  // The sign of object o's plane i (its solid's own frame) at its deep point.
+  CGAL::Sign deep_sign(int o, std::size_t i)
+  {
+    const Plane3<FT>& pl = moving_[o]->object->csg.primitives[0].planes[i];
+    Vector3<FT> m{FT(deep_[o][0]), FT(deep_[o][1]), FT(deep_[o][2])};
+    return k_.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], m);
+  }
+
+  // Whether the five rows' equal-margin system (n_j . p + s big_j = -c_j,
+  // big_j the guide's scale of row j) has one solution: its determinant,
+  // by Laplace along the s column, is sum_j (-1)^(j+4) big_j det(the other
+  // four normals).
+  bool centre_exists(const Centre& C) { return k_.sign(centre_det(C)) != CGAL::ZERO; }
+
+  // The sign of row j at the centre of C.
+  CGAL::Sign centre_sign(const Centre& C, std::size_t j) { return k_.sign(row(j).value(centre(C))); }
+
+  // --- Constructions. ---
+
+  // The point p of the solution (p, s) of C's equal-margin system; kept for C.
+  const V4& centre(const Centre& C)
+  {
+    if (centre_rows_ && *centre_rows_ == C) return centre_;
+    std::array<std::array<FT, 6>, 5> M;
+    for (int i = 0; i < 5; ++i) {
+      const H& h = row(static_cast<std::size_t>(C[i]));
+      M[i] = {h.n[0], h.n[1], h.n[2], h.n[3], FT(scale_of(guide_rows_[static_cast<std::size_t>(C[i])])), -h.c};
+    }
+    std::array<FT, 5> x = solve(M);
+    centre_ = {x[0], x[1], x[2], x[3]};
+    centre_rows_ = C;
+    return centre_;
+  }
+
+  // The vertex of B (B's rows meeting), by elimination; kept for B.
+  const V4& vertex(const Basis& B)
+  {
+    if (vertex_basis_ && *vertex_basis_ == B) return vertex_;
+    std::array<std::array<FT, 5>, 4> M;
+    for (int i = 0; i < 4; ++i) {
+      const H& h = row(static_cast<std::size_t>(B[i]));
+      M[i] = {h.n[0], h.n[1], h.n[2], h.n[3], -h.c};
+    }
+    vertex_ = solve(M);
+    vertex_basis_ = B;
+    return vertex_;
+  }
+
+  // Object o's deep point moved to time t, at time t: strictly inside it
+  // (deep_sign), so every point of the object at t is in its cell's closure.
+  V4 cell(int o, const FT& t) const
+  {
+    const Moving& m = *moving_[o];
+    return {FT(deep_[o][0]) + m.v[0] * t + m.o[0], FT(deep_[o][1]) + m.v[1] * t + m.o[1],
+            FT(deep_[o][2]) + m.v[2] * t + m.o[2], t};
+  }
+
+private:
+  const K& k_;
+  const Scene_model<K>& model_;
+  int a_, b_;
+  Policy own_policy_;
+  Policy& policy_;
+  Object_model<double> guide_[2];
+  Vector3<double> deep_[2];                // per object, a point strictly inside its solid (guessed)
+  std::size_t index_ = 0;
+  std::vector<G> guide_rows_;              // the sub-span's rows in doubles, in the order of rows_
+  std::vector<H> rows_;                    // A's planes, B's, t >= lo, t <= hi: extruded on first use
+  std::vector<char> made_;
+  const Moving* moving_[2] = {nullptr, nullptr};
+  std::size_t count_a_ = 0, count_b_ = 0;
+  FT lo_{}, hi_{};
+  std::optional<Basis> vertex_basis_;
+  V4 vertex_{};
+  std::optional<Centre> centre_rows_;
+  V4 centre_{};
+  Found found_;
+
+  // A predicate, through the policy (a filter may ask another kernel).
+  template <class Predicate>
+  auto certain(Predicate p)
+  {
+    return policy_.convex_certain(*this, p);
+  }
+
+  static V4 exact_point(const Point& p) { return {FT(p[0]), FT(p[1]), FT(p[2]), FT(p[3])}; }
 
   // Row j in the kernel's numbers (equation (4) on the sub-span's motion).
   const H& row(std::size_t j)
@@ -154,6 +309,29 @@ private:
     }
     return rows_[j];
   }
+
+  // A point strictly inside the primitive, in doubles: its vertices' mean
+  // (interior for a polytope with interior), or for a half-space
+  // n.x + d <= 0, -(d + 1) n / (n.n), where it is -1.
+  static Vector3<double> deep_point(const Primitive<double>& p)
+  {
+    Vector3<double> m{0, 0, 0};
+    if (p.vertices.empty()) {
+      const Plane3<double>& h = p.planes[0];
+      double nn = h[0] * h[0] + h[1] * h[1] + h[2] * h[2];
+      for (int q = 0; q < 3; ++q) m[q] = -(h[3] + 1) * h[q] / nn;
+      return m;
+    }
+    for (const auto& v : p.vertices)
+      for (int q = 0; q < 3; ++q) m[q] += v[q];
+    for (int q = 0; q < 3; ++q) m[q] /= static_cast<double>(p.vertices.size());
+    return m;
+  }
+
+  // The guesses' zero: a row missed by the guess by more than this (in its
+  // largest normal coordinate's units) makes the exact check fail; contact
+  // scenes' overlaps go down to 1e-15 of their coordinates.
+  static constexpr double guess_eps = 1e-13;
 
   // Each row scaled by its largest normal coordinate, so that the margin
   // below is the same in every row's units.
@@ -172,7 +350,7 @@ private:
   std::optional<Double_simplex::Optimum> widest_margin() const
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-    Double_simplex lp(5, static_cast<int>(guide_rows_.size()), {0, 0, 0, 0, 1});
+    Double_simplex lp(5, static_cast<int>(guide_rows_.size()), {0, 0, 0, 0, 1}, guess_eps);
     for (std::size_t j = 0; j < guide_rows_.size(); ++j) {
       const G& g = guide_rows_[j];
       double big = scale_of(g), a[5] = {g.n[0] / big, g.n[1] / big, g.n[2] / big, g.n[3] / big, 1.0};
@@ -183,10 +361,10 @@ private:
 
   // The guide's  min t  over P as its dual: max sum y_j c_j / big_j  s.t.
   // sum y_j n_j / big_j = -e_t, y >= 0; its basis is the vertex's rows.
-  std::optional<std::vector<int>> least_time_rows() const
+  std::optional<Basis> least_time_rows() const
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-    Double_simplex lp(4, static_cast<int>(guide_rows_.size()), {0, 0, 0, -1, 0});
+    Double_simplex lp(4, static_cast<int>(guide_rows_.size()), {0, 0, 0, -1, 0}, guess_eps);
     for (std::size_t j = 0; j < guide_rows_.size(); ++j) {
       const G& g = guide_rows_[j];
       double big = scale_of(g), a[4] = {g.n[0] / big, g.n[1] / big, g.n[2] / big, g.n[3] / big};
@@ -194,131 +372,172 @@ private:
     }
     std::optional<Double_simplex::Optimum> o = lp.solve();
     if (!o || o->basis.size() != 4) return std::nullopt;
-    return o->basis;
+    return Basis{o->basis[0], o->basis[1], o->basis[2], o->basis[3]};
   }
 
-  static V4 guess_point(const Double_simplex::Row_vector& pi)
+  static Point guess_point(const Double_simplex::Row_vector& pi) { return {-pi[0], -pi[1], -pi[2], -pi[3]}; }
+
+  template <std::size_t N>
+  static bool finite(const std::array<double, N>& x)
   {
-    return {FT(-pi[0]), FT(-pi[1]), FT(-pi[2]), FT(-pi[3])};
+    return std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
   }
 
-  // Whether p is strictly inside every row (the kernel's signs); kept.
-  bool inside(const V4& p)
+  // A scene number beyond the doubles (1e400) leaves no guess to make.
+  bool guide_finite() const
   {
-    for (std::size_t j = 0; j < rows_.size(); ++j)
-      if (k_.sign(row(j).value(p)) != CGAL::NEGATIVE) return false;
-    inside_ = p;
+    for (const G& g : guide_rows_)
+      if (!finite(g.n) || !std::isfinite(g.c)) return false;
+    for (const auto& d : deep_)
+      if (!finite(d)) return false;
     return true;
   }
 
-  // Whether p lies in P (no row positive), rows `first` first; kept.
-  bool in_closed(const V4& p, const std::vector<int>& first)
+  // The basic rows that carry weight: where the multipliers are.
+  static std::vector<std::size_t> support(const Double_simplex::Optimum& o)
   {
-    for (int j : first)
-      if (k_.sign(row(static_cast<std::size_t>(j)).value(p)) == CGAL::POSITIVE) return false;
-    for (std::size_t j = 0; j < rows_.size(); ++j)
-      if (k_.sign(row(j).value(p)) == CGAL::POSITIVE) return false;
-    inside_ = p;
-    return true;
-  }
-
-  Verdict record_inside(Search_goal<FT>& goal, const V4& lowest)
-  {
-    if (!goal.can_improve(k_, lowest[3])) return Verdict::apart;   // past the ceiling: nothing to record
-    goal.record(k_, inside_, lowest);
-    return Verdict::collide;
-  }
-
-  // Regularised, earliest: the least time of P (the closure of its
-  // interior, where inside_ lies), at a vertex proven least.
-  Verdict earliest_inside(Search_goal<FT>& goal)
-  {
-    std::optional<V4> v = least_vertex(true);
-    return v ? record_inside(goal, *v) : Verdict::undecided;
-  }
-
-  // Closed: a point of P (earliest: the least time's vertex), with
-  // directions into each object there.
-  Verdict touch(Search_goal<FT>& goal)
-  {
-    std::optional<V4> v = least_vertex(goal.earliest);
-    if (!v) return Verdict::undecided;
-    if (!goal.can_improve(k_, (*v)[3])) return Verdict::apart;
-    goal.record_touch(k_, *v, into(0, *v), into(1, *v));
-    return Verdict::collide;
-  }
-
-  // A direction from p (a point of object o's closed set at p's time) into
-  // its interior, at fixed time: toward the mean of its vertices, moved
-  // with it (a bounded primitive's vertex mean is interior), or against a
-  // half-space's normal.
-  V4 into(int o, const V4& p) const
-  {
-    const Moving& m = *moving_[o];
-    const Primitive<FT>& prim = m.object->csg.primitives[0];
-    if (prim.vertices.empty()) return {-prim.planes[0][0], -prim.planes[0][1], -prim.planes[0][2], FT(0)};
-    Vector3<FT> mean = prim.vertices[0];
-    for (std::size_t i = 1; i < prim.vertices.size(); ++i)
-      for (int q = 0; q < 3; ++q) mean[q] += prim.vertices[i][q];
-    FT count(static_cast<int>(prim.vertices.size()));
-    V4 d{FT(0), FT(0), FT(0), FT(0)};
-    for (int q = 0; q < 3; ++q) d[q] = mean[q] / count + m.v[q] * p[3] + m.o[q] - p[q];
-    return d;
-  }
-
-  // The vertex of the guide's least-time rows, when it lies in P and
-  // (proven: multipliers y >= 0 on its rows) has the least time of P.
-  std::optional<V4> least_vertex(bool proven)
-  {
-    std::optional<std::vector<int>> basis = least_time_rows();
-    if (!basis) return std::nullopt;
-    std::array<H, 4> B;
-    for (int i = 0; i < 4; ++i) B[i] = row(static_cast<std::size_t>((*basis)[i]));
-    FT den = determinant4(B[0].n, B[1].n, B[2].n, B[3].n);
-    CGAL::Sign sd = k_.sign(den);
-    if (sd == CGAL::ZERO) return std::nullopt;
-    // Cramer: v_q = det(N with column q replaced by -c) / det N.
-    V4 v;
-    for (int q = 0; q < 4; ++q) {
-      std::array<V4, 4> M;
-      for (int i = 0; i < 4; ++i) (M[i] = B[i].n)[q] = -B[i].c;
-      v[q] = k_.quotient(determinant4(M[0], M[1], M[2], M[3]), den, sd);
-    }
-    for (std::size_t j = 0; j < rows_.size(); ++j)
-      if (std::find(basis->begin(), basis->end(), static_cast<int>(j)) == basis->end() &&
-          k_.sign(row(j).value(v)) == CGAL::POSITIVE)
-        return std::nullopt;
-    // y solves sum_i y_i n_i = -e_t: y_i = -det(N with row i = e_t) / det N.
-    for (int i = 0; i < 4 && proven; ++i) {
-      std::array<V4, 4> M{B[0].n, B[1].n, B[2].n, B[3].n};
-      M[i] = {FT(0), FT(0), FT(0), FT(1)};
-      if (k_.sign(determinant4(M[0], M[1], M[2], M[3])) == sd) return std::nullopt;   // y_i < 0
-    }
-    return v;
-  }
-
-  // Whether multipliers on the guide's support (its basic rows with weight)
-  // prove the strict system empty (regularised: sum lambda c >= 0) or P
-  // empty (strict: sum lambda c > 0).
-  bool proves_empty(const Double_simplex::Optimum& o, bool strict)
-  {
-    std::vector<std::size_t> support;
+    std::vector<std::size_t> out;
     double most = 0;
     for (double y : o.y) most = std::max(most, y);
     for (std::size_t i = 0; i < o.basis.size(); ++i)
-      if (o.y[i] > 1e-9 * most) support.push_back(static_cast<std::size_t>(o.basis[i]));
-    std::optional<std::vector<FT>> lambda = null_vector(support);
-    if (!lambda) return false;
-    FT sum(0);
-    for (std::size_t i = 0; i < support.size(); ++i) {
-      if (k_.sign((*lambda)[i]) == CGAL::NEGATIVE) return false;
-      sum += (*lambda)[i] * row(support[i]).c;
-    }
-    CGAL::Sign s = k_.sign(sum);
-    return strict ? s == CGAL::POSITIVE : s != CGAL::NEGATIVE;
+      if (o.y[i] > 1e-9 * most) out.push_back(static_cast<std::size_t>(o.basis[i]));
+    return out;
   }
 
-  // lambda with sum lambda_i n_i = 0 over the rows `which`, the last free
+  // Whether p is inside every row (strict: strictly), rows `first` first
+  // (those the guess holds tight: a miss shows there soonest).
+  bool in(const Point& p, bool strict, const std::vector<std::size_t>& first)
+  {
+    auto holds = [&](std::size_t j) {
+      CGAL::Sign s = certain([&](auto& st) { return st.row_sign(j, p); });
+      return strict ? s == CGAL::NEGATIVE : s != CGAL::POSITIVE;
+    };
+    for (std::size_t j : first)
+      if (!holds(j)) return false;
+    for (std::size_t j = 0; j < rows_.size(); ++j)
+      if (std::find(first.begin(), first.end(), j) == first.end() && !holds(j)) return false;
+    return true;
+  }
+
+  // Whether each object's deep point is strictly inside it.
+  bool deep_inside()
+  {
+    for (int o = 0; o < 2; ++o)
+      for (std::size_t i = 0; i < moving_[o]->object->csg.primitives[0].planes.size(); ++i)
+        if (certain([&](auto& s) { return s.deep_sign(o, i); }) != CGAL::NEGATIVE) return false;
+    return true;
+  }
+
+  // The vertex of the guide's least-time rows when it lies in P and
+  // (proven: multipliers y >= 0 on its rows) has the least time of P.
+  std::optional<Basis> least_vertex(bool proven)
+  {
+    std::optional<Basis> B = least_time_rows();
+    if (!B || !certain([&](auto& s) { return s.vertex_exists(*B); })) return std::nullopt;
+    for (std::size_t j = 0; j < rows_.size(); ++j)
+      if (std::find(B->begin(), B->end(), static_cast<int>(j)) == B->end() &&
+          certain([&](auto& s) { return s.vertex_sign(*B, j); }) == CGAL::POSITIVE)
+        return std::nullopt;
+    for (int i = 0; i < 4 && proven; ++i)
+      if (certain([&](auto& s) { return s.dual_sign(*B, i); }) == CGAL::NEGATIVE) return std::nullopt;
+    return B;
+  }
+
+  // Regularised: the point inside (the guess g, or the centre of C);
+  // earliest, with the least time of P (the closure of its interior,
+  // where the point lies), at a vertex proven least.
+  Verdict earliest_or_point(Search_goal<FT>& goal, const V4& in, const Point& g, const Centre* C)
+  {
+    std::optional<Basis> B;
+    if (goal.earliest && !(B = least_vertex(true))) return Verdict::undecided;
+    V4 lowest = B ? vertex(*B) : in;
+    if (!goal.can_improve(k_, lowest[3])) return Verdict::apart;   // past the ceiling: nothing to record
+    goal.record(k_, in, lowest);
+    goal.convex = true;
+    found_ = {index_, B.has_value(), B ? *B : Basis{}, g, C != nullptr, C ? *C : Centre{}};
+    policy_.convex_found(*this);
+    return Verdict::collide;
+  }
+
+  // Closed: the point g, or B's vertex, with each object's deep point at
+  // its time.
+  Verdict touch(Search_goal<FT>& goal, const Point& g, const Basis* B)
+  {
+    V4 p = B ? vertex(*B) : exact_point(g);
+    if (!goal.can_improve(k_, p[3])) return Verdict::apart;
+    goal.record_touch(k_, p, V4{FT(0), FT(0), FT(0), FT(0)}, V4{FT(0), FT(0), FT(0), FT(0)});
+    goal.convex = true;
+    goal.cell_a = cell(0, p[3]);
+    goal.cell_b = cell(1, p[3]);
+    found_ = {index_, B != nullptr, B ? *B : Basis{}, g, false, Centre{}};
+    policy_.convex_found(*this);
+    return Verdict::collide;
+  }
+
+  // det of B's normals, with row `with_time` (if any) replaced by e_t.
+  FT normals_det(const Basis& B, int with_time)
+  {
+    std::array<V4, 4> N;
+    for (int i = 0; i < 4; ++i)
+      N[i] = i == with_time ? V4{FT(0), FT(0), FT(0), FT(1)} : row(static_cast<std::size_t>(B[i])).n;
+    return determinant4(N[0], N[1], N[2], N[3]);
+  }
+
+  // The solution of an N x N system [M | rhs] whose matrix is known regular
+  // (vertex_exists, centre_exists), by elimination with the kernel's
+  // largest pivot (any pivot gives the same exact solution).
+  template <std::size_t N>
+  std::array<FT, N> solve(std::array<std::array<FT, N + 1>, N> M) const
+  {
+    for (std::size_t c = 0; c < N; ++c) {
+      std::array<FT, N> column;
+      for (std::size_t r = 0; r < N; ++r) column[r] = r < c ? FT(0) : M[r][c];
+      std::swap(M[c], M[static_cast<std::size_t>(k_.largest_component(column))]);
+      for (std::size_t r = c + 1; r < N; ++r) {
+        FT f = M[r][c] / M[c][c];
+        for (std::size_t cc = c + 1; cc <= N; ++cc) M[r][cc] -= f * M[c][cc];
+      }
+    }
+    std::array<FT, N> x;
+    for (std::size_t r = N; r-- > 0;) {
+      FT s = M[r][N];
+      for (std::size_t cc = r + 1; cc < N; ++cc) s -= M[r][cc] * x[cc];
+      x[r] = s / M[r][r];
+    }
+    return x;
+  }
+
+  // det of C's equal-margin system (centre_exists).
+  FT centre_det(const Centre& C)
+  {
+    FT sum(0);
+    for (int j = 0; j < 5; ++j) {
+      std::array<V4, 4> N;
+      for (int i = 0, k = 0; i < 5; ++i)
+        if (i != j) N[static_cast<std::size_t>(k++)] = row(static_cast<std::size_t>(C[i])).n;
+      FT term = FT(scale_of(guide_rows_[static_cast<std::size_t>(C[j])])) * determinant4(N[0], N[1], N[2], N[3]);
+      sum += j % 2 == 0 ? term : -term;   // (-1)^(j+4)
+    }
+    return sum;
+  }
+
+  // The guess's five basic rows, when it has five.
+  static std::optional<Centre> centre_rows(const Double_simplex::Optimum& o)
+  {
+    if (o.basis.size() != 5) return std::nullopt;
+    return Centre{o.basis[0], o.basis[1], o.basis[2], o.basis[3], o.basis[4]};
+  }
+
+  // Whether C's centre exists and is strictly inside every row.
+  bool strictly_inside_centre(const Centre& C)
+  {
+    if (!certain([&](auto& s) { return s.centre_exists(C); })) return false;
+    for (std::size_t j = 0; j < rows_.size(); ++j)
+      if (certain([&](auto& s) { return s.centre_sign(C, j); }) != CGAL::NEGATIVE) return false;
+    return true;
+  }
+
+  // lambda with sum lambda_i n_i = 0 over the rows `which`, the free
   // column's lambda 1, when the normals' dependencies are one line
   // (Gaussian elimination with the kernel's signs choosing pivots).
   std::optional<std::vector<FT>> null_vector(const std::vector<std::size_t>& which)
@@ -348,11 +567,13 @@ private:
       ++rank;
     }
     if (free == n) return std::nullopt;   // independent normals
+    // Pivot columns after the free one have lambda 0 (their rows' sums hold
+    // only later columns); the others follow from the bottom up.
     std::vector<FT> lambda(n, FT(0));
     lambda[free] = FT(1);
     for (std::size_t r = rank; r-- > 0;) {
       std::size_t c = pivot_col[r];
-      if (c > free) continue;   // columns after the free one: their lambda is 0
+      if (c > free) continue;
       FT s(0);
       for (std::size_t cc = c + 1; cc < n; ++cc) s += M[r][cc] * lambda[cc];
       lambda[c] = -s / M[r][c];

@@ -22,8 +22,10 @@ public:
   using Row_vector = std::array<double, max_rows>;
 
   // rows <= max_rows equality rows with right-hand side b; columns y_j.
-  Double_simplex(int rows, int columns, const Row_vector& b)
-      : R_(rows), m_(columns), W_(m_ + R_ + 1), T_(static_cast<std::size_t>((R_ + 1) * W_), 0.0),
+  // eps: reduced costs and pivots below it count as zero (columns of
+  // entries at most 1: a constraint of the primal may be missed by eps).
+  Double_simplex(int rows, int columns, const Row_vector& b, double eps = 1e-9)
+      : eps_(eps), R_(rows), m_(columns), W_(m_ + R_ + 1), T_(static_cast<std::size_t>((R_ + 1) * W_), 0.0),
         cost_(static_cast<std::size_t>(columns), 0.0), b_(b), flip_{}, basis_(static_cast<std::size_t>(rows))
   {
     // Rows with b < 0 are negated, so that the artificials start feasible.
@@ -67,7 +69,7 @@ public:
     for (int r = 0; r < R_; ++r)
       if (basis_[static_cast<std::size_t>(r)] >= m_) {
         int c = 0;
-        while (c < m_ && std::abs(at(r, c)) <= eps) ++c;
+        while (c < m_ && std::abs(at(r, c)) <= eps_) ++c;
         if (c < m_) pivot(r, c);
       }
     // Phase 2: cost . y maximised (its negation minimised). An artificial
@@ -90,7 +92,7 @@ public:
   }
 
 private:
-  static constexpr double eps = 1e-9;
+  double eps_;
   int R_, m_, W_;                      // rows; y columns; columns with artificials and rhs
   std::vector<double> T_, cost_;
   Row_vector b_, flip_;
@@ -121,14 +123,14 @@ private:
     for (int iteration = 0; iteration < 50 * (m_ + R_); ++iteration) {
       int enter = -1;
       for (int c = 0; c < m_ && enter < 0; ++c)
-        if (at(R_, c) < -eps) enter = c;
+        if (at(R_, c) < -eps_) enter = c;
       if (enter < 0) return true;
       int leave = -1;
       double best = 0;
       for (int r = 0; r < R_; ++r)
-        if (at(r, enter) > eps) {
+        if (at(r, enter) > eps_) {
           double ratio = at(r, W_ - 1) / at(r, enter);
-          if (leave < 0 || ratio < best - eps || (ratio <= best + eps && basis_[static_cast<std::size_t>(r)] <
+          if (leave < 0 || ratio < best - eps_ || (ratio <= best + eps_ && basis_[static_cast<std::size_t>(r)] <
                                                                             basis_[static_cast<std::size_t>(leave)]))
             leave = r, best = ratio;
         }

@@ -16,6 +16,15 @@
 //                                      linear programs (search/Convex_pair.h):
 //                                      decide() gives the verdict; a filter
 //                                      failing in it may hand the pair on
+//   Convex_pair:
+//     template <class Stage, class Predicate> auto convex_certain(stage, p)
+//                                      p(stage): one sign of the programs,
+//                                      whose arguments are guesses (the same
+//                                      in every kernel); a filter that cannot
+//                                      tell asks p of its exact kernel's
+//                                      stage on the same sub-span
+//     template <class Stage> void convex_found(stage)   the stage recorded
+//                                      a collision (stage.found() says how)
 //     template <class M, class Stage, class Run>
 //       void region_stage(a, b, index, A, B, stage, run)   the S-bounds and
 //                                      region: run() makes them here; a
@@ -115,6 +124,13 @@ struct No_filter {
   {
     return decide();
   }
+  template <class Stage, class Predicate>
+  auto convex_certain(Stage& stage, Predicate p)
+  {
+    return p(stage);
+  }
+  template <class Stage>
+  void convex_found(const Stage&) {}
   template <class M, class Stage, class Run>
   void region_stage(int, int, std::size_t, M&, M&, Stage&, Run run)
   {

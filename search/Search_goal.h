@@ -40,6 +40,13 @@ struct Search_goal {
   std::array<std::size_t, 4> vertex{};
   bool vertex_known = false;
   std::size_t records = 0;      // improvements so far (a caller sees whether it made one)
+  // Recorded by a convex pair's linear programs (search/Convex_pair.h): the
+  // region's closure on the sub-span is one convex polyhedron holding the
+  // contact point, with `inside` in its interior; closed, cell_a and cell_b
+  // are points strictly inside each object at the contact's time. Every
+  // such point sees the contact in its cell's closure.
+  bool convex = false;
+  Vector4<FT> cell_a{}, cell_b{};
 
   // Earliest mode across pairs: a pair whose collision cannot start before
   // the best time of the pairs already examined need not be searched.
@@ -69,7 +76,7 @@ struct Search_goal {
     inside = in;
     t_star = lowest[3];
     contact = lowest;
-    vertex_known = false;
+    vertex_known = convex = false;
     ++records;
     return true;
   }
@@ -84,7 +91,7 @@ struct Search_goal {
     found = improved = true;
     inside = contact = p;
     t_star = p[3];
-    vertex_known = false;
+    vertex_known = convex = false;
     ++records;
     toward_a = a;
     toward_b = b;

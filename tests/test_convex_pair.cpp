@@ -52,7 +52,7 @@ Staged<K> decide(const Scene& scene, bool earliest, Semantics semantics, std::si
   Staged<K> s;
   s.goal.earliest = earliest;
   s.goal.semantics = semantics;
-  s.verdict = stage.decide(A, B, span, s.goal);
+  s.verdict = stage.decide(index, A, B, span, s.goal);
   return s;
 }
 
@@ -177,17 +177,28 @@ BOOST_AUTO_TEST_CASE(pyramid_apex_meets_the_face_at_t_1)
 
 // An overlap of 10^-30 is beyond the guide's doubles (1 - 10^-30 rounds to
 // 1, a touch): its multipliers prove nothing exactly (their sum is
-// -10^-30), so the stage leaves the sub-span to the cascade, which finds
-// the collision; every kernel's `check` agrees, with a valid witness.
-BOOST_AUTO_TEST_CASE(a_guess_that_proves_nothing_is_left_to_the_cascade)
+// -10^-30), and the programs' optimum made exactly from the guess's five
+// rows, where the two faces' margins are equal (10^-30 / 2), is inside:
+// a collision, with a witness strictly inside both. A scene number beyond
+// the doubles (10^400) leaves no guess at all: the sub-span goes to the
+// cascade, which finds the collision; every kernel's `check` agrees.
+BOOST_AUTO_TEST_CASE(thin_overlaps_and_numbers_beyond_the_guess)
 {
-  Scene s = two_blocks(R"(["0.999999999999999999999999999999", 0, 0])", "[2, 1, 1]", "rest", "[0, 1]");
-  BOOST_TEST((decide<Rational_kernel>(s, false, Semantics::regularised).verdict == Verdict::undecided));
-  for (const Check_answer& a : {check_rational(s, Check_options()), check_exact(s, Check_options())}) {
-    BOOST_TEST(a.collide);
-    BOOST_TEST(a.stats.convex_undecided >= 1u);
-    BOOST_TEST(a.reported()->witness_verified);
-  }
+  Scene thin = two_blocks(R"(["0.999999999999999999999999999999", 0, 0])", "[2, 1, 1]", "rest", "[0, 1]");
+  Staged<Rational_kernel> t = decide<Rational_kernel>(thin, false, Semantics::regularised);
+  BOOST_TEST((t.verdict == Verdict::collide));
+  Q micro(1, 1000000);
+  BOOST_TEST(t.goal.inside[0] == Q(1) - micro * micro * micro * micro * micro / Q(2));   // the faces' mid-plane
+  Scene huge = scene_of(R"({"name": "a", "shape": {"block": {"min": [0, 0, 0], "max": ["1e400", 1, 1]}}},
+    {"name": "b", "shape": {"block": {"min": [2, 0, 0], "max": [3, 1, 1]}}})",
+                        "[0, 1]");
+  BOOST_TEST((decide<Rational_kernel>(huge, false, Semantics::regularised).verdict == Verdict::undecided));
+  for (const Scene* s : {&thin, &huge})
+    for (const Check_answer& a : {check_rational(*s, Check_options()), check_exact(*s, Check_options())}) {
+      BOOST_TEST(a.collide);
+      BOOST_TEST(a.reported()->witness_verified);
+      BOOST_TEST(a.stats.convex_undecided == (s == &huge ? 1u : 0u));
+    }
 }
 
 // End to end over the contact fixtures' convex pairs: the linear programs
