@@ -53,7 +53,7 @@ public:
 
   Filtered_runner(const Scene& scene, bool use_sbounds)
     : scene_(scene), use_sbounds_(use_sbounds), built_(new std::once_flag[scene.objects.size()]),
-      settled_(new std::once_flag[scene.objects.size()])
+      settled_(new std::once_flag[scene.objects.size()]), moved_(new std::once_flag[scene.objects.size()])
   {
     emodel_.t_lo = ek_.from_rational(scene.t_lo);
     emodel_.t_hi = ek_.from_rational(scene.t_hi);
@@ -305,7 +305,7 @@ private:
   std::vector<char> exact_only_;              // AK could not bound the object: its pairs go to EK
   Scene_model<EK> emodel_;                    // objects built on demand
   std::vector<typename S_bounds<EK>::Bounds> esettled_;
-  std::unique_ptr<std::once_flag[]> built_, settled_;   // EK's model of an object, and its S-bounds
+  std::unique_ptr<std::once_flag[]> built_, settled_, moved_;   // EK's model of an object, its S-bounds, its motion
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
       stages_adopted_{0}, lines_rerun_{0}, convex_rational_{0};
@@ -425,11 +425,14 @@ private:
   // its S-bounds too (what EK's runs need).
   void need_model(int i)
   {
-    std::call_once(built_[i], [&] {
-      const Scene_object& o = scene_.objects[i];
-      emodel_.objects[i].csg = Model_builder<EK>(ek_).build(o.shape);
-      emodel_.objects[i].motion = Motion_path<EFT>::build(ek_, o.motion);
-    });
+    need_motion(i);
+    std::call_once(built_[i], [&] { emodel_.objects[i].csg = Model_builder<EK>(ek_).build(scene_.objects[i].shape); });
+  }
+  // Only the motion (a convex pair's signs in rationals read their planes
+  // from the scene as asked, Interval_filter::Exact_convex).
+  void need_motion(int i)
+  {
+    std::call_once(moved_[i], [&] { emodel_.objects[i].motion = Motion_path<EFT>::build(ek_, scene_.objects[i].motion); });
   }
   void need_exact(int i)
   {

@@ -134,7 +134,10 @@ public:
     Vector4<EFT> g{EFT(f.point[0]), EFT(f.point[1]), EFT(f.point[2]), EFT(f.point[3])};
     if (!closed && !(found.has_witness && found.witness_verified && exact_point(found.witness, r.witness))) {
       // A point inside the intervals could not snap (an overlap as thin as
-      // their enclosures): the witness made from it in rationals.
+      // their enclosures): the witness made from it in rationals, on the
+      // objects' whole models.
+      runner_->need_model(found.a);
+      runner_->need_model(found.b);
       const Exact_convex& x = *exact_convex_;
       Vector3<EFT> world{EFT(0), EFT(0), EFT(0)};
       r.witness = Witness<EK>(runner_->ek_).make(f.at_centre ? e.centre(f.centre_rows) : g, world, x.A, x.B,
@@ -472,31 +475,40 @@ public:
 private:
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);   // no plane (Generate_and_test's)
   Runner* runner_ = nullptr;
-  // A convex pair's stage in rationals on one sub-span (EK's model of the
-  // two objects, no S-bounds), for the signs the intervals leave open.
+  // A convex pair's stage in rationals on one sub-span, for the signs the
+  // intervals leave open: EK's motions of the two objects, and their planes
+  // made as the stage reads them (model/Primitive_planes.h).
+  // The planes are the pair's, kept across its sub-spans.
   struct Exact_convex {
     int a, b;
     std::size_t index;
     Time_span<EFT> span;
     Moving_object<EFT> A, B;
     Convex_pair<EK> stage;
-    Exact_convex(Runner& runner, int a_, int b_, std::size_t i)
+    Exact_convex(Runner& runner, int a_, int b_, std::size_t i, Primitive_planes<EK>& pa, Primitive_planes<EK>& pb)
       : a(a_), b(b_), index(i), span(runner.emodel_.sub_spans({a_, b_}).at(i)),
         A(moving_on(runner.emodel_, a_, span, {})), B(moving_on(runner.emodel_, b_, span, {})),
         stage(runner.ek_, runner.emodel_, a_, b_)
     {
+      stage.use_planes(pa, pb);
       stage.start_span(i, A, B, span);
     }
   };
   std::unique_ptr<Exact_convex> exact_convex_;
+  std::unique_ptr<Primitive_planes<EK>> exact_planes_[2];   // the pair's objects' (a filter is one pair's)
   std::optional<Convex_found> convex_found_;
 
   Convex_pair<EK>& exact_convex(int a, int b, std::size_t index)
   {
     if (!exact_convex_ || exact_convex_->a != a || exact_convex_->b != b || exact_convex_->index != index) {
-      runner_->need_model(a);
-      runner_->need_model(b);
-      exact_convex_ = std::make_unique<Exact_convex>(*runner_, a, b, index);
+      runner_->need_motion(a);
+      runner_->need_motion(b);
+      int ids[2] = {a, b};
+      for (int o = 0; o < 2; ++o)
+        if (!exact_planes_[o])
+          exact_planes_[o] = std::make_unique<Primitive_planes<EK>>(
+              runner_->ek_, runner_->scene_.objects[static_cast<std::size_t>(ids[o])].shape);
+      exact_convex_ = std::make_unique<Exact_convex>(*runner_, a, b, index, *exact_planes_[0], *exact_planes_[1]);
     }
     return exact_convex_->stage;
   }

@@ -111,17 +111,11 @@ private:
   }
   Vector3<FT> vec3(const Solid& s, std::size_t i) const { return {num(s, i), num(s, i + 1), num(s, i + 2)}; }
 
-  int add(const Solid& s, const Affine3<FT>& T, int parent)
+  int add(const Solid& under, const Affine3<FT>& outer, int parent)
   {
     using K_ = Solid::Kind;
-    if (s.kind == K_::Translate) {
-      std::array<Vector3<FT>, 3> I = Affine3<FT>::identity().R;
-      return add(s.children[0], T.then_local(I, vec3(s, 0), true), parent);
-    }
-    if (s.kind == K_::Rotate) {
-      auto M = rotation_matrix(num(s, 0), num(s, 1), num(s, 2), num(s, 3));
-      return add(s.children[0], T.then_local(M, {FT(0), FT(0), FT(0)}), parent);
-    }
+    Affine3<FT> T = outer;
+    const Solid& s = peel(under, T);
     int id = static_cast<int>(model_.nodes.size());
     model_.nodes.emplace_back();
     model_.nodes[id].parent = parent;
@@ -140,12 +134,36 @@ private:
     return id;
   }
 
-  Primitive<FT> primitive(const Solid& s, const Affine3<FT>& T) const
+public:
+  // s without its transforms (translate, rotate): the solid under them,
+  // with T composed with them.
+  const Solid& peel(const Solid& s, Affine3<FT>& T) const
+  {
+    if (s.kind == Solid::Kind::Translate) {
+      T = T.then_local(Affine3<FT>::identity().R, vec3(s, 0), true);
+      return peel(s.children[0], T);
+    }
+    if (s.kind == Solid::Kind::Rotate) {
+      T = T.then_local(rotation_matrix(num(s, 0), num(s, 1), num(s, 2), num(s, 3)), {FT(0), FT(0), FT(0)});
+      return peel(s.children[0], T);
+    }
+    return s;
+  }
+
+  // A primitive solid in its own frame (planes and vertices, as read).
+  Primitive<FT> local(const Solid& s) const
   {
     Primitive<FT> p;
     p.path = s.path;
     p.corners = s.corners;
     local_geometry(s, p);
+    return p;
+  }
+
+private:
+  Primitive<FT> primitive(const Solid& s, const Affine3<FT>& T) const
+  {
+    Primitive<FT> p = local(s);
     if (!T.is_identity) {
       for (auto& h : p.planes) h = T.apply(h);
       for (auto& v : p.vertices) v = T.apply(v);

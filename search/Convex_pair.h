@@ -33,6 +33,7 @@
 
 #include "model/Extrusion.h"
 #include "model/Model_builder.h"
+#include "model/Primitive_planes.h"
 #include "search/Double_simplex.h"
 #include "search/No_filter.h"
 #include "search/Search_goal.h"
@@ -109,6 +110,10 @@ public:
     }
   }
 
+  // Each object's planes from these instead of the model's objects (which
+  // then need only their motions): planes made as the stage reads them.
+  void use_planes(Primitive_planes<K>& a, Primitive_planes<K>& b) { planes_[0] = &a, planes_[1] = &b; }
+
   int a() const { return a_; }
   int b() const { return b_; }
   std::size_t span_index() const { return index_; }
@@ -162,8 +167,8 @@ public:
       for (const auto& plane : m.csg.primitives[0].planes)
         guide_rows_.push_back(extrude(plane, m.motion.velocity[seg], m.motion.offset[seg]));
     }
-    count_a_ = A.object->csg.primitives[0].planes.size();
-    count_b_ = B.object->csg.primitives[0].planes.size();
+    count_a_ = plane_count(0);
+    count_b_ = plane_count(1);
     guide_rows_.push_back(time_at_least(nearest_double(*span.exact_lo)));
     guide_rows_.push_back(time_at_most(nearest_double(*span.exact_hi)));
     rows_.assign(guide_rows_.size(), H{});
@@ -210,7 +215,7 @@ public:
   // The sign of object o's plane i (its solid's own frame) at its deep point.
   CGAL::Sign deep_sign(int o, std::size_t i)
   {
-    const Plane3<FT>& pl = moving_[o]->object->csg.primitives[0].planes[i];
+    const Plane3<FT>& pl = plane(o, i);
     Vector3<FT> m{FT(deep_[o][0]), FT(deep_[o][1]), FT(deep_[o][2])};
     return k_.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], m);
   }
@@ -277,6 +282,7 @@ private:
   std::vector<H> rows_;                    // A's planes, B's, t >= lo, t <= hi: extruded on first use
   std::vector<char> made_;
   const Moving* moving_[2] = {nullptr, nullptr};
+  Primitive_planes<K>* planes_[2] = {nullptr, nullptr};
   std::size_t count_a_ = 0, count_b_ = 0;
   FT lo_{}, hi_{};
   std::optional<Basis> vertex_basis_;
@@ -294,6 +300,16 @@ private:
 
   static V4 exact_point(const Point& p) { return {FT(p[0]), FT(p[1]), FT(p[2]), FT(p[3])}; }
 
+  // Object o's plane i in the world, not moving.
+  const Plane3<FT>& plane(int o, std::size_t i)
+  {
+    return planes_[o] ? (*planes_[o])[i] : moving_[o]->object->csg.primitives[0].planes[i];
+  }
+  std::size_t plane_count(int o) const
+  {
+    return planes_[o] ? planes_[o]->size() : moving_[o]->object->csg.primitives[0].planes.size();
+  }
+
   // Row j in the kernel's numbers (equation (4) on the sub-span's motion).
   const H& row(std::size_t j)
   {
@@ -301,7 +317,7 @@ private:
       if (j < count_a_ + count_b_) {
         const Moving& m = *moving_[j < count_a_ ? 0 : 1];
         std::size_t i = j < count_a_ ? j : j - count_a_;
-        rows_[j] = extrude(m.object->csg.primitives[0].planes[i], m.v, m.o);
+        rows_[j] = extrude(plane(j < count_a_ ? 0 : 1, i), m.v, m.o);
       } else {
         rows_[j] = j == count_a_ + count_b_ ? time_at_least(lo_) : time_at_most(hi_);
       }
@@ -423,7 +439,7 @@ private:
   bool deep_inside()
   {
     for (int o = 0; o < 2; ++o)
-      for (std::size_t i = 0; i < moving_[o]->object->csg.primitives[0].planes.size(); ++i)
+      for (std::size_t i = 0; i < plane_count(o); ++i)
         if (certain([&](auto& s) { return s.deep_sign(o, i); }) != CGAL::NEGATIVE) return false;
     return true;
   }
