@@ -12,6 +12,7 @@
 #include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
 #include "search/Convex_pair.h"
+#include <filesystem>
 
 using namespace clash4d;
 
@@ -226,4 +227,30 @@ BOOST_AUTO_TEST_CASE(linear_programs_agree_with_the_cascade)
       }
   }
   BOOST_TEST(decided > 0u);
+}
+
+// A one-primitive solid's planes made as asked (model/Primitive_planes.h)
+// are the model's planes (Model_builder), plane by plane, for every such
+// object of the contact and paper fixtures (translated, rotated, hulls,
+// prisms, half-spaces): the same transforms, applied one plane at a time.
+BOOST_AUTO_TEST_CASE(planes_made_as_asked_are_the_models)
+{
+  Rational_kernel k;
+  std::size_t objects = 0;
+  for (const char* family : {"contact", "paper"})
+    for (const auto& f : std::filesystem::directory_iterator(std::string(CLASH4D_FIXTURES) + "/" + family)) {
+      if (f.path().filename() == "expected.json") continue;
+      Scene s = read_scene_file(f.path().string());
+      Scene_model<Rational_kernel> m = Scene_model<Rational_kernel>::build(k, s);
+      for (std::size_t i = 0; i < s.objects.size(); ++i) {
+        const Csg_model<Q>& csg = m.objects[i].csg;
+        if (csg.nodes.size() != 1) continue;
+        Primitive_planes<Rational_kernel> lazy(k, s.objects[i].shape);
+        BOOST_TEST_REQUIRE(lazy.size() == csg.primitives[0].planes.size());
+        for (std::size_t p = lazy.size(); p-- > 0;)   // out of order: each made alone
+          BOOST_TEST((lazy[p] == csg.primitives[0].planes[p]), f.path().filename() << " " << s.objects[i].name);
+        ++objects;
+      }
+    }
+  BOOST_TEST(objects > 100u);
 }

@@ -335,6 +335,42 @@ BOOST_AUTO_TEST_CASE(no_fallback_in_general_position)
   BOOST_TEST(e.stats.earliest_by_intervals == 0u);
 }
 
+// Convex pairs decided by their linear programs (search/Convex_pair.h), in
+// the interval run: a clear collision needs no rational at all (its point
+// inside and witness are the intervals'); a touch after a rotation by
+// (3/5, 4/5) needs the few signs the intervals cannot certify (the
+// multipliers' sum, exactly zero) from the rational stage, nothing run
+// whole; and t* at the pyramid's apex, 999999999/1000000000 (expected.json),
+// is the rational stage's vertex, the rest the intervals'. No line of the
+// cascade is searched, and every answer is the rational run's.
+BOOST_AUTO_TEST_CASE(convex_pairs_ask_rationals_only_the_signs_intervals_leave)
+{
+  auto fixture = [](const std::string& name) {
+    return read_scene_file(std::string(CLASH4D_FIXTURES) + "/contact/" + name + ".json");
+  };
+  Check_answer clear = same_answers(fixture("clear_collision_head_on"), Check_options(), "clear_collision_head_on");
+  BOOST_TEST(clear.collide);
+  BOOST_TEST(clear.stats.convex_spans >= 1u);
+  BOOST_TEST(clear.stats.convex_exact_signs == 0u);
+  BOOST_TEST(clear.stats.witnesses_by_intervals == 1u);
+
+  Check_answer touch = same_answers(fixture("rotated_skew_face_touch"), Check_options(), "rotated_skew_face_touch");
+  BOOST_TEST(!touch.collide);
+  BOOST_TEST(touch.stats.convex_exact_signs > 0u);
+  BOOST_TEST((touch.stats.convex_rational == 0u && touch.stats.exact_fallbacks == 0u));
+
+  Check_options earliest;
+  earliest.earliest = true;
+  for (Semantics sem : {Semantics::regularised, Semantics::closed}) {
+    earliest.semantics = sem;
+    Check_answer apex = same_answers(fixture("vertex_face_touch_instant_overlap_1e-9"), earliest, "apex");
+    BOOST_REQUIRE(apex.collide);
+    BOOST_TEST(apex.reported()->t_star == "999999999/1000000000");
+    BOOST_TEST(apex.stats.lines == 0u);
+    BOOST_TEST((apex.stats.convex_rational == 0u && apex.stats.exact_fallbacks == 0u));
+  }
+}
+
 namespace {
 
 // A contact fixture in earliest mode, held to the rational run's answer.
