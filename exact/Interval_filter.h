@@ -107,12 +107,14 @@ public:
     }
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     ++stats_->convex_exact_signs;
+    convex_guide_ = stage.guide();
     return p(exact_convex(stage.a(), stage.b(), stage.span_index()));
   }
   template <class Stage>
   void convex_found(const Stage& stage)
   {
     convex_found_ = stage.found();
+    convex_guide_ = stage.guide();
   }
   // A convex pair's answer where the intervals made its point inside (or
   // its guess point) but only enclose the vertex at t* or the closed
@@ -485,10 +487,11 @@ private:
     Time_span<EFT> span;
     Moving_object<EFT> A, B;
     Convex_pair<EK> stage;
-    Exact_convex(Runner& runner, int a_, int b_, std::size_t i, Primitive_planes<EK>& pa, Primitive_planes<EK>& pb)
+    Exact_convex(Runner& runner, int a_, int b_, std::size_t i, Primitive_planes<EK>& pa, Primitive_planes<EK>& pb,
+                 std::shared_ptr<const Convex_guide> guide)
       : a(a_), b(b_), index(i), span(runner.emodel_.sub_spans({a_, b_}).at(i)),
         A(moving_on(runner.emodel_, a_, span, {})), B(moving_on(runner.emodel_, b_, span, {})),
-        stage(runner.ek_, runner.emodel_, a_, b_)
+        stage(runner.ek_, runner.emodel_, a_, b_, nullptr, std::move(guide))
     {
       stage.use_planes(pa, pb);
       stage.start_span(i, A, B, span);
@@ -496,6 +499,7 @@ private:
   };
   std::unique_ptr<Exact_convex> exact_convex_;
   std::unique_ptr<Primitive_planes<EK>> exact_planes_[2];   // the pair's objects' (a filter is one pair's)
+  std::shared_ptr<const Convex_guide> convex_guide_;         // the interval stage's, shared
   std::optional<Convex_found> convex_found_;
 
   Convex_pair<EK>& exact_convex(int a, int b, std::size_t index)
@@ -508,7 +512,8 @@ private:
         if (!exact_planes_[o])
           exact_planes_[o] = std::make_unique<Primitive_planes<EK>>(
               runner_->ek_, runner_->scene_.objects[static_cast<std::size_t>(ids[o])].shape);
-      exact_convex_ = std::make_unique<Exact_convex>(*runner_, a, b, index, *exact_planes_[0], *exact_planes_[1]);
+      exact_convex_ =
+          std::make_unique<Exact_convex>(*runner_, a, b, index, *exact_planes_[0], *exact_planes_[1], convex_guide_);
     }
     return exact_convex_->stage;
   }

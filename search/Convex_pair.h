@@ -40,6 +40,7 @@
 #include <CGAL/FPU.h>
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -65,6 +66,14 @@ struct Convex_found {
   Vector4<double> point{};
   bool at_centre = false;             // regularised: the point inside is the centre of these rows
   std::array<int, 5> centre_rows{};
+};
+
+// A pair's guide: each object's model in doubles (Guide_numbers) and a
+// point strictly inside its solid, guessed (its vertices' mean). Made once
+// per pair; another kernel's stage on the same pair shares it.
+struct Convex_guide {
+  Object_model<double> objects[2];
+  Vector3<double> deep[2];
 };
 
 template <class K, class Policy = No_filter>
@@ -98,17 +107,14 @@ public:
   Convex_pair(const Convex_pair&) = delete;
   Convex_pair& operator=(const Convex_pair&) = delete;
 
-  Convex_pair(const K& k, const Scene_model<K>& model, int a, int b, Policy* policy = nullptr)
-    : k_(k), model_(model), a_(a), b_(b), policy_(policy ? *policy : own_policy_)
-  {
-    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-    Guide_numbers g;
-    for (int o = 0; o < 2; ++o) {
-      const Scene_object& obj = model.scene->objects[static_cast<std::size_t>(o == 0 ? a : b)];
-      guide_[o] = {obj.name, Model_builder<Guide_numbers>(g).build(obj.shape), Motion_path<double>::build(g, obj.motion)};
-      deep_[o] = deep_point(guide_[o].csg.primitives[0]);
-    }
-  }
+  // guide: the pair's, shared with another kernel's stage (made here when none).
+  Convex_pair(const K& k, const Scene_model<K>& model, int a, int b, Policy* policy = nullptr,
+              std::shared_ptr<const Convex_guide> guide = nullptr)
+    : k_(k), model_(model), a_(a), b_(b), policy_(policy ? *policy : own_policy_),
+      guide_(guide ? std::move(guide) : make_guide(model, a, b))
+  {}
+
+  const std::shared_ptr<const Convex_guide>& guide() const { return guide_; }
 
   // Each object's planes from these instead of the model's objects (which
   // then need only their motions): planes made as the stage reads them.
@@ -135,7 +141,10 @@ public:
     if (!finite(g)) return Verdict::undecided;
     std::vector<std::size_t> tight = support(*margin);
     if (!goal.closed()) {
-      if (margin->value < 0 && in(g, true, tight)) return earliest_or_point(goal, exact_point(g), g, nullptr);
+      // A guess inside by less than its own zero (a touch, or an overlap
+      // as thin as its rounding) is not tried: the multipliers or the centre
+      // decide those.
+      if (margin->value < -guess_eps && in(g, true, tight)) return earliest_or_point(goal, exact_point(g), g, nullptr);
       if (certain([&](auto& s) { return s.proves_empty(tight, false); })) return Verdict::apart;
       // A thin overlap the guess misses (its rounding of the scene moved a
       // face by more than the overlap): the programs' optimum itself, made
@@ -162,7 +171,7 @@ public:
     lo_ = span.lo, hi_ = span.hi;
     guide_rows_.clear();
     for (int o = 0; o < 2; ++o) {
-      const Object_model<double>& m = guide_[o];
+      const Object_model<double>& m = guide_->objects[o];
       std::size_t seg = model_.segment_on(o == 0 ? a_ : b_, span);   // the kernel's, the same in every run
       for (const auto& plane : m.csg.primitives[0].planes)
         guide_rows_.push_back(extrude(plane, m.motion.velocity[seg], m.motion.offset[seg]));
@@ -216,7 +225,8 @@ public:
   CGAL::Sign deep_sign(int o, std::size_t i)
   {
     const Plane3<FT>& pl = plane(o, i);
-    Vector3<FT> m{FT(deep_[o][0]), FT(deep_[o][1]), FT(deep_[o][2])};
+    const Vector3<double>& d = guide_->deep[o];
+    Vector3<FT> m{FT(d[0]), FT(d[1]), FT(d[2])};
     return k_.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], m);
   }
 
@@ -265,8 +275,8 @@ public:
   V4 cell(int o, const FT& t) const
   {
     const Moving& m = *moving_[o];
-    return {FT(deep_[o][0]) + m.v[0] * t + m.o[0], FT(deep_[o][1]) + m.v[1] * t + m.o[1],
-            FT(deep_[o][2]) + m.v[2] * t + m.o[2], t};
+    const Vector3<double>& d = guide_->deep[o];
+    return {FT(d[0]) + m.v[0] * t + m.o[0], FT(d[1]) + m.v[1] * t + m.o[1], FT(d[2]) + m.v[2] * t + m.o[2], t};
   }
 
 private:
@@ -275,8 +285,7 @@ private:
   int a_, b_;
   Policy own_policy_;
   Policy& policy_;
-  Object_model<double> guide_[2];
-  Vector3<double> deep_[2];                // per object, a point strictly inside its solid (guessed)
+  std::shared_ptr<const Convex_guide> guide_;
   std::size_t index_ = 0;
   std::vector<G> guide_rows_;              // the sub-span's rows in doubles, in the order of rows_
   std::vector<H> rows_;                    // A's planes, B's, t >= lo, t <= hi: extruded on first use
@@ -324,6 +333,20 @@ private:
       made_[j] = 1;
     }
     return rows_[j];
+  }
+
+  static std::shared_ptr<const Convex_guide> make_guide(const Scene_model<K>& model, int a, int b)
+  {
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    auto guide = std::make_shared<Convex_guide>();
+    Guide_numbers g;
+    for (int o = 0; o < 2; ++o) {
+      const Scene_object& obj = model.scene->objects[static_cast<std::size_t>(o == 0 ? a : b)];
+      guide->objects[o] = {obj.name, Model_builder<Guide_numbers>(g).build(obj.shape),
+                           Motion_path<double>::build(g, obj.motion)};
+      guide->deep[o] = deep_point(guide->objects[o].csg.primitives[0]);
+    }
+    return guide;
   }
 
   // A point strictly inside the primitive, in doubles: its vertices' mean
@@ -404,7 +427,7 @@ private:
   {
     for (const G& g : guide_rows_)
       if (!finite(g.n) || !std::isfinite(g.c)) return false;
-    for (const auto& d : deep_)
+    for (const auto& d : guide_->deep)
       if (!finite(d)) return false;
     return true;
   }
