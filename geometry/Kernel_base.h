@@ -7,6 +7,7 @@
 #define CLASH4D_GEOMETRY_KERNEL_BASE_H
 
 #include "numbers/Number_ops.h"
+#include "geometry/Hyperplane4.h"
 #include "geometry/kernel_ft4.h"
 #include <CGAL/Uncertain.h>
 #include <CGAL/enum.h>
@@ -101,6 +102,11 @@ public:
   {
     return derived().sign(determinant4(a, b, c, d));
   }
+
+  // A positive multiple of h in the numbers this kernel computes with most
+  // cheaply (the same half-space): h itself, unless a kernel refines it
+  // (the rational kernel: coprime integers, whose products need no gcd).
+  Hyperplane4<FT> in_lowest_terms(const Hyperplane4<FT>& h) const { return h; }
 
   // Zero vector test, as a predicate so tolerances apply consistently.
   template <std::size_t N>

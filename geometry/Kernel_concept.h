@@ -37,7 +37,9 @@
 // grid_point, same_on_grid, less_on_grid, possibly_positive and
 // possibly_nonnegative (conservative filters), is_nonnegative (box simplification, CGAL::Uncertain<bool>),
 // far_power_of_two (2^e for the far bound of unbounded pairs; a kernel that
-// cannot hold it refines it to fail).
+// cannot hold it refines it to fail), in_lowest_terms (a positive multiple
+// of a hyperplane in the kernel's cheapest numbers: the rational kernel's
+// coprime integers; others the plane itself).
 //
 // Optional:
 //   k.to_rational(x)                exact kernels and double: the value as

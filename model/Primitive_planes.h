@@ -8,6 +8,7 @@
 #define CLASH4D_MODEL_PRIMITIVE_PLANES_H
 
 #include "model/Model_builder.h"
+#include <optional>
 #include <vector>
 
 namespace clash4d {
@@ -23,7 +24,6 @@ public:
     Model_builder<K> builder(k);
     local_ = builder.local(builder.peel(shape, T_));
     planes_.resize(local_.planes.size());
-    made_.assign(local_.planes.size(), 0);
   }
 
   std::size_t size() const { return planes_.size(); }
@@ -31,18 +31,14 @@ public:
   // Plane i in the world (Model_builder's primitive plane i).
   const Plane3<FT>& operator[](std::size_t i)
   {
-    if (!made_[i]) {
-      planes_[i] = T_.is_identity ? local_.planes[i] : T_.apply(local_.planes[i]);
-      made_[i] = 1;
-    }
-    return planes_[i];
+    if (!planes_[i]) planes_[i] = T_.is_identity ? local_.planes[i] : T_.apply(local_.planes[i]);
+    return *planes_[i];
   }
 
 private:
   Affine3<FT> T_;
   Primitive<FT> local_;
-  std::vector<Plane3<FT>> planes_;
-  std::vector<char> made_;
+  std::vector<std::optional<Plane3<FT>>> planes_;
 };
 
 } // namespace clash4d

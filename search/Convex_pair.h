@@ -180,8 +180,7 @@ public:
     count_b_ = plane_count(1);
     guide_rows_.push_back(time_at_least(nearest_double(*span.exact_lo)));
     guide_rows_.push_back(time_at_most(nearest_double(*span.exact_hi)));
-    rows_.assign(guide_rows_.size(), H{});
-    made_.assign(guide_rows_.size(), 0);
+    rows_.assign(guide_rows_.size(), std::nullopt);
     vertex_basis_.reset();
     centre_rows_.reset();
   }
@@ -196,12 +195,13 @@ public:
   // > 0): the strict system (strict: P) is empty.
   bool proves_empty(const std::vector<std::size_t>& which, bool strict)
   {
-    std::optional<std::vector<FT>> lambda = null_vector(which);
+    std::vector<H> scaled;
+    std::optional<std::vector<FT>> lambda = null_vector(which, scaled);
     if (!lambda) return false;
     FT sum(0);
     for (std::size_t i = 0; i < which.size(); ++i) {
       if (k_.sign((*lambda)[i]) == CGAL::NEGATIVE) return false;
-      sum += (*lambda)[i] * row(which[i]).c;
+      sum += (*lambda)[i] * scaled[i].c;
     }
     CGAL::Sign s = k_.sign(sum);
     return strict ? s == CGAL::POSITIVE : s != CGAL::NEGATIVE;
@@ -288,8 +288,7 @@ private:
   std::shared_ptr<const Convex_guide> guide_;
   std::size_t index_ = 0;
   std::vector<G> guide_rows_;              // the sub-span's rows in doubles, in the order of rows_
-  std::vector<H> rows_;                    // A's planes, B's, t >= lo, t <= hi: extruded on first use
-  std::vector<char> made_;
+  std::vector<std::optional<H>> rows_;     // A's planes, B's, t >= lo, t <= hi: extruded on first use
   const Moving* moving_[2] = {nullptr, nullptr};
   Primitive_planes<K>* planes_[2] = {nullptr, nullptr};
   std::size_t count_a_ = 0, count_b_ = 0;
@@ -322,7 +321,7 @@ private:
   // Row j in the kernel's numbers (equation (4) on the sub-span's motion).
   const H& row(std::size_t j)
   {
-    if (!made_[j]) {
+    if (!rows_[j]) {
       if (j < count_a_ + count_b_) {
         const Moving& m = *moving_[j < count_a_ ? 0 : 1];
         std::size_t i = j < count_a_ ? j : j - count_a_;
@@ -330,9 +329,8 @@ private:
       } else {
         rows_[j] = j == count_a_ + count_b_ ? time_at_least(lo_) : time_at_most(hi_);
       }
-      made_[j] = 1;
     }
-    return rows_[j];
+    return *rows_[j];
   }
 
   static std::shared_ptr<const Convex_guide> make_guide(const Scene_model<K>& model, int a, int b)
@@ -578,14 +576,21 @@ private:
 
   // lambda with sum lambda_i n_i = 0 over the rows `which`, the free
   // column's lambda 1, when the normals' dependencies are one line
-  // (Gaussian elimination with the kernel's signs choosing pivots).
-  std::optional<std::vector<FT>> null_vector(const std::vector<std::size_t>& which)
+  // (Gaussian elimination with the kernel's signs choosing pivots). Each
+  // row is scaled by a positive factor first (the kernel's lowest terms:
+  // coprime integers in rationals), which scales lambda_i by its inverse,
+  // so every sign asked of lambda and of sum lambda_i c_i is unchanged;
+  // the elimination is division-free (row r <- p r - r_c pivot row, p the
+  // pivot: the same null space), so integers stay integers.
+  std::optional<std::vector<FT>> null_vector(const std::vector<std::size_t>& which, std::vector<H>& scaled)
   {
     std::size_t n = which.size();
     if (n < 2) return std::nullopt;
+    scaled.clear();
+    for (std::size_t i : which) scaled.push_back(k_.in_lowest_terms(row(i)));
     std::vector<std::array<FT, 5>> M(4);   // M[q][i] = n_i[q]
     for (std::size_t i = 0; i < n; ++i)
-      for (int q = 0; q < 4; ++q) M[q][i] = row(which[i]).n[q];
+      for (int q = 0; q < 4; ++q) M[q][i] = scaled[i].n[q];
     std::vector<std::size_t> pivot_col;
     std::size_t rank = 0, free = n;
     for (std::size_t c = 0; c < n; ++c) {
@@ -598,8 +603,8 @@ private:
       }
       std::swap(M[r], M[rank]);
       for (std::size_t below = rank + 1; below < 4; ++below) {
-        FT f = M[below][c] / M[rank][c];
-        for (std::size_t cc = c; cc < n; ++cc) M[below][cc] -= f * M[rank][cc];
+        FT f = M[below][c];
+        for (std::size_t cc = c + 1; cc < n; ++cc) M[below][cc] = M[rank][c] * M[below][cc] - f * M[rank][cc];
         M[below][c] = FT(0);
       }
       pivot_col.push_back(c);
