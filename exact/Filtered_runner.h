@@ -324,18 +324,13 @@ private:
     r.semantics = found.semantics;
     r.collide = r.has_witness = r.witness_verified = true;
     bool closed = found.semantics == Semantics::closed;
-    auto copy = [&](const Vector4<AFT>& from, Vector4<EFT>& to) {
-      for (int q = 0; q < 4; ++q)
-        if (!to_exact(from[q], to[q])) return false;
-      return true;
-    };
-    if (!copy(found.witness, r.witness)) {
+    if (!to_exact(found.witness, r.witness)) {
       if (closed) return std::nullopt;
       throw std::logic_error("internal error: an interval witness is not a point");
     }
     if (closed) {
       for (int i = 0; i < 2; ++i)
-        if (!copy(found.witness_cells[i], r.witness_cells[i])) return std::nullopt;
+        if (!to_exact(found.witness_cells[i], r.witness_cells[i])) return std::nullopt;
       r.contact_cells = r.witness_cells;
       r.contact = r.witness;
     }
@@ -344,9 +339,9 @@ private:
     // rational run's number (the goal encloses that run's,
     // exact/Interval_filter.h).
     if (found.earliest) {
-      if (!to_exact(found.t_star, r.t_star) || !copy(found.contact, r.contact)) return std::nullopt;
+      if (!to_exact(found.t_star, r.t_star) || !to_exact(found.contact, r.contact)) return std::nullopt;
       for (int i = 0; i < 2; ++i)
-        if (!copy(found.contact_cells[i], r.contact_cells[i])) return std::nullopt;
+        if (!to_exact(found.contact_cells[i], r.contact_cells[i])) return std::nullopt;
       r.earliest = true;
     }
     return r;
@@ -359,6 +354,13 @@ private:
     std::optional<Rational> v = ak_.exact_value(x);
     if (v) to = ek_.from_rational(*v);
     return v.has_value();
+  }
+  // The same for a point: every coordinate a point interval.
+  bool to_exact(const Vector4<AFT>& x, Vector4<EFT>& to) const
+  {
+    for (int q = 0; q < 4; ++q)
+      if (!to_exact(x[q], to[q])) return false;
+    return true;
   }
 
   // AK's model, each object's S-bounds (EK's where AK fails), and the sweep's

@@ -134,7 +134,7 @@ public:
     Convex_pair<EK>& e = exact_convex(found.a, found.b, convex_found_->index);
     const Convex_found& f = *convex_found_;
     Vector4<EFT> g{EFT(f.point[0]), EFT(f.point[1]), EFT(f.point[2]), EFT(f.point[3])};
-    if (!closed && !(found.has_witness && found.witness_verified && exact_point(found.witness, r.witness))) {
+    if (!closed && !(found.has_witness && found.witness_verified && runner_->to_exact(found.witness, r.witness))) {
       // A point inside the intervals could not snap (an overlap as thin as
       // their enclosures): the witness made from it in rationals, on the
       // objects' whole models.
@@ -518,13 +518,6 @@ private:
     return exact_convex_->stage;
   }
 
-  // x in EK when every coordinate is a point interval (the rational run's number).
-  bool exact_point(const Vector4<AFT>& x, Vector4<EFT>& to) const
-  {
-    for (int q = 0; q < 4; ++q)
-      if (!runner_->to_exact(x[q], to[q])) return false;
-    return true;
-  }
   std::unique_ptr<Exact_span<Runner>> exact_;
   Search_trail* trail_ = nullptr;
   Check_stats* stats_ = nullptr;
