@@ -11,6 +11,7 @@
 #include <mutex>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 namespace clash4d {
 
@@ -95,9 +96,13 @@ void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::p
     std::size_t seen = first_hit.load();
     while (i < seen && !first_hit.compare_exchange_weak(seen, i)) {}
   };
+  // In a context of its own: a caller's cancellation (another case of a
+  // fuzz batch throwing) would otherwise end this loop early and silently,
+  // leaving pairs unchecked, a "no collision" nobody decided.
+  tbb::task_group_context own(tbb::task_group_context::isolated);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) check_one(i);
-  });
+  }, own);
 
   bool merged = false;
   FT merged_best{};
@@ -169,7 +174,8 @@ void run_skeleton_pairs(const K& k, const Scene_model<K>& model, const std::vect
 {
   std::vector<std::vector<typename Pair_skeleton<K>::Segment>> edges(pairs.size());
   std::vector<Check_stats> stats(pairs.size());
-  tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t i) { edges[i] = skeleton(i, stats[i]); });
+  tbb::task_group_context own(tbb::task_group_context::isolated);   // as in run_pairs
+  tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t i) { edges[i] = skeleton(i, stats[i]); }, own);
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     answer.stats.add(stats[i]);
     if (edges[i].empty()) continue;

@@ -11,6 +11,8 @@
 #include <random>
 #include <set>
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 using namespace clash4d;
 
@@ -122,4 +124,34 @@ BOOST_AUTO_TEST_CASE(ignored_pairs_get_the_empty_bound)
   Check_answer a = check_exact(scene, opts);
   BOOST_TEST(a.pairs.size() == 1u);
   BOOST_TEST(a.pairs[0].a == "b" + std::to_string(g.colliding[1].first));
+}
+
+// A check run from a task whose group is being cancelled (a sibling case of a
+// fuzz batch threw Budget_exceeded) must still check every pair: a nested loop
+// that inherits the cancellation ends early and silently, and its pairs would
+// read as "no collision" nobody decided.  The grid's colliding pairs are known
+// by construction.
+BOOST_AUTO_TEST_CASE(a_check_under_a_cancelled_caller_still_checks_every_pair)
+{
+  Grid_scene g = make_grid_scene(100, 7, 42);
+  Scene scene = parse(g.json);
+  std::set<std::pair<std::string, std::string>> expected;
+  for (const auto& p : g.colliding) expected.insert({"b" + std::to_string(p.first), "b" + std::to_string(p.second)});
+  Check_options opts;
+  opts.all_pairs = true;
+  Skeleton_answer calm = skeleton_exact(scene);
+  Check_answer a, r;
+  Skeleton_answer s;
+  tbb::task_group_context caller;
+  tbb::parallel_for(0, 1, [&](int) {
+    caller.cancel_group_execution();
+    a = check_exact(scene, opts);
+    r = check_rational(scene, opts);
+    s = skeleton_exact(scene);
+  }, caller);
+  BOOST_TEST(pair_set(a) == expected);
+  BOOST_TEST(pair_set(r) == expected);
+  BOOST_TEST_REQUIRE(s.pairs.size() == calm.pairs.size());
+  for (std::size_t i = 0; i < s.pairs.size(); ++i) BOOST_TEST((s.pairs[i].edges == calm.pairs[i].edges));
+  BOOST_TEST(!calm.pairs.empty());
 }
