@@ -29,6 +29,7 @@
 
 #include "check/Check_runner.h"
 #include "exact/Interval_filter.h"
+#include "exact/Lazy_once.h"
 #include "exact/Trail_replay.h"
 #include "search/Apart_pieces.h"
 #include <CGAL/Uncertain.h>
@@ -52,8 +53,8 @@ public:
   using Protector = typename AK::Protector;
 
   Filtered_runner(const Scene& scene, bool use_sbounds)
-    : scene_(scene), use_sbounds_(use_sbounds), built_(new std::once_flag[scene.objects.size()]),
-      settled_(new std::once_flag[scene.objects.size()]), moved_(new std::once_flag[scene.objects.size()])
+    : scene_(scene), use_sbounds_(use_sbounds), built_(new Lazy_once[scene.objects.size()]),
+      settled_(new Lazy_once[scene.objects.size()]), moved_(new Lazy_once[scene.objects.size()])
   {
     emodel_.t_lo = ek_.from_rational(scene.t_lo);
     emodel_.t_hi = ek_.from_rational(scene.t_hi);
@@ -305,7 +306,7 @@ private:
   std::vector<char> exact_only_;              // AK could not bound the object: its pairs go to EK
   Scene_model<EK> emodel_;                    // objects built on demand
   std::vector<typename S_bounds<EK>::Bounds> esettled_;
-  std::unique_ptr<std::once_flag[]> built_, settled_, moved_;   // EK's model of an object, its S-bounds, its motion
+  std::unique_ptr<Lazy_once[]> built_, settled_, moved_;   // EK's model of an object, its S-bounds, its motion
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
       stages_adopted_{0}, lines_rerun_{0}, convex_rational_{0};
@@ -428,18 +429,18 @@ private:
   void need_model(int i)
   {
     need_motion(i);
-    std::call_once(built_[i], [&] { emodel_.objects[i].csg = Model_builder<EK>(ek_).build(scene_.objects[i].shape); });
+    built_[i].call([&] { emodel_.objects[i].csg = Model_builder<EK>(ek_).build(scene_.objects[i].shape); });
   }
   // Only the motion (a convex pair's signs in rationals read their planes
   // from the scene as asked, Interval_filter::Exact_convex).
   void need_motion(int i)
   {
-    std::call_once(moved_[i], [&] { emodel_.objects[i].motion = Motion_path<EFT>::build(ek_, scene_.objects[i].motion); });
+    moved_[i].call([&] { emodel_.objects[i].motion = Motion_path<EFT>::build(ek_, scene_.objects[i].motion); });
   }
   void need_exact(int i)
   {
     need_model(i);
-    std::call_once(settled_[i], [&] {
+    settled_[i].call([&] {
       Check_stats ignored;
       esettled_[i] = settled_bounds(ek_, emodel_.objects[i].csg, ignored, use_sbounds_);
     });

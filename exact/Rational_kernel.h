@@ -33,6 +33,17 @@ public:
     scale_to_coprime_integers(x, 5);
     return {{x[0], x[1], x[2], x[3]}, x[4]};
   }
+  // The same integers as GMP's, whose products need no gcd (the ring of
+  // division-free elimination, search/Convex_pair.h).
+  using RT = mpz_class;
+  CGAL::Sign sign(const RT& x) const { return CGAL::Sign(sgn(x)); }
+  Hyperplane4<RT> in_ring(const Hyperplane4<FT>& h) const
+  {
+    const Rational x[5] = {h.n[0], h.n[1], h.n[2], h.n[3], h.c};
+    RT y[5];
+    coprime_integers(x, 5, y);
+    return {{std::move(y[0]), std::move(y[1]), std::move(y[2]), std::move(y[3])}, std::move(y[4])};
+  }
 };
 
 static_assert(is_kernel_v<Rational_kernel>, "Rational_kernel must model the kernel concept (geometry/Kernel_concept.h)");

@@ -18,6 +18,10 @@ template <class Derived, class FT_>
 class Kernel_base {
 public:
   using FT = FT_;
+  // The ring in_ring writes planes in (+ - *, no division): FT itself
+  // unless a kernel refines it (the rational kernel: GMP integers), with
+  // sign on it.
+  using RT = FT_;
 
   const Derived& derived() const { return static_cast<const Derived&>(*this); }
 
@@ -107,6 +111,8 @@ public:
   // cheaply (the same half-space): h itself, unless a kernel refines it
   // (the rational kernel: coprime integers, whose products need no gcd).
   Hyperplane4<FT> in_lowest_terms(const Hyperplane4<FT>& h) const { return h; }
+  // The same in the ring RT, for division-free elimination.
+  Hyperplane4<RT> in_ring(const Hyperplane4<FT>& h) const { return derived().in_lowest_terms(h); }
 
   // Zero vector test, as a predicate so tolerances apply consistently.
   template <std::size_t N>

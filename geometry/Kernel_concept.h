@@ -39,7 +39,9 @@
 // far_power_of_two (2^e for the far bound of unbounded pairs; a kernel that
 // cannot hold it refines it to fail), in_lowest_terms (a positive multiple
 // of a hyperplane in the kernel's cheapest numbers: the rational kernel's
-// coprime integers; others the plane itself).
+// coprime integers; others the plane itself), K::RT and in_ring (the same
+// in a ring for division-free elimination, with k.sign on it: the rational
+// kernel's GMP integers; others FT).
 //
 // Optional:
 //   k.to_rational(x)                exact kernels and double: the value as

@@ -68,6 +68,19 @@ void scale_to_coprime_integers(Rational* x, std::size_t n)
   mpz_clear(lcm);
 }
 
+void coprime_integers(const Rational* x, std::size_t n, mpz_class* out)
+{
+  mpz_class lcm = 1, gcd = 0;
+  for (std::size_t i = 0; i < n; ++i) mpz_lcm(lcm.get_mpz_t(), lcm.get_mpz_t(), mpq_denref(x[i].mpq()));
+  for (std::size_t i = 0; i < n; ++i) {
+    mpz_divexact(out[i].get_mpz_t(), lcm.get_mpz_t(), mpq_denref(x[i].mpq()));
+    mpz_mul(out[i].get_mpz_t(), out[i].get_mpz_t(), mpq_numref(x[i].mpq()));
+    mpz_gcd(gcd.get_mpz_t(), gcd.get_mpz_t(), out[i].get_mpz_t());
+  }
+  if (sgn(gcd) == 0 || gcd == 1) return;
+  for (std::size_t i = 0; i < n; ++i) mpz_divexact(out[i].get_mpz_t(), out[i].get_mpz_t(), gcd.get_mpz_t());
+}
+
 Rational power_of_two(int e)
 {
   mpq_t r;

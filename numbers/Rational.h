@@ -3,6 +3,7 @@
 #define CLASH4D_NUMBERS_RATIONAL_H
 
 #include <CGAL/Gmpq.h>
+#include <gmpxx.h>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -62,6 +63,11 @@ inline double power_of_two_double(int e)
 // integers (all zero: unchanged). Used on hyperplane coefficients, which
 // this leaves the same hyperplane with the same sides.
 void scale_to_coprime_integers(Rational* x, std::size_t n);
+
+// The same coprime integers, as GMP integers in out[0..n): their products
+// and sums need no gcd and no shared representation (the rational kernel's
+// ring, Rational_kernel::RT).
+void coprime_integers(const Rational* x, std::size_t n, mpz_class* out);
 
 // The largest multiple of 2^-bits at or below q (bits >= 0).
 Rational floor_to_grid(const Rational& q, int bits);

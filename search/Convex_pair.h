@@ -81,6 +81,8 @@ class Convex_pair {
 public:
   using FT = typename K::FT;
   using H = Hyperplane4<FT>;
+  using R = typename K::RT;             // the kernel's ring for division-free elimination
+  using Ring_row = Hyperplane4<R>;
   using V4 = Vector4<FT>;
   using Moving = Moving_object<FT>;
   using G = Hyperplane4<double>;
@@ -195,10 +197,10 @@ public:
   // > 0): the strict system (strict: P) is empty.
   bool proves_empty(const std::vector<std::size_t>& which, bool strict)
   {
-    std::vector<H> scaled;
-    std::optional<std::vector<FT>> lambda = null_vector(which, scaled);
+    std::vector<Ring_row> scaled;
+    std::optional<std::vector<R>> lambda = null_vector(which, scaled);
     if (!lambda) return false;
-    FT sum(0);
+    R sum(0);
     for (std::size_t i = 0; i < which.size(); ++i) {
       if (k_.sign((*lambda)[i]) == CGAL::NEGATIVE) return false;
       sum += (*lambda)[i] * scaled[i].c;
@@ -574,21 +576,24 @@ private:
     return true;
   }
 
-  // lambda with sum lambda_i n_i = 0 over the rows `which`, the free
-  // column's lambda 1, when the normals' dependencies are one line
-  // (Gaussian elimination with the kernel's signs choosing pivots). Each
-  // row is scaled by a positive factor first (the kernel's lowest terms:
-  // coprime integers in rationals), which scales lambda_i by its inverse,
-  // so every sign asked of lambda and of sum lambda_i c_i is unchanged;
-  // the elimination is division-free (row r <- p r - r_c pivot row, p the
-  // pivot: the same null space), so integers stay integers.
-  std::optional<std::vector<FT>> null_vector(const std::vector<std::size_t>& which, std::vector<H>& scaled)
+  // A positive multiple of lambda with sum lambda_i n_i = 0 over the rows
+  // `which`, the free column's lambda positive, when the normals'
+  // dependencies are one line (Gaussian elimination with the kernel's signs
+  // choosing pivots). Each row is scaled by a positive factor first (the
+  // kernel's ring: coprime GMP integers in rationals), which scales
+  // lambda_i by its inverse, so every sign asked of lambda and of
+  // sum lambda_i c_i is unchanged. All in the kernel's ring, without
+  // division: the elimination takes row r <- p r - r_c pivot row (p the
+  // pivot: the same null space), and the back substitution, solving
+  // p lambda_c = -s, scales the lambdas found so far by |p| instead of
+  // dividing by p (one positive factor for all: the same signs).
+  std::optional<std::vector<R>> null_vector(const std::vector<std::size_t>& which, std::vector<Ring_row>& scaled)
   {
     std::size_t n = which.size();
     if (n < 2) return std::nullopt;
     scaled.clear();
-    for (std::size_t i : which) scaled.push_back(k_.in_lowest_terms(row(i)));
-    std::vector<std::array<FT, 5>> M(4);   // M[q][i] = n_i[q]
+    for (std::size_t i : which) scaled.push_back(k_.in_ring(row(i)));
+    std::vector<std::array<R, 5>> M(4);   // M[q][i] = n_i[q]
     for (std::size_t i = 0; i < n; ++i)
       for (int q = 0; q < 4; ++q) M[q][i] = scaled[i].n[q];
     std::vector<std::size_t> pivot_col;
@@ -603,9 +608,8 @@ private:
       }
       std::swap(M[r], M[rank]);
       for (std::size_t below = rank + 1; below < 4; ++below) {
-        FT f = M[below][c];
-        for (std::size_t cc = c + 1; cc < n; ++cc) M[below][cc] = M[rank][c] * M[below][cc] - f * M[rank][cc];
-        M[below][c] = FT(0);
+        for (std::size_t cc = c + 1; cc < n; ++cc) M[below][cc] = M[rank][c] * M[below][cc] - M[below][c] * M[rank][cc];
+        M[below][c] = R(0);
       }
       pivot_col.push_back(c);
       ++rank;
@@ -613,14 +617,17 @@ private:
     if (free == n) return std::nullopt;   // independent normals
     // Pivot columns after the free one have lambda 0 (their rows' sums hold
     // only later columns); the others follow from the bottom up.
-    std::vector<FT> lambda(n, FT(0));
-    lambda[free] = FT(1);
+    std::vector<R> lambda(n, R(0));
+    lambda[free] = R(1);
     for (std::size_t r = rank; r-- > 0;) {
       std::size_t c = pivot_col[r];
       if (c > free) continue;
-      FT s(0);
+      R s(0);
       for (std::size_t cc = c + 1; cc < n; ++cc) s += M[r][cc] * lambda[cc];
-      lambda[c] = -s / M[r][c];
+      const R& p = M[r][c];
+      bool positive = k_.sign(p) == CGAL::POSITIVE;
+      for (std::size_t cc = c + 1; cc < n; ++cc) lambda[cc] = positive ? R(lambda[cc] * p) : R(-(lambda[cc] * p));
+      lambda[c] = positive ? R(-s) : s;
     }
     return lambda;
   }

@@ -12,6 +12,7 @@
 #include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
 #include "search/Convex_pair.h"
+#include <algorithm>
 #include <filesystem>
 
 using namespace clash4d;
@@ -253,4 +254,64 @@ BOOST_AUTO_TEST_CASE(planes_made_as_asked_are_the_models)
       }
     }
   BOOST_TEST(objects > 100u);
+}
+
+namespace {
+
+// The rows of the stage on `scene`'s first sub-span, found by their signs:
+// the one zero at `on` and positive at `out` (the row's outside).
+template <class K>
+std::size_t row_between(Convex_pair<K>& stage, std::size_t rows, const Vector4<double>& on, const Vector4<double>& out)
+{
+  for (std::size_t j = 0; j < rows; ++j)
+    if (stage.row_sign(j, on) == CGAL::ZERO && stage.row_sign(j, out) == CGAL::POSITIVE) return j;
+  BOOST_FAIL("no such row");
+  return 0;
+}
+
+// a = [0,1]^3 at rest, b = [2,3] x [0,1]^2 moving at -1 along x from t = 0:
+// b's face x = 2 - t reaches a's face x = 1 at t = 1. The three rows
+// x - 1 <= 0 (a), 2 - t - x <= 0 (b) and t - hi <= 0 (the span's end) have
+// normals (1,0,0,0), (-1,0,0,-1), (0,0,0,1): lambda = (1, 1, 1) is their
+// one dependency, with sum lambda c = -1 + 2 - hi. For hi = 1 that is 0: the
+// open system is empty (the faces touch at t = 1), the closed one is not;
+// for hi = 1/2 it is 1/2 > 0: both empty. With the span's start t >= 0
+// (normal (0,0,0,-1)) instead of its end the dependency needs lambda < 0:
+// nothing proved. Every order of the rows is asked, so pivots of either sign
+// come first (the back substitution's scaling by |p|).
+template <class K>
+void multipliers_on_a_moving_touch()
+{
+  for (const char* hi : {"1", "1/2"}) {
+    Scene s = two_blocks("[2, 0, 0]", "[3, 1, 1]", "vel -1 0 0", std::string("[0, \"") + hi + "\"]");
+    K k;
+    Scene_model<K> model = Scene_model<K>::build(k, s);
+    Convex_pair<K> stage(k, model, 0, 1);
+    auto span = model.sub_spans({0, 1}).at(0);
+    auto A = moving_on(model, 0, span, {}), B = moving_on(model, 1, span, {});
+    stage.start_span(0, A, B, span);
+    double end = std::string(hi) == "1" ? 1 : 0.5;
+    std::size_t a = row_between(stage, 6, {1, 0.5, 0.5, 0}, {2, 0.5, 0.5, 0});
+    std::size_t b = row_between(stage, 14, {2 - end, 0.5, 0.5, end}, {0, 0.5, 0.5, end});
+    std::size_t last = row_between(stage, 14, {0.5, 0.5, 0.5, end}, {0.5, 0.5, 0.5, end + 1});
+    std::size_t first = row_between(stage, 14, {0.5, 0.5, 0.5, 0}, {0.5, 0.5, 0.5, -1});
+    BOOST_TEST_REQUIRE((a < 6 && b >= 6 && b < 12 && last >= 12 && first >= 12));
+    std::vector<std::size_t> rows{a, b, last};
+    std::sort(rows.begin(), rows.end());
+    do {
+      BOOST_TEST(stage.proves_empty(rows, false), K::name() << " hi " << hi);
+      BOOST_TEST(stage.proves_empty(rows, true) == (end < 1), K::name() << " hi " << hi);
+      BOOST_TEST(!stage.proves_empty({rows[0], rows[1]}, false), "independent normals");
+    } while (std::next_permutation(rows.begin(), rows.end()));
+    std::vector<std::size_t> wrong{a, b, first};
+    BOOST_TEST(!stage.proves_empty(wrong, false), K::name() << " a negative multiplier");
+  }
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(multipliers_prove_a_moving_touch_empty_only_when_open)
+{
+  multipliers_on_a_moving_touch<Rational_kernel>();
+  multipliers_on_a_moving_touch<Double_kernel>();
 }
