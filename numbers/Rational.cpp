@@ -1,6 +1,7 @@
 #include "numbers/Rational.h"
 
 #include <mpfr.h>
+#include <vector>
 
 namespace clash4d {
 
@@ -40,34 +41,6 @@ bool is_exact_dyadic(const Rational& q, int bits)
          (mpz_sgn(num) == 0 || mpz_sizeinbase(num, 2) <= 53);
 }
 
-void scale_to_coprime_integers(Rational* x, std::size_t n)
-{
-  mpz_t lcm, gcd, t;
-  mpz_init_set_ui(lcm, 1);
-  mpz_init_set_ui(gcd, 0);
-  mpz_init(t);
-  for (std::size_t i = 0; i < n; ++i) mpz_lcm(lcm, lcm, mpq_denref(x[i].mpq()));
-  for (std::size_t i = 0; i < n; ++i) {
-    mpz_divexact(t, lcm, mpq_denref(x[i].mpq()));
-    mpz_mul(t, t, mpq_numref(x[i].mpq()));
-    mpz_gcd(gcd, gcd, t);
-  }
-  if (mpz_sgn(gcd) != 0) {
-    // New numbers, not writes through mpq(): Gmpq shares its representation.
-    mpq_t scale;
-    mpq_init(scale);
-    mpq_set_num(scale, lcm);
-    mpq_set_den(scale, gcd);
-    mpq_canonicalize(scale);
-    Rational factor(scale);
-    mpq_clear(scale);
-    for (std::size_t i = 0; i < n; ++i) x[i] = x[i] * factor;
-  }
-  mpz_clear(t);
-  mpz_clear(gcd);
-  mpz_clear(lcm);
-}
-
 void coprime_integers(const Rational* x, std::size_t n, mpz_class* out)
 {
   mpz_class lcm = 1, gcd = 0;
@@ -79,6 +52,14 @@ void coprime_integers(const Rational* x, std::size_t n, mpz_class* out)
   }
   if (sgn(gcd) == 0 || gcd == 1) return;
   for (std::size_t i = 0; i < n; ++i) mpz_divexact(out[i].get_mpz_t(), out[i].get_mpz_t(), gcd.get_mpz_t());
+}
+
+void scale_to_coprime_integers(Rational* x, std::size_t n)
+{
+  std::vector<mpz_class> z(n);
+  coprime_integers(x, n, z.data());
+  // New numbers, not writes through mpq(): Gmpq shares its representation.
+  for (std::size_t i = 0; i < n; ++i) x[i] = Rational(CGAL::Gmpz(z[i].get_mpz_t()));
 }
 
 Rational power_of_two(int e)
