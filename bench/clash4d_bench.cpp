@@ -13,6 +13,7 @@
 // values), the nearest public stand-in for a set of user contact scenes
 // (--dump-random writes them too, as DIR/fuzz-I.json); --dump-random writes the random scenes to DIR/random-I.json (to rerun one
 // with `clash4d check --stats`); --scene times one scene file alone (to profile it).
+#include "bench/Fixtures.h"
 #include "bench/Timing.h"
 #include "compare/Contact_families.h"
 #include "exact/Exact_instantiation.h"
@@ -127,11 +128,7 @@ int run_bench(int argc, char** argv)
   for (const char* family : {"paper", "contact"}) {
     if (!wanted(family)) continue;
     Means means;
-    std::vector<std::filesystem::path> files;
-    for (const auto& f : std::filesystem::directory_iterator(std::string(CLASH4D_FIXTURES) + "/" + family))
-      if (f.path().extension() == ".json" && f.path().filename() != "expected.json") files.push_back(f.path());
-    std::sort(files.begin(), files.end());
-    for (const auto& f : files) row(std::string(family) + "/" + f.filename().string(), read_scene_file(f.string()), min_seconds, means);
+    for (const auto& f : fixture_files(family)) row(std::string(family) + "/" + f.filename().string(), read_scene_file(f.string()), min_seconds, means);
     means.print(family);
   }
   // §6 scaling: check --all-pairs on n blocks, 5 colliding pairs (reading

@@ -13,120 +13,24 @@
 // "fcl+build us" adds the conversion (exact hull, rounding, fcl::Convexd),
 // which is what the comparer's fcl subject pays.
 #include "compare/Fcl_subject.h"
+#include "bench/Fcl_cases.h"
 #include "bench/Timing.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
 #include "scene/Files.h"
-#include "scene/Json_reader.h"
-#include "scene/Scene_reader.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <random>
-#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 using namespace clash4d;
+using namespace clash4d::fcl_cases;
 
 namespace {
-
-
-// A point with integer coordinates on a 1/997 grid: (x, y, z) / 997.
-using Grid_point = std::array<long, 3>;
-
-std::string coordinate(long k) { return "\"" + std::to_string(k) + "/997\""; }
-
-std::string hull_json(const std::vector<Grid_point>& points)
-{
-  std::string s = "{\"hull\":[";
-  for (std::size_t i = 0; i < points.size(); ++i)
-    s += std::string(i ? "," : "") + "[" + coordinate(points[i][0]) + "," + coordinate(points[i][1]) + "," +
-         coordinate(points[i][2]) + "]";
-  return s + "]}";
-}
-
-// The solid moved by (x, y, z) / d, exactly.
-std::string translated(const std::string& solid, const Grid_point& by, long d)
-{
-  auto q = [&](long k) { return "\"" + std::to_string(k) + "/" + std::to_string(d) + "\""; };
-  return "{\"translate\":[" + q(by[0]) + "," + q(by[1]) + "," + q(by[2]) + "],\"solid\":" + solid + "}";
-}
-
-// 12 points in [-1, 1]^3 with pairwise different x, so the largest and the
-// smallest x are each taken by one point, which is then a vertex of the hull.
-std::vector<Grid_point> random_points(std::mt19937_64& rng)
-{
-  std::uniform_int_distribution<long> d(-997, 997);
-  std::vector<Grid_point> out;
-  std::set<long> xs;
-  while (out.size() < 12) {
-    Grid_point p{d(rng), d(rng), d(rng)};
-    if (xs.insert(p[0]).second) out.push_back(p);
-  }
-  return out;
-}
-
-std::string scene_json(const std::string& name, const std::string& a, const std::string& b, const std::string& b_motion)
-{
-  return "{\"format\":\"clash4d-scene/1\",\"name\":\"" + name + "\",\"time\":[0,10],\"objects\":[" +
-         "{\"name\":\"a\",\"shape\":" + a + "}," + "{\"name\":\"b\",\"shape\":" + b + ",\"motion\":\"" + b_motion +
-         "\"}]}";
-}
-
-struct Case {
-  std::string name;
-  std::string json;
-  Scene scene;
-};
-
-Case make_case(const std::string& name, const std::string& json)
-{
-  return {name, json, read_scene(read_json_text(json))};
-}
-
-// a = [0,1]^3 at rest; b a unit block sliding along y past a's face x = 1:
-// flush (touching, no collision), 1/2 away, or 1/2 into a (collision at t = 2).
-std::vector<Case> box_cases()
-{
-  std::vector<Case> out;
-  const std::string a = "{\"block\":{\"min\":[0,0,0],\"max\":[1,1,1]}}";
-  for (auto [what, x] : {std::pair<const char*, const char*>{"touching", "1"}, {"separated", "3/2"}, {"penetrating", "1/2"}}) {
-    std::string b = "{\"translate\":[\"" + std::string(x) + "\",-3,0],\"solid\":{\"block\":{\"min\":[0,0,0],\"max\":[1,1,1]}}}";
-    std::string name = std::string("box-box ") + what;
-    out.push_back(make_case(name, scene_json(name, a, b, "vel 0 1 0")));
-  }
-  return out;
-}
-
-// a and b random hulls; b passes a along y. Touching: b's smallest-x vertex
-// q is placed on the plane x = p_x of a's largest-x vertex p, at p's z, and
-// reaches p at t = 5 (a single vertex-vertex contact, the hulls on either
-// side of that plane: no collision). Separated: b 1/2 further in x.
-// Penetrating: at t = 5 the mean of b's points is exactly that of a's, a
-// point inside both hulls (collision).
-std::vector<Case> hull_cases(std::mt19937_64& rng)
-{
-  std::vector<Grid_point> pa = random_points(rng), pb = random_points(rng);
-  auto by_x = [](const Grid_point& u, const Grid_point& v) { return u[0] < v[0]; };
-  Grid_point p = *std::max_element(pa.begin(), pa.end(), by_x), q = *std::min_element(pb.begin(), pb.end(), by_x);
-  Grid_point touch{p[0] - q[0], p[1] - q[1] - 5 * 997, p[2] - q[2]}, mean{0, -5 * 997 * 12, 0};
-  for (int i = 0; i < 3; ++i)
-    for (std::size_t k = 0; k < pa.size(); ++k) mean[i] += pa[k][i] - pb[k][i];
-  std::string a = hull_json(pa), b = hull_json(pb);
-  std::vector<Case> out;
-  auto add = [&](const char* what, const std::string& moved) {
-    std::string name = std::string("hull-hull ") + what;
-    out.push_back(make_case(name, scene_json(name, a, moved, "vel 0 1 0")));
-  };
-  add("touching", translated(b, touch, 997));
-  add("separated", translated(b, {2 * touch[0] + 997, 2 * touch[1], 2 * touch[2]}, 2 * 997));
-  add("penetrating", translated(b, mean, 12 * 997));
-  return out;
-}
 
 const char* verdict(bool c) { return c ? "collide" : "no"; }
 
@@ -188,10 +92,7 @@ int run_bench(int argc, char** argv)
   std::printf("clash4d_fcl_bench: seed %lu (hulls), at least %g s per measurement\n", seed, min_seconds);
   std::printf("%-22s %9s %9s %9s %12s %9s %10s   %-7s %-7s %-7s\n", "case", "exact us", "double us", "fcl us",
               "fcl+build us", "exact/fcl", "double/fcl", "exact", "double", "fcl");
-  std::mt19937_64 rng(seed);
-  std::vector<Case> cases = box_cases();
-  for (Case& c : hull_cases(rng)) cases.push_back(std::move(c));
-  for (const Case& c : cases) {
+  for (const Case& c : all_cases(seed)) {
     if (!dump_dir.empty()) {
       std::string file = c.name;
       std::replace(file.begin(), file.end(), ' ', '-');
