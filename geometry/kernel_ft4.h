@@ -6,7 +6,9 @@
 #ifndef CLASH4D_GEOMETRY_KERNEL_FT4_H
 #define CLASH4D_GEOMETRY_KERNEL_FT4_H
 
+#include "numbers/Rational.h"
 #include <array>
+#include <type_traits>
 
 namespace clash4d {
 
@@ -14,12 +16,19 @@ template <class FT> using Vector3 = std::array<FT, 3>;
 template <class FT> using Vector4 = std::array<FT, 4>;
 template <class FT> using Plane3 = std::array<FT, 4>;    // a x + b y + c z + d <= 0
 
+// a . b; in rationals over unreduced fractions, reduced once
+// (numbers/Rational.h, sum_of_products: the same number, without a gcd per
+// product and sum).
 template <class FT, std::size_t N>
 FT dot(const std::array<FT, N>& a, const std::array<FT, N>& b)
 {
-  FT s = a[0] * b[0];
-  for (std::size_t i = 1; i < N; ++i) s += a[i] * b[i];
-  return s;
+  if constexpr (std::is_same_v<FT, Rational>) {
+    return sum_of_products(a.data(), b.data(), N);
+  } else {
+    FT s = a[0] * b[0];
+    for (std::size_t i = 1; i < N; ++i) s += a[i] * b[i];
+    return s;
+  }
 }
 
 template <class FT>

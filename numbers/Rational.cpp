@@ -62,6 +62,42 @@ void scale_to_coprime_integers(Rational* x, std::size_t n)
   for (std::size_t i = 0; i < n; ++i) x[i] = Rational(CGAL::Gmpz(z[i].get_mpz_t()));
 }
 
+namespace {
+// Per-thread GMP integers for sum_of_products, kept so that their limbs are
+// allocated once per thread, not once per call.
+struct Dot_scratch {
+  mpz_t num, den, pn, pd;
+  Dot_scratch() { mpz_inits(num, den, pn, pd, nullptr); }
+  ~Dot_scratch() { mpz_clears(num, den, pn, pd, nullptr); }
+};
+} // namespace
+
+Rational sum_of_products(const Rational* a, const Rational* b, std::size_t n)
+{
+  thread_local Dot_scratch s;
+  mpz_set_ui(s.num, 0);
+  mpz_set_ui(s.den, 1);
+  for (std::size_t i = 0; i < n; ++i) {
+    mpz_srcptr an = mpq_numref(a[i].mpq()), bn = mpq_numref(b[i].mpq());
+    if (mpz_sgn(an) == 0 || mpz_sgn(bn) == 0) continue;
+    mpz_mul(s.pn, an, bn);
+    mpz_mul(s.pd, mpq_denref(a[i].mpq()), mpq_denref(b[i].mpq()));
+    if (mpz_cmp(s.pd, s.den) == 0) {   // num/den + pn/den
+      mpz_add(s.num, s.num, s.pn);
+      continue;
+    }
+    // num/den + pn/pd = (num pd + pn den) / (den pd)
+    mpz_mul(s.num, s.num, s.pd);
+    mpz_addmul(s.num, s.pn, s.den);
+    mpz_mul(s.den, s.den, s.pd);
+  }
+  Rational out;   // a new representation, not shared: written in place
+  mpz_set(mpq_numref(out.mpq()), s.num);
+  mpz_set(mpq_denref(out.mpq()), s.den);
+  mpq_canonicalize(out.mpq());
+  return out;
+}
+
 Rational power_of_two(int e)
 {
   mpq_t r;

@@ -69,6 +69,13 @@ void scale_to_coprime_integers(Rational* x, std::size_t n);
 // ring, Rational_kernel::RT).
 void coprime_integers(const Rational* x, std::size_t n, mpz_class* out);
 
+// sum a[i] b[i], exactly. mpq_mul and mpq_add take gcds to keep each
+// partial result in lowest terms, most of a rational dot product's cost;
+// here the products and sums are kept as unreduced fractions of GMP
+// integers (one common denominator while the terms share it, as a rotated
+// or scaled vector's coordinates do) and reduced once at the end.
+Rational sum_of_products(const Rational* a, const Rational* b, std::size_t n);
+
 // The largest multiple of 2^-bits at or below q (bits >= 0).
 Rational floor_to_grid(const Rational& q, int bits);
 

@@ -8,6 +8,7 @@
 #include <CGAL/FPU.h>
 #include <cmath>
 #include <random>
+#include <vector>
 
 using namespace clash4d;
 
@@ -173,4 +174,47 @@ BOOST_AUTO_TEST_CASE(exact_dyadics_at_their_edges)
   BOOST_TEST(!is_exact_dyadic(q("1/3"), 20));
   BOOST_TEST(is_exact_dyadic(q("9007199254740991"), 20));  // 2^53 - 1
   BOOST_TEST(!is_exact_dyadic(q("9007199254740993"), 20)); // 2^53 + 1: no double holds it
+}
+
+// sum_of_products (the rational dot product over unreduced fractions) is
+// the sum of products made one gcd at a time by GMP's mpq arithmetic: by
+// hand on a rotation row (shared denominators), zeros, cancellation to 0
+// and to an integer; then on seeded random rationals of 1 to 120 bits, with
+// shared and different denominators and zero terms, its result in lowest
+// terms (a Gmpq compared with == must be canonical).
+BOOST_AUTO_TEST_CASE(sum_of_products_is_the_exact_dot_product)
+{
+  auto dot = [](std::vector<Rational> a, std::vector<Rational> b) { return sum_of_products(a.data(), b.data(), a.size()); };
+  BOOST_TEST(to_string(dot({q("-7/25"), q("24/25"), q("0")}, {q("1"), q("1"), q("5")})) == "17/25");
+  BOOST_TEST(to_string(dot({q("1/3"), q("2/3")}, {q("3"), q("-3/2")})) == "0");
+  BOOST_TEST(to_string(dot({q("1/6"), q("5/6")}, {q("3"), q("3")})) == "3");
+  BOOST_TEST(to_string(dot({q("0"), q("0")}, {q("7"), q("1/9")})) == "0");
+  BOOST_TEST(to_string(dot({q("-1/4")}, {q("2/3")})) == "-1/6");
+  std::uint64_t seed = 20261127;
+  BOOST_TEST_MESSAGE("sum_of_products: seed " << seed);
+  std::mt19937_64 rng(seed);
+  auto random_rational = [&](const Rational& den) {
+    int bits = 1 + static_cast<int>(rng() % 120);
+    Rational x(static_cast<long>(rng() >> (64 - std::min(bits, 62))));
+    for (int b = 62; b < bits; b += 62) x = x * Rational(static_cast<long>(1) << 62) + Rational(static_cast<long>(rng() >> 2));
+    if (rng() % 2) x = -x;
+    return rng() % 5 == 0 ? Rational(0) : x / den;
+  };
+  for (int i = 0; i < 5000; ++i) {
+    std::size_t n = 1 + rng() % 5;
+    Rational shared(static_cast<long>(1 + rng() % 1000));
+    std::vector<Rational> a, b;
+    for (std::size_t k = 0; k < n; ++k) {
+      bool same = rng() % 2;
+      a.push_back(random_rational(same ? shared : Rational(static_cast<long>(1 + rng() % 100000))));
+      b.push_back(random_rational(same ? Rational(1) : Rational(static_cast<long>(1 + rng() % 100000))));
+    }
+    Rational expected(0);
+    for (std::size_t k = 0; k < n; ++k) expected += a[k] * b[k];
+    Rational got = sum_of_products(a.data(), b.data(), n);
+    BOOST_TEST(got == expected, i << ": " << to_string(got) << " against " << to_string(expected));
+    mpz_class g;
+    mpz_gcd(g.get_mpz_t(), mpq_numref(got.mpq()), mpq_denref(got.mpq()));
+    BOOST_TEST((g == 1 && mpz_sgn(mpq_denref(got.mpq())) > 0), i);
+  }
 }
