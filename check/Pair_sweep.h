@@ -50,6 +50,21 @@ public:
     return out;
   }
 
+  // Whether some box of i and some box of j meet for certain: every
+  // comparison of the sweep's test holds in every number the kernel's may
+  // stand for (an interval kernel: the pair is kept whatever the exact
+  // boxes; otherwise the caller decides it on exact boxes, meets).
+  bool certainly_meets(const Scene_model<K>& model, const std::vector<Box<FT, 3>>& roots, int i, int j) const
+  {
+    return any_pair(model, roots, i, j, [&](const Box4& a, const Box4& b) { return surely_overlaps(a, b); });
+  }
+
+  // The sweep's test on one pair: whether some box of i meets some box of j.
+  bool meets(const Scene_model<K>& model, const std::vector<Box<FT, 3>>& roots, int i, int j) const
+  {
+    return any_pair(model, roots, i, j, [&](const Box4& a, const Box4& b) { return overlaps(a, b); });
+  }
+
 private:
   const K& k_;
   bool closed_;
@@ -103,6 +118,32 @@ private:
     for (int q = 0; q < 4; ++q)
       if (!opens_past(a, b, q) || !opens_past(b, a, q)) return false;
     return true;
+  }
+
+  // opens_past for certain: not possibly the opposite (b.lo - a.hi >= 0;
+  // closed: > 0).
+  bool surely_opens_past(const Box4& a, const Box4& b, int q) const
+  {
+    if (!a.has_hi[q] || !b.has_lo[q]) return true;
+    return closed_ ? !k_.possibly_positive(b.lo[q] - a.hi[q]) : !k_.possibly_nonnegative(b.lo[q] - a.hi[q]);
+  }
+  bool surely_overlaps(const Box4& a, const Box4& b) const
+  {
+    for (int q = 0; q < 4; ++q)
+      if (!surely_opens_past(a, b, q) || !surely_opens_past(b, a, q)) return false;
+    return true;
+  }
+
+  template <class Test>
+  bool any_pair(const Scene_model<K>& model, const std::vector<Box<FT, 3>>& roots, int i, int j, Test test) const
+  {
+    std::vector<Item> a, b;
+    add_boxes(model, i, roots[static_cast<std::size_t>(i)], a);
+    add_boxes(model, j, roots[static_cast<std::size_t>(j)], b);
+    for (const Item& x : a)
+      for (const Item& y : b)
+        if (test(x.box, y.box)) return true;
+    return false;
   }
 };
 

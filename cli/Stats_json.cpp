@@ -51,6 +51,7 @@ json stats_json(const Check_stats& s)
   std::string after = !s.span_before ? "" : s.span_after ? range_text(*s.span_after) : "empty";
   return {{"object_pairs", s.object_pairs},
           {"candidate_pairs_after_sweep", s.candidate_pairs},
+          {"exact_sweep_ties", s.exact_sweep_ties},
           {"pairs", s.pairs},
           {"sub_spans", s.sub_spans},
           {"sub_spans_pruned_by_sbounds", s.sub_spans_pruned},

@@ -392,8 +392,43 @@ private:
       ++fallbacks_;
       for (std::size_t i = 0; i < n; ++i) need_exact(static_cast<int>(i));
       pairs = candidate_pairs(ek_, emodel_, esettled_, scene_, stats, semantics);
+      return true;
     }
+    drop_apart_ties(pairs, stats, semantics);
     return true;
+  }
+
+  // The pairs the intervals' sweep kept only because their boxes might
+  // touch (rounding: every sign certain but a tie's), decided on EK's boxes:
+  // boxes that only touch have no common interior, so such a pair cannot
+  // collide in regularised semantics (closed: only a gap drops it). The
+  // double run drops such a pair by rounding's luck (a contact under a
+  // rotation); this drops it by proof, before any convex program or search.
+  void drop_apart_ties(std::vector<std::pair<int, int>>& pairs, Check_stats& stats, Semantics semantics)
+  {
+    bool closed = semantics == Semantics::closed;
+    std::vector<Box<AFT, 3>> aroots;
+    for (const auto& b : asettled_) aroots.push_back(b[0]);
+    std::vector<std::pair<int, int>> kept;
+    for (const auto& [i, j] : pairs) {
+      bool certain;
+      {
+        Protector protect;
+        certain = Pair_sweep<AK>(ak_, closed).certainly_meets(amodel_, aroots, i, j);
+      }
+      if (!certain) {
+        ++stats.exact_sweep_ties;
+        need_exact(i);
+        need_exact(j);
+        std::vector<Box<EFT, 3>> eroots(scene_.objects.size());
+        eroots[static_cast<std::size_t>(i)] = esettled_[i][0];
+        eroots[static_cast<std::size_t>(j)] = esettled_[j][0];
+        if (!Pair_sweep<EK>(ek_, closed).meets(emodel_, eroots, i, j)) continue;
+      }
+      kept.emplace_back(i, j);
+    }
+    stats.candidate_pairs = kept.size();
+    pairs = std::move(kept);
   }
 
   typename S_bounds<AK>::Bounds settle(int i, Check_stats& stats)

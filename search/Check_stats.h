@@ -23,6 +23,9 @@ struct Span_stats {
 struct Check_stats {
   // Many objects (§6): pairs in the scene, and those the sweep kept
   std::size_t object_pairs = 0, candidate_pairs = 0;
+  // Filtered exact kernel: candidate pairs the intervals' sweep could not
+  // tell from touching, decided on rational boxes (exact/Filtered_runner.h).
+  std::size_t exact_sweep_ties = 0;
   double seconds_sweep = 0;
   // S-bounds (§4.3)
   std::size_t pairs = 0, sub_spans = 0, sub_spans_pruned = 0;

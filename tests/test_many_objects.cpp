@@ -155,3 +155,41 @@ BOOST_AUTO_TEST_CASE(a_check_under_a_cancelled_caller_still_checks_every_pair)
   for (std::size_t i = 0; i < s.pairs.size(); ++i) BOOST_TEST((s.pairs[i].edges == calm.pairs[i].edges));
   BOOST_TEST(!calm.pairs.empty());
 }
+
+// The filtered sweep's ties, decided on rational boxes (Filtered_runner::
+// drop_apart_ties). The unit cube rotated by q = (3,0,0,4) (cos = -7/25,
+// sin = 24/25 about z) reaches y = 24/25 exactly, at its vertical edge
+// x = -7/25; a block slides along x with its face y = lo + e. Intervals
+// cannot tell 24/25 from its neighbours, so the pair is a tie; by hand:
+//  - e = 0: boxes touch, the edge lies on the face: no regularised
+//    collision (pair dropped at the sweep), closed: they meet (kept);
+//  - e = +1e-30: a gap: apart in both semantics, dropped in both;
+//  - e = -1e-30: the edge's wedge enters the block: a collision in both,
+//    the pair kept.
+BOOST_AUTO_TEST_CASE(sweep_ties_are_decided_on_exact_boxes)
+{
+  struct Case {
+    const char* lo;
+    bool regularised, closed;
+  };
+  for (Case c : {Case{"24/25", false, true}, Case{"24/25 + 1e-30", false, false}, Case{"24/25 - 1e-30", true, true}}) {
+    std::string lo = c.lo;
+    std::string y = lo == "24/25" ? "\"24/25\"" : lo == "24/25 + 1e-30" ? "\"0.960000000000000000000000000001\""
+                                                                        : "\"0.959999999999999999999999999999\"";
+    Scene scene = parse(R"({"format":"clash4d-scene/1","time":[0,4],"objects":[
+      {"name":"tilted","shape":{"rotate":[3,0,0,4],"solid":{"block":{"min":[0,0,0],"max":[1,1,1]}}}},
+      {"name":"slider","motion":"vel 1 0 0","shape":{"block":{"min":[-3,)" + y + R"(,0],"max":[-2,2,1]}}}]})");
+    for (Semantics s : {Semantics::regularised, Semantics::closed}) {
+      bool expected = s == Semantics::closed ? c.closed : c.regularised;
+      bool kept = expected;   // a pair kept at the sweep exactly when the boxes meet (touching: closed only)
+      Check_options opts;
+      opts.semantics = s;
+      Check_answer e = check_exact(scene, opts), r = check_rational(scene, opts);
+      BOOST_TEST(e.collide == expected, lo << (s == Semantics::closed ? " closed" : ""));
+      BOOST_TEST(r.collide == expected, lo << (s == Semantics::closed ? " closed (rational)" : " (rational)"));
+      BOOST_TEST(e.stats.exact_sweep_ties == 1u, lo);
+      BOOST_TEST(e.stats.candidate_pairs == (kept ? 1u : 0u), lo << (s == Semantics::closed ? " closed" : ""));
+      BOOST_TEST(r.stats.candidate_pairs == e.stats.candidate_pairs, lo);
+    }
+  }
+}
