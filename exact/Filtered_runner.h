@@ -418,11 +418,9 @@ private:
       }
       if (!certain) {
         ++stats.exact_sweep_ties;
-        need_exact(i);
-        need_exact(j);
         std::vector<Box<EFT, 3>> eroots(scene_.objects.size());
-        eroots[static_cast<std::size_t>(i)] = esettled_[i][0];
-        eroots[static_cast<std::size_t>(j)] = esettled_[j][0];
+        eroots[static_cast<std::size_t>(i)] = exact_root(i);
+        eroots[static_cast<std::size_t>(j)] = exact_root(j);
         if (!Pair_sweep<EK>(ek_, closed).meets(emodel_, eroots, i, j)) continue;
       }
       kept.emplace_back(i, j);
@@ -444,6 +442,20 @@ private:
       Protector protect;
       return typename S_bounds<AK>::Bounds(1, enclose(esettled_[i][0]));
     }
+  }
+
+  // Object i's root box in EK, as the sweep reads it: a one-primitive
+  // object's is its primitive's box (its S-bounds have nothing to narrow),
+  // made without a model (Model_builder::primitive_box); another's, its
+  // settled S-bounds' root. Either holds the object (the sweep's only need).
+  Box<EFT, 3> exact_root(int i)
+  {
+    need_motion(i);
+    if (amodel_.objects[i].csg.nodes.size() != 1) {
+      need_exact(i);
+      return esettled_[i][0];
+    }
+    return Model_builder<EK>(ek_).primitive_box(scene_.objects[static_cast<std::size_t>(i)].shape);
   }
 
   Box<AFT, 3> enclose(const Box<EFT, 3>& e) const

@@ -30,7 +30,8 @@ struct Solid {
   // Their exact geometry, made by the reader (geometry/Polytope_ft.h), for the
   // kernels that read constructions rather than compute them
   // (K::reads_exact_constructions): hull facet planes a b c d, convex
-  // vertices x y z, in the order of triples; empty when not made.
+  // vertices x y z, in the order of triples; rotate: its matrix's rows
+  // (geometry/Rotation_matrix.h); empty when not made.
   std::vector<Rational> constructed;
 };
 

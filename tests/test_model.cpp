@@ -100,6 +100,54 @@ BOOST_AUTO_TEST_CASE(prism_hull_and_convex)
   check_vertices_on_planes(octa.primitives[0]);
 }
 
+// Model_builder::primitive_box (what a sweep tie asks of a one-primitive
+// object, exact/Filtered_runner.h) is the box the model gives the
+// primitive, for every kind under a rotation and a translation: block,
+// prism and hull from their vertices alone, convex and half-spaces from
+// their planes; the rotated block's by hand too (corners (+-1,+-1) turned
+// by cos = -7/25, sin = 24/25 reach +-31/25).
+BOOST_AUTO_TEST_CASE(primitive_box_is_the_models_box)
+{
+  const std::string turn = R"({"rotate":[3,0,0,4],"solid":{"translate":["1/3",-2,"0.5"],"solid":)";
+  for (std::string shape : {std::string(R"({"block":{"min":[-1,-1,-1],"max":[1,1,1]}})"),
+                            std::string(R"({"prism":{"base":[[0,0],[2,0],[1,1]],"z":[0,"0.5"]}})"),
+                            std::string(R"({"hull":[[0,0,0],[1,0,0],[0,1,0],[0,0,1],["1/2","1/3","1/7"]]})"),
+                            std::string(R"({"convex":[[1,1,1,-1],[1,1,-1,-1],[1,-1,1,-1],[1,-1,-1,-1],[-1,1,1,-1],[-1,1,-1,-1],[-1,-1,1,-1],[-1,-1,-1,-1]]})"),
+                            std::string(R"({"halfspace":[-2,0,0,1]})"), std::string(R"({"halfspace":[1,1,0,-1]})")}) {
+    for (const std::string& placed : {shape, turn + shape + "}}"}) {
+      Scene scene = scene_with(placed);
+      Box<Q, 3> quick = Model_builder<Rational_kernel>(Rational_kernel()).primitive_box(scene.objects[0].shape);
+      Box<Q, 3> built = model_of(placed).primitives[0].box;
+      for (int a = 0; a < 3; ++a) {
+        BOOST_TEST((quick.has_lo[a] == built.has_lo[a] && quick.has_hi[a] == built.has_hi[a]), placed << " axis " << a);
+        if (quick.has_lo[a] && built.has_lo[a]) BOOST_TEST(quick.lo[a] == built.lo[a], placed << " axis " << a);
+        if (quick.has_hi[a] && built.has_hi[a]) BOOST_TEST(quick.hi[a] == built.hi[a], placed << " axis " << a);
+      }
+    }
+  }
+  Scene turned = scene_with(R"({"rotate":[3,0,0,4],"solid":{"block":{"min":[-1,-1,-1],"max":[1,1,1]}}})");
+  check_box(Model_builder<Rational_kernel>(Rational_kernel()).primitive_box(turned.objects[0].shape),
+            {Q(-31, 25), Q(-31, 25), Q(-1)}, {Q(31, 25), Q(31, 25), Q(1)});
+}
+
+// The reader makes a rotation's matrix once (Solid::constructed), and the
+// rational model read from it is the one computed from q: the same planes
+// and vertices, number for number.
+BOOST_AUTO_TEST_CASE(rotate_reads_its_exact_matrix)
+{
+  Scene scene = scene_with(R"({"rotate":[7,-1,5,2],"solid":{"prism":{"base":[[0,0],[2,0],[1,1]],"z":[0,"0.5"]}}})");
+  const Solid& rotate = scene.objects[0].shape;
+  auto R = rotation_matrix(Q(7), Q(-1), Q(5), Q(2));
+  BOOST_TEST_REQUIRE(rotate.constructed.size() == 9u);
+  for (int i = 0; i < 9; ++i) BOOST_TEST(rotate.constructed[static_cast<std::size_t>(i)] == R[i / 3][i % 3]);
+  Solid computed = rotate;
+  computed.constructed.clear();
+  Rational_kernel k;
+  Csg_model<Q> read = Model_builder<Rational_kernel>(k).build(rotate), made = Model_builder<Rational_kernel>(k).build(computed);
+  BOOST_TEST(read.primitives[0].planes == made.primitives[0].planes);
+  BOOST_TEST(read.primitives[0].vertices == made.primitives[0].vertices);
+}
+
 BOOST_AUTO_TEST_CASE(halfspace_box_is_omega_unless_axis_aligned)
 {
   auto slanted = model_of(R"({"intersection":[{"halfspace":[1,1,0,-1]},{"block":{"min":[0,0,0],"max":[1,1,1]}}]})");

@@ -1,0 +1,30 @@
+// The scene format's rotation (spec: "rotate"), as a matrix of rationals:
+// the unit quaternion q / |q| acts as R x, and each entry of R is a
+// polynomial in q over |q|^2 = w^2 + x^2 + y^2 + z^2, so no square root is
+// taken and rational q gives a rational R (exact, orthogonal).
+#ifndef CLASH4D_GEOMETRY_ROTATION_MATRIX_H
+#define CLASH4D_GEOMETRY_ROTATION_MATRIX_H
+
+#include "geometry/kernel_ft4.h"
+#include <array>
+
+namespace clash4d {
+
+// The rows of R for q = (w, x, y, z), q != 0.
+template <class FT>
+std::array<Vector3<FT>, 3> rotation_matrix(const FT& w, const FT& x, const FT& y, const FT& z)
+{
+  FT n = w * w + x * x + y * y + z * z;
+  FT two(2);
+  std::array<Vector3<FT>, 3> m = {{
+      {w * w + x * x - y * y - z * z, two * (x * y - w * z), two * (x * z + w * y)},
+      {two * (x * y + w * z), w * w - x * x + y * y - z * z, two * (y * z - w * x)},
+      {two * (x * z - w * y), two * (y * z + w * x), w * w - x * x - y * y + z * z}}};
+  for (auto& row : m)
+    for (auto& e : row) e /= n;
+  return m;
+}
+
+} // namespace clash4d
+
+#endif
