@@ -406,9 +406,12 @@ private:
   // rotation); this drops it by proof, before any convex program or search.
   void drop_apart_ties(std::vector<std::pair<int, int>>& pairs, Check_stats& stats, Semantics semantics)
   {
+    auto start = std::chrono::steady_clock::now();
     bool closed = semantics == Semantics::closed;
     std::vector<Box<AFT, 3>> aroots;
     for (const auto& b : asettled_) aroots.push_back(b[0]);
+    std::vector<Box<EFT, 3>> eroots(scene_.objects.size());   // made as a tie needs them
+    std::vector<char> made(scene_.objects.size(), 0);
     std::vector<std::pair<int, int>> kept;
     for (const auto& [i, j] : pairs) {
       bool certain;
@@ -418,14 +421,17 @@ private:
       }
       if (!certain) {
         ++stats.exact_sweep_ties;
-        std::vector<Box<EFT, 3>> eroots(scene_.objects.size());
-        eroots[static_cast<std::size_t>(i)] = exact_root(i);
-        eroots[static_cast<std::size_t>(j)] = exact_root(j);
+        for (int o : {i, j})
+          if (!made[static_cast<std::size_t>(o)]) {
+            eroots[static_cast<std::size_t>(o)] = exact_root(o);
+            made[static_cast<std::size_t>(o)] = 1;
+          }
         if (!Pair_sweep<EK>(ek_, closed).meets(emodel_, eroots, i, j)) continue;
       }
       kept.emplace_back(i, j);
     }
     stats.candidate_pairs = kept.size();
+    stats.seconds_sweep += seconds_since(start);
     pairs = std::move(kept);
   }
 
