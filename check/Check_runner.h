@@ -132,13 +132,14 @@ template <class K>
 std::vector<std::pair<int, int>> candidate_pairs(const K& k, const Scene_model<K>& model,
                                                  const std::vector<typename S_bounds<K>::Bounds>& settled,
                                                  const Scene& scene, Check_stats& stats,
-                                                 Semantics semantics = Semantics::regularised)
+                                                 Semantics semantics = Semantics::regularised,
+                                                 std::vector<char>* certain = nullptr)
 {
   auto start = std::chrono::steady_clock::now();
   std::vector<Box<typename K::FT, 3>> roots;
   for (const auto& b : settled) roots.push_back(b[0]);
   std::vector<std::pair<int, int>> pairs =
-      Pair_sweep<K>(k, semantics == Semantics::closed).candidates(model, roots, scene);
+      Pair_sweep<K>(k, semantics == Semantics::closed).candidates(model, roots, scene, certain);
   std::size_t n = model.objects.size();
   stats.object_pairs = n * (n - 1) / 2 - scene.ignore.size();
   stats.candidate_pairs = pairs.size();

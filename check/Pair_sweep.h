@@ -29,34 +29,37 @@ public:
   explicit Pair_sweep(const K& k, bool closed = false) : k_(k), closed_(closed) {}
 
   // roots[i]: object i's root S-bound in its own frame. Returns (i, j), i < j,
-  // sorted, without ignored pairs.
+  // sorted, without ignored pairs. certain (optional): per pair returned,
+  // whether some box of i and some box of j meet for certain, every
+  // comparison holding for every number the kernel's may stand for (an
+  // interval kernel; when not, the caller may decide the pair on exact
+  // boxes with meets).
   std::vector<std::pair<int, int>> candidates(const Scene_model<K>& model, const std::vector<Box<FT, 3>>& roots,
-                                              const Scene& scene) const
+                                              const Scene& scene, std::vector<char>* certain = nullptr) const
   {
     std::vector<Item> items;
     for (std::size_t i = 0; i < model.objects.size(); ++i) add_boxes(model, static_cast<int>(i), roots[i], items);
     std::vector<Filter_box> boxes;
     boxes.reserve(items.size());
     for (std::size_t i = 0; i < items.size(); ++i) boxes.push_back(filter_box(items[i].box, i));
-    std::vector<std::pair<int, int>> out;
+    std::vector<std::pair<std::pair<int, int>, bool>> found;   // a pair, per meeting boxes: certainly?
     CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Filter_box& a, const Filter_box& b) {
       const Item &x = items[a.info()], &y = items[b.info()];
       if (x.object == y.object || !overlaps(x.box, y.box)) return;
       int i = std::min(x.object, y.object), j = std::max(x.object, y.object);
-      if (!scene.ignored(i, j)) out.emplace_back(i, j);
+      if (!scene.ignored(i, j)) found.push_back({{i, j}, certain && surely_overlaps(x.box, y.box)});
     });
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
+    std::sort(found.begin(), found.end());
+    std::vector<std::pair<int, int>> out;
+    if (certain) certain->clear();
+    for (const auto& [pair, sure] : found) {   // sorted: a pair's certain report last
+      if (out.empty() || out.back() != pair) {
+        out.push_back(pair);
+        if (certain) certain->push_back(0);
+      }
+      if (certain && sure) certain->back() = 1;
+    }
     return out;
-  }
-
-  // Whether some box of i and some box of j meet for certain: every
-  // comparison of the sweep's test holds in every number the kernel's may
-  // stand for (an interval kernel: the pair is kept whatever the exact
-  // boxes; otherwise the caller decides it on exact boxes, meets).
-  bool certainly_meets(const Scene_model<K>& model, const std::vector<Box<FT, 3>>& roots, int i, int j) const
-  {
-    return any_pair(model, roots, i, j, [&](const Box4& a, const Box4& b) { return surely_overlaps(a, b); });
   }
 
   // The sweep's test on one pair: whether some box of i meets some box of j.

@@ -384,9 +384,10 @@ private:
     start = std::chrono::steady_clock::now();
     for (std::size_t i = 0; i < n; ++i) asettled_.push_back(settle(static_cast<int>(i), stats));
     stats.seconds_sbounds += seconds_since(start);
+    std::vector<char> certain;
     try {
       Protector protect;
-      pairs = candidate_pairs(ak_, amodel_, asettled_, scene_, stats, semantics);
+      pairs = candidate_pairs(ak_, amodel_, asettled_, scene_, stats, semantics, &certain);
     } catch (const CGAL::Uncertain_conversion_exception&) {
       // The sweep could not order some motion times: sweep in EK instead.
       ++fallbacks_;
@@ -394,7 +395,7 @@ private:
       pairs = candidate_pairs(ek_, emodel_, esettled_, scene_, stats, semantics);
       return true;
     }
-    drop_apart_ties(pairs, stats, semantics);
+    drop_apart_ties(pairs, certain, stats, semantics);
     return true;
   }
 
@@ -404,22 +405,18 @@ private:
   // collide in regularised semantics (closed: only a gap drops it). The
   // double run drops such a pair by rounding's luck (a contact under a
   // rotation); this drops it by proof, before any convex program or search.
-  void drop_apart_ties(std::vector<std::pair<int, int>>& pairs, Check_stats& stats, Semantics semantics)
+  void drop_apart_ties(std::vector<std::pair<int, int>>& pairs, const std::vector<char>& certain, Check_stats& stats,
+                       Semantics semantics)
   {
+    if (std::find(certain.begin(), certain.end(), 0) == certain.end()) return;
     auto start = std::chrono::steady_clock::now();
     bool closed = semantics == Semantics::closed;
-    std::vector<Box<AFT, 3>> aroots;
-    for (const auto& b : asettled_) aroots.push_back(b[0]);
-    std::vector<Box<EFT, 3>> eroots(scene_.objects.size());   // made as a tie needs them
+    std::vector<Box<EFT, 3>> eroots(scene_.objects.size());   // each made as a tie needs it
     std::vector<char> made(scene_.objects.size(), 0);
     std::vector<std::pair<int, int>> kept;
-    for (const auto& [i, j] : pairs) {
-      bool certain;
-      {
-        Protector protect;
-        certain = Pair_sweep<AK>(ak_, closed).certainly_meets(amodel_, aroots, i, j);
-      }
-      if (!certain) {
+    for (std::size_t p = 0; p < pairs.size(); ++p) {
+      auto [i, j] = pairs[p];
+      if (!certain[p]) {
         ++stats.exact_sweep_ties;
         for (int o : {i, j})
           if (!made[static_cast<std::size_t>(o)]) {
