@@ -157,7 +157,7 @@ public:
     Affine3<FT> T = Affine3<FT>::identity();
     const Solid& s = peel(shape, T);
     Primitive<FT> p;
-    local_geometry(s, p, s.kind == Solid::Kind::Convex || s.kind == Solid::Kind::Halfspace);
+    local_geometry(s, p, false);
     place(p, T);
     return p.box;
   }
@@ -180,7 +180,9 @@ private:
     p.box = p.vertices.empty() ? halfspace_box(p.planes[0]) : vertex_box(p.vertices);
   }
 
-  // with_planes false: a block's, hull's or prism's vertices only.
+  // with_planes false: a block's, hull's or prism's vertices only (a convex
+  // solid's and a half-space's planes are made anyway: their vertices and
+  // box come from them).
   void local_geometry(const Solid& s, Primitive<FT>& p, bool with_planes = true) const
   {
     using K_ = Solid::Kind;

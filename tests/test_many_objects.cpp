@@ -169,13 +169,12 @@ BOOST_AUTO_TEST_CASE(a_check_under_a_cancelled_caller_still_checks_every_pair)
 BOOST_AUTO_TEST_CASE(sweep_ties_are_decided_on_exact_boxes)
 {
   struct Case {
-    const char* lo;
+    const char* lo;   // the slider's face: 24/25, 24/25 + 1e-30, 24/25 - 1e-30
     bool regularised, closed;
   };
-  for (Case c : {Case{"24/25", false, true}, Case{"24/25 + 1e-30", false, false}, Case{"24/25 - 1e-30", true, true}}) {
-    std::string lo = c.lo;
-    std::string y = lo == "24/25" ? "\"24/25\"" : lo == "24/25 + 1e-30" ? "\"0.960000000000000000000000000001\""
-                                                                        : "\"0.959999999999999999999999999999\"";
+  for (Case c : {Case{"24/25", false, true}, Case{"0.960000000000000000000000000001", false, false},
+                 Case{"0.959999999999999999999999999999", true, true}}) {
+    std::string lo = c.lo, y = "\"" + lo + "\"";
     Scene scene = parse(R"({"format":"clash4d-scene/1","time":[0,4],"objects":[
       {"name":"tilted","shape":{"rotate":[3,0,0,4],"solid":{"block":{"min":[0,0,0],"max":[1,1,1]}}}},
       {"name":"slider","motion":"vel 1 0 0","shape":{"block":{"min":[-3,)" + y + R"(,0],"max":[-2,2,1]}}}]})");
