@@ -161,7 +161,7 @@ private:
     std::size_t index = 0;
     for (const auto& span : model_.sub_spans({a, b})) {
       std::size_t here = index++;
-      if (!goal.can_improve(k_, span.lo)) break;   // spans come in time order
+      if (!policy_.enters_span(k_, goal, span)) break;   // spans come in time order
       if (policy_.skips_span(here)) continue;
       ++stats_.sub_spans;
       if (!check_span(a, b, here, span, r, goal, convex ? &*convex : nullptr, convex_only)) return false;

@@ -84,6 +84,42 @@ public:
   // on a certified path (an earliest-mode rational run can replay it).
   bool earliest_trail() const { return earliest_ && trail_->complete && !trail_->approximate && !pending_; }
 
+  // Earliest mode: a sub-span starting exactly at t* (the motion changing
+  // at the contact: approach and stop) ties with it, which intervals cannot
+  // tell. The span's start (a scene number) is compared with the exact t*
+  // (rational_goal_of), as the rational run compares them, instead of the
+  // whole pair again in rationals.
+  template <class FT>
+  bool enters_span(const AK& k, const Search_goal<FT>& goal, const Time_span<FT>& span)
+  {
+    try {
+      return goal.can_improve(k, span.lo);
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      if (!earliest_ || !span.exact_lo) throw;
+    }
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    Search_goal<EFT> e = rational_goal_of(goal);
+    ++stats_->exact_ties;
+    return e.can_improve(runner_->ek_, runner_->ek_.from_rational(*span.exact_lo));
+  }
+  // Earliest mode: a convex pair's vertex B at time t, against a t* or a
+  // ceiling it ties with (two pairs touching at one instant, another
+  // sub-span's vertex): B's time in rationals, compared as the rational
+  // run compares it.
+  template <class Stage, class FT>
+  bool convex_improves(const AK& k, Stage& stage, const Search_goal<FT>& goal, const std::array<int, 4>* B,
+                       const FT& t)
+  {
+    try {
+      return goal.can_improve(k, t);
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      if (!earliest_ || !B) throw;
+    }
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    Search_goal<EFT> e = rational_goal_of(goal);
+    ++stats_->exact_ties;
+    return e.can_improve(runner_->ek_, exact_convex(stage.a(), stage.b(), stage.span_index()).vertex(*B)[3]);
+  }
   bool skips_span(std::size_t) const { return false; }
   template <class Decide>
   auto convex_stage(Decide decide)
@@ -114,6 +150,7 @@ public:
   void convex_found(const Stage& stage)
   {
     convex_found_ = stage.found();
+    convex_pair_ = {stage.a(), stage.b()};
     convex_guide_ = stage.guide();
   }
   // A convex pair's answer where the intervals made its point inside (or
@@ -501,6 +538,7 @@ private:
   std::unique_ptr<Primitive_planes<EK>> exact_planes_[2];   // the pair's objects' (a filter is one pair's)
   std::shared_ptr<const Convex_guide> convex_guide_;         // the interval stage's, shared
   std::optional<Convex_found> convex_found_;
+  std::array<int, 2> convex_pair_{};                         // whose stage recorded convex_found_
 
   Convex_pair<EK>& exact_convex(int a, int b, std::size_t index)
   {
@@ -575,6 +613,24 @@ private:
 
   // The earliest-mode goal in rationals: the pair's semantics and ceiling,
   // and, when found, the exact t* (t_star_, in step).
+  // The rational run's goal where the interval run's is `goal`: its t*
+  // exact (a convex pair's: its programs' vertex, always one in earliest
+  // mode, made in rationals; a search's: t_star_, as can_enter has it).
+  template <class FT>
+  Search_goal<EFT> rational_goal_of(const Search_goal<FT>& goal)
+  {
+    if (goal.found && goal.convex) {
+      if (!convex_found_ || !convex_found_->at_vertex) throw CGAL::Uncertain_conversion_exception("t* off a vertex");
+      Search_goal<EFT> e = rational_goal(false);
+      e.found = true;
+      e.t_star = exact_convex(convex_pair_[0], convex_pair_[1], convex_found_->index).vertex(convex_found_->basis)[3];
+      return e;
+    }
+    if (fold_unsynced_) throw CGAL::Uncertain_conversion_exception("t* of a fold not yet exact");
+    if (stale_) make_exact();
+    if (goal.found && !t_star_) throw CGAL::Uncertain_conversion_exception("t* not yet exact");
+    return rational_goal(goal.found);
+  }
   Search_goal<EFT> rational_goal(bool found) const
   {
     Search_goal<EFT> e;

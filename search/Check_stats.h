@@ -72,7 +72,8 @@ struct Check_stats {
   // from it, instead of a replay;
   // exact_ties: points of lines whose time the intervals could not tell
   // from t* (earliest mode), compared exactly by the time of the one
-  // vertex there instead of the line in rationals;
+  // vertex there instead of the line in rationals; and sub-spans starting
+  // at a convex pair's t*, compared with its vertex in rationals;
   // exact_cut_orders: two cuts of a line the intervals could not order,
   // ordered on the rational planes instead of the line in rationals;
   // exact_zeros: planes the intervals could not call parallel to a line

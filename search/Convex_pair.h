@@ -490,7 +490,8 @@ private:
     std::optional<Basis> B;
     if (goal.earliest && !(B = least_vertex(true))) return Verdict::undecided;
     V4 lowest = B ? vertex(*B) : in;
-    if (!goal.can_improve(k_, lowest[3])) return Verdict::apart;   // past the ceiling: nothing to record
+    if (!policy_.convex_improves(k_, *this, goal, B ? &*B : nullptr, lowest[3]))
+      return Verdict::apart;   // past the ceiling: nothing to record
     goal.record(k_, in, lowest);
     goal.convex = true;
     found_ = {index_, B.has_value(), B ? *B : Basis{}, g, C != nullptr, C ? *C : Centre{}};
@@ -503,7 +504,7 @@ private:
   Verdict touch(Search_goal<FT>& goal, const Point& g, const Basis* B)
   {
     V4 p = B ? vertex(*B) : exact_point(g);
-    if (!goal.can_improve(k_, p[3])) return Verdict::apart;
+    if (!policy_.convex_improves(k_, *this, goal, B, p[3])) return Verdict::apart;
     goal.record_touch(k_, p, V4{FT(0), FT(0), FT(0), FT(0)}, V4{FT(0), FT(0), FT(0), FT(0)});
     goal.convex = true;
     goal.cell_a = cell(0, p[3]);

@@ -11,6 +11,11 @@
 //
 // A policy P provides:
 //   Collision_checker, per sub-span of a pair (in time order):
+//     template <class K, class FT> bool enters_span(k, goal, span)
+//                                      whether the span could hold a better
+//                                      point (Search_goal::can_improve at its
+//                                      start; spans come in time order, so
+//                                      false stops the pair)
 //     bool skips_span(index)           the span is known to hold no collision
 //     template <class Decide> auto convex_stage(decide)   a convex pair's
 //                                      linear programs (search/Convex_pair.h):
@@ -23,6 +28,12 @@
 //                                      in every kernel); a filter that cannot
 //                                      tell asks p of its exact kernel's
 //                                      stage on the same sub-span
+//     template <class K, class Stage, class FT>
+//       bool convex_improves(k, stage, goal, B, t)   whether the stage's
+//                                      point at time t (the vertex of the
+//                                      four rows *B, when not null) could
+//                                      improve the goal
+//                                      (Search_goal::can_improve)
 //     template <class Stage> void convex_found(stage)   the stage recorded
 //                                      a collision (stage.found() says how)
 //     template <class M, class Stage, class Run>
@@ -109,6 +120,7 @@
 #include "geometry/Box.h"
 #include "geometry/Hyperplane4.h"
 #include "model/Pair_formula.h"
+#include "model/Scene_model.h"
 #include "search/Search_goal.h"
 #include <array>
 #include <cstddef>
@@ -118,6 +130,11 @@
 namespace clash4d {
 
 struct No_filter {
+  template <class K, class FT>
+  bool enters_span(const K& k, const Search_goal<FT>& goal, const Time_span<FT>& span) const
+  {
+    return goal.can_improve(k, span.lo);
+  }
   bool skips_span(std::size_t) const { return false; }
   template <class Decide>
   auto convex_stage(Decide decide)
@@ -128,6 +145,11 @@ struct No_filter {
   auto convex_certain(Stage& stage, Predicate p)
   {
     return p(stage);
+  }
+  template <class K, class Stage, class FT>
+  bool convex_improves(const K& k, Stage&, const Search_goal<FT>& goal, const std::array<int, 4>*, const FT& t) const
+  {
+    return goal.can_improve(k, t);
   }
   template <class Stage>
   void convex_found(const Stage&) {}

@@ -276,11 +276,47 @@ BOOST_AUTO_TEST_CASE(coinciding_decimal_velocity_changes_stay_in_intervals)
     }
 }
 
+// Earliest mode, a convex pair whose contact vertex ties with a time the
+// intervals only enclose (hand-derived: b's face x = 0.1 + 0.1 t reaches
+// a's face x = 0.3 at t = 2, where b stops; c's face x = 1.5 - 0.1 t
+// reaches a's other face x = 1.3 at t = 2 too). The sub-span starting at
+// t* = 2, and the second pair's vertex against the first pair's t*, are
+// compared on the vertex in rationals inside the interval run
+// (Interval_filter::enters_span, convex_improves): nothing is run again in
+// rationals, and the answers are the rational run's.
+BOOST_AUTO_TEST_CASE(convex_vertex_ties_with_t_star_stay_in_intervals)
+{
+  Scene stop = read_scene(read_json_text(R"({"format": "clash4d-scene/1", "time": [0, 10], "objects": [
+    {"name": "a", "shape": {"block": {"min": [0.3, 0, 0], "max": [1.3, 1, 1]}}},
+    {"name": "b", "shape": {"block": {"min": [-1, 0, 0], "max": [0.1, 1, 1]}}, "motion": "vel 0.1 0 0 until 2 rest"}]})"));
+  Scene both = read_scene(read_json_text(R"({"format": "clash4d-scene/1", "time": [0, 2], "objects": [
+    {"name": "a", "shape": {"block": {"min": [0.3, 0, 0], "max": [1.3, 1, 1]}}},
+    {"name": "b", "shape": {"block": {"min": [-1, 0, 0], "max": [0.1, 1, 1]}}, "motion": "vel 0.1 0 0"},
+    {"name": "c", "shape": {"block": {"min": [1.5, 0, 0], "max": [2.5, 1, 1]}}, "motion": "vel -0.1 0 0"}]})"));
+  Check_options o;
+  o.earliest = true;
+  o.semantics = Semantics::closed;
+  for (const Scene* scene : {&stop, &both}) {
+    Check_answer a = same_answers(*scene, o, "convex vertex tie");
+    BOOST_TEST(a.collide);
+    BOOST_TEST_REQUIRE(a.reported() != nullptr);
+    BOOST_TEST(a.reported()->t_star == "2");
+    BOOST_TEST(a.reported()->b == "b");   // the first pair in order wins the tie
+    BOOST_TEST((a.stats.exact_fallbacks == 0u && a.stats.convex_rational == 0u));
+  }
+  Check_answer a = check_exact(stop, o);
+  BOOST_TEST(a.stats.exact_ties == 1u);   // the sub-span [2, 10] against t* = 2
+  o.semantics = Semantics::regularised;   // touching only: no collision
+  BOOST_TEST(!same_answers(stop, o, "convex vertex tie").collide);
+  BOOST_TEST(!same_answers(both, o, "convex vertex tie").collide);
+}
+
 BOOST_AUTO_TEST_CASE(contact_families_match_rational)
 {
   std::uint64_t seed = env_number("CLASH4D_SEED", 20261122ull), cases = env_number("CLASH4D_FILTER_CASES", 1000);
   BOOST_TEST_MESSAGE("filtered vs rational, fuzz contact families: seed " << seed << ", " << cases << " cases");
-  std::size_t fell_back = 0, whole = 0, stages = 0, convex_rational = 0, ties_dropped = 0, ties_kept = 0;
+  std::size_t fell_back = 0, whole = 0, stages = 0, convex_rational = 0, convex_ties = 0, ties_dropped = 0,
+              ties_kept = 0;
   for (std::uint64_t i = 0; i < cases; ++i) {
     Fuzz_case c = make_fuzz_case(seed, i);
     Scene scene = read_scene(read_json_text(c.json));
@@ -291,6 +327,11 @@ BOOST_AUTO_TEST_CASE(contact_families_match_rational)
     Check_answer a = same_answers(scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) +
                                                 (o.convex_lp ? "" : " --no-convex-lp") + " (" + c.family + "): " + c.json);
     convex_rational += a.stats.convex_rational;
+    // A convex pair's vertex tying with t* or a ceiling (a motion changing
+    // at the contact, two pairs touching at one instant), decided in
+    // rationals inside the interval run (Interval_filter::enters_span,
+    // convex_improves).
+    convex_ties += o.convex_lp && o.earliest && a.stats.convex_spans > 0 && a.stats.exact_ties > 0;
     fell_back += exact_decisions(a) + a.stats.exact_region_stages > 0;
     whole += a.stats.exact_fallbacks > 0;
     stages += a.stats.exact_region_stages > 0;
@@ -301,7 +342,8 @@ BOOST_AUTO_TEST_CASE(contact_families_match_rational)
   BOOST_TEST_MESSAGE(fell_back << " of " << cases << " needed rationals somewhere; " << stages
                                << " adopted a region stage made in rationals (S-bounds meeting exactly), " << whole
                                << " were run again in rationals whole; " << convex_rational
-                               << " convex pairs' linear programs were decided in rationals (a touch); "
+                               << " convex pairs' linear programs were decided in rationals whole, "
+                               << convex_ties << " had a vertex tying with t* decided in rationals; "
                                << ties_dropped << " were decided at the sweep on rational boxes, " << ties_kept
                                << " had a sweep tie kept");
   BOOST_TEST(fell_back > 0);
@@ -310,7 +352,10 @@ BOOST_AUTO_TEST_CASE(contact_families_match_rational)
   BOOST_TEST(stages > cases / 10);
   BOOST_TEST(whole < stages);
   BOOST_TEST(whole > 0u);   // the whole rational rerun is held to rationals too
-  BOOST_TEST(convex_rational > 0u);   // and so are a convex pair's programs decided in rationals
+  // A convex pair's ties with t* are decided exactly where they arise; its
+  // programs in rationals whole (convex_rational) remain only as the
+  // fallback for a sign outside them, which these families no longer reach.
+  BOOST_TEST(convex_ties > cases / 200);
   // Both ways out of a sweep tie (Filtered_runner::drop_apart_ties) are
   // held to rationals: touching boxes (a contact under a rotation) dropped,
   // and boxes that meet kept.
