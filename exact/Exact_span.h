@@ -137,12 +137,12 @@ public:
     Moving_object<EFT> EA, EB;
     {
       CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-      runner_.need_exact(a);   // the model and its settled S-bounds
-      runner_.need_exact(b);
+      runner_.need_bounds(a);   // the settled S-bounds, all the stage reads
+      runner_.need_bounds(b);
       const Scene_model<EK>& model = runner_.emodel_;
       const Time_span<EFT> span = model.sub_spans({a, b}).at(s);
-      EA = moving_on(model, a, span, runner_.esettled_[a]);
-      EB = moving_on(model, b, span, runner_.esettled_[b]);
+      EA = runner_.bounds_on(a, span);
+      EB = runner_.bounds_on(b, span);
       Check_stats scratch;
       e = Span_region<EK>(runner_.ek_, scratch, model.far_exponent, closed_)
               .stage(EA, EB, span, runner_.use_sbounds_);

@@ -62,6 +62,7 @@ public:
     emodel_.scene = &scene;
     emodel_.objects.resize(scene.objects.size());
     esettled_.resize(scene.objects.size());
+    ebounds_.resize(scene.objects.size());
     for (std::size_t i = 0; i < scene.objects.size(); ++i) emodel_.objects[i].name = scene.objects[i].name;
   }
 
@@ -306,6 +307,7 @@ private:
   std::vector<char> exact_only_;              // AK could not bound the object: its pairs go to EK
   Scene_model<EK> emodel_;                    // objects built on demand
   std::vector<typename S_bounds<EK>::Bounds> esettled_;
+  std::vector<Object_model<EFT>> ebounds_;   // boxes-only trees (need_bounds)
   std::unique_ptr<Lazy_once[]> built_, settled_, moved_;   // EK's model of an object, its S-bounds, its motion
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
@@ -455,7 +457,7 @@ private:
   {
     need_motion(i);
     if (amodel_.objects[i].csg.nodes.size() != 1) {
-      need_exact(i);
+      need_bounds(i);
       return esettled_[i][0];
     }
     return Model_builder<EK>(ek_).primitive_box(scene_.objects[static_cast<std::size_t>(i)].shape);
@@ -490,10 +492,28 @@ private:
   void need_exact(int i)
   {
     need_model(i);
+    need_bounds(i);
+  }
+  // EK's settled S-bounds of object i, and its motion, without its model:
+  // settled on the boxes-only tree (Model_builder::build_boxes), whose
+  // nodes and boxes are the model's, so they are the model's bounds. All a
+  // region stage in rationals reads (exact/Exact_span.h), on bounds_on.
+  void need_bounds(int i)
+  {
+    need_motion(i);
     settled_[i].call([&] {
       Check_stats ignored;
-      esettled_[i] = settled_bounds(ek_, emodel_.objects[i].csg, ignored, use_sbounds_);
+      ebounds_[i].csg = Model_builder<EK>(ek_).build_boxes(scene_.objects[static_cast<std::size_t>(i)].shape);
+      esettled_[i] = settled_bounds(ek_, ebounds_[i].csg, ignored, use_sbounds_);
     });
+  }
+  // Object i on a sub-span with its settled S-bounds, for the S-bound
+  // stages only (need_bounds): its tree holds boxes, not planes.
+  Moving_object<EFT> bounds_on(int i, const Time_span<EFT>& span) const
+  {
+    Moving_object<EFT> m = moving_on(emodel_, i, span, esettled_[i]);
+    m.object = &ebounds_[i];
+    return m;
   }
 
   void finish(Check_stats& stats) const

@@ -74,6 +74,19 @@ public:
   Csg_model<FT> build(const Solid& s)
   {
     model_ = Csg_model<FT>();
+    boxes_only_ = false;
+    add(s, Affine3<FT>::identity(), -1);
+    return std::move(model_);
+  }
+
+  // The same tree with each primitive's box alone (no planes, no
+  // vertices): all the S-bounds read (search/S_bounds.h), at a fraction of
+  // the model's cost where only they are needed (a region stage made in
+  // rationals, exact/Exact_span.h). Each box is the one build gives.
+  Csg_model<FT> build_boxes(const Solid& s)
+  {
+    model_ = Csg_model<FT>();
+    boxes_only_ = true;
     add(s, Affine3<FT>::identity(), -1);
     return std::move(model_);
   }
@@ -81,6 +94,7 @@ public:
 private:
   const K& k_;
   Csg_model<FT> model_;
+  bool boxes_only_ = false;
 
   FT num(const Solid& s, std::size_t i) const { return k_.from_rational(s.numbers[i]); }
 
@@ -116,7 +130,7 @@ private:
     }
     model_.nodes[id].op = Csg_node::Op::Primitive;
     model_.nodes[id].primitive = static_cast<int>(model_.primitives.size());
-    model_.primitives.push_back(primitive(s, T));
+    model_.primitives.push_back(boxes_only_ ? boxed(s, T) : primitive(s, T));
     return id;
   }
 
@@ -156,10 +170,7 @@ public:
   {
     Affine3<FT> T = Affine3<FT>::identity();
     const Solid& s = peel(shape, T);
-    Primitive<FT> p;
-    local_geometry(s, p, false);
-    place(p, T);
-    return p.box;
+    return boxed(s, T).box;
   }
 
 private:
@@ -167,6 +178,28 @@ private:
   {
     Primitive<FT> p = local(s);
     place(p, T);
+    return p;
+  }
+
+  // A primitive with its box only (primitive_box, build_boxes): its
+  // vertices' box moved by T (a translation moves the box itself: min and
+  // max commute with adding b), or a half-space's moved plane's.
+  Primitive<FT> boxed(const Solid& s, const Affine3<FT>& T) const
+  {
+    Primitive<FT> p;
+    p.path = s.path;
+    local_geometry(s, p, false);
+    if (p.vertices.empty()) {
+      place(p, T);
+    } else if (T.linear_identity) {
+      p.box = vertex_box(p.vertices);
+      for (int a = 0; a < 3 && !T.is_identity; ++a) p.box.set(a, p.box.lo[a] + T.b[a], p.box.hi[a] + T.b[a]);
+    } else {
+      for (auto& v : p.vertices) v = T.apply(v);
+      p.box = vertex_box(p.vertices);
+    }
+    p.planes.clear();
+    p.vertices.clear();
     return p;
   }
 

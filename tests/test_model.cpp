@@ -2,6 +2,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "model/Scene_model.h"
+#include "search/S_bounds.h"
 #include "exact/Rational_kernel.h"
 #include "float/Double_kernel.h"
 #include "scene/Json_reader.h"
@@ -128,6 +129,54 @@ BOOST_AUTO_TEST_CASE(primitive_box_is_the_models_box)
   Scene turned = scene_with(R"({"rotate":[3,0,0,4],"solid":{"block":{"min":[-1,-1,-1],"max":[1,1,1]}}})");
   check_box(Model_builder<Rational_kernel>(Rational_kernel()).primitive_box(turned.objects[0].shape),
             {Q(-31, 25), Q(-31, 25), Q(-1)}, {Q(31, 25), Q(31, 25), Q(1)});
+}
+
+// build_boxes: the tree of build with each primitive's box alone, so the
+// S-bounds settled on it are the model's (the rational region stage reads
+// only them, exact/Exact_span.h). A union of every primitive kind, placed
+// by a translation (the box moved as a whole), a rotation and neither; and
+// one hand-derived box: the 3-4-5 turn of the unit cube, translated.
+BOOST_AUTO_TEST_CASE(boxes_only_tree_is_the_models)
+{
+  const std::string shape = R"({"difference":[{"union":[
+      {"translate":["1/3",-2,"0.5"],"solid":{"block":{"min":[-1,-1,-1],"max":[1,1,1]}}},
+      {"rotate":[3,0,0,4],"solid":{"prism":{"base":[[0,0],[2,0],[1,1]],"z":[0,"0.5"]}}},
+      {"intersection":[{"hull":[[0,0,0],[1,0,0],[0,1,0],[0,0,1],["1/2","1/3","1/7"]]},{"halfspace":[1,1,0,-1]}]},
+      {"translate":[2,0,0],"solid":{"convex":[[1,1,1,-1],[1,1,-1,-1],[1,-1,1,-1],[1,-1,-1,-1],[-1,1,1,-1],[-1,1,-1,-1],[-1,-1,1,-1],[-1,-1,-1,-1]]}}]},
+    {"translate":[5,0,0],"solid":{"rotate":[3,0,0,4],"solid":{"block":{"min":[-1,-1,-1],"max":[1,1,1]}}}}]})";
+  Scene scene = scene_with(shape);
+  Rational_kernel k;
+  Csg_model<Q> built = model_of(shape), boxes = Model_builder<Rational_kernel>(k).build_boxes(scene.objects[0].shape);
+  BOOST_TEST_REQUIRE(boxes.nodes.size() == built.nodes.size());
+  BOOST_TEST_REQUIRE(boxes.primitives.size() == built.primitives.size());
+  for (std::size_t i = 0; i < built.nodes.size(); ++i) {
+    BOOST_TEST((boxes.nodes[i].op == built.nodes[i].op && boxes.nodes[i].primitive == built.nodes[i].primitive &&
+                boxes.nodes[i].children == built.nodes[i].children && boxes.nodes[i].parent == built.nodes[i].parent));
+  }
+  for (std::size_t i = 0; i < built.primitives.size(); ++i) {
+    const Box<Q, 3>&b = boxes.primitives[i].box, &m = built.primitives[i].box;
+    BOOST_TEST((boxes.primitives[i].planes.empty() && boxes.primitives[i].vertices.empty()));
+    BOOST_TEST((b.has_lo == m.has_lo && b.has_hi == m.has_hi), "primitive " << i);
+    for (int a = 0; a < 3; ++a) {
+      if (b.has_lo[a] && m.has_lo[a]) BOOST_TEST(b.lo[a] == m.lo[a], "primitive " << i << " axis " << a);
+      if (b.has_hi[a] && m.has_hi[a]) BOOST_TEST(b.hi[a] == m.hi[a], "primitive " << i << " axis " << a);
+    }
+  }
+  Check_stats ignored;
+  auto settled_boxes = settled_bounds(k, boxes, ignored, true), settled_model = settled_bounds(k, built, ignored, true);
+  BOOST_TEST_REQUIRE(settled_boxes.size() == settled_model.size());
+  for (std::size_t i = 0; i < settled_boxes.size(); ++i) {
+    BOOST_TEST(settled_boxes[i].empty == settled_model[i].empty, "node " << i);
+    for (int a = 0; a < 3; ++a) {
+      BOOST_TEST(settled_boxes[i].has_lo[a] == settled_model[i].has_lo[a]);
+      if (settled_boxes[i].has_lo[a]) BOOST_TEST(settled_boxes[i].lo[a] == settled_model[i].lo[a]);
+      BOOST_TEST(settled_boxes[i].has_hi[a] == settled_model[i].has_hi[a]);
+      if (settled_boxes[i].has_hi[a]) BOOST_TEST(settled_boxes[i].hi[a] == settled_model[i].hi[a]);
+    }
+  }
+  // The cube turned by q = (3, 0, 0, 4) reaches 31/25 = (7 + 24)/25 along
+  // x and y (|R| rows: 7/25, 24/25), then moved 5 along x.
+  check_box(boxes.primitives.back().box, {Q(5) - Q(31, 25), Q(-31, 25), Q(-1)}, {Q(5) + Q(31, 25), Q(31, 25), Q(1)});
 }
 
 // The reader makes a rotation's matrix once (Solid::constructed), and the
