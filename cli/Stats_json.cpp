@@ -85,6 +85,7 @@ json stats_json(const Check_stats& s)
           {"earliest_by_intervals", s.earliest_by_intervals},
           {"apart_proofs", s.apart_proofs},
           {"apart_attempts", s.apart_attempts},
+          {"apart_spans", s.apart_spans},
           {"replay_stages_adopted", s.replay_stages_adopted},
           {"earliest_lines_rerun", s.earliest_lines_rerun},
           {"convex_rational", s.convex_rational},

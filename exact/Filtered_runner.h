@@ -233,24 +233,31 @@ private:
   // proven, that is the pair's "no collision", as its certificate proves
   // it. Not: a term the double simplex's guess does not close off (it may
   // have a point; asking again would meet it again), or past step_limit.
+  // Not proven: apart_until, the end of the leading sub-spans it did prove
+  // apart (Apart_pieces::proven_until; tL when none), which hold nothing.
   enum class Apart { proven, not_proven, out_of_steps };
-  Apart proves_apart(int a, int b, bool closed, std::uint64_t step_limit)
+  Apart proves_apart(int a, int b, bool closed, std::uint64_t step_limit, Rational& apart_until)
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     need_model(a);
     need_model(b);
+    Apart_pieces<EK> pieces(emodel_, closed ? Semantics::closed : Semantics::regularised, step_limit, Lp_effort::quick);
+    Apart verdict = Apart::proven;
     try {
-      Apart_pieces<EK>(emodel_, closed ? Semantics::closed : Semantics::regularised, step_limit, Lp_effort::quick)
-          .prove(a, b, ek_.to_rational(emodel_.t_hi), false);
+      pieces.prove(a, b, ek_.to_rational(emodel_.t_hi), false);
     } catch (const Term_feasible&) {
-      ++apart_attempts_;
-      return Apart::not_proven;
+      verdict = Apart::not_proven;
     } catch (const Term_limit&) {
-      ++apart_attempts_;
-      return Apart::out_of_steps;
+      verdict = Apart::out_of_steps;
     }
-    ++apart_proofs_;
-    return Apart::proven;
+    ++(verdict == Apart::proven ? apart_proofs_ : apart_attempts_);
+    apart_until = pieces.proven_until();
+    return verdict;
+  }
+  // Whether sub-span s of pair (a, b) ends by `until` (need_motion).
+  bool span_ends_by(int a, int b, std::size_t s, const Rational& until) const
+  {
+    return !ek_.less(ek_.from_rational(until), emodel_.sub_spans({a, b}).at(s).hi);
   }
 
   // Earliest mode, when the intervals made t* but not the witness: the

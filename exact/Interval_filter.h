@@ -120,7 +120,12 @@ public:
     ++stats_->exact_ties;
     return e.can_improve(runner_->ek_, exact_convex(stage.a(), stage.b(), stage.span_index()).vertex(*B)[3]);
   }
-  bool skips_span(std::size_t) const { return false; }
+  bool skips_span(std::size_t index)
+  {
+    bool apart = apart_until_ && runner_->span_ends_by(a_, b_, index, *apart_until_);
+    stats_->apart_spans += apart;
+    return apart;
+  }
   template <class Decide>
   auto convex_stage(Decide decide)
   {
@@ -267,6 +272,7 @@ public:
   void search_span(int a, int b, std::size_t index, const std::array<bool, 3>& frame_of_a)
   {
     a_ = a, b_ = b, span_ = index, frame_ = frame_of_a;
+    span_apart_ = false;
     lines_.reset();   // a new search: its conquers count from zero again
     keyed_ = false;
     keys_.clear();
@@ -305,7 +311,7 @@ public:
 
   // The leaf was kept: the path may now differ from the rational run's.
   void uncertain_simplification() { trail_->approximate = true; }
-  bool takes_child(std::size_t, int) const { return true; }
+  bool takes_child(std::size_t, int) const { return !span_apart_; }
   // Earliest mode: a region whose lower time ties with t* (a sub-span end
   // off the grid, where the objects are already in contact) is compared
   // exactly, on the rational run's region (exact/Region_faces.h) and t*.
@@ -398,15 +404,25 @@ public:
   // bounded share of the search; a term left open would be met again, so
   // then it never asks again.
   void never_hand_over() { apart_after_ = std::numeric_limits<std::size_t>::max(); }
+  // A proof that stops at a later sub-span (a term with a point there, or
+  // its step bound) still proves the sub-spans before it apart: the
+  // search of this one stops (takes_child, decides_here: nothing is
+  // there, as the rational run would find), and later ones it covers are
+  // skipped (skips_span).
   bool decides_here(std::size_t, bool conquers)
   {
+    if (span_apart_) return false;
     if (!conquers || found_any_ || stats_->lines < apart_after_) return true;
-    switch (runner_->proves_apart(a_, b_, closed_, apart_steps_)) {
+    Rational until;
+    switch (runner_->proves_apart(a_, b_, closed_, apart_steps_, until)) {
     case Runner::Apart::proven: throw Proven_apart();
     case Runner::Apart::out_of_steps: apart_after_ *= 16, apart_steps_ *= 16; break;
     case Runner::Apart::not_proven: apart_after_ = std::numeric_limits<std::size_t>::max(); break;
     }
-    return true;
+    apart_until_ = until;
+    span_apart_ = runner_->span_ends_by(a_, b_, span_, until);
+    stats_->apart_spans += span_apart_;
+    return !span_apart_;
   }
   template <class FT>
   void found_at(const std::vector<int>& path, bool on_line, const Box<FT, 4>& region, const Pair_formula& f)
@@ -569,6 +585,8 @@ private:
   std::size_t apart_after_ = 512;
   std::uint64_t apart_steps_ = 32768;
   bool found_any_ = false;   // a point inside was found: the pair is not apart
+  std::optional<Rational> apart_until_;   // the pair proven apart on [tL, this] (decides_here)
+  bool span_apart_ = false;               // the sub-span searched now is in it
   std::array<bool, 3> frame_{};
   std::shared_ptr<typename Exact_span<Runner>::Lines> lines_;   // this conquer's, once one is needed
   std::size_t lines_conquer_ = 0;                               // which conquer they are for

@@ -50,10 +50,18 @@ public:
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
     std::vector<Apart_piece> pieces;
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
+    proven_until_ = cuts.front();
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
       pieces.push_back(piece(a, b, cuts[i], cuts[i + 1], strict_end && i + 2 == cuts.size()));
+      proven_until_ = cuts[i + 1];
+    }
     return pieces;
   }
+
+  // The end of the leading pieces closed off so far: when prove throws,
+  // the pair is still proven apart on [tL, proven_until()] (each piece's
+  // proof stands alone), a prefix of its sub-spans.
+  const Rational& proven_until() const { return proven_until_; }
 
   std::uint64_t steps() const { return steps_; }
   std::size_t conflicts() const { return conflicts_; }
@@ -64,6 +72,7 @@ private:
   std::uint64_t limit_, steps_ = 0;
   Lp_effort effort_;
   std::size_t conflicts_ = 0;
+  Rational proven_until_;
 
   Apart_piece piece(int a, int b, const Rational& lo, const Rational& hi, bool strict_end)
   {

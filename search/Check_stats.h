@@ -82,6 +82,8 @@ struct Check_stats {
   // that close off every term (search/Apart_pieces.h) and proven apart;
   // apart_attempts: such hand-overs that did not prove it (a term has a
   // point, or the step bound), the search going on;
+  // apart_spans: sub-spans such an attempt still proved apart (those
+  // before the term with a point), whose search it stopped or skipped;
   // replay_stages_adopted: sub-span region stages a rational replay took
   // from the interval run (made there in rationals, or in intervals with
   // every number exact) instead of making them again;
@@ -90,7 +92,7 @@ struct Check_stats {
   // them in rationals alone (search/Convex_pair.h).
   std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_witness_replays = 0, exact_regions = 0,
               exact_lines = 0, exact_plane_tests = 0, exact_region_stages = 0, witnesses_by_intervals = 0,
-              earliest_by_intervals = 0, apart_proofs = 0, apart_attempts = 0,
+              earliest_by_intervals = 0, apart_proofs = 0, apart_attempts = 0, apart_spans = 0,
               replay_stages_adopted = 0, earliest_lines_rerun = 0, exact_ties = 0,
               exact_cut_orders = 0, exact_zeros = 0, convex_rational = 0;
   // Time per stage, seconds
@@ -115,6 +117,7 @@ struct Check_stats {
     exact_ties += o.exact_ties;
     exact_cut_orders += o.exact_cut_orders;
     exact_zeros += o.exact_zeros;
+    apart_spans += o.apart_spans;
     seconds_sbounds += o.seconds_sbounds; seconds_divide += o.seconds_divide; seconds_witness += o.seconds_witness;
   }
 

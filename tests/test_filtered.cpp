@@ -811,6 +811,27 @@ BOOST_AUTO_TEST_CASE(long_searches_are_handed_over_to_apart_proofs)
   }
 }
 
+// A hand-over whose proof stops at a term with a point (the collision, in
+// a later sub-span) still proves the sub-spans before it apart: their
+// search stops there. The skewed late stop collides first at t* = 25/4
+// (fixtures/paper/expected.json, hand-derived), after its first sub-span
+// [0, 6 + 1e-9], whose long search of sliding contacts is cut short; the
+// answer is the rational run's and the search's without the hand-over.
+BOOST_AUTO_TEST_CASE(sub_spans_before_a_collision_are_proven_apart)
+{
+  Scene scene =
+      read_scene_file(std::string(CLASH4D_FIXTURES) + "/paper/section6_weaving_vehicle_skewed_late_stop_1e-9.json");
+  Check_options o;
+  Check_answer a = same_answers(scene, o, "skewed late stop");
+  BOOST_TEST(a.collide);
+  BOOST_TEST((a.stats.apart_proofs == 0u && a.stats.apart_attempts == 1u && a.stats.apart_spans == 1u));
+  o.apart_proofs = false;
+  Check_answer searched = check_exact(scene, o);
+  BOOST_TEST(describe(searched) == describe(a));
+  BOOST_TEST(searched.stats.apart_spans == 0u);
+  BOOST_TEST(searched.stats.lines > a.stats.lines);
+}
+
 // Earliest mode in general position (issue 16): each improvement of t* in
 // intervals leaves the other lines of the conquer through the same point
 // tying with t*, which intervals cannot certify. Where those lines end at
