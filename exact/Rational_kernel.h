@@ -18,6 +18,9 @@ public:
   static constexpr bool reads_exact_constructions = true;   // the same numbers, not computed again (model/Model_builder.h)
   static constexpr bool is_exact = true;
   CGAL::Sign sign(const FT& x) const { return CGAL::sign(x); }
+  // The sign of a - b by cross-multiplication (mpq_cmp), without making
+  // a - b in lowest terms (an allocation and a gcd).
+  CGAL::Sign compare(const FT& a, const FT& b) const { return CGAL::compare(a, b); }
   FT from_rational(const Rational& q) const { return q; }
   Rational to_rational(const FT& x) const { return x; }
   FT floor_to_grid(const FT& x, int bits) const { return clash4d::floor_to_grid(x, bits); }

@@ -37,9 +37,9 @@ public:
   FT grid_point(const FT& x) const { return round_to_grid(x, grid_bits); }
   bool same_on_grid(const FT& a, const FT& b) const
   {
-    return Number_ops<FT>::same(a, b) || compare(grid_point(a), grid_point(b)) == CGAL::ZERO;
+    return Number_ops<FT>::same(a, b) || derived().compare(grid_point(a), grid_point(b)) == CGAL::ZERO;
   }
-  bool less_on_grid(const FT& a, const FT& b) const { return less(grid_point(a), grid_point(b)); }
+  bool less_on_grid(const FT& a, const FT& b) const { return derived().less(grid_point(a), grid_point(b)); }
 
   // The index of a largest |v_q|, for a choice any answer is right for (the
   // coordinate a base point is solved on); an approximate kernel may pick
@@ -49,7 +49,7 @@ public:
   {
     int k = 0;
     for (int q = 1; q < static_cast<int>(N); ++q)
-      if (less(Number_ops<FT>::magnitude(v[k]), Number_ops<FT>::magnitude(v[q]))) k = q;
+      if (derived().less(Number_ops<FT>::magnitude(v[k]), Number_ops<FT>::magnitude(v[q]))) k = q;
     return k;
   }
 
@@ -85,8 +85,10 @@ public:
   // skip the cases of a general division).
   FT quotient(const FT& a, const FT& b, CGAL::Sign) const { return a / b; }
 
+  // The sign of a - b (a kernel may refine it: the rational kernel
+  // compares without making a - b).
   CGAL::Sign compare(const FT& a, const FT& b) const { return derived().sign(a - b); }
-  bool less(const FT& a, const FT& b) const { return compare(a, b) == CGAL::NEGATIVE; }
+  bool less(const FT& a, const FT& b) const { return derived().compare(a, b) == CGAL::NEGATIVE; }
 
   // Sign of n.p + c: which side of a hyperplane a point lies on.
   template <std::size_t N>

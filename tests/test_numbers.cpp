@@ -218,3 +218,27 @@ BOOST_AUTO_TEST_CASE(sum_of_products_is_the_exact_dot_product)
     BOOST_TEST((g == 1 && mpz_sgn(mpq_denref(got.mpq())) > 0), i);
   }
 }
+
+// The rational kernel's compare (mpq_cmp, without making a - b) is the sign
+// of a - b: hand-worked cases (equal values in different spellings, signs,
+// near denominators) and seeded random pairs, against the subtraction.
+BOOST_AUTO_TEST_CASE(rational_compare_is_the_sign_of_the_difference)
+{
+  Rational_kernel k;
+  BOOST_TEST(k.compare(q("2/4"), q("1/2")) == CGAL::ZERO);
+  BOOST_TEST(k.compare(q("-1/3"), q("-1/4")) == CGAL::NEGATIVE);
+  BOOST_TEST(k.compare(q("1000001/1000000"), q("1000000/999999")) == CGAL::NEGATIVE);
+  BOOST_TEST(k.compare(q("0"), q("-1/1000000000000000000000")) == CGAL::POSITIVE);
+  BOOST_TEST((k.less(q("7/25"), q("24/25")) && !k.less(q("24/25"), q("24/25"))));
+  std::uint64_t seed = 20261128;
+  BOOST_TEST_MESSAGE("rational compare: seed " << seed);
+  std::mt19937_64 rng(seed);
+  auto random_rational = [&] {
+    Rational x(static_cast<long>(rng() % 2001) - 1000);
+    return x / Rational(static_cast<long>(1 + rng() % 12));
+  };
+  for (int i = 0; i < 5000; ++i) {
+    Rational a = random_rational(), b = i % 3 == 0 ? a * Rational(static_cast<long>(1 + rng() % 3)) : random_rational();
+    BOOST_TEST(k.compare(a, b) == CGAL::sign(a - b), i << ": " << to_string(a) << " against " << to_string(b));
+  }
+}
