@@ -183,11 +183,16 @@ private:
 
   // A primitive with its box only (primitive_box, build_boxes): its
   // vertices' box moved by T (a translation moves the box itself: min and
-  // max commute with adding b), or a half-space's moved plane's.
+  // max commute with adding b), or a half-space's moved plane's. A block's
+  // corners are its box's: block_box.
   Primitive<FT> boxed(const Solid& s, const Affine3<FT>& T) const
   {
     Primitive<FT> p;
     p.path = s.path;
+    if (s.kind == Solid::Kind::Block && !T.linear_identity) {
+      p.box = block_box(vec3(s, 0), vec3(s, 3), T);
+      return p;
+    }
     local_geometry(s, p, false);
     if (p.vertices.empty()) {
       place(p, T);
@@ -277,6 +282,25 @@ private:
       default:
         break;
     }
+  }
+
+  // The box of [lo, hi] under x -> R x + b, without its eight corners:
+  // coordinate i is linear over the box, least at the corner taking lo_j
+  // where R_ij > 0 and hi_j where R_ij < 0 (greatest the other way), so
+  // its range is [sum_j R_ij (lo_j or hi_j) + b_i, ...], exactly.
+  Box<FT, 3> block_box(const Vector3<FT>& lo, const Vector3<FT>& hi, const Affine3<FT>& T) const
+  {
+    Box<FT, 3> b;
+    for (int i = 0; i < 3; ++i) {
+      Vector3<FT> least, most;
+      for (int j = 0; j < 3; ++j) {
+        bool positive = k_.sign(T.R[i][j]) == CGAL::POSITIVE;
+        least[j] = positive ? lo[j] : hi[j];
+        most[j] = positive ? hi[j] : lo[j];
+      }
+      b.set(i, dot(T.R[i], least) + T.b[i], dot(T.R[i], most) + T.b[i]);
+    }
+    return b;
   }
 
   Box<FT, 3> vertex_box(const std::vector<Vector3<FT>>& vs) const
