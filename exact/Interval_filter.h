@@ -325,9 +325,7 @@ public:
     }
     std::optional<Box<EFT, 4>> exact = exact_region(span_, region);
     if (!exact) throw CGAL::Uncertain_conversion_exception("a region's time the intervals only enclose");
-    if (stale_) make_exact();
-    if (goal.found && !t_star_) throw CGAL::Uncertain_conversion_exception("t* not yet exact");
-    return rational_goal(goal.found).can_improve(runner_->ek_, exact->lo[3]);
+    return rational_goal_of(goal).can_improve(runner_->ek_, exact->lo[3]);
   }
   // Earliest mode: a point of a line (an edge's end, a segment's earliest
   // end) whose time the intervals cannot tell from t*: a tie, the vertex at
@@ -347,8 +345,7 @@ public:
     }
     std::size_t p = fourth();
     if (p == npos) throw CGAL::Uncertain_conversion_exception("a tie at an unknown vertex");
-    if (stale_) make_exact();
-    if (goal.found && !t_star_) throw CGAL::Uncertain_conversion_exception("t* not yet exact");
+    Search_goal<EFT> exact_goal = rational_goal_of(goal);
     typename Exact_span<Runner>::Lines& lines = conquer_lines(g);
     if (!lines.exact()) throw CGAL::Uncertain_conversion_exception("a tie on a widened region");
     const auto& e = lines.conquer();
@@ -357,7 +354,7 @@ public:
     CGAL::Sign den = runner_->ek_.sign(time[1]);
     if (den == CGAL::ZERO) throw CGAL::Uncertain_conversion_exception("a tie where the planes meet in no point");
     ++stats_->exact_ties;
-    return rational_goal(goal.found).can_improve(runner_->ek_, runner_->ek_.quotient(time[0], time[1], den));
+    return exact_goal.can_improve(runner_->ek_, runner_->ek_.quotient(time[0], time[1], den));
   }
   // Two cuts of a line the intervals cannot order (several planes through
   // one point the intervals only enclose: the contact vertex, a decimal
@@ -629,8 +626,6 @@ private:
     return std::isfinite(lo) && std::isfinite(hi) && std::floor(hi) >= std::ceil(lo);
   }
 
-  // The earliest-mode goal in rationals: the pair's semantics and ceiling,
-  // and, when found, the exact t* (t_star_, in step).
   // The rational run's goal where the interval run's is `goal`: its t*
   // exact (a convex pair's: its programs' vertex, always one in earliest
   // mode, made in rationals; a search's: t_star_, as can_enter has it).
@@ -649,6 +644,8 @@ private:
     if (goal.found && !t_star_) throw CGAL::Uncertain_conversion_exception("t* not yet exact");
     return rational_goal(goal.found);
   }
+  // The earliest-mode goal in rationals: the pair's semantics and ceiling,
+  // and, when found, the exact t* (t_star_, in step).
   Search_goal<EFT> rational_goal(bool found) const
   {
     Search_goal<EFT> e;
