@@ -311,6 +311,20 @@ BOOST_AUTO_TEST_CASE(convex_vertex_ties_with_t_star_stay_in_intervals)
   BOOST_TEST(!same_answers(both, o, "convex vertex tie").collide);
 }
 
+// A pair the interval run stops on, run again in rationals whole: case 470
+// of the default campaign (a sliding contact in closed semantics, through
+// the paper's cascade), its answer the rational run's.
+BOOST_AUTO_TEST_CASE(whole_rational_rerun_matches)
+{
+  Fuzz_case c = make_fuzz_case(20261122ull, 470);
+  Scene scene = read_scene(read_json_text(c.json));
+  Check_options o;
+  o.semantics = Semantics::closed;
+  o.convex_lp = false;
+  Check_answer a = same_answers(scene, o, "case 470 (" + c.family + "): " + c.json);
+  BOOST_TEST(a.stats.exact_fallbacks > 0u, "case 470 is no longer run again whole: pick another");
+}
+
 BOOST_AUTO_TEST_CASE(contact_families_match_rational)
 {
   std::uint64_t seed = env_number("CLASH4D_SEED", 20261122ull), cases = env_number("CLASH4D_FILTER_CASES", 1000);
@@ -351,7 +365,10 @@ BOOST_AUTO_TEST_CASE(contact_families_match_rational)
   // exercised, and is what keeps most such pairs from a whole rational run.
   BOOST_TEST(stages > cases / 10);
   BOOST_TEST(whole < stages);
-  BOOST_TEST(whole > 0u);   // the whole rational rerun is held to rationals too
+  // The whole rational rerun is held to rationals too: about 4 in 1000
+  // cases now reach it, so only the full campaign asks for one here (the
+  // sanitizer run's 100 do not); whole_rational_rerun_matches pins one.
+  if (cases >= 1000) BOOST_TEST(whole > 0u);
   // A convex pair's ties with t* are decided exactly where they arise; its
   // programs in rationals whole (convex_rational) remain only as the
   // fallback for a sign outside them, which these families no longer reach.
