@@ -7,8 +7,10 @@
 #include "check/Collision_checker.h"
 #include "check/Pair_skeleton.h"
 #include "check/Pair_sweep.h"
+#include "numbers/Number_ops.h"
 #include <atomic>
 #include <mutex>
+#include <stdexcept>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
@@ -24,14 +26,25 @@ Pair_answer pair_answer(const K& k, const Scene_model<K>& model, const Pair_resu
   for (int i = 0; i < 4; ++i) p.witness[i] = k.to_text(r.witness[i]);
   p.witness_verified = r.witness_verified;
   p.earliest = r.earliest;
+  bool closed = r.semantics == Semantics::closed;
+  if ((closed && r.witness_cells.size() != 2) || (r.earliest && r.contact_cells.size() != 2))
+    throw std::logic_error("internal error: a colliding pair without the generic points of its cells");
+  // x's text, or `made`, the text of `like` when x is the same number: the
+  // contact and the cells often repeat the witness (closed, earliest), and
+  // GMP's text is much of a small pair's answer.
+  auto text = [&](const typename K::FT& x, const typename K::FT& like, const std::string& made) {
+    return Number_ops<typename K::FT>::same(x, like) ? made : k.to_text(x);
+  };
   for (int c = 0; c < 2; ++c)
     for (int i = 0; i < 4; ++i) {
-      if (r.semantics == Semantics::closed) p.witness_cells[c][i] = k.to_text(r.witness_cells[c][i]);
-      if (r.earliest) p.contact_cells[c][i] = k.to_text(r.contact_cells[c][i]);
+      if (closed) p.witness_cells[c][i] = text(r.witness_cells[c][i], r.witness[i], p.witness[i]);
+      if (r.earliest)
+        p.contact_cells[c][i] = closed ? text(r.contact_cells[c][i], r.witness_cells[c][i], p.witness_cells[c][i])
+                                       : text(r.contact_cells[c][i], r.witness[i], p.witness[i]);
     }
   if (r.earliest) {
-    p.t_star = k.to_text(r.t_star);
-    for (int i = 0; i < 4; ++i) p.contact[i] = k.to_text(r.contact[i]);
+    for (int i = 0; i < 4; ++i) p.contact[i] = text(r.contact[i], r.witness[i], p.witness[i]);
+    p.t_star = text(r.t_star, r.contact[3], p.contact[3]);
     p.at_start = k.compare(r.t_star, model.t_lo) == CGAL::ZERO;
   }
   return p;
@@ -99,10 +112,17 @@ void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::p
   // In a context of its own: a caller's cancellation (another case of a
   // fuzz batch throwing) would otherwise end this loop early and silently,
   // leaving pairs unchecked, a "no collision" nobody decided.
-  tbb::task_group_context own(tbb::task_group_context::isolated);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i) check_one(i);
-  }, own);
+  // One pair (the common query) is checked here: no tasks to share.
+  if (pairs.size() == 1) {
+    check_one(0);
+  } else {
+    tbb::task_group_context own(tbb::task_group_context::isolated);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 1),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t i = r.begin(); i != r.end(); ++i) check_one(i);
+                      },
+                      own);
+  }
 
   bool merged = false;
   FT merged_best{};

@@ -15,6 +15,7 @@
 #include "search/No_filter.h"
 #include <chrono>
 #include <optional>
+#include <vector>
 
 namespace clash4d {
 
@@ -32,9 +33,11 @@ struct Pair_result {
   // closed, generic points inside a and inside b whose cells' closures hold
   // the witness; earliest, the same for the contact point (regularised: one
   // point inside both, twice).
+  // Each empty until set, then one point per object: a pair that needs none
+  // (regularised, not earliest; no collision) makes no numbers for them.
   Semantics semantics = Semantics::regularised;
-  std::array<Vector4<FT>, 2> witness_cells{};
-  std::array<Vector4<FT>, 2> contact_cells{};
+  std::vector<Vector4<FT>> witness_cells;
+  std::vector<Vector4<FT>> contact_cells;
 };
 
 // K: the kernel; Policy: search/No_filter.h (a filtered run's is in exact/).

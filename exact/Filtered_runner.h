@@ -339,6 +339,8 @@ private:
       throw std::logic_error("internal error: an interval witness is not a point");
     }
     if (closed) {
+      if (found.witness_cells.size() != 2) return std::nullopt;
+      r.witness_cells.resize(2);
       for (int i = 0; i < 2; ++i)
         if (!to_exact(found.witness_cells[i], r.witness_cells[i])) return std::nullopt;
       r.contact_cells = r.witness_cells;
@@ -350,6 +352,8 @@ private:
     // exact/Interval_filter.h).
     if (found.earliest) {
       if (!to_exact(found.t_star, r.t_star) || !to_exact(found.contact, r.contact)) return std::nullopt;
+      if (found.contact_cells.size() != 2) return std::nullopt;
+      r.contact_cells.resize(2);
       for (int i = 0; i < 2; ++i)
         if (!to_exact(found.contact_cells[i], r.contact_cells[i])) return std::nullopt;
       r.earliest = true;
