@@ -36,6 +36,18 @@ public:
     scale_to_coprime_integers(x, 5);
     return {{x[0], x[1], x[2], x[3]}, x[4]};
   }
+  // The same solution as Kernel_base's elimination, fraction-free
+  // (numbers/Rational.h): a gcd per coordinate instead of per operation.
+  template <std::size_t N>
+  std::array<FT, N> solve_regular(const std::array<std::array<FT, N + 1>, N>& M) const
+  {
+    std::array<FT, N * (N + 1)> m;
+    for (std::size_t i = 0; i < N; ++i)
+      for (std::size_t j = 0; j <= N; ++j) m[i * (N + 1) + j] = M[i][j];
+    std::array<FT, N> x;
+    clash4d::solve_regular(m.data(), N, x.data());
+    return x;
+  }
   // The same integers as GMP's, whose products need no gcd (the ring of
   // division-free elimination, search/Convex_pair.h).
   using RT = mpz_class;

@@ -116,6 +116,31 @@ public:
   // The same in the ring RT, for division-free elimination.
   Hyperplane4<RT> in_ring(const Hyperplane4<FT>& h) const { return derived().in_lowest_terms(h); }
 
+  // The solution of the N x N system [M | rhs] whose matrix is known
+  // regular, by elimination with the largest pivot the kernel sees (any
+  // pivot gives the same exact solution; the largest keeps an approximate
+  // kernel's error small). The rational kernel refines it (fraction-free).
+  template <std::size_t N>
+  std::array<FT, N> solve_regular(std::array<std::array<FT, N + 1>, N> M) const
+  {
+    for (std::size_t c = 0; c < N; ++c) {
+      std::array<FT, N> column;
+      for (std::size_t r = 0; r < N; ++r) column[r] = r < c ? FT(0) : M[r][c];
+      std::swap(M[c], M[static_cast<std::size_t>(derived().largest_component(column))]);
+      for (std::size_t r = c + 1; r < N; ++r) {
+        FT f = M[r][c] / M[c][c];
+        for (std::size_t cc = c + 1; cc <= N; ++cc) M[r][cc] -= f * M[c][cc];
+      }
+    }
+    std::array<FT, N> x;
+    for (std::size_t r = N; r-- > 0;) {
+      FT s = M[r][N];
+      for (std::size_t cc = r + 1; cc < N; ++cc) s -= M[r][cc] * x[cc];
+      x[r] = s / M[r][r];
+    }
+    return x;
+  }
+
   // Zero vector test, as a predicate so tolerances apply consistently.
   template <std::size_t N>
   bool is_zero(const std::array<FT, N>& v) const

@@ -1,6 +1,8 @@
 #include "numbers/Rational.h"
 
 #include <mpfr.h>
+#include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace clash4d {
@@ -60,6 +62,50 @@ void scale_to_coprime_integers(Rational* x, std::size_t n)
   coprime_integers(x, n, z.data());
   // New numbers, not writes through mpq(): Gmpq shares its representation.
   for (std::size_t i = 0; i < n; ++i) x[i] = Rational(CGAL::Gmpz(z[i].get_mpz_t()));
+}
+
+// Bareiss: after step k, row i > k holds (a_kk a_ij - a_ik a_kj) / p, p the
+// previous pivot, an exact division (each entry is a minor of the scaled
+// matrix); the rows stay combinations of the system's, so the triangle has
+// the same solution, and its last pivot D is the determinant up to sign.
+// By Cramer, y_i = D x_i is an integer, found from the bottom up as
+// (D c_i - sum_j>i u_ij y_j) / u_ii, again exact.
+void solve_regular(const Rational* m, std::size_t n, Rational* x)
+{
+  const std::size_t w = n + 1;
+  std::vector<mpz_class> a(n * w);
+  for (std::size_t i = 0; i < n; ++i) coprime_integers(m + i * w, w, a.data() + i * w);
+  auto at = [&](std::size_t i, std::size_t j) -> mpz_class& { return a[i * w + j]; };
+  mpz_class previous = 1;
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t p = k;
+    while (p < n && sgn(at(p, k)) == 0) ++p;
+    if (p == n) throw std::logic_error("internal error: solve_regular on a singular system");
+    if (p != k)
+      for (std::size_t j = k; j < w; ++j) std::swap(at(p, j), at(k, j));
+    for (std::size_t i = k + 1; i < n; ++i) {
+      for (std::size_t j = k + 1; j < w; ++j) {
+        at(i, j) = at(k, k) * at(i, j) - at(i, k) * at(k, j);
+        mpz_divexact(at(i, j).get_mpz_t(), at(i, j).get_mpz_t(), previous.get_mpz_t());
+      }
+      at(i, k) = 0;
+    }
+    previous = at(k, k);
+  }
+  const mpz_class& d = at(n - 1, n - 1);
+  std::vector<mpz_class> y(n);
+  for (std::size_t i = n; i-- > 0;) {
+    mpz_class s = d * at(i, n);
+    for (std::size_t j = i + 1; j < n; ++j) s -= at(i, j) * y[j];
+    mpz_divexact(y[i].get_mpz_t(), s.get_mpz_t(), at(i, i).get_mpz_t());
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    Rational q;   // a new number, so writing through mpq() touches no other
+    mpz_set(mpq_numref(q.mpq()), y[i].get_mpz_t());
+    mpz_set(mpq_denref(q.mpq()), d.get_mpz_t());
+    mpq_canonicalize(q.mpq());
+    x[i] = q;
+  }
 }
 
 namespace {

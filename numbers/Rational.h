@@ -69,6 +69,14 @@ void scale_to_coprime_integers(Rational* x, std::size_t n);
 // ring, Rational_kernel::RT).
 void coprime_integers(const Rational* x, std::size_t n, mpz_class* out);
 
+// The solution x[0..n) of the regular n x n system whose augmented rows
+// [M | rhs] are m[i * (n + 1) .. (i + 1) * (n + 1)), in lowest terms:
+// Bareiss's fraction-free elimination on the rows scaled to coprime
+// integers (the same solution), with one division by the determinant per
+// coordinate at the end, where rational elimination takes a gcd per
+// operation. Throws std::logic_error when the matrix is singular.
+void solve_regular(const Rational* m, std::size_t n, Rational* x);
+
 // sum a[i] b[i], exactly. mpq_mul and mpq_add take gcds to keep each
 // partial result in lowest terms, most of a rational dot product's cost;
 // here the products and sums are kept as unreduced fractions of GMP

@@ -252,7 +252,7 @@ public:
       const H& h = row(static_cast<std::size_t>(C[i]));
       M[i] = {h.n[0], h.n[1], h.n[2], h.n[3], FT(scale_of(guide_rows_[static_cast<std::size_t>(C[i])])), -h.c};
     }
-    std::array<FT, 5> x = solve(M);
+    std::array<FT, 5> x = k_.solve_regular(M);
     centre_ = {x[0], x[1], x[2], x[3]};
     centre_rows_ = C;
     return centre_;
@@ -267,7 +267,7 @@ public:
       const H& h = row(static_cast<std::size_t>(B[i]));
       M[i] = {h.n[0], h.n[1], h.n[2], h.n[3], -h.c};
     }
-    vertex_ = solve(M);
+    vertex_ = k_.solve_regular(M);
     vertex_basis_ = B;
     return vertex_;
   }
@@ -521,30 +521,6 @@ private:
     for (int i = 0; i < 4; ++i)
       N[i] = i == with_time ? V4{FT(0), FT(0), FT(0), FT(1)} : row(static_cast<std::size_t>(B[i])).n;
     return determinant4(N[0], N[1], N[2], N[3]);
-  }
-
-  // The solution of an N x N system [M | rhs] whose matrix is known regular
-  // (vertex_exists, centre_exists), by elimination with the kernel's
-  // largest pivot (any pivot gives the same exact solution).
-  template <std::size_t N>
-  std::array<FT, N> solve(std::array<std::array<FT, N + 1>, N> M) const
-  {
-    for (std::size_t c = 0; c < N; ++c) {
-      std::array<FT, N> column;
-      for (std::size_t r = 0; r < N; ++r) column[r] = r < c ? FT(0) : M[r][c];
-      std::swap(M[c], M[static_cast<std::size_t>(k_.largest_component(column))]);
-      for (std::size_t r = c + 1; r < N; ++r) {
-        FT f = M[r][c] / M[c][c];
-        for (std::size_t cc = c + 1; cc <= N; ++cc) M[r][cc] -= f * M[c][cc];
-      }
-    }
-    std::array<FT, N> x;
-    for (std::size_t r = N; r-- > 0;) {
-      FT s = M[r][N];
-      for (std::size_t cc = r + 1; cc < N; ++cc) s -= M[r][cc] * x[cc];
-      x[r] = s / M[r][r];
-    }
-    return x;
   }
 
   // det of C's equal-margin system (centre_exists).
