@@ -23,14 +23,19 @@ struct Affine3 {
   // are exact); in rationals they cost a normalised product each.
   bool linear_identity = false;
 
+  // A copy of one made once: in rationals a copy shares its numbers, where
+  // making them is an allocation each (every primitive starts from it).
   static Affine3 identity()
   {
-    Affine3 a;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) a.R[i][j] = FT(i == j ? 1 : 0);
-    a.b = {FT(0), FT(0), FT(0)};
-    a.is_identity = a.linear_identity = true;
-    return a;
+    static const Affine3 one = [] {
+      Affine3 a;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) a.R[i][j] = FT(i == j ? 1 : 0);
+      a.b = {FT(0), FT(0), FT(0)};
+      a.is_identity = a.linear_identity = true;
+      return a;
+    }();
+    return one;
   }
   Vector3<FT> linear(const Vector3<FT>& v) const
   {
