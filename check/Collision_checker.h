@@ -33,8 +33,8 @@ struct Pair_result {
   // closed, generic points inside a and inside b whose cells' closures hold
   // the witness; earliest, the same for the contact point (regularised: one
   // point inside both, twice).
-  // Each empty until set, then one point per object: a pair that needs none
-  // (regularised, not earliest; no collision) makes no numbers for them.
+  // Each empty until set, then one point per object: a pair that needs
+  // none (regularised, not earliest; no collision) makes no numbers.
   Semantics semantics = Semantics::regularised;
   std::vector<Vector4<FT>> witness_cells;
   std::vector<Vector4<FT>> contact_cells;
