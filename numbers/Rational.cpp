@@ -45,12 +45,17 @@ bool is_exact_dyadic(const Rational& q, int bits)
 
 void coprime_integers(const Rational* x, std::size_t n, mpz_class* out)
 {
+  // A gcd only where it can change the result: a denominator the lcm
+  // already holds (1, or one shared with an earlier number, as a plane's
+  // often is) leaves it, and once the gcd is 1 it stays 1.
   mpz_class lcm = 1, gcd = 0;
-  for (std::size_t i = 0; i < n; ++i) mpz_lcm(lcm.get_mpz_t(), lcm.get_mpz_t(), mpq_denref(x[i].mpq()));
+  for (std::size_t i = 0; i < n; ++i)
+    if (!mpz_divisible_p(lcm.get_mpz_t(), mpq_denref(x[i].mpq())))
+      mpz_lcm(lcm.get_mpz_t(), lcm.get_mpz_t(), mpq_denref(x[i].mpq()));
   for (std::size_t i = 0; i < n; ++i) {
     mpz_divexact(out[i].get_mpz_t(), lcm.get_mpz_t(), mpq_denref(x[i].mpq()));
     mpz_mul(out[i].get_mpz_t(), out[i].get_mpz_t(), mpq_numref(x[i].mpq()));
-    mpz_gcd(gcd.get_mpz_t(), gcd.get_mpz_t(), out[i].get_mpz_t());
+    if (gcd != 1) mpz_gcd(gcd.get_mpz_t(), gcd.get_mpz_t(), out[i].get_mpz_t());
   }
   if (sgn(gcd) == 0 || gcd == 1) return;
   for (std::size_t i = 0; i < n; ++i) mpz_divexact(out[i].get_mpz_t(), out[i].get_mpz_t(), gcd.get_mpz_t());

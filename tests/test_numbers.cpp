@@ -7,6 +7,7 @@
 #include "scene/Number_text.h"
 #include <CGAL/FPU.h>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -292,4 +293,49 @@ BOOST_AUTO_TEST_CASE(fraction_free_solve_is_the_systems_solution)
     BOOST_TEST((x == elimination.solve_regular(M)), "system " << i);
   }
   BOOST_TEST(solved > 1000);   // the random systems are mostly regular
+}
+
+// coprime_integers (the rational kernel's ring and lowest terms): one
+// positive factor makes the numbers coprime integers; hand-worked cases,
+// then seeded random ones held to that definition.
+BOOST_AUTO_TEST_CASE(coprime_integers_are_one_positive_multiple)
+{
+  auto coprime = [](std::vector<Rational> x) {
+    std::vector<mpz_class> out(x.size());
+    coprime_integers(x.data(), x.size(), out.data());
+    std::vector<long> v;
+    for (const auto& z : out) v.push_back(z.get_si());
+    return v;
+  };
+  BOOST_TEST((coprime({q("1/2"), q("1/3"), q("0"), q("2/6")}) == std::vector<long>{3, 2, 0, 2}));
+  BOOST_TEST((coprime({q("2/4"), q("6/4"), q("-4")}) == std::vector<long>{1, 3, -8}));
+  BOOST_TEST((coprime({q("6"), q("9"), q("12")}) == std::vector<long>{2, 3, 4}));
+  BOOST_TEST((coprime({q("-3/5"), q("6/5")}) == std::vector<long>{-1, 2}));
+  BOOST_TEST((coprime({q("0"), q("0")}) == std::vector<long>{0, 0}));
+
+  std::uint64_t seed = 20261129;
+  BOOST_TEST_MESSAGE("coprime integers: seed " << seed);
+  std::mt19937_64 rng(seed);
+  for (int i = 0; i < 3000; ++i) {
+    std::vector<Rational> x(5);
+    long shared = static_cast<long>(1 + rng() % 30);   // denominators often shared, as a plane's are
+    for (auto& v : x) {
+      long den = rng() % 2 ? shared : static_cast<long>(1 + rng() % 30);
+      v = rng() % 5 == 0 ? Rational(0) : Rational(static_cast<long>(rng() % 2001) - 1000) / Rational(den);
+    }
+    std::vector<mpz_class> out(5);
+    coprime_integers(x.data(), 5, out.data());
+    mpz_class g = 0;
+    std::optional<Rational> factor;
+    for (int j = 0; j < 5; ++j) {
+      mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), out[j].get_mpz_t());
+      BOOST_TEST((sgn(out[j]) == 0) == (CGAL::sign(x[j]) == CGAL::ZERO), "case " << i);
+      if (CGAL::sign(x[j]) == CGAL::ZERO) continue;
+      Rational f = Rational(CGAL::Gmpz(out[j].get_mpz_t())) / x[j];
+      BOOST_TEST(CGAL::sign(f) == CGAL::POSITIVE, "case " << i);
+      if (factor) BOOST_TEST((f == *factor), "case " << i << ": not one factor");
+      factor = f;
+    }
+    BOOST_TEST((g == 1 || g == 0), "case " << i << ": not coprime");
+  }
 }
