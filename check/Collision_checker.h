@@ -250,7 +250,8 @@ private:
   {
     Region_stage<FT> st;
     policy_.region_stage(a, b, index, A, B, st, [&] {
-      st = Span_region<K>(k_, stats_, model_.far_exponent, goal.closed()).stage(A, B, span, use_sbounds_);
+      st = Span_region<K>(k_, stats_, model_.far_exponent, goal.closed(), policy_.keeps_doubtful_bounds())
+               .stage(A, B, span, use_sbounds_);
     });
     bool alive = st.alive && goal.can_improve(k_, st.tl);
     ss.pair = A.object->name + "/" + B.object->name;

@@ -81,6 +81,7 @@ json stats_json(const Check_stats& s)
           {"exact_zeros", s.exact_zeros},
           {"exact_plane_tests", s.exact_plane_tests},
           {"exact_region_stages", s.exact_region_stages},
+          {"doubtful_stages_pruned", s.doubtful_stages_pruned},
           {"witnesses_by_intervals", s.witnesses_by_intervals},
           {"earliest_by_intervals", s.earliest_by_intervals},
           {"apart_proofs", s.apart_proofs},

@@ -80,6 +80,7 @@ public:
     earliest_ = true;
     ceiling_ = ceiling;
   }
+  static constexpr bool keeps_doubtful_bounds() { return true; }
   // Whether the trail leads to the rational run's last improvement, made
   // on a certified path (an earliest-mode rational run can replay it).
   bool earliest_trail() const { return earliest_ && trail_->complete && !trail_->approximate && !pending_; }
@@ -202,15 +203,26 @@ public:
   }
   // The region stage; where the intervals leave a decision open (S-bounds
   // meeting exactly: objects in contact), the stage in rationals, adopted:
-  // the run goes on from the rational run's own region and pruning.
+  // the run goes on from the rational run's own region and pruning. Boxes
+  // the intervals cannot decide are first kept (keeps_doubtful_bounds):
+  // bounds all the same, so a stage that prunes the span with them proves
+  // it holds no collision (and no touch, closed), as the rational run's
+  // smaller bounds do. The rational run may search it instead, but finds
+  // nothing there, and a later span's search does not depend on it.
   template <class M, class Stage, class Run>
   void region_stage(int a, int b, std::size_t index, M& A, M& B, Stage& st, Run run)
   {
     try {
       run();
-      keep_for_replay(index, A, B, st);
-      if (st.region) roots_[index] = *st.region;
-      return;
+      if (!st.doubtful) {
+        keep_for_replay(index, A, B, st);
+        if (st.region) roots_[index] = *st.region;
+        return;
+      }
+      if (!st.alive) {
+        ++stats_->doubtful_stages_pruned;
+        return;
+      }
     } catch (const CGAL::Uncertain_conversion_exception&) {
     }
     exact_->region_stage(a, b, index, A, B, st);

@@ -61,6 +61,9 @@ struct Check_stats {
   // exact_region_stages: sub-spans whose S-bounds and region the intervals
   // could not certify (bounds that meet exactly: a contact), made in
   // rationals and adopted by the interval run, which goes on;
+  // doubtful_stages_pruned: sub-spans the interval run pruned with S-bounds
+  // that kept boxes it could not decide (bounds that meet exactly), bounds
+  // all the same, instead of making the stage in rationals;
   // witnesses_by_intervals: colliding pairs whose witness (earliest mode:
   // and t* and the contact point) the interval run made itself, as points,
   // on a path certified to be the rational run's (no rerun);
@@ -94,7 +97,7 @@ struct Check_stats {
               exact_lines = 0, exact_plane_tests = 0, exact_region_stages = 0, witnesses_by_intervals = 0,
               earliest_by_intervals = 0, apart_proofs = 0, apart_attempts = 0, apart_spans = 0,
               replay_stages_adopted = 0, earliest_lines_rerun = 0, exact_ties = 0,
-              exact_cut_orders = 0, exact_zeros = 0, convex_rational = 0;
+              exact_cut_orders = 0, exact_zeros = 0, convex_rational = 0, doubtful_stages_pruned = 0;
   // Time per stage, seconds
   double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
 
@@ -117,6 +120,7 @@ struct Check_stats {
     exact_ties += o.exact_ties;
     exact_cut_orders += o.exact_cut_orders;
     exact_zeros += o.exact_zeros;
+    doubtful_stages_pruned += o.doubtful_stages_pruned;
     apart_spans += o.apart_spans;
     seconds_sbounds += o.seconds_sbounds; seconds_divide += o.seconds_divide; seconds_witness += o.seconds_witness;
   }

@@ -41,6 +41,10 @@
 //                                      region: run() makes them here; a
 //                                      filter may make them elsewhere and
 //                                      set A's and B's emptied bounds
+//     bool keeps_doubtful_bounds()     run() keeps S-bounds the kernel cannot
+//                                      decide (Region_stage::doubtful): the
+//                                      policy then takes only a stage that
+//                                      prunes the span
 //     void search_span(a, b, index, frame_of_a)   the span about to be searched
 //     void found_in_span(index)        a (better) point inside was found there
 //     bool stops_after(index)          after a span that found nothing: stop
@@ -158,6 +162,7 @@ struct No_filter {
   {
     run();
   }
+  static constexpr bool keeps_doubtful_bounds() { return false; }
   void search_span(int, int, std::size_t, const std::array<bool, 3>&) {}
   void found_in_span(std::size_t) {}
   bool stops_after(std::size_t) const { return false; }

@@ -29,7 +29,17 @@ public:
   // An object's own bounds are settled without it: a node whose bound has
   // no interior is a null regularised set in either semantics, since both
   // take the solids as regularised sets.
-  explicit S_bounds(const K& k, bool closed = false) : k_(k), closed_(closed) {}
+  // keep_doubtful: where an approximate kernel cannot tell whether a box is
+  // empty (bounds meeting exactly) or whether a time range is, it keeps the
+  // box or the range, which still bounds the node (a box only ever shrinks
+  // to a set it contains), and doubted() says so; otherwise such a sign
+  // throws, as every sign of the kernel does.
+  explicit S_bounds(const K& k, bool closed = false, bool keep_doubtful = false)
+    : k_(k), closed_(closed), keep_doubtful_(keep_doubtful) {}
+
+  // A box or a time range was kept undecided (keep_doubtful): the bounds
+  // are sound, but not those an exact kernel makes.
+  bool doubted() const { return doubted_; }
 
   // Leaves start at their primitive's box, branches at Omega (§4.3.1).
   Bounds initial(const Csg_model<FT>& m) const
@@ -117,12 +127,29 @@ public:
   // only an empty one.
   Box3 normalised(const Box3& b) const
   {
-    return (closed_ ? is_empty_box(k_, b) : has_no_interior(k_, b)) ? Box3::nothing() : b;
+    if (!keep_doubtful_) return (closed_ ? is_empty_box(k_, b) : has_no_interior(k_, b)) ? Box3::nothing() : b;
+    if (b.empty) return b;
+    for (int q = 0; q < 3; ++q)
+      if (b.has_lo[q] && b.has_hi[q] && surely_apart(b.hi[q] - b.lo[q])) return Box3::nothing();
+    return b;
   }
 
 private:
   const K& k_;
   bool closed_;
+  bool keep_doubtful_;
+  mutable bool doubted_ = false;
+
+  // Whether gap (a side's hi - lo, or an overlap's length) leaves no room:
+  // regularised, gap <= 0 (no interior); closed, gap < 0. Undecided under
+  // keep_doubtful: room, and doubted.
+  bool surely_apart(const FT& gap) const
+  {
+    CGAL::Uncertain<bool> room = k_.is_nonnegative(gap, !closed_);
+    if (CGAL::is_certain(room)) return !CGAL::get_certain(room);
+    doubted_ = true;
+    return false;
+  }
 
   struct Side {   // [lo, hi] of one axis in world coordinates at t = 0
     FT lo, hi;
@@ -149,21 +176,32 @@ private:
   {
     bool has_low = b.has_lo && a.has_hi, has_high = b.has_hi && a.has_lo;
     FT low = has_low ? b.lo - a.hi : FT(0), high = has_high ? b.hi - a.lo : FT(0);
+    if (keep_doubtful_ && !(CGAL::is_certain(k_.is_nonnegative(w, false)) &&
+                            CGAL::is_certain(k_.is_nonnegative(w, true)))) {
+      doubted_ = true;   // no narrowing: [tl, th] still bounds the meeting times
+      return true;
+    }
     CGAL::Sign s = k_.sign(w);
-    // Regularised, the span must keep an interior (th > tl); closed, a point
-    // (a touch at one instant) is enough.
-    auto apart = [&](CGAL::Sign gap) { return closed_ ? gap == CGAL::NEGATIVE : gap != CGAL::POSITIVE; };
     if (s == CGAL::ZERO) {
       // Same velocity: the overlap along q is the same at every time.
-      if (has_low && apart(CGAL::opposite(k_.sign(low)))) return false;
-      if (has_high && apart(k_.sign(high))) return false;
-      return !(has_low && has_high && apart(k_.compare(high, low)));
+      if (has_low && (keep_doubtful_ ? surely_apart(-low) : no_room(CGAL::opposite(k_.sign(low))))) return false;
+      if (has_high && (keep_doubtful_ ? surely_apart(high) : no_room(k_.sign(high)))) return false;
+      return !(has_low && has_high && apart(high, low));
     }
     if (s == CGAL::NEGATIVE) std::swap(low, high), std::swap(has_low, has_high);
     if (has_low) tl = Number_ops<FT>::upper(tl, low / w);
     if (has_high) th = Number_ops<FT>::lower(th, high / w);
-    return !apart(k_.compare(th, tl));
+    return !apart(th, tl);
   }
+
+  // Whether the times or lengths hi >= lo leave no room: regularised, the
+  // span must keep an interior (hi > lo); closed, a point (a touch at one
+  // instant) is enough.
+  bool apart(const FT& hi, const FT& lo) const
+  {
+    return keep_doubtful_ ? surely_apart(hi - lo) : no_room(k_.compare(hi, lo));
+  }
+  bool no_room(CGAL::Sign gap) const { return closed_ ? gap == CGAL::NEGATIVE : gap != CGAL::POSITIVE; }
 
   // beta <- beta meet s; true when it moved by a grid step (Box.h).
   bool shrink(Box3& beta, const Box3& s) const

@@ -29,6 +29,10 @@ struct Region_stage {
   std::optional<Box<FT, 4>> region;
   Vector3<FT> shear{};
   std::array<bool, 3> frame_of_a{};
+  // The S-bounds kept a box or a time range an approximate kernel could not
+  // decide (S_bounds' keep_doubtful): "not alive" is still a proof, but an
+  // alive stage is not an exact kernel's, and is left without its region.
+  bool doubtful = false;
 };
 
 template <class K>
@@ -41,9 +45,9 @@ public:
 
   // far_exponent: Scene_model::far_exponent, R = 2^far_exponent
   // (model/Far_bound.h); closed: the pair under closed semantics (S_bounds'
-  // closed).
-  Span_region(const K& k, Check_stats& stats, int far_exponent, bool closed = false)
-    : k_(k), sb_(k, closed), stats_(stats), far_exponent_(far_exponent), closed_(closed) {}
+  // closed); keep_doubtful: S_bounds' (a filter's first try).
+  Span_region(const K& k, Check_stats& stats, int far_exponent, bool closed = false, bool keep_doubtful = false)
+    : k_(k), sb_(k, closed, keep_doubtful), stats_(stats), far_exponent_(far_exponent), closed_(closed) {}
 
   // The whole stage on the sub-span [lo, hi]: the 4D S-bounds (narrowing
   // A's and B's bounds; none with use_sbounds off), then the fitted box
@@ -56,7 +60,8 @@ public:
     st.tl = lo;
     st.th = hi;
     st.alive = use_sbounds ? four_d_bounds(A, B, st.tl, st.th) : true;
-    if (!st.alive) return st;
+    st.doubtful = sb_.doubted();
+    if (!st.alive || st.doubtful) return st;
     st.fitted = use_sbounds ? fitted(A, B, st.tl, st.th, st.shear, st.frame_of_a) : original(A, B, lo, hi, st.shear);
     if (closed_ ? is_empty_box(k_, st.fitted) : has_no_interior(k_, st.fitted)) return st;
     st.region = use_sbounds || closed_ ? on_grid(st.fitted, span) : st.fitted;

@@ -9,6 +9,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "search/S_bounds.h"
+#include "exact/Interval_kernel.h"
 #include "support/Stage_tests.h"
 
 #include <algorithm>
@@ -661,4 +662,84 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(random_moving_boxes_match_the_unsimplified_form, K
     }
   }
   BOOST_TEST_MESSAGE(alive << " of " << cases << " pairs meet");
+}
+
+// --- An approximate kernel's undecided signs (keep_doubtful) -----------------
+//
+// Intervals enclose 1/10 and 3/10 but cannot tell 1/10 - 1/10 from a small
+// number of either sign. By default such a sign throws, as every interval
+// sign does (the filter then makes the stage in rationals). keep_doubtful
+// keeps the box or the time range instead, which still bounds the node, and
+// doubted() says so; decided signs are unaffected, and rationals decide all.
+
+namespace {
+
+Box<Interval_kernel::FT, 3> tenths_box(const Interval_kernel& k, long x_lo, long x_hi)
+{
+  Box<Interval_kernel::FT, 3> b;
+  b.set(0, k.from_rational(Rational(static_cast<int>(x_lo), 10)), k.from_rational(Rational(static_cast<int>(x_hi), 10)));
+  b.set(1, Interval_kernel::FT(0), Interval_kernel::FT(1));
+  b.set(2, Interval_kernel::FT(0), Interval_kernel::FT(1));
+  return b;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(an_undecided_flat_box_is_kept_and_doubted)
+{
+  Interval_kernel ik;
+  Interval_kernel::Protector protect;
+  // x in [1/10, 1/10]: flat, so (regularised) a null set; intervals cannot
+  // tell it from x in [1/10, 1/10 + e].
+  const auto flat = tenths_box(ik, 1, 1);
+  S_bounds<Interval_kernel> strict(ik), doubting(ik, false, true);
+  BOOST_CHECK_THROW(strict.normalised(flat), CGAL::Uncertain_conversion_exception);
+  Box<Interval_kernel::FT, 3> kept = doubting.normalised(flat);
+  BOOST_TEST(!kept.empty);
+  BOOST_TEST(doubting.doubted());
+  // Decided signs: [1/10, 3/10] has room, [3/10, 1/10] is empty; neither doubts.
+  S_bounds<Interval_kernel> decided(ik, false, true);
+  BOOST_TEST(!decided.normalised(tenths_box(ik, 1, 3)).empty);
+  BOOST_TEST(decided.normalised(tenths_box(ik, 3, 1)).empty);
+  BOOST_TEST(!decided.doubted());
+  // Closed semantics keeps a flat box anyway, but hi < lo by an undecided
+  // amount is doubted the same way.
+  S_bounds<Interval_kernel> closed(ik, true, true);
+  BOOST_TEST(!closed.normalised(flat).empty);
+  BOOST_TEST(closed.doubted());
+  // Rationals decide: the flat box is nothing.
+  Rational_kernel rk;
+  Box<Rational, 3> exact;
+  exact.set(0, Rational(1, 10), Rational(1, 10));
+  exact.set(1, Rational(0), Rational(1));
+  exact.set(2, Rational(0), Rational(1));
+  BOOST_TEST(S_bounds<Rational_kernel>(rk, false, true).normalised(exact).empty);
+}
+
+// A moving at 1/10 along x, B at 1/10 too: the relative velocity is 0, but
+// its enclosure holds both signs, so Appendix B's span cannot be narrowed
+// by it. Kept: [tl, th] stays [0, 5] (still bounding the meeting times,
+// which are all of it here: the boxes overlap and move together).
+BOOST_AUTO_TEST_CASE(an_undecided_relative_velocity_keeps_the_span)
+{
+  using FT = Interval_kernel::FT;
+  Interval_kernel ik;
+  Interval_kernel::Protector protect;
+  Box<FT, 3> a = tenths_box(ik, 0, 10), b = tenths_box(ik, 5, 15);
+  Vector3<FT> u{ik.from_rational(Rational(1, 10)), FT(0), FT(0)}, v = u, o{FT(0), FT(0), FT(0)};
+  FT tl(0), th(5);
+  S_bounds<Interval_kernel> doubting(ik, false, true);
+  typename S_bounds<Interval_kernel>::Moving_box ma{&a, &u, &o}, mb{&b, &v, &o};
+  // v - u of two equal enclosures is an interval around 0, not the point 0.
+  BOOST_TEST_REQUIRE(!CGAL::is_certain(ik.is_nonnegative(v[0] - u[0], true)));
+  BOOST_TEST(doubting.meet_moving(ma, mb, tl, th));
+  BOOST_TEST(doubting.doubted());
+  BOOST_TEST((tl.inf() == 0 && tl.sup() == 0 && th.inf() == 5 && th.sup() == 5));
+  // Both boxes narrowed to the overlap x in [1/2, 1], an enclosure of it.
+  BOOST_TEST((a.lo[0].inf() <= 0.5 && 0.5 <= a.lo[0].sup() && a.hi[0].inf() <= 1 && 1 <= a.hi[0].sup()));
+  // Without keep_doubtful the sign of v - u throws.
+  Box<FT, 3> a2 = tenths_box(ik, 0, 10), b2 = tenths_box(ik, 5, 15);
+  FT tl2(0), th2(5);
+  typename S_bounds<Interval_kernel>::Moving_box ma2{&a2, &u, &o}, mb2{&b2, &v, &o};
+  BOOST_CHECK_THROW(S_bounds<Interval_kernel>(ik).meet_moving(ma2, mb2, tl2, th2), CGAL::Uncertain_conversion_exception);
 }
