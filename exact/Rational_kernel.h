@@ -51,6 +51,16 @@ public:
   // The same integers as GMP's, whose products need no gcd (the ring of
   // division-free elimination, search/Convex_pair.h).
   using RT = mpz_class;
+  // sign det(a, b, c, d) with each row scaled to coprime integers: positive
+  // multiples of the rows, so the sign is the same, and the cofactor
+  // expansion (kernel_ft4.h) then needs no gcd per product.
+  CGAL::Sign orientation4(const Vector4<FT>& a, const Vector4<FT>& b, const Vector4<FT>& c, const Vector4<FT>& d) const
+  {
+    std::array<Vector4<RT>, 4> m;
+    const Vector4<FT>* rows[4] = {&a, &b, &c, &d};
+    for (int i = 0; i < 4; ++i) coprime_integers(rows[i]->data(), 4, m[i].data());
+    return sign(RT(determinant4(m[0], m[1], m[2], m[3])));
+  }
   CGAL::Sign sign(const RT& x) const { return CGAL::Sign(sgn(x)); }
   Hyperplane4<RT> in_ring(const Hyperplane4<FT>& h) const
   {

@@ -183,6 +183,7 @@ public:
     guide_rows_.push_back(time_at_least(nearest_double(*span.exact_lo)));
     guide_rows_.push_back(time_at_most(nearest_double(*span.exact_hi)));
     rows_.assign(guide_rows_.size(), std::nullopt);
+    ring_rows_.assign(guide_rows_.size(), std::nullopt);
     vertex_basis_.reset();
     centre_rows_.reset();
   }
@@ -210,7 +211,7 @@ public:
   }
 
   // Whether the four rows meet in one point (their normals independent).
-  bool vertex_exists(const Basis& B) { return k_.sign(normals_det(B, -1)) != CGAL::ZERO; }
+  bool vertex_exists(const Basis& B) { return normals_orientation(B, -1) != CGAL::ZERO; }
 
   // The sign of row j at the vertex of B.
   CGAL::Sign vertex_sign(const Basis& B, std::size_t j) { return k_.sign(row(j).value(vertex(B))); }
@@ -219,7 +220,7 @@ public:
   // -det(N with row i replaced by e_t) / det N.
   CGAL::Sign dual_sign(const Basis& B, int i)
   {
-    CGAL::Sign num = k_.sign(normals_det(B, i)), den = k_.sign(normals_det(B, -1));
+    CGAL::Sign num = normals_orientation(B, i), den = normals_orientation(B, -1);
     return CGAL::Sign(-static_cast<int>(num) * static_cast<int>(den));
   }
 
@@ -291,6 +292,7 @@ private:
   std::size_t index_ = 0;
   std::vector<G> guide_rows_;              // the sub-span's rows in doubles, in the order of rows_
   std::vector<std::optional<H>> rows_;     // A's planes, B's, t >= lo, t <= hi: extruded on first use
+  std::vector<std::optional<Ring_row>> ring_rows_;   // the same in the kernel's ring (ring_row)
   const Moving* moving_[2] = {nullptr, nullptr};
   Primitive_planes<K>* planes_[2] = {nullptr, nullptr};
   std::size_t count_a_ = 0, count_b_ = 0;
@@ -333,6 +335,13 @@ private:
       }
     }
     return *rows_[j];
+  }
+  // Row j in the kernel's ring (Kernel_base::in_ring: a positive multiple),
+  // made once per sub-span: the determinants' and null vectors' rows.
+  const Ring_row& ring_row(std::size_t j)
+  {
+    if (!ring_rows_[j]) ring_rows_[j] = k_.in_ring(row(j));
+    return *ring_rows_[j];
   }
 
   static std::shared_ptr<const Convex_guide> make_guide(const Scene_model<K>& model, int a, int b)
@@ -514,13 +523,14 @@ private:
     return Verdict::collide;
   }
 
-  // det of B's normals, with row `with_time` (if any) replaced by e_t.
-  FT normals_det(const Basis& B, int with_time)
+  // sign det of B's normals, with row `with_time` (if any) replaced by e_t:
+  // on the rows in the ring (positive multiples, so the same sign).
+  CGAL::Sign normals_orientation(const Basis& B, int with_time)
   {
-    std::array<V4, 4> N;
+    std::array<Vector4<R>, 4> N;
     for (int i = 0; i < 4; ++i)
-      N[i] = i == with_time ? V4{FT(0), FT(0), FT(0), FT(1)} : row(static_cast<std::size_t>(B[i])).n;
-    return determinant4(N[0], N[1], N[2], N[3]);
+      N[i] = i == with_time ? Vector4<R>{R(0), R(0), R(0), R(1)} : ring_row(static_cast<std::size_t>(B[i])).n;
+    return k_.sign(R(determinant4(N[0], N[1], N[2], N[3])));
   }
 
   // det of C's equal-margin system (centre_exists).
@@ -569,7 +579,7 @@ private:
     std::size_t n = which.size();
     if (n < 2) return std::nullopt;
     scaled.clear();
-    for (std::size_t i : which) scaled.push_back(k_.in_ring(row(i)));
+    for (std::size_t i : which) scaled.push_back(ring_row(i));
     std::vector<std::array<R, 5>> M(4);   // M[q][i] = n_i[q]
     for (std::size_t i = 0; i < n; ++i)
       for (int q = 0; q < 4; ++q) M[q][i] = scaled[i].n[q];

@@ -295,6 +295,49 @@ BOOST_AUTO_TEST_CASE(fraction_free_solve_is_the_systems_solution)
   BOOST_TEST(solved > 1000);   // the random systems are mostly regular
 }
 
+// The rational kernel's orientation4 (rows scaled to coprime integers, the
+// determinant in GMP integers) is the sign of the determinant itself:
+// hand-worked cases, then seeded random rows (some dependent) held to
+// determinant4 in rationals (kernel_ft4.h, the generic cofactor expansion).
+BOOST_AUTO_TEST_CASE(rational_orientation_is_the_determinants_sign)
+{
+  Rational_kernel k;
+  using V = Vector4<Rational>;
+  V e0{q("1"), q("0"), q("0"), q("0")}, e1{q("0"), q("1"), q("0"), q("0")}, e2{q("0"), q("0"), q("1"), q("0")},
+      e3{q("0"), q("0"), q("0"), q("1")};
+  BOOST_TEST(k.orientation4(e0, e1, e2, e3) == CGAL::POSITIVE);
+  BOOST_TEST(k.orientation4(e1, e0, e2, e3) == CGAL::NEGATIVE);   // one swap
+  // diag(1/2, 1/3, -1/5, 7): det = -7/30.
+  V a{q("1/2"), q("0"), q("0"), q("0")}, b{q("0"), q("1/3"), q("0"), q("0")}, c{q("0"), q("0"), q("-1/5"), q("0")},
+      d{q("0"), q("0"), q("0"), q("7")};
+  BOOST_TEST(k.orientation4(a, b, c, d) == CGAL::NEGATIVE);
+  V sum{q("1/2"), q("1/3"), q("0"), q("0")};   // a + b: dependent
+  BOOST_TEST(k.orientation4(a, b, c, sum) == CGAL::ZERO);
+  V zero{q("0"), q("0"), q("0"), q("0")};
+  BOOST_TEST(k.orientation4(a, zero, c, d) == CGAL::ZERO);
+
+  std::uint64_t seed = 20261128;
+  BOOST_TEST_MESSAGE("rational orientation4: seed " << seed);
+  std::mt19937_64 rng(seed);
+  auto random_rational = [&] {
+    if (rng() % 4 == 0) return Rational(0);
+    Rational x(static_cast<long>(rng() % 20001) - 10000);
+    return x / Rational(static_cast<long>(1 + rng() % 1000));
+  };
+  int signs[3] = {0, 0, 0};
+  for (int i = 0; i < 2000; ++i) {
+    V r[4];
+    for (auto& row : r)
+      for (auto& v : row) v = random_rational();
+    if (i % 4 == 0)   // a dependent fourth row: r3 = x r0 - y r1
+      for (int j = 0; j < 4; ++j) r[3][j] = Rational(3, 7) * r[0][j] - Rational(5, 2) * r[1][j];
+    CGAL::Sign expected = CGAL::sign(determinant4(r[0], r[1], r[2], r[3]));
+    BOOST_TEST(k.orientation4(r[0], r[1], r[2], r[3]) == expected, "rows " << i);
+    ++signs[expected + 1];
+  }
+  BOOST_TEST((signs[0] > 500 && signs[1] >= 500 && signs[2] > 500));   // each sign met
+}
+
 // coprime_integers (the rational kernel's ring and lowest terms): one
 // positive factor makes the numbers coprime integers; hand-worked cases,
 // then seeded random ones held to that definition.
