@@ -144,13 +144,14 @@ public:
   auto convex_certain(Stage& stage, Predicate p)
   {
     try {
-      return p(stage);
+      auto r = p(stage);
+      if (CGAL::is_certain(r)) return CGAL::get_certain(r);
     } catch (const CGAL::Uncertain_conversion_exception&) {
     }
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     ++stats_->convex_exact_signs;
     convex_guide_ = stage.guide();
-    return p(exact_convex(stage.a(), stage.b(), stage.span_index()));
+    return CGAL::get_certain(p(exact_convex(stage.a(), stage.b(), stage.span_index())));
   }
   template <class Stage>
   void convex_found(const Stage& stage)

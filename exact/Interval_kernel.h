@@ -74,6 +74,7 @@ public:
   {
     throw CGAL::Uncertain_conversion_exception("a sign an interval cannot certify");
   }
+  CGAL::Uncertain<CGAL::Sign> uncertain_sign(const FT& x) const { return CGAL::sign(x); }
   bool possibly_positive(const FT& x) const { return CGAL::possibly(CGAL::sign(x) == CGAL::POSITIVE); }
   bool possibly_nonnegative(const FT& x) const { return CGAL::possibly(CGAL::sign(x) != CGAL::NEGATIVE); }
   CGAL::Uncertain<bool> is_nonnegative(const FT& x, bool strict) const { return strict ? x > 0 : x >= 0; }

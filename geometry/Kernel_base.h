@@ -71,6 +71,13 @@ public:
   // The same for x >= 0 (closed semantics: touching boxes meet).
   bool possibly_nonnegative(const FT& x) const { return derived().sign(x) != CGAL::NEGATIVE; }
 
+  // The sign where the kernel can certify it, indeterminate otherwise,
+  // without throwing: for a policy that has another way to decide a single
+  // sign (a convex pair's, search/No_filter.h convex_certain), where a
+  // throw costs more than the sign. Exact and double kernels: sign(x).
+  template <class T>   // FT, or the ring RT
+  CGAL::Uncertain<CGAL::Sign> uncertain_sign(const T& x) const { return derived().sign(x); }
+
   // For box simplification (§4.1), which may always be skipped
   // (regularised-semantics.md, item 4): whether x >= 0 (x > 0 when strict).
   // An approximate kernel answers indeterminate when it cannot tell; the

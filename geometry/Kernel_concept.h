@@ -36,6 +36,7 @@
 // quotient (a / b with b's sign known), largest_component, round_to_grid,
 // grid_point, same_on_grid, less_on_grid, possibly_positive and
 // possibly_nonnegative (conservative filters), is_nonnegative (box simplification, CGAL::Uncertain<bool>),
+// uncertain_sign (CGAL::Uncertain<CGAL::Sign>, indeterminate instead of a throw),
 // far_power_of_two (2^e for the far bound of unbounded pairs; a kernel that
 // cannot hold it refines it to fail), in_lowest_terms (a positive multiple
 // of a hyperplane in the kernel's cheapest numbers: the rational kernel's

@@ -211,17 +211,25 @@ public:
   }
 
   // Whether the four rows meet in one point (their normals independent).
-  bool vertex_exists(const Basis& B) { return normals_orientation(B, -1) != CGAL::ZERO; }
+  bool vertex_exists(const Basis& B) { return k_.sign(normals_det(B, -1)) != CGAL::ZERO; }
 
   // The sign of row j at the vertex of B.
-  CGAL::Sign vertex_sign(const Basis& B, std::size_t j) { return k_.sign(row(j).value(vertex(B))); }
+  // Indeterminate where the kernel cannot certify it (a vertex on row j: a
+  // touch), for the policy to decide without a throw (convex_certain).
+  CGAL::Uncertain<CGAL::Sign> vertex_sign(const Basis& B, std::size_t j)
+  {
+    return k_.uncertain_sign(row(j).value(vertex(B)));
+  }
 
   // The sign of y_i in sum_B y_i n_i = -e_t: by Cramer, y_i =
-  // -det(N with row i replaced by e_t) / det N.
-  CGAL::Sign dual_sign(const Basis& B, int i)
+  // -det(N with row i replaced by e_t) / det N. Indeterminate as
+  // vertex_sign.
+  CGAL::Uncertain<CGAL::Sign> dual_sign(const Basis& B, int i)
   {
-    CGAL::Sign num = normals_orientation(B, i), den = normals_orientation(B, -1);
-    return CGAL::Sign(-static_cast<int>(num) * static_cast<int>(den));
+    CGAL::Uncertain<CGAL::Sign> num = k_.uncertain_sign(normals_det(B, i)),
+                                den = k_.uncertain_sign(normals_det(B, -1));
+    if (!CGAL::is_certain(num) || !CGAL::is_certain(den)) return CGAL::Uncertain<CGAL::Sign>::indeterminate();
+    return CGAL::Sign(-static_cast<int>(CGAL::get_certain(num)) * static_cast<int>(CGAL::get_certain(den)));
   }
 
   // The sign of object o's plane i (its solid's own frame) at its deep point.
@@ -523,14 +531,14 @@ private:
     return Verdict::collide;
   }
 
-  // sign det of B's normals, with row `with_time` (if any) replaced by e_t:
-  // on the rows in the ring (positive multiples, so the same sign).
-  CGAL::Sign normals_orientation(const Basis& B, int with_time)
+  // det of B's normals, with row `with_time` (if any) replaced by e_t, on
+  // the rows in the ring: positive multiples, so it has det's sign.
+  R normals_det(const Basis& B, int with_time)
   {
     std::array<Vector4<R>, 4> N;
     for (int i = 0; i < 4; ++i)
       N[i] = i == with_time ? Vector4<R>{R(0), R(0), R(0), R(1)} : ring_row(static_cast<std::size_t>(B[i])).n;
-    return k_.sign(R(determinant4(N[0], N[1], N[2], N[3])));
+    return determinant4(N[0], N[1], N[2], N[3]);
   }
 
   // det of C's equal-margin system (centre_exists).

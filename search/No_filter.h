@@ -25,9 +25,11 @@
 //     template <class Stage, class Predicate> auto convex_certain(stage, p)
 //                                      p(stage): one sign of the programs,
 //                                      whose arguments are guesses (the same
-//                                      in every kernel); a filter that cannot
-//                                      tell asks p of its exact kernel's
-//                                      stage on the same sub-span
+//                                      in every kernel), certain; a filter
+//                                      that cannot tell (p throws, or gives
+//                                      an indeterminate CGAL::Uncertain)
+//                                      asks p of its exact kernel's stage on
+//                                      the same sub-span
 //     template <class K, class Stage, class FT>
 //       bool convex_improves(k, stage, goal, B, t)   whether the stage's
 //                                      point at time t (the vertex of the
@@ -126,6 +128,7 @@
 #include "model/Pair_formula.h"
 #include "model/Scene_model.h"
 #include "search/Search_goal.h"
+#include <CGAL/Uncertain.h>
 #include <array>
 #include <cstddef>
 #include <optional>
@@ -148,7 +151,7 @@ struct No_filter {
   template <class Stage, class Predicate>
   auto convex_certain(Stage& stage, Predicate p)
   {
-    return p(stage);
+    return CGAL::get_certain(p(stage));   // a kernel deciding its own signs: always certain
   }
   template <class K, class Stage, class FT>
   bool convex_improves(const K& k, Stage&, const Search_goal<FT>& goal, const std::array<int, 4>*, const FT& t) const

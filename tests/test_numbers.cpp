@@ -163,6 +163,27 @@ BOOST_AUTO_TEST_CASE(quotient_of_known_sign_is_cgal_division)
   }
 }
 
+// uncertain_sign: the interval kernel's sign without a throw, indeterminate
+// exactly where sign() throws (an interval holding 0 and another number);
+// certain for a point 0 and for intervals of one sign. Exact kernels: sign.
+BOOST_AUTO_TEST_CASE(uncertain_sign_is_indeterminate_where_sign_throws)
+{
+  Interval_kernel ik;
+  Interval_kernel::Protector protect;
+  using I = Interval_kernel::FT;
+  const I tenth = ik.from_rational(q("1/10"));
+  const I around_zero = tenth - tenth;   // [-e, e]: 1/10 - 1/10 only enclosed
+  BOOST_TEST(!CGAL::is_certain(ik.uncertain_sign(around_zero)));
+  BOOST_CHECK_THROW(ik.sign(around_zero), CGAL::Uncertain_conversion_exception);
+  BOOST_TEST(!CGAL::is_certain(ik.uncertain_sign(I(0, 1))));   // [0, 1]: zero or positive
+  BOOST_TEST((CGAL::get_certain(ik.uncertain_sign(I(0))) == CGAL::ZERO));
+  BOOST_TEST((CGAL::get_certain(ik.uncertain_sign(tenth)) == CGAL::POSITIVE));
+  BOOST_TEST((CGAL::get_certain(ik.uncertain_sign(-tenth)) == CGAL::NEGATIVE));
+  Rational_kernel rk;
+  BOOST_TEST((CGAL::get_certain(rk.uncertain_sign(q("1/10") - q("1/10"))) == CGAL::ZERO));
+  BOOST_TEST((CGAL::get_certain(rk.uncertain_sign(mpz_class(-3))) == CGAL::NEGATIVE));   // the ring too
+}
+
 // Time_span::lo_on_grid (model/Scene_model.h): a multiple of 2^-bits that a
 // double holds, decided on the rational; at the edges of both conditions.
 BOOST_AUTO_TEST_CASE(exact_dyadics_at_their_edges)
