@@ -190,13 +190,21 @@ public:
 
   // --- Predicates: arguments and results the same in every kernel. ---
 
+  // The predicates' last signs are indeterminate where the kernel cannot
+  // certify them (kernel uncertain_sign), so that the policy decides them
+  // without a throw (convex_certain): zeros where the objects touch.
+
   // The sign of row j at p.
-  CGAL::Sign row_sign(std::size_t j, const Point& p) { return k_.sign(row(j).value(exact_point(p))); }
+  CGAL::Uncertain<CGAL::Sign> row_sign(std::size_t j, const Point& p)
+  {
+    return k_.uncertain_sign(row(j).value(exact_point(p)));
+  }
 
   // Whether lambda >= 0 with sum lambda_i n_i = 0 over the rows `which`
   // (their one line of dependencies) has sum lambda_i c_i >= 0 (strict:
-  // > 0): the strict system (strict: P) is empty.
-  bool proves_empty(const std::vector<std::size_t>& which, bool strict)
+  // > 0): the strict system (strict: P) is empty. Indeterminate where the
+  // sum's sign is (a touch).
+  CGAL::Uncertain<bool> proves_empty(const std::vector<std::size_t>& which, bool strict)
   {
     std::vector<Ring_row> scaled;
     std::optional<std::vector<R>> lambda = null_vector(which, scaled);
@@ -206,24 +214,22 @@ public:
       if (k_.sign((*lambda)[i]) == CGAL::NEGATIVE) return false;
       sum += (*lambda)[i] * scaled[i].c;
     }
-    CGAL::Sign s = k_.sign(sum);
-    return strict ? s == CGAL::POSITIVE : s != CGAL::NEGATIVE;
+    CGAL::Uncertain<CGAL::Sign> s = k_.uncertain_sign(sum);
+    if (!CGAL::is_certain(s)) return CGAL::Uncertain<bool>::indeterminate();
+    return strict ? CGAL::get_certain(s) == CGAL::POSITIVE : CGAL::get_certain(s) != CGAL::NEGATIVE;
   }
 
   // Whether the four rows meet in one point (their normals independent).
   bool vertex_exists(const Basis& B) { return k_.sign(normals_det(B, -1)) != CGAL::ZERO; }
 
-  // The sign of row j at the vertex of B.
-  // Indeterminate where the kernel cannot certify it (a vertex on row j: a
-  // touch), for the policy to decide without a throw (convex_certain).
+  // The sign of row j at the vertex of B (a touch: zero).
   CGAL::Uncertain<CGAL::Sign> vertex_sign(const Basis& B, std::size_t j)
   {
     return k_.uncertain_sign(row(j).value(vertex(B)));
   }
 
   // The sign of y_i in sum_B y_i n_i = -e_t: by Cramer, y_i =
-  // -det(N with row i replaced by e_t) / det N. Indeterminate as
-  // vertex_sign.
+  // -det(N with row i replaced by e_t) / det N.
   CGAL::Uncertain<CGAL::Sign> dual_sign(const Basis& B, int i)
   {
     CGAL::Uncertain<CGAL::Sign> num = k_.uncertain_sign(normals_det(B, i)),
