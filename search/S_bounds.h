@@ -176,8 +176,7 @@ private:
   {
     bool has_low = b.has_lo && a.has_hi, has_high = b.has_hi && a.has_lo;
     FT low = has_low ? b.lo - a.hi : FT(0), high = has_high ? b.hi - a.lo : FT(0);
-    if (keep_doubtful_ && !(CGAL::is_certain(k_.is_nonnegative(w, false)) &&
-                            CGAL::is_certain(k_.is_nonnegative(w, true)))) {
+    if (keep_doubtful_ && !CGAL::is_certain(k_.uncertain_sign(w))) {
       doubted_ = true;   // no narrowing: [tl, th] still bounds the meeting times
       return true;
     }
