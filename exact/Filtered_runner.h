@@ -415,15 +415,20 @@ private:
   // The pairs the intervals' sweep kept only because their boxes might
   // touch (rounding: every sign certain but a tie's), decided on EK's boxes:
   // boxes that only touch have no common interior, so such a pair cannot
-  // collide in regularised semantics (closed: only a gap drops it). The
-  // double run drops such a pair by rounding's luck (a contact under a
-  // rotation); this drops it by proof, before any convex program or search.
+  // collide in regularised semantics. The double run drops such a pair by
+  // rounding's luck (a contact under a rotation); this drops it by proof,
+  // before any convex program or search.
+  // Closed semantics keeps its ties unexamined: touching boxes meet there,
+  // so only a gap below the intervals' width would drop the pair, while the
+  // usual tie is an exact contact that EK's boxes keep after making both
+  // objects' motions and boxes in rationals (a fifth of a decimal contact's
+  // query). A pair kept with such a gap is proven apart by its own check,
+  // which decides any pair: the answer is the rational run's.
   void drop_apart_ties(std::vector<std::pair<int, int>>& pairs, const std::vector<char>& certain, Check_stats& stats,
                        Semantics semantics)
   {
-    if (std::find(certain.begin(), certain.end(), 0) == certain.end()) return;
+    if (semantics == Semantics::closed || std::find(certain.begin(), certain.end(), 0) == certain.end()) return;
     auto start = std::chrono::steady_clock::now();
-    bool closed = semantics == Semantics::closed;
     std::vector<Box<EFT, 3>> eroots(scene_.objects.size());   // each made as a tie needs it
     std::vector<char> made(scene_.objects.size(), 0);
     std::vector<std::pair<int, int>> kept;
@@ -436,7 +441,7 @@ private:
             eroots[static_cast<std::size_t>(o)] = exact_root(o);
             made[static_cast<std::size_t>(o)] = 1;
           }
-        if (!Pair_sweep<EK>(ek_, closed).meets(emodel_, eroots, i, j)) continue;
+        if (!Pair_sweep<EK>(ek_, false).meets(emodel_, eroots, i, j)) continue;
       }
       kept.emplace_back(i, j);
     }

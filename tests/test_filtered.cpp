@@ -253,9 +253,10 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational_closed)
 // whole, and the answers are the rational run's. With the convex pair's
 // linear programs (the default), the touch is a multiplier sum exactly
 // zero, that one sign decided in rationals, again with nothing run whole.
-// That is closed semantics; in regularised semantics the swept boxes,
-// which only touch at x = 1.03 (a tie to the intervals), are told apart on
-// rational boxes at the sweep, and no pair is left to examine.
+// That is closed semantics, where the sweep's tie (the swept boxes only
+// touch at x = 1.03) is kept unexamined: touching boxes meet. In
+// regularised semantics the tie is told apart on rational boxes at the
+// sweep, and no pair is left to examine.
 BOOST_AUTO_TEST_CASE(coinciding_decimal_velocity_changes_stay_in_intervals)
 {
   Scene scene = read_scene(read_json_text(R"({"format": "clash4d-scene/1", "time": [0, 1], "objects": [
@@ -269,10 +270,11 @@ BOOST_AUTO_TEST_CASE(coinciding_decimal_velocity_changes_stay_in_intervals)
       Check_answer a = same_answers(scene, o, "coinciding decimal velocity changes");
       BOOST_TEST(a.collide == (s == Semantics::closed));
       BOOST_TEST(a.stats.exact_fallbacks == 0u);
-      BOOST_TEST(a.stats.exact_sweep_ties == 1u);
-      if (s == Semantics::regularised) BOOST_TEST(a.stats.candidate_pairs == 0u);
-      else if (convex_lp) BOOST_TEST((a.stats.convex_exact_signs > 0u && a.stats.convex_rational == 0u));
-      else BOOST_TEST(a.stats.exact_region_stages > 0u);
+      BOOST_TEST(a.stats.exact_sweep_ties == (s == Semantics::regularised ? 1u : 0u));
+      BOOST_TEST(a.stats.candidate_pairs == (s == Semantics::regularised ? 0u : 1u));
+      if (s == Semantics::closed && convex_lp)
+        BOOST_TEST((a.stats.convex_exact_signs > 0u && a.stats.convex_rational == 0u));
+      if (s == Semantics::closed && !convex_lp) BOOST_TEST(a.stats.exact_region_stages > 0u);
     }
 }
 
@@ -405,11 +407,12 @@ BOOST_AUTO_TEST_CASE(contact_families_match_rational)
   // programs in rationals whole (convex_rational) remain only as the
   // fallback for a sign outside them, which these families no longer reach.
   BOOST_TEST(convex_ties > cases / 200);
-  // Both ways out of a sweep tie (Filtered_runner::drop_apart_ties) are
-  // held to rationals: touching boxes (a contact under a rotation) dropped,
-  // and boxes that meet kept.
+  // Both ways out of a regularised sweep tie (Filtered_runner::
+  // drop_apart_ties) are held to rationals: touching boxes (a contact under
+  // a rotation) dropped, and boxes that overlap kept (rarer: about 4 in
+  // 1000). Closed semantics keeps its ties unexamined.
   BOOST_TEST(ties_dropped > cases / 50);
-  BOOST_TEST(ties_kept > cases / 50);
+  if (cases >= 1000) BOOST_TEST(ties_kept > 0u);
 }
 
 // General position: intervals certify every decision, and the interval run
