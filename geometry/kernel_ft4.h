@@ -53,24 +53,35 @@ FT minor2(const Vector4<FT>& a, const Vector4<FT>& b, int i, int j)
 // The generalised cross product of three 4-vectors: the vector g with
 // g.x = det(a, b, c, x) for every x, hence orthogonal to a, b and c, and zero
 // exactly when they are dependent (Appendix A without Gram-Schmidt).
+// In rationals, the same numbers over integer numerators, reduced once
+// (numbers/Rational.h, generalised_cross_of_rationals).
 template <class FT>
 Vector4<FT> generalised_cross(const Vector4<FT>& a, const Vector4<FT>& b, const Vector4<FT>& c)
 {
-  // Laplace expansion along the last row x: g_k = (-1)^(k+3) * M_k, with M_k
-  // the 3x3 minor of (a, b, c) without column k.
-  FT m01 = minor2(a, b, 0, 1), m02 = minor2(a, b, 0, 2), m03 = minor2(a, b, 0, 3);
-  FT m12 = minor2(a, b, 1, 2), m13 = minor2(a, b, 1, 3), m23 = minor2(a, b, 2, 3);
-  FT M0 = c[1] * m23 - c[2] * m13 + c[3] * m12;   // columns 1,2,3
-  FT M1 = c[0] * m23 - c[2] * m03 + c[3] * m02;   // columns 0,2,3
-  FT M2 = c[0] * m13 - c[1] * m03 + c[3] * m01;   // columns 0,1,3
-  FT M3 = c[0] * m12 - c[1] * m02 + c[2] * m01;   // columns 0,1,2
-  return {-M0, M1, -M2, M3};
+  if constexpr (std::is_same_v<FT, Rational>) {
+    Vector4<FT> g;
+    generalised_cross_of_rationals(a.data(), b.data(), c.data(), g.data());
+    return g;
+  } else {
+    // Laplace expansion along the last row x: g_k = (-1)^(k+3) * M_k, with
+    // M_k the 3x3 minor of (a, b, c) without column k.
+    FT m01 = minor2(a, b, 0, 1), m02 = minor2(a, b, 0, 2), m03 = minor2(a, b, 0, 3);
+    FT m12 = minor2(a, b, 1, 2), m13 = minor2(a, b, 1, 3), m23 = minor2(a, b, 2, 3);
+    FT M0 = c[1] * m23 - c[2] * m13 + c[3] * m12;   // columns 1,2,3
+    FT M1 = c[0] * m23 - c[2] * m03 + c[3] * m02;   // columns 0,2,3
+    FT M2 = c[0] * m13 - c[1] * m03 + c[3] * m01;   // columns 0,1,3
+    FT M3 = c[0] * m12 - c[1] * m02 + c[2] * m01;   // columns 0,1,2
+    return {-M0, M1, -M2, M3};
+  }
 }
 
 template <class FT>
 FT determinant4(const Vector4<FT>& a, const Vector4<FT>& b, const Vector4<FT>& c, const Vector4<FT>& d)
 {
-  return dot(generalised_cross(a, b, c), d);
+  if constexpr (std::is_same_v<FT, Rational>)
+    return determinant4_of_rationals(a.data(), b.data(), c.data(), d.data());
+  else
+    return dot(generalised_cross(a, b, c), d);
 }
 
 // p + s * d

@@ -77,12 +77,24 @@ void coprime_integers(const Rational* x, std::size_t n, mpz_class* out);
 // operation. Throws std::logic_error when the matrix is singular.
 void solve_regular(const Rational* m, std::size_t n, Rational* x);
 
+// num / den in lowest terms (den not zero, of either sign).
+Rational quotient_of_integers(const mpz_class& num, const mpz_class& den);
+
 // sum a[i] b[i], exactly. mpq_mul and mpq_add take gcds to keep each
 // partial result in lowest terms, most of a rational dot product's cost;
 // here the products and sums are kept as unreduced fractions of GMP
 // integers (one common denominator while the terms share it, as a rotated
 // or scaled vector's coordinates do) and reduced once at the end.
 Rational sum_of_products(const Rational* a, const Rational* b, std::size_t n);
+
+// The generalised cross product of the 4-vectors a, b, c
+// (geometry/kernel_ft4.h), into out[0..4), and det(a, b, c, d): the same
+// numbers as the formulas in rationals, computed on each vector written
+// over its own common denominator (integer numerators X / d), as an integer
+// cross product or determinant divided once by the product of the d's, in
+// place of a gcd per product and sum.
+void generalised_cross_of_rationals(const Rational* a, const Rational* b, const Rational* c, Rational* out);
+Rational determinant4_of_rationals(const Rational* a, const Rational* b, const Rational* c, const Rational* d);
 
 // The largest multiple of 2^-bits at or below q (bits >= 0).
 Rational floor_to_grid(const Rational& q, int bits);

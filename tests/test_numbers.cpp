@@ -359,6 +359,56 @@ BOOST_AUTO_TEST_CASE(rational_orientation_is_the_determinants_sign)
   BOOST_TEST((signs[0] > 500 && signs[1] >= 500 && signs[2] > 500));   // each sign met
 }
 
+// generalised_cross and determinant4 in rationals (numbers/Rational.h: each
+// vector over its own common denominator, the cross product or determinant
+// in integers, reduced once) are the very numbers of the formulas in
+// kernel_ft4.h, held to those formulas computed in GMP's mpq_class, a
+// second rational type that takes the generic path: hand-worked cases,
+// then seeded random vectors, a quarter of them dependent.
+BOOST_AUTO_TEST_CASE(rational_cross_and_determinant_are_the_formulas)
+{
+  using V = Vector4<Rational>;
+  using W = Vector4<mpq_class>;
+  V a{q("1/2"), q("0"), q("0"), q("0")}, b{q("0"), q("1/3"), q("0"), q("0")}, c{q("0"), q("0"), q("-1/5"), q("0")},
+      d{q("0"), q("0"), q("0"), q("7")};
+  // g.x = det(a, b, c, x) = (1/2)(1/3)(-1/5) x_3.
+  BOOST_TEST((generalised_cross(a, b, c) == V{q("0"), q("0"), q("0"), q("-1/30")}));
+  BOOST_TEST(determinant4(a, b, c, d) == q("-7/30"));
+  BOOST_TEST(determinant4(b, a, c, d) == q("7/30"));   // one swap
+  V sum{q("1/2"), q("1/3"), q("0"), q("0")};           // a + b: dependent
+  BOOST_TEST(determinant4(a, b, c, sum) == q("0"));
+  BOOST_TEST((generalised_cross(a, b, sum) == V{q("0"), q("0"), q("0"), q("0")}));
+
+  std::uint64_t seed = 20261130;
+  BOOST_TEST_MESSAGE("rational cross and determinant: seed " << seed);
+  std::mt19937_64 rng(seed);
+  auto random_rational = [&] {
+    if (rng() % 4 == 0) return Rational(0);
+    Rational x(static_cast<long>(rng() % 2000001) - 1000000);
+    return x / Rational(static_cast<long>(1 + rng() % 100000));
+  };
+  auto wide = [](const V& v) {
+    W w;
+    for (int j = 0; j < 4; ++j) w[j] = mpq_class(v[j].mpq());
+    return w;
+  };
+  int zeros = 0;
+  for (int i = 0; i < 2000; ++i) {
+    V r[4];
+    for (auto& row : r)
+      for (auto& v : row) v = random_rational();
+    if (i % 4 == 0)   // a dependent fourth row: r3 = x r0 - y r1
+      for (int j = 0; j < 4; ++j) r[3][j] = Rational(3, 7) * r[0][j] - Rational(5, 2) * r[1][j];
+    V g = generalised_cross(r[0], r[1], r[2]);
+    W h = generalised_cross(wide(r[0]), wide(r[1]), wide(r[2]));
+    BOOST_TEST((wide(g) == h), "cross " << i);
+    Rational det = determinant4(r[0], r[1], r[2], r[3]);
+    BOOST_TEST((mpq_class(det.mpq()) == dot(h, wide(r[3]))), "determinant " << i);
+    zeros += det == 0;
+  }
+  BOOST_TEST(zeros >= 500);   // the dependent rows are found dependent
+}
+
 // coprime_integers (the rational kernel's ring and lowest terms): one
 // positive factor makes the numbers coprime integers; hand-worked cases,
 // then seeded random ones held to that definition.
