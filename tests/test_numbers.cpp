@@ -36,6 +36,26 @@ static_assert(is_kernel_v<Rational_kernel> && is_kernel_v<Interval_kernel> && is
 static_assert(!is_kernel_v<Wrong_type>, "a member of the wrong type must not pass the concept");
 static_assert(!is_kernel_v<Missing_to_stat>, "a kernel without to_stat must not pass the concept");
 static_assert(is_kernel_v<Complete>, "adding the member makes it a kernel");
+
+// Four seeded random rows of rationals n / d, |n| <= numerators and
+// 1 <= d <= denominators, a quarter of the entries zero; the fourth row
+// r3 = (3/7) r0 - (5/2) r1 (dependent) when `dependent`.
+std::array<Vector4<Rational>, 4> random_rows(std::mt19937_64& rng, long numerators, long denominators, bool dependent)
+{
+  std::array<Vector4<Rational>, 4> r;
+  for (auto& row : r)
+    for (auto& v : row) {
+      if (rng() % 4 == 0) {
+        v = Rational(0);
+        continue;
+      }
+      Rational x(static_cast<long>(rng() % static_cast<unsigned long>(2 * numerators + 1)) - numerators);
+      v = x / Rational(static_cast<long>(1 + rng() % static_cast<unsigned long>(denominators)));
+    }
+  if (dependent)
+    for (int j = 0; j < 4; ++j) r[3][j] = Rational(3, 7) * r[0][j] - Rational(5, 2) * r[1][j];
+  return r;
+}
 } // namespace
 
 static Rational q(const std::string& text)
@@ -340,18 +360,9 @@ BOOST_AUTO_TEST_CASE(rational_orientation_is_the_determinants_sign)
   std::uint64_t seed = 20261128;
   BOOST_TEST_MESSAGE("rational orientation4: seed " << seed);
   std::mt19937_64 rng(seed);
-  auto random_rational = [&] {
-    if (rng() % 4 == 0) return Rational(0);
-    Rational x(static_cast<long>(rng() % 20001) - 10000);
-    return x / Rational(static_cast<long>(1 + rng() % 1000));
-  };
   int signs[3] = {0, 0, 0};
   for (int i = 0; i < 2000; ++i) {
-    V r[4];
-    for (auto& row : r)
-      for (auto& v : row) v = random_rational();
-    if (i % 4 == 0)   // a dependent fourth row: r3 = x r0 - y r1
-      for (int j = 0; j < 4; ++j) r[3][j] = Rational(3, 7) * r[0][j] - Rational(5, 2) * r[1][j];
+    std::array<V, 4> r = random_rows(rng, 10000, 1000, i % 4 == 0);
     CGAL::Sign expected = CGAL::sign(determinant4(r[0], r[1], r[2], r[3]));
     BOOST_TEST(k.orientation4(r[0], r[1], r[2], r[3]) == expected, "rows " << i);
     ++signs[expected + 1];
@@ -382,11 +393,6 @@ BOOST_AUTO_TEST_CASE(rational_cross_and_determinant_are_the_formulas)
   std::uint64_t seed = 20261130;
   BOOST_TEST_MESSAGE("rational cross and determinant: seed " << seed);
   std::mt19937_64 rng(seed);
-  auto random_rational = [&] {
-    if (rng() % 4 == 0) return Rational(0);
-    Rational x(static_cast<long>(rng() % 2000001) - 1000000);
-    return x / Rational(static_cast<long>(1 + rng() % 100000));
-  };
   auto wide = [](const V& v) {
     W w;
     for (int j = 0; j < 4; ++j) w[j] = mpq_class(v[j].mpq());
@@ -394,11 +400,7 @@ BOOST_AUTO_TEST_CASE(rational_cross_and_determinant_are_the_formulas)
   };
   int zeros = 0;
   for (int i = 0; i < 2000; ++i) {
-    V r[4];
-    for (auto& row : r)
-      for (auto& v : row) v = random_rational();
-    if (i % 4 == 0)   // a dependent fourth row: r3 = x r0 - y r1
-      for (int j = 0; j < 4; ++j) r[3][j] = Rational(3, 7) * r[0][j] - Rational(5, 2) * r[1][j];
+    std::array<V, 4> r = random_rows(rng, 1000000, 100000, i % 4 == 0);
     V g = generalised_cross(r[0], r[1], r[2]);
     W h = generalised_cross(wide(r[0]), wide(r[1]), wide(r[2]));
     BOOST_TEST((wide(g) == h), "cross " << i);
