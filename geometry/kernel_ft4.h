@@ -53,15 +53,23 @@ FT minor2(const Vector4<FT>& a, const Vector4<FT>& b, int i, int j)
 // The generalised cross product of three 4-vectors: the vector g with
 // g.x = det(a, b, c, x) for every x, hence orthogonal to a, b and c, and zero
 // exactly when they are dependent (Appendix A without Gram-Schmidt).
-// In rationals, the same numbers over integer numerators, reduced once
-// (numbers/Rational.h, generalised_cross_of_rationals).
+// In rationals, the same numbers without a gcd per product and sum: g is
+// linear in each argument, so with a = A / da (integers over a common
+// denominator, numbers/Rational.h) and likewise b, c, g(a, b, c) =
+// g(A, B, C) / (da db dc), computed in GMP integers and reduced once.
 template <class FT>
 Vector4<FT> generalised_cross(const Vector4<FT>& a, const Vector4<FT>& b, const Vector4<FT>& c)
 {
   if constexpr (std::is_same_v<FT, Rational>) {
-    Vector4<FT> g;
-    generalised_cross_of_rationals(a.data(), b.data(), c.data(), g.data());
-    return g;
+    Vector4<mpz_class> A, B, C;
+    mpz_class da, db, dc;
+    over_common_denominator(a.data(), 4, A.data(), da);
+    over_common_denominator(b.data(), 4, B.data(), db);
+    over_common_denominator(c.data(), 4, C.data(), dc);
+    Vector4<mpz_class> G = generalised_cross(A, B, C);
+    mpz_class den = da * db * dc;
+    return {quotient_of_integers(G[0], den), quotient_of_integers(G[1], den), quotient_of_integers(G[2], den),
+            quotient_of_integers(G[3], den)};
   } else {
     // Laplace expansion along the last row x: g_k = (-1)^(k+3) * M_k, with
     // M_k the 3x3 minor of (a, b, c) without column k.
@@ -75,13 +83,19 @@ Vector4<FT> generalised_cross(const Vector4<FT>& a, const Vector4<FT>& b, const 
   }
 }
 
+// In rationals, as generalised_cross: det(A, B, C, D) / (da db dc dd).
 template <class FT>
 FT determinant4(const Vector4<FT>& a, const Vector4<FT>& b, const Vector4<FT>& c, const Vector4<FT>& d)
 {
-  if constexpr (std::is_same_v<FT, Rational>)
-    return determinant4_of_rationals(a.data(), b.data(), c.data(), d.data());
-  else
+  if constexpr (std::is_same_v<FT, Rational>) {
+    std::array<Vector4<mpz_class>, 4> X;
+    std::array<mpz_class, 4> den;
+    const Vector4<FT>* rows[4] = {&a, &b, &c, &d};
+    for (int i = 0; i < 4; ++i) over_common_denominator(rows[i]->data(), 4, X[i].data(), den[i]);
+    return quotient_of_integers(determinant4(X[0], X[1], X[2], X[3]), mpz_class(den[0] * den[1] * den[2] * den[3]));
+  } else {
     return dot(generalised_cross(a, b, c), d);
+  }
 }
 
 // p + s * d

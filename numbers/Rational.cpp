@@ -1,5 +1,4 @@
 #include "numbers/Rational.h"
-#include "geometry/kernel_ft4.h"
 
 #include <mpfr.h>
 #include <stdexcept>
@@ -62,45 +61,16 @@ void coprime_integers(const Rational* x, std::size_t n, mpz_class* out)
   for (std::size_t i = 0; i < n; ++i) mpz_divexact(out[i].get_mpz_t(), out[i].get_mpz_t(), gcd.get_mpz_t());
 }
 
-namespace {
-// x[0..4) as X[i] / d, d > 0 the lcm of their denominators (a gcd only
-// where the lcm does not already hold a denominator, as coprime_integers).
-void over_common_denominator(const Rational* x, Vector4<mpz_class>& X, mpz_class& d)
+void over_common_denominator(const Rational* x, std::size_t n, mpz_class* X, mpz_class& d)
 {
   d = 1;
-  for (int i = 0; i < 4; ++i)
+  for (std::size_t i = 0; i < n; ++i)
     if (!mpz_divisible_p(d.get_mpz_t(), mpq_denref(x[i].mpq())))
       mpz_lcm(d.get_mpz_t(), d.get_mpz_t(), mpq_denref(x[i].mpq()));
-  for (int i = 0; i < 4; ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     mpz_divexact(X[i].get_mpz_t(), d.get_mpz_t(), mpq_denref(x[i].mpq()));
     mpz_mul(X[i].get_mpz_t(), X[i].get_mpz_t(), mpq_numref(x[i].mpq()));
   }
-}
-} // namespace
-
-// g(a, b, c) is linear in each argument: g(A/da, B/db, C/dc) =
-// g(A, B, C) / (da db dc); det likewise with dd.
-void generalised_cross_of_rationals(const Rational* a, const Rational* b, const Rational* c, Rational* out)
-{
-  Vector4<mpz_class> A, B, C;
-  mpz_class da, db, dc;
-  over_common_denominator(a, A, da);
-  over_common_denominator(b, B, db);
-  over_common_denominator(c, C, dc);
-  Vector4<mpz_class> g = generalised_cross(A, B, C);
-  mpz_class den = da * db * dc;
-  for (int i = 0; i < 4; ++i) out[i] = quotient_of_integers(g[i], den);
-}
-
-Rational determinant4_of_rationals(const Rational* a, const Rational* b, const Rational* c, const Rational* d)
-{
-  Vector4<mpz_class> A, B, C, D;
-  mpz_class da, db, dc, dd;
-  over_common_denominator(a, A, da);
-  over_common_denominator(b, B, db);
-  over_common_denominator(c, C, dc);
-  over_common_denominator(d, D, dd);
-  return quotient_of_integers(determinant4(A, B, C, D), mpz_class(da * db * dc * dd));
 }
 
 void scale_to_coprime_integers(Rational* x, std::size_t n)

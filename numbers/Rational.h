@@ -87,14 +87,11 @@ Rational quotient_of_integers(const mpz_class& num, const mpz_class& den);
 // or scaled vector's coordinates do) and reduced once at the end.
 Rational sum_of_products(const Rational* a, const Rational* b, std::size_t n);
 
-// The generalised cross product of the 4-vectors a, b, c
-// (geometry/kernel_ft4.h), into out[0..4), and det(a, b, c, d): the same
-// numbers as the formulas in rationals, computed on each vector written
-// over its own common denominator (integer numerators X / d), as an integer
-// cross product or determinant divided once by the product of the d's, in
-// place of a gcd per product and sum.
-void generalised_cross_of_rationals(const Rational* a, const Rational* b, const Rational* c, Rational* out);
-Rational determinant4_of_rationals(const Rational* a, const Rational* b, const Rational* c, const Rational* d);
+// x[0..n) as X[i] / d, d > 0 the lcm of their denominators (a gcd only
+// where the lcm does not already hold a denominator, as in
+// coprime_integers): the same numbers over integer numerators, for
+// formulas linear in each vector (geometry/kernel_ft4.h, determinants).
+void over_common_denominator(const Rational* x, std::size_t n, mpz_class* X, mpz_class& d);
 
 // The largest multiple of 2^-bits at or below q (bits >= 0).
 Rational floor_to_grid(const Rational& q, int bits);
