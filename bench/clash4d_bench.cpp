@@ -13,6 +13,9 @@
 // values), the nearest public stand-in for a set of user contact scenes
 // (--dump-random writes them too, as DIR/fuzz-I.json); --dump-random writes the random scenes to DIR/random-I.json (to rerun one
 // with `clash4d check --stats`); --scene times one scene file alone (to profile it).
+// A row whose double answer is wrong says so: "(double differs)", or
+// "(double unverified)" for the same verdict with a witness that fails the
+// check against the scene.
 #include "bench/Fixtures.h"
 #include "bench/Timing.h"
 #include "compare/Contact_families.h"
@@ -51,6 +54,18 @@ struct Means {
   }
 };
 
+// How double's answer compares with exact's: a verdict that differs, or
+// the same "collide" with a witness that fails the check against the scene
+// (the ratio then compares exact with a wrong answer either way).
+const char* double_note(const Scene& scene, const Check_options& opts, bool exact_collides)
+{
+  Check_answer d = check_double(scene, 0, opts);
+  if (d.collide != exact_collides) return " (double differs)";
+  for (const Pair_answer& p : d.pairs)
+    if (!p.witness_verified) return " (double unverified)";
+  return "";
+}
+
 void row(const std::string& name, const Scene& scene, double min_seconds, Means& means,
          Check_options opts = Check_options())
 {
@@ -71,8 +86,8 @@ void row(const std::string& name, const Scene& scene, double min_seconds, Means&
   std::printf("%-58s %11.1f %11.1f %11.1f %8.2f %8.2f %11.1f %11.1f %8.2f  %s%s%s | %s%s\n", name.c_str(),
               e.seconds_per_query * 1e6, r.seconds_per_query * 1e6, d.seconds_per_query * 1e6, ratio, rational_ratio,
               ce.seconds_per_query * 1e6, cd.seconds_per_query * 1e6, closed_ratio, e.collide ? "collide" : "no",
-              e.collide == d.collide ? "" : " (double differs)", e.collide == r.collide ? "" : " (RATIONAL DIFFERS)",
-              ce.collide ? "meet" : "apart", ce.collide == cd.collide ? "" : " (double differs)");
+              double_note(scene, opts, e.collide), e.collide == r.collide ? "" : " (RATIONAL DIFFERS)",
+              ce.collide ? "meet" : "apart", double_note(scene, closed, ce.collide));
 }
 
 } // namespace
