@@ -43,26 +43,11 @@ bool is_exact_dyadic(const Rational& q, int bits)
          (mpz_sgn(num) == 0 || mpz_sizeinbase(num, 2) <= 53);
 }
 
-void coprime_integers(const Rational* x, std::size_t n, mpz_class* out)
+void over_common_denominator(const Rational* x, std::size_t n, mpz_class* X, mpz_class& d)
 {
   // A gcd only where it can change the result: a denominator the lcm
   // already holds (1, or one shared with an earlier number, as a plane's
-  // often is) leaves it, and once the gcd is 1 it stays 1.
-  mpz_class lcm = 1, gcd = 0;
-  for (std::size_t i = 0; i < n; ++i)
-    if (!mpz_divisible_p(lcm.get_mpz_t(), mpq_denref(x[i].mpq())))
-      mpz_lcm(lcm.get_mpz_t(), lcm.get_mpz_t(), mpq_denref(x[i].mpq()));
-  for (std::size_t i = 0; i < n; ++i) {
-    mpz_divexact(out[i].get_mpz_t(), lcm.get_mpz_t(), mpq_denref(x[i].mpq()));
-    mpz_mul(out[i].get_mpz_t(), out[i].get_mpz_t(), mpq_numref(x[i].mpq()));
-    if (gcd != 1) mpz_gcd(gcd.get_mpz_t(), gcd.get_mpz_t(), out[i].get_mpz_t());
-  }
-  if (sgn(gcd) == 0 || gcd == 1) return;
-  for (std::size_t i = 0; i < n; ++i) mpz_divexact(out[i].get_mpz_t(), out[i].get_mpz_t(), gcd.get_mpz_t());
-}
-
-void over_common_denominator(const Rational* x, std::size_t n, mpz_class* X, mpz_class& d)
-{
+  // often is) leaves it.
   d = 1;
   for (std::size_t i = 0; i < n; ++i)
     if (!mpz_divisible_p(d.get_mpz_t(), mpq_denref(x[i].mpq())))
@@ -71,6 +56,15 @@ void over_common_denominator(const Rational* x, std::size_t n, mpz_class* X, mpz
     mpz_divexact(X[i].get_mpz_t(), d.get_mpz_t(), mpq_denref(x[i].mpq()));
     mpz_mul(X[i].get_mpz_t(), X[i].get_mpz_t(), mpq_numref(x[i].mpq()));
   }
+}
+
+void coprime_integers(const Rational* x, std::size_t n, mpz_class* out)
+{
+  mpz_class d, gcd = 0;
+  over_common_denominator(x, n, out, d);
+  for (std::size_t i = 0; i < n && gcd != 1; ++i) mpz_gcd(gcd.get_mpz_t(), gcd.get_mpz_t(), out[i].get_mpz_t());
+  if (sgn(gcd) == 0 || gcd == 1) return;   // once the gcd is 1 it stays 1
+  for (std::size_t i = 0; i < n; ++i) mpz_divexact(out[i].get_mpz_t(), out[i].get_mpz_t(), gcd.get_mpz_t());
 }
 
 void scale_to_coprime_integers(Rational* x, std::size_t n)
