@@ -362,16 +362,12 @@ public:
     typename Exact_span<Runner>::Lines& lines = conquer_lines(g);
     if (!lines.exact()) throw CGAL::Uncertain_conversion_exception("a tie on a widened region");
     const auto& e = lines.conquer();
-    const EK& ek = runner_->ek_;
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-    // On the planes in EK's ring (positive multiples: num and den scale by
-    // one positive factor, the same time), without a gcd per product.
-    std::array<typename EK::RT, 2> time = meeting_time(ek.in_ring(e.plane(line[0])), ek.in_ring(e.plane(line[1])),
-                                                       ek.in_ring(e.plane(line[2])), ek.in_ring(e.plane(p)));
-    if (ek.sign(time[1]) == CGAL::ZERO)
-      throw CGAL::Uncertain_conversion_exception("a tie where the planes meet in no point");
+    std::array<EFT, 2> time = meeting_time(e.plane(line[0]), e.plane(line[1]), e.plane(line[2]), e.plane(p));
+    CGAL::Sign den = runner_->ek_.sign(time[1]);
+    if (den == CGAL::ZERO) throw CGAL::Uncertain_conversion_exception("a tie where the planes meet in no point");
     ++stats_->exact_ties;
-    return exact_goal.can_improve(ek, ek.ring_quotient(time[0], time[1]));
+    return exact_goal.can_improve(runner_->ek_, runner_->ek_.quotient(time[0], time[1], den));
   }
   // Two cuts of a line the intervals cannot order (several planes through
   // one point the intervals only enclose: the contact vertex, a decimal

@@ -62,7 +62,6 @@ public:
     return sign(RT(determinant4(m[0], m[1], m[2], m[3])));
   }
   CGAL::Sign sign(const RT& x) const { return CGAL::Sign(sgn(x)); }
-  FT ring_quotient(const RT& num, const RT& den) const { return quotient_of_integers(num, den); }
   Hyperplane4<RT> in_ring(const Hyperplane4<FT>& h) const
   {
     const Rational x[5] = {h.n[0], h.n[1], h.n[2], h.n[3], h.c};

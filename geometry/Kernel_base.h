@@ -123,10 +123,6 @@ public:
   // The same in the ring RT, for division-free elimination.
   Hyperplane4<RT> in_ring(const Hyperplane4<FT>& h) const { return derived().in_lowest_terms(h); }
 
-  // num / den in FT for ring numbers (den not zero): a quotient of values
-  // made in the ring, such as a meeting time's two determinants.
-  FT ring_quotient(const RT& num, const RT& den) const { return num / den; }
-
   // The solution of the N x N system [M | rhs] whose matrix is known
   // regular, by elimination with the largest pivot the kernel sees (any
   // pivot gives the same exact solution; the largest keeps an approximate

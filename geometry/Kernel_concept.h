@@ -42,8 +42,7 @@
 // of a hyperplane in the kernel's cheapest numbers: the rational kernel's
 // coprime integers; others the plane itself), K::RT and in_ring (the same
 // in a ring for division-free elimination, with k.sign on it: the rational
-// kernel's GMP integers; others FT), ring_quotient (num / den of ring
-// numbers, in FT), solve_regular (a regular linear
+// kernel's GMP integers; others FT), solve_regular (a regular linear
 // system's solution: elimination, fraction-free in the rational kernel).
 //
 // Optional:
