@@ -68,6 +68,42 @@ public:
     return any_pair(model, roots, i, j, [&](const Box4& a, const Box4& b) { return overlaps(a, b); });
   }
 
+  // Object i's displacement along axis q over a sub-span, motion segment
+  // seg there: its least and greatest value, at the span's ends (the
+  // motion is linear on the segment). A swept box's side is its root's
+  // side plus one of them.
+  std::pair<FT, FT> moved(const Scene_model<K>& model, int i, std::size_t seg, const Time_span<FT>& span, int q) const
+  {
+    const auto& m = model.objects[i].motion;
+    const FT &v = m.velocity[seg][q], &o = m.offset[seg][q];
+    // At rest along q (certainly: intervals never throw here): no product,
+    // which in rationals is an allocation each.
+    if (CGAL::certainly(k_.uncertain_sign(v) == CGAL::ZERO)) return {o, o};
+    FT d0 = v * span.lo + o, d1 = v * span.hi + o;
+    return {Number_ops<FT>::lower(d0, d1), Number_ops<FT>::upper(d0, d1)};
+  }
+  // Object i's box on a sub-span: its root (in its own frame) moved over
+  // the motion's segment there.
+  Box4 swept(const Scene_model<K>& model, int i, const Box<FT, 3>& root, const Time_span<FT>& span) const
+  {
+    std::size_t seg = model.segment_on(i, span);
+    Box4 b;
+    for (int q = 0; q < 3; ++q) {
+      auto [dlo, dhi] = moved(model, i, seg, span, q);
+      b.has_lo[q] = root.has_lo[q];
+      b.has_hi[q] = root.has_hi[q];
+      if (root.has_lo[q]) b.lo[q] = root.lo[q] + dlo;
+      if (root.has_hi[q]) b.hi[q] = root.hi[q] + dhi;
+    }
+    b.set(3, span.lo, span.hi);
+    return b;
+  }
+  // opens_past's test on the difference of a's upper and b's lower side.
+  bool opens(const FT& hi_minus_lo) const
+  {
+    return closed_ ? k_.possibly_nonnegative(hi_minus_lo) : k_.possibly_positive(hi_minus_lo);
+  }
+
 private:
   const K& k_;
   bool closed_;
@@ -92,21 +128,7 @@ private:
   void add_boxes(const Scene_model<K>& model, int i, const Box<FT, 3>& root, std::vector<Item>& items) const
   {
     if (root.empty) return;
-    for (const auto& span : model.sub_spans({i})) {
-      std::size_t seg = model.segment_on(i, span);
-      const auto& m = model.objects[i].motion;
-      Box4 b;
-      for (int q = 0; q < 3; ++q) {
-        FT d0 = m.velocity[seg][q] * span.lo + m.offset[seg][q], d1 = m.velocity[seg][q] * span.hi + m.offset[seg][q];
-        FT dlo = Number_ops<FT>::lower(d0, d1), dhi = Number_ops<FT>::upper(d0, d1);
-        b.has_lo[q] = root.has_lo[q];
-        b.has_hi[q] = root.has_hi[q];
-        if (root.has_lo[q]) b.lo[q] = root.lo[q] + dlo;
-        if (root.has_hi[q]) b.hi[q] = root.hi[q] + dhi;
-      }
-      b.set(3, span.lo, span.hi);
-      items.push_back({i, b});
-    }
+    for (const auto& span : model.sub_spans({i})) items.push_back({i, swept(model, i, root, span)});
   }
 
   // a's interval on axis q extends strictly past the start of b's (closed:
@@ -114,7 +136,7 @@ private:
   bool opens_past(const Box4& a, const Box4& b, int q) const
   {
     if (!a.has_hi[q] || !b.has_lo[q]) return true;
-    return closed_ ? k_.possibly_nonnegative(a.hi[q] - b.lo[q]) : k_.possibly_positive(a.hi[q] - b.lo[q]);
+    return opens(a.hi[q] - b.lo[q]);
   }
   bool overlaps(const Box4& a, const Box4& b) const
   {

@@ -30,6 +30,7 @@
 #include "check/Check_runner.h"
 #include "exact/Interval_filter.h"
 #include "exact/Lazy_once.h"
+#include "exact/Sweep_tie.h"
 #include "exact/Trail_replay.h"
 #include "search/Apart_pieces.h"
 #include <CGAL/Uncertain.h>
@@ -124,6 +125,7 @@ public:
 private:
   template <class Runner> friend class Exact_span;
   template <class Runner> friend class Interval_filter;
+  template <class Runner> friend class Sweep_tie;
   static constexpr const char* EK_name = "exact";
 
   // One pair: the interval run, then, when it could not decide or could not
@@ -429,25 +431,34 @@ private:
   {
     if (semantics == Semantics::closed || std::find(certain.begin(), certain.end(), 0) == certain.end()) return;
     auto start = std::chrono::steady_clock::now();
-    std::vector<Box<EFT, 3>> eroots(scene_.objects.size());   // each made as a tie needs it
-    std::vector<char> made(scene_.objects.size(), 0);
+    Sweep_tie<Filtered_runner> ties(*this);
     std::vector<std::pair<int, int>> kept;
     for (std::size_t p = 0; p < pairs.size(); ++p) {
       auto [i, j] = pairs[p];
       if (!certain[p]) {
         ++stats.exact_sweep_ties;
-        for (int o : {i, j})
-          if (!made[static_cast<std::size_t>(o)]) {
-            eroots[static_cast<std::size_t>(o)] = exact_root(o);
-            made[static_cast<std::size_t>(o)] = 1;
-          }
-        if (!Pair_sweep<EK>(ek_, false).meets(emodel_, eroots, i, j)) continue;
+        if (!tie_meets(ties, i, j)) continue;
       }
       kept.emplace_back(i, j);
     }
     stats.candidate_pairs = kept.size();
     stats.seconds_sweep += seconds_since(start);
     pairs = std::move(kept);
+  }
+
+  // A tie's pair on exact sides (Sweep_tie); where the intervals cannot
+  // even make the boxes, on EK's whole boxes (Pair_sweep::meets).
+  bool tie_meets(Sweep_tie<Filtered_runner>& ties, int i, int j)
+  {
+    try {
+      return ties.meets(i, j);
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      ++fallbacks_;
+    }
+    std::vector<Box<EFT, 3>> eroots(scene_.objects.size());
+    eroots[static_cast<std::size_t>(i)] = exact_root(i);
+    eroots[static_cast<std::size_t>(j)] = exact_root(j);
+    return Pair_sweep<EK>(ek_, false).meets(emodel_, eroots, i, j);
   }
 
   typename S_bounds<AK>::Bounds settle(int i, Check_stats& stats)

@@ -48,6 +48,8 @@ struct Affine3 {
     for (int i = 0; i < 3; ++i) r[i] += b[i];
     return r;
   }
+  // Coordinate q of apply(v) alone.
+  FT apply(const Vector3<FT>& v, int q) const { return (linear_identity ? v[q] : dot(R[q], v)) + b[q]; }
   // The image of n.x + d <= 0: (R n).y + d - (R n).b <= 0, using R^-1 = R^T.
   Plane3<FT> apply(const Plane3<FT>& p) const
   {
@@ -55,18 +57,22 @@ struct Affine3 {
     return {n[0], n[1], n[2], p[3] - dot(n, b)};
   }
   // this o (x -> M x + t); M_identity: M = I (a translation).
+  // Made from its parts, not assigned into a default one: in rationals
+  // every default number is an allocation of its own.
   Affine3 then_local(const std::array<Vector3<FT>, 3>& M, const Vector3<FT>& t, bool M_identity = false) const
   {
-    Affine3 r;
-    if (M_identity || linear_identity) {
-      r.R = M_identity ? R : M;
-      r.linear_identity = M_identity && linear_identity;
-    } else {
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) r.R[i][j] = R[i][0] * M[0][j] + R[i][1] * M[1][j] + R[i][2] * M[2][j];
-    }
-    r.b = apply(t);
+    Affine3 r{M_identity ? R : linear_identity ? M : times(M), apply(t)};
+    r.linear_identity = M_identity && linear_identity;
     return r;
+  }
+  std::array<Vector3<FT>, 3> times(const std::array<Vector3<FT>, 3>& M) const
+  {
+    auto row = [&](int i) -> Vector3<FT> {
+      return {R[i][0] * M[0][0] + R[i][1] * M[1][0] + R[i][2] * M[2][0],
+              R[i][0] * M[0][1] + R[i][1] * M[1][1] + R[i][2] * M[2][1],
+              R[i][0] * M[0][2] + R[i][1] * M[1][2] + R[i][2] * M[2][2]};
+    };
+    return {row(0), row(1), row(2)};
   }
 };
 
@@ -178,6 +184,31 @@ public:
     return boxed(s, T).box;
   }
 
+  // Vertex k of a block, hull, prism or convex solid in its own frame, in
+  // local_geometry's order, made alone: what a sweep's tie asks of the
+  // vertex the intervals cannot rule out of a box's side
+  // (exact/Sweep_tie.h), without the primitive's other vertices.
+  Vector3<FT> local_vertex(const Solid& s, std::size_t k) const
+  {
+    using K_ = Solid::Kind;
+    switch (s.kind) {
+      case K_::Block: return {num(s, k & 1 ? 3 : 0), num(s, k & 2 ? 4 : 1), num(s, k & 4 ? 5 : 2)};
+      case K_::Hull: return vec3(s, 3 * k);
+      case K_::Prism: {
+        std::size_t n = (s.numbers.size() - 2) / 2, i = k / 2;
+        return {num(s, 2 * i), num(s, 2 * i + 1), num(s, 2 * n + k % 2)};
+      }
+      case K_::Convex:
+        if (exact_read(s)) return constructed3(s, 3 * k);
+        break;
+      default:
+        break;
+    }
+    Primitive<FT> p;
+    local_geometry(s, p, false);
+    return p.vertices.at(k);
+  }
+
 private:
   Primitive<FT> primitive(const Solid& s, const Affine3<FT>& T) const
   {
@@ -248,6 +279,8 @@ private:
         break;
       }
       case K_::Convex: {
+        p.planes.reserve(s.numbers.size() / 4);
+        p.vertices.reserve(s.triples.size());
         for (std::size_t i = 0; i < s.numbers.size(); i += 4)
           p.planes.push_back({num(s, i), num(s, i + 1), num(s, i + 2), num(s, i + 3)});
         for (std::size_t i = 0; i < s.triples.size(); ++i) {
@@ -276,6 +309,8 @@ private:
         break;
       }
       case K_::Hull: {
+        p.vertices.reserve(s.numbers.size() / 3);
+        if (with_planes) p.planes.reserve(s.triples.size());
         for (std::size_t i = 0; i < s.numbers.size(); i += 3) p.vertices.push_back(vec3(s, i));
         for (std::size_t i = 0; i < s.triples.size() && with_planes; ++i) {
           const auto& t = s.triples[i];
