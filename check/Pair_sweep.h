@@ -98,11 +98,6 @@ public:
     b.set(3, span.lo, span.hi);
     return b;
   }
-  // opens_past's test on the difference of a's upper and b's lower side.
-  bool opens(const FT& hi_minus_lo) const
-  {
-    return closed_ ? k_.possibly_nonnegative(hi_minus_lo) : k_.possibly_positive(hi_minus_lo);
-  }
 
 private:
   const K& k_;
@@ -136,7 +131,7 @@ private:
   bool opens_past(const Box4& a, const Box4& b, int q) const
   {
     if (!a.has_hi[q] || !b.has_lo[q]) return true;
-    return opens(a.hi[q] - b.lo[q]);
+    return closed_ ? k_.possibly_nonnegative(a.hi[q] - b.lo[q]) : k_.possibly_positive(a.hi[q] - b.lo[q]);
   }
   bool overlaps(const Box4& a, const Box4& b) const
   {

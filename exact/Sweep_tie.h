@@ -21,7 +21,6 @@
 #include "model/Model_builder.h"
 #include <CGAL/Uncertain.h>
 #include <array>
-#include <map>
 #include <optional>
 #include <vector>
 
@@ -63,7 +62,7 @@ private:
     std::optional<Box<EFT, 3>> exact;           // the whole root in EK
     Affine3<EFT> placed;                        // a one primitive's transforms, in EK
     const Solid* solid = nullptr;               // that primitive, under them
-    std::map<int, EFT> sides;                   // 2 q + (upper side), made as asked
+    std::array<std::optional<EFT>, 6> sides;    // [2 q + upper]: made as asked
   };
   // One object's swept box on one of its sub-spans (AK's numbers).
   struct Swept {
@@ -80,7 +79,6 @@ private:
     const AK& k = r_.ak_;
     if (!k.possibly_positive(a.box->hi[q] - b.box->lo[q])) return false;
     if (!k.possibly_nonnegative(b.box->lo[q] - a.box->hi[q])) return true;
-    ++exact_sides_;
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     return r_.ek_.compare(side(a, q, true), side(b, q, false)) == CGAL::LARGER;
   }
@@ -103,8 +101,8 @@ private:
   {
     Root& r = root(i);
     if (r.exact) return upper ? r.exact->hi[q] : r.exact->lo[q];
-    auto made = r.sides.find(2 * q + upper);
-    if (made != r.sides.end()) return made->second;
+    std::optional<EFT>& made = r.sides[static_cast<std::size_t>(2 * q + upper)];
+    if (made) return *made;
     // The vertices whose enclosure reaches past every other's near side:
     // the exact extreme is one of them (each encloses its vertex).
     const auto& vs = r_.amodel_.objects[i].csg.primitives[0].vertices;
@@ -117,7 +115,8 @@ private:
       EFT x = r.placed.apply(builder.local_vertex(*r.solid, k), q);
       best = !best ? x : upper ? Number_ops<EFT>::upper(*best, x) : Number_ops<EFT>::lower(*best, x);
     }
-    return r.sides.emplace(2 * q + upper, *best).first->second;
+    made = std::move(best);
+    return *made;
   }
 
   Root& root(int i)
@@ -138,9 +137,6 @@ private:
 
   Runner& r_;
   std::vector<Root> roots_;
-
-public:
-  std::size_t exact_sides_ = 0;   // comparisons made in EK
 };
 
 } // namespace clash4d
