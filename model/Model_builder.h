@@ -65,6 +65,7 @@ struct Affine3 {
     r.linear_identity = M_identity && linear_identity;
     return r;
   }
+  // The product R M (rows), each entry made once.
   std::array<Vector3<FT>, 3> times(const std::array<Vector3<FT>, 3>& M) const
   {
     auto row = [&](int i) -> Vector3<FT> {
