@@ -8,6 +8,8 @@
 #include "model/Csg_model.h"
 #include "model/Formula.h"
 #include "model/Scene_model.h"
+#include <algorithm>
+#include <vector>
 
 namespace clash4d {
 
@@ -73,18 +75,68 @@ Vector3<typename K::FT> solid_point(const K& k, const Object_model<typename K::F
   return {p[0] - d[0], p[1] - d[1], p[2] - d[2]};
 }
 
+// The side of every plane of solid m at y, primitive after primitive
+// (Plane_sides::at(p, j)): each plane evaluated once, for the membership
+// and closure tests below.
+template <class FT>
+struct Plane_sides {
+  std::vector<CGAL::Sign> sides;
+  std::vector<std::size_t> first;   // primitive p's planes start at first[p]
+  CGAL::Sign at(int p, std::size_t j) const { return sides[first[static_cast<std::size_t>(p)] + j]; }
+
+  template <class K>
+  Plane_sides(const K& k, const Csg_model<FT>& m, const Vector3<FT>& y)
+  {
+    first.reserve(m.primitives.size());
+    for (const auto& prim : m.primitives) {
+      first.push_back(sides.size());
+      for (const auto& pl : prim.planes) sides.push_back(k.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], y));
+    }
+  }
+  // Strictly inside the solid, on none of its planes.
+  bool generic_inside(const Csg_model<FT>& m) const
+  {
+    if (std::find(sides.begin(), sides.end(), CGAL::ZERO) != sides.end()) return false;
+    return classify_with(m, [&](int p, std::size_t j) { return at(p, j); }) == Truth::True;
+  }
+};
+
 // g is strictly inside object i at its time, on none of its planes.
 template <class K>
 bool is_generic_inside(const K& k, const Scene_model<K>& model, int i, const Vector4<typename K::FT>& g)
 {
+  const Object_model<typename K::FT>& o = model.objects[i];
+  return Plane_sides<typename K::FT>(k, o.csg, solid_point(k, o, g)).generic_inside(o.csg);
+}
+
+// Whether p = (x, t) is in the closure of the cell of object i whose sides
+// are at_g: every plane of the object is zero at p or has its side there
+// (the cell is convex, so the segment from g to p minus p lies in it). p
+// is taken back by its own D(t), which is the extrusion's when both times
+// lie in one constant-velocity piece of the motion (the callers' points
+// do).
+template <class K>
+bool is_in_closure_of(const K& k, const Scene_model<K>& model, int i, const Vector4<typename K::FT>& p,
+                      const Plane_sides<typename K::FT>& at_g)
+{
   using FT = typename K::FT;
   const Object_model<FT>& o = model.objects[i];
-  Vector3<FT> y = solid_point(k, o, g);
-  if (classify_point(k, o.csg, y) != Truth::True) return false;
-  for (const auto& prim : o.csg.primitives)
-    for (const auto& pl : prim.planes)
-      if (k.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], y) == CGAL::ZERO) return false;
+  Vector3<FT> yp = solid_point(k, o, p);
+  for (std::size_t q = 0; q < o.csg.primitives.size(); ++q)
+    for (std::size_t j = 0; j < o.csg.primitives[q].planes.size(); ++j) {
+      const auto& pl = o.csg.primitives[q].planes[j];
+      CGAL::Sign at_p = k.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], yp);
+      if (at_p != CGAL::ZERO && at_p != at_g.at(static_cast<int>(q), j)) return false;
+    }
   return true;
+}
+// The same, for the cell of object i holding g.
+template <class K>
+bool is_in_closure_of(const K& k, const Scene_model<K>& model, int i, const Vector4<typename K::FT>& p,
+                      const Vector4<typename K::FT>& g)
+{
+  const Object_model<typename K::FT>& o = model.objects[i];
+  return is_in_closure_of(k, model, i, p, Plane_sides<typename K::FT>(k, o.csg, solid_point(k, o, g)));
 }
 
 // A witness (x, y, z, t) of a collision of objects a and b: tL < t < tH, and
@@ -97,28 +149,6 @@ bool is_valid_witness(const K& k, const Scene_model<K>& model, int a, int b, con
   return is_generic_inside(k, model, a, w) && is_generic_inside(k, model, b, w);
 }
 
-// Whether p = (x, t) is in the closure of the cell of object i holding g:
-// every plane of the object is zero at p or has the sign it has at g (the
-// cell is convex, so the segment from g to p minus p lies in it). Each
-// point is taken back by its own D(t), which is the extrusion's when both
-// times lie in one constant-velocity piece of the motion (the callers'
-// points do).
-template <class K>
-bool is_in_closure_of(const K& k, const Scene_model<K>& model, int i, const Vector4<typename K::FT>& p,
-                      const Vector4<typename K::FT>& g)
-{
-  using FT = typename K::FT;
-  const Object_model<FT>& o = model.objects[i];
-  Vector3<FT> yp = solid_point(k, o, p), yg = solid_point(k, o, g);
-  for (const auto& prim : o.csg.primitives)
-    for (const auto& pl : prim.planes) {
-      Vector3<FT> n{pl[0], pl[1], pl[2]};
-      CGAL::Sign at_p = k.side(n, pl[3], yp);
-      if (at_p != CGAL::ZERO && at_p != k.side(n, pl[3], yg)) return false;
-    }
-  return true;
-}
-
 // Closed semantics (scene-format.md): p with tL <= t <= tH lies in both
 // closed objects, shown by ga strictly inside a, gb strictly inside b, at
 // p's time, each with p in the closure of its cell.
@@ -129,7 +159,9 @@ bool is_valid_touch(const K& k, const Scene_model<K>& model, int a, int b, const
   if (k.less(p[3], model.t_lo) || k.less(model.t_hi, p[3])) return false;
   for (auto [i, g] : {std::pair<int, const Vector4<typename K::FT>*>{a, &ga}, {b, &gb}}) {
     if (k.compare((*g)[3], p[3]) != CGAL::ZERO) return false;
-    if (!is_generic_inside(k, model, i, *g) || !is_in_closure_of(k, model, i, p, *g)) return false;
+    const Object_model<typename K::FT>& o = model.objects[i];
+    Plane_sides<typename K::FT> at_g(k, o.csg, solid_point(k, o, *g));
+    if (!at_g.generic_inside(o.csg) || !is_in_closure_of(k, model, i, p, at_g)) return false;
   }
   return true;
 }
