@@ -41,11 +41,11 @@ public:
       return lines_.line_has_inside(f, i, j, m, semantics);
     }
 
-    // Earliest mode: line i, j, m examined in rationals for the goal (its
+    // Line i, j, m examined in rationals for the goal (earliest mode: its
     // t* the rational run's own, exact), as that run examines it; only on
     // an exact region (the rational run's own) is that run's line.
     bool exact() const { return exact_; }
-    void earliest(const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<EFT>& goal)
+    void test_line(const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<EFT>& goal)
     {
       CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
       lines_.test_line(f, i, j, m, goal);

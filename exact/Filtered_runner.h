@@ -12,16 +12,18 @@
 // A colliding pair's witness is made by AK itself when nothing in its run
 // was left uncertain (Interval_filter::witness_certified): the witness is
 // snapped to a dyadic grid point (Witness::snap), which AK finds exactly
-// from its enclosures. Otherwise the pair is run again on EK: an
-// any-witness search goes straight to the point AK found, along AK's trail
-// (exact/Trail_replay.h), and falls back to the whole search when EK's path
-// differs. Earliest mode, in both semantics: the interval run decides in
-// rationals the lines that improve the goal or tie with its t*
-// (exact/Interval_filter.h), so its path is the rational run's; t*, the
+// from its enclosures. Otherwise the line that found the point is run
+// again in EK, on the rational run's region, and the witness made from it
+// (witness_from); where that region is not known, the pair is run again
+// on EK: an any-witness search goes straight to the point AK found, along
+// AK's trail (exact/Trail_replay.h), and falls back to the whole search
+// when EK's path differs. Earliest mode, in both semantics: the interval
+// run decides in rationals the lines that improve the goal or tie with its
+// t* (exact/Interval_filter.h), so its path is the rational run's; t*, the
 // contact point and the witness are its own where they come out as points,
-// and otherwise a rational run replays its last improvement
-// (Earliest_replay) to make them; where that fails, earliest mode runs the
-// whole search in rationals.
+// and otherwise they are made from its last improvement's line in EK as
+// above, or a rational run replays that improvement (Earliest_replay);
+// where that fails, earliest mode runs the whole search in rationals.
 //
 // EK's model is built object by object, only for objects that need it.
 #ifndef CLASH4D_EXACT_FILTERED_RUNNER_H
@@ -165,17 +167,8 @@ private:
           stats = astats;
           return *r;
         }
-        if (options.earliest) {
-          auto made = std::chrono::steady_clock::now();
-          if (std::optional<Pair_result<EFT>> r = witness_from(policy, a, b, options.semantics)) {
-            stats = astats;
-            stats.seconds_witness += seconds_since(made);
-            ++witness_runs_;
-            ++earliest_by_intervals_;
-            ++lines_rerun_;
-            return *r;
-          }
-        }
+        if (options.witness_lines)
+          if (std::optional<Pair_result<EFT>> r = witness_line(policy, a, b, options, astats, stats)) return *r;
         earliest_trail = options.earliest && policy.earliest_trail();
         stages = policy.take_stages();
         ++witness_runs_;
@@ -262,12 +255,32 @@ private:
     return !ek_.less(ek_.from_rational(until), emodel_.sub_spans({a, b}).at(s).hi);
   }
 
-  // Earliest mode, when the intervals made t* but not the witness: the
-  // rational run's goal, made from the line that found it
-  // (Interval_filter::exact_goal), and its witness made in EK as the
-  // rational run makes it, instead of replaying the search to that line.
+  // witness_from, timed and counted; stats: the interval run's, on success.
+  std::optional<Pair_result<EFT>> witness_line(Interval_filter<Filtered_runner>& policy, int a, int b,
+                                               const Check_options& options, const Check_stats& astats,
+                                               Check_stats& stats)
+  {
+    auto made = std::chrono::steady_clock::now();
+    std::optional<Pair_result<EFT>> r = witness_from(policy, a, b, options.semantics, options.earliest);
+    if (!r) return r;
+    stats = astats;
+    stats.seconds_witness += seconds_since(made);
+    ++witness_runs_;
+    if (options.earliest) {
+      ++earliest_by_intervals_;
+      ++lines_rerun_;
+    } else {
+      ++witness_lines_;
+    }
+    return r;
+  }
+
+  // When the intervals found the point (earliest mode: t*) but could not
+  // make the witness: the rational run's goal, made from the line that
+  // found it (Interval_filter::exact_goal), and its witness made in EK as
+  // the rational run makes it, instead of replaying the search to that line.
   std::optional<Pair_result<EFT>> witness_from(Interval_filter<Filtered_runner>& policy, int a, int b,
-                                               Semantics semantics)
+                                               Semantics semantics, bool earliest)
   {
     std::optional<typename Interval_filter<Filtered_runner>::Exact_goal> g = policy.exact_goal();
     if (!g) return std::nullopt;
@@ -283,7 +296,7 @@ private:
     Collision_checker<EK>(ek_, emodel_, esettled_, ignored, use_sbounds_)
         .make_witness(g->goal, Extrusion<EK>::shear_of(A, B, g->frame, use_sbounds_), A, B, span, r);
     if (!r.witness_verified) return std::nullopt;   // not expected: the search in rationals decides
-    r.earliest = true;
+    r.earliest = earliest;
     return r;
   }
 
@@ -320,7 +333,7 @@ private:
   std::unique_ptr<Lazy_once[]> built_, settled_, moved_;   // EK's model of an object, its S-bounds, its motion
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
-      stages_adopted_{0}, lines_rerun_{0}, convex_rational_{0};
+      stages_adopted_{0}, lines_rerun_{0}, witness_lines_{0}, convex_rational_{0};
 
   // A witness AK made and verified on a certified path, in EK's numbers.
   // Regularised, its coordinates are grid points (Witness::snap), exact
@@ -557,6 +570,7 @@ private:
     stats.apart_attempts = apart_attempts_.load();
     stats.replay_stages_adopted = stages_adopted_.load();
     stats.earliest_lines_rerun = lines_rerun_.load();
+    stats.witness_lines_rerun = witness_lines_.load();
     stats.convex_rational = convex_rational_.load();
   }
 

@@ -260,12 +260,16 @@ public:
     exact_->stages().emplace(index, std::move(kept));
   }
 
-  // Earliest mode, regularised, on a certified path whose last improvement
-  // was a line the intervals examined: the rational run's goal, made from
-  // that line (exact_last), with the sub-span and frame it was found in;
-  // nothing otherwise. A witness the intervals could not make (the
-  // generic point near a contact point they only enclose: which planes
-  // pass through it is for exact arithmetic to say) is made from it.
+  // The rational run's goal, made from the line that found it, with the
+  // sub-span and frame it was found in; nothing otherwise. A witness the
+  // intervals could not make (a touching point or a contact point they
+  // only enclose: which planes pass through it is for exact arithmetic to
+  // say) is made from it, instead of replaying the search to that line.
+  // Earliest mode: on a certified path whose last improvement was a line
+  // the intervals examined (exact_last). Any witness: on a certified path
+  // (the trail complete, not approximate), the line that found the point,
+  // in intervals or in rationals; the rational run's search stops at the
+  // same line, its first with a point.
   struct Exact_goal {
     Search_goal<EFT> goal;
     std::size_t span;
@@ -273,10 +277,21 @@ public:
   };
   std::optional<Exact_goal> exact_goal()
   {
-    if (closed_ || !last_ || !witness_certified()) return std::nullopt;
-    std::optional<Search_goal<EFT>> e = exact_last(true);
-    if (!e) return std::nullopt;
-    return Exact_goal{std::move(*e), last_->span, last_->frame};
+    if (earliest_) {
+      if (!last_ || !witness_certified()) return std::nullopt;
+      std::optional<Search_goal<EFT>> e = exact_last(true);
+      if (!e) return std::nullopt;
+      return Exact_goal{std::move(*e), last_->span, last_->frame};
+    }
+    if (!record_ || !found_line_ || !trail_->complete || trail_->approximate) return std::nullopt;
+    Search_goal<EFT> start;
+    start.semantics = closed_ ? Semantics::closed : Semantics::regularised;
+    std::optional<Search_goal<EFT>> e = goal_on_line(*found_line_, std::move(start), true);
+    // Nothing there: the point lay in the sliver between the interval
+    // region (widened to doubles) and the rational run's, which then
+    // searches on; the pair goes to it.
+    if (!e || !e->found) return std::nullopt;
+    return Exact_goal{std::move(*e), found_line_->span, found_line_->frame};
   }
 
   // The region stages made in rationals, handed on to the trail's replay.
@@ -485,7 +500,10 @@ public:
     } catch (const CGAL::Uncertain_conversion_exception&) {
       decide_in_rationals(g, f, i, j, m, goal);
     }
-    if (record_ && !before && goal.found) trail_->line = {i, j, m};
+    if (record_ && !before && goal.found) {
+      trail_->line = {i, j, m};
+      found_line_ = Stale{span_, frame_, g.layout(), g.region(), f, {i, j, m}};
+    }
   }
 
   int same_plane(const AK& k, const Hyperplane4<AFT>& h, const Hyperplane4<AFT>& g, long eh, int fh, long eg, int fg,
@@ -619,6 +637,7 @@ private:
     std::array<std::size_t, 3> line;
   };
   std::optional<Stale> last_;
+  std::optional<Stale> found_line_;   // any witness: the line that found the point
   bool stale_ = false;
   // Whether t* is at the conquer's lower time (no line of it improves),
   // for which conquer and which t* (set_t_star counts them).
@@ -689,17 +708,23 @@ private:
   // must be exact; nothing otherwise.
   std::optional<Search_goal<EFT>> exact_last(bool as_is)
   {
-    const Stale& s = *last_;
+    std::optional<Search_goal<EFT>> e = goal_on_line(*last_, rational_goal(false), as_is);
+    if (!e) return e;
+    if (!e->found) throw std::logic_error("internal error: a line the intervals certified found nothing in rationals");
+    set_t_star(e->t_star);
+    return e;
+  }
+  // Line s examined in rationals from the goal `from`, as the rational run
+  // examines it, when the conquer's region is exact (that run's own).
+  std::optional<Search_goal<EFT>> goal_on_line(const Stale& s, Search_goal<EFT> from, bool as_is)
+  {
     std::shared_ptr<typename Exact_span<Runner>::Lines> lines =
         lines_on(s.span, s.frame, s.layout, s.region, as_is);
     lines_.reset();   // the span's table may have been another's
     if (!lines->exact()) return std::nullopt;
     ++stats_->exact_lines;
-    Search_goal<EFT> e = rational_goal(false);
-    lines->earliest(s.formula, s.line[0], s.line[1], s.line[2], e);
-    if (!e.found) throw std::logic_error("internal error: a line the intervals certified found nothing in rationals");
-    set_t_star(e.t_star);
-    return e;
+    lines->test_line(s.formula, s.line[0], s.line[1], s.line[2], from);
+    return from;
   }
 
   // Earliest mode: the line in intervals; in rationals when it improves the
@@ -760,7 +785,7 @@ private:
     bool known = false;
     if (!goal.found && !lines_->has_inside(f, i, j, m, goal.semantics, known)) return;
     Search_goal<EFT> e = rational_goal(goal.found);
-    lines_->earliest(f, i, j, m, e);
+    lines_->test_line(f, i, j, m, e);
     if (!e.improved) return;
     set_t_star(e.t_star);
     improved_on_keys_ = true;

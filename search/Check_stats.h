@@ -70,8 +70,12 @@ struct Check_stats {
   // earliest_by_intervals: earliest-mode colliding pairs whose search the
   // interval run made (ties with t* decided in rationals), the rational run
   // only replaying its last improvement (of exact_witness_runs);
-  // earliest_lines_rerun: of those, pairs (regularised) where only that
+  // earliest_lines_rerun: of those, pairs where only that
   // improvement's line was run again in rationals, and the witness made
+  // from it, instead of a replay;
+  // witness_lines_rerun: any-witness colliding pairs (of
+  // exact_witness_runs) whose search the interval run made, with only the
+  // line that found the point run again in rationals and the witness made
   // from it, instead of a replay;
   // exact_ties: points of lines whose time the intervals could not tell
   // from t* (earliest mode), compared exactly by the time of the one
@@ -96,7 +100,7 @@ struct Check_stats {
   std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_witness_replays = 0, exact_regions = 0,
               exact_lines = 0, exact_plane_tests = 0, exact_region_stages = 0, witnesses_by_intervals = 0,
               earliest_by_intervals = 0, apart_proofs = 0, apart_attempts = 0, apart_spans = 0,
-              replay_stages_adopted = 0, earliest_lines_rerun = 0, exact_ties = 0,
+              replay_stages_adopted = 0, earliest_lines_rerun = 0, witness_lines_rerun = 0, exact_ties = 0,
               exact_cut_orders = 0, exact_zeros = 0, convex_rational = 0, doubtful_stages_pruned = 0;
   // Time per stage, seconds
   double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
