@@ -121,9 +121,7 @@ public:
       } else if (goal.earliest) {
         V4 g = w.near(goal.contact, goal.inside, shear, A, B, span.lo, span.hi);
         r.contact_cells = {g, g};
-        r.witness_verified = r.witness_verified && is_valid_witness(k_, model_, r.a, r.b, g) &&
-                             is_in_closure_of(k_, model_, r.a, contact, g) &&
-                             is_in_closure_of(k_, model_, r.b, contact, g);
+        r.witness_verified = r.witness_verified && is_valid_contact_cell(k_, model_, r.a, r.b, contact, g);
       }
     }
     r.has_witness = true;

@@ -130,13 +130,15 @@ bool is_in_closure_of(const K& k, const Scene_model<K>& model, int i, const Vect
     }
   return true;
 }
-// The same, for the cell of object i holding g.
+// g strictly inside object i at its time, on none of its planes, with p
+// in the closure of its cell: its sides evaluated once for both.
 template <class K>
-bool is_in_closure_of(const K& k, const Scene_model<K>& model, int i, const Vector4<typename K::FT>& p,
-                      const Vector4<typename K::FT>& g)
+bool is_generic_inside_near(const K& k, const Scene_model<K>& model, int i, const Vector4<typename K::FT>& p,
+                            const Vector4<typename K::FT>& g)
 {
   const Object_model<typename K::FT>& o = model.objects[i];
-  return is_in_closure_of(k, model, i, p, Plane_sides<typename K::FT>(k, o.csg, solid_point(k, o, g)));
+  Plane_sides<typename K::FT> at_g(k, o.csg, solid_point(k, o, g));
+  return at_g.generic_inside(o.csg) && is_in_closure_of(k, model, i, p, at_g);
 }
 
 // A witness (x, y, z, t) of a collision of objects a and b: tL < t < tH, and
@@ -159,11 +161,20 @@ bool is_valid_touch(const K& k, const Scene_model<K>& model, int a, int b, const
   if (k.less(p[3], model.t_lo) || k.less(model.t_hi, p[3])) return false;
   for (auto [i, g] : {std::pair<int, const Vector4<typename K::FT>*>{a, &ga}, {b, &gb}}) {
     if (k.compare((*g)[3], p[3]) != CGAL::ZERO) return false;
-    const Object_model<typename K::FT>& o = model.objects[i];
-    Plane_sides<typename K::FT> at_g(k, o.csg, solid_point(k, o, *g));
-    if (!at_g.generic_inside(o.csg) || !is_in_closure_of(k, model, i, p, at_g)) return false;
+    if (!is_generic_inside_near(k, model, i, p, *g)) return false;
   }
   return true;
+}
+
+// Earliest mode, regularised: g is a witness of the collision of a and b
+// (is_valid_witness) whose cell's closure holds the contact point c in
+// both objects.
+template <class K>
+bool is_valid_contact_cell(const K& k, const Scene_model<K>& model, int a, int b, const Vector4<typename K::FT>& c,
+                           const Vector4<typename K::FT>& g)
+{
+  if (!(k.less(model.t_lo, g[3]) && k.less(g[3], model.t_hi))) return false;
+  return is_generic_inside_near(k, model, a, c, g) && is_generic_inside_near(k, model, b, c, g);
 }
 
 } // namespace clash4d
