@@ -75,8 +75,12 @@ public:
     throw CGAL::Uncertain_conversion_exception("a sign an interval cannot certify");
   }
   CGAL::Uncertain<CGAL::Sign> uncertain_sign(const FT& x) const { return CGAL::sign(x); }
-  bool possibly_positive(const FT& x) const { return CGAL::possibly(CGAL::sign(x) == CGAL::POSITIVE); }
-  bool possibly_nonnegative(const FT& x) const { return CGAL::possibly(CGAL::sign(x) != CGAL::NEGATIVE); }
+  // CGAL's possibly(sign(x) == POSITIVE) and possibly(sign(x) != NEGATIVE)
+  // on its ends, without the Uncertain values (the search's inner loop asks
+  // them per plane and line): CGAL's sign is certain when inf > 0, sup < 0 or
+  // inf == sup (then zero), and indeterminate (any sign) otherwise.
+  bool possibly_positive(const FT& x) const { return x.inf() > 0 || (x.sup() >= 0 && x.inf() < x.sup()); }
+  bool possibly_nonnegative(const FT& x) const { return x.sup() >= 0; }
   CGAL::Uncertain<bool> is_nonnegative(const FT& x, bool strict) const { return strict ? x > 0 : x >= 0; }
   FT from_rational(const Rational& q) const
   {
