@@ -50,37 +50,82 @@ FT minor2(const Vector4<FT>& a, const Vector4<FT>& b, int i, int j)
   return a[i] * b[j] - a[j] * b[i];
 }
 
-// The generalised cross product of three 4-vectors: the vector g with
-// g.x = det(a, b, c, x) for every x, hence orthogonal to a, b and c, and zero
-// exactly when they are dependent (Appendix A without Gram-Schmidt).
-// In rationals, the same numbers without a gcd per product and sum: g is
-// linear in each argument, so with a = A / da (integers over a common
-// denominator, numbers/Rational.h) and likewise b, c, g(a, b, c) =
-// g(A, B, C) / (da db dc), computed in GMP integers and reduced once.
+// The six 2x2 minors of rows a and b, over the column pairs (0,1) (0,2)
+// (0,3) (1,2) (1,3) (2,3): all that generalised_cross(a, b, c) and the base
+// point of the line of planes a, b, c (search/Generate_and_test.h) take
+// from a and b together, so a search that fixes a and b over many c makes
+// them once. The same expressions as made per line, so the same numbers in
+// every kernel. In rationals a and b are kept instead: generalised_cross
+// works there on their integers, and a minor is made when asked.
+template <class FT>
+class Pair_minors {
+public:
+  Pair_minors() = default;
+  Pair_minors(const Vector4<FT>& a, const Vector4<FT>& b) : s_(made(a, b)) {}
+
+  // a_i b_j - a_j b_i, for i < j.
+  FT minor(int i, int j) const
+  {
+    if constexpr (rational) return minor2(s_.a, s_.b, i, j);
+    else return s_[static_cast<std::size_t>(i == 0 ? j - 1 : i + j)];
+  }
+
+  // The generalised cross product of a, b and c: the vector g with
+  // g.x = det(a, b, c, x) for every x, hence orthogonal to a, b and c, and
+  // zero exactly when they are dependent (Appendix A without Gram-Schmidt).
+  // In rationals, the same numbers without a gcd per product and sum: g is
+  // linear in each argument, so with a = A / da (integers over a common
+  // denominator, numbers/Rational.h) and likewise b, c, g(a, b, c) =
+  // g(A, B, C) / (da db dc), computed in GMP integers and reduced once.
+  Vector4<FT> cross(const Vector4<FT>& c) const
+  {
+    if constexpr (rational) {
+      Vector4<mpz_class> A, B, C;
+      mpz_class da, db, dc;
+      over_common_denominator(s_.a.data(), 4, A.data(), da);
+      over_common_denominator(s_.b.data(), 4, B.data(), db);
+      over_common_denominator(c.data(), 4, C.data(), dc);
+      Pair_minors<mpz_class> AB(A, B);
+      Vector4<mpz_class> G = AB.cross(C);
+      mpz_class den = da * db * dc;
+      return {quotient_of_integers(G[0], den), quotient_of_integers(G[1], den), quotient_of_integers(G[2], den),
+              quotient_of_integers(G[3], den)};
+    } else {
+      // Laplace expansion along the last row x: g_k = (-1)^(k+3) * M_k, with
+      // M_k the 3x3 minor of (a, b, c) without column k.
+      const FT &m01 = s_[0], &m02 = s_[1], &m03 = s_[2], &m12 = s_[3], &m13 = s_[4], &m23 = s_[5];
+      FT M0 = c[1] * m23 - c[2] * m13 + c[3] * m12;   // columns 1,2,3
+      FT M1 = c[0] * m23 - c[2] * m03 + c[3] * m02;   // columns 0,2,3
+      FT M2 = c[0] * m13 - c[1] * m03 + c[3] * m01;   // columns 0,1,3
+      FT M3 = c[0] * m12 - c[1] * m02 + c[2] * m01;   // columns 0,1,2
+      return {-M0, M1, -M2, M3};
+    }
+  }
+
+private:
+  static constexpr bool rational = std::is_same_v<FT, Rational>;
+  struct Rows {
+    Vector4<FT> a, b;
+  };
+  // Copies of handles in rationals (no number made); the minors otherwise.
+  std::conditional_t<rational, Rows, std::array<FT, 6>> s_{};
+
+  static auto made(const Vector4<FT>& a, const Vector4<FT>& b)
+  {
+    if constexpr (rational) {
+      return Rows{a, b};
+    } else {
+      return std::array<FT, 6>{minor2(a, b, 0, 1), minor2(a, b, 0, 2), minor2(a, b, 0, 3),
+                               minor2(a, b, 1, 2), minor2(a, b, 1, 3), minor2(a, b, 2, 3)};
+    }
+  }
+};
+
+// The generalised cross product of three 4-vectors (Pair_minors::cross).
 template <class FT>
 Vector4<FT> generalised_cross(const Vector4<FT>& a, const Vector4<FT>& b, const Vector4<FT>& c)
 {
-  if constexpr (std::is_same_v<FT, Rational>) {
-    Vector4<mpz_class> A, B, C;
-    mpz_class da, db, dc;
-    over_common_denominator(a.data(), 4, A.data(), da);
-    over_common_denominator(b.data(), 4, B.data(), db);
-    over_common_denominator(c.data(), 4, C.data(), dc);
-    Vector4<mpz_class> G = generalised_cross(A, B, C);
-    mpz_class den = da * db * dc;
-    return {quotient_of_integers(G[0], den), quotient_of_integers(G[1], den), quotient_of_integers(G[2], den),
-            quotient_of_integers(G[3], den)};
-  } else {
-    // Laplace expansion along the last row x: g_k = (-1)^(k+3) * M_k, with
-    // M_k the 3x3 minor of (a, b, c) without column k.
-    FT m01 = minor2(a, b, 0, 1), m02 = minor2(a, b, 0, 2), m03 = minor2(a, b, 0, 3);
-    FT m12 = minor2(a, b, 1, 2), m13 = minor2(a, b, 1, 3), m23 = minor2(a, b, 2, 3);
-    FT M0 = c[1] * m23 - c[2] * m13 + c[3] * m12;   // columns 1,2,3
-    FT M1 = c[0] * m23 - c[2] * m03 + c[3] * m02;   // columns 0,2,3
-    FT M2 = c[0] * m13 - c[1] * m03 + c[3] * m01;   // columns 0,1,3
-    FT M3 = c[0] * m12 - c[1] * m02 + c[2] * m01;   // columns 0,1,2
-    return {-M0, M1, -M2, M3};
-  }
+  return Pair_minors<FT>(a, b).cross(c);
 }
 
 // In rationals, as generalised_cross: det(A, B, C, D) / (da db dc dd).

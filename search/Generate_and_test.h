@@ -138,6 +138,7 @@ public:
     layout_ = layout;
     planes_.clear();
     keys_ = nullptr;
+    minors_of_ = key_minors_of_ = {npos, npos};
     for (std::size_t p = 0; p < layout.entry.size(); ++p)
       planes_.push_back(layout.entry[p] >= 0 ? table_[layout.entry[p]] : face(region, layout.face[p]));
     resize_values();
@@ -201,6 +202,11 @@ private:
   std::vector<FT> at_base_, along_;       // per plane: value at the base point, slope along l
   std::vector<int> sign_;                 // per plane at the current test point: -1, 0, +1
   std::array<std::size_t, 3> line_{};     // the planes that meet in the current line
+  // The minors of the current line's first two planes (kernel_ft4.h): run
+  // nests the third plane innermost, so they serve every line of the pair.
+  Pair_minors<FT> minors_, key_minors_;   // key_minors_: the same of their keys
+  std::array<std::size_t, 2> minors_of_{static_cast<std::size_t>(-1), static_cast<std::size_t>(-1)},
+      key_minors_of_{static_cast<std::size_t>(-1), static_cast<std::size_t>(-1)};
   int line_group_ = -1;                   // their common motion group, or -1
   int line_corner_ = -1;                  // a corner all three pass through: the line is its path
   std::vector<int> line_meets_;           // corners two of them pass through: the line meets their paths
@@ -314,6 +320,7 @@ private:
     if (const std::vector<V>* keys = policy_.template normal_keys<FT>()) {
       if (keys != keys_) {
         keys_ = keys;
+        key_minors_of_ = {npos, npos};
         plane_key_.clear();
         whole_key_.clear();
         const std::vector<H>* whole = policy_.template plane_keys<FT>();
@@ -327,10 +334,10 @@ private:
     }
     V l;
     if (line_group_ < 0) {
-      l = generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n);
+      l = pair_minors(i, j).cross(planes_[m].n);
     } else {
       const Vector3<FT>& r = groups_->velocity[line_group_];
-      FT d = generalised_cross(planes_[i].n, planes_[j].n, planes_[m].n)[3];
+      FT d = pair_minors(i, j).cross(planes_[m].n)[3];
       l = {d * r[0], d * r[1], d * r[2], d};
     }
     // The keys' line is a nonzero multiple of this one: its zero
@@ -343,11 +350,25 @@ private:
     return l;
   }
 
+  // The minors of planes i and j (Pair_minors), made when the pair changes.
+  const Pair_minors<FT>& pair_minors(std::size_t i, std::size_t j)
+  {
+    if (minors_of_[0] != i || minors_of_[1] != j) {
+      minors_ = Pair_minors<FT>(planes_[i].n, planes_[j].n);
+      minors_of_ = {i, j};
+    }
+    return minors_;
+  }
+
   // The current line's direction from the keys, made once per line.
   const V& line_key()
   {
     if (!line_key_made_) {
-      line_key_ = generalised_cross(plane_key_[line_[0]], plane_key_[line_[1]], plane_key_[line_[2]]);
+      if (key_minors_of_[0] != line_[0] || key_minors_of_[1] != line_[1]) {
+        key_minors_ = Pair_minors<FT>(plane_key_[line_[0]], plane_key_[line_[1]]);
+        key_minors_of_ = {line_[0], line_[1]};
+      }
+      line_key_ = key_minors_.cross(plane_key_[line_[2]]);
       line_key_made_ = true;
     }
     return line_key_;
@@ -402,6 +423,7 @@ private:
     region_ = &region;
     planes_.clear();
     keys_ = nullptr;
+    minors_of_ = key_minors_of_ = {npos, npos};
     layout_ = Plane_layout();
     layout_.leaf_plane.assign(table_.size(), {0, 0});
     f.for_each_leaf([&](std::uint32_t h) {
@@ -444,7 +466,7 @@ private:
     V l = line_direction(i, j, m);
     if (k_.is_zero(l)) return;
     ++stats_.lines;
-    V base = base_point(planes_[i], planes_[j], planes_[m], l);
+    V base = base_point(planes_[i], planes_[j], planes_[m], l, &pair_minors(i, j));
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return;
     // The segment's earliest end (time is linear along it), where the
@@ -592,7 +614,7 @@ private:
     V l = line_direction(i, j, m);
     if (k_.is_zero(l)) return;
     ++stats_.lines;
-    V base = base_point(planes_[i], planes_[j], planes_[m], l);
+    V base = base_point(planes_[i], planes_[j], planes_[m], l, &pair_minors(i, j));
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return;
     auto earliest_end = [&] { return end_plane(k_.sign(l[3]) != CGAL::NEGATIVE); };
@@ -841,7 +863,7 @@ private:
   {
     l = line_direction(i, j, m);
     if (k_.is_zero(l)) return {};
-    base = base_point(planes_[i], planes_[j], planes_[m], l);
+    base = base_point(planes_[i], planes_[j], planes_[m], l, &pair_minors(i, j));
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return {};
     evaluate_planes(base, l, layout_.first_face);
@@ -916,7 +938,9 @@ private:
   // line, and every decision along the line is about its points, not this
   // one, so kernels need not agree on k. The other three coordinates by
   // Cramer's rule, as cross products of the rows.
-  V base_point(const H& a, const H& b, const H& c, const V& l) const
+  // ab: a's and b's minors (line_direction's), whose x01 is cross(r0, r1)
+  // term for term (a_i b_j - a_j b_i, negated for columns c2, c0).
+  V base_point(const H& a, const H& b, const H& c, const V& l, const Pair_minors<FT>* ab = nullptr) const
   {
     int k = k_.largest_component(l);
     int cols[3], n = 0;
@@ -925,7 +949,9 @@ private:
     const H* hs[3] = {&a, &b, &c};
     Vector3<FT> r[3];
     for (int t = 0; t < 3; ++t) r[t] = {hs[t]->n[cols[0]], hs[t]->n[cols[1]], hs[t]->n[cols[2]]};
-    Vector3<FT> x12 = cross(r[1], r[2]), x20 = cross(r[2], r[0]), x01 = cross(r[0], r[1]);
+    Vector3<FT> x12 = cross(r[1], r[2]), x20 = cross(r[2], r[0]);
+    Vector3<FT> x01 = ab ? Vector3<FT>{ab->minor(cols[1], cols[2]), -ab->minor(cols[0], cols[2]), ab->minor(cols[0], cols[1])}
+                         : cross(r[0], r[1]);
     FT det = dot(r[0], x12);
     CGAL::Sign sd = k_.sign(det);
     V p;

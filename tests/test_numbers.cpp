@@ -411,6 +411,71 @@ BOOST_AUTO_TEST_CASE(rational_cross_and_determinant_are_the_formulas)
   BOOST_TEST(zeros >= 500);   // the dependent rows are found dependent
 }
 
+// Pair_minors (kernel_ft4.h), which the search makes once per pair of
+// planes for all the lines through them: in doubles and intervals its
+// cross product and its minors are bit for bit the per-line formulas the
+// search used before (the 3x3 cofactors of the Laplace expansion, and the
+// base point's cross(r0, r1) on the three columns left when one is
+// dropped), so no answer of any kernel moves; one minors object serves
+// many third rows; in rationals the minors are a_i b_j - a_j b_i.
+// Seeded random rows, a quarter of them dependent.
+template <class FT>
+Vector4<FT> cofactor_cross(const Vector4<FT>& a, const Vector4<FT>& b, const Vector4<FT>& c)
+{
+  auto m = [&](int i, int j) { return a[i] * b[j] - a[j] * b[i]; };
+  FT M0 = c[1] * m(2, 3) - c[2] * m(1, 3) + c[3] * m(1, 2);
+  FT M1 = c[0] * m(2, 3) - c[2] * m(0, 3) + c[3] * m(0, 2);
+  FT M2 = c[0] * m(1, 3) - c[1] * m(0, 3) + c[3] * m(0, 1);
+  FT M3 = c[0] * m(1, 2) - c[1] * m(0, 2) + c[2] * m(0, 1);
+  return {-M0, M1, -M2, M3};
+}
+
+template <class FT, class To>
+void check_pair_minors(const std::array<Vector4<Rational>, 4>& r, To to, int i)
+{
+  auto same = [](const FT& x, const FT& y) {
+    if constexpr (std::is_same_v<FT, double>) return x == y || (std::isnan(x) && std::isnan(y));
+    else return x.inf() == y.inf() && x.sup() == y.sup();
+  };
+  std::array<Vector4<FT>, 4> v;
+  for (int p = 0; p < 4; ++p)
+    for (int j = 0; j < 4; ++j) v[p][j] = to(r[p][j]);
+  Pair_minors<FT> ab(v[0], v[1]);
+  for (int c = 2; c < 4; ++c) {   // one object, two third rows
+    Vector4<FT> g = ab.cross(v[c]), h = cofactor_cross(v[0], v[1], v[c]);
+    for (int j = 0; j < 4; ++j) BOOST_TEST(same(g[j], h[j]), "cross " << i << " row " << c << " coordinate " << j);
+  }
+  for (int k = 0; k < 4; ++k) {   // base_point's x01 with column k dropped
+    int cols[3], n = 0;
+    for (int q = 0; q < 4; ++q)
+      if (q != k) cols[n++] = q;
+    Vector3<FT> r0{v[0][cols[0]], v[0][cols[1]], v[0][cols[2]]}, r1{v[1][cols[0]], v[1][cols[1]], v[1][cols[2]]};
+    Vector3<FT> x = cross(r0, r1);
+    Vector3<FT> y{ab.minor(cols[1], cols[2]), -ab.minor(cols[0], cols[2]), ab.minor(cols[0], cols[1])};
+    for (int j = 0; j < 3; ++j) BOOST_TEST(same(x[j], y[j]), "x01 " << i << " dropped " << k << " coordinate " << j);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(pair_minors_are_the_per_line_formulas)
+{
+  std::uint64_t seed = 20261128;
+  BOOST_TEST_MESSAGE("pair minors: seed " << seed);
+  std::mt19937_64 rng(seed);
+  CGAL::Protect_FPU_rounding<true> upward;   // the interval kernel's mode
+  for (int i = 0; i < 2000; ++i) {
+    std::array<Vector4<Rational>, 4> r = random_rows(rng, 1000000, 100000, i % 4 == 0);
+    check_pair_minors<CGAL::Interval_nt<false>>(r, [](const Rational& x) { return CGAL::to_interval(x); }, i);
+    {
+      CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+      check_pair_minors<double>(r, [](const Rational& x) { return CGAL::to_double(x); }, i);
+      Pair_minors<Rational> ab(r[0], r[1]);
+      for (int p = 0; p < 4; ++p)
+        for (int q = p + 1; q < 4; ++q)
+          BOOST_TEST(ab.minor(p, q) == r[0][p] * r[1][q] - r[0][q] * r[1][p], "rational minor " << i);
+    }
+  }
+}
+
 // coprime_integers (the rational kernel's ring and lowest terms): one
 // positive factor makes the numbers coprime integers; hand-worked cases,
 // then seeded random ones held to that definition.
