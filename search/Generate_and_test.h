@@ -138,7 +138,8 @@ public:
     layout_ = layout;
     planes_.clear();
     keys_ = nullptr;
-    minors_of_ = key_minors_of_ = {npos, npos};
+    minors_.reset();
+    key_minors_.reset();
     for (std::size_t p = 0; p < layout.entry.size(); ++p)
       planes_.push_back(layout.entry[p] >= 0 ? table_[layout.entry[p]] : face(region, layout.face[p]));
     resize_values();
@@ -202,11 +203,20 @@ private:
   std::vector<FT> at_base_, along_;       // per plane: value at the base point, slope along l
   std::vector<int> sign_;                 // per plane at the current test point: -1, 0, +1
   std::array<std::size_t, 3> line_{};     // the planes that meet in the current line
-  // The minors of the current line's first two planes (kernel_ft4.h): run
-  // nests the third plane innermost, so they serve every line of the pair.
-  Pair_minors<FT> minors_, key_minors_;   // key_minors_: the same of their keys
-  std::array<std::size_t, 2> minors_of_{static_cast<std::size_t>(-1), static_cast<std::size_t>(-1)},
-      key_minors_of_{static_cast<std::size_t>(-1), static_cast<std::size_t>(-1)};
+  // The minors of the current line's first two planes (kernel_ft4.h), made
+  // when that pair changes: run nests the third plane innermost, so they
+  // serve every line of the pair.
+  struct Minors_of_pair {
+    Pair_minors<FT> minors;
+    std::array<std::size_t, 2> of{npos, npos};
+    const Pair_minors<FT>& at(std::size_t i, std::size_t j, const V& a, const V& b)
+    {
+      if (of[0] != i || of[1] != j) minors = Pair_minors<FT>(a, b), of = {i, j};
+      return minors;
+    }
+    void reset() { of = {npos, npos}; }
+  };
+  Minors_of_pair minors_, key_minors_;    // of the planes' normals, and of their keys
   int line_group_ = -1;                   // their common motion group, or -1
   int line_corner_ = -1;                  // a corner all three pass through: the line is its path
   std::vector<int> line_meets_;           // corners two of them pass through: the line meets their paths
@@ -320,7 +330,7 @@ private:
     if (const std::vector<V>* keys = policy_.template normal_keys<FT>()) {
       if (keys != keys_) {
         keys_ = keys;
-        key_minors_of_ = {npos, npos};
+        key_minors_.reset();
         plane_key_.clear();
         whole_key_.clear();
         const std::vector<H>* whole = policy_.template plane_keys<FT>();
@@ -350,25 +360,17 @@ private:
     return l;
   }
 
-  // The minors of planes i and j (Pair_minors), made when the pair changes.
   const Pair_minors<FT>& pair_minors(std::size_t i, std::size_t j)
   {
-    if (minors_of_[0] != i || minors_of_[1] != j) {
-      minors_ = Pair_minors<FT>(planes_[i].n, planes_[j].n);
-      minors_of_ = {i, j};
-    }
-    return minors_;
+    return minors_.at(i, j, planes_[i].n, planes_[j].n);
   }
 
   // The current line's direction from the keys, made once per line.
   const V& line_key()
   {
     if (!line_key_made_) {
-      if (key_minors_of_[0] != line_[0] || key_minors_of_[1] != line_[1]) {
-        key_minors_ = Pair_minors<FT>(plane_key_[line_[0]], plane_key_[line_[1]]);
-        key_minors_of_ = {line_[0], line_[1]};
-      }
-      line_key_ = key_minors_.cross(plane_key_[line_[2]]);
+      const auto& ab = key_minors_.at(line_[0], line_[1], plane_key_[line_[0]], plane_key_[line_[1]]);
+      line_key_ = ab.cross(plane_key_[line_[2]]);
       line_key_made_ = true;
     }
     return line_key_;
@@ -423,7 +425,8 @@ private:
     region_ = &region;
     planes_.clear();
     keys_ = nullptr;
-    minors_of_ = key_minors_of_ = {npos, npos};
+    minors_.reset();
+    key_minors_.reset();
     layout_ = Plane_layout();
     layout_.leaf_plane.assign(table_.size(), {0, 0});
     f.for_each_leaf([&](std::uint32_t h) {
