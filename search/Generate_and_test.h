@@ -126,9 +126,9 @@ public:
   // about a line, asked outside on_line.
   void line_of(const std::array<std::size_t, 3>& line, V& l, V& base) const
   {
-    const H &a = planes_[line[0]], &b = planes_[line[1]], &c = planes_[line[2]];
-    l = generalised_cross(a.n, b.n, c.n);
-    base = base_point(a, b, c, l);
+    const Pair_minors<FT> ab(planes_[line[0]].n, planes_[line[1]].n);
+    l = ab.cross(planes_[line[2]].n);
+    base = base_point(ab, line[0], line[1], line[2], l);
   }
 
   // Another kernel's conquer, rebuilt in this one: the layout's planes made
@@ -469,7 +469,7 @@ private:
     V l = line_direction(i, j, m);
     if (k_.is_zero(l)) return;
     ++stats_.lines;
-    V base = base_point(planes_[i], planes_[j], planes_[m], l, &pair_minors(i, j));
+    V base = base_point(pair_minors(i, j), i, j, m, l);
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return;
     // The segment's earliest end (time is linear along it), where the
@@ -617,7 +617,7 @@ private:
     V l = line_direction(i, j, m);
     if (k_.is_zero(l)) return;
     ++stats_.lines;
-    V base = base_point(planes_[i], planes_[j], planes_[m], l, &pair_minors(i, j));
+    V base = base_point(pair_minors(i, j), i, j, m, l);
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return;
     auto earliest_end = [&] { return end_plane(k_.sign(l[3]) != CGAL::NEGATIVE); };
@@ -866,7 +866,7 @@ private:
   {
     l = line_direction(i, j, m);
     if (k_.is_zero(l)) return {};
-    base = base_point(planes_[i], planes_[j], planes_[m], l, &pair_minors(i, j));
+    base = base_point(pair_minors(i, j), i, j, m, l);
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return {};
     evaluate_planes(base, l, layout_.first_face);
@@ -941,10 +941,11 @@ private:
   // line, and every decision along the line is about its points, not this
   // one, so kernels need not agree on k. The other three coordinates by
   // Cramer's rule, as cross products of the rows.
-  // ab: a's and b's minors (line_direction's), whose x01 is cross(r0, r1)
-  // term for term (a_i b_j - a_j b_i, negated for columns c2, c0).
-  V base_point(const H& a, const H& b, const H& c, const V& l, const Pair_minors<FT>* ab = nullptr) const
+  // ab: planes i's and j's minors (line_direction's), whose x01 is
+  // cross(r0, r1) term for term (a_i b_j - a_j b_i, negated for columns c2, c0).
+  V base_point(const Pair_minors<FT>& ab, std::size_t i, std::size_t j, std::size_t m, const V& l) const
   {
+    const H &a = planes_[i], &b = planes_[j], &c = planes_[m];
     int k = k_.largest_component(l);
     int cols[3], n = 0;
     for (int q = 0; q < 4; ++q)
@@ -953,8 +954,7 @@ private:
     Vector3<FT> r[3];
     for (int t = 0; t < 3; ++t) r[t] = {hs[t]->n[cols[0]], hs[t]->n[cols[1]], hs[t]->n[cols[2]]};
     Vector3<FT> x12 = cross(r[1], r[2]), x20 = cross(r[2], r[0]);
-    Vector3<FT> x01 = ab ? Vector3<FT>{ab->minor(cols[1], cols[2]), -ab->minor(cols[0], cols[2]), ab->minor(cols[0], cols[1])}
-                         : cross(r[0], r[1]);
+    Vector3<FT> x01{ab.minor(cols[1], cols[2]), -ab.minor(cols[0], cols[2]), ab.minor(cols[0], cols[1])};
     FT det = dot(r[0], x12);
     CGAL::Sign sd = k_.sign(det);
     V p;
