@@ -106,8 +106,8 @@ public:
   // for an interval that only encloses one.
   std::optional<Rational> exact_value(const FT& x) const
   {
-    if (!x.is_point()) return std::nullopt;
-    return Rational(x.inf());
+    if (!x.is_point() || !std::isfinite(x.inf())) return std::nullopt;   // an overflow is no rational
+    return exact_rational(x.inf());
   }
   // Certain only when both bounds round to the same grid point (then a point
   // interval: grid values are exact doubles while bits and x are moderate).

@@ -185,6 +185,53 @@ public:
     return boxed(s, T).box;
   }
 
+  // How many planes a primitive solid has (local_geometry's).
+  std::size_t local_plane_count(const Solid& s) const
+  {
+    using K_ = Solid::Kind;
+    switch (s.kind) {
+      case K_::Halfspace: return 1;
+      case K_::Block: return 6;
+      case K_::Convex: return s.numbers.size() / 4;
+      case K_::Prism: return (s.numbers.size() - 2) / 2 + 2;
+      case K_::Hull: return s.triples.size();
+      default: return 0;
+    }
+  }
+
+  // Plane i of a primitive solid in its own frame, in local_geometry's
+  // order and by its formulas, made alone: what a convex pair's rational
+  // stage reads (model/Primitive_planes.h), a few planes of each object.
+  Plane3<FT> local_plane(const Solid& s, std::size_t i) const
+  {
+    using K_ = Solid::Kind;
+    const FT zero(0), one(1);
+    switch (s.kind) {
+      case K_::Block: {   // below then above, per axis
+        std::size_t a = i / 2;
+        Plane3<FT> h{zero, zero, zero, i % 2 ? -num(s, 3 + a) : num(s, a)};
+        h[a] = i % 2 ? one : -one;
+        return h;
+      }
+      case K_::Prism: {
+        std::size_t n = (s.numbers.size() - 2) / 2;
+        if (i == n) return {zero, zero, -one, num(s, 2 * n)};
+        if (i == n + 1) return {zero, zero, one, -num(s, 2 * n + 1)};
+        std::size_t j = (i + 1) % n;
+        FT x = num(s, 2 * i), y = num(s, 2 * i + 1);
+        FT dx = num(s, 2 * j) - x, dy = num(s, 2 * j + 1) - y;
+        return {dy, -dx, zero, -(dy * x - dx * y)};
+      }
+      case K_::Hull: {
+        if (exact_read(s)) return constructed4(s, 4 * i);
+        const auto& t = s.triples.at(i);
+        return facet_plane(vec3(s, 3 * t[0]), vec3(s, 3 * t[1]), vec3(s, 3 * t[2]));
+      }
+      default:   // a half-space's or a convex solid's plane, as read
+        return {num(s, 4 * i), num(s, 4 * i + 1), num(s, 4 * i + 2), num(s, 4 * i + 3)};
+    }
+  }
+
   // Vertex k of a block, hull, prism or convex solid in its own frame, in
   // local_geometry's order, made alone: what a sweep's tie asks of the
   // vertex the intervals cannot rule out of a box's side

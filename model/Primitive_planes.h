@@ -1,6 +1,6 @@
-// The planes of a one-primitive solid, each made as asked: the primitive in
-// its own frame is read from the scene (its numbers, converted), and a
-// plane is moved by the solid's transforms only when first read. A stage
+// The planes of a one-primitive solid, each made as asked: read from the
+// scene's primitive in its own frame (its numbers, converted) and moved by
+// the solid's transforms only when first read. A stage
 // that reads a few planes in rationals (a filter's signs of a convex pair,
 // search/Convex_pair.h) pays for those few, not for the whole model
 // (Model_builder moves every plane and vertex at once).
@@ -18,26 +18,29 @@ class Primitive_planes {
 public:
   using FT = typename K::FT;
 
-  // shape: a primitive under translations and rotations only.
-  Primitive_planes(const K& k, const Solid& shape) : T_(Affine3<FT>::identity())
-  {
-    Model_builder<K> builder(k);
-    local_ = builder.local(builder.peel(shape, T_));
-    planes_.resize(local_.planes.size());
-  }
+  // shape: a primitive under translations and rotations only; it (the
+  // scene's) outlives this.
+  Primitive_planes(const K& k, const Solid& shape)
+    : k_(k), T_(Affine3<FT>::identity()), solid_(Model_builder<K>(k).peel(shape, T_)),
+      planes_(Model_builder<K>(k).local_plane_count(solid_))
+  {}
 
   std::size_t size() const { return planes_.size(); }
 
   // Plane i in the world (Model_builder's primitive plane i).
   const Plane3<FT>& operator[](std::size_t i)
   {
-    if (!planes_[i]) planes_[i] = T_.is_identity ? local_.planes[i] : T_.apply(local_.planes[i]);
+    if (!planes_[i]) {
+      Plane3<FT> local = Model_builder<K>(k_).local_plane(solid_, i);
+      planes_[i] = T_.is_identity ? local : T_.apply(local);
+    }
     return *planes_[i];
   }
 
 private:
+  const K& k_;
   Affine3<FT> T_;
-  Primitive<FT> local_;
+  const Solid& solid_;   // the primitive, in the scene
   std::vector<std::optional<Plane3<FT>>> planes_;
 };
 

@@ -111,6 +111,7 @@ struct Scene_model {
   // The motion segment of object i on a sub-span (constant there).
   std::size_t segment_on(int i, const Time_span<FT>& s) const
   {
+    if (objects[i].motion.times.empty()) return 0;   // one segment (most objects): no midpoint to make
     return objects[i].motion.segment_at(kernel, (s.lo + s.hi) / FT(2));
   }
 };

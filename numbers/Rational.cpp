@@ -1,6 +1,9 @@
 #include "numbers/Rational.h"
 
 #include <mpfr.h>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -11,12 +14,38 @@ std::string to_string(const Rational& q)
 {
   // Gmpq is always canonical (lowest terms, positive denominator), and GMP
   // prints "p" when q = 1 and "p/q" otherwise: exactly the spec's form.
-  char* text = mpq_get_str(nullptr, 10, q.mpq());
-  std::string out(text);
-  void (*free_fn)(void*, size_t);
-  mp_get_memory_functions(nullptr, nullptr, &free_fn);
-  free_fn(text, out.size() + 1);
+  // Written into the string itself, sized as GMP's manual gives (each
+  // part's digits, at most one more than mpz_sizeinbase says, a sign, the
+  // slash and the terminator), then cut at the terminator.
+  std::string out(mpz_sizeinbase(mpq_numref(q.mpq()), 10) + mpz_sizeinbase(mpq_denref(q.mpq()), 10) + 5, '\0');
+  mpq_get_str(out.data(), 10, q.mpq());
+  out.resize(std::strlen(out.c_str()));
   return out;
+}
+
+Rational exact_rational(double x)
+{
+  if (!std::isfinite(x)) throw std::invalid_argument("internal error: exact_rational of a non-finite double");
+  Rational q;   // a new number, so writing through mpq() touches no other
+  if (x == 0) return q;
+  int e = 0;
+  // x = m 2^e with m an integer of at most 53 bits (ldexp by 53 is exact).
+  auto m = static_cast<std::int64_t>(std::ldexp(std::frexp(x, &e), 53));
+  e -= 53;
+  int zeros = __builtin_ctzll(static_cast<unsigned long long>(m));   // m odd: lowest terms
+  m >>= zeros;   // arithmetic shift of a multiple of 2^zeros: exact for negative m too
+  e += zeros;
+  if (e >= 0 && e < 10) {   // an integer of at most 63 bits (|m| < 2^53): in the numerator's one limb
+    mpz_set_si(mpq_numref(q.mpq()), m * (std::int64_t{1} << e));
+  } else if (e >= 0) {
+    mpz_set_si(mpq_numref(q.mpq()), m);
+    mpz_mul_2exp(mpq_numref(q.mpq()), mpq_numref(q.mpq()), static_cast<mp_bitcnt_t>(e));
+  } else {
+    mpz_set_si(mpq_numref(q.mpq()), m);
+    mpz_set_ui(mpq_denref(q.mpq()), 0);
+    mpz_setbit(mpq_denref(q.mpq()), static_cast<mp_bitcnt_t>(-e));
+  }
+  return q;
 }
 
 Rational floor_to_grid(const Rational& q, int bits)
@@ -81,8 +110,113 @@ void scale_to_coprime_integers(Rational* x, std::size_t n)
 // the same solution, and its last pivot D is the determinant up to sign.
 // By Cramer, y_i = D x_i is an integer, found from the bottom up as
 // (D c_i - sum_j>i u_ij y_j) / u_ii, again exact.
+namespace {
+
+// The small path of solve_regular: the same elimination in 128-bit
+// integers, every operation checked, giving up (false) at the first that
+// does not fit. The numbers are the same integers as GMP's wherever it
+// goes on, so the solution is the same rationals (lowest terms are unique).
+using Wide = __int128;
+using Wide_magnitude = unsigned __int128;
+// -2^127 is refused wherever a result is made, so that every magnitude
+// and every quotient below fits.
+constexpr Wide wide_min = static_cast<Wide>(static_cast<Wide_magnitude>(1) << 127);
+
+bool checked_mul(Wide a, Wide b, Wide& out) { return !__builtin_mul_overflow(a, b, &out) && out != wide_min; }
+
+// a b - c d.
+bool checked_det2(Wide a, Wide b, Wide c, Wide d, Wide& out)
+{
+  Wide p, q;
+  return checked_mul(a, b, p) && checked_mul(c, d, q) && !__builtin_sub_overflow(p, q, &out) && out != wide_min;
+}
+
+Wide_magnitude magnitude(Wide a) { return a < 0 ? -static_cast<Wide_magnitude>(a) : static_cast<Wide_magnitude>(a); }
+
+// gcd(|a|, |b|), which fits: neither is -2^127.
+Wide wide_gcd(Wide a, Wide b)
+{
+  Wide_magnitude x = magnitude(a), y = magnitude(b);
+  while (y != 0) x = std::exchange(y, x % y);
+  return static_cast<Wide>(x);
+}
+
+void set_wide(mpz_ptr z, Wide v)
+{
+  Wide_magnitude m = magnitude(v);
+  const std::uint64_t limbs[2] = {static_cast<std::uint64_t>(m), static_cast<std::uint64_t>(m >> 64)};
+  mpz_import(z, 2, -1, sizeof limbs[0], 0, 0, limbs);
+  if (v < 0) mpz_neg(z, z);
+}
+
+// Row x[0..w) as coprime integers (coprime_integers), when its numerators
+// and denominators fit in a long and the common denominator's products fit.
+bool small_coprime_row(const Rational* x, std::size_t w, Wide* out)
+{
+  Wide lcm = 1, gcd = 0;
+  for (std::size_t i = 0; i < w; ++i) {
+    mpz_srcptr num = mpq_numref(x[i].mpq()), den = mpq_denref(x[i].mpq());
+    if (!mpz_fits_slong_p(num) || !mpz_fits_slong_p(den)) return false;
+    Wide d = mpz_get_si(den);
+    if (!checked_mul(lcm / wide_gcd(lcm, d), d, lcm)) return false;
+  }
+  for (std::size_t i = 0; i < w; ++i) {
+    if (!checked_mul(lcm / mpz_get_si(mpq_denref(x[i].mpq())), mpz_get_si(mpq_numref(x[i].mpq())), out[i]))
+      return false;
+    gcd = wide_gcd(gcd, out[i]);
+  }
+  for (std::size_t i = 0; gcd > 1 && i < w; ++i) out[i] /= gcd;
+  return true;
+}
+
+} // namespace
+
+bool solve_regular_small(const Rational* m, std::size_t n, Rational* x)
+{
+  constexpr std::size_t most = 6;
+  const std::size_t w = n + 1;
+  if (n == 0 || n > most) return false;
+  Wide a[most * (most + 1)], y[most];
+  for (std::size_t i = 0; i < n; ++i)
+    if (!small_coprime_row(m + i * w, w, a + i * w)) return false;
+  auto at = [&](std::size_t i, std::size_t j) -> Wide& { return a[i * w + j]; };
+  Wide previous = 1;
+  for (std::size_t k = 0; k < n; ++k) {   // Bareiss, as below
+    std::size_t p = k;
+    while (p < n && at(p, k) == 0) ++p;
+    if (p == n) throw std::logic_error("internal error: solve_regular on a singular system");
+    if (p != k)
+      for (std::size_t j = k; j < w; ++j) std::swap(at(p, j), at(k, j));
+    for (std::size_t i = k + 1; i < n; ++i) {
+      for (std::size_t j = k + 1; j < w; ++j) {
+        if (!checked_det2(at(k, k), at(i, j), at(i, k), at(k, j), at(i, j))) return false;
+        at(i, j) /= previous;
+      }
+      at(i, k) = 0;
+    }
+    previous = at(k, k);
+  }
+  const Wide d = at(n - 1, n - 1);
+  for (std::size_t i = n; i-- > 0;) {
+    Wide s, t;
+    if (!checked_mul(d, at(i, n), s)) return false;
+    for (std::size_t j = i + 1; j < n; ++j)
+      if (!checked_mul(at(i, j), y[j], t) || __builtin_sub_overflow(s, t, &s) || s == wide_min) return false;
+    y[i] = s / at(i, i);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    Rational q;   // a new number, so writing through mpq() touches no other
+    set_wide(mpq_numref(q.mpq()), y[i]);
+    set_wide(mpq_denref(q.mpq()), d);
+    mpq_canonicalize(q.mpq());
+    x[i] = std::move(q);
+  }
+  return true;
+}
+
 void solve_regular(const Rational* m, std::size_t n, Rational* x)
 {
+  if (solve_regular_small(m, n, x)) return;
   const std::size_t w = n + 1;
   std::vector<mpz_class> a(n * w);
   for (std::size_t i = 0; i < n; ++i) coprime_integers(m + i * w, w, a.data() + i * w);

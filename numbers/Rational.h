@@ -19,6 +19,11 @@ using Rational = CGAL::Gmpq;
 // "p/q" in lowest terms, or "p" when q = 1 (the spec's output form).
 std::string to_string(const Rational& q);
 
+// A finite double x as the rational it is, made from its bits (x = m 2^e,
+// m odd): Gmpq(double)'s number (mpq_set_d) without its general path's
+// reallocation. How point intervals become the rational run's numbers.
+Rational exact_rational(double x);
+
 // The double nearest to q (ties to even), via MPFR: Gmpq's own to_double
 // truncates, which would make the double instantiation read a different scene
 // than "the nearest double" the spec promises. Returns +-inf on overflow.
@@ -76,6 +81,13 @@ void coprime_integers(const Rational* x, std::size_t n, mpz_class* out);
 // coordinate at the end, where rational elimination takes a gcd per
 // operation. Throws std::logic_error when the matrix is singular.
 void solve_regular(const Rational* m, std::size_t n, Rational* x);
+
+// The same solution when the rows' numbers fit in a long and the
+// elimination in 128-bit integers (every product checked): true, x
+// written; otherwise false, x untouched (n at most 6). solve_regular takes
+// it first; most of the toolkit's systems (scene numbers of a few digits)
+// fit, and it needs no allocation but the answer's.
+bool solve_regular_small(const Rational* m, std::size_t n, Rational* x);
 
 // num / den in lowest terms (den not zero, of either sign).
 Rational quotient_of_integers(const mpz_class& num, const mpz_class& den);

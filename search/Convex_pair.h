@@ -293,7 +293,11 @@ public:
   {
     const Moving& m = *moving_[o];
     const Vector3<double>& d = guide_->deep[o];
-    return {FT(d[0]) + m.v[0] * t + m.o[0], FT(d[1]) + m.v[1] * t + m.o[1], FT(d[2]) + m.v[2] * t + m.o[2], t};
+    // (d + v t) + o per coordinate, as one dot product (in rationals, one
+    // reduction; in floats the same operations, the products by 1 exact).
+    const Vector3<FT> weights{FT(1), t, FT(1)};
+    auto at = [&](int q) { return dot(Vector3<FT>{FT(d[q]), m.v[q], m.o[q]}, weights); };
+    return {at(0), at(1), at(2), t};
   }
 
 private:

@@ -7,6 +7,7 @@
 #include "scene/Number_text.h"
 #include <CGAL/FPU.h>
 #include <cmath>
+#include <cstring>
 #include <optional>
 #include <random>
 #include <vector>
@@ -334,6 +335,112 @@ BOOST_AUTO_TEST_CASE(fraction_free_solve_is_the_systems_solution)
     BOOST_TEST((x == elimination.solve_regular(M)), "system " << i);
   }
   BOOST_TEST(solved > 1000);   // the random systems are mostly regular
+}
+
+// exact_rational (a double's bits as a rational) is Gmpq(double)'s number
+// (GMP's mpq_set_d), in lowest terms, for seeded doubles of every
+// exponent, subnormals, signed zeros and integers included, and to_string
+// prints each as GMP does (numbers of up to 1,100 digits); a non-finite
+// double is refused.
+BOOST_AUTO_TEST_CASE(exact_rational_is_the_doubles_number)
+{
+  std::uint64_t seed = 20261129;
+  BOOST_TEST_MESSAGE("exact_rational: seed " << seed);
+  std::mt19937_64 rng(seed);
+  std::vector<double> xs = {0.0, -0.0, 1.0, -1.0, 0.5, 3.0, 1e-9, -1e300, 4.9e-324, -2.2250738585072014e-308,
+                            1.7976931348623157e308, 9007199254740993.0, 0.1};
+  for (int i = 0; i < 20000; ++i) {
+    std::uint64_t bits = rng();
+    double x;
+    std::memcpy(&x, &bits, sizeof x);
+    if (std::isfinite(x)) xs.push_back(x);
+    xs.push_back(std::ldexp(static_cast<double>(rng() % 100000) - 50000, static_cast<int>(rng() % 80) - 40));
+  }
+  for (double x : xs) {
+    Rational q = exact_rational(x);
+    Rational canonical;   // its own representation (Gmpq shares on copy)
+    mpq_set(canonical.mpq(), q.mpq());
+    mpq_canonicalize(canonical.mpq());
+    BOOST_TEST(mpq_equal(q.mpq(), canonical.mpq()), x);   // already in lowest terms
+    BOOST_TEST(mpz_sgn(mpq_denref(q.mpq())) > 0, x);
+    BOOST_TEST((q == Rational(x)), x);
+    // to_string, written into its own string, is GMP's text (its own allocation).
+    char* text = mpq_get_str(nullptr, 10, q.mpq());
+    BOOST_TEST(to_string(q) == std::string(text), x);
+    void (*free_fn)(void*, size_t);
+    mp_get_memory_functions(nullptr, nullptr, &free_fn);
+    free_fn(text, std::strlen(text) + 1);
+  }
+  BOOST_CHECK_THROW(exact_rational(HUGE_VAL), std::invalid_argument);
+  BOOST_CHECK_THROW(exact_rational(std::nan("")), std::invalid_argument);
+}
+
+// solve_regular's small path (128-bit integers, every operation checked)
+// against Kernel_base's rational elimination, over seeded systems:
+//  - scene-like numbers (numerators up to 100 over 1, 2, 4 or 10): a row
+//    scaled to integers has entries under 2000, so by Hadamard every k x k
+//    minor is under k^(k/2) 2000^k (4 x 4: 2.6e14), and every product the
+//    elimination makes is under 2^100: the small path must answer each;
+//  - numbers of 4 to 20 bits, then 64 to 128: where it answers, the
+//    answer is the system's, and it gives up on many (overflow), which
+//    solve_regular then solves in GMP integers, also checked here.
+BOOST_AUTO_TEST_CASE(small_solve_is_the_elimination_or_gives_up)
+{
+  Rational_kernel k;
+  const Kernel_base<Rational_kernel, Rational>& elimination = k;
+  std::uint64_t seed = 20261128;
+  BOOST_TEST_MESSAGE("small solve: seed " << seed);
+  std::mt19937_64 rng(seed);
+  auto part = [&](int b) {   // up to b random bits
+    mpz_class z = 0;
+    for (int left = 1 + static_cast<int>(rng() % static_cast<unsigned>(b)); left > 0; left -= 32) {
+      int take = std::min(left, 32);
+      z = (z << take) + static_cast<unsigned long>(rng() >> (64 - take));
+    }
+    return z;
+  };
+  // bits 0: a scene-like number; otherwise about `bits` bits over up to `bits`.
+  auto random_rational = [&](int bits) {
+    if (rng() % 4 == 0) return Rational(0);
+    if (bits == 0) {
+      const long dens[4] = {1, 2, 4, 10};
+      return Rational(static_cast<long>(rng() % 201) - 100) / Rational(dens[rng() % 4]);
+    }
+    mpz_class num = part(bits), den = part(bits) + 1;
+    if (rng() % 2) num = -num;
+    return Rational(CGAL::Gmpz(num.get_mpz_t())) / Rational(CGAL::Gmpz(den.get_mpz_t()));
+  };
+  int scene_like = 0, scene_like_answered = 0, answered = 0, gave_up = 0;
+  for (int i = 0; i < 3000; ++i) {
+    int bits = i < 1000 ? 0 : i < 2000 ? 4 + static_cast<int>(rng() % 16) : 64 + static_cast<int>(rng() % 64);
+    std::array<std::array<Rational, 5>, 4> M;
+    for (auto& row : M)
+      for (auto& v : row) v = random_rational(bits);
+    Vector4<Rational> n[4];
+    for (int r = 0; r < 4; ++r) n[r] = {M[r][0], M[r][1], M[r][2], M[r][3]};
+    if (CGAL::sign(determinant4(n[0], n[1], n[2], n[3])) == CGAL::ZERO) continue;
+    std::array<Rational, 20> flat;
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 5; ++c) flat[static_cast<std::size_t>(r * 5 + c)] = M[r][c];
+    const std::array<Rational, 4> untouched{Rational(7), Rational(7), Rational(7), Rational(7)};
+    std::array<Rational, 4> x = untouched;
+    const std::array<Rational, 4> expected = elimination.solve_regular(M);
+    scene_like += bits == 0;
+    if (solve_regular_small(flat.data(), 4, x.data())) {
+      ++answered;
+      scene_like_answered += bits == 0;
+      BOOST_TEST((x == expected), "system " << i << " (" << bits << " bits)");
+    } else {
+      ++gave_up;
+      BOOST_TEST((x == untouched), "system " << i);
+    }
+    BOOST_TEST((k.solve_regular(M) == expected), "system " << i << " (" << bits << " bits)");
+  }
+  BOOST_TEST_MESSAGE("small solve: " << answered << " answered, " << gave_up << " gave up");
+  BOOST_TEST(scene_like > 500);
+  BOOST_TEST(scene_like_answered == scene_like);
+  BOOST_TEST(answered > scene_like + 100);   // some of the 4-20 bit systems too
+  BOOST_TEST(gave_up > 800);                 // most of the larger ones
 }
 
 // The rational kernel's orientation4 (rows scaled to coprime integers, the
