@@ -232,7 +232,8 @@ private:
     auto start = std::chrono::steady_clock::now();
     r.collide = true;
     r.has_witness = false;
-    if (policy_.witness_certified()) policy_.attempt([&] { make_witness(goal, shear, A, B, span, r); });
+    if (policy_.witness_certified() && policy_.witness_answers(goal))
+      policy_.attempt([&] { make_witness(goal, shear, A, B, span, r); });
     stats_.seconds_witness += seconds_since(start);
     if (K::is_exact && r.has_witness && !r.witness_verified)
       throw std::logic_error("internal error: the exact witness failed its check; please report this scene");

@@ -90,13 +90,21 @@ public:
   // tell. The span's start (a scene number) is compared with the exact t*
   // (rational_goal_of), as the rational run compares them, instead of the
   // whole pair again in rationals.
+  // Such a tie is the rule on those scenes, so the comparisons can_improve
+  // makes (the kernel's compare: the sign of a - b) are probed first,
+  // without the throw of an uncertain one.
   template <class FT>
   bool enters_span(const AK& k, const Search_goal<FT>& goal, const Time_span<FT>& span)
   {
-    try {
-      return goal.can_improve(k, span.lo);
-    } catch (const CGAL::Uncertain_conversion_exception&) {
-      if (!earliest_ || !span.exact_lo) throw;
+    auto certain = [&](const FT& a, const FT& b) { return CGAL::is_certain(k.uncertain_sign(a - b)); };
+    bool tie = (goal.has_ceiling && !certain(goal.ceiling, span.lo)) ||
+               (goal.found && goal.earliest && !certain(span.lo, goal.t_star));
+    if (!tie || !earliest_ || !span.exact_lo) {
+      try {
+        return goal.can_improve(k, span.lo);
+      } catch (const CGAL::Uncertain_conversion_exception&) {
+        if (!earliest_ || !span.exact_lo) throw;
+      }
     }
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     Search_goal<EFT> e = rational_goal_of(goal);
@@ -327,6 +335,15 @@ public:
     bool earliest_here = earliest_ && !pending_ && !improved_on_keys_;
     return (record_ || earliest_here) && !trail_->approximate && !found_in_rationals_;
   }
+  // Closed, the witness is the contact point itself, kept only as point
+  // intervals (Filtered_runner::exact_copy): one whose time is not a point
+  // is not made (the convex pair's rational answer, or the witness line,
+  // gives it), as making it would come to nothing.
+  template <class FT>
+  bool witness_answers(const Search_goal<FT>& goal) const
+  {
+    return !goal.closed() || goal.contact[3].is_point();
+  }
   template <class F>
   void attempt(F make)
   {
@@ -509,11 +526,11 @@ public:
   int same_plane(const AK& k, const Hyperplane4<AFT>& h, const Hyperplane4<AFT>& g, long eh, int fh, long eg, int fg,
                  const Box<AFT, 4>& region)
   {
-    try {
-      return proportional(k, h, g);
-    } catch (const CGAL::Uncertain_conversion_exception&) {
-      return exact_->proportional(a_, b_, span_, frame_, eh, fh, eg, fg, region);
-    }
+    // Planes that are one are common (rotated copies), and undecidable in
+    // intervals: asked without a throw.
+    CGAL::Uncertain<int> same = proportional_or_unsure(k, h, g);
+    if (CGAL::is_certain(same)) return CGAL::get_certain(same);
+    return exact_->proportional(a_, b_, span_, frame_, eh, fh, eg, fg, region);
   }
 
   // The normal keys of the sub-span's table, once it had an uncertain line.

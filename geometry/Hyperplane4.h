@@ -3,6 +3,7 @@
 #define CLASH4D_GEOMETRY_HYPERPLANE4_H
 
 #include "geometry/kernel_ft4.h"
+#include <CGAL/Uncertain.h>
 #include <CGAL/enum.h>
 
 namespace clash4d {
@@ -16,18 +17,47 @@ struct Hyperplane4 {
   Hyperplane4 complement() const { return {{-n[0], -n[1], -n[2], -n[3]}, -c}; }
 };
 
-// +1 when h = lambda g with lambda > 0, -1 when lambda < 0, 0 otherwise; a
-// predicate of kernel K.
+// +1 when h = lambda g with lambda > 0, -1 when lambda < 0, 0 otherwise;
+// indeterminate where kernel K cannot certify a sign it needs (an interval
+// kernel on planes that are one, which is common: rotated copies), without
+// a throw (uncertain_sign). Each sign asked in the same order as the
+// predicate below, which stops at the same places.
+template <class K, class FT>
+CGAL::Uncertain<int> proportional_or_unsure(const K& k, const Hyperplane4<FT>& h, const Hyperplane4<FT>& g)
+{
+  bool unsure = false;
+  auto sign = [&](const FT& x) {
+    CGAL::Uncertain<CGAL::Sign> s = k.uncertain_sign(x);
+    unsure = !CGAL::is_certain(s);
+    return unsure ? CGAL::ZERO : CGAL::get_certain(s);
+  };
+  const CGAL::Uncertain<int> unknown(-1, 1);   // every answer possible
+  int j = 0;
+  CGAL::Sign gj = CGAL::ZERO;
+  while (j < 4 && (gj = sign(g.n[j])) == CGAL::ZERO && !unsure) ++j;
+  if (unsure) return unknown;
+  if (j == 4) return 0;
+  CGAL::Sign hj = sign(h.n[j]);
+  if (unsure) return unknown;
+  if (hj == CGAL::ZERO) return 0;
+  for (int i = 0; i < 4; ++i) {   // i = j is zero by construction (not so in intervals)
+    if (i == j) continue;
+    CGAL::Sign minor = sign(h.n[i] * g.n[j] - g.n[i] * h.n[j]);
+    if (unsure) return unknown;
+    if (minor != CGAL::ZERO) return 0;
+  }
+  CGAL::Sign offsets = sign(h.c * g.n[j] - g.c * h.n[j]);
+  if (unsure) return unknown;
+  if (offsets != CGAL::ZERO) return 0;
+  return hj == gj ? 1 : -1;
+}
+
+// The same, a predicate of kernel K: an interval kernel throws where it
+// cannot tell (CGAL::Uncertain_conversion_exception).
 template <class K, class FT>
 int proportional(const K& k, const Hyperplane4<FT>& h, const Hyperplane4<FT>& g)
 {
-  int j = 0;
-  while (j < 4 && k.sign(g.n[j]) == CGAL::ZERO) ++j;
-  if (j == 4 || k.sign(h.n[j]) == CGAL::ZERO) return 0;
-  for (int i = 0; i < 4; ++i)   // i = j is zero by construction (not so in intervals)
-    if (i != j && k.sign(h.n[i] * g.n[j] - g.n[i] * h.n[j]) != CGAL::ZERO) return 0;
-  if (k.sign(h.c * g.n[j] - g.c * h.n[j]) != CGAL::ZERO) return 0;
-  return k.sign(h.n[j]) == k.sign(g.n[j]) ? 1 : -1;
+  return CGAL::make_certain(proportional_or_unsure(k, h, g));
 }
 
 // The time of the point where four hyperplanes n_k.x + c_k = 0 meet, as

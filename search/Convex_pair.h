@@ -190,9 +190,11 @@ public:
 
   // --- Predicates: arguments and results the same in every kernel. ---
 
-  // The predicates' last signs are indeterminate where the kernel cannot
+  // The predicates' signs are indeterminate where the kernel cannot
   // certify them (kernel uncertain_sign), so that the policy decides them
-  // without a throw (convex_certain): zeros where the objects touch.
+  // without a throw (convex_certain): zeros where the objects touch. (A
+  // construction an interval kernel cannot make, the vertex or the centre,
+  // still throws: the policy catches that too.)
 
   // The sign of row j at p.
   CGAL::Uncertain<CGAL::Sign> row_sign(std::size_t j, const Point& p)
@@ -203,15 +205,19 @@ public:
   // Whether lambda >= 0 with sum lambda_i n_i = 0 over the rows `which`
   // (their one line of dependencies) has sum lambda_i c_i >= 0 (strict:
   // > 0): the strict system (strict: P) is empty. Indeterminate where the
-  // sum's sign is (a touch).
+  // sum's sign is (a touch), or a multiplier's or a pivot's.
   CGAL::Uncertain<bool> proves_empty(const std::vector<std::size_t>& which, bool strict)
   {
     std::vector<Ring_row> scaled;
-    std::optional<std::vector<R>> lambda = null_vector(which, scaled);
+    bool unsure = false;
+    std::optional<std::vector<R>> lambda = null_vector(which, scaled, unsure);
+    if (unsure) return CGAL::Uncertain<bool>::indeterminate();
     if (!lambda) return false;
     R sum(0);
     for (std::size_t i = 0; i < which.size(); ++i) {
-      if (k_.sign((*lambda)[i]) == CGAL::NEGATIVE) return false;
+      CGAL::Uncertain<CGAL::Sign> s = k_.uncertain_sign((*lambda)[i]);
+      if (!CGAL::is_certain(s)) return CGAL::Uncertain<bool>::indeterminate();
+      if (CGAL::get_certain(s) == CGAL::NEGATIVE) return false;
       sum += (*lambda)[i] * scaled[i].c;
     }
     CGAL::Uncertain<CGAL::Sign> s = k_.uncertain_sign(sum);
@@ -220,7 +226,7 @@ public:
   }
 
   // Whether the four rows meet in one point (their normals independent).
-  bool vertex_exists(const Basis& B) { return k_.sign(normals_det(B, -1)) != CGAL::ZERO; }
+  CGAL::Uncertain<bool> vertex_exists(const Basis& B) { return k_.uncertain_sign(normals_det(B, -1)) != CGAL::ZERO; }
 
   // The sign of row j at the vertex of B (a touch: zero).
   CGAL::Uncertain<CGAL::Sign> vertex_sign(const Basis& B, std::size_t j)
@@ -239,22 +245,25 @@ public:
   }
 
   // The sign of object o's plane i (its solid's own frame) at its deep point.
-  CGAL::Sign deep_sign(int o, std::size_t i)
+  CGAL::Uncertain<CGAL::Sign> deep_sign(int o, std::size_t i)
   {
     const Plane3<FT>& pl = plane(o, i);
     const Vector3<double>& d = guide_->deep[o];
     Vector3<FT> m{FT(d[0]), FT(d[1]), FT(d[2])};
-    return k_.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], m);
+    return k_.uncertain_sign(dot(Vector3<FT>{pl[0], pl[1], pl[2]}, m) + pl[3]);   // the kernel's side
   }
 
   // Whether the five rows' equal-margin system (n_j . p + s big_j = -c_j,
   // big_j the guide's scale of row j) has one solution: its determinant,
   // by Laplace along the s column, is sum_j (-1)^(j+4) big_j det(the other
   // four normals).
-  bool centre_exists(const Centre& C) { return k_.sign(centre_det(C)) != CGAL::ZERO; }
+  CGAL::Uncertain<bool> centre_exists(const Centre& C) { return k_.uncertain_sign(centre_det(C)) != CGAL::ZERO; }
 
   // The sign of row j at the centre of C.
-  CGAL::Sign centre_sign(const Centre& C, std::size_t j) { return k_.sign(row(j).value(centre(C))); }
+  CGAL::Uncertain<CGAL::Sign> centre_sign(const Centre& C, std::size_t j)
+  {
+    return k_.uncertain_sign(row(j).value(centre(C)));
+  }
 
   // --- Constructions. ---
 
@@ -591,9 +600,17 @@ private:
   // division: the elimination takes row r <- p r - r_c pivot row (p the
   // pivot: the same null space), and the back substitution, solving
   // p lambda_c = -s, scales the lambdas found so far by |p| instead of
-  // dividing by p (one positive factor for all: the same signs).
-  std::optional<std::vector<R>> null_vector(const std::vector<std::size_t>& which, std::vector<Ring_row>& scaled)
+  // dividing by p (one positive factor for all: the same signs). A pivot's
+  // sign the kernel cannot certify sets `unsure` (nothing returned): the
+  // predicate is then indeterminate, without a throw (uncertain_sign).
+  std::optional<std::vector<R>> null_vector(const std::vector<std::size_t>& which, std::vector<Ring_row>& scaled,
+                                            bool& unsure)
   {
+    auto sign = [&](const R& x) {
+      CGAL::Uncertain<CGAL::Sign> s = k_.uncertain_sign(x);
+      unsure = unsure || !CGAL::is_certain(s);
+      return unsure ? CGAL::ZERO : CGAL::get_certain(s);
+    };
     std::size_t n = which.size();
     if (n < 2) return std::nullopt;
     scaled.clear();
@@ -605,7 +622,8 @@ private:
     std::size_t rank = 0, free = n;
     for (std::size_t c = 0; c < n; ++c) {
       std::size_t r = rank;
-      while (r < 4 && k_.sign(M[r][c]) == CGAL::ZERO) ++r;
+      while (r < 4 && sign(M[r][c]) == CGAL::ZERO && !unsure) ++r;
+      if (unsure) return std::nullopt;
       if (r == 4) {
         if (free != n) return std::nullopt;   // two free columns: more than one line
         free = c;
@@ -630,7 +648,8 @@ private:
       R s(0);
       for (std::size_t cc = c + 1; cc < n; ++cc) s += M[r][cc] * lambda[cc];
       const R& p = M[r][c];
-      bool positive = k_.sign(p) == CGAL::POSITIVE;
+      bool positive = sign(p) == CGAL::POSITIVE;
+      if (unsure) return std::nullopt;
       for (std::size_t cc = c + 1; cc < n; ++cc) lambda[cc] = positive ? R(lambda[cc] * p) : R(-(lambda[cc] * p));
       lambda[c] = positive ? R(-s) : s;
     }

@@ -51,6 +51,12 @@
 //     void found_in_span(index)        a (better) point inside was found there
 //     bool stops_after(index)          after a span that found nothing: stop
 //     bool witness_certified()         the point found may become the witness
+//     bool witness_answers(goal)       a witness made from goal could be the
+//                                      answer's (a filter whose closed
+//                                      witness must be its exact numbers
+//                                      declines a contact time it only
+//                                      encloses: the witness comes from
+//                                      elsewhere, at no cost of a making)
 //     template <class F> void attempt(F make)   make the witness; a filter
 //                                      failing on the way leaves it unmade
 //   Divide_and_conquer:
@@ -170,6 +176,11 @@ struct No_filter {
   void found_in_span(std::size_t) {}
   bool stops_after(std::size_t) const { return false; }
   bool witness_certified() const { return true; }
+  template <class FT>
+  bool witness_answers(const Search_goal<FT>&) const
+  {
+    return true;
+  }
   template <class F>
   void attempt(F make) { make(); }
 

@@ -337,6 +337,64 @@ BOOST_AUTO_TEST_CASE(fraction_free_solve_is_the_systems_solution)
   BOOST_TEST(solved > 1000);   // the random systems are mostly regular
 }
 
+// proportional_or_unsure (geometry/Hyperplane4.h) on seeded pairs whose
+// answer holds by construction: h = lambda g (+1 or -1 by lambda's sign),
+// the same with h's offset or one normal coordinate moved by 1 (0), and g
+// with zero coordinates. In rationals it is always certain and the answer;
+// in intervals, where certain, the answer, where not, proportional throws;
+// both outcomes are reached (scaled copies by a lambda like 1/3 are
+// undecidable in intervals, moved ones are not).
+BOOST_AUTO_TEST_CASE(proportional_or_unsure_is_the_predicate)
+{
+  Rational_kernel rk;
+  Interval_kernel ik;
+  CGAL::Protect_FPU_rounding<true> upward;
+  std::uint64_t seed = 20261130;
+  BOOST_TEST_MESSAGE("proportional: seed " << seed);
+  std::mt19937_64 rng(seed);
+  auto small = [&] {
+    if (rng() % 3 == 0) return Rational(0);
+    return Rational(static_cast<long>(rng() % 41) - 20) / Rational(static_cast<long>(1 + rng() % 12));
+  };
+  auto in_intervals = [&](const Hyperplane4<Rational>& h) {
+    return Hyperplane4<Interval_kernel::FT>{
+        {ik.from_rational(h.n[0]), ik.from_rational(h.n[1]), ik.from_rational(h.n[2]), ik.from_rational(h.n[3])},
+        ik.from_rational(h.c)};
+  };
+  int unsure = 0, certain = 0;
+  for (int i = 0; i < 4000; ++i) {
+    Hyperplane4<Rational> g{{small(), small(), small(), small()}, small()};
+    int nonzero = 0;
+    for (const auto& x : g.n) nonzero += CGAL::sign(x) != CGAL::ZERO;
+    if (nonzero < 2) continue;   // a coordinate moved below leaves it not proportional
+    Rational lambda = small();
+    if (CGAL::sign(lambda) == CGAL::ZERO) lambda = Rational(-7, 3);
+    Hyperplane4<Rational> h{{lambda * g.n[0], lambda * g.n[1], lambda * g.n[2], lambda * g.n[3]}, lambda * g.c};
+    int expected = CGAL::sign(lambda) == CGAL::POSITIVE ? 1 : -1;
+    switch (i % 3) {
+      case 1: h.c += 1, expected = 0; break;
+      case 2: h.n[rng() % 4] += 1, expected = 0; break;
+      default: break;
+    }
+    CGAL::Uncertain<int> exact = proportional_or_unsure(rk, h, g);
+    BOOST_TEST_REQUIRE(CGAL::is_certain(exact));
+    BOOST_TEST(CGAL::get_certain(exact) == expected, "pair " << i);
+    BOOST_TEST(proportional(rk, h, g) == expected, "pair " << i);
+    CGAL::Uncertain<int> approx = proportional_or_unsure(ik, in_intervals(h), in_intervals(g));
+    if (CGAL::is_certain(approx)) {
+      ++certain;
+      BOOST_TEST(CGAL::get_certain(approx) == expected, "pair " << i);
+      BOOST_TEST(proportional(ik, in_intervals(h), in_intervals(g)) == expected, "pair " << i);
+    } else {
+      ++unsure;
+      BOOST_CHECK_THROW(proportional(ik, in_intervals(h), in_intervals(g)), CGAL::Uncertain_conversion_exception);
+    }
+  }
+  BOOST_TEST_MESSAGE("proportional: " << certain << " certain in intervals, " << unsure << " not");
+  BOOST_TEST(unsure > 100);
+  BOOST_TEST(certain > 500);
+}
+
 // exact_rational (a double's bits as a rational) is Gmpq(double)'s number
 // (GMP's mpq_set_d), in lowest terms, for seeded doubles of every
 // exponent, subnormals, signed zeros and integers included, and to_string
