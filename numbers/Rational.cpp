@@ -104,18 +104,10 @@ void scale_to_coprime_integers(Rational* x, std::size_t n)
   for (std::size_t i = 0; i < n; ++i) x[i] = Rational(CGAL::Gmpz(z[i].get_mpz_t()));
 }
 
-// Bareiss: after step k, row i > k holds (a_kk a_ij - a_ik a_kj) / p, p the
-// previous pivot, an exact division (each entry is a minor of the scaled
-// matrix); the rows stay combinations of the system's, so the triangle has
-// the same solution, and its last pivot D is the determinant up to sign.
-// By Cramer, y_i = D x_i is an integer, found from the bottom up as
-// (D c_i - sum_j>i u_ij y_j) / u_ii, again exact.
 namespace {
 
-// The small path of solve_regular: the same elimination in 128-bit
-// integers, every operation checked, giving up (false) at the first that
-// does not fit. The numbers are the same integers as GMP's wherever it
-// goes on, so the solution is the same rationals (lowest terms are unique).
+// 128-bit integers with every operation checked: the small path of
+// solve_regular, which gives up at the first result that does not fit.
 using Wide = __int128;
 using Wide_magnitude = unsigned __int128;
 // -2^127 is refused wherever a result is made, so that every magnitude
@@ -123,13 +115,6 @@ using Wide_magnitude = unsigned __int128;
 constexpr Wide wide_min = static_cast<Wide>(static_cast<Wide_magnitude>(1) << 127);
 
 bool checked_mul(Wide a, Wide b, Wide& out) { return !__builtin_mul_overflow(a, b, &out) && out != wide_min; }
-
-// a b - c d.
-bool checked_det2(Wide a, Wide b, Wide c, Wide d, Wide& out)
-{
-  Wide p, q;
-  return checked_mul(a, b, p) && checked_mul(c, d, q) && !__builtin_sub_overflow(p, q, &out) && out != wide_min;
-}
 
 Wide_magnitude magnitude(Wide a) { return a < 0 ? -static_cast<Wide_magnitude>(a) : static_cast<Wide_magnitude>(a); }
 
@@ -147,6 +132,82 @@ void set_wide(mpz_ptr z, Wide v)
   const std::uint64_t limbs[2] = {static_cast<std::uint64_t>(m), static_cast<std::uint64_t>(m >> 64)};
   mpz_import(z, 2, -1, sizeof limbs[0], 0, 0, limbs);
   if (v < 0) mpz_neg(z, z);
+}
+
+// The integer arithmetic of bareiss: each operation writes `out` and says
+// whether its result fits (GMP's always does; out may alias an argument).
+struct Wide_arithmetic {
+  static bool is_zero(Wide a) { return a == 0; }
+  // out = a b - c d
+  static bool det2(Wide a, Wide b, Wide c, Wide d, Wide& out)
+  {
+    Wide p, q;
+    return checked_mul(a, b, p) && checked_mul(c, d, q) && !__builtin_sub_overflow(p, q, &out) && out != wide_min;
+  }
+  static bool mul(Wide a, Wide b, Wide& out) { return checked_mul(a, b, out); }
+  // out -= a b
+  static bool sub_mul(Wide a, Wide b, Wide& out)
+  {
+    Wide t;
+    return checked_mul(a, b, t) && !__builtin_sub_overflow(out, t, &out) && out != wide_min;
+  }
+  static void divexact(Wide& out, Wide a, Wide b) { out = a / b; }   // exact, and a != -2^127
+};
+
+struct Gmp_arithmetic {
+  static bool is_zero(const mpz_class& a) { return sgn(a) == 0; }
+  static bool det2(const mpz_class& a, const mpz_class& b, const mpz_class& c, const mpz_class& d, mpz_class& out)
+  {
+    out = a * b - c * d;
+    return true;
+  }
+  static bool mul(const mpz_class& a, const mpz_class& b, mpz_class& out) { return out = a * b, true; }
+  static bool sub_mul(const mpz_class& a, const mpz_class& b, mpz_class& out) { return out -= a * b, true; }
+  static void divexact(mpz_class& out, const mpz_class& a, const mpz_class& b)
+  {
+    mpz_divexact(out.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+  }
+};
+
+// Bareiss: after step k, row i > k holds (a_kk a_ij - a_ik a_kj) / p, p the
+// previous pivot, an exact division (each entry is a minor of the scaled
+// matrix); the rows stay combinations of the system's, so the triangle has
+// the same solution, and its last pivot D is the determinant up to sign.
+// By Cramer, y_i = D x_i is an integer, found from the bottom up as
+// (D c_i - sum_j>i u_ij y_j) / u_ii, again exact.
+// a: the n x (n + 1) rows, as integers I in arithmetic A; y and d: the
+// solution's numerators over the determinant. False when a result does not
+// fit (A refuses it); throws std::logic_error when the matrix is singular.
+template <class I, class A>
+bool bareiss(I* a, std::size_t n, I* y, I& d)
+{
+  const std::size_t w = n + 1;
+  auto at = [&](std::size_t i, std::size_t j) -> I& { return a[i * w + j]; };
+  I previous(1);
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t p = k;
+    while (p < n && A::is_zero(at(p, k))) ++p;
+    if (p == n) throw std::logic_error("internal error: solve_regular on a singular system");
+    if (p != k)
+      for (std::size_t j = k; j < w; ++j) std::swap(at(p, j), at(k, j));
+    for (std::size_t i = k + 1; i < n; ++i) {
+      for (std::size_t j = k + 1; j < w; ++j) {
+        if (!A::det2(at(k, k), at(i, j), at(i, k), at(k, j), at(i, j))) return false;
+        A::divexact(at(i, j), at(i, j), previous);
+      }
+      at(i, k) = 0;
+    }
+    previous = at(k, k);
+  }
+  d = at(n - 1, n - 1);
+  for (std::size_t i = n; i-- > 0;) {
+    I s;
+    if (!A::mul(d, at(i, n), s)) return false;
+    for (std::size_t j = i + 1; j < n; ++j)
+      if (!A::sub_mul(at(i, j), y[j], s)) return false;
+    A::divexact(y[i], s, at(i, i));
+  }
+  return true;
 }
 
 // Row x[0..w) as coprime integers (coprime_integers), when its numerators
@@ -171,39 +232,17 @@ bool small_coprime_row(const Rational* x, std::size_t w, Wide* out)
 
 } // namespace
 
+// The same elimination in 128-bit integers first: the same integers as
+// GMP's wherever it goes on, so the same rationals (lowest terms are unique).
 bool solve_regular_small(const Rational* m, std::size_t n, Rational* x)
 {
   constexpr std::size_t most = 6;
   const std::size_t w = n + 1;
   if (n == 0 || n > most) return false;
-  Wide a[most * (most + 1)], y[most];
+  Wide a[most * (most + 1)], y[most], d = 0;
   for (std::size_t i = 0; i < n; ++i)
     if (!small_coprime_row(m + i * w, w, a + i * w)) return false;
-  auto at = [&](std::size_t i, std::size_t j) -> Wide& { return a[i * w + j]; };
-  Wide previous = 1;
-  for (std::size_t k = 0; k < n; ++k) {   // Bareiss, as below
-    std::size_t p = k;
-    while (p < n && at(p, k) == 0) ++p;
-    if (p == n) throw std::logic_error("internal error: solve_regular on a singular system");
-    if (p != k)
-      for (std::size_t j = k; j < w; ++j) std::swap(at(p, j), at(k, j));
-    for (std::size_t i = k + 1; i < n; ++i) {
-      for (std::size_t j = k + 1; j < w; ++j) {
-        if (!checked_det2(at(k, k), at(i, j), at(i, k), at(k, j), at(i, j))) return false;
-        at(i, j) /= previous;
-      }
-      at(i, k) = 0;
-    }
-    previous = at(k, k);
-  }
-  const Wide d = at(n - 1, n - 1);
-  for (std::size_t i = n; i-- > 0;) {
-    Wide s, t;
-    if (!checked_mul(d, at(i, n), s)) return false;
-    for (std::size_t j = i + 1; j < n; ++j)
-      if (!checked_mul(at(i, j), y[j], t) || __builtin_sub_overflow(s, t, &s) || s == wide_min) return false;
-    y[i] = s / at(i, i);
-  }
+  if (!bareiss<Wide, Wide_arithmetic>(a, n, y, d)) return false;
   for (std::size_t i = 0; i < n; ++i) {
     Rational q;   // a new number, so writing through mpq() touches no other
     set_wide(mpq_numref(q.mpq()), y[i]);
@@ -218,32 +257,10 @@ void solve_regular(const Rational* m, std::size_t n, Rational* x)
 {
   if (solve_regular_small(m, n, x)) return;
   const std::size_t w = n + 1;
-  std::vector<mpz_class> a(n * w);
+  std::vector<mpz_class> a(n * w), y(n);
+  mpz_class d;
   for (std::size_t i = 0; i < n; ++i) coprime_integers(m + i * w, w, a.data() + i * w);
-  auto at = [&](std::size_t i, std::size_t j) -> mpz_class& { return a[i * w + j]; };
-  mpz_class previous = 1;
-  for (std::size_t k = 0; k < n; ++k) {
-    std::size_t p = k;
-    while (p < n && sgn(at(p, k)) == 0) ++p;
-    if (p == n) throw std::logic_error("internal error: solve_regular on a singular system");
-    if (p != k)
-      for (std::size_t j = k; j < w; ++j) std::swap(at(p, j), at(k, j));
-    for (std::size_t i = k + 1; i < n; ++i) {
-      for (std::size_t j = k + 1; j < w; ++j) {
-        at(i, j) = at(k, k) * at(i, j) - at(i, k) * at(k, j);
-        mpz_divexact(at(i, j).get_mpz_t(), at(i, j).get_mpz_t(), previous.get_mpz_t());
-      }
-      at(i, k) = 0;
-    }
-    previous = at(k, k);
-  }
-  const mpz_class& d = at(n - 1, n - 1);
-  std::vector<mpz_class> y(n);
-  for (std::size_t i = n; i-- > 0;) {
-    mpz_class s = d * at(i, n);
-    for (std::size_t j = i + 1; j < n; ++j) s -= at(i, j) * y[j];
-    mpz_divexact(y[i].get_mpz_t(), s.get_mpz_t(), at(i, i).get_mpz_t());
-  }
+  bareiss<mpz_class, Gmp_arithmetic>(a.data(), n, y.data(), d);
   for (std::size_t i = 0; i < n; ++i) x[i] = quotient_of_integers(y[i], d);
 }
 
