@@ -85,27 +85,40 @@ public:
   // on a certified path (an earliest-mode rational run can replay it).
   bool earliest_trail() const { return earliest_ && trail_->complete && !trail_->approximate && !pending_; }
 
+  // Whether goal.can_improve(k, t) would meet a comparison the intervals
+  // cannot certify: the same comparisons (the kernel's compare, the sign of
+  // a - b), stopping where it stops, asked without a throw.
+  template <class FT>
+  static bool ties(const AK& k, const Search_goal<FT>& goal, const FT& t)
+  {
+    if (goal.has_ceiling) {
+      CGAL::Uncertain<CGAL::Sign> s = k.uncertain_sign(goal.ceiling - t);
+      if (!CGAL::is_certain(s)) return true;
+      if (CGAL::get_certain(s) == CGAL::NEGATIVE) return false;   // can_improve: no, at once
+    }
+    return goal.found && goal.earliest && !CGAL::is_certain(k.uncertain_sign(t - goal.t_star));
+  }
+  // goal.can_improve(k, t) in intervals; nothing at a tie the caller then
+  // decides in rationals (when tie_in_rationals: it can), without the
+  // throw; at a tie it cannot decide, the interval run's throw.
+  template <class FT>
+  static std::optional<bool> certified_improves(const AK& k, const Search_goal<FT>& goal, const FT& t,
+                                                bool tie_in_rationals)
+  {
+    if (tie_in_rationals && ties(k, goal, t)) return std::nullopt;
+    return goal.can_improve(k, t);
+  }
+
   // Earliest mode: a sub-span starting exactly at t* (the motion changing
   // at the contact: approach and stop) ties with it, which intervals cannot
   // tell. The span's start (a scene number) is compared with the exact t*
   // (rational_goal_of), as the rational run compares them, instead of the
   // whole pair again in rationals.
-  // Such a tie is the rule on those scenes, so the comparisons can_improve
-  // makes (the kernel's compare: the sign of a - b) are probed first,
-  // without the throw of an uncertain one.
+  // Such a tie is the rule on those scenes (certified_improves: no throw).
   template <class FT>
   bool enters_span(const AK& k, const Search_goal<FT>& goal, const Time_span<FT>& span)
   {
-    auto certain = [&](const FT& a, const FT& b) { return CGAL::is_certain(k.uncertain_sign(a - b)); };
-    bool tie = (goal.has_ceiling && !certain(goal.ceiling, span.lo)) ||
-               (goal.found && goal.earliest && !certain(span.lo, goal.t_star));
-    if (!tie || !earliest_ || !span.exact_lo) {
-      try {
-        return goal.can_improve(k, span.lo);
-      } catch (const CGAL::Uncertain_conversion_exception&) {
-        if (!earliest_ || !span.exact_lo) throw;
-      }
-    }
+    if (std::optional<bool> r = certified_improves(k, goal, span.lo, earliest_ && span.exact_lo)) return *r;
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     Search_goal<EFT> e = rational_goal_of(goal);
     ++stats_->exact_ties;
@@ -119,11 +132,7 @@ public:
   bool convex_improves(const AK& k, Stage& stage, const Search_goal<FT>& goal, const std::array<int, 4>* B,
                        const FT& t)
   {
-    try {
-      return goal.can_improve(k, t);
-    } catch (const CGAL::Uncertain_conversion_exception&) {
-      if (!earliest_ || !B) throw;
-    }
+    if (std::optional<bool> r = certified_improves(k, goal, t, earliest_ && B)) return *r;
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     Search_goal<EFT> e = rational_goal_of(goal);
     ++stats_->exact_ties;
@@ -363,11 +372,7 @@ public:
   template <class FT>
   bool can_enter(const AK& k, const Search_goal<FT>& goal, const Box<FT, 4>& region)
   {
-    try {
-      return goal.can_improve(k, region.lo[3]);
-    } catch (const CGAL::Uncertain_conversion_exception&) {
-      if (!earliest_ || fold_unsynced_) throw;
-    }
+    if (std::optional<bool> r = certified_improves(k, goal, region.lo[3], earliest_ && !fold_unsynced_)) return *r;
     std::optional<Box<EFT, 4>> exact = exact_region(span_, region);
     if (!exact) throw CGAL::Uncertain_conversion_exception("a region's time the intervals only enclose");
     return rational_goal_of(goal).can_improve(runner_->ek_, exact->lo[3]);
@@ -379,15 +384,14 @@ public:
   // 4x4 solve on the rational planes of the conquer (on the rational run's
   // region, exact/Region_faces.h), compared with the exact t* as the
   // rational run compares it, instead of the whole line in rationals.
+  // (Such ties are common, the contact vertex ending many edges:
+  // certified_improves, without the throw.)
   template <class G, class FT, class Fourth>
   bool improves(const AK& k, const G& g, const Search_goal<FT>& goal, const FT& t,
                 const std::array<std::size_t, 3>& line, Fourth fourth)
   {
-    try {
-      return goal.can_improve(k, t);
-    } catch (const CGAL::Uncertain_conversion_exception&) {
-      if (!earliest_ || !goal.earliest || fold_unsynced_) throw;
-    }
+    if (std::optional<bool> r = certified_improves(k, goal, t, earliest_ && goal.earliest && !fold_unsynced_))
+      return *r;
     std::size_t p = fourth();
     if (p == npos) throw CGAL::Uncertain_conversion_exception("a tie at an unknown vertex");
     Search_goal<EFT> exact_goal = rational_goal_of(goal);
