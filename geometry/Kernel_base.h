@@ -103,6 +103,13 @@ public:
   {
     return derived().sign(dot(n, p) + c);
   }
+  // The same where the kernel can certify it, indeterminate otherwise
+  // (uncertain_sign: no throw).
+  template <std::size_t N>
+  CGAL::Uncertain<CGAL::Sign> uncertain_side(const std::array<FT, N>& n, const FT& c, const std::array<FT, N>& p) const
+  {
+    return derived().uncertain_sign(dot(n, p) + c);
+  }
 
   // Sign of a dot product: orientation of a direction against a normal.
   template <std::size_t N>

@@ -220,6 +220,7 @@ public:
         std::size_t j = (i + 1) % n;
         FT x = num(s, 2 * i), y = num(s, 2 * i + 1);
         FT dx = num(s, 2 * j) - x, dy = num(s, 2 * j + 1) - y;
+        // Counter-clockwise base: the outward normal of edge i is (dy, -dx).
         return {dy, -dx, zero, -(dy * x - dx * y)};
       }
       case K_::Hull: {
@@ -308,20 +309,13 @@ private:
   void local_geometry(const Solid& s, Primitive<FT>& p, bool with_planes = true) const
   {
     using K_ = Solid::Kind;
-    const FT zero(0), one(1);
     switch (s.kind) {
       case K_::Halfspace:
-        p.planes.push_back({num(s, 0), num(s, 1), num(s, 2), num(s, 3)});
+        p.planes.push_back(local_plane(s, 0));
         break;
       case K_::Block: {
         Vector3<FT> lo = vec3(s, 0), hi = vec3(s, 3);
-        for (int a = 0; a < 3 && with_planes; ++a) {
-          Plane3<FT> below{zero, zero, zero, lo[a]}, above{zero, zero, zero, -hi[a]};
-          below[a] = -one;
-          above[a] = one;
-          p.planes.push_back(below);
-          p.planes.push_back(above);
-        }
+        for (std::size_t i = 0; i < 6 && with_planes; ++i) p.planes.push_back(local_plane(s, i));
         for (int c = 0; c < 8; ++c)
           p.vertices.push_back({(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2]});
         break;
@@ -329,8 +323,7 @@ private:
       case K_::Convex: {
         p.planes.reserve(s.numbers.size() / 4);
         p.vertices.reserve(s.triples.size());
-        for (std::size_t i = 0; i < s.numbers.size(); i += 4)
-          p.planes.push_back({num(s, i), num(s, i + 1), num(s, i + 2), num(s, i + 3)});
+        for (std::size_t i = 0; i < s.numbers.size() / 4; ++i) p.planes.push_back(local_plane(s, i));
         for (std::size_t i = 0; i < s.triples.size(); ++i) {
           const auto& t = s.triples[i];
           p.vertices.push_back(exact_read(s) ? constructed3(s, 3 * i)
@@ -342,18 +335,11 @@ private:
         std::size_t n = (s.numbers.size() - 2) / 2;
         FT z0 = num(s, 2 * n), z1 = num(s, 2 * n + 1);
         for (std::size_t i = 0; i < n; ++i) {
-          std::size_t j = (i + 1) % n;
           FT x = num(s, 2 * i), y = num(s, 2 * i + 1);
-          FT dx = num(s, 2 * j) - x, dy = num(s, 2 * j + 1) - y;
-          // Counter-clockwise base: the outward normal of edge i is (dy, -dx).
-          if (with_planes) p.planes.push_back({dy, -dx, zero, -(dy * x - dx * y)});
           p.vertices.push_back({x, y, z0});
           p.vertices.push_back({x, y, z1});
         }
-        if (with_planes) {
-          p.planes.push_back({zero, zero, -one, z0});
-          p.planes.push_back({zero, zero, one, -z1});
-        }
+        for (std::size_t i = 0; i < n + 2 && with_planes; ++i) p.planes.push_back(local_plane(s, i));
         break;
       }
       case K_::Hull: {

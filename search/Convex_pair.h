@@ -250,7 +250,7 @@ public:
     const Plane3<FT>& pl = plane(o, i);
     const Vector3<double>& d = guide_->deep[o];
     Vector3<FT> m{FT(d[0]), FT(d[1]), FT(d[2])};
-    return k_.uncertain_sign(dot(Vector3<FT>{pl[0], pl[1], pl[2]}, m) + pl[3]);   // the kernel's side
+    return k_.uncertain_side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], m);
   }
 
   // Whether the five rows' equal-margin system (n_j . p + s big_j = -c_j,
