@@ -221,8 +221,8 @@ private:
   void enter(int a, int b, std::size_t s, const std::array<bool, 3>& frame)
   {
     if (s == span_) return;
-    runner_.need_model(a);
-    runner_.need_model(b);
+    runner_.need_planes(a);   // the table reads planes alone
+    runner_.need_planes(b);
     groups_ = Motion_groups<EFT>();
     table_ = Extrusion<EK>::span_table(runner_.emodel_, runner_.esettled_, a, b, s, frame, runner_.use_sbounds_, groups_,
                                        closed_);

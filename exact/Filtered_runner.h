@@ -56,8 +56,9 @@ public:
   using Protector = typename AK::Protector;
 
   Filtered_runner(const Scene& scene, bool use_sbounds)
-    : scene_(scene), use_sbounds_(use_sbounds), built_(new Lazy_once[scene.objects.size()]),
-      settled_(new Lazy_once[scene.objects.size()]), moved_(new Lazy_once[scene.objects.size()])
+    : scene_(scene), use_sbounds_(use_sbounds), planed_(new Lazy_once[scene.objects.size()]),
+      built_(new Lazy_once[scene.objects.size()]), settled_(new Lazy_once[scene.objects.size()]),
+      moved_(new Lazy_once[scene.objects.size()])
   {
     emodel_.t_lo = ek_.from_rational(scene.t_lo);
     emodel_.t_hi = ek_.from_rational(scene.t_hi);
@@ -285,6 +286,8 @@ private:
     std::optional<typename Interval_filter<Filtered_runner>::Exact_goal> g = policy.exact_goal();
     if (!g) return std::nullopt;
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    need_planes(a);   // the witness and its check read planes alone
+    need_planes(b);
     const Time_span<EFT> span = emodel_.sub_spans({a, b}).at(g->span);
     Moving_object<EFT> A = moving_on(emodel_, a, span, {}), B = moving_on(emodel_, b, span, {});
     Pair_result<EFT> r;
@@ -330,7 +333,8 @@ private:
   Scene_model<EK> emodel_;                    // objects built on demand
   std::vector<typename S_bounds<EK>::Bounds> esettled_;
   std::vector<Object_model<EFT>> ebounds_;   // boxes-only trees (need_bounds)
-  std::unique_ptr<Lazy_once[]> built_, settled_, moved_;   // EK's model of an object, its S-bounds, its motion
+  // EK's planes of an object, its whole model, its S-bounds, its motion.
+  std::unique_ptr<Lazy_once[]> planed_, built_, settled_, moved_;
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
       stages_adopted_{0}, lines_rerun_{0}, witness_lines_{0}, convex_rational_{0};
@@ -516,12 +520,31 @@ private:
     return b;
   }
 
-  // EK's model of object i (what plane tables need), and with need_exact
-  // its S-bounds too (what EK's runs need).
-  void need_model(int i)
+  // EK's planes of object i, in its model's tree (Model_builder::
+  // build_planes): all plane tables (exact/Exact_span.h), witnesses and
+  // their checks read. Its vertices and boxes are made only when
+  // need_model asks.
+  void need_planes(int i)
   {
     need_motion(i);
-    built_[i].call([&] { emodel_.objects[i].csg = Model_builder<EK>(ek_).build(scene_.objects[i].shape); });
+    planed_[i].call([&] { emodel_.objects[i].csg = Model_builder<EK>(ek_).build_planes(scene_.objects[i].shape); });
+  }
+  // EK's whole model of object i (what EK's runs and linear programs read:
+  // Convex_pair reads vertices), and with need_exact its S-bounds too. The
+  // planes' model is completed in place: its planes, which another thread
+  // may be reading, are not touched, and no reader of vertices or boxes
+  // gets here before this is done.
+  void need_model(int i)
+  {
+    need_planes(i);
+    built_[i].call([&] {
+      Csg_model<EFT> more = Model_builder<EK>(ek_).build_vertices(scene_.objects[i].shape);
+      std::vector<Primitive<EFT>>& to = emodel_.objects[i].csg.primitives;
+      for (std::size_t k = 0; k < to.size(); ++k) {
+        to[k].vertices = std::move(more.primitives[k].vertices);
+        to[k].box = more.primitives[k].box;
+      }
+    });
   }
   // Only the motion (a convex pair's signs in rationals read their planes
   // from the scene as asked, Interval_filter::Exact_convex).

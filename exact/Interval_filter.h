@@ -197,10 +197,10 @@ public:
     Vector4<EFT> g{EFT(f.point[0]), EFT(f.point[1]), EFT(f.point[2]), EFT(f.point[3])};
     if (!closed && !(found.has_witness && found.witness_verified && runner_->to_exact(found.witness, r.witness))) {
       // A point inside the intervals could not snap (an overlap as thin as
-      // their enclosures): the witness made from it in rationals, on the
-      // objects' whole models.
-      runner_->need_model(found.a);
-      runner_->need_model(found.b);
+      // their enclosures): the witness made from it in rationals, on every
+      // plane of the objects (their models' planes: all it and its check read).
+      runner_->need_planes(found.a);
+      runner_->need_planes(found.b);
       const Exact_convex& x = *exact_convex_;
       Vector3<EFT> world{EFT(0), EFT(0), EFT(0)};
       r.witness = Witness<EK>(runner_->ek_).make(f.at_centre ? e.centre(f.centre_rows) : g, world, x.A, x.B,
@@ -894,8 +894,8 @@ private:
     auto it = roots_.find(s);
     if (it == roots_.end() || closed_ || !runner_->use_sbounds_) return root;
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-    runner_->need_model(a_);
-    runner_->need_model(b_);
+    runner_->need_motion(a_);   // the sub-spans' times; the faces read no model
+    runner_->need_motion(b_);
     const Time_span<EFT> span = runner_->emodel_.sub_spans({a_, b_}).at(s);
     root = Region_faces<AK, EK>(runner_->ak_, runner_->ek_).root(it->second, span.lo, span.hi);
     return root;

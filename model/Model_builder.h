@@ -83,30 +83,38 @@ public:
   using FT = typename K::FT;
   explicit Model_builder(const K& k) : k_(k) {}
 
-  Csg_model<FT> build(const Solid& s)
-  {
-    model_ = Csg_model<FT>();
-    boxes_only_ = false;
-    add(s, Affine3<FT>::identity(), -1);
-    return std::move(model_);
-  }
+  Csg_model<FT> build(const Solid& s) { return build_parts(s, Parts::all); }
 
   // The same tree with each primitive's box alone (no planes, no
   // vertices): all the S-bounds read (search/S_bounds.h), at a fraction of
   // the model's cost where only they are needed (a region stage made in
   // rationals, exact/Exact_span.h). Each box is the one build gives.
-  Csg_model<FT> build_boxes(const Solid& s)
+  Csg_model<FT> build_boxes(const Solid& s) { return build_parts(s, Parts::boxes); }
+
+  // The same tree with each primitive's planes alone (no vertices, no
+  // box): all plane tables, witnesses and their checks read
+  // (model/Extrusion.h, search/Witness.h, model/Point_classifier.h), made
+  // by local_plane and moved as build moves them, so they are build's.
+  Csg_model<FT> build_planes(const Solid& s) { return build_parts(s, Parts::planes); }
+
+  // The same tree with each primitive's vertices and box alone (no
+  // planes): what build_planes leaves out, to complete its model into
+  // build's (exact/Filtered_runner.h).
+  Csg_model<FT> build_vertices(const Solid& s) { return build_parts(s, Parts::vertices); }
+
+private:
+  enum class Parts { all, boxes, planes, vertices };
+  const K& k_;
+  Csg_model<FT> model_;
+  Parts parts_ = Parts::all;
+
+  Csg_model<FT> build_parts(const Solid& s, Parts parts)
   {
     model_ = Csg_model<FT>();
-    boxes_only_ = true;
+    parts_ = parts;
     add(s, Affine3<FT>::identity(), -1);
     return std::move(model_);
   }
-
-private:
-  const K& k_;
-  Csg_model<FT> model_;
-  bool boxes_only_ = false;
 
   FT num(const Solid& s, std::size_t i) const { return k_.from_rational(s.numbers[i]); }
 
@@ -142,7 +150,12 @@ private:
     }
     model_.nodes[id].op = Csg_node::Op::Primitive;
     model_.nodes[id].primitive = static_cast<int>(model_.primitives.size());
-    model_.primitives.push_back(boxes_only_ ? boxed(s, T) : primitive(s, T));
+    switch (parts_) {
+      case Parts::boxes: model_.primitives.push_back(boxed(s, T)); break;
+      case Parts::planes: model_.primitives.push_back(planed(s, T)); break;
+      case Parts::vertices: model_.primitives.push_back(vertexed(s, T)); break;
+      default: model_.primitives.push_back(primitive(s, T)); break;
+    }
     return id;
   }
 
@@ -290,6 +303,41 @@ private:
     }
     p.planes.clear();
     p.vertices.clear();
+    return p;
+  }
+
+  // A primitive with its planes only (build_planes): local_plane's, which
+  // are local_geometry's, moved by T as place moves them.
+  Primitive<FT> planed(const Solid& s, const Affine3<FT>& T) const
+  {
+    Primitive<FT> p;
+    p.path = s.path;
+    p.corners = s.corners;
+    std::size_t n = local_plane_count(s);
+    p.planes.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) p.planes.push_back(local_plane(s, i));
+    if (!T.is_identity)
+      for (auto& h : p.planes) h = T.apply(h);
+    return p;
+  }
+
+  // A primitive with its vertices and box only (build_vertices): place's,
+  // without moving the planes (a convex solid's and a half-space's are
+  // made all the same, for its vertices or its box, then dropped).
+  Primitive<FT> vertexed(const Solid& s, const Affine3<FT>& T) const
+  {
+    Primitive<FT> p;
+    p.path = s.path;
+    p.corners = s.corners;
+    local_geometry(s, p, false);
+    if (p.vertices.empty()) {
+      place(p, T);   // a half-space: the box of its moved plane
+    } else {
+      if (!T.is_identity)
+        for (auto& v : p.vertices) v = T.apply(v);
+      p.box = vertex_box(p.vertices);
+    }
+    p.planes.clear();
     return p;
   }
 

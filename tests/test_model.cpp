@@ -136,31 +136,45 @@ BOOST_AUTO_TEST_CASE(primitive_box_is_the_models_box)
 // only them, exact/Exact_span.h). A union of every primitive kind, placed
 // by a translation (the box moved as a whole), a rotation and neither; and
 // one hand-derived box: the 3-4-5 turn of the unit cube, translated.
-BOOST_AUTO_TEST_CASE(boxes_only_tree_is_the_models)
-{
-  const std::string shape = R"({"difference":[{"union":[
+// A union of every primitive kind, placed by a translation, a rotation and
+// neither, minus a turned and moved block: the trees below are held to
+// build's on it.
+const std::string every_kind = R"({"difference":[{"union":[
       {"translate":["1/3",-2,"0.5"],"solid":{"block":{"min":[-1,-1,-1],"max":[1,1,1]}}},
       {"rotate":[3,0,0,4],"solid":{"prism":{"base":[[0,0],[2,0],[1,1]],"z":[0,"0.5"]}}},
       {"intersection":[{"hull":[[0,0,0],[1,0,0],[0,1,0],[0,0,1],["1/2","1/3","1/7"]]},{"halfspace":[1,1,0,-1]}]},
       {"translate":[2,0,0],"solid":{"convex":[[1,1,1,-1],[1,1,-1,-1],[1,-1,1,-1],[1,-1,-1,-1],[-1,1,1,-1],[-1,1,-1,-1],[-1,-1,1,-1],[-1,-1,-1,-1]]}}]},
     {"translate":[5,0,0],"solid":{"rotate":[3,0,0,4],"solid":{"block":{"min":[-1,-1,-1],"max":[1,1,1]}}}}]})";
+
+void check_same_tree(const Csg_model<Q>& part, const Csg_model<Q>& built)
+{
+  BOOST_TEST_REQUIRE(part.nodes.size() == built.nodes.size());
+  BOOST_TEST_REQUIRE(part.primitives.size() == built.primitives.size());
+  for (std::size_t i = 0; i < built.nodes.size(); ++i) {
+    BOOST_TEST((part.nodes[i].op == built.nodes[i].op && part.nodes[i].primitive == built.nodes[i].primitive &&
+                part.nodes[i].children == built.nodes[i].children && part.nodes[i].parent == built.nodes[i].parent));
+  }
+}
+
+void check_same_box(const Box<Q, 3>& b, const Box<Q, 3>& m, std::size_t i)
+{
+  BOOST_TEST((b.has_lo == m.has_lo && b.has_hi == m.has_hi), "primitive " << i);
+  for (int a = 0; a < 3; ++a) {
+    if (b.has_lo[a] && m.has_lo[a]) BOOST_TEST(b.lo[a] == m.lo[a], "primitive " << i << " axis " << a);
+    if (b.has_hi[a] && m.has_hi[a]) BOOST_TEST(b.hi[a] == m.hi[a], "primitive " << i << " axis " << a);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(boxes_only_tree_is_the_models)
+{
+  const std::string& shape = every_kind;
   Scene scene = scene_with(shape);
   Rational_kernel k;
   Csg_model<Q> built = model_of(shape), boxes = Model_builder<Rational_kernel>(k).build_boxes(scene.objects[0].shape);
-  BOOST_TEST_REQUIRE(boxes.nodes.size() == built.nodes.size());
-  BOOST_TEST_REQUIRE(boxes.primitives.size() == built.primitives.size());
-  for (std::size_t i = 0; i < built.nodes.size(); ++i) {
-    BOOST_TEST((boxes.nodes[i].op == built.nodes[i].op && boxes.nodes[i].primitive == built.nodes[i].primitive &&
-                boxes.nodes[i].children == built.nodes[i].children && boxes.nodes[i].parent == built.nodes[i].parent));
-  }
+  check_same_tree(boxes, built);
   for (std::size_t i = 0; i < built.primitives.size(); ++i) {
-    const Box<Q, 3>&b = boxes.primitives[i].box, &m = built.primitives[i].box;
     BOOST_TEST((boxes.primitives[i].planes.empty() && boxes.primitives[i].vertices.empty()));
-    BOOST_TEST((b.has_lo == m.has_lo && b.has_hi == m.has_hi), "primitive " << i);
-    for (int a = 0; a < 3; ++a) {
-      if (b.has_lo[a] && m.has_lo[a]) BOOST_TEST(b.lo[a] == m.lo[a], "primitive " << i << " axis " << a);
-      if (b.has_hi[a] && m.has_hi[a]) BOOST_TEST(b.hi[a] == m.hi[a], "primitive " << i << " axis " << a);
-    }
+    check_same_box(boxes.primitives[i].box, built.primitives[i].box, i);
   }
   Check_stats ignored;
   auto settled_boxes = settled_bounds(k, boxes, ignored, true), settled_model = settled_bounds(k, built, ignored, true);
@@ -177,6 +191,32 @@ BOOST_AUTO_TEST_CASE(boxes_only_tree_is_the_models)
   // The cube turned by q = (3, 0, 0, 4) reaches 31/25 = (7 + 24)/25 along
   // x and y (|R| rows: 7/25, 24/25), then moved 5 along x.
   check_box(boxes.primitives.back().box, {Q(5) - Q(31, 25), Q(-31, 25), Q(-1)}, {Q(5) + Q(31, 25), Q(31, 25), Q(1)});
+}
+
+// build_planes and build_vertices: the tree of build with each primitive's
+// planes alone (what the exact run's plane tables and witnesses read,
+// exact/Filtered_runner.h), and with its vertices and box alone (what
+// completes that model into build's): together, build's primitives, number
+// for number, and neither holds the other's part. Each kind is placed by a
+// translation, a rotation, both and neither (every_kind).
+BOOST_AUTO_TEST_CASE(planes_and_vertices_trees_are_the_models)
+{
+  Scene scene = scene_with(every_kind);
+  Rational_kernel k;
+  Csg_model<Q> built = model_of(every_kind), planes = Model_builder<Rational_kernel>(k).build_planes(scene.objects[0].shape),
+               vertices = Model_builder<Rational_kernel>(k).build_vertices(scene.objects[0].shape);
+  check_same_tree(planes, built);
+  check_same_tree(vertices, built);
+  for (std::size_t i = 0; i < built.primitives.size(); ++i) {
+    const Primitive<Q>&p = planes.primitives[i], &v = vertices.primitives[i], &m = built.primitives[i];
+    BOOST_TEST(!m.planes.empty());
+    BOOST_TEST(p.planes == m.planes, "primitive " << i);
+    BOOST_TEST((p.vertices.empty() && !p.box.has_lo[0] && !p.box.has_hi[0]), "primitive " << i);
+    BOOST_TEST((p.corners == m.corners && p.path == m.path), "primitive " << i);
+    BOOST_TEST(v.planes.empty(), "primitive " << i);
+    BOOST_TEST(v.vertices == m.vertices, "primitive " << i);
+    check_same_box(v.box, m.box, i);
+  }
 }
 
 // The reader makes a rotation's matrix once (Solid::constructed), and the
