@@ -15,6 +15,7 @@
 #include "search/No_filter.h"
 #include <chrono>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 namespace clash4d {
@@ -88,7 +89,8 @@ public:
   // point found, with a generic point inside each object whose cell's
   // closure holds it) and, earliest, the contact point with the same; each
   // checked against the scene. Found on `span`, where A and B move as
-  // given, in the frame x' = x - shear t.
+  // given, in the frame x' = x - shear t. None (r.has_witness false) where
+  // the kernel cannot tell a sign a point depends on (search/Witness.h).
   void make_witness(const Search_goal<FT>& goal, const Vector3<FT>& shear, const Moving& A, const Moving& B,
                     const Time_span<FT>& span, Pair_result<FT>& r) const
   {
@@ -105,13 +107,17 @@ public:
           is_generic_inside(k_, model_, r.a, goal.cell_a) && is_generic_inside(k_, model_, r.b, goal.cell_b);
       r.contact_cells = r.witness_cells;
     } else if (goal.closed()) {
+      std::optional<V4> ga = w.near_in_space(goal.contact, goal.toward_a, shear, A),
+                        gb = ga ? w.near_in_space(goal.contact, goal.toward_b, shear, B) : std::nullopt;
+      if (!gb) return unmade();
       r.witness = contact;
-      r.witness_cells = {w.near_in_space(goal.contact, goal.toward_a, shear, A),
-                         w.near_in_space(goal.contact, goal.toward_b, shear, B)};
+      r.witness_cells = {*ga, *gb};
       r.witness_verified = is_valid_touch(k_, model_, r.a, r.b, r.witness, r.witness_cells[0], r.witness_cells[1]);
       r.contact_cells = r.witness_cells;
     } else {
-      r.witness = w.make(goal.inside, shear, A, B, span.lo, span.hi);
+      std::optional<V4> in = w.make(goal.inside, shear, A, B, span.lo, span.hi);
+      if (!in) return unmade();
+      r.witness = *in;
       r.witness_verified = is_valid_witness(k_, model_, r.a, r.b, r.witness);
       if (goal.earliest && goal.convex) {
         // A convex pair's region is one cell, whose closure holds the
@@ -119,9 +125,10 @@ public:
         // the generic point near it.
         r.contact_cells = {r.witness, r.witness};
       } else if (goal.earliest) {
-        V4 g = w.near(goal.contact, goal.inside, shear, A, B, span.lo, span.hi);
-        r.contact_cells = {g, g};
-        r.witness_verified = r.witness_verified && is_valid_contact_cell(k_, model_, r.a, r.b, contact, g);
+        std::optional<V4> g = w.near(goal.contact, goal.inside, shear, A, B, span.lo, span.hi);
+        if (!g) return unmade();
+        r.contact_cells = {*g, *g};
+        r.witness_verified = r.witness_verified && is_valid_contact_cell(k_, model_, r.a, r.b, contact, *g);
       }
     }
     r.has_witness = true;
@@ -130,6 +137,12 @@ public:
   }
 
 private:
+  // A witness a kernel could not make: a filter's enclosures leave it to
+  // another kernel; an exact kernel tells every sign.
+  static void unmade()
+  {
+    if (K::is_exact) throw std::logic_error("internal error: an exact kernel made no witness; please report this scene");
+  }
 
   const K& k_;
   const Scene_model<K>& model_;

@@ -203,8 +203,9 @@ public:
       runner_->need_planes(found.b);
       const Exact_convex& x = *exact_convex_;
       Vector3<EFT> world{EFT(0), EFT(0), EFT(0)};
-      r.witness = Witness<EK>(runner_->ek_).make(f.at_centre ? e.centre(f.centre_rows) : g, world, x.A, x.B,
-                                                 x.span.lo, x.span.hi);
+      r.witness = Witness<EK>(runner_->ek_)
+                      .make(f.at_centre ? e.centre(f.centre_rows) : g, world, x.A, x.B, x.span.lo, x.span.hi)
+                      .value();   // rationals tell every sign
       if (!is_valid_witness(runner_->ek_, runner_->emodel_, r.a, r.b, r.witness)) return std::nullopt;
     }
     Vector4<EFT> p = f.at_vertex ? e.vertex(f.basis) : f.at_centre ? r.witness : g;

@@ -2,12 +2,16 @@
 // generate-and-test found inside the formula's cell, in world coordinates,
 // moved off every plane of the two objects (planes of primitives the
 // S-bounds pruned were not in the search) and rounded to a short dyadic
-// point (snap), so that anyone can check it by evaluating half-spaces.
+// point (snap), so that anyone can check it by evaluating half-spaces. A
+// kernel that cannot tell a sign the point depends on (a filter's
+// enclosures, at an overlap as thin as they are) gives no point (nullopt);
+// an exact kernel always gives one.
 #ifndef CLASH4D_SEARCH_WITNESS_H
 #define CLASH4D_SEARCH_WITNESS_H
 
 #include "model/Extrusion.h"
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 namespace clash4d {
@@ -23,7 +27,8 @@ public:
   explicit Witness(const K& k) : k_(k) {}
 
   // p, found in the frame x' = x - shear t on the sub-span [lo, hi].
-  V4 make(V4 p, const Vector3<FT>& shear, const Moving& A, const Moving& B, const FT& lo, const FT& hi) const
+  std::optional<V4> make(V4 p, const Vector3<FT>& shear, const Moving& A, const Moving& B, const FT& lo,
+                         const FT& hi) const
   {
     to_world(p, shear);
     return generic_snapped(p, world_planes(A, B, lo, hi), 4);
@@ -33,7 +38,8 @@ public:
   // with the contact point c in the closure of its cell, taken on the open
   // segment from c to the point `in` found inside (the cell is convex and c
   // in its closure), within a step that crosses no plane not through c.
-  V4 near(V4 c, V4 in, const Vector3<FT>& shear, const Moving& A, const Moving& B, const FT& lo, const FT& hi) const
+  std::optional<V4> near(V4 c, V4 in, const Vector3<FT>& shear, const Moving& A, const Moving& B, const FT& lo,
+                         const FT& hi) const
   {
     to_world(c, shear);
     to_world(in, shear);
@@ -48,7 +54,7 @@ public:
   // into a cell inside M (frame of the search). M's planes all contain its
   // motion (v, 1), so d less d_t (v, 1) leads into the same cell at p's
   // time: the point stays in the sub-span even when p is at its end.
-  V4 near_in_space(V4 p, V4 d, const Vector3<FT>& shear, const Moving& M) const
+  std::optional<V4> near_in_space(V4 p, V4 d, const Vector3<FT>& shear, const Moving& M) const
   {
     to_world(p, shear);
     to_world(d, shear);
@@ -86,10 +92,12 @@ private:
 
   // p moved off every plane through it, then snapped; the first `dims`
   // coordinates move (3: the time stays).
-  V4 generic_snapped(V4 p, const std::vector<H>& planes, int dims) const
+  std::optional<V4> generic_snapped(V4 p, const std::vector<H>& planes, int dims) const
   {
     std::vector<FT> values = values_at(p, planes);
-    if (make_generic(p, planes, values, dims)) values = values_at(p, planes);
+    CGAL::Uncertain<bool> moved = make_generic(p, planes, values, dims);
+    if (!CGAL::is_certain(moved)) return std::nullopt;
+    if (moved.make_certain()) values = values_at(p, planes);
     return snap(p, planes, values, dims);
   }
 
@@ -117,12 +125,16 @@ private:
     return any ? best / FT(2) : FT(1);
   }
 
-  // Steps p off the planes through it; true when it moved.
-  bool make_generic(V4& p, const std::vector<H>& planes, const std::vector<FT>& values, int dims) const
+  // Steps p off the planes through it; true when it moved, indeterminate
+  // when the kernel cannot tell whether a plane is through it.
+  CGAL::Uncertain<bool> make_generic(V4& p, const std::vector<H>& planes, const std::vector<FT>& values, int dims) const
   {
     std::vector<const H*> through;
-    for (std::size_t i = 0; i < planes.size(); ++i)
-      if (k_.sign(values[i]) == CGAL::ZERO) through.push_back(&planes[i]);
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+      CGAL::Uncertain<CGAL::Sign> s = k_.uncertain_sign(values[i]);
+      if (!CGAL::is_certain(s)) return CGAL::Uncertain<bool>::indeterminate();
+      if (s.make_certain() == CGAL::ZERO) through.push_back(&planes[i]);
+    }
     if (through.empty()) return false;
     // d = (1, j, j^2, j^3) is orthogonal to a given normal for at most three
     // values of j, so some j <= 3 * |through| + 1 avoids all of them (with
@@ -151,7 +163,7 @@ private:
   // bits is taken for 13/16 of the room: the search makes distances that
   // are powers of two (grid faces, halved steps), and an enclosure of an
   // exact power of two could not say which side of it the room is on.
-  V4 snap(const V4& p, const std::vector<H>& planes, const std::vector<FT>& values, int dims) const
+  std::optional<V4> snap(const V4& p, const std::vector<H>& planes, const std::vector<FT>& values, int dims) const
   {
     FT least = Number_ops<FT>::magnitude(values[0]), widest = Number_ops<FT>::magnitude(planes[0].n[0]);
     for (std::size_t i = 0; i < planes.size(); ++i) {
@@ -159,7 +171,9 @@ private:
       for (const FT& n : planes[i].n) widest = Number_ops<FT>::upper(widest, Number_ops<FT>::magnitude(n));
     }
     FT room = FT(13) * least / (FT(64) * widest);
-    if (k_.sign(room) != CGAL::POSITIVE) return p;   // only with a tolerance: not generic
+    CGAL::Uncertain<CGAL::Sign> positive = k_.uncertain_sign(room);
+    if (!CGAL::is_certain(positive)) return std::nullopt;
+    if (positive.make_certain() != CGAL::POSITIVE) return p;   // only with a tolerance: not generic
     int bits = std::max(0, k_.grid_exponent(room));
     V4 out = p;
     for (int q = 0; q < dims; ++q) out[q] = k_.round_to_grid(p[q], bits);
