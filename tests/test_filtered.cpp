@@ -25,6 +25,8 @@
 #include "support/Random_scene.h"
 
 #include "search/Generate_and_test.h"
+#include "search/Witness.h"
+#include "model/Point_classifier.h"
 #include <algorithm>
 #include <type_traits>
 #include <cmath>
@@ -991,6 +993,52 @@ BOOST_AUTO_TEST_CASE(snap_grid_agrees_across_kernels)
   BOOST_CHECK_THROW(ik.grid_exponent(Interval(std::nextafter(0.5, 0.0), std::nextafter(0.5, 1.0))),
                     CGAL::Uncertain_conversion_exception);
   BOOST_CHECK_THROW(ik.grid_exponent(Interval(-1e-300, 1e-300)), CGAL::Uncertain_conversion_exception);
+}
+
+// Witness (search/Witness.h) in intervals: where its enclosure of the
+// point found cannot tell whether a plane is through it, it gives no point
+// (the rational run makes it), without a throw; where it can, its point is
+// the rational one. The unit cube at rest, a second cube at rest on
+// [1/2, 3/2] x [0, 1]^2, time [0, 1]: p = (1 - 2^-53, 1/2, 1/2, 1/2) is
+// strictly inside both, 2^-53 from the first cube's face x = 1, which x
+// enclosed as [1 - 2^-53, 1] straddles; rationals make the witness there.
+// The same p with x = 3/4 (a point interval, far from every plane) is made
+// in both kernels alike.
+BOOST_AUTO_TEST_CASE(witness_the_intervals_cannot_make_is_none)
+{
+  Scene scene = read_scene(read_json_text(R"({"format":"clash4d-scene/1","time":[0,1],"objects":[
+      {"name":"a","shape":{"block":{"min":[0,0,0],"max":[1,1,1]}}},
+      {"name":"b","shape":{"block":{"min":["1/2",0,0],"max":["3/2",1,1]}}}]})"));
+  Rational_kernel rk;
+  Scene_model<Rational_kernel> rm = Scene_model<Rational_kernel>::build(rk, scene);
+  Time_span<Rational> rspan = rm.sub_spans({0, 1}).at(0);
+  Moving_object<Rational> RA = moving_on(rm, 0, rspan, {}), RB = moving_on(rm, 1, rspan, {});
+  Vector3<Rational> rzero{Rational(0), Rational(0), Rational(0)};
+  Witness<Rational_kernel> rw(rk);
+  const Rational near_face = Rational(1) - Rational(1) / Rational(std::ldexp(1.0, 53));
+  std::optional<Vector4<Rational>> thin =
+      rw.make({near_face, Rational(1, 2), Rational(1, 2), Rational(1, 2)}, rzero, RA, RB, rspan.lo, rspan.hi);
+  BOOST_TEST_REQUIRE(thin.has_value());
+  BOOST_TEST(is_valid_witness(rk, rm, 0, 1, *thin));
+
+  CGAL::Protect_FPU_rounding<true> protect;
+  Interval_kernel ik;
+  Scene_model<Interval_kernel> im = Scene_model<Interval_kernel>::build(ik, scene);
+  Time_span<Interval> ispan = im.sub_spans({0, 1}).at(0);
+  Moving_object<Interval> IA = moving_on(im, 0, ispan, {}), IB = moving_on(im, 1, ispan, {});
+  Vector3<Interval> izero{Interval(0), Interval(0), Interval(0)};
+  Witness<Interval_kernel> iw(ik);
+  std::optional<Vector4<Interval>> unsure;
+  BOOST_CHECK_NO_THROW(unsure = iw.make({Interval(std::nextafter(1.0, 0.0), 1.0), Interval(0.5), Interval(0.5),
+                                         Interval(0.5)},
+                                        izero, IA, IB, ispan.lo, ispan.hi));
+  BOOST_TEST(!unsure.has_value());
+  std::optional<Vector4<Interval>> sure =
+      iw.make({Interval(0.75), Interval(0.5), Interval(0.5), Interval(0.5)}, izero, IA, IB, ispan.lo, ispan.hi);
+  std::optional<Vector4<Rational>> exact =
+      rw.make({Rational(3, 4), Rational(1, 2), Rational(1, 2), Rational(1, 2)}, rzero, RA, RB, rspan.lo, rspan.hi);
+  BOOST_TEST_REQUIRE((sure.has_value() && exact.has_value()));
+  for (int q = 0; q < 4; ++q) BOOST_TEST(((*sure)[q].is_point() && Rational((*sure)[q].inf()) == (*exact)[q]), q);
 }
 
 BOOST_DATA_TEST_CASE(skeleton_matches_rational,
