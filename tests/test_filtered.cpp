@@ -905,6 +905,30 @@ BOOST_AUTO_TEST_CASE(long_searches_are_handed_over_to_apart_proofs)
   }
 }
 
+// The hand-over counts the search's work, not its lines alone: each cell
+// tested around a point whose neighbourhood is classified counts as a line
+// (Interval_filter::search_work). The dangling faces of a difference
+// touched in closed semantics are such points: the search without the
+// hand-over examines more than 512 lines, and it is handed over well
+// before 512 lines; the answer is the same (no touch: the faces are not
+// the regularised solid's).
+BOOST_AUTO_TEST_CASE(searches_are_handed_over_by_their_work)
+{
+  const char* file = "contact/difference_dangling_face_touch.json";
+  Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/" + file);
+  Check_options o;
+  o.semantics = Semantics::closed;
+  Check_answer a = same_answers(scene, o, file);
+  BOOST_TEST(!a.collide);
+  BOOST_TEST(a.stats.apart_proofs == 1u);
+  BOOST_TEST(a.stats.lines < 256u);
+  BOOST_TEST(a.stats.cells_tested > a.stats.lines);
+  o.apart_proofs = false;
+  Check_answer searched = same_answers(scene, o, std::string(file) + " (not handed over)");
+  BOOST_TEST(!searched.collide);
+  BOOST_TEST(searched.stats.lines > 512u);
+}
+
 // A hand-over whose proof stops at a term with a point (the collision, in
 // a later sub-span) still proves the sub-spans before it apart: their
 // search stops there. The skewed late stop collides first at t* = 25/4
