@@ -21,6 +21,13 @@ public:
   // The sign of a - b by cross-multiplication (mpq_cmp), without making
   // a - b in lowest terms (an allocation and a gcd).
   CGAL::Sign compare(const FT& a, const FT& b) const { return CGAL::compare(a, b); }
+  // The sign of n.p + c over unreduced fractions (sign_of_sum_of_products),
+  // without making the value in lowest terms.
+  template <std::size_t N>
+  CGAL::Sign side(const std::array<FT, N>& n, const FT& c, const std::array<FT, N>& p) const
+  {
+    return CGAL::Sign(sign_of_sum_of_products(n.data(), p.data(), N, &c));
+  }
   FT from_rational(const Rational& q) const { return q; }
   Rational to_rational(const FT& x) const { return x; }
   FT floor_to_grid(const FT& x, int bits) const { return clash4d::floor_to_grid(x, bits); }

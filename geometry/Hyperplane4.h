@@ -13,7 +13,7 @@ struct Hyperplane4 {
   Vector4<FT> n;
   FT c;
 
-  FT value(const Vector4<FT>& p) const { return dot(n, p) + c; }
+  FT value(const Vector4<FT>& p) const { return dot_plus(n, p, c); }
   Hyperplane4 complement() const { return {{-n[0], -n[1], -n[2], -n[3]}, -c}; }
 };
 

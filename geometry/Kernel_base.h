@@ -101,14 +101,14 @@ public:
   template <std::size_t N>
   CGAL::Sign side(const std::array<FT, N>& n, const FT& c, const std::array<FT, N>& p) const
   {
-    return derived().sign(dot(n, p) + c);
+    return derived().sign(dot_plus(n, p, c));
   }
   // The same where the kernel can certify it, indeterminate otherwise
   // (uncertain_sign: no throw).
   template <std::size_t N>
   CGAL::Uncertain<CGAL::Sign> uncertain_side(const std::array<FT, N>& n, const FT& c, const std::array<FT, N>& p) const
   {
-    return derived().uncertain_sign(dot(n, p) + c);
+    return derived().uncertain_sign(dot_plus(n, p, c));
   }
 
   // Sign of a dot product: orientation of a direction against a normal.

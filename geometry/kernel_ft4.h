@@ -31,6 +31,16 @@ FT dot(const std::array<FT, N>& a, const std::array<FT, N>& b)
   }
 }
 
+// a . b + c, the value of an affine function: the same operations as
+// dot(a, b) + c in doubles and intervals; in rationals one reduction for
+// the whole sum (sum_of_products with c added).
+template <class FT, std::size_t N>
+FT dot_plus(const std::array<FT, N>& a, const std::array<FT, N>& b, const FT& c)
+{
+  if constexpr (std::is_same_v<FT, Rational>) return sum_of_products(a.data(), b.data(), N, &c);
+  else return dot(a, b) + c;
+}
+
 template <class FT>
 Vector3<FT> cross(const Vector3<FT>& a, const Vector3<FT>& b)
 {

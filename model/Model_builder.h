@@ -42,14 +42,9 @@ struct Affine3 {
     if (linear_identity) return v;
     return {dot(R[0], v), dot(R[1], v), dot(R[2], v)};
   }
-  Vector3<FT> apply(const Vector3<FT>& v) const
-  {
-    Vector3<FT> r = linear(v);
-    for (int i = 0; i < 3; ++i) r[i] += b[i];
-    return r;
-  }
+  Vector3<FT> apply(const Vector3<FT>& v) const { return {apply(v, 0), apply(v, 1), apply(v, 2)}; }
   // Coordinate q of apply(v) alone.
-  FT apply(const Vector3<FT>& v, int q) const { return (linear_identity ? v[q] : dot(R[q], v)) + b[q]; }
+  FT apply(const Vector3<FT>& v, int q) const { return linear_identity ? v[q] + b[q] : dot_plus(R[q], v, b[q]); }
   // The image of n.x + d <= 0: (R n).y + d - (R n).b <= 0, using R^-1 = R^T.
   Plane3<FT> apply(const Plane3<FT>& p) const
   {

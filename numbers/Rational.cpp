@@ -281,32 +281,49 @@ struct Dot_scratch {
   Dot_scratch() { mpz_inits(num, den, pn, pd, nullptr); }
   ~Dot_scratch() { mpz_clears(num, den, pn, pd, nullptr); }
 };
-} // namespace
 
-Rational sum_of_products(const Rational* a, const Rational* b, std::size_t n)
+// num / den = sum a[i] b[i] (+ plus), unreduced, den > 0, in s.
+void accumulate(Dot_scratch& s, const Rational* a, const Rational* b, std::size_t n, const Rational* plus)
 {
-  thread_local Dot_scratch s;
   mpz_set_ui(s.num, 0);
   mpz_set_ui(s.den, 1);
+  auto add = [&s](mpz_srcptr pn, mpz_srcptr pd) {   // pn / pd, pd > 0
+    if (mpz_cmp(pd, s.den) == 0) {                  // num/den + pn/den
+      mpz_add(s.num, s.num, pn);
+      return;
+    }
+    // num/den + pn/pd = (num pd + pn den) / (den pd)
+    mpz_mul(s.num, s.num, pd);
+    mpz_addmul(s.num, pn, s.den);
+    mpz_mul(s.den, s.den, pd);
+  };
   for (std::size_t i = 0; i < n; ++i) {
     mpz_srcptr an = mpq_numref(a[i].mpq()), bn = mpq_numref(b[i].mpq());
     if (mpz_sgn(an) == 0 || mpz_sgn(bn) == 0) continue;
     mpz_mul(s.pn, an, bn);
     mpz_mul(s.pd, mpq_denref(a[i].mpq()), mpq_denref(b[i].mpq()));
-    if (mpz_cmp(s.pd, s.den) == 0) {   // num/den + pn/den
-      mpz_add(s.num, s.num, s.pn);
-      continue;
-    }
-    // num/den + pn/pd = (num pd + pn den) / (den pd)
-    mpz_mul(s.num, s.num, s.pd);
-    mpz_addmul(s.num, s.pn, s.den);
-    mpz_mul(s.den, s.den, s.pd);
+    add(s.pn, s.pd);
   }
+  if (plus && mpz_sgn(mpq_numref(plus->mpq())) != 0) add(mpq_numref(plus->mpq()), mpq_denref(plus->mpq()));
+}
+} // namespace
+
+Rational sum_of_products(const Rational* a, const Rational* b, std::size_t n, const Rational* plus)
+{
+  thread_local Dot_scratch s;
+  accumulate(s, a, b, n, plus);
   Rational out;   // a new representation, not shared: written in place
   mpz_set(mpq_numref(out.mpq()), s.num);
   mpz_set(mpq_denref(out.mpq()), s.den);
   mpq_canonicalize(out.mpq());
   return out;
+}
+
+int sign_of_sum_of_products(const Rational* a, const Rational* b, std::size_t n, const Rational* plus)
+{
+  thread_local Dot_scratch s;
+  accumulate(s, a, b, n, plus);
+  return mpz_sgn(s.num);   // the denominator is a product of positive ones
 }
 
 Rational power_of_two(int e)

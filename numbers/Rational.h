@@ -97,7 +97,11 @@ Rational quotient_of_integers(const mpz_class& num, const mpz_class& den);
 // here the products and sums are kept as unreduced fractions of GMP
 // integers (one common denominator while the terms share it, as a rotated
 // or scaled vector's coordinates do) and reduced once at the end.
-Rational sum_of_products(const Rational* a, const Rational* b, std::size_t n);
+// With plus: sum a[i] b[i] + *plus, reduced once (a plane's value n.p + c).
+Rational sum_of_products(const Rational* a, const Rational* b, std::size_t n, const Rational* plus = nullptr);
+// The sign of that sum, without reducing it (the common denominator is
+// positive): a side of a plane without making its value.
+int sign_of_sum_of_products(const Rational* a, const Rational* b, std::size_t n, const Rational* plus = nullptr);
 
 // x[0..n) as X[i] / d, d > 0 the lcm of their denominators (a gcd only
 // where the lcm does not already hold a denominator, as in

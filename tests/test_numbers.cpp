@@ -224,7 +224,8 @@ BOOST_AUTO_TEST_CASE(exact_dyadics_at_their_edges)
 // hand on a rotation row (shared denominators), zeros, cancellation to 0
 // and to an integer; then on seeded random rationals of 1 to 120 bits, with
 // shared and different denominators and zero terms, its result in lowest
-// terms (a Gmpq compared with == must be canonical).
+// terms (a Gmpq compared with == must be canonical). The same with a
+// constant added, and the sign of either without reducing it.
 BOOST_AUTO_TEST_CASE(sum_of_products_is_the_exact_dot_product)
 {
   auto dot = [](std::vector<Rational> a, std::vector<Rational> b) { return sum_of_products(a.data(), b.data(), a.size()); };
@@ -243,6 +244,7 @@ BOOST_AUTO_TEST_CASE(sum_of_products_is_the_exact_dot_product)
     if (rng() % 2) x = -x;
     return rng() % 5 == 0 ? Rational(0) : x / den;
   };
+  int zeros = 0;
   for (int i = 0; i < 5000; ++i) {
     std::size_t n = 1 + rng() % 5;
     Rational shared(static_cast<long>(1 + rng() % 1000));
@@ -259,7 +261,19 @@ BOOST_AUTO_TEST_CASE(sum_of_products_is_the_exact_dot_product)
     mpz_class g;
     mpz_gcd(g.get_mpz_t(), mpq_numref(got.mpq()), mpq_denref(got.mpq()));
     BOOST_TEST((g == 1 && mpz_sgn(mpq_denref(got.mpq())) > 0), i);
+    // With a constant added (a plane's value n.p + c), a quarter of them
+    // the sum's negation, so that the value is exactly 0; and its sign.
+    Rational c = i % 4 == 0 ? -expected : random_rational(Rational(static_cast<long>(1 + rng() % 100000)));
+    Rational plus = sum_of_products(a.data(), b.data(), n, &c);
+    BOOST_TEST(plus == expected + c, i << ": " << to_string(plus) << " against " << to_string(expected + c));
+    mpz_gcd(g.get_mpz_t(), mpq_numref(plus.mpq()), mpq_denref(plus.mpq()));
+    BOOST_TEST((g == 1 && mpz_sgn(mpq_denref(plus.mpq())) > 0), i);
+    int s = sign_of_sum_of_products(a.data(), b.data(), n, &c);
+    BOOST_TEST(s == static_cast<int>(CGAL::sign(expected + c)), i);
+    BOOST_TEST(sign_of_sum_of_products(a.data(), b.data(), n) == static_cast<int>(CGAL::sign(expected)), i);
+    zeros += s == 0;
   }
+  BOOST_TEST(zeros >= 1250);   // every fourth, and the terms that are all zero
 }
 
 // The rational kernel's compare (mpq_cmp, without making a - b) is the sign
