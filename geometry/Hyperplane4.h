@@ -78,7 +78,7 @@ template <class FT>
 Hyperplane4<FT> extrude(const Plane3<FT>& p, const Vector3<FT>& v, const Vector3<FT>& o)
 {
   Vector3<FT> n{p[0], p[1], p[2]};
-  return {{p[0], p[1], p[2], -dot(n, v)}, p[3] - dot(n, o)};
+  return {{p[0], p[1], p[2], negated_dot(n, v)}, dot_from(p[3], n, o)};
 }
 
 // The time slab lo <= t <= hi as two half-spaces (§3 item 3).

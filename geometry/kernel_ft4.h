@@ -41,6 +41,22 @@ FT dot_plus(const std::array<FT, N>& a, const std::array<FT, N>& b, const FT& c)
   else return dot(a, b) + c;
 }
 
+// c - a . b: the same operations as c - dot(a, b) in doubles and
+// intervals; in rationals one reduction for the whole.
+template <class FT, std::size_t N>
+FT dot_from(const FT& c, const std::array<FT, N>& a, const std::array<FT, N>& b)
+{
+  if constexpr (std::is_same_v<FT, Rational>) return difference_of_products(&c, a.data(), b.data(), N);
+  else return c - dot(a, b);
+}
+// -(a . b), likewise.
+template <class FT, std::size_t N>
+FT negated_dot(const std::array<FT, N>& a, const std::array<FT, N>& b)
+{
+  if constexpr (std::is_same_v<FT, Rational>) return difference_of_products(nullptr, a.data(), b.data(), N);
+  else return -dot(a, b);
+}
+
 template <class FT>
 Vector3<FT> cross(const Vector3<FT>& a, const Vector3<FT>& b)
 {

@@ -12,7 +12,9 @@ template <class FT>
 struct Number_ops {
   static FT lower(const FT& a, const FT& b) { return b < a ? b : a; }
   static FT upper(const FT& a, const FT& b) { return a < b ? b : a; }
-  static FT magnitude(const FT& a) { return a < FT(0) ? -a : a; }
+  // Compared with the integer 0, not a made zero (in rationals, an
+  // allocation per call); a nonnegative a is returned as it is (shared).
+  static FT magnitude(const FT& a) { return a < 0 ? -a : a; }
   // Identical values (a shortcut before a decision, see
   // Kernel_base::same_on_grid); intervals: the same enclosure.
   static bool same(const FT& a, const FT& b) { return a == b; }

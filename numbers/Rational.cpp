@@ -282,8 +282,10 @@ struct Dot_scratch {
   ~Dot_scratch() { mpz_clears(num, den, pn, pd, nullptr); }
 };
 
-// num / den = sum a[i] b[i] (+ plus), unreduced, den > 0, in s.
-void accumulate(Dot_scratch& s, const Rational* a, const Rational* b, std::size_t n, const Rational* plus)
+// num / den = (plus) + sum a[i] b[i], or with subtract (plus) - sum,
+// unreduced, den > 0, in s.
+void accumulate(Dot_scratch& s, const Rational* a, const Rational* b, std::size_t n, const Rational* plus,
+                bool subtract = false)
 {
   mpz_set_ui(s.num, 0);
   mpz_set_ui(s.den, 1);
@@ -301,6 +303,7 @@ void accumulate(Dot_scratch& s, const Rational* a, const Rational* b, std::size_
     mpz_srcptr an = mpq_numref(a[i].mpq()), bn = mpq_numref(b[i].mpq());
     if (mpz_sgn(an) == 0 || mpz_sgn(bn) == 0) continue;
     mpz_mul(s.pn, an, bn);
+    if (subtract) mpz_neg(s.pn, s.pn);
     mpz_mul(s.pd, mpq_denref(a[i].mpq()), mpq_denref(b[i].mpq()));
     add(s.pn, s.pd);
   }
@@ -313,6 +316,17 @@ Rational sum_of_products(const Rational* a, const Rational* b, std::size_t n, co
   thread_local Dot_scratch s;
   accumulate(s, a, b, n, plus);
   Rational out;   // a new representation, not shared: written in place
+  mpz_set(mpq_numref(out.mpq()), s.num);
+  mpz_set(mpq_denref(out.mpq()), s.den);
+  mpq_canonicalize(out.mpq());
+  return out;
+}
+
+Rational difference_of_products(const Rational* c, const Rational* a, const Rational* b, std::size_t n)
+{
+  thread_local Dot_scratch s;
+  accumulate(s, a, b, n, c, true);
+  Rational out;
   mpz_set(mpq_numref(out.mpq()), s.num);
   mpz_set(mpq_denref(out.mpq()), s.den);
   mpq_canonicalize(out.mpq());

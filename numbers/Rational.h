@@ -99,6 +99,9 @@ Rational quotient_of_integers(const mpz_class& num, const mpz_class& den);
 // or scaled vector's coordinates do) and reduced once at the end.
 // With plus: sum a[i] b[i] + *plus, reduced once (a plane's value n.p + c).
 Rational sum_of_products(const Rational* a, const Rational* b, std::size_t n, const Rational* plus = nullptr);
+// *c - sum a[i] b[i] (c null: 0), reduced once (a plane's extruded
+// offset d - n.o and time coefficient -n.v).
+Rational difference_of_products(const Rational* c, const Rational* a, const Rational* b, std::size_t n);
 // The sign of that sum, without reducing it (the common denominator is
 // positive): a side of a plane without making its value.
 int sign_of_sum_of_products(const Rational* a, const Rational* b, std::size_t n, const Rational* plus = nullptr);

@@ -225,7 +225,8 @@ BOOST_AUTO_TEST_CASE(exact_dyadics_at_their_edges)
 // and to an integer; then on seeded random rationals of 1 to 120 bits, with
 // shared and different denominators and zero terms, its result in lowest
 // terms (a Gmpq compared with == must be canonical). The same with a
-// constant added, and the sign of either without reducing it.
+// constant added, and the sign of either without reducing it; and the sum
+// subtracted from a constant (difference_of_products).
 BOOST_AUTO_TEST_CASE(sum_of_products_is_the_exact_dot_product)
 {
   auto dot = [](std::vector<Rational> a, std::vector<Rational> b) { return sum_of_products(a.data(), b.data(), a.size()); };
@@ -272,6 +273,13 @@ BOOST_AUTO_TEST_CASE(sum_of_products_is_the_exact_dot_product)
     BOOST_TEST(s == static_cast<int>(CGAL::sign(expected + c)), i);
     BOOST_TEST(sign_of_sum_of_products(a.data(), b.data(), n) == static_cast<int>(CGAL::sign(expected)), i);
     zeros += s == 0;
+    // And subtracted from a constant (an extruded offset d - n.o), or from
+    // none (-n.v); with c = expected, exactly 0.
+    Rational from = i % 4 == 0 ? expected : c, less = difference_of_products(&from, a.data(), b.data(), n);
+    BOOST_TEST(less == from - expected, i << ": " << to_string(less) << " against " << to_string(from - expected));
+    mpz_gcd(g.get_mpz_t(), mpq_numref(less.mpq()), mpq_denref(less.mpq()));
+    BOOST_TEST((g == 1 && mpz_sgn(mpq_denref(less.mpq())) > 0), i);
+    BOOST_TEST(difference_of_products(nullptr, a.data(), b.data(), n) == -expected, i);
   }
   BOOST_TEST(zeros >= 1250);   // every fourth, and the terms that are all zero
 }
