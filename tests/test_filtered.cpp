@@ -1028,39 +1028,45 @@ BOOST_AUTO_TEST_CASE(snap_grid_agrees_across_kernels)
 // enclosed as [1 - 2^-53, 1] straddles; rationals make the witness there.
 // The same p with x = 3/4 (a point interval, far from every plane) is made
 // in both kernels alike.
+namespace {
+// Two objects of a scene on its first sub-span, in kernel K, and the
+// witness Witness<K> makes from a point p found (world frame).
+template <class K>
+struct Witness_pair {
+  using FT = typename K::FT;
+  K k;
+  Scene_model<K> model;
+  Time_span<FT> span;
+  Moving_object<FT> A, B;
+  Witness_pair(const Scene& scene)
+    : model(Scene_model<K>::build(k, scene)), span(model.sub_spans({0, 1}).at(0)), A(moving_on(model, 0, span, {})),
+      B(moving_on(model, 1, span, {}))
+  {}
+  std::optional<Vector4<FT>> make(const Vector4<FT>& p) const
+  {
+    return Witness<K>(k).make(p, {FT(0), FT(0), FT(0)}, A, B, span.lo, span.hi);
+  }
+};
+} // namespace
+
 BOOST_AUTO_TEST_CASE(witness_the_intervals_cannot_make_is_none)
 {
   Scene scene = read_scene(read_json_text(R"({"format":"clash4d-scene/1","time":[0,1],"objects":[
       {"name":"a","shape":{"block":{"min":[0,0,0],"max":[1,1,1]}}},
       {"name":"b","shape":{"block":{"min":["1/2",0,0],"max":["3/2",1,1]}}}]})"));
-  Rational_kernel rk;
-  Scene_model<Rational_kernel> rm = Scene_model<Rational_kernel>::build(rk, scene);
-  Time_span<Rational> rspan = rm.sub_spans({0, 1}).at(0);
-  Moving_object<Rational> RA = moving_on(rm, 0, rspan, {}), RB = moving_on(rm, 1, rspan, {});
-  Vector3<Rational> rzero{Rational(0), Rational(0), Rational(0)};
-  Witness<Rational_kernel> rw(rk);
-  const Rational near_face = Rational(1) - Rational(1) / Rational(std::ldexp(1.0, 53));
-  std::optional<Vector4<Rational>> thin =
-      rw.make({near_face, Rational(1, 2), Rational(1, 2), Rational(1, 2)}, rzero, RA, RB, rspan.lo, rspan.hi);
+  Witness_pair<Rational_kernel> r(scene);
+  const Rational half(1, 2), near_face = Rational(1) - Rational(1) / Rational(std::ldexp(1.0, 53));
+  std::optional<Vector4<Rational>> thin = r.make({near_face, half, half, half});
   BOOST_TEST_REQUIRE(thin.has_value());
-  BOOST_TEST(is_valid_witness(rk, rm, 0, 1, *thin));
+  BOOST_TEST(is_valid_witness(r.k, r.model, 0, 1, *thin));
 
   CGAL::Protect_FPU_rounding<true> protect;
-  Interval_kernel ik;
-  Scene_model<Interval_kernel> im = Scene_model<Interval_kernel>::build(ik, scene);
-  Time_span<Interval> ispan = im.sub_spans({0, 1}).at(0);
-  Moving_object<Interval> IA = moving_on(im, 0, ispan, {}), IB = moving_on(im, 1, ispan, {});
-  Vector3<Interval> izero{Interval(0), Interval(0), Interval(0)};
-  Witness<Interval_kernel> iw(ik);
+  Witness_pair<Interval_kernel> i(scene);
   std::optional<Vector4<Interval>> unsure;
-  BOOST_CHECK_NO_THROW(unsure = iw.make({Interval(std::nextafter(1.0, 0.0), 1.0), Interval(0.5), Interval(0.5),
-                                         Interval(0.5)},
-                                        izero, IA, IB, ispan.lo, ispan.hi));
+  BOOST_CHECK_NO_THROW(unsure = i.make({Interval(std::nextafter(1.0, 0.0), 1.0), Interval(0.5), Interval(0.5), Interval(0.5)}));
   BOOST_TEST(!unsure.has_value());
-  std::optional<Vector4<Interval>> sure =
-      iw.make({Interval(0.75), Interval(0.5), Interval(0.5), Interval(0.5)}, izero, IA, IB, ispan.lo, ispan.hi);
-  std::optional<Vector4<Rational>> exact =
-      rw.make({Rational(3, 4), Rational(1, 2), Rational(1, 2), Rational(1, 2)}, rzero, RA, RB, rspan.lo, rspan.hi);
+  std::optional<Vector4<Interval>> sure = i.make({Interval(0.75), Interval(0.5), Interval(0.5), Interval(0.5)});
+  std::optional<Vector4<Rational>> exact = r.make({Rational(3, 4), half, half, half});
   BOOST_TEST_REQUIRE((sure.has_value() && exact.has_value()));
   for (int q = 0; q < 4; ++q) BOOST_TEST(((*sure)[q].is_point() && Rational((*sure)[q].inf()) == (*exact)[q]), q);
 }
