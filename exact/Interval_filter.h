@@ -440,17 +440,16 @@ public:
     ++stats_->exact_zeros;
     return e->zero_on_line(line, p, along);
   }
-  // A long search is handed over: past apart_after_ lines of work
-  // (search_work), the runner asks
-  // whether conflicts close off every term of the pair's formula
-  // (Filtered_runner::proves_apart; one exact LP per conflict, where
-  // generate-and-test examines many lines per conflict). Proven, the run
-  // stops with Proven_apart, the pair's "no collision" (a pair apart on the
-  // whole span has no t* either: earliest mode too, until a point inside is
-  // found); otherwise it goes on where it was. Out of steps, it asks again
-  // at 16 times the lines with 16 times the steps, so the asking costs a
-  // bounded share of the search; a term left open would be met again, so
-  // then it never asks again.
+  // A long search is handed over: past apart_after_ lines' work
+  // (search_work), the runner asks whether conflicts close off every term
+  // of the pair's formula (Filtered_runner::proves_apart; one exact LP per
+  // conflict, where generate-and-test examines many lines per conflict).
+  // Proven, the run stops with Proven_apart, the pair's "no collision" (a
+  // pair apart on the whole span has no t* either: earliest mode too, until
+  // a point inside is found); otherwise it goes on where it was. Out of
+  // steps, it asks again at 16 times the work with 16 times the steps, so
+  // the asking costs a bounded share of the search; a term left open would
+  // be met again, so then it never asks again.
   void never_hand_over() { apart_after_ = std::numeric_limits<std::size_t>::max(); }
   // A proof that stops at a later sub-span (a term with a point there, or
   // its step bound) still proves the sub-spans before it apart: the
