@@ -530,14 +530,21 @@ private:
     planed_[i].call([&] { emodel_.objects[i].csg = Model_builder<EK>(ek_).build_planes(scene_.objects[i].shape); });
   }
   // EK's whole model of object i (what EK's runs and linear programs read:
-  // Convex_pair reads vertices), and with need_exact its S-bounds too. The
-  // planes' model is completed in place: its planes, which another thread
-  // may be reading, are not touched, and no reader of vertices or boxes
-  // gets here before this is done.
+  // Convex_pair reads vertices), and with need_exact its S-bounds too: made
+  // whole when no planes were asked for before, otherwise the planes'
+  // model completed in place: its planes, which another thread may be
+  // reading, are not touched, and no reader of vertices or boxes gets here
+  // before this is done.
   void need_model(int i)
   {
-    need_planes(i);
+    need_motion(i);
+    bool whole = false;
+    planed_[i].call([&] {
+      emodel_.objects[i].csg = Model_builder<EK>(ek_).build(scene_.objects[i].shape);
+      whole = true;
+    });
     built_[i].call([&] {
+      if (whole) return;
       Csg_model<EFT> more = Model_builder<EK>(ek_).build_vertices(scene_.objects[i].shape);
       std::vector<Primitive<EFT>>& to = emodel_.objects[i].csg.primitives;
       for (std::size_t k = 0; k < to.size(); ++k) {

@@ -316,22 +316,16 @@ private:
     return p;
   }
 
-  // A primitive with its vertices and box only (build_vertices): place's,
-  // without moving the planes (a convex solid's and a half-space's are
-  // made all the same, for its vertices or its box, then dropped).
+  // A primitive with its vertices and box only (build_vertices): place's
+  // (a convex solid's and a half-space's planes are made all the same, for
+  // its vertices or its box, then dropped).
   Primitive<FT> vertexed(const Solid& s, const Affine3<FT>& T) const
   {
     Primitive<FT> p;
     p.path = s.path;
     p.corners = s.corners;
     local_geometry(s, p, false);
-    if (p.vertices.empty()) {
-      place(p, T);   // a half-space: the box of its moved plane
-    } else {
-      if (!T.is_identity)
-        for (auto& v : p.vertices) v = T.apply(v);
-      p.box = vertex_box(p.vertices);
-    }
+    place(p, T);
     p.planes.clear();
     return p;
   }

@@ -309,28 +309,30 @@ void accumulate(Dot_scratch& s, const Rational* a, const Rational* b, std::size_
   }
   if (plus && mpz_sgn(mpq_numref(plus->mpq())) != 0) add(mpq_numref(plus->mpq()), mpq_denref(plus->mpq()));
 }
+
+// num / den of s in lowest terms, as a new representation written in place.
+Rational reduced(const Dot_scratch& s)
+{
+  Rational out;
+  mpz_set(mpq_numref(out.mpq()), s.num);
+  mpz_set(mpq_denref(out.mpq()), s.den);
+  mpq_canonicalize(out.mpq());
+  return out;
+}
 } // namespace
 
 Rational sum_of_products(const Rational* a, const Rational* b, std::size_t n, const Rational* plus)
 {
   thread_local Dot_scratch s;
   accumulate(s, a, b, n, plus);
-  Rational out;   // a new representation, not shared: written in place
-  mpz_set(mpq_numref(out.mpq()), s.num);
-  mpz_set(mpq_denref(out.mpq()), s.den);
-  mpq_canonicalize(out.mpq());
-  return out;
+  return reduced(s);
 }
 
 Rational difference_of_products(const Rational* c, const Rational* a, const Rational* b, std::size_t n)
 {
   thread_local Dot_scratch s;
   accumulate(s, a, b, n, c, true);
-  Rational out;
-  mpz_set(mpq_numref(out.mpq()), s.num);
-  mpz_set(mpq_denref(out.mpq()), s.den);
-  mpq_canonicalize(out.mpq());
-  return out;
+  return reduced(s);
 }
 
 int sign_of_sum_of_products(const Rational* a, const Rational* b, std::size_t n, const Rational* plus)
