@@ -91,8 +91,10 @@ public:
   // checked against the scene. Found on `span`, where A and B move as
   // given, in the frame x' = x - shear t. None (r.has_witness false) where
   // the kernel cannot tell a sign a point depends on (search/Witness.h).
+  // cells: closed, the generic points near_in_space makes, if made already
+  // (a filter's, exact/Filtered_runner.h); they are checked the same.
   void make_witness(const Search_goal<FT>& goal, const Vector3<FT>& shear, const Moving& A, const Moving& B,
-                    const Time_span<FT>& span, Pair_result<FT>& r) const
+                    const Time_span<FT>& span, Pair_result<FT>& r, const std::array<V4, 2>* cells = nullptr) const
   {
     Witness<K> w(k_);
     V4 contact = goal.contact;
@@ -107,8 +109,9 @@ public:
           is_generic_inside(k_, model_, r.a, goal.cell_a) && is_generic_inside(k_, model_, r.b, goal.cell_b);
       r.contact_cells = r.witness_cells;
     } else if (goal.closed()) {
-      std::optional<V4> ga = w.near_in_space(goal.contact, goal.toward_a, shear, A),
-                        gb = ga ? w.near_in_space(goal.contact, goal.toward_b, shear, B) : std::nullopt;
+      std::optional<V4> ga = cells ? (*cells)[0] : w.near_in_space(goal.contact, goal.toward_a, shear, A),
+                        gb = !ga ? std::nullopt
+                             : cells ? (*cells)[1] : w.near_in_space(goal.contact, goal.toward_b, shear, B);
       if (!gb) return unmade();
       r.witness = contact;
       r.witness_cells = {*ga, *gb};

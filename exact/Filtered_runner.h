@@ -30,6 +30,7 @@
 #define CLASH4D_EXACT_FILTERED_RUNNER_H
 
 #include "check/Check_runner.h"
+#include "exact/Exact_witness_signs.h"
 #include "exact/Interval_filter.h"
 #include "exact/Lazy_once.h"
 #include "exact/Sweep_tie.h"
@@ -296,11 +297,59 @@ private:
     r.semantics = semantics;
     r.collide = true;
     Check_stats ignored;
+    Vector3<EFT> shear = Extrusion<EK>::shear_of(A, B, g->frame, use_sbounds_);
+    std::optional<std::array<Vector4<EFT>, 2>> cells;
+    if (g->goal.closed() && !g->goal.convex) cells = interval_cells(*g, a, b, A, B, shear);
     Collision_checker<EK>(ek_, emodel_, esettled_, ignored, use_sbounds_)
-        .make_witness(g->goal, Extrusion<EK>::shear_of(A, B, g->frame, use_sbounds_), A, B, span, r);
+        .make_witness(g->goal, shear, A, B, span, r, cells ? &*cells : nullptr);
     if (!r.witness_verified) return std::nullopt;   // not expected: the search in rationals decides
     r.earliest = earliest;
     return r;
+  }
+
+  // Closed: each object's generic point near the contact (Witness::
+  // near_in_space) made in AK, the signs AK cannot tell there asked of EK
+  // (Exact_witness_signs): EK's own points, whose space coordinates are
+  // snapped (point intervals) and whose time is the contact's; or none,
+  // and EK makes them. A and B, shear: EK's, on g's sub-span.
+  std::optional<std::array<Vector4<EFT>, 2>> interval_cells(const typename Interval_filter<Filtered_runner>::Exact_goal& g,
+                                                            int a, int b, const Moving_object<EFT>& A,
+                                                            const Moving_object<EFT>& B, const Vector3<EFT>& shear)
+  {
+    try {
+      Protector protect;
+      const Time_span<AFT> span = amodel_.sub_spans({a, b}).at(g.span);
+      const Moving_object<AFT> IA = moving_on(amodel_, a, span, {}), IB = moving_on(amodel_, b, span, {});
+      const Vector3<AFT> ishear = Extrusion<AK>::shear_of(IA, IB, g.frame, use_sbounds_);
+      auto enclose = [&](const Vector4<EFT>& x) {
+        Vector4<AFT> y;
+        for (int q = 0; q < 4; ++q) y[q] = ak_.from_rational(ek_.to_rational(x[q]));
+        return y;
+      };
+      const Moving_object<EFT>* exact[2] = {&A, &B};
+      const Moving_object<AFT>* approx[2] = {&IA, &IB};
+      const Vector4<EFT>* toward[2] = {&g.goal.toward_a, &g.goal.toward_b};
+      std::array<Vector4<EFT>, 2> out;
+      for (int o = 0; o < 2; ++o) {
+        Exact_witness_signs<EK> signs(ek_, *exact[o], g.goal.contact, *toward[o], shear);
+        std::size_t count = 0;
+        for (const auto& prim : approx[o]->object->csg.primitives) count += prim.planes.size();
+        if (count != signs.plane_count()) return std::nullopt;   // not expected: one scene, one model
+        std::optional<Vector4<AFT>> p =
+            Witness<AK>(ak_).near_in_space(enclose(g.goal.contact), enclose(*toward[o]), ishear, *approx[o], &signs);
+        if (!p) return std::nullopt;
+        for (int q = 0; q < 3; ++q) {
+          std::optional<Rational> x = ak_.exact_value((*p)[q]);
+          if (!x) return std::nullopt;
+          out[o][q] = ek_.from_rational(*x);
+        }
+        out[o][3] = g.goal.contact[3];   // near_in_space keeps the time
+      }
+      ++closed_cells_;
+      return out;
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      return std::nullopt;
+    }
   }
 
   // EK along the interval run's trail (Replay: the witness's or the
@@ -337,7 +386,7 @@ private:
   std::unique_ptr<Lazy_once[]> planed_, built_, settled_, moved_;
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
-      stages_adopted_{0}, lines_rerun_{0}, witness_lines_{0}, convex_rational_{0};
+      stages_adopted_{0}, lines_rerun_{0}, witness_lines_{0}, convex_rational_{0}, closed_cells_{0};
 
   // A witness AK made and verified on a certified path, in EK's numbers.
   // Regularised, its coordinates are grid points (Witness::snap), exact
@@ -601,6 +650,7 @@ private:
     stats.replay_stages_adopted = stages_adopted_.load();
     stats.earliest_lines_rerun = lines_rerun_.load();
     stats.witness_lines_rerun = witness_lines_.load();
+    stats.closed_cells_by_intervals = closed_cells_.load();
     stats.convex_rational = convex_rational_.load();
   }
 

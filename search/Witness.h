@@ -10,6 +10,7 @@
 #define CLASH4D_SEARCH_WITNESS_H
 
 #include "model/Extrusion.h"
+#include "search/Witness_signs.h"
 #include <algorithm>
 #include <optional>
 #include <vector>
@@ -45,8 +46,9 @@ public:
     to_world(in, shear);
     std::vector<H> world = world_planes(A, B, lo, hi);
     V4 d{in[0] - c[0], in[1] - c[1], in[2] - c[2], in[3] - c[3]};
-    V4 p = point_along(c, safe_step(d, world, values_at(c, world)), d);
-    return generic_snapped(p, world, 4);
+    std::optional<FT> step = safe_step(d, world, values_at(c, world));
+    if (!step) return std::nullopt;
+    return generic_snapped(point_along(c, *step, d), world, 4);
   }
 
   // Closed semantics: a point strictly inside object M, on none of its
@@ -54,15 +56,41 @@ public:
   // into a cell inside M (frame of the search). M's planes all contain its
   // motion (v, 1), so d less d_t (v, 1) leads into the same cell at p's
   // time: the point stays in the sub-span even when p is at its end.
-  std::optional<V4> near_in_space(V4 p, V4 d, const Vector3<FT>& shear, const Moving& M) const
+  // signs: where the kernel cannot tell whether a plane is through p or
+  // parallel to a step, the exact answer (a filter's, search/Witness_signs.h);
+  // the point made is then the exact kernel's, or none.
+  std::optional<V4> near_in_space(V4 p, V4 d, const Vector3<FT>& shear, const Moving& M,
+                                  const Witness_signs* signs = nullptr) const
+  {
+    in_space(p, d, shear, M.v);
+    std::vector<H> own = object_planes(M);
+    std::vector<FT> values = values_at(p, own);
+    Zeros zeros{signs, std::vector<char>(own.size(), 0), -1, d};
+    if (!decide_zeros(values, own, zeros)) return std::nullopt;
+    if (!k_.is_zero(d)) {
+      std::optional<FT> step = safe_step(d, own, values, &zeros, 0);
+      if (!step) return std::nullopt;
+      p = point_along(p, *step, d);
+      zeros.direction = 0;
+    }
+    return generic_snapped(p, own, 3, &zeros);
+  }
+
+  // near_in_space's p and d in world space at p's time: unsheared, and d
+  // less its part along M's motion (v, 1).
+  static void in_space(V4& p, V4& d, const Vector3<FT>& shear, const Vector3<FT>& v)
   {
     to_world(p, shear);
     to_world(d, shear);
-    for (int q = 0; q < 3; ++q) d[q] -= d[3] * M.v[q];
+    for (int q = 0; q < 3; ++q) d[q] -= d[3] * v[q];
     d[3] = FT(0);
-    std::vector<H> own = object_planes(M);
-    if (!k_.is_zero(d)) p = point_along(p, safe_step(d, own, values_at(p, own)), d);
-    return generic_snapped(p, own, 3);
+  }
+
+  // Direction j >= 1 of make_generic's steps: (1, j, j^2, j^3), or with
+  // dims 3 (1, j, j^2, 0).
+  static V4 generic_direction(int j, int dims)
+  {
+    return {FT(1), FT(j), FT(j * j), dims == 4 ? FT(j * j * j) : FT(0)};
   }
 
 private:
@@ -90,12 +118,62 @@ private:
     return world;
   }
 
+  // Which planes are zero at the current point, for a kernel that cannot
+  // tell (signs given): at the contact, as signs says; after a step along
+  // direction `direction` (safe_step moves off every plane the step is not
+  // parallel to), those that were and are parallel to it. `along` is
+  // direction 0.
+  struct Zeros {
+    const Witness_signs* signs = nullptr;
+    std::vector<char> zero;
+    int direction = -1;     // -1: at the contact
+    V4 along;
+  };
+
+  // The values the kernel cannot sign that are zero, made exact zeros
+  // (Zeros); false when one is not zero (its sign unknown) or no signs.
+  bool decide_zeros(std::vector<FT>& values, const std::vector<H>& planes, Zeros& z) const
+  {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      CGAL::Uncertain<CGAL::Sign> s = k_.uncertain_sign(values[i]);
+      if (CGAL::is_certain(s)) {
+        z.zero[i] = s.make_certain() == CGAL::ZERO;
+        continue;
+      }
+      if (!z.signs) return false;
+      bool zero = z.direction < 0 ? z.signs->through_contact(i)
+                                  : z.zero[i] && is_parallel(dot(planes[i].n, z.along), i, &z, z.direction);
+      if (!zero) return false;
+      values[i] = FT(0);
+      z.zero[i] = 1;
+    }
+    return true;
+  }
+
+  // Whether n.d = nd is zero: the kernel's sign, or where it cannot tell,
+  // the exact answer for plane i and direction `direction` (z's signs);
+  // indeterminate when neither can tell.
+  CGAL::Uncertain<bool> parallel_sign(const FT& nd, std::size_t i, const Zeros* z, int direction) const
+  {
+    if (!z || !z->signs) return k_.sign(nd) == CGAL::ZERO;
+    CGAL::Uncertain<CGAL::Sign> s = k_.uncertain_sign(nd);
+    if (CGAL::is_certain(s)) return s.make_certain() == CGAL::ZERO;
+    if (z->signs->parallel(i, direction)) return true;
+    return CGAL::Uncertain<bool>::indeterminate();   // not parallel, but its slope is not bounded away from 0
+  }
+  bool is_parallel(const FT& nd, std::size_t i, const Zeros* z, int direction) const
+  {
+    CGAL::Uncertain<bool> p = parallel_sign(nd, i, z, direction);
+    return CGAL::is_certain(p) && p.make_certain();
+  }
+
   // p moved off every plane through it, then snapped; the first `dims`
   // coordinates move (3: the time stays).
-  std::optional<V4> generic_snapped(V4 p, const std::vector<H>& planes, int dims) const
+  std::optional<V4> generic_snapped(V4 p, const std::vector<H>& planes, int dims, Zeros* z = nullptr) const
   {
     std::vector<FT> values = values_at(p, planes);
-    CGAL::Uncertain<bool> moved = make_generic(p, planes, values, dims);
+    if (z && !decide_zeros(values, planes, *z)) return std::nullopt;
+    CGAL::Uncertain<bool> moved = make_generic(p, planes, values, dims, z);
     if (!CGAL::is_certain(moved)) return std::nullopt;
     if (moved.make_certain()) values = values_at(p, planes);
     return snap(p, planes, values, dims);
@@ -110,14 +188,19 @@ private:
   }
 
   // Largest step (halved) along d from p that crosses no hyperplane not
-  // already through p; values[i] is planes[i] at p.
-  FT safe_step(const V4& d, const std::vector<H>& planes, const std::vector<FT>& values) const
+  // already through p; values[i] is planes[i] at p. None when a slope's
+  // sign is known only to be nonzero (z: Zeros; direction: d's number).
+  std::optional<FT> safe_step(const V4& d, const std::vector<H>& planes, const std::vector<FT>& values,
+                              const Zeros* z = nullptr, int direction = 0) const
   {
     bool any = false;
     FT best(1);
     for (std::size_t i = 0; i < planes.size(); ++i) {
+      if (k_.sign(values[i]) == CGAL::ZERO) continue;
       FT nd = dot(planes[i].n, d);
-      if (k_.sign(values[i]) == CGAL::ZERO || k_.sign(nd) == CGAL::ZERO) continue;
+      CGAL::Uncertain<bool> parallel = parallel_sign(nd, i, z, direction);
+      if (!CGAL::is_certain(parallel)) return std::nullopt;
+      if (parallel.make_certain()) continue;
       FT s = Number_ops<FT>::magnitude(values[i]) / Number_ops<FT>::magnitude(nd);
       best = any ? Number_ops<FT>::lower(best, s) : s;
       any = true;
@@ -126,14 +209,16 @@ private:
   }
 
   // Steps p off the planes through it; true when it moved, indeterminate
-  // when the kernel cannot tell whether a plane is through it.
-  CGAL::Uncertain<bool> make_generic(V4& p, const std::vector<H>& planes, const std::vector<FT>& values, int dims) const
+  // when the kernel cannot tell whether a plane is through it (or, with
+  // z, a slope it needs).
+  CGAL::Uncertain<bool> make_generic(V4& p, const std::vector<H>& planes, const std::vector<FT>& values, int dims,
+                                     const Zeros* z = nullptr) const
   {
-    std::vector<const H*> through;
+    std::vector<std::size_t> through;
     for (std::size_t i = 0; i < planes.size(); ++i) {
       CGAL::Uncertain<CGAL::Sign> s = k_.uncertain_sign(values[i]);
       if (!CGAL::is_certain(s)) return CGAL::Uncertain<bool>::indeterminate();
-      if (s.make_certain() == CGAL::ZERO) through.push_back(&planes[i]);
+      if (s.make_certain() == CGAL::ZERO) through.push_back(i);
     }
     if (through.empty()) return false;
     // d = (1, j, j^2, j^3) is orthogonal to a given normal for at most three
@@ -141,11 +226,22 @@ private:
     // dims 3, d = (1, j, j^2, 0) and a normal whose space part is not zero,
     // as every object plane's is).
     for (int j = 1;; ++j) {
-      V4 d{FT(1), FT(j), FT(j * j), dims == 4 ? FT(j * j * j) : FT(0)};
+      V4 d = generic_direction(j, dims);
       bool ok = true;
-      for (const H* h : through) ok = ok && k_.dot_sign(h->n, d) != CGAL::ZERO;
+      for (std::size_t i : through) {
+        if (!ok) break;
+        if (!z || !z->signs) {
+          ok = k_.dot_sign(planes[i].n, d) != CGAL::ZERO;
+          continue;
+        }
+        CGAL::Uncertain<bool> parallel = parallel_sign(dot(planes[i].n, d), i, z, j);
+        if (!CGAL::is_certain(parallel)) return CGAL::Uncertain<bool>::indeterminate();
+        ok = !parallel.make_certain();
+      }
       if (ok) {
-        p = point_along(p, safe_step(d, planes, values), d);
+        std::optional<FT> step = safe_step(d, planes, values, z, j);
+        if (!step) return CGAL::Uncertain<bool>::indeterminate();
+        p = point_along(p, *step, d);
         return true;
       }
       if (j > 3 * static_cast<int>(through.size()) + 1) return false;   // only with a tolerance

@@ -26,6 +26,7 @@
 
 #include "search/Generate_and_test.h"
 #include "search/Witness.h"
+#include "exact/Exact_witness_signs.h"
 #include "model/Point_classifier.h"
 #include <algorithm>
 #include <type_traits>
@@ -1069,6 +1070,75 @@ BOOST_AUTO_TEST_CASE(witness_the_intervals_cannot_make_is_none)
   std::optional<Vector4<Rational>> exact = r.make({Rational(3, 4), half, half, half});
   BOOST_TEST_REQUIRE((sure.has_value() && exact.has_value()));
   for (int q = 0; q < 4; ++q) BOOST_TEST(((*sure)[q].is_point() && Rational((*sure)[q].inf()) == (*exact)[q]), q);
+}
+
+// Closed semantics: the generic points beside a touch on planes that are no
+// doubles made in intervals (search/Witness.h, near_in_space), the signs
+// they cannot tell asked of the rational planes (exact/Exact_witness_signs.h):
+// the rationals' own points. The touch is on b's face x = 1/10 and on a's
+// inner seam x/3 + y = 8/15; the step into a, (-1, 1/3, 0), runs along the
+// seam (a zero the intervals cannot see), which is still zero after it.
+// Without the exact signs the intervals make none.
+BOOST_AUTO_TEST_CASE(closed_cells_made_in_intervals_are_the_rationals)
+{
+  Scene scene = read_scene(read_json_text(R"({"format":"clash4d-scene/1","time":[0,1],"objects":[
+      {"name":"a","shape":{"union":[
+        {"convex":[[1,0,0,"-1/10"],[-1,0,0,0],[0,0,-1,0],[0,0,1,-1],[0,-1,0,0],["1/3",1,0,"-8/15"]]},
+        {"convex":[[1,0,0,"-1/10"],[-1,0,0,0],[0,0,-1,0],[0,0,1,-1],[0,1,0,-1],["-1/3",-1,0,"8/15"]]}]}},
+      {"name":"b","shape":{"block":{"min":["1/10",0,0],"max":[1,1,1]}}}]})"));
+  Witness_pair<Rational_kernel> r(scene);
+  const Vector3<Rational> still{Rational(0), Rational(0), Rational(0)};
+  const Vector4<Rational> p{Rational(1, 10), Rational(1, 2), Rational(1, 2), Rational(1, 3)};
+  const Vector4<Rational> toward[2] = {{Rational(-1), Rational(1, 3), Rational(0), Rational(0)},
+                                       {Rational(1), Rational(-1, 7), Rational(0), Rational(0)}};
+  CGAL::Protect_FPU_rounding<true> protect;
+  Witness_pair<Interval_kernel> i(scene);
+  auto enclose = [&](const Vector4<Rational>& x) {
+    return Vector4<Interval>{i.k.from_rational(x[0]), i.k.from_rational(x[1]), i.k.from_rational(x[2]),
+                             i.k.from_rational(x[3])};
+  };
+  const Vector3<Interval> none{Interval(0), Interval(0), Interval(0)};
+  for (int o = 0; o < 2; ++o) {
+    const Moving_object<Rational>& exact_m = o == 0 ? r.A : r.B;
+    const Moving_object<Interval>& interval_m = o == 0 ? i.A : i.B;
+    std::optional<Vector4<Rational>> want;
+    {
+      CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+      want = Witness<Rational_kernel>(r.k).near_in_space(p, toward[o], still, exact_m);
+    }
+    BOOST_TEST_REQUIRE(want.has_value());
+    std::optional<Vector4<Interval>> alone;
+    BOOST_CHECK_NO_THROW(alone = Witness<Interval_kernel>(i.k).near_in_space(enclose(p), enclose(toward[o]), none,
+                                                                              interval_m));
+    BOOST_TEST(!alone.has_value(), o);
+    Exact_witness_signs<Rational_kernel> signs(r.k, exact_m, p, toward[o], still);
+    std::optional<Vector4<Interval>> got =
+        Witness<Interval_kernel>(i.k).near_in_space(enclose(p), enclose(toward[o]), none, interval_m, &signs);
+    BOOST_TEST_REQUIRE(got.has_value(), o);
+    for (int q = 0; q < 3; ++q)
+      BOOST_TEST(((*got)[q].is_point() && Rational((*got)[q].inf()) == (*want)[q]), "object " << o << " axis " << q);
+    BOOST_TEST(((*got)[3].inf() <= 1.0 / 3 && 1.0 / 3 <= (*got)[3].sup()));
+  }
+  BOOST_TEST(is_valid_touch(r.k, r.model, 0, 1, p,
+                            *Witness<Rational_kernel>(r.k).near_in_space(p, toward[0], still, r.A),
+                            *Witness<Rational_kernel>(r.k).near_in_space(p, toward[1], still, r.B)));
+}
+
+// The whole run: the weaving vehicle's closed touch at (35/4, -1/10, 1,
+// 59/10) has its generic points made so, and the answer is the rational
+// run's, cells included.
+BOOST_AUTO_TEST_CASE(closed_touch_cells_by_intervals_in_a_run)
+{
+  Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/paper/section6_weaving_vehicle.json");
+  Check_options o;
+  o.semantics = Semantics::closed;
+  Check_answer f = check_exact(scene, o), r = check_rational(scene, o);
+  BOOST_TEST_REQUIRE((f.collide && r.collide));
+  BOOST_TEST(f.stats.closed_cells_by_intervals == 1u);
+  BOOST_TEST_REQUIRE(f.pairs.size() == r.pairs.size());
+  BOOST_TEST(f.pairs[0].witness == r.pairs[0].witness);
+  BOOST_TEST(f.pairs[0].witness_cells == r.pairs[0].witness_cells);
+  BOOST_TEST(f.pairs[0].witness_verified);
 }
 
 BOOST_DATA_TEST_CASE(skeleton_matches_rational,
