@@ -7,12 +7,13 @@
 #include <CGAL/enum.h>
 #include <array>
 #include <cstddef>
+#include <utility>
 
 namespace clash4d {
 
 template <class FT, std::size_t D>
 struct Box {
-  std::array<FT, D> lo{}, hi{};
+  std::array<FT, D> lo = zeros(), hi = zeros();
   std::array<bool, D> has_lo{}, has_hi{};   // false: unbounded on that side
   bool empty = false;
 
@@ -28,6 +29,23 @@ struct Box {
   void set(std::size_t axis, const FT& l, const FT& h)
   {
     lo[axis] = l; hi[axis] = h; has_lo[axis] = has_hi[axis] = true;
+  }
+
+private:
+  // Copies of one zero: a rational zero made per coordinate is an
+  // allocation, and the S-bounds make empty and whole boxes by the
+  // thousand (GMP numbers share their representation and are never
+  // written through it).
+  static std::array<FT, D> zeros() { return copies(zero(), std::make_index_sequence<D>()); }
+  static const FT& zero()
+  {
+    static const FT z(0);
+    return z;
+  }
+  template <std::size_t... I>
+  static std::array<FT, D> copies(const FT& z, std::index_sequence<I...>)
+  {
+    return {{(static_cast<void>(I), z)...}};
   }
 };
 

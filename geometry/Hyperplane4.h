@@ -14,7 +14,7 @@ struct Hyperplane4 {
   FT c;
 
   FT value(const Vector4<FT>& p) const { return dot_plus(n, p, c); }
-  Hyperplane4 complement() const { return {{-n[0], -n[1], -n[2], -n[3]}, -c}; }
+  Hyperplane4 complement() const { return {{negated(n[0]), negated(n[1]), negated(n[2]), negated(n[3])}, negated(c)}; }
 };
 
 // +1 when h = lambda g with lambda > 0, -1 when lambda < 0, 0 otherwise;

@@ -12,6 +12,7 @@
 
 namespace clash4d {
 
+template <class FT> using Vector2 = std::array<FT, 2>;
 template <class FT> using Vector3 = std::array<FT, 3>;
 template <class FT> using Vector4 = std::array<FT, 4>;
 template <class FT> using Plane3 = std::array<FT, 4>;    // a x + b y + c z + d <= 0
@@ -55,6 +56,15 @@ FT negated_dot(const std::array<FT, N>& a, const std::array<FT, N>& b)
 {
   if constexpr (std::is_same_v<FT, Rational>) return difference_of_products(nullptr, a.data(), b.data(), N);
   else return -dot(a, b);
+}
+
+// -x; in rationals a zero is returned as it is (the same number, without
+// the allocation a negation makes; axis-aligned planes are mostly zeros).
+template <class FT>
+FT negated(const FT& x)
+{
+  if constexpr (std::is_same_v<FT, Rational>) return x.sign() == CGAL::ZERO ? x : -x;
+  else return -x;
 }
 
 template <class FT>

@@ -61,6 +61,10 @@ public:
     std::array<bool, 3> own_a{}, own_b{};
     for (int q = 0; q < 3 && own_frames; ++q) own_a[q] = frame_of_a[q], own_b[q] = !frame_of_a[q];
     std::vector<H> table;
+    std::size_t entries = 2;   // room for a closed slab (add_time_slab)
+    for (const Moving* m : {&A, &B})
+      for (const auto& p : m->object->csg.primitives) entries += 2 * p.planes.size();
+    table.reserve(entries);
     groups.velocity.push_back(object_planes(A, shear, own_a, table, &groups));
     groups.of.assign(table.size(), 0);
     groups.velocity.push_back(object_planes(B, shear, own_b, table, &groups));

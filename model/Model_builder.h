@@ -49,7 +49,7 @@ struct Affine3 {
   Plane3<FT> apply(const Plane3<FT>& p) const
   {
     Vector3<FT> n = linear({p[0], p[1], p[2]});
-    return {n[0], n[1], n[2], p[3] - dot(n, b)};
+    return {n[0], n[1], n[2], dot_from(p[3], n, b)};
   }
   // this o (x -> M x + t); M_identity: M = I (a translation).
   // Made from its parts, not assigned into a default one: in rationals
@@ -213,23 +213,26 @@ public:
   Plane3<FT> local_plane(const Solid& s, std::size_t i) const
   {
     using K_ = Solid::Kind;
-    const FT zero(0), one(1);
+    // Shared, not made per plane: in rationals each is an allocation.
+    static const FT zero(0), one(1), minus_one(-1);
     switch (s.kind) {
       case K_::Block: {   // below then above, per axis
         std::size_t a = i / 2;
         Plane3<FT> h{zero, zero, zero, i % 2 ? -num(s, 3 + a) : num(s, a)};
-        h[a] = i % 2 ? one : -one;
+        h[a] = i % 2 ? one : minus_one;
         return h;
       }
       case K_::Prism: {
         std::size_t n = (s.numbers.size() - 2) / 2;
-        if (i == n) return {zero, zero, -one, num(s, 2 * n)};
+        if (i == n) return {zero, zero, minus_one, num(s, 2 * n)};
         if (i == n + 1) return {zero, zero, one, -num(s, 2 * n + 1)};
         std::size_t j = (i + 1) % n;
-        FT x = num(s, 2 * i), y = num(s, 2 * i + 1);
-        FT dx = num(s, 2 * j) - x, dy = num(s, 2 * j + 1) - y;
-        // Counter-clockwise base: the outward normal of edge i is (dy, -dx).
-        return {dy, -dx, zero, -(dy * x - dx * y)};
+        Vector2<FT> at{num(s, 2 * i), num(s, 2 * i + 1)};
+        FT dx = num(s, 2 * j) - at[0], dy = num(s, 2 * j + 1) - at[1];
+        // Counter-clockwise base: the outward normal of edge i is (dy, -dx),
+        // and the edge's start is on the plane.
+        Vector2<FT> normal{dy, -dx};
+        return {normal[0], normal[1], zero, negated_dot(normal, at)};
       }
       case K_::Hull: {
         if (exact_read(s)) return constructed4(s, 4 * i);
@@ -277,13 +280,18 @@ private:
   // A primitive with its box only (primitive_box, build_boxes): its
   // vertices' box moved by T (a translation moves the box itself: min and
   // max commute with adding b), or a half-space's moved plane's. A block's
-  // corners are its box's: block_box.
+  // corners are its box's: block_box, or under a translation its min and
+  // max moved.
   Primitive<FT> boxed(const Solid& s, const Affine3<FT>& T) const
   {
     Primitive<FT> p;
     p.path = s.path;
-    if (s.kind == Solid::Kind::Block && !T.linear_identity) {
-      p.box = block_box(vec3(s, 0), vec3(s, 3), T);
+    if (s.kind == Solid::Kind::Block) {
+      Vector3<FT> lo = vec3(s, 0), hi = vec3(s, 3);
+      if (!T.linear_identity) p.box = block_box(lo, hi, T);
+      else   // min < max (the reader): the corners' box is [min, max], moved
+        for (int a = 0; a < 3; ++a)
+          T.is_identity ? p.box.set(a, lo[a], hi[a]) : p.box.set(a, lo[a] + T.b[a], hi[a] + T.b[a]);
       return p;
     }
     local_geometry(s, p, false);
