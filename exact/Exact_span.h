@@ -58,7 +58,7 @@ public:
     bool exact_;
   };
 
-  // closed: the tables carry the sub-span's time slab (Extrusion::span_table).
+  // closed: the tables carry the sub-span's time slab (Extrusion::add_time_slab).
   explicit Exact_span(Runner& runner, bool closed = false) : runner_(runner), closed_(closed) {}
 
   // Whether two planes are one, each a table entry or (entry -1) a face of
@@ -71,7 +71,7 @@ public:
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     enter(a, b, s, frame);
     auto plane = [&](long e, int f) {
-      if (e >= 0) return table_.at(static_cast<std::size_t>(e));
+      if (e >= 0) return entry(static_cast<std::size_t>(e));
       std::optional<Rational> v = runner_.ak_.exact_value(f % 2 ? region.hi[f / 2] : region.lo[f / 2]);
       if (!v) throw CGAL::Uncertain_conversion_exception("a region face the intervals only enclose");
       Box<EFT, 4> exact;
@@ -118,6 +118,8 @@ public:
       outer = *own;
       exact = true;
     }
+    for (long e : layout.entry)
+      if (e >= 0) entry(static_cast<std::size_t>(e));   // all the lines read (Generate_and_test::adopt)
     auto conquer = std::make_shared<Lines>(runner_.ek_, as_is ? table_ : lowest_terms(layout), groups_, exact);
     conquer->conquer().adopt(layout, outer);
     return conquer;
@@ -129,7 +131,7 @@ public:
   // intervals), enclosed, and its emptied S-bounds copied onto the interval
   // run's A and B (only their emptiness shapes the formula,
   // Extrusion::emit). The shear is made from A's and B's velocities by the
-  // frame, as the interval run makes it (Extrusion::span_table).
+  // frame, as the interval run makes it (Extrusion::shear_of).
   template <class M>
   void region_stage(int a, int b, std::size_t s, M& A, M& B, Region_stage<AFT>& st)
   {
@@ -189,7 +191,8 @@ public:
     {
       CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
       enter(a, b, s, frame);
-      for (const auto& h : table_) {
+      for (std::size_t e = 0; e < table_.size(); ++e) {
+        const Hyperplane4<EFT>& h = entry(e);
         std::array<Rational, 4> x;
         std::array<Rational, 5> y;
         for (int q = 0; q < 4; ++q) y[q] = x[q] = runner_.ek_.to_rational(h.n[q]);
@@ -211,7 +214,12 @@ private:
   Runner& runner_;
   bool closed_;
   std::size_t span_ = static_cast<std::size_t>(-1);
+  // The sub-span's table (Extrusion::pair_table, closed with its time
+  // slab), each entry made as it is first read (entry): a rational line
+  // reads the planes of one conquer, a fraction of the table.
   std::vector<Hyperplane4<EFT>> table_;
+  std::vector<char> made_;
+  Moving_object<EFT> A_, B_;                   // on the sub-span, as pair_table takes them
   std::vector<Hyperplane4<EFT>> lowest_;        // table entries in lowest terms, as lines need them
   std::vector<char> lowest_made_;
   Motion_groups<EFT> groups_;
@@ -223,12 +231,41 @@ private:
     if (s == span_) return;
     runner_.need_planes(a);   // the table reads planes alone
     runner_.need_planes(b);
+    const Scene_model<EK>& model = runner_.emodel_;
+    const Time_span<EFT> span = model.sub_spans({a, b}).at(s);
+    A_ = moving_on(model, a, span, {});
+    B_ = moving_on(model, b, span, {});
     groups_ = Motion_groups<EFT>();
-    table_ = Extrusion<EK>::span_table(runner_.emodel_, runner_.esettled_, a, b, s, frame, runner_.use_sbounds_, groups_,
-                                       closed_);
+    bool fitted = runner_.use_sbounds_;
+    Extrusion<EK>::pair_groups(A_, B_, Extrusion<EK>::shear_of(A_, B_, frame, fitted), frame, fitted, groups_);
+    table_.assign(groups_.of.size(), unmade());
+    made_.assign(table_.size(), 0);
+    if (closed_) {
+      Extrusion<EK>::add_time_slab(table_, span.lo, span.hi);
+      made_.resize(table_.size(), 1);
+    }
     lowest_.clear();
     answers_.clear();
     span_ = s;
+  }
+
+  // Table entry e, made when first read.
+  const Hyperplane4<EFT>& entry(std::size_t e)
+  {
+    if (!made_.at(e)) {
+      table_[e] = Extrusion<EK>::pair_entry(A_, B_, groups_, e);
+      made_[e] = 1;
+    }
+    return table_[e];
+  }
+
+  // What an entry holds until it is made: copies of one zero plane (a
+  // rational zero made per coefficient would be an allocation each).
+  static const Hyperplane4<EFT>& unmade()
+  {
+    static const EFT zero(0);
+    static const Hyperplane4<EFT> none{{zero, zero, zero, zero}, zero};
+    return none;
   }
 
   // Lines decide signs only (a point found is made again by the rational

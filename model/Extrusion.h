@@ -58,34 +58,47 @@ public:
   static std::vector<H> pair_table(const Moving& A, const Moving& B, const Vector3<FT>& shear,
                                    const std::array<bool, 3>& frame_of_a, bool own_frames, Motion_groups<FT>& groups)
   {
-    std::array<bool, 3> own_a{}, own_b{};
-    for (int q = 0; q < 3 && own_frames; ++q) own_a[q] = frame_of_a[q], own_b[q] = !frame_of_a[q];
+    pair_groups(A, B, shear, frame_of_a, own_frames, groups);
     std::vector<H> table;
-    std::size_t entries = 2;   // room for a closed slab (add_time_slab)
-    for (const Moving* m : {&A, &B})
-      for (const auto& p : m->object->csg.primitives) entries += 2 * p.planes.size();
-    table.reserve(entries);
-    groups.velocity.push_back(object_planes(A, shear, own_a, table, &groups));
-    groups.of.assign(table.size(), 0);
-    groups.velocity.push_back(object_planes(B, shear, own_b, table, &groups));
-    groups.of.resize(table.size(), 1);
-    groups.still = {own_a, own_b};
+    table.reserve(groups.of.size() + 2);   // room for a closed slab (add_time_slab)
+    object_planes(A, groups.velocity[0], table);
+    object_planes(B, groups.velocity[1], table);
     return table;
   }
 
-  // pair_table of objects a and b on their sub-span `index` (time order),
-  // in the frame Appendix B's fitting chose (frame_of_a) or, without
-  // S-bounds, the world frame: the table another kernel's run searched.
-  // closed: with the sub-span's time slab after it (add_time_slab).
-  static std::vector<H> span_table(const Scene_model<K>& model, const std::vector<std::vector<Box<FT, 3>>>& settled,
-                                   int a, int b, std::size_t index, const std::array<bool, 3>& frame_of_a,
-                                   bool fitted, Motion_groups<FT>& groups, bool closed = false)
+  // pair_table's groups alone (no plane made): each object's velocity in
+  // the frame, and per entry its group and the corners it passes through.
+  static void pair_groups(const Moving& A, const Moving& B, const Vector3<FT>& shear,
+                          const std::array<bool, 3>& frame_of_a, bool own_frames, Motion_groups<FT>& groups)
   {
-    const Time_span<FT> span = model.sub_spans({a, b}).at(index);
-    Moving A = moving_on(model, a, span, settled[a]), B = moving_on(model, b, span, settled[b]);
-    std::vector<H> table = pair_table(A, B, shear_of(A, B, frame_of_a, fitted), frame_of_a, fitted, groups);
-    if (closed) add_time_slab(table, span.lo, span.hi);
-    return table;
+    std::array<bool, 3> own[2]{};
+    for (int q = 0; q < 3 && own_frames; ++q) own[0][q] = frame_of_a[q], own[1][q] = !frame_of_a[q];
+    for (int o = 0; o < 2; ++o) {
+      const Moving& m = o == 0 ? A : B;
+      groups.velocity.push_back(relative_velocity(m, shear, own[o]));
+      object_corners(m, groups);
+      groups.of.resize(groups.corners.size(), o);
+    }
+    groups.still = {own[0], own[1]};
+  }
+
+  // Entry e of pair_table (A, B and groups as it made them), made alone:
+  // the same plane, for a run that reads a few entries (exact/Exact_span.h).
+  static H pair_entry(const Moving& A, const Moving& B, const Motion_groups<FT>& groups, std::size_t e)
+  {
+    int o = groups.of.at(e);
+    const Moving& m = o == 0 ? A : B;
+    std::size_t j = e;
+    if (o == 1)
+      for (const auto& p : A.object->csg.primitives) j -= 2 * p.planes.size();
+    for (const auto& p : m.object->csg.primitives) {
+      if (j < 2 * p.planes.size()) {
+        H h = extrude(p.planes[j / 2], groups.velocity[static_cast<std::size_t>(o)], m.o);
+        return j % 2 ? h.complement() : h;
+      }
+      j -= 2 * p.planes.size();
+    }
+    throw std::logic_error("internal error: a table entry past its object's planes");
   }
 
   // The frame's shear (x' = x - shear t): per axis A's velocity or B's
@@ -139,7 +152,7 @@ public:
       if (s > 0) slab_leaf(time_at_least(m.times[s - 1]), table, b);
       if (s < m.times.size()) slab_leaf(time_at_most(m.times[s]), table, b);
       std::size_t next = table.size();
-      object_planes(seg, shear, {}, table);
+      object_planes(seg, relative_velocity(seg, shear, {}), table);
       emit(seg, 0, false, b, next);
       b.close(Formula::Op::And, seg_mark);
     }
@@ -169,35 +182,41 @@ private:
     return builder.finish();
   }
 
-  // Every plane of every primitive, extruded (eq. 4) and sheared, followed by
-  // its complement: table[2i] is plane i, table[2i + 1] its complement.
   // In the frame x' = x - w t the object moves with v - w (eq. 4 with that
   // velocity). On an axis measured in the object's own frame (own[q]) that
   // is a written zero, not v - v: an interval run then gets a point zero
   // where the exact run has one, instead of an uncertain sign.
-  // Returns the velocity v - w. groups: where to list the corners each entry
-  // passes through (model/Motion_groups.h).
-  static Vector3<FT> object_planes(const Moving& m, const Vector3<FT>& shear, const std::array<bool, 3>& own,
-                                   std::vector<H>& table, Motion_groups<FT>* groups = nullptr)
+  static Vector3<FT> relative_velocity(const Moving& m, const Vector3<FT>& shear, const std::array<bool, 3>& own)
   {
     Vector3<FT> relative;
     for (int q = 0; q < 3; ++q) relative[q] = own[q] ? FT(0) : m.v[q] - shear[q];
+    return relative;
+  }
+
+  // Every plane of every primitive, extruded (eq. 4) with the velocity
+  // `relative` (relative_velocity), followed by its complement: table[2i]
+  // is plane i, table[2i + 1] its complement.
+  static void object_planes(const Moving& m, const Vector3<FT>& relative, std::vector<H>& table)
+  {
+    for (const auto& p : m.object->csg.primitives)
+      for (const auto& plane : p.planes) {
+        table.push_back(extrude(plane, relative, m.o));
+        table.push_back(table.back().complement());
+      }
+  }
+
+  // Per entry object_planes makes (two per plane), the corners its plane
+  // passes through (model/Motion_groups.h), appended to groups.corners.
+  static void object_corners(const Moving& m, Motion_groups<FT>& groups)
+  {
     for (const auto& p : m.object->csg.primitives) {
       std::vector<std::vector<int>> through(p.planes.size());
-      if (groups) {
-        for (const auto& corner : p.corners) {
-          for (int plane : corner) through[plane].push_back(groups->corner_count);
-          ++groups->corner_count;
-        }
-        groups->corners.resize(table.size());
+      for (const auto& corner : p.corners) {
+        for (int plane : corner) through[plane].push_back(groups.corner_count);
+        ++groups.corner_count;
       }
-      for (std::size_t i = 0; i < p.planes.size(); ++i) {
-        table.push_back(extrude(p.planes[i], relative, m.o));
-        table.push_back(table.back().complement());
-        if (groups) groups->corners.insert(groups->corners.end(), 2, through[i]);
-      }
+      for (std::size_t i = 0; i < p.planes.size(); ++i) groups.corners.insert(groups.corners.end(), 2, through[i]);
     }
-    return relative;
   }
 
   // The object's tree in negation normal form; pruned nodes (empty S-bound)

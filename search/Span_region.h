@@ -187,7 +187,7 @@ private:
 
   // Neither object bounded on both sides of axis q. It is measured in A's
   // frame (x' = x - v_A t; frame_of_a, so a run in another kernel rebuilds
-  // the same table, Extrusion::span_table), within [-R, R] (R: the far
+  // the same table, exact/Exact_span.h), within [-R, R] (R: the far
   // bound, beyond every vertex of the scene's arrangement in every such
   // frame, model/Far_bound.h), narrowed by A's sides (constant in its
   // frame) and B's swept over [tl, th] (x'_q - (v_B - v_A) t lies in B's

@@ -1,6 +1,7 @@
 #define BOOST_TEST_MODULE model
 #include <boost/test/unit_test.hpp>
 
+#include "model/Extrusion.h"
 #include "model/Scene_model.h"
 #include "search/S_bounds.h"
 #include "exact/Rational_kernel.h"
@@ -314,4 +315,37 @@ BOOST_AUTO_TEST_CASE(octahedron_has_six_corners)
   // A block has none: three planes at each of its corners.
   BOOST_TEST(model_of(R"({"hull":[[0,0,0],[1,0,0],[0,1,0],[1,1,0],[0,0,1],[1,0,1],[0,1,1],[1,1,1]]})")
                  .primitives[0].corners.empty());
+}
+
+// A table entry made alone (Extrusion::pair_entry, what a filter's
+// rational lines read, exact/Exact_span.h) is pair_table's entry, and the
+// groups made without planes (pair_groups) are pair_table's: every_kind
+// moving against a block, sheared by each object's velocity in turn, in
+// its own frames and in neither's.
+BOOST_AUTO_TEST_CASE(table_entries_made_alone_are_the_pair_tables)
+{
+  Scene scene = scene_with(every_kind, "vel 1/3 -2 5/7");
+  Rational_kernel k;
+  Scene_model<Rational_kernel> model = Scene_model<Rational_kernel>::build(k, scene);
+  const Time_span<Q> span = model.sub_spans({0, 1}).at(0);
+  Moving_object<Q> A = moving_on(model, 0, span, {}), B = moving_on(model, 1, span, {});
+  using E = Extrusion<Rational_kernel>;
+  for (bool fitted : {false, true})
+    for (std::array<bool, 3> frame : {std::array<bool, 3>{true, false, true}, std::array<bool, 3>{false, true, false}}) {
+      Vector3<Q> shear = E::shear_of(A, B, frame, fitted);
+      Motion_groups<Q> whole, alone;
+      std::vector<Hyperplane4<Q>> table = E::pair_table(A, B, shear, frame, fitted, whole);
+      E::pair_groups(A, B, shear, frame, fitted, alone);
+      BOOST_TEST_REQUIRE(alone.of.size() == table.size());
+      BOOST_TEST(alone.of == whole.of);
+      BOOST_TEST(alone.corners == whole.corners);
+      BOOST_TEST(alone.corner_count == whole.corner_count);
+      BOOST_TEST(alone.corner_count > 0);   // the hull's and the convex solid's corners
+      BOOST_TEST((alone.still == whole.still && alone.velocity == whole.velocity));
+      for (std::size_t e = 0; e < table.size(); ++e) {
+        Hyperplane4<Q> h = E::pair_entry(A, B, alone, e);
+        BOOST_TEST((h.n == table[e].n && h.c == table[e].c), "entry " << e);
+      }
+      BOOST_CHECK_THROW(E::pair_entry(A, B, alone, table.size()), std::out_of_range);
+    }
 }
