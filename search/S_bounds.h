@@ -170,6 +170,21 @@ private:
   static void raise(Side& s, const FT& lo) { s.lo = s.has_lo ? Number_ops<FT>::upper(s.lo, lo) : lo; s.has_lo = true; }
   static void lower(Side& s, const FT& hi) { s.hi = s.has_hi ? Number_ops<FT>::lower(s.hi, hi) : hi; s.has_hi = true; }
 
+  // Whether beta meet s is beta itself, number for number (Number_ops::
+  // same), so that shrinking by s leaves beta as it is (beta, as stored,
+  // is normalised already).
+  static bool within(const Box3& beta, const Box3& s)
+  {
+    if (beta.empty || s.empty) return beta.empty;
+    for (int q = 0; q < 3; ++q) {
+      if (s.has_lo[q] && (!beta.has_lo[q] || !Number_ops<FT>::same(Number_ops<FT>::upper(beta.lo[q], s.lo[q]), beta.lo[q])))
+        return false;
+      if (s.has_hi[q] && (!beta.has_hi[q] || !Number_ops<FT>::same(Number_ops<FT>::lower(beta.hi[q], s.hi[q]), beta.hi[q])))
+        return false;
+    }
+    return true;
+  }
+
   // ut + a <= q <= ut + alpha and vt + b <= q <= vt + beta give
   // b - alpha <= (u - v) t <= beta - a (Appendix B, "Computing [tl, th]").
   bool narrow_time(const Side& a, const Side& b, const FT& w, FT& tl, FT& th) const
@@ -205,6 +220,7 @@ private:
   // beta <- beta meet s; true when it moved by a grid step (Box.h).
   bool shrink(Box3& beta, const Box3& s) const
   {
+    if (within(beta, s)) return false;   // most nodes, once settled: no box made
     Box3 r = normalised(meet(beta, s));
     bool changed = !same_on_grid(k_, r, beta);
     beta = r;
