@@ -12,6 +12,7 @@
 #include "exact/Exact_stage.h"
 #include <map>
 #include <memory>
+#include <optional>
 
 namespace clash4d {
 
@@ -219,7 +220,9 @@ private:
   // reads the planes of one conquer, a fraction of the table.
   std::vector<Hyperplane4<EFT>> table_;
   std::vector<char> made_;
-  Moving_object<EFT> A_, B_;                   // on the sub-span, as pair_table takes them
+  // On the sub-span, as pair_table takes them (made on entering one: a
+  // filter that never asks costs no rational number).
+  std::optional<Moving_object<EFT>> A_, B_;
   std::vector<Hyperplane4<EFT>> lowest_;        // table entries in lowest terms, as lines need them
   std::vector<char> lowest_made_;
   Motion_groups<EFT> groups_;
@@ -237,7 +240,7 @@ private:
     B_ = moving_on(model, b, span, {});
     groups_ = Motion_groups<EFT>();
     bool fitted = runner_.use_sbounds_;
-    Extrusion<EK>::pair_groups(A_, B_, Extrusion<EK>::shear_of(A_, B_, frame, fitted), frame, fitted, groups_);
+    Extrusion<EK>::pair_groups(*A_, *B_, Extrusion<EK>::shear_of(*A_, *B_, frame, fitted), frame, fitted, groups_);
     table_.assign(groups_.of.size(), unmade());
     made_.assign(table_.size(), 0);
     if (closed_) {
@@ -253,7 +256,7 @@ private:
   const Hyperplane4<EFT>& entry(std::size_t e)
   {
     if (!made_.at(e)) {
-      table_[e] = Extrusion<EK>::pair_entry(A_, B_, groups_, e);
+      table_[e] = Extrusion<EK>::pair_entry(*A_, *B_, groups_, e);
       made_[e] = 1;
     }
     return table_[e];

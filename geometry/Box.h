@@ -7,6 +7,7 @@
 #include <CGAL/enum.h>
 #include <array>
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 
 namespace clash4d {
@@ -36,7 +37,11 @@ private:
   // allocation, and the S-bounds make empty and whole boxes by the
   // thousand (GMP numbers share their representation and are never
   // written through it).
-  static std::array<FT, D> zeros() { return copies(zero(), std::make_index_sequence<D>()); }
+  static std::array<FT, D> zeros()
+  {
+    if constexpr (std::is_trivially_copyable_v<FT>) return {};   // doubles, intervals
+    else return copies(zero(), std::make_index_sequence<D>());
+  }
   static const FT& zero()
   {
     static const FT z(0);

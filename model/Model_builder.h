@@ -8,6 +8,7 @@
 #include "geometry/Polytope_ft.h"
 #include "geometry/Rotation_matrix.h"
 #include "scene/Scene.h"
+#include <type_traits>
 
 namespace clash4d {
 
@@ -113,6 +114,18 @@ private:
 
   FT num(const Solid& s, std::size_t i) const { return k_.from_rational(s.numbers[i]); }
 
+  // -1, 0 or 1 (v): in rationals copies of numbers made once (a number
+  // made per plane is an allocation), otherwise made in place.
+  static FT unit(int v)
+  {
+    if constexpr (std::is_trivially_copyable_v<FT>) {
+      return FT(v);
+    } else {
+      static const FT units[3] = {FT(-1), FT(0), FT(1)};
+      return units[v + 1];
+    }
+  }
+
   // Whether to read the reader's exact constructions (Solid::constructed)
   // instead of computing them in FT: the interval kernel then encloses each
   // exact coefficient as tightly as a number of the file, and keeps its
@@ -213,8 +226,7 @@ public:
   Plane3<FT> local_plane(const Solid& s, std::size_t i) const
   {
     using K_ = Solid::Kind;
-    // Shared, not made per plane: in rationals each is an allocation.
-    static const FT zero(0), one(1), minus_one(-1);
+    const FT zero = unit(0), one = unit(1), minus_one = unit(-1);
     switch (s.kind) {
       case K_::Block: {   // below then above, per axis
         std::size_t a = i / 2;
