@@ -217,6 +217,28 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(intersection_goes_up_as_meet_and_down_into_the_chi
   check_box(beta[2], {1, 0, 1}, {2, 1, 2}, "leaf 2");
 }
 
+// Downward, each child tightened on one side only: [0,2]^3 meet [1,3]^3 =
+// [1,2]^3, so the first child moves only its lower sides and the second only
+// its upper ones (a shrink must not take a bound whose one side already
+// holds for the whole box, S_bounds::within).
+BOOST_AUTO_TEST_CASE_TEMPLATE(children_shrink_on_one_side_only, K, Kernels)
+{
+  using FT = typename K::FT;
+  K k;
+  S_bounds<K> sb(k);
+  Tree<FT> t;
+  int i = t.branch(Op::Intersection, -1);
+  t.leaf(box3<FT>({0, 0, 0}, {2, 2, 2}), i);
+  t.leaf(box3<FT>({1, 1, 1}, {3, 3, 3}), i);
+  auto beta = sb.initial(t.m);
+  sb.up(t.m, beta);
+  check_box(beta[0], {1, 1, 1}, {2, 2, 2}, "intersection");
+  BOOST_TEST(sb.down(t.m, beta));
+  check_box(beta[1], {1, 1, 1}, {2, 2, 2}, "leaf 1 (lower sides)");
+  check_box(beta[2], {1, 1, 1}, {2, 2, 2}, "leaf 2 (upper sides)");
+  BOOST_TEST(!sb.down(t.m, beta));   // settled: nothing moves again
+}
+
 BOOST_AUTO_TEST_CASE_TEMPLATE(difference_goes_up_as_its_left_bound, K, Kernels)
 {
   using FT = typename K::FT;
