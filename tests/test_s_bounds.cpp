@@ -70,6 +70,17 @@ struct Tree {
 
 using Op = Csg_node::Op;
 
+// One branch `op` over two leaves a and b.
+template <class FT>
+Tree<FT> two_leaves(Op op, const Box<FT, 3>& a, const Box<FT, 3>& b)
+{
+  Tree<FT> t;
+  int root = t.branch(op, -1);
+  t.leaf(a, root);
+  t.leaf(b, root);
+  return t;
+}
+
 } // namespace
 
 // --- §4.3.1: initial bounds, Upward and Downward rules -----------------------
@@ -202,10 +213,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(intersection_goes_up_as_meet_and_down_into_the_chi
   using FT = typename K::FT;
   K k;
   S_bounds<K> sb(k);
-  Tree<FT> t;
-  int i = t.branch(Op::Intersection, -1);
-  t.leaf(box3<FT>({0, 0, 0}, {2, 2, 2}), i);
-  t.leaf(box3<FT>({1, -1, 1}, {3, 1, 3}), i);
+  Tree<FT> t = two_leaves(Op::Intersection, box3<FT>({0, 0, 0}, {2, 2, 2}), box3<FT>({1, -1, 1}, {3, 1, 3}));
   auto beta = sb.initial(t.m);
   // Upward: meet = x [max(0,1), min(2,3)] = [1,2], y [max(0,-1), min(2,1)] =
   // [0,1], z [max(0,1), min(2,3)] = [1,2].
@@ -226,10 +234,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(children_shrink_on_one_side_only, K, Kernels)
   using FT = typename K::FT;
   K k;
   S_bounds<K> sb(k);
-  Tree<FT> t;
-  int i = t.branch(Op::Intersection, -1);
-  t.leaf(box3<FT>({0, 0, 0}, {2, 2, 2}), i);
-  t.leaf(box3<FT>({1, 1, 1}, {3, 3, 3}), i);
+  Tree<FT> t = two_leaves(Op::Intersection, box3<FT>({0, 0, 0}, {2, 2, 2}), box3<FT>({1, 1, 1}, {3, 3, 3}));
   auto beta = sb.initial(t.m);
   sb.up(t.m, beta);
   check_box(beta[0], {1, 1, 1}, {2, 2, 2}, "intersection");
@@ -244,10 +249,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(difference_goes_up_as_its_left_bound, K, Kernels)
   using FT = typename K::FT;
   K k;
   S_bounds<K> sb(k);
-  Tree<FT> t;
-  int d = t.branch(Op::Difference, -1);
-  t.leaf(box3<FT>({0, 0, 0}, {2, 2, 2}), d);
-  t.leaf(box3<FT>({1, 1, 1}, {3, 3, 3}), d);
+  Tree<FT> t = two_leaves(Op::Difference, box3<FT>({0, 0, 0}, {2, 2, 2}), box3<FT>({1, 1, 1}, {3, 3, 3}));
   auto beta = sb.initial(t.m);
   // Upward, '/' node: S = beta(L) = [0,2]^3 (the subtrahend cannot enlarge
   // it, and a box cannot express the hole).
