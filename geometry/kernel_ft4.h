@@ -138,6 +138,25 @@ public:
     }
   }
 
+  // cross(c) for c = +-e_a (positive: +e_a), a region face's normal
+  // (search/Generate_and_test.h): of each M_k only the term c_a * minor is
+  // left, so the same numbers as cross(c) (a product by +-1 or 0 is exact
+  // in every kernel) without the twelve products.
+  Vector4<FT> cross_axis(int a, bool positive) const
+  {
+    auto m = [&](int i, int j) {
+      FT x = minor(i, j);
+      return positive ? x : negated(x);
+    };
+    FT z(0);
+    switch (a) {
+    case 0: return {z, m(2, 3), negated(m(1, 3)), m(1, 2)};
+    case 1: return {negated(m(2, 3)), z, m(0, 3), negated(m(0, 2))};
+    case 2: return {m(1, 3), negated(m(0, 3)), z, m(0, 1)};
+    default: return {negated(m(1, 2)), m(0, 2), negated(m(0, 1)), z};
+    }
+  }
+
 private:
   static constexpr bool rational = std::is_same_v<FT, Rational>;
   struct Rows {

@@ -127,7 +127,7 @@ public:
   void line_of(const std::array<std::size_t, 3>& line, V& l, V& base) const
   {
     const Pair_minors<FT> ab(planes_[line[0]].n, planes_[line[1]].n);
-    l = ab.cross(planes_[line[2]].n);
+    l = cross_with(ab, line[2], planes_[line[2]].n);
     base = base_point(ab, line[0], line[1], line[2], l);
   }
 
@@ -344,10 +344,10 @@ private:
     }
     V l;
     if (line_group_ < 0) {
-      l = pair_minors(i, j).cross(planes_[m].n);
+      l = cross_with(pair_minors(i, j), m, planes_[m].n);
     } else {
       const Vector3<FT>& r = groups_->velocity[line_group_];
-      FT d = pair_minors(i, j).cross(planes_[m].n)[3];
+      FT d = cross_with(pair_minors(i, j), m, planes_[m].n)[3];
       l = {d * r[0], d * r[1], d * r[2], d};
     }
     // The keys' line is a nonzero multiple of this one: its zero
@@ -360,6 +360,15 @@ private:
     return l;
   }
 
+  // The generalised cross product of a pair's minors with c, plane m's
+  // normal (or its key): without products when m is a region face, whose
+  // normal and key are +-e_a (Pair_minors::cross_axis).
+  V cross_with(const Pair_minors<FT>& ab, std::size_t m, const V& c) const
+  {
+    int which = layout_.face[m];
+    return which >= 0 ? ab.cross_axis(which / 2, which % 2 == 1) : ab.cross(c);
+  }
+
   const Pair_minors<FT>& pair_minors(std::size_t i, std::size_t j)
   {
     return minors_.at(i, j, planes_[i].n, planes_[j].n);
@@ -370,7 +379,7 @@ private:
   {
     if (!line_key_made_) {
       const auto& ab = key_minors_.at(line_[0], line_[1], plane_key_[line_[0]], plane_key_[line_[1]]);
-      line_key_ = ab.cross(plane_key_[line_[2]]);
+      line_key_ = cross_with(ab, line_[2], plane_key_[line_[2]]);
       line_key_made_ = true;
     }
     return line_key_;

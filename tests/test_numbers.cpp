@@ -604,7 +604,9 @@ BOOST_AUTO_TEST_CASE(rational_cross_and_determinant_are_the_formulas)
 // search used before (the 3x3 cofactors of the Laplace expansion, and the
 // base point's cross(r0, r1) on the three columns left when one is
 // dropped), so no answer of any kernel moves; one minors object serves
-// many third rows; in rationals the minors are a_i b_j - a_j b_i.
+// many third rows; in rationals the minors are a_i b_j - a_j b_i. Its
+// cross product with a region face's normal +-e_a (cross_axis) is the same
+// numbers as cross(+-e_a), in every kernel.
 // Seeded random rows, a quarter of them dependent.
 template <class FT>
 Vector4<FT> cofactor_cross(const Vector4<FT>& a, const Vector4<FT>& b, const Vector4<FT>& c)
@@ -632,6 +634,13 @@ void check_pair_minors(const std::array<Vector4<Rational>, 4>& r, To to, int i)
     Vector4<FT> g = ab.cross(v[c]), h = cofactor_cross(v[0], v[1], v[c]);
     for (int j = 0; j < 4; ++j) BOOST_TEST(same(g[j], h[j]), "cross " << i << " row " << c << " coordinate " << j);
   }
+  for (int a = 0; a < 4; ++a)
+    for (bool positive : {false, true}) {
+      Vector4<FT> e{FT(0), FT(0), FT(0), FT(0)};
+      e[a] = FT(positive ? 1 : -1);
+      Vector4<FT> g = ab.cross_axis(a, positive), h = ab.cross(e);
+      for (int j = 0; j < 4; ++j) BOOST_TEST(same(g[j], h[j]), "face " << i << " axis " << a << " coordinate " << j);
+    }
   for (int k = 0; k < 4; ++k) {   // base_point's x01 with column k dropped
     int cols[3], n = 0;
     for (int q = 0; q < 4; ++q)
@@ -659,6 +668,12 @@ BOOST_AUTO_TEST_CASE(pair_minors_are_the_per_line_formulas)
       for (int p = 0; p < 4; ++p)
         for (int q = p + 1; q < 4; ++q)
           BOOST_TEST(ab.minor(p, q) == r[0][p] * r[1][q] - r[0][q] * r[1][p], "rational minor " << i);
+      for (int a = 0; a < 4; ++a)
+        for (bool positive : {false, true}) {
+          Vector4<Rational> e{Rational(0), Rational(0), Rational(0), Rational(0)};
+          e[a] = Rational(positive ? 1 : -1);
+          BOOST_TEST((ab.cross_axis(a, positive) == ab.cross(e)), "rational face " << i << " axis " << a);
+        }
     }
   }
 }
