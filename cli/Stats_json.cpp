@@ -91,6 +91,7 @@ json stats_json(const Check_stats& s)
           {"earliest_lines_rerun", s.earliest_lines_rerun},
           {"witness_lines_rerun", s.witness_lines_rerun},
           {"closed_cells_by_intervals", s.closed_cells_by_intervals},
+          {"witnesses_by_terms", s.witnesses_by_terms},
           {"convex_rational", s.convex_rational},
           {"convex_exact_signs", s.convex_exact_signs},
           {"seconds", {{"model", s.seconds_model}, {"sweep", s.seconds_sweep}, {"sbounds", s.seconds_sbounds},

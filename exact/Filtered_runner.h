@@ -36,9 +36,11 @@
 #include "exact/Sweep_tie.h"
 #include "exact/Trail_replay.h"
 #include "search/Apart_pieces.h"
+#include "search/Witness.h"
 #include <CGAL/Uncertain.h>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -180,12 +182,11 @@ private:
       } catch (const Convex_uncertain&) {
         trail.complete = false;   // decided below, in rationals
       } catch (const Proven_apart&) {
-        // The search stopped inside a span: its time, and the proof's, are
-        // the search's.
-        stats = astats;
-        double counted = astats.seconds_sbounds + astats.seconds_divide + astats.seconds_witness;
-        stats.seconds_divide += std::max(0.0, seconds_since(start) - counted);
+        stopped_in_search(astats, start, stats);
         return Pair_result<EFT>();
+      } catch (const Found_inside<EFT>& f) {
+        stopped_in_search(astats, start, stats);
+        return f.result;
       }
     }
     if (std::optional<Pair_result<EFT>> r = convex_in_rationals(a, b, options, ceiling, stats)) return *r;
@@ -202,6 +203,16 @@ private:
     Collision_checker<EK> checker(ek_, emodel_, esettled_, stats, use_sbounds_);
     checker.use_convex_lp(convex_lp_);
     return checker.check_pair(a, b, options.earliest, ceiling, options.semantics);
+  }
+
+  // The interval run stopped inside a span by a hand-over's answer
+  // (Proven_apart, Found_inside): its time, and the LPs', are the search's.
+  static void stopped_in_search(const Check_stats& astats, std::chrono::steady_clock::time_point start,
+                                Check_stats& stats)
+  {
+    stats = astats;
+    double counted = astats.seconds_sbounds + astats.seconds_divide + astats.seconds_witness;
+    stats.seconds_divide += std::max(0.0, seconds_since(start) - counted);
   }
 
   // A convex pair the interval run could not decide or answer as points
@@ -232,8 +243,12 @@ private:
   // have a point; asking again would meet it again), or past step_limit.
   // Not proven: apart_until, the end of the leading sub-spans it did prove
   // apart (Apart_pieces::proven_until; tL when none), which hold nothing.
-  enum class Apart { proven, not_proven, out_of_steps };
-  Apart proves_apart(int a, int b, bool closed, std::uint64_t step_limit, Rational& apart_until)
+  // inside (regularised, any point wanted): where the open term's LP guessed
+  // a point inside it, the witness made from it and checked (witness_at),
+  // the pair's collision (Apart::inside).
+  enum class Apart { proven, not_proven, out_of_steps, inside };
+  Apart proves_apart(int a, int b, bool closed, std::uint64_t step_limit, Rational& apart_until,
+                     Pair_result<EFT>* inside = nullptr)
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     need_model(a);
@@ -242,14 +257,49 @@ private:
     Apart verdict = Apart::proven;
     try {
       pieces.prove(a, b, ek_.to_rational(emodel_.t_hi), false);
-    } catch (const Term_feasible&) {
+    } catch (const Term_feasible& e) {
       verdict = Apart::not_proven;
+      if (inside && e.inside.found && witness_at(a, b, e.inside.x, *inside)) {
+        verdict = Apart::inside;
+        ++witnesses_by_terms_;
+      }
     } catch (const Term_limit&) {
       verdict = Apart::out_of_steps;
     }
     ++(verdict == Apart::proven ? apart_proofs_ : apart_attempts_);
     apart_until = pieces.proven_until();
     return verdict;
+  }
+
+  // A point the double simplex guessed inside a term of the pair's formula
+  // (Term_feasible; world frame), made the pair's witness as a search's
+  // point inside is made (Witness::make: moved off every plane of both
+  // objects on its sub-span, snapped) and checked (is_valid_witness): a
+  // regularised collision. False when it is not one after all. The guess
+  // is only where to look; every sign is EK's.
+  bool witness_at(int a, int b, const std::array<double, 4>& x, Pair_result<EFT>& r)
+  {
+    Vector4<EFT> p;
+    for (int q = 0; q < 4; ++q) {
+      if (!std::isfinite(x[q])) return false;
+      p[q] = ek_.from_rational(exact_rational(x[q]));
+    }
+    const auto& spans = emodel_.sub_spans({a, b});
+    auto span = std::find_if(spans.begin(), spans.end(),
+                             [&](const Time_span<EFT>& s) { return !ek_.less(p[3], s.lo) && !ek_.less(s.hi, p[3]); });
+    if (span == spans.end()) return false;
+    need_planes(a);
+    need_planes(b);
+    Moving_object<EFT> A = moving_on(emodel_, a, *span, {}), B = moving_on(emodel_, b, *span, {});
+    const Vector3<EFT> no_shear{EFT(0), EFT(0), EFT(0)};
+    std::optional<Vector4<EFT>> w = Witness<EK>(ek_).make(p, no_shear, A, B, span->lo, span->hi);
+    if (!w || !is_valid_witness(ek_, emodel_, a, b, *w)) return false;
+    r = Pair_result<EFT>();
+    r.a = a;
+    r.b = b;
+    r.collide = r.has_witness = r.witness_verified = true;
+    r.witness = r.contact = *w;
+    return true;
   }
   // Whether sub-span s of pair (a, b) ends by `until` (need_motion).
   bool span_ends_by(int a, int b, std::size_t s, const Rational& until) const
@@ -386,7 +436,8 @@ private:
   std::unique_ptr<Lazy_once[]> planed_, built_, settled_, moved_;
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
-      stages_adopted_{0}, lines_rerun_{0}, witness_lines_{0}, convex_rational_{0}, closed_cells_{0};
+      stages_adopted_{0}, lines_rerun_{0}, witness_lines_{0}, convex_rational_{0}, closed_cells_{0},
+      witnesses_by_terms_{0};
 
   // A witness AK made and verified on a certified path, in EK's numbers.
   // Regularised, its coordinates are grid points (Witness::snap), exact
@@ -651,6 +702,7 @@ private:
     stats.earliest_lines_rerun = lines_rerun_.load();
     stats.witness_lines_rerun = witness_lines_.load();
     stats.closed_cells_by_intervals = closed_cells_.load();
+    stats.witnesses_by_terms = witnesses_by_terms_.load();
     stats.convex_rational = convex_rational_.load();
   }
 

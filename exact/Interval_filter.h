@@ -53,6 +53,13 @@ namespace clash4d {
 
 // The interval run stopped: the runner proved the pair apart.
 struct Proven_apart {};
+// The interval run stopped: the runner made the pair's witness, checked,
+// from a point the hand-over's LP found inside a term of its formula
+// (Filtered_runner::proves_apart).
+template <class EFT>
+struct Found_inside {
+  Pair_result<EFT> result;
+};
 // The interval run stopped in a convex pair's linear programs (a sign they
 // could not certify: a touch's multiplier sum, a vertex on a fifth row):
 // the runner decides them in rationals (Filtered_runner::convex_in_rationals).
@@ -446,7 +453,9 @@ public:
   // conflict, where generate-and-test examines many lines per conflict).
   // Proven, the run stops with Proven_apart, the pair's "no collision" (a
   // pair apart on the whole span has no t* either: earliest mode too, until
-  // a point inside is found); otherwise it goes on where it was. Out of
+  // a point inside is found). A term left open in a regularised search for
+  // any point inside may give the witness (Found_inside: the pair collides,
+  // wherever the search was). Otherwise it goes on where it was. Out of
   // steps, it asks again at 16 times the work with 16 times the steps, so
   // the asking costs a bounded share of the search; a term left open would
   // be met again, so then it never asks again.
@@ -461,8 +470,10 @@ public:
     if (span_apart_) return false;
     if (!conquers || found_any_ || search_work() < apart_after_) return true;
     Rational until;
-    switch (runner_->proves_apart(a_, b_, closed_, apart_steps_, until)) {
+    Pair_result<EFT> inside;
+    switch (runner_->proves_apart(a_, b_, closed_, apart_steps_, until, earliest_ || closed_ ? nullptr : &inside)) {
     case Runner::Apart::proven: throw Proven_apart();
+    case Runner::Apart::inside: throw Found_inside<EFT>{std::move(inside)};
     case Runner::Apart::out_of_steps: apart_after_ *= 16, apart_steps_ *= 16; break;
     case Runner::Apart::not_proven: apart_after_ = std::numeric_limits<std::size_t>::max(); break;
     }

@@ -89,6 +89,10 @@ struct Check_stats {
   // that close off every term (search/Apart_pieces.h) and proven apart;
   // apart_attempts: such hand-overs that did not prove it (a term has a
   // point, or the step bound), the search going on;
+  // witnesses_by_terms: of those attempts, regularised searches for any
+  // point inside that it ended with the pair's witness, made from the
+  // double simplex's point inside the term left open and checked in
+  // rationals (Filtered_runner::witness_at);
   // apart_spans: sub-spans such an attempt still proved apart (those
   // before the term with a point), whose search it stopped or skipped;
   // replay_stages_adopted: sub-span region stages a rational replay took
@@ -107,7 +111,7 @@ struct Check_stats {
               earliest_by_intervals = 0, apart_proofs = 0, apart_attempts = 0, apart_spans = 0,
               replay_stages_adopted = 0, earliest_lines_rerun = 0, witness_lines_rerun = 0, exact_ties = 0,
               exact_cut_orders = 0, exact_zeros = 0, convex_rational = 0, doubtful_stages_pruned = 0,
-              closed_cells_by_intervals = 0;
+              closed_cells_by_intervals = 0, witnesses_by_terms = 0;
   // Time per stage, seconds
   double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
 

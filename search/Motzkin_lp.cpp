@@ -99,8 +99,10 @@ namespace {
 // A guess at the support of an optimal lambda: the dual LP in doubles, with
 // the normalisation sum lambda_j big_j = 1 instead of sum lambda_j = 1 (any
 // positive weights exclude lambda = 0 alike): every scaled column has
-// entries of at most 1, and a 1 in the last row.
-std::optional<std::vector<int>> guessed_support(const std::vector<Motzkin_row>& rows)
+// entries of at most 1, and a 1 in the last row. Its dual,
+// min pi_5 s.t. pi . (a_j / big_j, 1) >= e_j / big_j, is
+// min over x = -(pi_1..pi_4) of max_j h_j(x) / big_j (Inside_guess).
+std::optional<std::vector<int>> guessed_support(const std::vector<Motzkin_row>& rows, Inside_guess* inside)
 {
   Double_simplex lp(5, static_cast<int>(rows.size()), {0, 0, 0, 0, 1});
   for (std::size_t j = 0; j < rows.size(); ++j) {
@@ -114,6 +116,10 @@ std::optional<std::vector<int>> guessed_support(const std::vector<Motzkin_row>& 
   }
   std::optional<Double_simplex::Optimum> o = lp.solve();
   if (!o) return std::nullopt;
+  if (inside && o->value < 0) {
+    for (int i = 0; i < 4; ++i) inside->x[i] = -o->pi[i];
+    inside->found = true;
+  }
   return o->basis;
 }
 
@@ -133,23 +139,31 @@ std::optional<std::vector<Rational>> on_support(const std::vector<Motzkin_row>& 
 
 } // namespace
 
-std::optional<std::vector<Rational>> motzkin_multipliers(const std::vector<Motzkin_row>& rows, Lp_effort effort)
+std::optional<std::vector<Rational>> motzkin_multipliers(const std::vector<Motzkin_row>& rows, Lp_effort effort,
+                                                        Inside_guess* inside)
 {
+  if (inside) *inside = Inside_guess();
   if (rows.empty()) return std::nullopt;
   // The exact LP over every row costs about a millisecond; the exact LP
   // over the few rows a double simplex picks, tens of microseconds.
-  std::optional<std::vector<int>> support = guessed_support(rows);
+  Inside_guess guess;
+  std::optional<std::vector<int>> support = guessed_support(rows, &guess);
+  auto none = [&] {
+    if (inside) *inside = guess;
+    return std::nullopt;
+  };
   if (effort == Lp_effort::quick) {   // the guess's basic solution alone: one small exact solve
-    if (!support || support->empty()) return std::nullopt;
+    if (!support || support->empty()) return none();
     auto lambda = basic_solution(rows, *support);
-    return lambda && proves_infeasible(rows, *lambda) ? lambda : std::nullopt;
+    if (lambda && proves_infeasible(rows, *lambda)) return lambda;
+    return none();
   }
   if (support && !support->empty())
     if (auto lambda = on_support(rows, *support)) return lambda;
   Lp lp = dual_program(rows);
   for (int j = 0; j < static_cast<int>(rows.size()); ++j) lp.set_c(j, -integer((*rows[j].h)[4]));   // max sum lambda e
   auto lambda = solved(lp, rows.size());
-  if (!lambda) return std::nullopt;
+  if (!lambda) return none();
   if (proves_infeasible(rows, *lambda)) return lambda;
   // Optimum 0 (or below): a proof needs weight on a strict row with sum e >= 0.
   Lp second = dual_program(rows);
@@ -161,7 +175,7 @@ std::optional<std::vector<Rational>> motzkin_multipliers(const std::vector<Motzk
   second.set_r(5, CGAL::LARGER);
   lambda = solved(second, rows.size());
   if (lambda && proves_infeasible(rows, *lambda)) return lambda;
-  return std::nullopt;
+  return none();
 }
 
 } // namespace clash4d

@@ -36,8 +36,19 @@ struct Motzkin_row {
 // returned are checked exactly either way.
 enum class Lp_effort { complete, quick };
 
+// The double simplex's other answer: its multipliers are the point x that
+// minimises max_j h_j(x) / big_j (big_j: row j's largest |coefficient|, at
+// least 1), a centre of the rows; `found` when that maximum is below zero,
+// every row negative there in doubles. A guess: a caller checks it exactly.
+struct Inside_guess {
+  std::array<double, 4> x{};
+  bool found = false;
+};
+
+// inside: the guess, filled when no multipliers are returned.
 std::optional<std::vector<Rational>> motzkin_multipliers(const std::vector<Motzkin_row>& rows,
-                                                        Lp_effort effort = Lp_effort::complete);
+                                                        Lp_effort effort = Lp_effort::complete,
+                                                        Inside_guess* inside = nullptr);
 
 // Whether lambda proves rows infeasible, by the rule above (exact).
 bool proves_infeasible(const std::vector<Motzkin_row>& rows, const std::vector<Rational>& lambda);

@@ -116,7 +116,7 @@ bool Term_search::learn(std::vector<int> literals, Conflict::Of of, const std::v
 {
   std::vector<Motzkin_row> rows;
   for (std::size_t i = 0; i < literals.size(); ++i) rows.push_back({&table_.form(literals[i]), strict[i]});
-  auto lambda = motzkin_multipliers(rows, effort_);
+  auto lambda = motzkin_multipliers(rows, effort_, &inside_);
   if (!lambda) return false;
   Conflict c;
   c.of = of;
@@ -156,8 +156,11 @@ int Term_search::complete()
     auto [lb, sb] = with_slab(sides[1], true);
     learnt = learn(l, Conflict::Of::Both, s) || learn(la, Conflict::Of::A, sa) || learn(lb, Conflict::Of::B, sb);
   }
-  if (!learnt && effort_ == Lp_effort::quick) throw Term_feasible("a term of the pair's formula was not closed off");
-  if (!learnt) throw Term_feasible("a term of the pair's formula has a point: the apart claim does not hold");
+  // Regularised, the one LP was the term's: its guess is a point inside it.
+  Inside_guess inside = closed_ ? Inside_guess() : inside_;
+  if (!learnt && effort_ == Lp_effort::quick)
+    throw Term_feasible("a term of the pair's formula was not closed off", inside);
+  if (!learnt) throw Term_feasible("a term of the pair's formula has a point: the apart claim does not hold", inside);
   const Conflict& c = conflicts_.back();
   int level = 0;
   for (int l : c.literals) {

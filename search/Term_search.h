@@ -35,9 +35,13 @@ struct Conflict {
 // A term the LP finds feasible: the answer being certified is wrong, or the
 // pipeline and the certifier disagree; never written as a proof. With
 // Lp_effort::quick, only a term the guided LP did not close off (a search
-// handing over goes on instead).
+// handing over goes on instead). Regularised, `inside` is the double
+// simplex's point inside that term's literals (Inside_guess), when it
+// found one: a caller may check it as a witness.
 struct Term_feasible : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit Term_feasible(const std::string& what, Inside_guess guess = {})
+    : std::runtime_error(what), inside(guess) {}
+  Inside_guess inside;
 };
 
 // The enumeration took more steps than a checker is held to.
@@ -74,6 +78,7 @@ private:
   std::vector<int> order_;                  // literal ids in the order added
   std::vector<int> position_;               // per literal: first place in order_, -1 absent
   std::vector<int> pending_;
+  Inside_guess inside_;                     // the last LP's, when it learnt nothing
 
   int walk();
   int leaf(int literal, int side);

@@ -11,6 +11,7 @@
 #include "support/Cli_run.h"
 #include "support/Random_scene.h"
 #include <nlohmann/json.hpp>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -405,4 +406,37 @@ BOOST_AUTO_TEST_CASE(motzkin_multipliers_on_hand_derived_systems)
   for (auto& v : flipped)
     if (CGAL::sign(v) == CGAL::POSITIVE) { v = -v; break; }
   BOOST_TEST(!proves_infeasible(rows, flipped));
+}
+
+// The guess's point inside (Inside_guess): the box 0 < x < 2, 0 < y < 4,
+// 0 < z < 6, 0 < t < 8 as eight rows of coefficients at most 1. The
+// least over points of the greatest row is -1, attained where x = 1 (its
+// two rows meet at -1) and the other rows are at most -1: 1 <= y <= 3,
+// 1 <= z <= 5, 1 <= t <= 7. A system with no point gives none.
+BOOST_AUTO_TEST_CASE(motzkin_guess_gives_a_point_inside)
+{
+  std::vector<Literal_coefficients> box;
+  for (int axis = 0; axis < 4; ++axis) {
+    long lo[4] = {0, 0, 0, 0}, hi[4] = {0, 0, 0, 0};
+    lo[axis] = -1;
+    hi[axis] = 1;
+    box.push_back(lit(lo[0], lo[1], lo[2], lo[3], 0));
+    box.push_back(lit(hi[0], hi[1], hi[2], hi[3], -2 * (axis + 1)));
+  }
+  std::vector<Motzkin_row> rows;
+  for (const auto& h : box) rows.push_back({&h, true});
+  for (Lp_effort effort : {Lp_effort::quick, Lp_effort::complete}) {
+    Inside_guess g;
+    BOOST_TEST(!motzkin_multipliers(rows, effort, &g).has_value());
+    BOOST_TEST_REQUIRE(g.found);
+    BOOST_TEST(std::abs(g.x[0] - 1) < 1e-9);
+    for (int axis = 1; axis < 4; ++axis)
+      BOOST_TEST((g.x[axis] > 1 - 1e-9 && g.x[axis] < 2 * (axis + 1) - 1 + 1e-9), "axis " << axis << ": " << g.x[axis]);
+  }
+  // x - 1 < 0 and 2 - x < 0 (above): multipliers, and no point.
+  Literal_coefficients h1 = lit(1, 0, 0, 0, -1), h2 = lit(-1, 0, 0, 0, 2);
+  Inside_guess none;
+  none.found = true;
+  BOOST_TEST(motzkin_multipliers({{&h1, true}, {&h2, true}}, Lp_effort::quick, &none).has_value());
+  BOOST_TEST(!none.found);
 }
