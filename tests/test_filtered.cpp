@@ -968,9 +968,9 @@ BOOST_AUTO_TEST_CASE(long_searches_are_handed_over_to_apart_proofs)
 // tested around a point whose neighbourhood is classified counts as a line
 // (Interval_filter::search_work). The dangling faces of a difference
 // touched in closed semantics are such points: the search without the
-// hand-over examines more than 512 lines, and it is handed over well
-// before 512 lines; the answer is the same (no touch: the faces are not
-// the regularised solid's).
+// hand-over examines more than 512 lines, and it is handed over after
+// fewer than 256 (its first 128 lines' work); the answer is the same (no
+// touch: the faces are not the regularised solid's).
 BOOST_AUTO_TEST_CASE(searches_are_handed_over_by_their_work)
 {
   const char* file = "contact/difference_dangling_face_touch.json";
