@@ -468,6 +468,7 @@ public:
   bool decides_here(std::size_t, bool conquers)
   {
     if (span_apart_) return false;
+    if (apart_after_ == 0) apart_after_ = first_hand_over();
     if (!conquers || found_any_ || search_work() < apart_after_) return true;
     Rational until;
     Pair_result<EFT> inside;
@@ -641,12 +642,22 @@ private:
   int a_ = -1, b_ = -1;
   std::size_t span_ = 0;
   // When to ask for an apart proof (decides_here): the search's work so
-  // far, and the proof's step bound. The first: a search of a hundred or
-  // two lines costs about as much as a small pair's proof (tens of exact
-  // LPs), and most pairs are decided before. Measured over clash4d_bench's
-  // families against 512: the same or less everywhere, a quarter to a third
-  // less on filled cavities and union seams; 32 was no better.
-  std::size_t apart_after_ = 128;
+  // far (0: first_hand_over's, set at the first ask), and the proof's step
+  // bound. A search of a few hundred lines costs about as much as a small
+  // pair's proof (tens of exact LPs), and most pairs are decided before.
+  std::size_t apart_after_ = 0;
+  // A regularised search hands over after 128 lines' work: looking for
+  // any point, the proof ends it either way (apart, or the open term's
+  // point is the witness); with --earliest, the sub-spans it proves apart
+  // before an open term are still cut short (apart_spans). A closed search
+  // waits for 512: its open terms are touches, which answer nothing, and a
+  // touching pair's search mostly finds its touch before. Measured over
+  // clash4d_bench's families (contact, fuzz, paper, random, with and
+  // without --earliest) against 512 everywhere: the same or less, a
+  // quarter to a third less on filled cavities and union seams (32 no
+  // better); 128 in closed searches too cost the weaving late stop's
+  // closed earliest run a third more (a wasted attempt at a touch).
+  std::size_t first_hand_over() const { return closed_ ? 512 : 128; }
   // The search's work in lines: each line examined, and each cell tested
   // around a point whose neighbourhood was classified (Appendix A: its
   // rays and sectors at a vertex where many planes meet, as at touches of
