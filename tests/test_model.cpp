@@ -107,16 +107,19 @@ BOOST_AUTO_TEST_CASE(prism_hull_and_convex)
 // primitive, for every kind under a rotation and a translation: block,
 // prism and hull from their vertices alone, convex and half-spaces from
 // their planes; the rotated block's by hand too (corners (+-1,+-1) turned
-// by cos = -7/25, sin = 24/25 reach +-31/25).
+// by cos = -7/25, sin = 24/25 reach +-31/25). Under a turn about z and
+// under one about no axis (every entry of R non-zero: a prism's box is
+// made from its base and its two heights apart, Model_builder::prism_box).
 BOOST_AUTO_TEST_CASE(primitive_box_is_the_models_box)
 {
   const std::string turn = R"({"rotate":[3,0,0,4],"solid":{"translate":["1/3",-2,"0.5"],"solid":)";
+  const std::string skew = R"({"rotate":[1,2,3,4],"solid":{"translate":["1/3",-2,"0.5"],"solid":)";
   for (std::string shape : {std::string(R"({"block":{"min":[-1,-1,-1],"max":[1,1,1]}})"),
                             std::string(R"({"prism":{"base":[[0,0],[2,0],[1,1]],"z":[0,"0.5"]}})"),
                             std::string(R"({"hull":[[0,0,0],[1,0,0],[0,1,0],[0,0,1],["1/2","1/3","1/7"]]})"),
                             std::string(R"({"convex":[[1,1,1,-1],[1,1,-1,-1],[1,-1,1,-1],[1,-1,-1,-1],[-1,1,1,-1],[-1,1,-1,-1],[-1,-1,1,-1],[-1,-1,-1,-1]]})"),
                             std::string(R"({"halfspace":[-2,0,0,1]})"), std::string(R"({"halfspace":[1,1,0,-1]})")}) {
-    for (const std::string& placed : {shape, turn + shape + "}}"}) {
+    for (const std::string& placed : {shape, turn + shape + "}}", skew + shape + "}}"}) {
       Scene scene = scene_with(placed);
       Box<Q, 3> quick = Model_builder<Rational_kernel>(Rational_kernel()).primitive_box(scene.objects[0].shape);
       Box<Q, 3> built = model_of(placed).primitives[0].box;
