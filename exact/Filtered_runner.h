@@ -276,7 +276,7 @@ private:
   // point inside is made (Witness::make: moved off every plane of both
   // objects on its sub-span, snapped) and checked (is_valid_witness): a
   // regularised collision. False when it is not one after all. The guess
-  // is only where to look; every sign is EK's.
+  // is only where to look; every sign is EK's. Asked by proves_apart alone.
   bool witness_at(int a, int b, const std::array<double, 4>& x, Pair_result<EFT>& r)
   {
     Vector4<EFT> p;
@@ -288,8 +288,7 @@ private:
     auto span = std::find_if(spans.begin(), spans.end(),
                              [&](const Time_span<EFT>& s) { return !ek_.less(p[3], s.lo) && !ek_.less(s.hi, p[3]); });
     if (span == spans.end()) return false;
-    need_planes(a);
-    need_planes(b);
+    // Both models are whole: proves_apart made them (need_model).
     Moving_object<EFT> A = moving_on(emodel_, a, *span, {}), B = moving_on(emodel_, b, *span, {});
     const Vector3<EFT> no_shear{EFT(0), EFT(0), EFT(0)};
     std::optional<Vector4<EFT>> w = Witness<EK>(ek_).make(p, no_shear, A, B, span->lo, span->hi);
