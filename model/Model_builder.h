@@ -377,6 +377,8 @@ private:
         break;
       case K_::Block: {
         Vector3<FT> lo = vec3(s, 0), hi = vec3(s, 3);
+        if (with_planes) p.planes.reserve(6);
+        p.vertices.reserve(8);
         for (std::size_t i = 0; i < 6 && with_planes; ++i) p.planes.push_back(local_plane(s, i));
         for (int c = 0; c < 8; ++c)
           p.vertices.push_back({(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2]});
@@ -396,6 +398,8 @@ private:
       case K_::Prism: {
         std::size_t n = (s.numbers.size() - 2) / 2;
         FT z0 = num(s, 2 * n), z1 = num(s, 2 * n + 1);
+        p.vertices.reserve(2 * n);
+        if (with_planes) p.planes.reserve(n + 2);
         for (std::size_t i = 0; i < n; ++i) {
           FT x = num(s, 2 * i), y = num(s, 2 * i + 1);
           p.vertices.push_back({x, y, z0});

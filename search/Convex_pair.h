@@ -172,6 +172,8 @@ public:
     moving_[0] = &A, moving_[1] = &B;
     lo_ = span.lo, hi_ = span.hi;
     guide_rows_.clear();
+    guide_rows_.reserve(guide_->objects[0].csg.primitives[0].planes.size() +
+                        guide_->objects[1].csg.primitives[0].planes.size() + 2);
     for (int o = 0; o < 2; ++o) {
       const Object_model<double>& m = guide_->objects[o];
       std::size_t seg = model_.segment_on(o == 0 ? a_ : b_, span);   // the kernel's, the same in every run
@@ -472,6 +474,7 @@ private:
   static std::vector<std::size_t> support(const Double_simplex::Optimum& o)
   {
     std::vector<std::size_t> out;
+    out.reserve(o.basis.size());
     double most = 0;
     for (double y : o.y) most = std::max(most, y);
     for (std::size_t i = 0; i < o.basis.size(); ++i)

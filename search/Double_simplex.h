@@ -79,6 +79,8 @@ public:
       if (basis_[static_cast<std::size_t>(r)] < m_) eliminate(R_, r, basis_[static_cast<std::size_t>(r)]);
     if (!run()) return std::nullopt;
     Optimum o;
+    o.basis.reserve(static_cast<std::size_t>(R_));
+    o.y.reserve(static_cast<std::size_t>(R_));
     for (int r = 0; r < R_; ++r)
       if (basis_[static_cast<std::size_t>(r)] < m_) {
         o.basis.push_back(basis_[static_cast<std::size_t>(r)]);
