@@ -18,9 +18,8 @@
 namespace clash4d {
 
 template <class K>
-Pair_answer pair_answer(const K& k, const Scene_model<K>& model, const Pair_result<typename K::FT>& r)
+void pair_answer(const K& k, const Scene_model<K>& model, const Pair_result<typename K::FT>& r, Pair_answer& p)
 {
-  Pair_answer p;
   p.a = model.objects[r.a].name;
   p.b = model.objects[r.b].name;
   for (int i = 0; i < 4; ++i) p.witness[i] = k.to_text(r.witness[i]);
@@ -47,7 +46,6 @@ Pair_answer pair_answer(const K& k, const Scene_model<K>& model, const Pair_resu
     p.t_star = text(r.t_star, r.contact[3], p.contact[3]);
     p.at_start = k.compare(r.t_star, model.t_lo) == CGAL::ZERO;
   }
-  return p;
 }
 
 // Closed semantics without --earliest: a regularised collision is a closed
@@ -132,7 +130,7 @@ void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::p
     if (!r.collide) continue;
     if (!options.all_pairs && !options.earliest && answer.collide) break;
     answer.collide = true;
-    answer.pairs.push_back(pair_answer(k, model, r));
+    pair_answer(k, model, r, answer.pairs.emplace_back());   // in place: an answer is 27 strings
     if (options.earliest && (!merged || k.less(r.t_star, merged_best))) {
       merged = true;
       merged_best = r.t_star;

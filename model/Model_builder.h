@@ -185,6 +185,22 @@ public:
     return s;
   }
 
+  // A one-primitive shape's planes and vertices in the world, as build
+  // makes them (the same numbers), without its box, path or corners: what
+  // a convex pair's guide reads (search/Convex_pair.h), made per query.
+  Primitive<FT> placed_geometry(const Solid& shape) const
+  {
+    Affine3<FT> T = Affine3<FT>::identity();
+    const Solid& s = peel(shape, T);
+    Primitive<FT> p;
+    local_geometry(s, p);
+    if (!T.is_identity) {
+      for (auto& h : p.planes) h = T.apply(h);
+      for (auto& v : p.vertices) v = T.apply(v);
+    }
+    return p;
+  }
+
   // A primitive solid in its own frame (planes and vertices, as read).
   Primitive<FT> local(const Solid& s) const
   {
@@ -358,7 +374,7 @@ private:
   // p moved by T, and its box.
   void place(Primitive<FT>& p, const Affine3<FT>& T) const
   {
-    if (!T.is_identity) {
+    if (!T.is_identity) {   // as placed_geometry
       for (auto& h : p.planes) h = T.apply(h);
       for (auto& v : p.vertices) v = T.apply(v);
     }

@@ -68,11 +68,13 @@ struct Convex_found {
   std::array<int, 5> centre_rows{};
 };
 
-// A pair's guide: each object's model in doubles (Guide_numbers) and a
-// point strictly inside its solid, guessed (its vertices' mean). Made once
-// per pair; another kernel's stage on the same pair shares it.
+// A pair's guide: each object's one primitive in doubles (Guide_numbers:
+// its planes, as a model's), its motion, and a point strictly inside its
+// solid, guessed (its vertices' mean). Made once per pair; another
+// kernel's stage on the same pair shares it.
 struct Convex_guide {
-  Object_model<double> objects[2];
+  std::vector<Plane3<double>> planes[2];
+  Motion_path<double> motion[2];
   Vector3<double> deep[2];
 };
 
@@ -172,13 +174,11 @@ public:
     moving_[0] = &A, moving_[1] = &B;
     lo_ = span.lo, hi_ = span.hi;
     guide_rows_.clear();
-    guide_rows_.reserve(guide_->objects[0].csg.primitives[0].planes.size() +
-                        guide_->objects[1].csg.primitives[0].planes.size() + 2);
+    guide_rows_.reserve(guide_->planes[0].size() + guide_->planes[1].size() + 2);
     for (int o = 0; o < 2; ++o) {
-      const Object_model<double>& m = guide_->objects[o];
+      const Motion_path<double>& m = guide_->motion[o];
       std::size_t seg = model_.segment_on(o == 0 ? a_ : b_, span);   // the kernel's, the same in every run
-      for (const auto& plane : m.csg.primitives[0].planes)
-        guide_rows_.push_back(extrude(plane, m.motion.velocity[seg], m.motion.offset[seg]));
+      for (const auto& plane : guide_->planes[o]) guide_rows_.push_back(extrude(plane, m.velocity[seg], m.offset[seg]));
     }
     count_a_ = plane_count(0);
     count_b_ = plane_count(1);
@@ -380,9 +380,10 @@ private:
     Guide_numbers g;
     for (int o = 0; o < 2; ++o) {
       const Scene_object& obj = model.scene->objects[static_cast<std::size_t>(o == 0 ? a : b)];
-      guide->objects[o] = {obj.name, Model_builder<Guide_numbers>(g).build(obj.shape),
-                           Motion_path<double>::build(g, obj.motion)};
-      guide->deep[o] = deep_point(guide->objects[o].csg.primitives[0]);
+      Primitive<double> p = Model_builder<Guide_numbers>(g).placed_geometry(obj.shape);
+      guide->deep[o] = deep_point(p);
+      guide->planes[o] = std::move(p.planes);
+      guide->motion[o] = Motion_path<double>::build(g, obj.motion);
     }
     return guide;
   }
