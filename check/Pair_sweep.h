@@ -25,8 +25,14 @@ public:
   using FT = typename K::FT;
   using Box4 = Box<FT, 4>;
 
-  // closed: boxes that only touch are kept (closed semantics).
-  explicit Pair_sweep(const K& k, bool closed = false) : k_(k), closed_(closed) {}
+  // closed: boxes that only touch are kept (closed semantics). Up to
+  // few_boxes boxes (a few objects, each over a few motion segments), every
+  // pair of boxes is tested, which is cheaper than the sweep's setup and
+  // reports the same pairs: the sweep's filter only drops boxes apart in
+  // doubles rounded outward, which the kernel finds apart too.
+  explicit Pair_sweep(const K& k, bool closed = false, std::size_t few_boxes = 12)
+    : k_(k), closed_(closed), few_boxes_(few_boxes)
+  {}
 
   // roots[i]: object i's root S-bound in its own frame. Returns (i, j), i < j,
   // sorted, without ignored pairs. certain (optional): per pair returned,
@@ -39,16 +45,23 @@ public:
   {
     std::vector<Item> items;
     for (std::size_t i = 0; i < model.objects.size(); ++i) add_boxes(model, static_cast<int>(i), roots[i], items);
-    std::vector<Filter_box> boxes;
-    boxes.reserve(items.size());
-    for (std::size_t i = 0; i < items.size(); ++i) boxes.push_back(filter_box(items[i].box, i));
     std::vector<std::pair<std::pair<int, int>, bool>> found;   // a pair, per meeting boxes: certainly?
-    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Filter_box& a, const Filter_box& b) {
-      const Item &x = items[a.info()], &y = items[b.info()];
+    auto report = [&](const Item& x, const Item& y) {
       if (x.object == y.object || !overlaps(x.box, y.box)) return;
       int i = std::min(x.object, y.object), j = std::max(x.object, y.object);
       if (!scene.ignored(i, j)) found.push_back({{i, j}, certain && surely_overlaps(x.box, y.box)});
-    });
+    };
+    if (items.size() <= few_boxes_) {
+      for (std::size_t a = 0; a < items.size(); ++a)
+        for (std::size_t b = a + 1; b < items.size(); ++b) report(items[a], items[b]);
+    } else {
+      std::vector<Filter_box> boxes;
+      boxes.reserve(items.size());
+      for (std::size_t i = 0; i < items.size(); ++i) boxes.push_back(filter_box(items[i].box, i));
+      CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Filter_box& a, const Filter_box& b) {
+        report(items[a.info()], items[b.info()]);
+      });
+    }
     std::sort(found.begin(), found.end());
     std::vector<std::pair<int, int>> out;
     if (certain) certain->clear();
@@ -102,6 +115,7 @@ public:
 private:
   const K& k_;
   bool closed_;
+  std::size_t few_boxes_;
   struct Item {
     int object;
     Box4 box;

@@ -1,13 +1,17 @@
 #define BOOST_TEST_MODULE many_objects
 #include <boost/test/unit_test.hpp>
 
+#include "check/Pair_sweep.h"
 #include "exact/Exact_instantiation.h"
+#include "exact/Interval_kernel.h"
+#include "exact/Rational_kernel.h"
 #include "float/Double_instantiation.h"
 #include "scene/Grid_scene.h"
 #include "scene/Json_reader.h"
 #include "scene/Random_draw.h"
 #include "scene/Scene_builder.h"
 #include "scene/Scene_reader.h"
+#include "search/S_bounds.h"
 #include "support/Stage_tests.h"
 #include <random>
 #include <set>
@@ -285,4 +289,49 @@ BOOST_AUTO_TEST_CASE(sweep_ties_match_the_rational_sweep)
   BOOST_TEST(ties >= cases / 2);
   BOOST_TEST(dropped >= cases / 10);
   BOOST_TEST(kept >= cases / 10);
+}
+
+// The all-pairs test a few boxes get (Pair_sweep's few_boxes) reports the
+// pairs CGAL's sweep reports, each with the same certainty, in rationals
+// and in intervals, regularised and closed: forced each way on clusters of
+// 3 to 12 objects (6 to 24 boxes), whose integer blocks often touch.
+template <class K>
+static void sweeps_agree(const K& k, const Scene& scene, const std::string& where)
+{
+  Scene_model<K> model = Scene_model<K>::build(k, scene);
+  Check_stats stats;
+  std::vector<Box<typename K::FT, 3>> roots;
+  for (const auto& b : settled_bounds_all(k, model, stats, true)) roots.push_back(b[0]);
+  for (bool closed : {false, true}) {
+    std::vector<char> swept_sure, tested_sure;
+    auto swept = Pair_sweep<K>(k, closed, 0).candidates(model, roots, scene, &swept_sure);
+    auto tested = Pair_sweep<K>(k, closed, 1000).candidates(model, roots, scene, &tested_sure);
+    BOOST_TEST((swept == tested), where << (closed ? " closed" : ""));
+    BOOST_TEST((swept_sure == tested_sure), where << (closed ? " closed" : ""));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(all_pairs_test_of_few_boxes_equals_the_sweep)
+{
+  std::uint64_t seed = 1271990;
+  BOOST_TEST_MESSAGE("seed " << seed);
+  std::mt19937_64 rng(seed);
+  std::size_t pairs = 0;
+  for (int round = 0; round < 40; ++round) {
+    int n = 3 + round % 10;
+    Scene scene = parse(random_cluster(rng, n));
+    std::string where = "round " + std::to_string(round) + ", " + std::to_string(n) + " objects";
+    sweeps_agree(Rational_kernel(), scene, where + " (rational)");
+    {
+      Interval_kernel::Protector protect;
+      sweeps_agree(Interval_kernel(), scene, where + " (intervals)");
+    }
+    Check_stats stats;
+    Rational_kernel k;
+    Scene_model<Rational_kernel> model = Scene_model<Rational_kernel>::build(k, scene);
+    std::vector<Box<Rational, 3>> roots;
+    for (const auto& b : settled_bounds_all(k, model, stats, true)) roots.push_back(b[0]);
+    pairs += Pair_sweep<Rational_kernel>(k).candidates(model, roots, scene).size();
+  }
+  BOOST_TEST(pairs > 40u);   // the clusters' boxes do meet
 }
