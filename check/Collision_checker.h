@@ -8,6 +8,7 @@
 
 #include "model/Extrusion.h"
 #include "model/Point_classifier.h"
+#include "numbers/Number_ops.h"
 #include "search/Convex_pair.h"
 #include "search/Divide_and_conquer.h"
 #include "search/Span_region.h"
@@ -24,12 +25,12 @@ template <class FT>
 struct Pair_result {
   int a = -1, b = -1;
   bool collide = false;
-  Vector4<FT> witness{};          // (x, y, z, t), generic, strictly inside both
+  Vector4<FT> witness = zeros();   // (x, y, z, t), generic, strictly inside both
   bool has_witness = false;       // false: found, the witness is for another kernel to make
   bool witness_verified = false;  // checked with strict signs against the scene
   bool earliest = false;          // t_star and contact are set (--earliest)
-  FT t_star{};                    // inf of the collision times (§5); closed: the first contact time
-  Vector4<FT> contact{};          // (x*, t*) in the closure of the collision region
+  FT t_star = shared_zero<FT>();  // inf of the collision times (§5); closed: the first contact time
+  Vector4<FT> contact = zeros();  // (x*, t*) in the closure of the collision region
   // What makes the answer checkable (check/Check_answer.h, Pair_answer):
   // closed, generic points inside a and inside b whose cells' closures hold
   // the witness; earliest, the same for the contact point (regularised: one
@@ -39,6 +40,12 @@ struct Pair_result {
   Semantics semantics = Semantics::regularised;
   std::vector<Vector4<FT>> witness_cells;
   std::vector<Vector4<FT>> contact_cells;
+
+  static Vector4<FT> zeros()
+  {
+    const FT& z = shared_zero<FT>();
+    return {z, z, z, z};
+  }
 };
 
 // K: the kernel; Policy: search/No_filter.h (a filtered run's is in exact/).

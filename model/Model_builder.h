@@ -395,7 +395,14 @@ private:
         Vector3<FT> lo = vec3(s, 0), hi = vec3(s, 3);
         if (with_planes) p.planes.reserve(6);
         p.vertices.reserve(8);
-        for (std::size_t i = 0; i < 6 && with_planes; ++i) p.planes.push_back(local_plane(s, i));
+        // local_plane's planes, from the corners already converted.
+        const FT zero = unit(0), one = unit(1), minus_one = unit(-1);
+        for (int i = 0; i < 6 && with_planes; ++i) {
+          int a = i / 2;
+          Plane3<FT> h{zero, zero, zero, i % 2 ? FT(-hi[a]) : lo[a]};
+          h[a] = i % 2 ? one : minus_one;
+          p.planes.push_back(h);
+        }
         for (int c = 0; c < 8; ++c)
           p.vertices.push_back({(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2]});
         break;

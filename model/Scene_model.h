@@ -4,6 +4,7 @@
 #define CLASH4D_MODEL_SCENE_MODEL_H
 
 #include "model/Far_bound.h"
+#include "numbers/Number_ops.h"
 #include "model/Model_builder.h"
 #include "model/Motion_path.h"
 #include "scene/Scene.h"
@@ -38,8 +39,9 @@ template <class K>
 struct Scene_model {
   using FT = typename K::FT;
   K kernel;                              // whose signs order times
-  FT t_lo, t_hi;
-  Rational exact_t_lo, exact_t_hi;       // the scene's own (build): sub_spans orders times on them
+  FT t_lo = shared_zero<FT>(), t_hi = shared_zero<FT>();
+  // The scene's own (build): sub_spans orders times on them.
+  Rational exact_t_lo = shared_zero<Rational>(), exact_t_hi = shared_zero<Rational>();
   bool exact_span = false, lo_on_grid = true, hi_on_grid = true;
   std::vector<Object_model<FT>> objects;
   // R = 2^far_exponent bounds the vertices of the scene's arrangement
@@ -61,6 +63,7 @@ struct Scene_model {
     m.set_exact_span(scene);
     m.far_exponent = clash4d::far_exponent(scene);
     Model_builder<K> builder(k);
+    m.objects.reserve(scene.objects.size());
     for (const auto& o : scene.objects)
       m.objects.push_back({o.name, builder.build(o.shape), Motion_path<FT>::build(k, o.motion)});
     return m;

@@ -20,6 +20,16 @@ struct Number_ops {
   static bool same(const FT& a, const FT& b) { return a == b; }
 };
 
+// A zero to copy from, for members that start at zero: in rationals a copy
+// shares one number (CGAL's handles, copy on write), where a zero made per
+// member is an allocation each (a pair's result holds nine).
+template <class FT>
+const FT& shared_zero()
+{
+  static const FT zero(0);
+  return zero;
+}
+
 } // namespace clash4d
 
 #endif

@@ -223,6 +223,43 @@ BOOST_AUTO_TEST_CASE(planes_and_vertices_trees_are_the_models)
   }
 }
 
+// placed_geometry (a convex pair's guide, search/Convex_pair.h): a
+// one-primitive shape's planes and vertices, number for number build's, in
+// rationals and in doubles, for each kind placed by a translation, a
+// rotation, both and neither (the single primitives of every_kind, and each
+// one bare).
+template <class K>
+void check_placed_geometry(const K& k, const Solid& shape, const std::string& where)
+{
+  Primitive<typename K::FT> placed = Model_builder<K>(k).placed_geometry(shape);
+  Csg_model<typename K::FT> built = Model_builder<K>(k).build(shape);
+  BOOST_TEST_REQUIRE(built.primitives.size() == 1u, where);
+  BOOST_TEST(!placed.planes.empty(), where);
+  BOOST_TEST((placed.planes == built.primitives[0].planes), where);
+  BOOST_TEST((placed.vertices == built.primitives[0].vertices), where);
+}
+
+BOOST_AUTO_TEST_CASE(placed_geometry_is_the_models_primitive)
+{
+  Scene scene = scene_with(every_kind);
+  const Solid& whole = scene.objects[0].shape;   // difference of (union of four) and one
+  std::vector<const Solid*> singles{&whole.children[1]};
+  for (const Solid& c : whole.children[0].children)
+    if (c.kind != Solid::Kind::Intersection) singles.push_back(&c);
+  for (const Solid& c : whole.children[0].children[2].children) singles.push_back(&c);   // a hull, a half-space
+  std::size_t n = singles.size();
+  for (std::size_t i = 0; i < n; ++i) {   // each bare too: no transform
+    const Solid* s = singles[i];
+    while (s->kind == Solid::Kind::Translate || s->kind == Solid::Kind::Rotate) s = &s->children[0];
+    singles.push_back(s);
+  }
+  BOOST_TEST_REQUIRE(singles.size() == 12u);
+  for (std::size_t i = 0; i < singles.size(); ++i) {
+    check_placed_geometry(Rational_kernel(), *singles[i], "rational, solid " + std::to_string(i));
+    check_placed_geometry(Double_kernel(0), *singles[i], "double, solid " + std::to_string(i));
+  }
+}
+
 // The reader makes a rotation's matrix once (Solid::constructed), and the
 // rational model read from it is the one computed from q: the same planes
 // and vertices, number for number.
