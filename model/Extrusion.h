@@ -48,8 +48,15 @@ public:
   static std::vector<H> primitive_planes(const Primitive<FT>& p, const Vector3<FT>& v, const Vector3<FT>& o)
   {
     std::vector<H> planes;
-    for (const auto& plane : p.planes) planes.push_back(extrude(plane, v, o));
+    planes.reserve(p.planes.size());
+    add_primitive_planes(p, v, o, planes);
     return planes;
+  }
+  // The same, appended to planes.
+  static void add_primitive_planes(const Primitive<FT>& p, const Vector3<FT>& v, const Vector3<FT>& o,
+                                   std::vector<H>& planes)
+  {
+    for (const auto& plane : p.planes) planes.push_back(extrude(plane, v, o));
   }
 
   // A's planes then B's (object_planes), groups 0 and 1, in the frame

@@ -194,10 +194,7 @@ public:
     const Solid& s = peel(shape, T);
     Primitive<FT> p;
     local_geometry(s, p);
-    if (!T.is_identity) {
-      for (auto& h : p.planes) h = T.apply(h);
-      for (auto& v : p.vertices) v = T.apply(v);
-    }
+    move_by(p, T);
     return p;
   }
 
@@ -244,12 +241,7 @@ public:
     using K_ = Solid::Kind;
     const FT zero = unit(0), one = unit(1), minus_one = unit(-1);
     switch (s.kind) {
-      case K_::Block: {   // below then above, per axis
-        std::size_t a = i / 2;
-        Plane3<FT> h{zero, zero, zero, i % 2 ? -num(s, 3 + a) : num(s, a)};
-        h[a] = i % 2 ? one : minus_one;
-        return h;
-      }
+      case K_::Block: return block_plane(i, num(s, i % 2 ? 3 + i / 2 : i / 2));
       case K_::Prism: {
         std::size_t n = (s.numbers.size() - 2) / 2;
         if (i == n) return {zero, zero, minus_one, num(s, 2 * n)};
@@ -270,6 +262,16 @@ public:
       default:   // a half-space's or a convex solid's plane, as read
         return {num(s, 4 * i), num(s, 4 * i + 1), num(s, 4 * i + 2), num(s, 4 * i + 3)};
     }
+  }
+
+  // A block's plane i, below then above per axis: -x_a + lo_a <= 0, then
+  // x_a - hi_a <= 0; bound is lo_a or hi_a.
+  static Plane3<FT> block_plane(std::size_t i, const FT& bound)
+  {
+    std::size_t a = i / 2;
+    Plane3<FT> h{unit(0), unit(0), unit(0), i % 2 ? FT(-bound) : bound};
+    h[a] = unit(i % 2 ? 1 : -1);
+    return h;
   }
 
   // Vertex k of a block, hull, prism or convex solid in its own frame, in
@@ -352,8 +354,7 @@ private:
     std::size_t n = local_plane_count(s);
     p.planes.reserve(n);
     for (std::size_t i = 0; i < n; ++i) p.planes.push_back(local_plane(s, i));
-    if (!T.is_identity)
-      for (auto& h : p.planes) h = T.apply(h);
+    move_by(p, T);
     return p;
   }
 
@@ -371,13 +372,18 @@ private:
     return p;
   }
 
+  // p's planes and vertices moved by T.
+  static void move_by(Primitive<FT>& p, const Affine3<FT>& T)
+  {
+    if (T.is_identity) return;
+    for (auto& h : p.planes) h = T.apply(h);
+    for (auto& v : p.vertices) v = T.apply(v);
+  }
+
   // p moved by T, and its box.
   void place(Primitive<FT>& p, const Affine3<FT>& T) const
   {
-    if (!T.is_identity) {   // as placed_geometry
-      for (auto& h : p.planes) h = T.apply(h);
-      for (auto& v : p.vertices) v = T.apply(v);
-    }
+    move_by(p, T);
     p.box = p.vertices.empty() ? halfspace_box(p.planes[0]) : vertex_box(p.vertices);
   }
 
@@ -395,14 +401,7 @@ private:
         Vector3<FT> lo = vec3(s, 0), hi = vec3(s, 3);
         if (with_planes) p.planes.reserve(6);
         p.vertices.reserve(8);
-        // local_plane's planes, from the corners already converted.
-        const FT zero = unit(0), one = unit(1), minus_one = unit(-1);
-        for (int i = 0; i < 6 && with_planes; ++i) {
-          int a = i / 2;
-          Plane3<FT> h{zero, zero, zero, i % 2 ? FT(-hi[a]) : lo[a]};
-          h[a] = i % 2 ? one : minus_one;
-          p.planes.push_back(h);
-        }
+        for (std::size_t i = 0; i < 6 && with_planes; ++i) p.planes.push_back(block_plane(i, i % 2 ? hi[i / 2] : lo[i / 2]));
         for (int c = 0; c < 8; ++c)
           p.vertices.push_back({(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2]});
         break;

@@ -88,9 +88,7 @@ struct Plane_sides {
   Plane_sides(const K& k, const Csg_model<FT>& m, const Vector3<FT>& y)
   {
     first.reserve(m.primitives.size());
-    std::size_t planes = 0;
-    for (const auto& prim : m.primitives) planes += prim.planes.size();
-    sides.reserve(planes);
+    sides.reserve(m.plane_count());
     for (const auto& prim : m.primitives) {
       first.push_back(sides.size());
       for (const auto& pl : prim.planes) sides.push_back(k.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], y));

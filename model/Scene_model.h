@@ -4,9 +4,9 @@
 #define CLASH4D_MODEL_SCENE_MODEL_H
 
 #include "model/Far_bound.h"
-#include "numbers/Number_ops.h"
 #include "model/Model_builder.h"
 #include "model/Motion_path.h"
+#include "numbers/Number_ops.h"
 #include "scene/Scene.h"
 #include <algorithm>
 #include <stdexcept>

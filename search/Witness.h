@@ -101,24 +101,16 @@ private:
     for (int q = 0; q < 3; ++q) p[q] += shear[q] * p[3];
   }
 
-  static std::size_t plane_count(const Moving& m)
-  {
-    std::size_t n = 0;
-    for (const auto& prim : m.object->csg.primitives) n += prim.planes.size();
-    return n;
-  }
-
   // m's planes extruded (equation (4)), appended to planes.
   static void add_object_planes(const Moving& m, std::vector<H>& planes)
   {
-    for (const auto& prim : m.object->csg.primitives)
-      for (const auto& plane : prim.planes) planes.push_back(extrude(plane, m.v, m.o));
+    for (const auto& prim : m.object->csg.primitives) Extrusion<K>::add_primitive_planes(prim, m.v, m.o, planes);
   }
 
   static std::vector<H> object_planes(const Moving& m)
   {
     std::vector<H> planes;
-    planes.reserve(plane_count(m));
+    planes.reserve(m.object->csg.plane_count());
     add_object_planes(m, planes);
     return planes;
   }
@@ -126,7 +118,7 @@ private:
   static std::vector<H> world_planes(const Moving& A, const Moving& B, const FT& lo, const FT& hi)
   {
     std::vector<H> world;
-    world.reserve(plane_count(A) + plane_count(B) + 2);
+    world.reserve(A.object->csg.plane_count() + B.object->csg.plane_count() + 2);
     add_object_planes(A, world);
     add_object_planes(B, world);
     world.push_back(time_at_least(lo));
