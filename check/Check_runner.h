@@ -17,6 +17,8 @@
 
 namespace clash4d {
 
+// A colliding pair's result r in text (check/Check_answer.h), written into
+// p, a fresh answer in place (an answer is 27 strings: no move).
 template <class K>
 void pair_answer(const K& k, const Scene_model<K>& model, const Pair_result<typename K::FT>& r, Pair_answer& p)
 {
@@ -130,7 +132,7 @@ void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::p
     if (!r.collide) continue;
     if (!options.all_pairs && !options.earliest && answer.collide) break;
     answer.collide = true;
-    pair_answer(k, model, r, answer.pairs.emplace_back());   // in place: an answer is 27 strings
+    pair_answer(k, model, r, answer.pairs.emplace_back());
     if (options.earliest && (!merged || k.less(r.t_star, merged_best))) {
       merged = true;
       merged_best = r.t_star;

@@ -25,7 +25,7 @@ template <class FT>
 struct Pair_result {
   int a = -1, b = -1;
   bool collide = false;
-  Vector4<FT> witness = zeros();   // (x, y, z, t), generic, strictly inside both
+  Vector4<FT> witness = zeros();  // (x, y, z, t), generic, strictly inside both
   bool has_witness = false;       // false: found, the witness is for another kernel to make
   bool witness_verified = false;  // checked with strict signs against the scene
   bool earliest = false;          // t_star and contact are set (--earliest)
