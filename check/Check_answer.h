@@ -29,6 +29,10 @@ struct Check_options {
   // instead of having only the line that found it run again in rationals
   // (Interval_filter::exact_goal): tests of that path.
   bool witness_lines = true;
+  // Measure each stage's seconds (Check_stats::seconds_*, printed by
+  // --stats, which sets this). Off by default: the clock reads are about
+  // 5% of a convex pair's query (search/Stage_clock.h).
+  bool stage_seconds = false;
   bool json = false;          // output form (used by the command line only)
   Semantics semantics = Semantics::regularised;
 };

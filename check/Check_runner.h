@@ -66,7 +66,7 @@ Pair_result<FT> closed_pair(std::size_t i, Check_one& check, Check_stats& stats)
     r.contact = r.witness;
     return r;
   }
-  Check_stats closed_stats;
+  Check_stats closed_stats = stats.fresh();
   r = check(i, nullptr, Semantics::closed, closed_stats);
   stats.add(closed_stats);
   return r;
@@ -84,7 +84,7 @@ void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::p
 {
   using FT = typename K::FT;
   std::vector<Pair_result<FT>> results(pairs.size());
-  std::vector<Check_stats> stats(pairs.size());
+  std::vector<Check_stats> stats(pairs.size(), answer.stats.fresh());
   std::atomic<std::size_t> first_hit{pairs.size()};      // any-collision mode: lowest colliding index
   std::mutex best_mutex;
   bool have_best = false;
@@ -155,7 +155,7 @@ std::vector<std::pair<int, int>> candidate_pairs(const K& k, const Scene_model<K
                                                  Semantics semantics = Semantics::regularised,
                                                  std::vector<char>* certain = nullptr)
 {
-  auto start = std::chrono::steady_clock::now();
+  Stage_clock clock(stats.timed);
   std::vector<Box<typename K::FT, 3>> roots;
   for (const auto& b : settled) roots.push_back(b[0]);
   std::vector<std::pair<int, int>> pairs =
@@ -163,7 +163,7 @@ std::vector<std::pair<int, int>> candidate_pairs(const K& k, const Scene_model<K
   std::size_t n = model.objects.size();
   stats.object_pairs = n * (n - 1) / 2 - scene.ignore.size();
   stats.candidate_pairs = pairs.size();
-  stats.seconds_sweep = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.seconds_sweep = clock.seconds();
   return pairs;
 }
 
@@ -174,9 +174,10 @@ Check_answer run_check(const K& k, const Scene& scene, const Check_options& opti
   Check_answer answer;
   answer.number = K::name();
   answer.semantics = options.semantics;
-  auto start = std::chrono::steady_clock::now();
+  answer.stats.timed = options.stage_seconds;
+  Stage_clock clock(answer.stats.timed);
   Scene_model<K> model = Scene_model<K>::build(k, scene);
-  answer.stats.seconds_model = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  answer.stats.seconds_model = clock.seconds();
   auto settled = settled_bounds_all(k, model, answer.stats, options.sbounds);
   std::vector<std::pair<int, int>> pairs = candidate_pairs(k, model, settled, scene, answer.stats, options.semantics);
   auto check = [&](std::size_t i, const typename K::FT* ceiling, Semantics semantics, Check_stats& stats) {
@@ -194,7 +195,7 @@ void run_skeleton_pairs(const K& k, const Scene_model<K>& model, const std::vect
                         Skeleton_one skeleton, Skeleton_answer& answer)
 {
   std::vector<std::vector<typename Pair_skeleton<K>::Segment>> edges(pairs.size());
-  std::vector<Check_stats> stats(pairs.size());
+  std::vector<Check_stats> stats(pairs.size(), answer.stats.fresh());
   tbb::task_group_context own(tbb::task_group_context::isolated);   // as in run_pairs
   tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t i) { edges[i] = skeleton(i, stats[i]); }, own);
   for (std::size_t i = 0; i < pairs.size(); ++i) {

@@ -14,7 +14,7 @@
 #include "search/Span_region.h"
 #include "search/Witness.h"
 #include "search/No_filter.h"
-#include <chrono>
+#include "search/Stage_clock.h"
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -162,11 +162,6 @@ private:
   Policy own_policy_;
   Policy& policy_;
 
-  static double seconds_since(std::chrono::steady_clock::time_point s)
-  {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - s).count();
-  }
-
   // The pair's sub-spans in time order, until the goal is met; false when
   // convex_only and a sub-span was left to the cascade.
   bool spans(int a, int b, bool earliest, const FT* ceiling, Semantics semantics, Pair_result<FT>& r,
@@ -201,13 +196,13 @@ private:
   bool check_span(int a, int b, std::size_t index, const Time_span<FT>& span, Pair_result<FT>& r,
                   Search_goal<FT>& goal, Convex_pair<K, Policy>* convex, bool convex_only)
   {
-    auto start = std::chrono::steady_clock::now();
+    Stage_clock clock(stats_.timed);
     Moving A = moving_on(model_, a, span, settled_[a]), B = moving_on(model_, b, span, settled_[b]);
     if (convex) {
       goal.improved = false;
       using Verdict = typename Convex_pair<K, Policy>::Verdict;
       Verdict v = policy_.convex_stage([&] { return convex->decide(index, A, B, span, goal); });
-      stats_.seconds_divide += seconds_since(start);
+      stats_.seconds_divide += clock.lap();
       if (v == Verdict::undecided) {
         ++stats_.convex_undecided;
         if (convex_only) return false;
@@ -216,19 +211,17 @@ private:
         if (goal.improved) found(index, goal, Vector3<FT>{FT(0), FT(0), FT(0)}, A, B, span, r);
         return true;
       }
-      start = std::chrono::steady_clock::now();
     }
     Vector3<FT> shear;
     std::array<bool, 3> frame_of_a{};
     Span_stats ss;
     std::optional<Box4> region = span_region(a, b, index, A, B, span, goal, shear, frame_of_a, ss);
-    stats_.seconds_sbounds += seconds_since(start);
+    stats_.seconds_sbounds += clock.lap();
     if (!region) {
       stats_.spans.push_back(ss);
       return true;
     }
 
-    start = std::chrono::steady_clock::now();
     Motion_groups<FT> groups;
     std::vector<H> table = Extrusion<K>::pair_table(A, B, shear, frame_of_a, use_sbounds_, groups);
     std::size_t slab = goal.closed() ? Extrusion<K>::add_time_slab(table, span.lo, span.hi) : 0;
@@ -239,7 +232,7 @@ private:
     goal.improved = false;
     policy_.search_span(a, b, index, frame_of_a);
     dc.search(*region, formula, goal);
-    stats_.seconds_divide += seconds_since(start);
+    stats_.seconds_divide += clock.lap();
     if (!dc.conquered().empty)
       for (int q = 0; q < 4; ++q) stats_.conquered_box.push_back(range(dc.conquered().lo[q], dc.conquered().hi[q]));
     if (goal.improved) found(index, goal, shear, A, B, span, r);
@@ -252,12 +245,12 @@ private:
              const Moving& B, const Time_span<FT>& span, Pair_result<FT>& r)
   {
     policy_.found_in_span(index);
-    auto start = std::chrono::steady_clock::now();
+    Stage_clock clock(stats_.timed);
     r.collide = true;
     r.has_witness = false;
     if (policy_.witness_certified() && policy_.witness_answers(goal))
       policy_.attempt([&] { make_witness(goal, shear, A, B, span, r); });
-    stats_.seconds_witness += seconds_since(start);
+    stats_.seconds_witness += clock.seconds();
     if (K::is_exact && r.has_witness && !r.witness_verified)
       throw std::logic_error("internal error: the exact witness failed its check; please report this scene");
   }

@@ -394,6 +394,7 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
     a->options.sbounds = !a->no_sbounds;
     a->options.convex_lp = !a->no_convex_lp;
     a->options.json = a->as_json;
+    a->options.stage_seconds = a->stats;   // the stage clocks are read only when printed
     a->options.semantics = *semantics_from_name(a->semantics);
     return with_scene(*a, err, [&](const Scene& scene) {
       Check_answer answer = instantiation(a->number).check(scene, a->options, a->tolerance);

@@ -39,7 +39,6 @@
 #include "search/Witness.h"
 #include <CGAL/Uncertain.h>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <memory>
 #include <mutex>
@@ -77,6 +76,7 @@ public:
   {
     convex_lp_ = options.convex_lp;
     Check_answer answer;
+    answer.stats.timed = options.stage_seconds;
     std::vector<std::pair<int, int>> pairs;
     if (!prepare(answer.stats, pairs, options.semantics)) {
       answer = run_check(ek_, scene_, options);     // AK could not even build the model
@@ -107,7 +107,7 @@ public:
       if (!exact_only_[a] && !exact_only_[b]) {
         try {
           Protector protect;
-          Check_stats astats;
+          Check_stats astats = stats.fresh();
           if (Pair_skeleton<AK>(ak_, amodel_, asettled_, astats).edges(a, b).empty()) {
             stats = astats;
             return std::vector<typename Pair_skeleton<EK>::Segment>();
@@ -140,10 +140,10 @@ private:
   {
     bool closed = options.semantics == Semantics::closed;
     Search_trail trail;
-    Check_stats astats;
+    Check_stats astats = stats.fresh();
     bool earliest_trail = false;
     Exact_stages<EFT> stages;   // region stages the interval run made in rationals, for the replay
-    auto start = std::chrono::steady_clock::now();
+    Stage_clock clock(stats.timed);
     if (!exact_only_[a] && !exact_only_[b]) {
       try {
         Protector protect;
@@ -182,10 +182,10 @@ private:
       } catch (const Convex_uncertain&) {
         trail.complete = false;   // decided below, in rationals
       } catch (const Proven_apart&) {
-        stopped_in_search(astats, start, stats);
+        stopped_in_search(astats, clock, stats);
         return Pair_result<EFT>();
       } catch (const Found_inside<EFT>& f) {
-        stopped_in_search(astats, start, stats);
+        stopped_in_search(astats, clock, stats);
         return f.result;
       }
     }
@@ -207,12 +207,11 @@ private:
 
   // The interval run stopped inside a span by a hand-over's answer
   // (Proven_apart, Found_inside): its time, and the LPs', are the search's.
-  static void stopped_in_search(const Check_stats& astats, std::chrono::steady_clock::time_point start,
-                                Check_stats& stats)
+  static void stopped_in_search(const Check_stats& astats, const Stage_clock& clock, Check_stats& stats)
   {
     stats = astats;
     double counted = astats.seconds_sbounds + astats.seconds_divide + astats.seconds_witness;
-    stats.seconds_divide += std::max(0.0, seconds_since(start) - counted);
+    stats.seconds_divide += std::max(0.0, clock.seconds() - counted);
   }
 
   // A convex pair the interval run could not decide or answer as points
@@ -226,7 +225,7 @@ private:
     if (!convex_lp_ || !Convex_pair<AK>::applies(amodel_, a, b)) return std::nullopt;
     need_model(a);
     need_model(b);
-    Check_stats estats;
+    Check_stats estats = stats.fresh();
     Collision_checker<EK> checker(ek_, emodel_, esettled_, estats, use_sbounds_);
     std::optional<Pair_result<EFT>> r = checker.check_convex_pair(a, b, options.earliest, ceiling, options.semantics);
     if (r) {
@@ -311,11 +310,11 @@ private:
                                                const Check_options& options, const Check_stats& astats,
                                                Check_stats& stats)
   {
-    auto made = std::chrono::steady_clock::now();
+    Stage_clock made(stats.timed);
     std::optional<Pair_result<EFT>> r = witness_from(policy, a, b, options.semantics, options.earliest);
     if (!r) return r;
     stats = astats;
-    stats.seconds_witness += seconds_since(made);
+    stats.seconds_witness += made.seconds();
     ++witness_runs_;
     if (options.earliest) {
       ++earliest_by_intervals_;
@@ -408,7 +407,7 @@ private:
                                            bool earliest, Semantics semantics, const Check_stats& astats,
                                            Check_stats& stats, std::atomic<std::size_t>& count)
   {
-    Check_stats rstats;
+    Check_stats rstats = stats.fresh();
     Replay replay(trail, &stages);
     Collision_checker<EK, Replay> checker(ek_, emodel_, esettled_, rstats, use_sbounds_, &replay);
     checker.use_convex_lp(convex_lp_);
@@ -502,7 +501,7 @@ private:
   {
     std::size_t n = scene_.objects.size();
     exact_only_.assign(n, 0);
-    auto start = std::chrono::steady_clock::now();
+    Stage_clock clock(stats.timed);
     try {
       Protector protect;
       amodel_ = Scene_model<AK>::build(ak_, scene_);
@@ -511,10 +510,9 @@ private:
       ++fallbacks_;
       return false;
     }
-    stats.seconds_model = seconds_since(start);
-    start = std::chrono::steady_clock::now();
+    stats.seconds_model = clock.lap();
     for (std::size_t i = 0; i < n; ++i) asettled_.push_back(settle(static_cast<int>(i), stats));
-    stats.seconds_sbounds += seconds_since(start);
+    stats.seconds_sbounds += clock.seconds();
     std::vector<char> certain;
     try {
       Protector protect;
@@ -546,7 +544,7 @@ private:
                        Semantics semantics)
   {
     if (semantics == Semantics::closed || std::find(certain.begin(), certain.end(), 0) == certain.end()) return;
-    auto start = std::chrono::steady_clock::now();
+    Stage_clock clock(stats.timed);
     Sweep_tie<Filtered_runner> ties(*this);
     std::vector<std::pair<int, int>> kept;
     for (std::size_t p = 0; p < pairs.size(); ++p) {
@@ -558,7 +556,7 @@ private:
       kept.emplace_back(i, j);
     }
     stats.candidate_pairs = kept.size();
-    stats.seconds_sweep += seconds_since(start);
+    stats.seconds_sweep += clock.seconds();
     pairs = std::move(kept);
   }
 
@@ -703,11 +701,6 @@ private:
     stats.closed_cells_by_intervals = closed_cells_.load();
     stats.witnesses_by_terms = witnesses_by_terms_.load();
     stats.convex_rational = convex_rational_.load();
-  }
-
-  static double seconds_since(std::chrono::steady_clock::time_point t)
-  {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   }
 };
 

@@ -1,6 +1,7 @@
 #include "numbers/Rational.h"
 
 #include <mpfr.h>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -10,13 +11,42 @@
 
 namespace clash4d {
 
+namespace {
+
+// The magnitude of z when it fits one limb (an unsigned 64-bit integer).
+bool one_limb(mpz_srcptr z, std::uint64_t& magnitude)
+{
+  static_assert(sizeof(mp_limb_t) == sizeof(std::uint64_t), "a GMP limb of 64 bits");
+  if (mpz_size(z) > 1) return false;
+  magnitude = mpz_size(z) == 0 ? 0 : mpz_getlimbn(z, 0);
+  return true;
+}
+
+} // namespace
+
 std::string to_string(const Rational& q)
 {
   // Gmpq is always canonical (lowest terms, positive denominator), and GMP
   // prints "p" when q = 1 and "p/q" otherwise: exactly the spec's form.
-  // Written into the string itself, sized as GMP's manual gives (each
-  // part's digits, at most one more than mpz_sizeinbase says, a sign, the
-  // slash and the terminator), then cut at the terminator.
+  // Parts of one limb each (every witness on a dyadic grid of up to 63
+  // bits, every small fraction) are printed with std::to_chars in that
+  // same form: mpq_get_str costs several times as much (a converted
+  // copy of each part), and an answer prints up to 27 numbers.
+  std::uint64_t n = 0, d = 0;
+  if (one_limb(mpq_numref(q.mpq()), n) && one_limb(mpq_denref(q.mpq()), d)) {
+    char text[2 * 20 + 3];   // a sign, two parts of at most 20 digits, the slash
+    char* end = text;
+    if (mpq_sgn(q.mpq()) < 0) *end++ = '-';
+    end = std::to_chars(end, text + sizeof text, n).ptr;
+    if (d != 1) {
+      *end++ = '/';
+      end = std::to_chars(end, text + sizeof text, d).ptr;
+    }
+    return std::string(text, end);
+  }
+  // Otherwise written by GMP into the string itself, sized as GMP's manual
+  // gives (each part's digits, at most one more than mpz_sizeinbase says,
+  // a sign, the slash and the terminator), then cut at the terminator.
   std::string out(mpz_sizeinbase(mpq_numref(q.mpq()), 10) + mpz_sizeinbase(mpq_denref(q.mpq()), 10) + 5, '\0');
   mpq_get_str(out.data(), 10, q.mpq());
   out.resize(std::strlen(out.c_str()));

@@ -112,8 +112,19 @@ struct Check_stats {
               replay_stages_adopted = 0, earliest_lines_rerun = 0, witness_lines_rerun = 0, exact_ties = 0,
               exact_cut_orders = 0, exact_zeros = 0, convex_rational = 0, doubtful_stages_pruned = 0,
               closed_cells_by_intervals = 0, witnesses_by_terms = 0;
-  // Time per stage, seconds
+  // Time per stage, seconds; measured only when timed (search/Stage_clock.h:
+  // Check_options::stage_seconds, which --stats sets), otherwise 0.
   double seconds_model = 0, seconds_sbounds = 0, seconds_divide = 0, seconds_witness = 0;
+  bool timed = false;
+
+  // Empty counts for a part of this run (a pair, another kernel's try),
+  // timed as this run is.
+  Check_stats fresh() const
+  {
+    Check_stats s;
+    s.timed = timed;
+    return s;
+  }
 
   // Adds another run's counts (pairs checked in parallel, merged in order).
   void add(const Check_stats& o)

@@ -8,7 +8,7 @@
 #include "model/Csg_model.h"
 #include "model/Scene_model.h"
 #include "search/Check_stats.h"
-#include <chrono>
+#include "search/Stage_clock.h"
 #include <vector>
 
 namespace clash4d {
@@ -246,10 +246,10 @@ template <class K>
 std::vector<typename S_bounds<K>::Bounds> settled_bounds_all(const K& k, const Scene_model<K>& model, Check_stats& stats,
                                                              bool use_sbounds)
 {
-  auto start = std::chrono::steady_clock::now();
+  Stage_clock clock(stats.timed);
   std::vector<typename S_bounds<K>::Bounds> settled;
   for (const auto& o : model.objects) settled.push_back(settled_bounds(k, o.csg, stats, use_sbounds));
-  stats.seconds_sbounds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.seconds_sbounds += clock.seconds();
   return settled;
 }
 

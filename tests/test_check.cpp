@@ -3,6 +3,10 @@
 
 #include "support/Cli_run.h"
 #include "scene/Number_text.h"
+#include "exact/Exact_instantiation.h"
+#include "float/Double_instantiation.h"
+#include "scene/Json_reader.h"
+#include "scene/Scene_reader.h"
 #include <nlohmann/json.hpp>
 #include <cstdio>
 #include <fstream>
@@ -131,6 +135,47 @@ BOOST_AUTO_TEST_CASE(stats_report_every_stage)
   // ram's x-range [3 - t, 4 - t] meets [0, 1] for 2 <= t <= 4.
   BOOST_TEST(s["span_before"] == "[0, 5]");
   BOOST_TEST(s["span_after"] == "[2, 4]");
+}
+
+// Stage seconds are measured only when asked (search/Stage_clock.h): a
+// library check leaves every one 0, one with Check_options::stage_seconds
+// (what --stats sets) measures them, and --stats prints them. In each
+// kernel, on the convex programs' path and on the paper's cascade, and in
+// both semantics (closed runs a regularised check first, then its own).
+BOOST_AUTO_TEST_CASE(stage_seconds_only_when_asked)
+{
+  Scene scene = read_scene(read_json_text(spec_example));
+  auto total = [](const Check_stats& s) {
+    return s.seconds_model + s.seconds_sweep + s.seconds_sbounds + s.seconds_divide + s.seconds_witness;
+  };
+  auto all = [](const Check_stats& s) {
+    return std::vector<double>{s.seconds_model, s.seconds_sweep, s.seconds_sbounds, s.seconds_divide,
+                               s.seconds_witness};
+  };
+  for (bool lp : {true, false})
+    for (Semantics semantics : {Semantics::regularised, Semantics::closed})
+      for (const char* number : {"exact", "rational", "double"}) {
+        std::string where = std::string(number) + (lp ? " lp " : " cascade ") + semantics_name(semantics);
+        auto check = [&](bool timed) {
+          Check_options o;
+          o.convex_lp = lp;
+          o.semantics = semantics;
+          o.stage_seconds = timed;
+          std::string n = number;
+          return n == "exact" ? check_exact(scene, o) : n == "rational" ? check_rational(scene, o) : check_double(scene, 0, o);
+        };
+        Check_answer plain = check(false), timed = check(true);
+        BOOST_TEST(plain.collide, where);
+        BOOST_TEST(timed.collide, where);
+        for (double s : all(plain.stats)) BOOST_TEST(s == 0.0, where);
+        BOOST_TEST(timed.stats.seconds_model > 0.0, where);
+        BOOST_TEST(timed.stats.seconds_divide > 0.0, where);   // the programs or the division ran
+        BOOST_TEST(total(timed.stats) > 0.0, where);
+      }
+  Run r = run({"check", scene_file("spec", spec_example), "--json", "--stats"});
+  auto seconds = nlohmann::json::parse(r.out)["stats"]["seconds"];
+  BOOST_TEST(seconds["model"].get<double>() > 0.0);
+  BOOST_TEST(seconds["divide_and_conquer"].get<double>() > 0.0);
 }
 
 BOOST_AUTO_TEST_CASE(ignored_pairs_are_not_tested)

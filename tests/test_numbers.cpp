@@ -7,7 +7,9 @@
 #include "scene/Number_text.h"
 #include <CGAL/FPU.h>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <optional>
 #include <random>
 #include <vector>
@@ -104,6 +106,40 @@ BOOST_AUTO_TEST_CASE(exact_output_is_lowest_terms)
   BOOST_TEST(to_string(Rational(-5)) == "-5");
   BOOST_TEST(to_string(Rational(0)) == "0");
   BOOST_TEST(to_string(Rational(-2, -4)) == "1/2");
+}
+
+// to_string's quick path (parts of one limb) against GMP's own printing,
+// mpq_get_str: at the limb's edges (2^64 - 1 and 2^64, in either part,
+// with either sign) and on seeded random rationals of 1 to 130 bits a part,
+// so both paths and their boundary are taken.
+BOOST_AUTO_TEST_CASE(rational_text_is_gmps)
+{
+  auto gmp_text = [](const Rational& x) {
+    std::unique_ptr<char, void (*)(void*)> s(mpq_get_str(nullptr, 10, x.mpq()), std::free);
+    return std::string(s.get());
+  };
+  auto power = [](unsigned e) {
+    Rational p(1);
+    for (unsigned i = 0; i < e; ++i) p = p * Rational(2);
+    return p;
+  };
+  std::vector<Rational> edges{Rational(0), Rational(1), Rational(-1), Rational(1, 2)};
+  for (const Rational& big : {power(64) - Rational(1), power(64), power(64) + Rational(1)})
+    for (const Rational& x : {big, -big, Rational(1) / big, Rational(-3) / big, big / Rational(3)}) edges.push_back(x);
+  for (const Rational& x : edges) BOOST_TEST(to_string(x) == gmp_text(x));
+  std::uint64_t seed = 20261129;
+  BOOST_TEST_MESSAGE("rational text: seed " << seed);
+  std::mt19937_64 rng(seed);
+  auto random_part = [&](unsigned bits) {
+    Rational p(0);
+    for (unsigned b = 0; b < bits; ++b) p = p * Rational(2) + Rational(b == 0 ? 1 : static_cast<long>(rng() & 1));
+    return p;
+  };
+  for (int i = 0; i < 4000; ++i) {
+    Rational x = random_part(1 + static_cast<unsigned>(rng() % 130)) / random_part(1 + static_cast<unsigned>(rng() % 130));
+    if (i % 2) x = -x;
+    BOOST_TEST(to_string(x) == gmp_text(x));
+  }
 }
 
 BOOST_AUTO_TEST_CASE(double_reading_rounds_to_nearest)
