@@ -58,9 +58,7 @@ public:
   using Protector = typename AK::Protector;
 
   Filtered_runner(const Scene& scene, bool use_sbounds)
-    : scene_(scene), use_sbounds_(use_sbounds), planed_(new Lazy_once[scene.objects.size()]),
-      built_(new Lazy_once[scene.objects.size()]), settled_(new Lazy_once[scene.objects.size()]),
-      moved_(new Lazy_once[scene.objects.size()])
+    : scene_(scene), use_sbounds_(use_sbounds), made_(new Exact_parts[scene.objects.size()])
   {
     emodel_.t_lo = ek_.from_rational(scene.t_lo);
     emodel_.t_hi = ek_.from_rational(scene.t_hi);
@@ -430,8 +428,12 @@ private:
   Scene_model<EK> emodel_;                    // objects built on demand
   std::vector<typename S_bounds<EK>::Bounds> esettled_;
   std::vector<Object_model<EFT>> ebounds_;   // boxes-only trees (need_bounds)
-  // EK's planes of an object, its whole model, its S-bounds, its motion.
-  std::unique_ptr<Lazy_once[]> planed_, built_, settled_, moved_;
+  // Whether EK has made an object's planes, its whole model, its S-bounds,
+  // its motion (one allocation per run: a convex pair's query is a few µs).
+  struct Exact_parts {
+    Lazy_once planed, built, settled, moved;
+  };
+  std::unique_ptr<Exact_parts[]> made_;
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
       stages_adopted_{0}, lines_rerun_{0}, witness_lines_{0}, convex_rational_{0}, closed_cells_{0},
@@ -624,7 +626,8 @@ private:
   void need_planes(int i)
   {
     need_motion(i);
-    planed_[i].call([&] { emodel_.objects[i].csg = Model_builder<EK>(ek_).build_planes(scene_.objects[i].shape); });
+    made_[i].planed.call(
+        [&] { emodel_.objects[i].csg = Model_builder<EK>(ek_).build_planes(scene_.objects[i].shape); });
   }
   // EK's whole model of object i (what EK's runs and linear programs read:
   // Convex_pair reads vertices), and with need_exact its S-bounds too: made
@@ -636,11 +639,11 @@ private:
   {
     need_motion(i);
     bool whole = false;
-    planed_[i].call([&] {
+    made_[i].planed.call([&] {
       emodel_.objects[i].csg = Model_builder<EK>(ek_).build(scene_.objects[i].shape);
       whole = true;
     });
-    built_[i].call([&] {
+    made_[i].built.call([&] {
       if (whole) return;
       Csg_model<EFT> more = Model_builder<EK>(ek_).build_vertices(scene_.objects[i].shape);
       std::vector<Primitive<EFT>>& to = emodel_.objects[i].csg.primitives;
@@ -654,7 +657,7 @@ private:
   // from the scene as asked, Interval_filter::Exact_convex).
   void need_motion(int i)
   {
-    moved_[i].call([&] { emodel_.objects[i].motion = Motion_path<EFT>::build(ek_, scene_.objects[i].motion); });
+    made_[i].moved.call([&] { emodel_.objects[i].motion = Motion_path<EFT>::build(ek_, scene_.objects[i].motion); });
   }
   void need_exact(int i)
   {
@@ -668,7 +671,7 @@ private:
   void need_bounds(int i)
   {
     need_motion(i);
-    settled_[i].call([&] {
+    made_[i].settled.call([&] {
       Check_stats ignored;
       ebounds_[i].csg = Model_builder<EK>(ek_).build_boxes(scene_.objects[static_cast<std::size_t>(i)].shape);
       esettled_[i] = settled_bounds(ek_, ebounds_[i].csg, ignored, use_sbounds_);

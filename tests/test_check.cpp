@@ -162,7 +162,9 @@ BOOST_AUTO_TEST_CASE(stage_seconds_only_when_asked)
           o.semantics = semantics;
           o.stage_seconds = timed;
           std::string n = number;
-          return n == "exact" ? check_exact(scene, o) : n == "rational" ? check_rational(scene, o) : check_double(scene, 0, o);
+          return n == "exact"      ? check_exact(scene, o)
+                 : n == "rational" ? check_rational(scene, o)
+                                   : check_double(scene, 0, o);
         };
         Check_answer plain = check(false), timed = check(true);
         BOOST_TEST(plain.collide, where);

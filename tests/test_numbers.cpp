@@ -136,7 +136,8 @@ BOOST_AUTO_TEST_CASE(rational_text_is_gmps)
     return p;
   };
   for (int i = 0; i < 4000; ++i) {
-    Rational x = random_part(1 + static_cast<unsigned>(rng() % 130)) / random_part(1 + static_cast<unsigned>(rng() % 130));
+    unsigned bits_n = 1 + static_cast<unsigned>(rng() % 130), bits_d = 1 + static_cast<unsigned>(rng() % 130);
+    Rational x = random_part(bits_n) / random_part(bits_d);
     if (i % 2) x = -x;
     BOOST_TEST(to_string(x) == gmp_text(x));
   }
