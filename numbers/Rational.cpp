@@ -13,10 +13,10 @@ namespace clash4d {
 
 namespace {
 
-// The magnitude of z when it fits one limb (an unsigned 64-bit integer).
+// The magnitude of z when it fits one limb (64 bits, or 32 on a 32-bit GMP).
 bool one_limb(mpz_srcptr z, std::uint64_t& magnitude)
 {
-  static_assert(sizeof(mp_limb_t) == sizeof(std::uint64_t), "a GMP limb of 64 bits");
+  static_assert(sizeof(mp_limb_t) <= sizeof(std::uint64_t), "a GMP limb of at most 64 bits");
   if (mpz_size(z) > 1) return false;
   magnitude = mpz_size(z) == 0 ? 0 : mpz_getlimbn(z, 0);
   return true;
@@ -28,10 +28,10 @@ std::string to_string(const Rational& q)
 {
   // Gmpq is always canonical (lowest terms, positive denominator), and GMP
   // prints "p" when q = 1 and "p/q" otherwise: exactly the spec's form.
-  // Parts of one limb each (every witness on a dyadic grid of up to 63
-  // bits, every small fraction) are printed with std::to_chars in that
-  // same form: mpq_get_str costs several times as much (a converted
-  // copy of each part), and an answer prints up to 27 numbers.
+  // Parts of one limb each (a snapped witness's coordinates, the scene's
+  // fractions) are printed with std::to_chars in that same form:
+  // mpq_get_str costs several times as much, and an answer prints up to
+  // 27 numbers.
   std::uint64_t n = 0, d = 0;
   if (one_limb(mpq_numref(q.mpq()), n) && one_limb(mpq_denref(q.mpq()), d)) {
     char text[2 * 20 + 3];   // a sign, two parts of at most 20 digits, the slash
