@@ -20,8 +20,6 @@ public:
     if (on_) start_ = Clock::now();
   }
 
-  bool on() const { return on_; }
-
   // Seconds since the start (0 when off).
   double seconds() const { return on_ ? std::chrono::duration<double>(Clock::now() - start_).count() : 0.0; }
 
