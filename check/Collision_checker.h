@@ -25,12 +25,12 @@ template <class FT>
 struct Pair_result {
   int a = -1, b = -1;
   bool collide = false;
-  Vector4<FT> witness = zeros();  // (x, y, z, t), generic, strictly inside both
+  Vector4<FT> witness = shared_zeros<FT, 4>();   // (x, y, z, t), generic, strictly inside both
   bool has_witness = false;       // false: found, the witness is for another kernel to make
   bool witness_verified = false;  // checked with strict signs against the scene
   bool earliest = false;          // t_star and contact are set (--earliest)
   FT t_star = shared_zero<FT>();  // inf of the collision times (§5); closed: the first contact time
-  Vector4<FT> contact = zeros();  // (x*, t*) in the closure of the collision region
+  Vector4<FT> contact = shared_zeros<FT, 4>();   // (x*, t*) in the closure of the collision region
   // What makes the answer checkable (check/Check_answer.h, Pair_answer):
   // closed, generic points inside a and inside b whose cells' closures hold
   // the witness; earliest, the same for the contact point (regularised: one
@@ -40,12 +40,6 @@ struct Pair_result {
   Semantics semantics = Semantics::regularised;
   std::vector<Vector4<FT>> witness_cells;
   std::vector<Vector4<FT>> contact_cells;
-
-  static Vector4<FT> zeros()
-  {
-    const FT& z = shared_zero<FT>();
-    return {z, z, z, z};
-  }
 };
 
 // K: the kernel; Policy: search/No_filter.h (a filtered run's is in exact/).

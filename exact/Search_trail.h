@@ -46,19 +46,14 @@ struct Search_trail {
   // there (the rational run's: every simplification on the way was
   // certified): the replay goes there directly (Divide_and_conquer::jumped).
   bool region_known = false;
-  std::array<Rational, 8> region = zeros();   // lo and hi per axis, x y z t
+  // lo and hi per axis, x y z t; copies of one zero (numbers/Number_ops.h):
+  // every pair's run makes a trail, and eight zeros made afresh are eight
+  // allocations.
+  std::array<Rational, 8> region = shared_zeros<Rational, 8>();
   Pair_formula formula;
 
   bool recording() const { return mode == Mode::Record; }
   bool replaying() const { return mode == Mode::Replay; }
-
-  // Copies of one zero (numbers/Number_ops.h): every pair's run makes a
-  // trail, and eight zeros made afresh are eight allocations.
-  static std::array<Rational, 8> zeros()
-  {
-    const Rational& z = shared_zero<Rational>();
-    return {z, z, z, z, z, z, z, z};
-  }
 };
 
 } // namespace clash4d

@@ -8,7 +8,6 @@
 #include <array>
 #include <cstddef>
 #include <type_traits>
-#include <utility>
 
 namespace clash4d {
 
@@ -40,17 +39,7 @@ private:
   static std::array<FT, D> zeros()
   {
     if constexpr (std::is_trivially_copyable_v<FT>) return {};   // doubles, intervals
-    else return copies(zero(), std::make_index_sequence<D>());
-  }
-  static const FT& zero()
-  {
-    static const FT z(0);
-    return z;
-  }
-  template <std::size_t... I>
-  static std::array<FT, D> copies(const FT& z, std::index_sequence<I...>)
-  {
-    return {{(static_cast<void>(I), z)...}};
+    else return shared_zeros<FT, D>();
   }
 };
 

@@ -6,6 +6,10 @@
 #ifndef CLASH4D_NUMBERS_NUMBER_OPS_H
 #define CLASH4D_NUMBERS_NUMBER_OPS_H
 
+#include <array>
+#include <cstddef>
+#include <utility>
+
 namespace clash4d {
 
 template <class FT>
@@ -28,6 +32,19 @@ const FT& shared_zero()
 {
   static const FT zero(0);
   return zero;
+}
+
+// N copies of it, each made as a copy (a default array would make N
+// zeros first): coordinates that start at zero.
+template <class FT, std::size_t... I>
+std::array<FT, sizeof...(I)> shared_zeros(std::index_sequence<I...>)
+{
+  return {{((void)I, shared_zero<FT>())...}};
+}
+template <class FT, std::size_t N>
+std::array<FT, N> shared_zeros()
+{
+  return shared_zeros<FT>(std::make_index_sequence<N>());
 }
 
 } // namespace clash4d
