@@ -94,8 +94,11 @@ public:
   // the kernel cannot tell a sign a point depends on (search/Witness.h).
   // cells: closed, the generic points near_in_space makes, if made already
   // (a filter's, exact/Filtered_runner.h); they are checked the same.
+  // world: the sub-span's world planes (Witness::world_planes), when the
+  // stage made them already.
   void make_witness(const Search_goal<FT>& goal, const Vector3<FT>& shear, const Moving& A, const Moving& B,
-                    const Time_span<FT>& span, Pair_result<FT>& r, const std::array<V4, 2>* cells = nullptr) const
+                    const Time_span<FT>& span, Pair_result<FT>& r, const std::array<V4, 2>* cells = nullptr,
+                    const std::vector<H>* world = nullptr) const
   {
     Witness<K> w(k_);
     V4 contact = goal.contact;
@@ -119,7 +122,8 @@ public:
       r.witness_verified = is_valid_touch(k_, model_, r.a, r.b, r.witness, r.witness_cells[0], r.witness_cells[1]);
       r.contact_cells = r.witness_cells;
     } else {
-      std::optional<V4> in = w.make(goal.inside, shear, A, B, span.lo, span.hi);
+      std::optional<V4> in =
+          world ? w.make_on(goal.inside, shear, *world) : w.make(goal.inside, shear, A, B, span.lo, span.hi);
       if (!in) return unmade();
       r.witness = *in;
       r.witness_verified = is_valid_witness(k_, model_, r.a, r.b, r.witness);
@@ -202,7 +206,13 @@ private:
         if (convex_only) return false;
       } else {
         ++stats_.convex_spans;
-        if (goal.improved) found(index, goal, Vector3<FT>{FT(0), FT(0), FT(0)}, A, B, span, r);
+        if (goal.improved) {
+          // Regularised: the witness is made on the pair's rows, which are
+          // the sub-span's world planes, mostly made by the stage already.
+          std::vector<H> rows;
+          if (!goal.closed()) rows = convex->world_rows();
+          found(index, goal, Vector3<FT>{FT(0), FT(0), FT(0)}, A, B, span, r, goal.closed() ? nullptr : &rows);
+        }
         return true;
       }
     }
@@ -236,14 +246,14 @@ private:
   // Found on sub-span `index` (or, earliest mode, earlier than before): the
   // witness and contact point are made with this span's planes and frame.
   void found(std::size_t index, const Search_goal<FT>& goal, const Vector3<FT>& shear, const Moving& A,
-             const Moving& B, const Time_span<FT>& span, Pair_result<FT>& r)
+             const Moving& B, const Time_span<FT>& span, Pair_result<FT>& r, const std::vector<H>* world = nullptr)
   {
     policy_.found_in_span(index);
     Stage_clock clock(stats_.timed);
     r.collide = true;
     r.has_witness = false;
     if (policy_.witness_certified() && policy_.witness_answers(goal))
-      policy_.attempt([&] { make_witness(goal, shear, A, B, span, r); });
+      policy_.attempt([&] { make_witness(goal, shear, A, B, span, r, nullptr, world); });
     stats_.seconds_witness += clock.seconds();
     if (K::is_exact && r.has_witness && !r.witness_verified)
       throw std::logic_error("internal error: the exact witness failed its check; please report this scene");

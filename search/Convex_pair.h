@@ -129,6 +129,17 @@ public:
   std::size_t span_index() const { return index_; }
   const Found& found() const { return found_; }
 
+  // The sub-span's rows, in order: A's planes, B's, t >= lo, t <= hi: the
+  // world planes Witness::world_planes makes of a pair of single
+  // primitives, by the same extrusions (most made by decide already).
+  std::vector<H> world_rows()
+  {
+    std::vector<H> all;
+    all.reserve(rows_.size());
+    for (std::size_t j = 0; j < rows_.size(); ++j) all.push_back(row(j));
+    return all;
+  }
+
   // Sub-span `index` (time order), where A and B move as given: apart, or
   // collide with the goal holding what the cascade would record (the
   // point inside; closed, the point with a point inside each object at its

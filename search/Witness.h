@@ -31,8 +31,14 @@ public:
   std::optional<V4> make(V4 p, const Vector3<FT>& shear, const Moving& A, const Moving& B, const FT& lo,
                          const FT& hi) const
   {
+    return make_on(p, shear, world_planes(A, B, lo, hi));
+  }
+  // The same on the sub-span's world planes as world_planes makes them,
+  // made already (a convex pair's rows, search/Convex_pair.h).
+  std::optional<V4> make_on(V4 p, const Vector3<FT>& shear, const std::vector<H>& world) const
+  {
     to_world(p, shear);
-    return generic_snapped(p, world_planes(A, B, lo, hi), 4);
+    return generic_snapped(p, world, 4);
   }
 
   // Earliest (regularised): a generic point strictly inside both objects
@@ -93,6 +99,19 @@ public:
     return {FT(1), FT(j), FT(j * j), dims == 4 ? FT(j * j * j) : FT(0)};
   }
 
+  // Both objects' planes extruded on the sub-span [lo, hi] (A's, B's, then
+  // t >= lo and t <= hi): the planes make keeps the witness off.
+  static std::vector<H> world_planes(const Moving& A, const Moving& B, const FT& lo, const FT& hi)
+  {
+    std::vector<H> world;
+    world.reserve(A.object->csg.plane_count() + B.object->csg.plane_count() + 2);
+    add_object_planes(A, world);
+    add_object_planes(B, world);
+    world.push_back(time_at_least(lo));
+    world.push_back(time_at_most(hi));
+    return world;
+  }
+
 private:
   const K& k_;
 
@@ -115,16 +134,6 @@ private:
     return planes;
   }
 
-  static std::vector<H> world_planes(const Moving& A, const Moving& B, const FT& lo, const FT& hi)
-  {
-    std::vector<H> world;
-    world.reserve(A.object->csg.plane_count() + B.object->csg.plane_count() + 2);
-    add_object_planes(A, world);
-    add_object_planes(B, world);
-    world.push_back(time_at_least(lo));
-    world.push_back(time_at_most(hi));
-    return world;
-  }
 
   // Which planes are zero at the current point, for a kernel that cannot
   // tell (signs given): at the contact, as signs says; after a step along
