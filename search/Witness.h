@@ -134,7 +134,6 @@ private:
     return planes;
   }
 
-
   // Which planes are zero at the current point, for a kernel that cannot
   // tell (signs given): at the contact, as signs says; after a step along
   // direction `direction` (safe_step moves off every plane the step is not
