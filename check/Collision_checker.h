@@ -62,6 +62,9 @@ public:
   // Convex pairs are decided by linear programs first (search/Convex_pair.h,
   // beyond the paper); off, every pair goes through the paper's cascade.
   void use_convex_lp(bool on) { convex_lp_ = on; }
+  // The witness checks take their plane sides from `sides` (the same signs,
+  // decided another way: model/Point_classifier.h); none, the kernel's.
+  void check_points_with(const Sides_at<FT>* sides) { sides_ = sides; }
 
   // earliest: find t* (§5) rather than stopping at the first witness;
   // ceiling: in that mode, ignore collisions that start at or after it.
@@ -109,8 +112,8 @@ public:
       // (Convex_pair::cell): only the cell points are left to check.
       r.witness = contact;
       r.witness_cells = {goal.cell_a, goal.cell_b};
-      r.witness_verified =
-          is_generic_inside(k_, model_, r.a, goal.cell_a) && is_generic_inside(k_, model_, r.b, goal.cell_b);
+      r.witness_verified = is_generic_inside(k_, model_, r.a, goal.cell_a, sides_) &&
+                           is_generic_inside(k_, model_, r.b, goal.cell_b, sides_);
       r.contact_cells = r.witness_cells;
     } else if (goal.closed()) {
       std::optional<V4> ga = cells ? (*cells)[0] : w.near_in_space(goal.contact, goal.toward_a, shear, A),
@@ -119,14 +122,15 @@ public:
       if (!gb) return unmade();
       r.witness = contact;
       r.witness_cells = {*ga, *gb};
-      r.witness_verified = is_valid_touch(k_, model_, r.a, r.b, r.witness, r.witness_cells[0], r.witness_cells[1]);
+      r.witness_verified =
+          is_valid_touch(k_, model_, r.a, r.b, r.witness, r.witness_cells[0], r.witness_cells[1], sides_);
       r.contact_cells = r.witness_cells;
     } else {
       std::optional<V4> in =
           world ? w.make_on(goal.inside, shear, *world) : w.make(goal.inside, shear, A, B, span.lo, span.hi);
       if (!in) return unmade();
       r.witness = *in;
-      r.witness_verified = is_valid_witness(k_, model_, r.a, r.b, r.witness);
+      r.witness_verified = is_valid_witness(k_, model_, r.a, r.b, r.witness, sides_);
       if (goal.earliest && goal.convex) {
         // A convex pair's region is one cell, whose closure holds the
         // contact point (it lies in P, proven row by row): the witness is
@@ -136,7 +140,7 @@ public:
         std::optional<V4> g = w.near(goal.contact, goal.inside, shear, A, B, span.lo, span.hi);
         if (!g) return unmade();
         r.contact_cells = {*g, *g};
-        r.witness_verified = r.witness_verified && is_valid_contact_cell(k_, model_, r.a, r.b, contact, *g);
+        r.witness_verified = r.witness_verified && is_valid_contact_cell(k_, model_, r.a, r.b, contact, *g, sides_);
       }
     }
     r.has_witness = true;
@@ -156,6 +160,7 @@ private:
   const Scene_model<K>& model_;
   Check_stats& stats_;
   bool use_sbounds_, convex_lp_ = true;
+  const Sides_at<FT>* sides_ = nullptr;
   const std::vector<Bounds>& settled_;
   Policy own_policy_;
   Policy& policy_;

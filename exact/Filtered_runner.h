@@ -30,6 +30,7 @@
 #define CLASH4D_EXACT_FILTERED_RUNNER_H
 
 #include "check/Check_runner.h"
+#include "exact/Certified_sides.h"
 #include "exact/Exact_witness_signs.h"
 #include "exact/Interval_filter.h"
 #include "exact/Lazy_once.h"
@@ -200,6 +201,7 @@ private:
         return *r;
     Collision_checker<EK> checker(ek_, emodel_, esettled_, stats, use_sbounds_);
     checker.use_convex_lp(convex_lp_);
+    checker.check_points_with(&certified_);
     return checker.check_pair(a, b, options.earliest, ceiling, options.semantics);
   }
 
@@ -225,6 +227,7 @@ private:
     need_model(b);
     Check_stats estats = stats.fresh();
     Collision_checker<EK> checker(ek_, emodel_, esettled_, estats, use_sbounds_);
+    checker.check_points_with(&certified_);
     std::optional<Pair_result<EFT>> r = checker.check_convex_pair(a, b, options.earliest, ceiling, options.semantics);
     if (r) {
       stats = estats;
@@ -289,7 +292,7 @@ private:
     Moving_object<EFT> A = moving_on(emodel_, a, *span, {}), B = moving_on(emodel_, b, *span, {});
     const Vector3<EFT> no_shear{EFT(0), EFT(0), EFT(0)};
     std::optional<Vector4<EFT>> w = Witness<EK>(ek_).make(p, no_shear, A, B, span->lo, span->hi);
-    if (!w || !is_valid_witness(ek_, emodel_, a, b, *w)) return false;
+    if (!w || !is_valid_witness(ek_, emodel_, a, b, *w, &certified_)) return false;
     r = Pair_result<EFT>();
     r.a = a;
     r.b = b;
@@ -346,8 +349,9 @@ private:
     Vector3<EFT> shear = Extrusion<EK>::shear_of(A, B, g->frame, use_sbounds_);
     std::optional<std::array<Vector4<EFT>, 2>> cells;
     if (g->goal.closed() && !g->goal.convex) cells = interval_cells(*g, a, b, A, B, shear);
-    Collision_checker<EK>(ek_, emodel_, esettled_, ignored, use_sbounds_)
-        .make_witness(g->goal, shear, A, B, span, r, cells ? &*cells : nullptr);
+    Collision_checker<EK> checker(ek_, emodel_, esettled_, ignored, use_sbounds_);
+    checker.check_points_with(&certified_);
+    checker.make_witness(g->goal, shear, A, B, span, r, cells ? &*cells : nullptr);
     if (!r.witness_verified) return std::nullopt;   // not expected: the search in rationals decides
     r.earliest = earliest;
     return r;
@@ -358,6 +362,14 @@ private:
   // (Exact_witness_signs): EK's own points, whose space coordinates are
   // snapped (point intervals) and whose time is the contact's; or none,
   // and EK makes them. A and B, shear: EK's, on g's sub-span.
+  // The sides of object i's planes at y, a point of its solid, for the
+  // witness checks of EK's runs: intervals first (exact/Certified_sides.h).
+  Plane_sides<EFT> certified_sides(int i, const Vector3<EFT>& y) const
+  {
+    std::size_t o = static_cast<std::size_t>(i);
+    return clash4d::certified_sides(ak_, amodel_.objects[o].csg, ek_, emodel_.objects[o].csg, y);
+  }
+
   std::optional<std::array<Vector4<EFT>, 2>> interval_cells(const typename Interval_filter<Filtered_runner>::Exact_goal& g,
                                                             int a, int b, const Moving_object<EFT>& A,
                                                             const Moving_object<EFT>& B, const Vector3<EFT>& shear)
@@ -408,6 +420,7 @@ private:
     Check_stats rstats = stats.fresh();
     Replay replay(trail, &stages);
     Collision_checker<EK, Replay> checker(ek_, emodel_, esettled_, rstats, use_sbounds_, &replay);
+    checker.check_points_with(&certified_);
     checker.use_convex_lp(convex_lp_);
     Pair_result<EFT> r = checker.check_pair(a, b, earliest, nullptr, semantics);
     if (!r.collide || trail.diverged) return std::nullopt;
@@ -434,6 +447,8 @@ private:
     Lazy_once planed, built, settled, moved;
   };
   std::unique_ptr<Exact_parts[]> made_;
+  // The witness checks' plane sides in EK's runs (certified_sides).
+  const Sides_at<EFT> certified_{[this](int i, const Vector3<EFT>& y) { return certified_sides(i, y); }};
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
       stages_adopted_{0}, lines_rerun_{0}, witness_lines_{0}, convex_rational_{0}, closed_cells_{0},

@@ -213,7 +213,8 @@ public:
       r.witness = Witness<EK>(runner_->ek_)
                       .make(f.at_centre ? e.centre(f.centre_rows) : g, world, x.A, x.B, x.span.lo, x.span.hi)
                       .value();   // rationals tell every sign
-      if (!is_valid_witness(runner_->ek_, runner_->emodel_, r.a, r.b, r.witness)) return std::nullopt;
+      if (!is_valid_witness(runner_->ek_, runner_->emodel_, r.a, r.b, r.witness, &runner_->certified_))
+        return std::nullopt;
     }
     Vector4<EFT> p = f.at_vertex ? e.vertex(f.basis) : f.at_centre ? r.witness : g;
     if (closed) {

@@ -9,6 +9,7 @@
 #include "model/Formula.h"
 #include "model/Scene_model.h"
 #include <algorithm>
+#include <functional>
 #include <vector>
 
 namespace clash4d {
@@ -84,14 +85,23 @@ struct Plane_sides {
   std::vector<std::size_t> first;   // primitive p's planes start at first[p]
   CGAL::Sign at(int p, std::size_t j) const { return sides[first[static_cast<std::size_t>(p)] + j]; }
 
+  // The kernel's signs of m's planes at y.
   template <class K>
   Plane_sides(const K& k, const Csg_model<FT>& m, const Vector3<FT>& y)
+    : Plane_sides(m, [&](int p, std::size_t j) {
+        const Plane3<FT>& pl = m.primitives[static_cast<std::size_t>(p)].planes[j];
+        return k.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], y);
+      })
+  {}
+  // side(p, j): the sign of plane j of primitive p, however it is decided.
+  template <class Side>
+  Plane_sides(const Csg_model<FT>& m, Side side)
   {
     first.reserve(m.primitives.size());
     sides.reserve(m.plane_count());
-    for (const auto& prim : m.primitives) {
+    for (std::size_t p = 0; p < m.primitives.size(); ++p) {
       first.push_back(sides.size());
-      for (const auto& pl : prim.planes) sides.push_back(k.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], y));
+      for (std::size_t j = 0; j < m.primitives[p].planes.size(); ++j) sides.push_back(side(static_cast<int>(p), j));
     }
   }
   // Strictly inside the solid, on none of its planes.
@@ -102,12 +112,27 @@ struct Plane_sides {
   }
 };
 
+// Where the checks below take the sides of object i's planes at a point y
+// of its solid: none, the kernel's signs on the model's planes; otherwise
+// the same signs decided another way (a filter's, intervals first:
+// exact/Filtered_runner.h, certified_sides).
+template <class FT>
+using Sides_at = std::function<Plane_sides<FT>(int i, const Vector3<FT>& y)>;
+
+template <class K>
+Plane_sides<typename K::FT> sides_at(const K& k, const Scene_model<K>& model, int i,
+                                     const Vector3<typename K::FT>& y, const Sides_at<typename K::FT>* sides)
+{
+  return sides ? (*sides)(i, y) : Plane_sides<typename K::FT>(k, model.objects[i].csg, y);
+}
+
 // g is strictly inside object i at its time, on none of its planes.
 template <class K>
-bool is_generic_inside(const K& k, const Scene_model<K>& model, int i, const Vector4<typename K::FT>& g)
+bool is_generic_inside(const K& k, const Scene_model<K>& model, int i, const Vector4<typename K::FT>& g,
+                       const Sides_at<typename K::FT>* sides = nullptr)
 {
   const Object_model<typename K::FT>& o = model.objects[i];
-  return Plane_sides<typename K::FT>(k, o.csg, solid_point(k, o, g)).generic_inside(o.csg);
+  return sides_at(k, model, i, solid_point(k, o, g), sides).generic_inside(o.csg);
 }
 
 // Whether p = (x, t) is in the closure of the cell of object i whose sides
@@ -118,38 +143,33 @@ bool is_generic_inside(const K& k, const Scene_model<K>& model, int i, const Vec
 // do).
 template <class K>
 bool is_in_closure_of(const K& k, const Scene_model<K>& model, int i, const Vector4<typename K::FT>& p,
-                      const Plane_sides<typename K::FT>& at_g)
+                      const Plane_sides<typename K::FT>& at_g, const Sides_at<typename K::FT>* sides = nullptr)
 {
-  using FT = typename K::FT;
-  const Object_model<FT>& o = model.objects[i];
-  Vector3<FT> yp = solid_point(k, o, p);
-  for (std::size_t q = 0; q < o.csg.primitives.size(); ++q)
-    for (std::size_t j = 0; j < o.csg.primitives[q].planes.size(); ++j) {
-      const auto& pl = o.csg.primitives[q].planes[j];
-      CGAL::Sign at_p = k.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], yp);
-      if (at_p != CGAL::ZERO && at_p != at_g.at(static_cast<int>(q), j)) return false;
-    }
+  Plane_sides<typename K::FT> at_p = sides_at(k, model, i, solid_point(k, model.objects[i], p), sides);
+  for (std::size_t n = 0; n < at_p.sides.size(); ++n)
+    if (at_p.sides[n] != CGAL::ZERO && at_p.sides[n] != at_g.sides[n]) return false;
   return true;
 }
 // g strictly inside object i at its time, on none of its planes, with p
 // in the closure of its cell: its sides evaluated once for both.
 template <class K>
 bool is_generic_inside_near(const K& k, const Scene_model<K>& model, int i, const Vector4<typename K::FT>& p,
-                            const Vector4<typename K::FT>& g)
+                            const Vector4<typename K::FT>& g, const Sides_at<typename K::FT>* sides = nullptr)
 {
   const Object_model<typename K::FT>& o = model.objects[i];
-  Plane_sides<typename K::FT> at_g(k, o.csg, solid_point(k, o, g));
-  return at_g.generic_inside(o.csg) && is_in_closure_of(k, model, i, p, at_g);
+  Plane_sides<typename K::FT> at_g = sides_at(k, model, i, solid_point(k, o, g), sides);
+  return at_g.generic_inside(o.csg) && is_in_closure_of(k, model, i, p, at_g, sides);
 }
 
 // A witness (x, y, z, t) of a collision of objects a and b: tL < t < tH, and
 // x - D(t) strictly inside both solids and on none of their planes. Evaluated
 // on the 3D solids moved back by D(t), independently of the extrusion.
 template <class K>
-bool is_valid_witness(const K& k, const Scene_model<K>& model, int a, int b, const Vector4<typename K::FT>& w)
+bool is_valid_witness(const K& k, const Scene_model<K>& model, int a, int b, const Vector4<typename K::FT>& w,
+                      const Sides_at<typename K::FT>* sides = nullptr)
 {
   if (!(k.less(model.t_lo, w[3]) && k.less(w[3], model.t_hi))) return false;
-  return is_generic_inside(k, model, a, w) && is_generic_inside(k, model, b, w);
+  return is_generic_inside(k, model, a, w, sides) && is_generic_inside(k, model, b, w, sides);
 }
 
 // Closed semantics (scene-format.md): p with tL <= t <= tH lies in both
@@ -157,12 +177,13 @@ bool is_valid_witness(const K& k, const Scene_model<K>& model, int a, int b, con
 // p's time, each with p in the closure of its cell.
 template <class K>
 bool is_valid_touch(const K& k, const Scene_model<K>& model, int a, int b, const Vector4<typename K::FT>& p,
-                    const Vector4<typename K::FT>& ga, const Vector4<typename K::FT>& gb)
+                    const Vector4<typename K::FT>& ga, const Vector4<typename K::FT>& gb,
+                    const Sides_at<typename K::FT>* sides = nullptr)
 {
   if (k.less(p[3], model.t_lo) || k.less(model.t_hi, p[3])) return false;
   for (auto [i, g] : {std::pair<int, const Vector4<typename K::FT>*>{a, &ga}, {b, &gb}}) {
     if (k.compare((*g)[3], p[3]) != CGAL::ZERO) return false;
-    if (!is_generic_inside_near(k, model, i, p, *g)) return false;
+    if (!is_generic_inside_near(k, model, i, p, *g, sides)) return false;
   }
   return true;
 }
@@ -172,10 +193,10 @@ bool is_valid_touch(const K& k, const Scene_model<K>& model, int a, int b, const
 // both objects.
 template <class K>
 bool is_valid_contact_cell(const K& k, const Scene_model<K>& model, int a, int b, const Vector4<typename K::FT>& c,
-                           const Vector4<typename K::FT>& g)
+                           const Vector4<typename K::FT>& g, const Sides_at<typename K::FT>* sides = nullptr)
 {
   if (!(k.less(model.t_lo, g[3]) && k.less(g[3], model.t_hi))) return false;
-  return is_generic_inside_near(k, model, a, c, g) && is_generic_inside_near(k, model, b, c, g);
+  return is_generic_inside_near(k, model, a, c, g, sides) && is_generic_inside_near(k, model, b, c, g, sides);
 }
 
 } // namespace clash4d

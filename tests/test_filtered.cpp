@@ -26,6 +26,7 @@
 
 #include "search/Generate_and_test.h"
 #include "search/Witness.h"
+#include "exact/Certified_sides.h"
 #include "exact/Exact_witness_signs.h"
 #include "model/Point_classifier.h"
 #include "verify/Object_model.h"
@@ -34,6 +35,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <random>
 #include <sstream>
 
 using namespace clash4d;
@@ -1164,6 +1166,66 @@ BOOST_AUTO_TEST_CASE(witness_the_intervals_cannot_make_is_none)
   std::optional<Vector4<Rational>> exact = r.make({Rational(3, 4), half, half, half});
   BOOST_TEST_REQUIRE((sure.has_value() && exact.has_value()));
   for (int q = 0; q < 4; ++q) BOOST_TEST(((*sure)[q].is_point() && Rational((*sure)[q].inf()) == (*exact)[q]), q);
+}
+
+// The witness checks of rational runs take their plane sides from intervals
+// where those certify them (exact/Certified_sides.h): the same sides as
+// the rationals', plane for plane, at every fixture object's vertices
+// (points on three or more planes: zeros the intervals cannot certify), at
+// points off a vertex by 2^-70 (nonzero, within the intervals' width) and
+// at seeded random points of its box. Both ways of deciding are taken.
+BOOST_AUTO_TEST_CASE(certified_sides_are_the_rationals)
+{
+  std::uint64_t seed = env_number("CLASH4D_SEED", 20261129);
+  BOOST_TEST_MESSAGE("certified_sides_are_the_rationals: seed " << seed);
+  std::mt19937_64 rng(seed);
+  Interval_kernel ak;
+  Rational_kernel ek;
+  const Rational tiny = power_of_two(-70);
+  std::size_t points = 0, planes = 0, exactly = 0;
+  for (const std::string& entry : fixture_scenes()) {
+    Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/" + entry);
+    Scene_model<Interval_kernel> am = [&] {
+      Interval_kernel::Protector protect;
+      return Scene_model<Interval_kernel>::build(ak, scene);
+    }();
+    Scene_model<Rational_kernel> em = Scene_model<Rational_kernel>::build(ek, scene);
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+      const Csg_model<Rational>& exact = em.objects[i].csg;
+      std::vector<Vector3<Rational>> ys;
+      for (const auto& prim : exact.primitives) {
+        for (const auto& v : prim.vertices) {
+          ys.push_back(v);
+          ys.push_back({v[0] + tiny, v[1] - tiny, v[2] + tiny});
+        }
+        const Box<Rational, 3>& b = prim.box;
+        if (b.empty || !b.has_lo[0] || !b.has_hi[0] || !b.has_lo[1] || !b.has_hi[1] || !b.has_lo[2] || !b.has_hi[2])
+          continue;
+        std::uniform_int_distribution<int> k(0, 64);
+        for (int n = 0; n < 4; ++n) {
+          Vector3<Rational> y;
+          for (int q = 0; q < 3; ++q) y[q] = b.lo[q] + (b.hi[q] - b.lo[q]) * Rational(k(rng), 64);
+          ys.push_back(y);
+        }
+      }
+      for (const auto& y : ys) {
+        std::size_t before = exactly;
+        Plane_sides<Rational> got = certified_sides(ak, am.objects[i].csg, ek, exact, y, &exactly);
+        Plane_sides<Rational> want(ek, exact, y);
+        BOOST_TEST((got.sides == want.sides), entry << " object " << scene.objects[i].name << " at " << to_string(y[0])
+                                                    << " " << to_string(y[1]) << " " << to_string(y[2]));
+        BOOST_TEST((got.first == want.first));
+        BOOST_TEST(exactly - before <= want.sides.size());
+        planes += want.sides.size();
+        ++points;
+      }
+    }
+  }
+  BOOST_TEST_MESSAGE("certified_sides_are_the_rationals: " << points << " points, " << planes << " sides, "
+                                                           << exactly << " decided in rationals");
+  BOOST_TEST(points > 1000u);
+  BOOST_TEST(exactly > 0u);            // the zeros at vertices, at least
+  BOOST_TEST(exactly * 4 < planes);    // most sides in intervals: the point of the filter
 }
 
 // Closed semantics: the generic points beside a touch on planes that are no
