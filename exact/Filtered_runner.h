@@ -24,6 +24,9 @@
 // and otherwise they are made from its last improvement's line in EK as
 // above, or a rational run replays that improvement (Earliest_replay);
 // where that fails, earliest mode runs the whole search in rationals.
+// Every witness EK makes is checked against the scene with plane sides
+// that AK's model decides where it can certify them (exact/
+// Certified_sides.h): the same check, most planes in intervals.
 //
 // EK's model is built object by object, only for objects that need it.
 #ifndef CLASH4D_EXACT_FILTERED_RUNNER_H
