@@ -360,11 +360,6 @@ private:
     return r;
   }
 
-  // Closed: each object's generic point near the contact (Witness::
-  // near_in_space) made in AK, the signs AK cannot tell there asked of EK
-  // (Exact_witness_signs): EK's own points, whose space coordinates are
-  // snapped (point intervals) and whose time is the contact's; or none,
-  // and EK makes them. A and B, shear: EK's, on g's sub-span.
   // The sides of object i's planes at y, a point of its solid, for the
   // witness checks of EK's runs: intervals first (exact/Certified_sides.h).
   Plane_sides<EFT> certified_sides(int i, const Vector3<EFT>& y) const
@@ -373,6 +368,11 @@ private:
     return clash4d::certified_sides(ak_, amodel_.objects[o].csg, ek_, emodel_.objects[o].csg, y);
   }
 
+  // Closed: each object's generic point near the contact (Witness::
+  // near_in_space) made in AK, the signs AK cannot tell there asked of EK
+  // (Exact_witness_signs): EK's own points, whose space coordinates are
+  // snapped (point intervals) and whose time is the contact's; or none,
+  // and EK makes them. A and B, shear: EK's, on g's sub-span.
   std::optional<std::array<Vector4<EFT>, 2>> interval_cells(const typename Interval_filter<Filtered_runner>::Exact_goal& g,
                                                             int a, int b, const Moving_object<EFT>& A,
                                                             const Moving_object<EFT>& B, const Vector3<EFT>& shear)

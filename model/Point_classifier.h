@@ -114,8 +114,8 @@ struct Plane_sides {
 
 // Where the checks below take the sides of object i's planes at a point y
 // of its solid: none, the kernel's signs on the model's planes; otherwise
-// the same signs decided another way (a filter's, intervals first:
-// exact/Filtered_runner.h, certified_sides).
+// the same signs of the same model's planes, decided another way (a
+// filter's, intervals first: exact/Certified_sides.h).
 template <class FT>
 using Sides_at = std::function<Plane_sides<FT>(int i, const Vector3<FT>& y)>;
 
