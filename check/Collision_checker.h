@@ -213,10 +213,11 @@ private:
         ++stats_.convex_spans;
         if (goal.improved) {
           // Regularised: the witness is made on the pair's rows, which are
-          // the sub-span's world planes, mostly made by the stage already.
-          std::vector<H> rows;
+          // the sub-span's world planes, mostly made by the stage already
+          // (a closed witness reads none).
+          std::optional<std::vector<H>> rows;
           if (!goal.closed()) rows = convex->world_rows();
-          found(index, goal, Vector3<FT>{FT(0), FT(0), FT(0)}, A, B, span, r, goal.closed() ? nullptr : &rows);
+          found(index, goal, Vector3<FT>{FT(0), FT(0), FT(0)}, A, B, span, r, rows ? &*rows : nullptr);
         }
         return true;
       }
