@@ -230,15 +230,19 @@ private:
 
 // The 3D S-bounds of every object on its own (§4.3.1), settled once and
 // shared by every pair: §6's per-partner arrays start from these, and each
-// pair narrows its own copies. Without S-bounds (--no-sbounds), the leaves'
-// boxes as they are.
+// pair narrows its own copies. Without S-bounds (--no-sbounds), §4.1's
+// original procedure: the leaves' boxes as they are, and each node's the
+// box of its children's (the upward rule once: join, meet, a difference's
+// first child), so that an object made of bounded primitives has a bounded
+// box; its root is "the object enclosed" at each velocity change.
 template <class K>
 typename S_bounds<K>::Bounds settled_bounds(const K& k, const Csg_model<typename K::FT>& csg, Check_stats& stats,
                                             bool use_sbounds)
 {
   S_bounds<K> sb(k);
   typename S_bounds<K>::Bounds b = sb.initial(csg);
-  stats.sbound_passes += use_sbounds ? sb.settle(csg, b, S_bounds<K>::max_passes) : 0;
+  if (use_sbounds) stats.sbound_passes += sb.settle(csg, b, S_bounds<K>::max_passes);
+  else sb.up(csg, b);
   return b;
 }
 
