@@ -9,12 +9,17 @@
 //
 // What each column times: exact and double run `check` on the scene (their
 // model is built from the scene's numbers on every query, as `check` does);
-// "fcl us" is FCL's query alone on shapes converted once (how FCL is used),
-// "fcl+build us" adds the conversion (exact hull, rounding, fcl::Convexd),
-// which is what the comparer's fcl subject pays.
+// "prep us" is exact's check on the scene prepared once (exact/
+// Exact_checker.h: model, S-bounds, sweep and guides kept; the same answer,
+// witness included), "fcl us" FCL's query alone on shapes converted once
+// (how FCL is used), "fcl+build us" adds the conversion (exact hull,
+// rounding, fcl::Convexd), which is what the comparer's fcl subject pays.
+// "prep/fcl" holds the two prepared queries side by side; "exact/fcl" the
+// whole check against FCL's prepared query.
 #include "compare/Fcl_subject.h"
 #include "bench/Fcl_cases.h"
 #include "bench/Timing.h"
+#include "exact/Exact_checker.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
 #include "scene/Files.h"
@@ -38,6 +43,8 @@ void row(const Case& c, double min_seconds)
 {
   Check_options opts;
   Timing e = time_it([&] { return check_exact(c.scene, opts).collide; }, min_seconds);
+  Exact_checker prepared(c.scene);
+  Timing p = time_it([&] { return prepared.check(opts).collide; }, min_seconds);
   Timing d = time_it([&] { return check_double(c.scene, 0, opts).collide; }, min_seconds);
   Fcl_subject fcl(c.scene);
   if (!fcl.expressible()) {
@@ -46,10 +53,12 @@ void row(const Case& c, double min_seconds)
   }
   Timing f = time_it([&] { return fcl.time_of_contact(0, 1).has_value(); }, min_seconds);
   Timing fb = time_it([&] { return Fcl_subject(c.scene).check(opts).collide; }, min_seconds);
-  std::printf("%-22s %9.1f %9.1f %9.1f %12.1f %9.1f %10.1f   %-7s %-7s %-7s\n", c.name.c_str(),
-              e.seconds_per_query * 1e6, d.seconds_per_query * 1e6, f.seconds_per_query * 1e6,
-              fb.seconds_per_query * 1e6, e.seconds_per_query / f.seconds_per_query,
-              d.seconds_per_query / f.seconds_per_query, verdict(e.collide), verdict(d.collide), verdict(f.collide));
+  std::printf("%-22s %9.1f %8.1f %9.1f %9.1f %12.1f %9.1f %8.2f %10.1f   %-7s %-7s %-7s\n", c.name.c_str(),
+              e.seconds_per_query * 1e6, p.seconds_per_query * 1e6, d.seconds_per_query * 1e6,
+              f.seconds_per_query * 1e6, fb.seconds_per_query * 1e6, e.seconds_per_query / f.seconds_per_query,
+              p.seconds_per_query / f.seconds_per_query, d.seconds_per_query / f.seconds_per_query, verdict(e.collide),
+              verdict(d.collide), verdict(f.collide));
+  if (p.collide != e.collide) throw std::logic_error(c.name + ": the prepared check's verdict differs from check's");
 }
 
 const char* usage = "usage: clash4d_fcl_bench [--seed N] [--min-seconds S] [--dump-scenes DIR]\n";
@@ -90,8 +99,8 @@ int run_bench(int argc, char** argv)
   if (!dump_dir.empty() && !std::filesystem::is_directory(dump_dir))
     throw std::invalid_argument("--dump-scenes " + dump_dir + ": not a directory");
   std::printf("clash4d_fcl_bench: seed %lu (hulls), at least %g s per measurement\n", seed, min_seconds);
-  std::printf("%-22s %9s %9s %9s %12s %9s %10s   %-7s %-7s %-7s\n", "case", "exact us", "double us", "fcl us",
-              "fcl+build us", "exact/fcl", "double/fcl", "exact", "double", "fcl");
+  std::printf("%-22s %9s %8s %9s %9s %12s %9s %8s %10s   %-7s %-7s %-7s\n", "case", "exact us", "prep us",
+              "double us", "fcl us", "fcl+build us", "exact/fcl", "prep/fcl", "double/fcl", "exact", "double", "fcl");
   for (const Case& c : all_cases(seed)) {
     if (!dump_dir.empty()) {
       std::string file = c.name;

@@ -65,6 +65,10 @@ public:
   // The witness checks take their plane sides from `sides` (the same signs,
   // decided another way: model/Point_classifier.h); none, the kernel's.
   void check_points_with(const Sides_at<FT>* sides) { sides_ = sides; }
+  // Convex pairs take their objects' guides from `guides`, which keeps
+  // them across pairs and queries (search/Convex_guide.h); none, each pair
+  // makes its own.
+  void use_guides(const Guide_source* guides) { guides_ = guides; }
 
   // earliest: find t* (§5) rather than stopping at the first witness;
   // ceiling: in that mode, ignore collisions that start at or after it.
@@ -161,6 +165,7 @@ private:
   Check_stats& stats_;
   bool use_sbounds_, convex_lp_ = true;
   const Sides_at<FT>* sides_ = nullptr;
+  const Guide_source* guides_ = nullptr;
   const std::vector<Bounds>& settled_;
   Policy own_policy_;
   Policy& policy_;
@@ -179,7 +184,8 @@ private:
     goal.semantics = semantics;
     if (ceiling) { goal.has_ceiling = true; goal.ceiling = *ceiling; }
     std::optional<Convex_pair<K, Policy>> convex;
-    if (convex_lp_ && Convex_pair<K>::applies(model_, a, b)) convex.emplace(k_, model_, a, b, &policy_);
+    if (convex_lp_ && Convex_pair<K>::applies(model_, a, b))
+      convex.emplace(k_, model_, a, b, &policy_, guides_ ? Convex_guides{(*guides_)(a), (*guides_)(b)} : Convex_guides{});
     std::size_t index = 0;
     for (const auto& span : model_.sub_spans({a, b})) {
       std::size_t here = index++;

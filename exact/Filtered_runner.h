@@ -43,10 +43,12 @@
 #include "search/Witness.h"
 #include <CGAL/Uncertain.h>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 
 namespace clash4d {
 
@@ -74,8 +76,12 @@ public:
     for (std::size_t i = 0; i < scene.objects.size(); ++i) emodel_.objects[i].name = scene.objects[i].name;
   }
 
+  // May be called again on the same scene (a prepared scene: the model,
+  // S-bounds, sweeps and guides are made once), one call at a time; each
+  // answer is the one a fresh runner gives, its stats counting its own work.
   Check_answer check(const Check_options& options)
   {
+    reset_counts();
     convex_lp_ = options.convex_lp;
     Check_answer answer;
     answer.stats.timed = options.stage_seconds;
@@ -98,8 +104,9 @@ public:
 
   Skeleton_answer skeleton()
   {
+    if (!use_sbounds_) throw std::logic_error("Filtered_runner::skeleton: made without S-bounds");
+    reset_counts();
     Skeleton_answer answer;
-    use_sbounds_ = true;
     std::vector<std::pair<int, int>> pairs;
     if (!prepare(answer.stats, pairs)) {
       answer = run_skeleton(ek_, scene_);
@@ -156,6 +163,7 @@ private:
         Collision_checker<AK, Interval_filter<Filtered_runner>> checker(ak_, amodel_, asettled_, astats, use_sbounds_,
                                                                         &policy);
         checker.use_convex_lp(convex_lp_);
+        checker.use_guides(&guide_source_);
         Pair_result<AFT> found =
             checker.check_pair(a, b, options.earliest, ceiling ? &aceiling : nullptr, options.semantics);
         if (!found.collide) {
@@ -205,6 +213,7 @@ private:
     Collision_checker<EK> checker(ek_, emodel_, esettled_, stats, use_sbounds_);
     checker.use_convex_lp(convex_lp_);
     checker.check_points_with(&certified_);
+    checker.use_guides(&guide_source_);
     return checker.check_pair(a, b, options.earliest, ceiling, options.semantics);
   }
 
@@ -231,6 +240,7 @@ private:
     Check_stats estats = stats.fresh();
     Collision_checker<EK> checker(ek_, emodel_, esettled_, estats, use_sbounds_);
     checker.check_points_with(&certified_);
+    checker.use_guides(&guide_source_);
     std::optional<Pair_result<EFT>> r = checker.check_convex_pair(a, b, options.earliest, ceiling, options.semantics);
     if (r) {
       stats = estats;
@@ -354,6 +364,7 @@ private:
     if (g->goal.closed() && !g->goal.convex) cells = interval_cells(*g, a, b, A, B, shear);
     Collision_checker<EK> checker(ek_, emodel_, esettled_, ignored, use_sbounds_);
     checker.check_points_with(&certified_);
+    checker.use_guides(&guide_source_);
     checker.make_witness(g->goal, shear, A, B, span, r, cells ? &*cells : nullptr);
     if (!r.witness_verified) return std::nullopt;   // not expected: the search in rationals decides
     r.earliest = earliest;
@@ -424,6 +435,7 @@ private:
     Replay replay(trail, &stages);
     Collision_checker<EK, Replay> checker(ek_, emodel_, esettled_, rstats, use_sbounds_, &replay);
     checker.check_points_with(&certified_);
+    checker.use_guides(&guide_source_);
     checker.use_convex_lp(convex_lp_);
     Pair_result<EFT> r = checker.check_pair(a, b, earliest, nullptr, semantics);
     if (!r.collide || trail.diverged) return std::nullopt;
@@ -435,23 +447,36 @@ private:
   }
 
   const Scene& scene_;
-  bool use_sbounds_, convex_lp_ = true;
+  const bool use_sbounds_;
+  bool convex_lp_ = true;
   AK ak_;
   EK ek_;
   Scene_model<AK> amodel_;
   std::vector<typename S_bounds<AK>::Bounds> asettled_;
   std::vector<char> exact_only_;              // AK could not bound the object: its pairs go to EK
+  // What prepare made: AK's model and S-bounds; the sweep's pairs per
+  // semantics (regularised, closed). With the stats of their making.
+  struct Prepared {
+    bool done = false, ok = false;
+    std::vector<std::pair<int, int>> pairs;
+    Check_stats stats;
+  };
+  Prepared model_, sweeps_[2];
   Scene_model<EK> emodel_;                    // objects built on demand
   std::vector<typename S_bounds<EK>::Bounds> esettled_;
   std::vector<Object_model<EFT>> ebounds_;   // boxes-only trees (need_bounds)
   // Whether EK has made an object's planes, its whole model, its S-bounds,
   // its motion (one allocation per run: a convex pair's query is a few µs).
   struct Exact_parts {
-    Lazy_once planed, built, settled, moved;
+    Lazy_once planed, built, settled, moved, guided;
+    std::shared_ptr<const Convex_guide> guide;   // its convex-pair guide (guide(i)), not EK's but made as lazily
   };
   std::unique_ptr<Exact_parts[]> made_;
   // The witness checks' plane sides in EK's runs (certified_sides).
   const Sides_at<EFT> certified_{[this](int i, const Vector3<EFT>& y) { return certified_sides(i, y); }};
+  // Each object's convex-pair guide, made once (search/Convex_guide.h): all
+  // pairs of a check, and every check of a prepared scene, share it.
+  const Guide_source guide_source_{[this](int i) { return guide(i); }};
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
       stages_adopted_{0}, lines_rerun_{0}, witness_lines_{0}, convex_rational_{0}, closed_cells_{0},
@@ -516,8 +541,33 @@ private:
 
   // AK's model, each object's S-bounds (EK's where AK fails), and the sweep's
   // pairs. False when AK cannot build the model: the whole run goes to EK.
+  // Made once (the pairs once per semantics): a prepared scene's later
+  // checks reuse them, and their stats give the same counts with no time.
   bool prepare(Check_stats& stats, std::vector<std::pair<int, int>>& pairs,
                Semantics semantics = Semantics::regularised)
+  {
+    bool timed = stats.timed;
+    bool fresh_model = !model_.done;
+    if (fresh_model) {
+      model_.stats = stats.fresh();
+      model_.ok = build_model(model_.stats);
+      model_.done = true;
+    }
+    Prepared& sweep = sweeps_[semantics == Semantics::closed ? 1 : 0];
+    bool fresh_sweep = model_.ok && !sweep.done;
+    if (fresh_sweep) {
+      sweep.stats = fresh_model ? model_.stats : model_.stats.untimed();
+      sweep_pairs(sweep.stats, sweep.pairs, semantics);
+      sweep.done = true;
+    }
+    const Prepared& made = model_.ok ? sweep : model_;
+    bool made_now = model_.ok ? fresh_sweep : fresh_model;
+    stats = made_now ? made.stats : made.stats.untimed();
+    stats.timed = timed;
+    pairs = made.pairs;
+    return model_.ok;
+  }
+  bool build_model(Check_stats& stats)
   {
     std::size_t n = scene_.objects.size();
     exact_only_.assign(n, 0);
@@ -533,6 +583,10 @@ private:
     stats.seconds_model = clock.lap();
     for (std::size_t i = 0; i < n; ++i) asettled_.push_back(settle(static_cast<int>(i), stats));
     stats.seconds_sbounds += clock.seconds();
+    return true;
+  }
+  void sweep_pairs(Check_stats& stats, std::vector<std::pair<int, int>>& pairs, Semantics semantics)
+  {
     std::vector<char> certain;
     try {
       Protector protect;
@@ -540,12 +594,11 @@ private:
     } catch (const CGAL::Uncertain_conversion_exception&) {
       // The sweep could not order some motion times: sweep in EK instead.
       ++fallbacks_;
-      for (std::size_t i = 0; i < n; ++i) need_exact(static_cast<int>(i));
+      for (std::size_t i = 0; i < scene_.objects.size(); ++i) need_exact(static_cast<int>(i));
       pairs = candidate_pairs(ek_, emodel_, esettled_, scene_, stats, semantics);
-      return true;
+      return;
     }
     drop_apart_ties(pairs, certain, stats, semantics);
-    return true;
   }
 
   // The pairs the intervals' sweep kept only because their boxes might
@@ -677,6 +730,12 @@ private:
   {
     made_[i].moved.call([&] { emodel_.objects[i].motion = Motion_path<EFT>::build(ek_, scene_.objects[i].motion); });
   }
+  // Object i's convex-pair guide, made by the first pair that asks.
+  std::shared_ptr<const Convex_guide> guide(int i)
+  {
+    made_[i].guided.call([&] { made_[i].guide = Convex_guide::make(scene_.objects[static_cast<std::size_t>(i)]); });
+    return made_[i].guide;
+  }
   void need_exact(int i)
   {
     need_model(i);
@@ -704,6 +763,14 @@ private:
     return m;
   }
 
+  void reset_counts()
+  {
+    for (std::atomic<std::size_t>* c :
+         {&fallbacks_, &witness_runs_, &witness_replays_, &exact_regions_, &exact_planes_, &witnesses_by_intervals_,
+          &earliest_by_intervals_, &exact_stages_, &apart_proofs_, &apart_attempts_, &stages_adopted_, &lines_rerun_,
+          &witness_lines_, &convex_rational_, &closed_cells_, &witnesses_by_terms_})
+      c->store(0);
+  }
   void finish(Check_stats& stats) const
   {
     stats.exact_fallbacks = fallbacks_.load();

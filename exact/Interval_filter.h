@@ -174,7 +174,7 @@ public:
     }
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     ++stats_->convex_exact_signs;
-    convex_guide_ = stage.guide();
+    convex_guides_ = stage.guides();
     return CGAL::get_certain(p(exact_convex(stage.a(), stage.b(), stage.span_index())));
   }
   template <class Stage>
@@ -182,7 +182,7 @@ public:
   {
     convex_found_ = stage.found();
     convex_pair_ = {stage.a(), stage.b()};
-    convex_guide_ = stage.guide();
+    convex_guides_ = stage.guides();
   }
   // A convex pair's answer where the intervals made its point inside (or
   // its guess point) but only enclose the vertex at t* or the closed
@@ -604,10 +604,10 @@ private:
     Moving_object<EFT> A, B;
     Convex_pair<EK> stage;
     Exact_convex(Runner& runner, int a_, int b_, std::size_t i, Primitive_planes<EK>& pa, Primitive_planes<EK>& pb,
-                 std::shared_ptr<const Convex_guide> guide)
+                 const Convex_guides& guides)
       : a(a_), b(b_), index(i), span(runner.emodel_.sub_spans({a_, b_}).at(i)),
         A(moving_on(runner.emodel_, a_, span, {})), B(moving_on(runner.emodel_, b_, span, {})),
-        stage(runner.ek_, runner.emodel_, a_, b_, nullptr, std::move(guide))
+        stage(runner.ek_, runner.emodel_, a_, b_, nullptr, guides)
     {
       stage.use_planes(pa, pb);
       stage.start_span(i, A, B, span);
@@ -615,7 +615,7 @@ private:
   };
   std::unique_ptr<Exact_convex> exact_convex_;
   std::unique_ptr<Primitive_planes<EK>> exact_planes_[2];   // the pair's objects' (a filter is one pair's)
-  std::shared_ptr<const Convex_guide> convex_guide_;         // the interval stage's, shared
+  Convex_guides convex_guides_;                              // the interval stage's, shared
   std::optional<Convex_found> convex_found_;
   std::array<int, 2> convex_pair_{};                         // whose stage recorded convex_found_
 
@@ -630,7 +630,7 @@ private:
           exact_planes_[o] = std::make_unique<Primitive_planes<EK>>(
               runner_->ek_, runner_->scene_.objects[static_cast<std::size_t>(ids[o])].shape);
       exact_convex_ =
-          std::make_unique<Exact_convex>(*runner_, a, b, index, *exact_planes_[0], *exact_planes_[1], convex_guide_);
+          std::make_unique<Exact_convex>(*runner_, a, b, index, *exact_planes_[0], *exact_planes_[1], convex_guides_);
     }
     return exact_convex_->stage;
   }

@@ -126,6 +126,15 @@ struct Check_stats {
     return s;
   }
 
+  // The same counts, with no time: a part made before and reused
+  // (a prepared scene's model and sweep, exact/Filtered_runner.h).
+  Check_stats untimed() const
+  {
+    Check_stats s = *this;
+    s.seconds_sweep = s.seconds_model = s.seconds_sbounds = s.seconds_divide = s.seconds_witness = 0;
+    return s;
+  }
+
   // Adds another run's counts (pairs checked in parallel, merged in order).
   void add(const Check_stats& o)
   {

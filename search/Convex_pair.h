@@ -34,6 +34,7 @@
 #include "model/Extrusion.h"
 #include "model/Model_builder.h"
 #include "model/Primitive_planes.h"
+#include "search/Convex_guide.h"
 #include "search/Double_simplex.h"
 #include "search/No_filter.h"
 #include "search/Search_goal.h"
@@ -46,15 +47,6 @@
 
 namespace clash4d {
 
-// The guide's numbers: a scene's rationals rounded to the nearest double,
-// plain signs (what Model_builder and Motion_path need). Guesses only.
-struct Guide_numbers {
-  using FT = double;
-  static constexpr bool reads_exact_constructions = true;   // the reader's exact hull planes, rounded
-  double from_rational(const Rational& q) const { return nearest_double(q); }
-  CGAL::Sign sign(double x) const { return CGAL::sign(x); }
-};
-
 // What a convex pair's stage recorded in the goal, for a filter making the
 // answer in another kernel: the sub-span, the guess point (regularised:
 // inside P; closed, when not at a vertex, the witness) and the vertex's
@@ -66,16 +58,6 @@ struct Convex_found {
   Vector4<double> point{};
   bool at_centre = false;             // regularised: the point inside is the centre of these rows
   std::array<int, 5> centre_rows{};
-};
-
-// A pair's guide: each object's one primitive in doubles (Guide_numbers:
-// its planes, as a model's), its motion, and a point strictly inside its
-// solid, guessed (its vertices' mean). Made once per pair; another
-// kernel's stage on the same pair shares it.
-struct Convex_guide {
-  std::vector<Plane3<double>> planes[2];
-  Motion_path<double> motion[2];
-  Vector3<double> deep[2];
 };
 
 template <class K, class Policy = No_filter>
@@ -111,14 +93,17 @@ public:
   Convex_pair(const Convex_pair&) = delete;
   Convex_pair& operator=(const Convex_pair&) = delete;
 
-  // guide: the pair's, shared with another kernel's stage (made here when none).
+  // guides: the objects' (search/Convex_guide.h), shared with another
+  // kernel's stage or kept for many pairs; each made here when none.
   Convex_pair(const K& k, const Scene_model<K>& model, int a, int b, Policy* policy = nullptr,
-              std::shared_ptr<const Convex_guide> guide = nullptr)
-    : k_(k), model_(model), a_(a), b_(b), policy_(policy ? *policy : own_policy_),
-      guide_(guide ? std::move(guide) : make_guide(model, a, b))
-  {}
+              Convex_guides guides = {})
+    : k_(k), model_(model), a_(a), b_(b), policy_(policy ? *policy : own_policy_), guide_(std::move(guides))
+  {
+    for (int o = 0; o < 2; ++o)
+      if (!guide_[o]) guide_[o] = Convex_guide::make(model.scene->objects[static_cast<std::size_t>(o == 0 ? a : b)]);
+  }
 
-  const std::shared_ptr<const Convex_guide>& guide() const { return guide_; }
+  const Convex_guides& guides() const { return guide_; }
 
   // Each object's planes from these instead of the model's objects (which
   // then need only their motions): planes made as the stage reads them.
@@ -185,11 +170,11 @@ public:
     moving_[0] = &A, moving_[1] = &B;
     lo_ = span.lo, hi_ = span.hi;
     guide_rows_.clear();
-    guide_rows_.reserve(guide_->planes[0].size() + guide_->planes[1].size() + 2);
+    guide_rows_.reserve(guide_[0]->planes.size() + guide_[1]->planes.size() + 2);
     for (int o = 0; o < 2; ++o) {
-      const Motion_path<double>& m = guide_->motion[o];
+      const Motion_path<double>& m = guide_[o]->motion;
       std::size_t seg = model_.segment_on(o == 0 ? a_ : b_, span);   // the kernel's, the same in every run
-      for (const auto& plane : guide_->planes[o]) guide_rows_.push_back(extrude(plane, m.velocity[seg], m.offset[seg]));
+      for (const auto& plane : guide_[o]->planes) guide_rows_.push_back(extrude(plane, m.velocity[seg], m.offset[seg]));
     }
     count_a_ = plane_count(0);
     count_b_ = plane_count(1);
@@ -261,7 +246,7 @@ public:
   CGAL::Uncertain<CGAL::Sign> deep_sign(int o, std::size_t i)
   {
     const Plane3<FT>& pl = plane(o, i);
-    const Vector3<double>& d = guide_->deep[o];
+    const Vector3<double>& d = guide_[o]->deep;
     Vector3<FT> m{FT(d[0]), FT(d[1]), FT(d[2])};
     return k_.uncertain_side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], m);
   }
@@ -314,7 +299,7 @@ public:
   V4 cell(int o, const FT& t) const
   {
     const Moving& m = *moving_[o];
-    const Vector3<double>& d = guide_->deep[o];
+    const Vector3<double>& d = guide_[o]->deep;
     // (d + v t) + o per coordinate, as one dot product (in rationals, one
     // reduction; in floats the same operations, the products by 1 exact).
     const Vector3<FT> weights{FT(1), t, FT(1)};
@@ -328,7 +313,7 @@ private:
   int a_, b_;
   Policy own_policy_;
   Policy& policy_;
-  std::shared_ptr<const Convex_guide> guide_;
+  Convex_guides guide_;
   std::size_t index_ = 0;
   std::vector<G> guide_rows_;              // the sub-span's rows in doubles, in the order of rows_
   std::vector<std::optional<H>> rows_;     // A's planes, B's, t >= lo, t <= hi: extruded on first use
@@ -382,39 +367,6 @@ private:
   {
     if (!ring_rows_[j]) ring_rows_[j] = k_.in_ring(row(j));
     return *ring_rows_[j];
-  }
-
-  static std::shared_ptr<const Convex_guide> make_guide(const Scene_model<K>& model, int a, int b)
-  {
-    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-    auto guide = std::make_shared<Convex_guide>();
-    Guide_numbers g;
-    for (int o = 0; o < 2; ++o) {
-      const Scene_object& obj = model.scene->objects[static_cast<std::size_t>(o == 0 ? a : b)];
-      Primitive<double> p = Model_builder<Guide_numbers>(g).placed_geometry(obj.shape);
-      guide->deep[o] = deep_point(p);
-      guide->planes[o] = std::move(p.planes);
-      guide->motion[o] = Motion_path<double>::build(g, obj.motion);
-    }
-    return guide;
-  }
-
-  // A point strictly inside the primitive, in doubles: its vertices' mean
-  // (interior for a polytope with interior), or for a half-space
-  // n.x + d <= 0, -(d + 1) n / (n.n), where it is -1.
-  static Vector3<double> deep_point(const Primitive<double>& p)
-  {
-    Vector3<double> m{0, 0, 0};
-    if (p.vertices.empty()) {
-      const Plane3<double>& h = p.planes[0];
-      double nn = h[0] * h[0] + h[1] * h[1] + h[2] * h[2];
-      for (int q = 0; q < 3; ++q) m[q] = -(h[3] + 1) * h[q] / nn;
-      return m;
-    }
-    for (const auto& v : p.vertices)
-      for (int q = 0; q < 3; ++q) m[q] += v[q];
-    for (int q = 0; q < 3; ++q) m[q] /= static_cast<double>(p.vertices.size());
-    return m;
   }
 
   // The guesses' zero: a row missed by the guess by more than this (in its
@@ -477,8 +429,8 @@ private:
   {
     for (const G& g : guide_rows_)
       if (!finite(g.n) || !std::isfinite(g.c)) return false;
-    for (const auto& d : guide_->deep)
-      if (!finite(d)) return false;
+    for (const auto& g : guide_)
+      if (!finite(g->deep)) return false;
     return true;
   }
 
