@@ -8,6 +8,7 @@
 #include "clash4d/clash4d.h"
 
 #include "compare/Comparer.h"
+#include "exact/Exact_checker.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
 #include "numbers/Rational.h"
@@ -18,6 +19,7 @@
 #include "scene/Scene_writer.h"
 
 #include <nlohmann/json.hpp>
+#include <mutex>
 #include <new>
 
 namespace clash4d {
@@ -221,22 +223,39 @@ Motion Motion::piecewise(const std::vector<Vec3>& velocities, const std::vector<
 
 Motion Motion::from_text(const std::string& robmod) { return Motion(robmod); }
 
+// The scene, and the exact kernel's preparation of it (in::Exact_checker:
+// model, S-bounds, sweeps, guides), made by the first exact check and kept
+// for the next ones on any copy of this scene: the same answers, without
+// building it all again. One check at a time uses it; another thread's
+// check meanwhile runs on its own (a fresh in::check_exact).
 struct Scene::Impl {
   std::string file;
   in::Scene scene;
+  mutable std::mutex exact_mutex;
+  mutable std::unique_ptr<in::Exact_checker> exact;
+
+  Impl(std::string f, in::Scene s) : file(std::move(f)), scene(std::move(s)) {}
+
+  in::Check_answer check_exact(const in::Check_options& o) const
+  {
+    std::unique_lock<std::mutex> lock(exact_mutex, std::try_to_lock);
+    if (!lock) return in::check_exact(scene, o);
+    if (!exact) exact = std::make_unique<in::Exact_checker>(scene);
+    return exact->check(o);
+  }
 };
 
 Scene Scene::read_file(const std::string& path)
 {
   return guarded(path, [&] {
-    return Scene(std::make_shared<const Impl>(Impl{path, in::read_scene_file(path)}));
+    return Scene(std::make_shared<const Impl>(path, in::read_scene_file(path)));
   });
 }
 
 Scene Scene::parse(const std::string& json, const std::string& file)
 {
   return guarded(file, [&] {
-    return Scene(std::make_shared<const Impl>(Impl{file, in::read_scene(in::read_json_text(json))}));
+    return Scene(std::make_shared<const Impl>(file, in::read_scene(in::read_json_text(json))));
   });
 }
 
@@ -380,7 +399,7 @@ Check_result check(const Scene& scene, const Check_options& options)
   const in::Scene& s = scene.impl().scene;
   in::Check_answer a = guarded(scene.file(), [&] {
     switch (options.number) {
-    case Number::exact: return in::check_exact(s, o);
+    case Number::exact: return scene.impl().check_exact(o);
     case Number::rational: return in::check_rational(s, o);
     case Number::double_: break;
     }

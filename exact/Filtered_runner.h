@@ -571,6 +571,7 @@ private:
   {
     std::size_t n = scene_.objects.size();
     exact_only_.assign(n, 0);
+    asettled_.clear();   // a check stopped here before (a work budget) left a part
     Stage_clock clock(stats.timed);
     try {
       Protector protect;

@@ -27,6 +27,7 @@
 
 #include "search/Generate_and_test.h"
 #include "search/Witness.h"
+#include "search/Work_budget.h"
 #include "exact/Certified_sides.h"
 #include "exact/Exact_witness_signs.h"
 #include "model/Point_classifier.h"
@@ -216,6 +217,23 @@ BOOST_DATA_TEST_CASE(prepared_checks_are_check_exact, data::make(fixture_scenes(
       BOOST_TEST(kept.stats.pairs == fresh.stats.pairs, entry);
       if (round == 1) BOOST_TEST(kept.stats.seconds_model == 0.0, entry);
     }
+}
+
+// A prepared scene's check stopped by --max-seconds (Budget_exceeded, in
+// the search) leaves nothing half-made behind: the next checks answer as
+// a fresh check_exact does.
+BOOST_AUTO_TEST_CASE(a_prepared_scene_answers_after_a_stopped_check)
+{
+  Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/paper/section6_weaving_vehicle_late_stop_1e-9.json");
+  Exact_checker prepared(scene);
+  for (Semantics s : {Semantics::regularised, Semantics::closed}) {
+    Check_options o;
+    o.semantics = s;
+    Work_budget::start(1e-9);
+    BOOST_CHECK_THROW(prepared.check(o), Budget_exceeded);
+    Work_budget::start(0);
+    BOOST_TEST(describe(prepared.check(o)) == describe(check_exact(scene, o)), semantics_name(s));
+  }
 }
 
 BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)

@@ -81,6 +81,11 @@ int main(int argc, char** argv)
   expect(closed.collide && closed.reported() && closed.reported()->earliest &&
              closed.reported()->earliest->t == c4::Rational(1),
          "closed semantics: first contact at t = 1");
+  // A scene keeps what its first exact check prepared (model, bounds): asked
+  // again, in either semantics, the answers are the same.
+  expect(!c4::check(touch).collide, "asked again: touching is still not a collision");
+  c4::Check_result again = c4::check(touch, options);
+  expect(again.collide && again.reported()->earliest->t == c4::Rational(1), "asked again: first contact at t = 1");
 
   // A fixture: two blocks moving towards each other, meeting at t = 2.
   c4::Scene head_on = c4::Scene::read_file(fixtures + "/contact/clear_collision_head_on.json");
