@@ -4,6 +4,7 @@
 #include "compare/Fcl_subject.h"
 #include "check/Closed_membership.h"
 #include "model/Point_classifier.h"
+#include "exact/Exact_checker.h"
 #include "exact/Exact_instantiation.h"
 #include "exact/Rational_kernel.h"
 #include "float/Double_instantiation.h"
@@ -313,7 +314,8 @@ Subject_row row_of(const Run& r, Reference& ref, const Scene_model<Rational_kern
   return s;
 }
 
-// The exact references (regularised, then closed) and the toolkit's own
+// The exact references (regularised, then closed: the second on the
+// scene the first prepared, exact/Exact_checker.h) and the toolkit's own
 // subjects in the semantics asked for, then the libraries (closed).
 std::vector<Run> builtin_runs(const Scene& scene, const Compare_options& options, const Check_options& co)
 {
@@ -321,8 +323,9 @@ std::vector<Run> builtin_runs(const Scene& scene, const Compare_options& options
   Check_options closed = co, own = co;
   closed.semantics = Semantics::closed;
   own.semantics = options.semantics;
-  runs.push_back(timed("exact", true, [&] { return check_exact(scene, co); }));
-  runs.push_back(timed("exact closed", true, [&] { return check_exact(scene, closed); }));
+  Exact_checker exact(scene);
+  runs.push_back(timed("exact", true, [&] { return exact.check(co); }));
+  runs.push_back(timed("exact closed", true, [&] { return exact.check(closed); }));
   runs.back().semantics = "closed";
   std::size_t own_from = runs.size();
   runs.push_back(timed("double", false, [&] { return check_double(scene, 0, own); }));
