@@ -28,7 +28,7 @@ Exact_checker::~Exact_checker() = default;
 Check_answer Exact_checker::check(const Check_options& options)
 {
   std::unique_ptr<Filtered_exact>& r = impl_->runner[options.sbounds ? 1 : 0];
-  if (!r) r = std::make_unique<Filtered_exact>(impl_->scene, options.sbounds);
+  if (!r) r = std::make_unique<Filtered_exact>(impl_->scene, options.sbounds, true);
   return r->check(options);
 }
 

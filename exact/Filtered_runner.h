@@ -63,8 +63,9 @@ public:
   using EFT = typename EK::FT;
   using Protector = typename AK::Protector;
 
-  Filtered_runner(const Scene& scene, bool use_sbounds)
-    : scene_(scene), use_sbounds_(use_sbounds), made_(new Exact_parts[scene.objects.size()])
+  // reusable: check may be called again (exact/Exact_checker.h).
+  Filtered_runner(const Scene& scene, bool use_sbounds, bool reusable = false)
+    : scene_(scene), use_sbounds_(use_sbounds), reusable_(reusable), made_(new Exact_parts[scene.objects.size()])
   {
     emodel_.t_lo = ek_.from_rational(scene.t_lo);
     emodel_.t_hi = ek_.from_rational(scene.t_hi);
@@ -76,19 +77,20 @@ public:
     for (std::size_t i = 0; i < scene.objects.size(); ++i) emodel_.objects[i].name = scene.objects[i].name;
   }
 
-  // May be called again on the same scene (a prepared scene: the model,
+  // On a reusable runner, may be called again (a prepared scene: the model,
   // S-bounds, sweeps and guides are made once), one call at a time; each
   // answer is the one a fresh runner gives, its stats counting its own work.
   Check_answer check(const Check_options& options)
   {
-    reset_counts();
+    if (reusable_) reset_counts();   // a fresh runner's are zero
     convex_lp_ = options.convex_lp;
     Check_answer answer;
     answer.stats.timed = options.stage_seconds;
-    std::vector<std::pair<int, int>> pairs;
-    if (!prepare(answer.stats, pairs, options.semantics)) {
+    const std::vector<std::pair<int, int>>* prepared = nullptr;
+    if (!prepare(answer.stats, prepared, options.semantics)) {
       answer = run_check(ek_, scene_, options);     // AK could not even build the model
     } else {
+      const std::vector<std::pair<int, int>>& pairs = *prepared;
       auto check_one = [&](std::size_t i, const EFT* ceiling, Semantics semantics, Check_stats& stats) {
         Check_options o = options;
         o.semantics = semantics;
@@ -105,12 +107,13 @@ public:
   Skeleton_answer skeleton()
   {
     if (!use_sbounds_) throw std::logic_error("Filtered_runner::skeleton: made without S-bounds");
-    reset_counts();
+    if (reusable_) reset_counts();   // a fresh runner's are zero
     Skeleton_answer answer;
-    std::vector<std::pair<int, int>> pairs;
-    if (!prepare(answer.stats, pairs)) {
+    const std::vector<std::pair<int, int>>* prepared = nullptr;
+    if (!prepare(answer.stats, prepared)) {
       answer = run_skeleton(ek_, scene_);
     } else {
+      const std::vector<std::pair<int, int>>& pairs = *prepared;
       auto skeleton_one = [&](std::size_t i, Check_stats& stats) {
       int a = pairs[i].first, b = pairs[i].second;
       if (!exact_only_[a] && !exact_only_[b]) {
@@ -447,7 +450,7 @@ private:
   }
 
   const Scene& scene_;
-  const bool use_sbounds_;
+  const bool use_sbounds_, reusable_;
   bool convex_lp_ = true;
   AK ak_;
   EK ek_;
@@ -459,17 +462,18 @@ private:
   struct Prepared {
     bool done = false, ok = false;
     std::vector<std::pair<int, int>> pairs;
-    Check_stats stats;
+    std::optional<Check_stats> stats;
   };
   Prepared model_, sweeps_[2];
   Scene_model<EK> emodel_;                    // objects built on demand
   std::vector<typename S_bounds<EK>::Bounds> esettled_;
   std::vector<Object_model<EFT>> ebounds_;   // boxes-only trees (need_bounds)
   // Whether EK has made an object's planes, its whole model, its S-bounds,
-  // its motion (one allocation per run: a convex pair's query is a few µs).
+  // its motion (one allocation per run: a convex pair's query is a few µs);
+  // and the object's convex-pair guide (guide(i)), made as lazily.
   struct Exact_parts {
     Lazy_once planed, built, settled, moved, guided;
-    std::shared_ptr<const Convex_guide> guide;   // its convex-pair guide (guide(i)), not EK's but made as lazily
+    std::shared_ptr<const Convex_guide> guide;
   };
   std::unique_ptr<Exact_parts[]> made_;
   // The witness checks' plane sides in EK's runs (certified_sides).
@@ -543,29 +547,41 @@ private:
   // pairs. False when AK cannot build the model: the whole run goes to EK.
   // Made once (the pairs once per semantics): a prepared scene's later
   // checks reuse them, and their stats give the same counts with no time.
-  bool prepare(Check_stats& stats, std::vector<std::pair<int, int>>& pairs,
+  bool prepare(Check_stats& stats, const std::vector<std::pair<int, int>>*& pairs,
                Semantics semantics = Semantics::regularised)
   {
     bool timed = stats.timed;
-    bool fresh_model = !model_.done;
-    if (fresh_model) {
-      model_.stats = stats.fresh();
-      model_.ok = build_model(model_.stats);
+    if (!model_.done) {
+      model_.ok = build_model(stats);
       model_.done = true;
+      keep(model_, stats);
+    } else {
+      stats = reused(model_, timed);
     }
+    if (!model_.ok) return false;
     Prepared& sweep = sweeps_[semantics == Semantics::closed ? 1 : 0];
-    bool fresh_sweep = model_.ok && !sweep.done;
-    if (fresh_sweep) {
-      sweep.stats = fresh_model ? model_.stats : model_.stats.untimed();
-      sweep_pairs(sweep.stats, sweep.pairs, semantics);
+    if (!sweep.done) {
+      sweep_pairs(stats, sweep.pairs, semantics);
       sweep.done = true;
+      keep(sweep, stats);
+    } else {
+      stats = reused(sweep, timed);
     }
-    const Prepared& made = model_.ok ? sweep : model_;
-    bool made_now = model_.ok ? fresh_sweep : fresh_model;
-    stats = made_now ? made.stats : made.stats.untimed();
-    stats.timed = timed;
-    pairs = made.pairs;
-    return model_.ok;
+    pairs = &sweep.pairs;
+    return true;
+  }
+  // The stats of a part just made, kept when the runner is reusable (a
+  // single check's runner copies nothing).
+  void keep(Prepared& part, const Check_stats& stats) const
+  {
+    if (reusable_) part.stats = stats;
+  }
+  Check_stats reused(const Prepared& part, bool timed) const
+  {
+    if (!part.stats) throw std::logic_error("Filtered_runner: checked again, but not made reusable");
+    Check_stats s = part.stats->untimed();
+    s.timed = timed;
+    return s;
   }
   bool build_model(Check_stats& stats)
   {
@@ -770,7 +786,7 @@ private:
          {&fallbacks_, &witness_runs_, &witness_replays_, &exact_regions_, &exact_planes_, &witnesses_by_intervals_,
           &earliest_by_intervals_, &exact_stages_, &apart_proofs_, &apart_attempts_, &stages_adopted_, &lines_rerun_,
           &witness_lines_, &convex_rational_, &closed_cells_, &witnesses_by_terms_})
-      c->store(0);
+      c->store(0, std::memory_order_relaxed);   // no check is running: nothing to order against
   }
   void finish(Check_stats& stats) const
   {

@@ -97,13 +97,13 @@ public:
   // kernel's stage or kept for many pairs; each made here when none.
   Convex_pair(const K& k, const Scene_model<K>& model, int a, int b, Policy* policy = nullptr,
               Convex_guides guides = {})
-    : k_(k), model_(model), a_(a), b_(b), policy_(policy ? *policy : own_policy_), guide_(std::move(guides))
+    : k_(k), model_(model), a_(a), b_(b), policy_(policy ? *policy : own_policy_), guides_(std::move(guides))
   {
     for (int o = 0; o < 2; ++o)
-      if (!guide_[o]) guide_[o] = Convex_guide::make(model.scene->objects[static_cast<std::size_t>(o == 0 ? a : b)]);
+      if (!guides_[o]) guides_[o] = Convex_guide::make(model.scene->objects[static_cast<std::size_t>(o == 0 ? a : b)]);
   }
 
-  const Convex_guides& guides() const { return guide_; }
+  const Convex_guides& guides() const { return guides_; }
 
   // Each object's planes from these instead of the model's objects (which
   // then need only their motions): planes made as the stage reads them.
@@ -170,11 +170,11 @@ public:
     moving_[0] = &A, moving_[1] = &B;
     lo_ = span.lo, hi_ = span.hi;
     guide_rows_.clear();
-    guide_rows_.reserve(guide_[0]->planes.size() + guide_[1]->planes.size() + 2);
+    guide_rows_.reserve(guides_[0]->planes.size() + guides_[1]->planes.size() + 2);
     for (int o = 0; o < 2; ++o) {
-      const Motion_path<double>& m = guide_[o]->motion;
+      const Motion_path<double>& m = guides_[o]->motion;
       std::size_t seg = model_.segment_on(o == 0 ? a_ : b_, span);   // the kernel's, the same in every run
-      for (const auto& plane : guide_[o]->planes) guide_rows_.push_back(extrude(plane, m.velocity[seg], m.offset[seg]));
+      for (const auto& plane : guides_[o]->planes) guide_rows_.push_back(extrude(plane, m.velocity[seg], m.offset[seg]));
     }
     count_a_ = plane_count(0);
     count_b_ = plane_count(1);
@@ -246,7 +246,7 @@ public:
   CGAL::Uncertain<CGAL::Sign> deep_sign(int o, std::size_t i)
   {
     const Plane3<FT>& pl = plane(o, i);
-    const Vector3<double>& d = guide_[o]->deep;
+    const Vector3<double>& d = guides_[o]->deep;
     Vector3<FT> m{FT(d[0]), FT(d[1]), FT(d[2])};
     return k_.uncertain_side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], m);
   }
@@ -299,7 +299,7 @@ public:
   V4 cell(int o, const FT& t) const
   {
     const Moving& m = *moving_[o];
-    const Vector3<double>& d = guide_[o]->deep;
+    const Vector3<double>& d = guides_[o]->deep;
     // (d + v t) + o per coordinate, as one dot product (in rationals, one
     // reduction; in floats the same operations, the products by 1 exact).
     const Vector3<FT> weights{FT(1), t, FT(1)};
@@ -313,7 +313,7 @@ private:
   int a_, b_;
   Policy own_policy_;
   Policy& policy_;
-  Convex_guides guide_;
+  Convex_guides guides_;
   std::size_t index_ = 0;
   std::vector<G> guide_rows_;              // the sub-span's rows in doubles, in the order of rows_
   std::vector<std::optional<H>> rows_;     // A's planes, B's, t >= lo, t <= hi: extruded on first use
@@ -429,7 +429,7 @@ private:
   {
     for (const G& g : guide_rows_)
       if (!finite(g.n) || !std::isfinite(g.c)) return false;
-    for (const auto& g : guide_)
+    for (const auto& g : guides_)
       if (!finite(g->deep)) return false;
     return true;
   }
