@@ -1,5 +1,4 @@
 #include "exact/Exact_instantiation.h"
-#include "exact/Exact_checker.h"
 #include "model/Extrusion_report.h"
 #include "exact/Filtered_runner.h"
 #include "exact/Interval_kernel.h"
@@ -14,22 +13,6 @@ using Filtered_exact = Filtered_runner<Interval_kernel, Rational_kernel>;
 Check_answer check_exact(const Scene& scene, const Check_options& options)
 {
   return Filtered_exact(scene, options.sbounds).check(options);
-}
-
-// One runner per S-bounds setting, made on first use and kept.
-struct Exact_checker::Impl {
-  const Scene& scene;
-  std::unique_ptr<Filtered_exact> runner[2];
-};
-
-Exact_checker::Exact_checker(const Scene& scene) : impl_(new Impl{scene, {}}) {}
-Exact_checker::~Exact_checker() = default;
-
-Check_answer Exact_checker::check(const Check_options& options)
-{
-  std::unique_ptr<Filtered_exact>& r = impl_->runner[options.sbounds ? 1 : 0];
-  if (!r) r = std::make_unique<Filtered_exact>(impl_->scene, options.sbounds, true);
-  return r->check(options);
 }
 
 // Extrusion is all constructions (nothing to filter): rationals, labelled exact.
