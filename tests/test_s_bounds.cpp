@@ -262,6 +262,33 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(difference_goes_up_as_its_left_bound, K, Kernels)
   check_box(beta[2], {1, 1, 1}, {2, 2, 2}, "subtrahend");
 }
 
+// Without S-bounds (--no-sbounds, §4.1's original procedure) each object is
+// enclosed by its tree's box: every node the box of its children's (upward
+// once), nothing narrowed downward, no S-bound pass counted. So a composite
+// object of bounded primitives has a bounded root (a pair of two such
+// objects needs no far bound).
+BOOST_AUTO_TEST_CASE_TEMPLATE(without_s_bounds_each_node_is_its_childrens_box, K, Kernels)
+{
+  using FT = typename K::FT;
+  K k;
+  Check_stats stats;
+  // Intersection: the meet [1,2]^3 at the root, the leaves as they are
+  // (S-bounds would narrow both to [1,2]^3, children_shrink_on_one_side_only).
+  Tree<FT> meet = two_leaves(Op::Intersection, box3<FT>({0, 0, 0}, {2, 2, 2}), box3<FT>({1, 1, 1}, {3, 3, 3}));
+  auto beta = settled_bounds(k, meet.m, stats, false);
+  check_box(beta[0], {1, 1, 1}, {2, 2, 2}, "intersection");
+  check_box(beta[1], {0, 0, 0}, {2, 2, 2}, "leaf 1");
+  check_box(beta[2], {1, 1, 1}, {3, 3, 3}, "leaf 2");
+  // Union: the join; difference: the minuend's box.
+  Tree<FT> join = two_leaves(Op::Union, box3<FT>({0, 0, 0}, {1, 1, 1}), box3<FT>({2, -1, 0}, {3, 1, 4}));
+  check_box(settled_bounds(k, join.m, stats, false)[0], {0, -1, 0}, {3, 1, 4}, "union");
+  Tree<FT> cut = two_leaves(Op::Difference, box3<FT>({0, 0, 0}, {2, 2, 2}), box3<FT>({1, 1, 1}, {3, 3, 3}));
+  auto diff = settled_bounds(k, cut.m, stats, false);
+  check_box(diff[0], {0, 0, 0}, {2, 2, 2}, "difference");
+  check_box(diff[2], {1, 1, 1}, {3, 3, 3}, "subtrahend, not narrowed");
+  BOOST_TEST(stats.sbound_passes == 0u);
+}
+
 BOOST_AUTO_TEST_CASE_TEMPLATE(difference_drops_a_disjoint_subtrahend_and_keeps_a_covered_minuend, K, Kernels)
 {
   using FT = typename K::FT;
