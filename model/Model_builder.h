@@ -187,7 +187,8 @@ public:
 
   // A one-primitive shape's planes and vertices in the world, as build
   // makes them (the same numbers), without its box, path or corners: what
-  // a convex pair's guide reads (search/Convex_pair.h), made per query.
+  // an object's convex-pair guide reads (search/Convex_guide.h), made once
+  // per object by a check's runner.
   Primitive<FT> placed_geometry(const Solid& shape) const
   {
     Affine3<FT> T = Affine3<FT>::identity();

@@ -223,7 +223,7 @@ BOOST_AUTO_TEST_CASE(planes_and_vertices_trees_are_the_models)
   }
 }
 
-// placed_geometry (a convex pair's guide, search/Convex_pair.h): a
+// placed_geometry (an object's convex-pair guide, search/Convex_guide.h): a
 // one-primitive shape's planes and vertices, number for number build's, in
 // rationals and in doubles, for each kind placed by a translation, a
 // rotation, both and neither (the single primitives of every_kind, and each
