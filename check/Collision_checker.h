@@ -102,10 +102,11 @@ public:
   // cells: closed, the generic points near_in_space makes, if made already
   // (a filter's, exact/Filtered_runner.h); they are checked the same.
   // world: the sub-span's world planes (Witness::world_planes), when the
-  // stage made them already.
+  // stage made them already; values: theirs at goal.inside, when known
+  // (Convex_pair::values_inside; shear zero).
   void make_witness(const Search_goal<FT>& goal, const Vector3<FT>& shear, const Moving& A, const Moving& B,
                     const Time_span<FT>& span, Pair_result<FT>& r, const std::array<V4, 2>* cells = nullptr,
-                    const std::vector<H>* world = nullptr) const
+                    const std::vector<H>* world = nullptr, const std::vector<FT>* values = nullptr) const
   {
     Witness<K> w(k_);
     V4 contact = goal.contact;
@@ -131,7 +132,7 @@ public:
       r.contact_cells = r.witness_cells;
     } else {
       std::optional<V4> in =
-          world ? w.make_on(goal.inside, shear, *world) : w.make(goal.inside, shear, A, B, span.lo, span.hi);
+          world ? w.make_on(goal.inside, shear, *world, values) : w.make(goal.inside, shear, A, B, span.lo, span.hi);
       if (!in) return unmade();
       r.witness = *in;
       r.witness_verified = is_valid_witness(k_, model_, r.a, r.b, r.witness, sides_);
@@ -219,11 +220,12 @@ private:
         ++stats_.convex_spans;
         if (goal.improved) {
           // Regularised: the witness is made on the pair's rows, which are
-          // the sub-span's world planes, mostly made by the stage already
+          // the sub-span's world planes, mostly made by the stage already,
+          // and their values at the point inside when the stage has them
           // (a closed witness reads none).
-          std::optional<std::vector<H>> rows;
-          if (!goal.closed()) rows = convex->world_rows();
-          found(index, goal, Vector3<FT>{FT(0), FT(0), FT(0)}, A, B, span, r, rows ? &*rows : nullptr);
+          const std::vector<H>* rows = goal.closed() ? nullptr : &convex->world_rows();
+          found(index, goal, Vector3<FT>{FT(0), FT(0), FT(0)}, A, B, span, r, rows,
+                rows ? convex->values_inside() : nullptr);
         }
         return true;
       }
@@ -258,14 +260,15 @@ private:
   // Found on sub-span `index` (or, earliest mode, earlier than before): the
   // witness and contact point are made with this span's planes and frame.
   void found(std::size_t index, const Search_goal<FT>& goal, const Vector3<FT>& shear, const Moving& A,
-             const Moving& B, const Time_span<FT>& span, Pair_result<FT>& r, const std::vector<H>* world = nullptr)
+             const Moving& B, const Time_span<FT>& span, Pair_result<FT>& r, const std::vector<H>* world = nullptr,
+             const std::vector<FT>* values = nullptr)
   {
     policy_.found_in_span(index);
     Stage_clock clock(stats_.timed);
     r.collide = true;
     r.has_witness = false;
     if (policy_.witness_certified() && policy_.witness_answers(goal))
-      policy_.attempt([&] { make_witness(goal, shear, A, B, span, r, nullptr, world); });
+      policy_.attempt([&] { make_witness(goal, shear, A, B, span, r, nullptr, world, values); });
     stats_.seconds_witness += clock.seconds();
     if (K::is_exact && r.has_witness && !r.witness_verified)
       throw std::logic_error("internal error: the exact witness failed its check; please report this scene");

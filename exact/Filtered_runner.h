@@ -170,19 +170,19 @@ private:
         Pair_result<AFT> found =
             checker.check_pair(a, b, options.earliest, ceiling ? &aceiling : nullptr, options.semantics);
         if (!found.collide) {
-          stats = astats;
+          stats = std::move(astats);
           return Pair_result<EFT>();
         }
         if (found.has_witness && found.witness_verified) {
           if (std::optional<Pair_result<EFT>> r = exact_copy(found)) {
-            stats = astats;
+            stats = std::move(astats);
             ++witnesses_by_intervals_;
-            return *r;
+            return std::move(*r);
           }
         }
         if (std::optional<Pair_result<EFT>> r = policy.convex_answer(found)) {
-          stats = astats;
-          return *r;
+          stats = std::move(astats);
+          return std::move(*r);
         }
         if (options.witness_lines)
           if (std::optional<Pair_result<EFT>> r = witness_line(policy, a, b, options, astats, stats)) return *r;

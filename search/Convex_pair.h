@@ -43,6 +43,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 namespace clash4d {
@@ -117,12 +118,18 @@ public:
   // The sub-span's rows, in order: A's planes, B's, t >= lo, t <= hi: the
   // world planes Witness::world_planes makes of a pair of single
   // primitives, by the same extrusions (most made by decide already).
-  std::vector<H> world_rows()
+  const std::vector<H>& world_rows()
   {
-    std::vector<H> all;
-    all.reserve(rows_.size());
-    for (std::size_t j = 0; j < rows_.size(); ++j) all.push_back(row(j));
-    return all;
+    for (std::size_t j = 0; j < rows_.size(); ++j) row(j);
+    return rows_;
+  }
+
+  // The rows' values at the point inside the goal holds, when decide took
+  // it from the guess (in(), strict, evaluated every row there, in this
+  // kernel): the witness starts from them (Witness::make_on). None else.
+  const std::vector<FT>* values_inside() const
+  {
+    return guess_in_ && !found_.at_centre ? &guess_values_ : nullptr;
   }
 
   // Sub-span `index` (time order), where A and B move as given: apart, or
@@ -180,8 +187,10 @@ public:
     count_b_ = plane_count(1);
     guide_rows_.push_back(time_at_least(nearest_double(*span.exact_lo)));
     guide_rows_.push_back(time_at_most(nearest_double(*span.exact_hi)));
-    rows_.assign(guide_rows_.size(), std::nullopt);
+    rows_.resize(guide_rows_.size());
+    made_.assign(guide_rows_.size(), 0);
     ring_rows_.assign(guide_rows_.size(), std::nullopt);
+    guess_in_ = false;
     vertex_basis_.reset();
     centre_rows_.reset();
   }
@@ -316,7 +325,10 @@ private:
   Convex_guides guides_;
   std::size_t index_ = 0;
   std::vector<G> guide_rows_;              // the sub-span's rows in doubles, in the order of rows_
-  std::vector<std::optional<H>> rows_;     // A's planes, B's, t >= lo, t <= hi: extruded on first use
+  std::vector<H> rows_;                    // A's planes, B's, t >= lo, t <= hi: extruded on first use
+  std::vector<char> made_;                 // which rows_ are made
+  std::vector<FT> guess_values_;           // rows at the guess, as in() found them
+  bool guess_in_ = false;                  // in() found the guess strictly inside, every row valued
   std::vector<std::optional<Ring_row>> ring_rows_;   // the same in the kernel's ring (ring_row)
   const Moving* moving_[2] = {nullptr, nullptr};
   Primitive_planes<K>* planes_[2] = {nullptr, nullptr};
@@ -350,7 +362,7 @@ private:
   // Row j in the kernel's numbers (equation (4) on the sub-span's motion).
   const H& row(std::size_t j)
   {
-    if (!rows_[j]) {
+    if (!made_[j]) {
       if (j < count_a_ + count_b_) {
         const Moving& m = *moving_[j < count_a_ ? 0 : 1];
         std::size_t i = j < count_a_ ? j : j - count_a_;
@@ -358,8 +370,9 @@ private:
       } else {
         rows_[j] = j == count_a_ + count_b_ ? time_at_least(lo_) : time_at_most(hi_);
       }
+      made_[j] = 1;
     }
-    return *rows_[j];
+    return rows_[j];
   }
   // Row j in the kernel's ring (Kernel_base::in_ring: a positive multiple),
   // made once per sub-span: the determinants' and null vectors' rows.
@@ -421,14 +434,16 @@ private:
   template <std::size_t N>
   static bool finite(const std::array<double, N>& x)
   {
-    return std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
+    double zero = 0;   // v * 0 is NaN exactly when v is not finite; no branch per number
+    for (double v : x) zero += v * 0.0;
+    return zero == 0;
   }
 
   // A scene number beyond the doubles (1e400) leaves no guess to make.
   bool guide_finite() const
   {
     for (const G& g : guide_rows_)
-      if (!finite(g.n) || !std::isfinite(g.c)) return false;
+      if (!finite(std::array<double, 5>{g.n[0], g.n[1], g.n[2], g.n[3], g.c})) return false;
     for (const auto& g : guides_)
       if (!finite(g->deep)) return false;
     return true;
@@ -447,17 +462,28 @@ private:
   }
 
   // Whether p is inside every row (strict: strictly), rows `first` first
-  // (those the guess holds tight: a miss shows there soonest).
+  // (those the guess holds tight: a miss shows there soonest). Each row's
+  // value is this kernel's row_sign's, kept (values_inside); a sign it
+  // cannot tell is asked of the policy's other stage as row_sign.
   bool in(const Point& p, bool strict, const std::vector<std::size_t>& first)
   {
+    guess_in_ = false;
+    guess_values_.resize(rows_.size());
+    const V4 at = exact_point(p);
     auto holds = [&](std::size_t j) {
-      CGAL::Sign s = certain([&](auto& st) { return st.row_sign(j, p); });
+      guess_values_[j] = row(j).value(at);
+      CGAL::Sign s = certain([&](auto& st) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(st)>, Convex_pair>)
+          if (&st == this) return k_.uncertain_sign(guess_values_[j]);   // row_sign(j, p), made above
+        return st.row_sign(j, p);
+      });
       return strict ? s == CGAL::NEGATIVE : s != CGAL::POSITIVE;
     };
     for (std::size_t j : first)
       if (!holds(j)) return false;
     for (std::size_t j = 0; j < rows_.size(); ++j)
       if (std::find(first.begin(), first.end(), j) == first.end() && !holds(j)) return false;
+    guess_in_ = strict;
     return true;
   }
 

@@ -34,11 +34,15 @@ public:
     return make_on(p, shear, world_planes(A, B, lo, hi));
   }
   // The same on the sub-span's world planes as world_planes makes them,
-  // made already (a convex pair's rows, search/Convex_pair.h).
-  std::optional<V4> make_on(V4 p, const Vector3<FT>& shear, const std::vector<H>& world) const
+  // made already (a convex pair's rows, search/Convex_pair.h). values: the
+  // planes' values at p when known already (a convex pair's, evaluated at
+  // its guess; its frame is the world's, shear zero), the same numbers
+  // values_at gives.
+  std::optional<V4> make_on(V4 p, const Vector3<FT>& shear, const std::vector<H>& world,
+                            const std::vector<FT>* values = nullptr) const
   {
     to_world(p, shear);
-    return generic_snapped(p, world, 4);
+    return generic_snapped(p, world, 4, nullptr, values);
   }
 
   // Earliest (regularised): a generic point strictly inside both objects
@@ -185,14 +189,22 @@ private:
 
   // p moved off every plane through it, then snapped; the first `dims`
   // coordinates move (3: the time stays).
-  std::optional<V4> generic_snapped(V4 p, const std::vector<H>& planes, int dims, Zeros* z = nullptr) const
+  // known: the planes' values at p, when the caller has them (no zeros to
+  // decide then: z is none).
+  std::optional<V4> generic_snapped(V4 p, const std::vector<H>& planes, int dims, Zeros* z = nullptr,
+                                    const std::vector<FT>* known = nullptr) const
   {
-    std::vector<FT> values = values_at(p, planes);
-    if (z && !decide_zeros(values, planes, *z)) return std::nullopt;
-    CGAL::Uncertain<bool> moved = make_generic(p, planes, values, dims, z);
+    std::vector<FT> own;
+    if (!known || z) own = known ? *known : values_at(p, planes);
+    const std::vector<FT>* values = known && !z ? known : &own;
+    if (z && !decide_zeros(own, planes, *z)) return std::nullopt;
+    CGAL::Uncertain<bool> moved = make_generic(p, planes, *values, dims, z);
     if (!CGAL::is_certain(moved)) return std::nullopt;
-    if (moved.make_certain()) values = values_at(p, planes);
-    return snap(p, planes, values, dims);
+    if (moved.make_certain()) {
+      own = values_at(p, planes);
+      values = &own;
+    }
+    return snap(p, planes, *values, dims);
   }
 
   static std::vector<FT> values_at(const V4& p, const std::vector<H>& planes)
