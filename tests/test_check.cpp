@@ -137,6 +137,39 @@ BOOST_AUTO_TEST_CASE(stats_report_every_stage)
   BOOST_TEST(s["span_after"] == "[2, 4]");
 }
 
+// The reproduction table's §4.3.2 rows (papers/cameron1990/README.md), on
+// §4.1's scene (fixtures/paper/section4_1_sphere_cube.json: the sphere as
+// a polytope whose box is [1,9]^3 at t = 0, velocity (1,1,1); the cube
+// [42,46]x[52,56]x[3,7], velocity (0,0,1); time [0,64]), in every kernel,
+// the convex programs off so that the cascade runs:
+//  - the original procedure (--no-sbounds): the meet of each object's box
+//    swept over the whole span. The sphere sweeps [1,73]^3, the cube x in
+//    [42,46], y in [52,56], z in [3,71]: [42,46]x[52,56]x[3,71]x[0,64],
+//    the paper's 4 x 4 x 68 x 64, measured against no velocity;
+//  - Appendix B's closed form: t in [43,45], and in the sphere's frame
+//    (x - t, y - t, z - t) its box narrowed to [1,3]x[7,9]x[3,7]
+//    (tests/test_s_bounds.cpp, appendix_b_paper_example_gives_2x2x4x2,
+//    derives each bound): the paper's 2 x 2 x 4 x 2.
+BOOST_AUTO_TEST_CASE(paper_section_4_3_2_bounding_regions)
+{
+  std::string scene = std::string(CLASH4D_FIXTURES) + "/paper/section4_1_sphere_cube.json";
+  for (const char* number : {"exact", "rational", "double"}) {
+    Run original = run({"check", scene, "--json", "--stats", "--no-convex-lp", "--no-sbounds", "--number", number});
+    Run closed_form = run({"check", scene, "--json", "--stats", "--no-convex-lp", "--number", number});
+    for (const Run* r : {&original, &closed_form}) BOOST_TEST_REQUIRE(r->status == 0, number << ": " << r->err);
+    auto o = nlohmann::json::parse(original.out)["stats"];
+    BOOST_TEST_REQUIRE(o["spans"].size() == 1u, number);
+    BOOST_TEST(o["spans"][0]["region"] == "[42, 46] x [52, 56] x [3, 71] x [0, 64]", number);
+    BOOST_TEST(o["spans"][0]["frame"] == "0 0 0", number);
+    BOOST_TEST(o["sbound_passes"] == 0, number);
+    auto c = nlohmann::json::parse(closed_form.out)["stats"];
+    BOOST_TEST_REQUIRE(c["spans"].size() == 1u, number);
+    BOOST_TEST(c["spans"][0]["region"] == "[1, 3] x [7, 9] x [3, 7] x [43, 45]", number);
+    BOOST_TEST(c["spans"][0]["frame"] == "1 1 1", number);
+    BOOST_TEST(c["span_after"] == "[43, 45]", number);
+  }
+}
+
 // Stage seconds are measured only when asked (search/Stage_clock.h): a
 // library check leaves every one 0, one with Check_options::stage_seconds
 // (what --stats sets) measures them, and --stats prints them. In each
