@@ -551,15 +551,15 @@ private:
                Semantics semantics = Semantics::regularised)
   {
     bool timed = stats.timed;
+    Prepared& sweep = sweeps_[semantics == Semantics::closed ? 1 : 0];
     if (!model_.done) {
       model_.ok = build_model(stats);
       model_.done = true;
       keep(model_, stats);
-    } else {
-      stats = reused(model_, timed);
+    } else if (!sweep.done) {
+      stats = reused(model_, timed);   // (a reused sweep's stats hold the model's)
     }
     if (!model_.ok) return false;
-    Prepared& sweep = sweeps_[semantics == Semantics::closed ? 1 : 0];
     if (!sweep.done) {
       sweep_pairs(stats, sweep.pairs, semantics);
       sweep.done = true;
