@@ -5,7 +5,10 @@
 // in regularised semantics and, beside them, in closed semantics (issue 14:
 // the same targets).
 //   clash4d_bench [--seed N] [--random M] [--fuzz K] [--min-seconds S] [--family F] [--dump-random DIR] [--earliest]
-//                 [--scene FILE]
+//                 [--scene FILE] [--repeat R]
+// --repeat R times each scene's five columns R times (default 1), taking
+// turns, and keeps each one's least time (bench/Timing.h, time_in_turns):
+// for before-and-after comparisons on a shared machine.
 // --earliest times `check --earliest` (t* and the contact point) everywhere.
 // --family paper|contact|grid|random|fuzz runs one family only; fuzz is the
 // first K cases (default 40) of `clash4d fuzz --seed N`'s contact families
@@ -41,6 +44,7 @@ using namespace clash4d;
 namespace {
 
 bool earliest_mode = false;   // --earliest: every query asks for t* (§5)
+int repeat_count = 1;         // --repeat
 
 // Geometric means of the ratios over one family of scenes: regularised
 // exact/double and rational/double, then closed exact/double.
@@ -70,13 +74,12 @@ void row(const std::string& name, const Scene& scene, double min_seconds, Means&
          Check_options opts = Check_options())
 {
   opts.earliest = opts.earliest || earliest_mode;
-  Timing e = time_it([&] { return check_exact(scene, opts).collide; }, min_seconds);
-  Timing r = time_it([&] { return check_rational(scene, opts).collide; }, min_seconds);
-  Timing d = time_it([&] { return check_double(scene, 0, opts).collide; }, min_seconds);
   Check_options closed = opts;
   closed.semantics = Semantics::closed;
-  Timing ce = time_it([&] { return check_exact(scene, closed).collide; }, min_seconds);
-  Timing cd = time_it([&] { return check_double(scene, 0, closed).collide; }, min_seconds);
+  auto [e, r, d, ce, cd] = time_in_turns(
+      repeat_count, min_seconds, [&] { return check_exact(scene, opts).collide; },
+      [&] { return check_rational(scene, opts).collide; }, [&] { return check_double(scene, 0, opts).collide; },
+      [&] { return check_exact(scene, closed).collide; }, [&] { return check_double(scene, 0, closed).collide; });
   double ratio = e.seconds_per_query / d.seconds_per_query, rational_ratio = r.seconds_per_query / d.seconds_per_query;
   double closed_ratio = ce.seconds_per_query / cd.seconds_per_query;
   means.log_exact += std::log(ratio);
@@ -104,9 +107,10 @@ int run_bench(int argc, char** argv)
     std::string a = argv[i];
     if (a == "--help" || a == "-h") {
       std::printf("usage: clash4d_bench [--seed N] [--random M] [--fuzz K] [--min-seconds S] [--family F] [--earliest]\n"
-                  "                     [--scene FILE] [--dump-random DIR]\n"
+                  "                     [--scene FILE] [--dump-random DIR] [--repeat R]\n"
                   "  times check per query, exact (filtered), rational and double, in both semantics;\n"
-                  "  families: paper, contact, grid, fuzz (clash4d fuzz's contact families), random\n");
+                  "  families: paper, contact, grid, fuzz (clash4d fuzz's contact families), random;\n"
+                  "  --repeat R times each scene's columns R times in turn, keeping each one's least time\n");
       return 0;
     }
     if (a == "--earliest") {
@@ -125,11 +129,13 @@ int run_bench(int argc, char** argv)
     else if (a == "--dump-random") dump_dir = argv[i + 1];
     else if (a == "--family") only = argv[i + 1];
     else if (a == "--scene") scene_file = argv[i + 1];
+    else if (a == "--repeat") repeat_count = std::stoi(argv[i + 1]);
     else {
       std::fprintf(stderr, "clash4d_bench: unknown option %s\n", a.c_str());
       return 2;
     }
   }
+  if (repeat_count < 1) throw std::runtime_error("--repeat must be at least 1");
   if (!dump_dir.empty() && !std::filesystem::is_directory(dump_dir))
     throw std::runtime_error("--dump-random " + dump_dir + ": not a directory");
   std::printf("%-58s %11s %11s %11s %8s %8s %11s %11s %8s  %s\n", "scene", "exact us", "rational us", "double us",

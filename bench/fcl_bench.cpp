@@ -5,9 +5,7 @@
 // separated and penetrating. Issue 6: FCL measured beside exact for speed.
 //   clash4d_fcl_bench [--seed N] [--min-seconds S] [--repeat R] [--dump-scenes DIR]
 // --repeat R (default 3) times every column R times, the columns taking
-// turns, and keeps each one's least time: on a shared machine one
-// measurement moves by a third, and the ratios hold columns measured under
-// the same load.
+// turns, and keeps each one's least time (bench/Timing.h, time_in_turns).
 // --dump-scenes writes each case's scene to DIR (box-box-touching.json, ...)
 // to rerun or profile one with `clash4d check` or `clash4d_bench --scene`.
 //
@@ -43,9 +41,6 @@ namespace {
 
 const char* verdict(bool c) { return c ? "collide" : "no"; }
 
-// The least of two timings of one query (the same verdict).
-Timing least(const Timing& a, const Timing& b) { return b.seconds_per_query < a.seconds_per_query ? b : a; }
-
 void row(const Case& c, double min_seconds, int repeat)
 {
   Check_options opts;
@@ -55,18 +50,10 @@ void row(const Case& c, double min_seconds, int repeat)
     std::printf("%-22s %s\n", c.name.c_str(), fcl.reason().c_str());
     return;
   }
-  Timing e{}, p{}, d{}, f{}, fb{};
-  for (int r = 0; r < repeat; ++r) {
-    auto take = [&](Timing& best, auto run) {
-      Timing t = time_it(run, min_seconds);
-      best = r == 0 ? t : least(best, t);
-    };
-    take(e, [&] { return check_exact(c.scene, opts).collide; });
-    take(p, [&] { return prepared.check(opts).collide; });
-    take(d, [&] { return check_double(c.scene, 0, opts).collide; });
-    take(f, [&] { return fcl.time_of_contact(0, 1).has_value(); });
-    take(fb, [&] { return Fcl_subject(c.scene).check(opts).collide; });
-  }
+  auto [e, p, d, f, fb] = time_in_turns(
+      repeat, min_seconds, [&] { return check_exact(c.scene, opts).collide; },
+      [&] { return prepared.check(opts).collide; }, [&] { return check_double(c.scene, 0, opts).collide; },
+      [&] { return fcl.time_of_contact(0, 1).has_value(); }, [&] { return Fcl_subject(c.scene).check(opts).collide; });
   std::printf("%-22s %9.1f %8.1f %9.1f %9.1f %12.1f %9.1f %8.2f %10.1f   %-7s %-7s %-7s\n", c.name.c_str(),
               e.seconds_per_query * 1e6, p.seconds_per_query * 1e6, d.seconds_per_query * 1e6,
               f.seconds_per_query * 1e6, fb.seconds_per_query * 1e6, e.seconds_per_query / f.seconds_per_query,
