@@ -189,14 +189,16 @@ private:
 
   // p moved off every plane through it, then snapped; the first `dims`
   // coordinates move (3: the time stays).
-  // known: the planes' values at p, when the caller has them (no zeros to
-  // decide then: z is none).
+  // known: the planes' values at p, when the caller has them.
   std::optional<V4> generic_snapped(V4 p, const std::vector<H>& planes, int dims, Zeros* z = nullptr,
                                     const std::vector<FT>* known = nullptr) const
   {
     std::vector<FT> own;
-    if (!known || z) own = known ? *known : values_at(p, planes);
-    const std::vector<FT>* values = known && !z ? known : &own;
+    const std::vector<FT>* values = known;
+    if (!values || z) {   // decide_zeros writes its zeros into them: a copy of its own
+      own = known ? *known : values_at(p, planes);
+      values = &own;
+    }
     if (z && !decide_zeros(own, planes, *z)) return std::nullopt;
     CGAL::Uncertain<bool> moved = make_generic(p, planes, *values, dims, z);
     if (!CGAL::is_certain(moved)) return std::nullopt;
