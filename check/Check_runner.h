@@ -88,10 +88,10 @@ void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::p
   std::atomic<std::size_t> first_hit{pairs.size()};      // any-collision mode: lowest colliding index
   std::mutex best_mutex;
   bool have_best = false;
-  FT best{};
+  FT best = zero_value<FT>();
   auto check_one = [&](std::size_t i) {
     if (!options.all_pairs && !options.earliest && i > first_hit.load()) return;
-    FT ceiling{};
+    FT ceiling = zero_value<FT>();
     bool use_ceiling = false;
     if (options.earliest && !options.all_pairs) {
       std::lock_guard<std::mutex> lock(best_mutex);
@@ -125,7 +125,7 @@ void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::p
   }
 
   bool merged = false;
-  FT merged_best{};
+  FT merged_best = zero_value<FT>();
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     answer.stats.add(stats[i]);
     const Pair_result<FT>& r = results[i];

@@ -29,7 +29,7 @@ struct Pair_result {
   bool has_witness = false;       // false: found, the witness is for another kernel to make
   bool witness_verified = false;  // checked with strict signs against the scene
   bool earliest = false;          // t_star and contact are set (--earliest)
-  FT t_star = shared_zero<FT>();  // inf of the collision times (§5); closed: the first contact time
+  FT t_star = zero_value<FT>();  // inf of the collision times (§5); closed: the first contact time
   Vector4<FT> contact = shared_zeros<FT, 4>();   // (x*, t*) in the closure of the collision region
   // What makes the answer checkable (check/Check_answer.h, Pair_answer):
   // closed, generic points inside a and inside b whose cells' closures hold
@@ -55,7 +55,7 @@ public:
   Collision_checker(const K& k, const Scene_model<K>& model, const std::vector<Bounds>& settled, Check_stats& stats,
                     bool use_sbounds = true, Policy* policy = nullptr)
     : k_(k), model_(model), stats_(stats), use_sbounds_(use_sbounds), settled_(settled),
-      policy_(policy ? *policy : own_policy_) {}
+      policy_(policy ? *policy : own_policy_.emplace()) {}
   Collision_checker(const Collision_checker&) = delete;
   Collision_checker& operator=(const Collision_checker&) = delete;
 
@@ -168,7 +168,7 @@ private:
   const Sides_at<FT>* sides_ = nullptr;
   const Guide_source* guides_ = nullptr;
   const std::vector<Bounds>& settled_;
-  Policy own_policy_;
+  std::optional<Policy> own_policy_;   // made only when no policy is given
   Policy& policy_;
 
   // The pair's sub-spans in time order, until the goal is met; false when

@@ -39,7 +39,7 @@ template <class K>
 struct Scene_model {
   using FT = typename K::FT;
   K kernel;                              // whose signs order times
-  FT t_lo = shared_zero<FT>(), t_hi = shared_zero<FT>();
+  FT t_lo = zero_value<FT>(), t_hi = zero_value<FT>();
   // The scene's own (build): sub_spans orders times on them.
   Rational exact_t_lo = shared_zero<Rational>(), exact_t_hi = shared_zero<Rational>();
   bool exact_span = false, lo_on_grid = true, hi_on_grid = true;

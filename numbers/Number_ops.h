@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 
 namespace clash4d {
@@ -34,12 +35,22 @@ const FT& shared_zero()
   return zero;
 }
 
+// A zero to start a member or a variable at: a copy of the shared one
+// where a zero owns memory (rationals), else made in place (doubles,
+// intervals: no static to look up).
+template <class FT>
+FT zero_value()
+{
+  if constexpr (std::is_trivially_destructible_v<FT>) return FT(0);
+  else return shared_zero<FT>();
+}
+
 // N copies of it, each made as a copy (a default array would make N
 // zeros first): coordinates that start at zero.
 template <class FT, std::size_t... I>
 std::array<FT, sizeof...(I)> shared_zeros(std::index_sequence<I...>)
 {
-  return {{((void)I, shared_zero<FT>())...}};
+  return {{((void)I, zero_value<FT>())...}};
 }
 template <class FT, std::size_t N>
 std::array<FT, N> shared_zeros()

@@ -6,6 +6,7 @@
 #define CLASH4D_SEARCH_SEARCH_GOAL_H
 
 #include "geometry/kernel_ft4.h"
+#include "numbers/Number_ops.h"
 #include "search/Semantics.h"
 #include <array>
 #include <cstddef>
@@ -24,13 +25,13 @@ struct Search_goal {
   // their planes), with a direction into a cell inside A around it and one
   // into a cell inside B (zero when the point lies on no plane of the
   // object's formula there).
-  Vector4<FT> inside{};
-  Vector4<FT> toward_a{}, toward_b{};
+  Vector4<FT> inside = shared_zeros<FT, 4>();
+  Vector4<FT> toward_a = shared_zeros<FT, 4>(), toward_b = shared_zeros<FT, 4>();
   // Earliest mode: the least time seen so far over the closure of the
   // collision region (regularised-semantics item 5: a vertex of the
   // arrangement), and the point there.
-  FT t_star{};
-  Vector4<FT> contact{};
+  FT t_star = zero_value<FT>();
+  Vector4<FT> contact = shared_zeros<FT, 4>();
   // Earliest mode: the four planes (the current conquer's layout) that meet
   // at the contact point, when a line of this conquer recorded it
   // (Generate_and_test). An edge of the conquer ending where the same four
@@ -46,12 +47,12 @@ struct Search_goal {
   // are points strictly inside each object at the contact's time. Every
   // such point sees the contact in its cell's closure.
   bool convex = false;
-  Vector4<FT> cell_a{}, cell_b{};
+  Vector4<FT> cell_a = shared_zeros<FT, 4>(), cell_b = shared_zeros<FT, 4>();
 
   // Earliest mode across pairs: a pair whose collision cannot start before
   // the best time of the pairs already examined need not be searched.
   bool has_ceiling = false;
-  FT ceiling{};
+  FT ceiling = zero_value<FT>();
 
   bool done() const { return found && !earliest; }
   // Could a region or edge whose times start at t_from hold a better point?
