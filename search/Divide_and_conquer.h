@@ -12,6 +12,7 @@
 #include "search/Generate_and_test.h"
 #include "search/No_filter.h"
 #include <CGAL/Uncertain.h>
+#include <optional>
 
 namespace clash4d {
 
@@ -34,7 +35,7 @@ public:
   // known. policy: search/No_filter.h.
   Divide_and_conquer(const K& k, const std::vector<H>& table, Check_stats& stats,
                      const Motion_groups<FT>* groups = nullptr, Policy* policy = nullptr)
-    : k_(k), table_(table), stats_(stats), policy_(policy ? *policy : own_policy_),
+    : k_(k), table_(table), stats_(stats), policy_(policy ? *policy : own_policy_.emplace()),
       conquer_(k, table, stats, groups, &policy_) {}
 
   static std::size_t kappa(std::size_t d) { return 2 * d + 6; }
@@ -189,7 +190,7 @@ private:
   const std::vector<H>& table_;
   Box4 conquered_ = Box4::nothing();
   Check_stats& stats_;
-  Policy own_policy_;
+  std::optional<Policy> own_policy_;   // made only when no policy is given
   Policy& policy_;
   Generate_and_test<K, Policy> conquer_;
   std::vector<int> path_;                 // child indices from the root region to here

@@ -55,7 +55,7 @@ public:
   // known. policy: search/No_filter.h.
   Generate_and_test(const K& k, const std::vector<H>& table, Check_stats& stats,
                     const Motion_groups<FT>* groups = nullptr, Policy* policy = nullptr)
-    : k_(k), table_(table), stats_(stats), groups_(groups), policy_(policy ? *policy : own_policy_) {}
+    : k_(k), table_(table), stats_(stats), groups_(groups), policy_(policy ? *policy : own_policy_.emplace()) {}
 
   // Records what it finds in the goal; in earliest mode it examines every
   // edge that could hold an earlier point (the least time over an edge is at
@@ -187,7 +187,7 @@ private:
   const std::vector<H>& table_;
   Check_stats& stats_;
   const Motion_groups<FT>* groups_;
-  Policy own_policy_;
+  std::optional<Policy> own_policy_;   // made only when no policy is given
   Policy& policy_;
   std::vector<H> planes_;                 // distinct hyperplanes, region faces last
   Plane_layout layout_;                   // where they come from
