@@ -5,10 +5,12 @@
 #ifndef CLASH4D_SEARCH_DOUBLE_SIMPLEX_H
 #define CLASH4D_SEARCH_DOUBLE_SIMPLEX_H
 
+#include <boost/container/small_vector.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 namespace clash4d {
@@ -20,13 +22,17 @@ class Double_simplex {
 public:
   static constexpr int max_rows = 5;
   using Row_vector = std::array<double, max_rows>;
+  // Room for a convex pair's programs (two hulls of a few dozen planes)
+  // without the heap: a program per query of the pair.
+  static constexpr std::size_t inline_columns = 64;
+  template <class T, std::size_t N> using Small = boost::container::small_vector<T, N>;
 
   // rows <= max_rows equality rows with right-hand side b; columns y_j.
   // eps: reduced costs and pivots below it count as zero (columns of
   // entries at most 1: a constraint of the primal may be missed by eps).
   Double_simplex(int rows, int columns, const Row_vector& b, double eps = 1e-9)
-      : eps_(eps), R_(rows), m_(columns), W_(m_ + R_ + 1), T_(static_cast<std::size_t>((R_ + 1) * W_), 0.0),
-        cost_(static_cast<std::size_t>(columns), 0.0), b_(b), flip_{}, basis_(static_cast<std::size_t>(rows))
+      : eps_(eps), R_(checked_rows(rows)), m_(columns), W_(m_ + R_ + 1),
+        T_(static_cast<std::size_t>((R_ + 1) * W_), 0.0), cost_(static_cast<std::size_t>(columns), 0.0), b_(b), flip_{}
   {
     // Rows with b < 0 are negated, so that the artificials start feasible.
     for (int i = 0; i < R_; ++i) {
@@ -45,8 +51,8 @@ public:
   }
 
   struct Optimum {
-    std::vector<int> basis;   // the basic y columns (artificials at zero left out)
-    std::vector<double> y;    // their values
+    Small<int, max_rows> basis;   // the basic y columns (artificials at zero left out)
+    Small<double, max_rows> y;    // their values
     Row_vector pi{};          // row multipliers: pi . a_j >= cost_j, with equality on the basis
     double value = 0;         // pi . b, the optimum of cost . y
   };
@@ -96,9 +102,16 @@ public:
 private:
   double eps_;
   int R_, m_, W_;                      // rows; y columns; columns with artificials and rhs
-  std::vector<double> T_, cost_;
+  Small<double, (max_rows + 1) * (inline_columns + max_rows + 1)> T_;
+  Small<double, inline_columns> cost_;
   Row_vector b_, flip_;
-  std::vector<int> basis_;
+  std::array<int, max_rows> basis_{};
+
+  static int checked_rows(int rows)
+  {
+    if (rows < 1 || rows > max_rows) throw std::logic_error("Double_simplex: between 1 and 5 rows");
+    return rows;
+  }
 
   double& at(int r, int c) { return T_[static_cast<std::size_t>(r * W_ + c)]; }
 

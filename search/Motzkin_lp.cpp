@@ -120,7 +120,7 @@ std::optional<std::vector<int>> guessed_support(const std::vector<Motzkin_row>& 
     for (int i = 0; i < 4; ++i) inside->x[i] = -o->pi[i];
     inside->found = true;
   }
-  return o->basis;
+  return std::vector<int>(o->basis.begin(), o->basis.end());
 }
 
 std::optional<std::vector<Rational>> on_support(const std::vector<Motzkin_row>& rows, const std::vector<int>& support)

@@ -85,7 +85,7 @@ BOOST_AUTO_TEST_CASE(double_simplex_optimum_and_multipliers)
   BOOST_TEST(std::abs(o->value - 1.5) < 1e-12);
   BOOST_TEST(std::abs(o->pi[0] - 1.5) < 1e-12);
   BOOST_TEST(std::abs(o->pi[1] - 1.5) < 1e-12);
-  std::vector<int> basis = o->basis;
+  std::vector<int> basis(o->basis.begin(), o->basis.end());
   std::sort(basis.begin(), basis.end());
   BOOST_TEST((basis == std::vector<int>{0, 2}));
   // y0 + y1 = -1 has no solution with y >= 0.
