@@ -1,10 +1,10 @@
 // Per-query time of a check, shared by the benchmarks: the query is repeated
 // until min_seconds have passed (at most 100000 times, after a first query
-// left out), so short queries are timed over many runs. time_in_turns times several queries that are
-// compared with each other (exact, double, FCL on one scene) repeat times,
-// taking turns, and keeps each one's least time: on a shared machine one
-// measurement moves by a third, and the ratios then hold queries measured
-// under the same load.
+// left out), so short queries are timed over many runs. time_in_turns
+// times several queries that are compared with each other (exact, double,
+// FCL on one scene) repeat times, taking turns, and keeps each one's least
+// time: on a shared machine one measurement moves by a third, and the
+// ratios then hold queries measured under the same load.
 #ifndef CLASH4D_BENCH_TIMING_H
 #define CLASH4D_BENCH_TIMING_H
 

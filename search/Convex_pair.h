@@ -98,7 +98,8 @@ public:
   // kernel's stage or kept for many pairs; each made here when none.
   Convex_pair(const K& k, const Scene_model<K>& model, int a, int b, Policy* policy = nullptr,
               Convex_guides guides = {})
-    : k_(k), model_(model), a_(a), b_(b), policy_(policy ? *policy : own_policy_.emplace()), guides_(std::move(guides))
+    : k_(k), model_(model), a_(a), b_(b), policy_(policy ? *policy : own_policy_.emplace()),
+      guides_(std::move(guides))
   {
     for (int o = 0; o < 2; ++o)
       if (!guides_[o]) guides_[o] = Convex_guide::make(model.scene->objects[static_cast<std::size_t>(o == 0 ? a : b)]);
