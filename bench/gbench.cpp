@@ -3,9 +3,10 @@
 // (--benchmark_out=FILE --benchmark_out_format=json; scripts/bench-record
 // keeps it under bench/results/) can be compared with later ones
 // (scripts/bench-compare). What is timed:
-//   fcl/<pair>/{exact,double,fcl}: the six convex pairs of clash4d_fcl_bench
-//     (bench/Fcl_cases.h, seed 1990); fcl is FCL's query alone on shapes
-//     converted once (built with FCL only);
+//   fcl/<pair>/{exact,prepared,double,fcl}: the six convex pairs of
+//     clash4d_fcl_bench (bench/Fcl_cases.h, seed 1990); prepared is exact on
+//     the scene prepared once (exact/Exact_checker.h), fcl FCL's query alone
+//     on shapes converted once (built with FCL only);
 //   {paper,contact}/<fixture>/{exact,double}/{regularised,closed}[/earliest]:
 //     every scene of fixtures/paper and fixtures/contact.
 // Each run's counter `collide` (0/1) is its verdict. After the runs, a
@@ -22,6 +23,7 @@
 #include "bench/Fcl_cases.h"
 #include "bench/Fixtures.h"
 #include "compare/Fcl_subject.h"
+#include "exact/Exact_checker.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
 #include "scene/Scene_reader.h"
@@ -92,13 +94,16 @@ void add_fixtures(const char* family)
   }
 }
 
-// The six convex pairs: exact and double run `check` on the scene; fcl is
-// FCL's query alone on shapes converted once (how FCL is used).
+// The six convex pairs: exact and double run `check` on the scene, prepared
+// exact's check on the scene prepared once (the same answer); fcl is FCL's
+// query alone on shapes converted once (how FCL is used).
 void add_fcl_pairs()
 {
   for (fcl_cases::Case& c : fcl_cases::all_cases(1990)) {
     auto scene = std::make_shared<const Scene>(std::move(c.scene));
     add({"fcl", c.name, "exact", ""}, [scene] { return check_exact(*scene, Check_options()).collide; });
+    auto prepared = std::make_shared<Exact_checker>(*scene);   // holds a reference to *scene
+    add({"fcl", c.name, "prepared", ""}, [scene, prepared] { return prepared->check(Check_options()).collide; });
     add({"fcl", c.name, "double", ""}, [scene] { return check_double(*scene, 0, Check_options()).collide; });
     auto fcl = std::make_shared<const Fcl_subject>(*scene);
     if (fcl->expressible()) add({"fcl", c.name, "fcl", ""}, [fcl] { return fcl->time_of_contact(0, 1).has_value(); });
@@ -120,7 +125,7 @@ struct Column {
 std::vector<Column> columns_of(const std::string& family)
 {
   if (family == "fcl") return {{"exact/double", "", "exact", "double"}, {"exact/fcl", "", "exact", "fcl"},
-                               {"double/fcl", "", "double", "fcl"}};
+                               {"prepared/fcl", "", "prepared", "fcl"}, {"double/fcl", "", "double", "fcl"}};
   std::vector<Column> out;
   for (const char* mode : {"regularised", "closed", "regularised/earliest", "closed/earliest"})
     out.push_back({mode, mode, "exact", "double"});
@@ -217,8 +222,9 @@ private:
 void print_help()
 {
   std::printf("usage: clash4d_gbench [--benchmark_filter=REGEX] [--benchmark_min_time=S (default 0.05)] ...\n"
-              "  times check per query: fcl/<pair>/{exact,double,fcl}, {paper,contact}/<fixture>/{exact,double}/\n"
-              "  {regularised,closed}[/earliest]; then time ratios per scene and geometric means per family\n\n");
+              "  times check per query: fcl/<pair>/{exact,prepared,double,fcl}, {paper,contact}/<fixture>/\n"
+              "  {exact,double}/{regularised,closed}[/earliest]; then time ratios per scene and geometric means\n"
+              "  per family\n\n");
   benchmark::PrintDefaultHelp();
 }
 
