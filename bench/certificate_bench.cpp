@@ -5,6 +5,8 @@
 // --earliest. Targets: writing at most 3x check; verifying faster than
 // deciding.
 //   clash4d_certificate_bench [--seed N] [--random M] [--min-seconds S] [--family paper|contact|random]
+#include "bench/Fixtures.h"
+#include "bench/Option_number.h"
 #include "bench/Timing.h"
 #include "certify/Certificate_writer.h"
 #include "exact/Exact_instantiation.h"
@@ -72,36 +74,40 @@ std::vector<std::pair<std::string, Check_options>> modes()
   return out;
 }
 
-} // namespace
+const char* usage =
+    "usage: clash4d_certificate_bench [--seed N] [--random M] [--min-seconds S] [--family paper|contact|random]\n";
 
-int main(int argc, char** argv)
+int run_bench(int argc, char** argv)
 {
   unsigned long seed = 1990;
   int random_count = 20;
   double min_seconds = 0.05;
   std::string only;
-  for (int i = 1; i + 1 < argc; i += 2) {
+  for (int i = 1; i < argc; i += 2) {
     std::string a = argv[i];
-    if (a == "--seed") seed = std::stoul(argv[i + 1]);
-    else if (a == "--random") random_count = std::stoi(argv[i + 1]);
-    else if (a == "--min-seconds") min_seconds = std::stod(argv[i + 1]);
-    else if (a == "--family") only = argv[i + 1];
-    else {
-      std::fprintf(stderr, "clash4d_certificate_bench: unknown option %s\n", a.c_str());
-      return 2;
+    if (a == "--help" || a == "-h") {
+      std::printf("%s  times check, check with its certificate, and the certificate's verification, per family,\n"
+                  "  in both semantics, plain and --earliest\n", usage);
+      return 0;
     }
+    if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
+    if (a == "--seed") seed = option_number<unsigned long>(a, argv[i + 1]);
+    else if (a == "--random") random_count = option_number<int>(a, argv[i + 1]);
+    else if (a == "--min-seconds") min_seconds = option_number<double>(a, argv[i + 1]);
+    else if (a == "--family") only = argv[i + 1];
+    else throw std::invalid_argument("unknown option " + a + "\n" + usage);
   }
+  if (!(min_seconds > 0)) throw std::invalid_argument("--min-seconds must be positive");
+  if (random_count < 0) throw std::invalid_argument("--random must not be negative");
+  if (!only.empty() && only != "paper" && only != "contact" && only != "random")
+    throw std::invalid_argument("--family " + only + ": not paper, contact or random");
   std::printf("%-66s %10s %10s %10s %7s %7s %9s  %s\n", "scene (mode)", "check us", "+cert us", "verify us", "write", "verify",
               "bytes", "verdict");
   for (const auto& [mode, opts] : modes()) {
     for (const char* family : {"paper", "contact"}) {
       if (!only.empty() && only != family) continue;
       Means means;
-      std::vector<std::filesystem::path> files;
-      for (const auto& f : std::filesystem::directory_iterator(std::string(CLASH4D_FIXTURES) + "/" + family))
-        if (f.path().extension() == ".json" && f.path().filename() != "expected.json") files.push_back(f.path());
-      std::sort(files.begin(), files.end());
-      for (const auto& f : files)
+      for (const auto& f : fixture_files(family))
         row(std::string(family) + "/" + f.filename().string() + " (" + mode + ")", read_scene_file(f.string()), opts,
             min_seconds, means);
       means.print(std::string(family) + ", " + mode);
@@ -113,5 +119,19 @@ int main(int argc, char** argv)
       row("random #" + std::to_string(i) + " (" + mode + ")", read_scene(read_json_text(make_hull_scene(rng))), opts,
           min_seconds, means);
     if (means.count) means.print("random (seed " + std::to_string(seed) + "), " + mode);
+  }
+  return 0;
+}
+
+} // namespace
+
+// Bad options end with a message naming them and exit 2.
+int main(int argc, char** argv)
+{
+  try {
+    return run_bench(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "clash4d_certificate_bench: %s\n", e.what());
+    return 2;
   }
 }

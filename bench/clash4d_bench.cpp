@@ -20,6 +20,7 @@
 // "(double unverified)" for the same verdict with a witness that fails the
 // check against the scene.
 #include "bench/Fixtures.h"
+#include "bench/Option_number.h"
 #include "bench/Timing.h"
 #include "compare/Contact_families.h"
 #include "exact/Exact_instantiation.h"
@@ -122,20 +123,24 @@ int run_bench(int argc, char** argv)
       std::fprintf(stderr, "clash4d_bench: %s needs a value\n", a.c_str());
       return 2;
     }
-    if (a == "--seed") seed = std::stoul(argv[i + 1]);
-    else if (a == "--random") random_count = std::stoi(argv[i + 1]);
-    else if (a == "--fuzz") fuzz_count = std::stoi(argv[i + 1]);
-    else if (a == "--min-seconds") min_seconds = std::stod(argv[i + 1]);
+    if (a == "--seed") seed = option_number<unsigned long>(a, argv[i + 1]);
+    else if (a == "--random") random_count = option_number<int>(a, argv[i + 1]);
+    else if (a == "--fuzz") fuzz_count = option_number<int>(a, argv[i + 1]);
+    else if (a == "--min-seconds") min_seconds = option_number<double>(a, argv[i + 1]);
     else if (a == "--dump-random") dump_dir = argv[i + 1];
     else if (a == "--family") only = argv[i + 1];
     else if (a == "--scene") scene_file = argv[i + 1];
-    else if (a == "--repeat") repeat_count = std::stoi(argv[i + 1]);
+    else if (a == "--repeat") repeat_count = option_number<int>(a, argv[i + 1]);
     else {
       std::fprintf(stderr, "clash4d_bench: unknown option %s\n", a.c_str());
       return 2;
     }
   }
+  if (!(min_seconds > 0)) throw std::runtime_error("--min-seconds must be positive");
+  if (random_count < 0 || fuzz_count < 0) throw std::runtime_error("--random and --fuzz must not be negative");
   if (repeat_count < 1) throw std::runtime_error("--repeat must be at least 1");
+  if (!only.empty() && only != "paper" && only != "contact" && only != "grid" && only != "fuzz" && only != "random")
+    throw std::runtime_error("--family " + only + ": not paper, contact, grid, fuzz or random");
   if (!dump_dir.empty() && !std::filesystem::is_directory(dump_dir))
     throw std::runtime_error("--dump-random " + dump_dir + ": not a directory");
   std::printf("%-58s %11s %11s %11s %8s %8s %11s %11s %8s  %s\n", "scene", "exact us", "rational us", "double us",
@@ -194,13 +199,7 @@ int main(int argc, char** argv)
 {
   try {
     return run_bench(argc, argv);
-  } catch (const std::invalid_argument& e) {   // std::stoi, std::stod
-    std::fprintf(stderr, "clash4d_bench: an option's value is not a number (%s)\n", e.what());
-    return 2;
-  } catch (const std::out_of_range& e) {
-    std::fprintf(stderr, "clash4d_bench: an option's value is out of range (%s)\n", e.what());
-    return 2;
-  } catch (const std::exception& e) {
+  } catch (const std::exception& e) {   // option_number's message names the option
     std::fprintf(stderr, "clash4d_bench: %s\n", e.what());
     return 2;
   }

@@ -20,6 +20,7 @@
 // whole check against FCL's prepared query.
 #include "compare/Fcl_subject.h"
 #include "bench/Fcl_cases.h"
+#include "bench/Option_number.h"
 #include "bench/Timing.h"
 #include "exact/Exact_checker.h"
 #include "exact/Exact_instantiation.h"
@@ -78,22 +79,10 @@ int run_bench(int argc, char** argv)
                   "  --repeat times (default 3), the columns taking turns, its least time kept\n", usage);
       return 0;
     }
-    // A number option's whole value, or an error naming the option.
-    auto value = [&](auto parse) {
-      std::string text = argv[++i];
-      std::size_t used = 0;
-      try {
-        auto v = parse(text, &used);
-        if (used == text.size()) return v;
-      } catch (const std::logic_error&) {   // std::invalid_argument, std::out_of_range
-      }
-      throw std::invalid_argument(a + " " + text + ": not a number in range");
-    };
-    if (a == "--seed" && i + 1 < argc) seed = value([](const std::string& t, std::size_t* n) { return std::stoul(t, n); });
-    else if (a == "--min-seconds" && i + 1 < argc)
-      min_seconds = value([](const std::string& t, std::size_t* n) { return std::stod(t, n); });
-    else if (a == "--repeat" && i + 1 < argc)
-      repeat = value([](const std::string& t, std::size_t* n) { return std::stoi(t, n); });
+    auto value = [&](auto number) { return option_number<decltype(number)>(a, argv[++i]); };
+    if (a == "--seed" && i + 1 < argc) seed = value(0ul);
+    else if (a == "--min-seconds" && i + 1 < argc) min_seconds = value(0.0);
+    else if (a == "--repeat" && i + 1 < argc) repeat = value(0);
     else if (a == "--dump-scenes" && i + 1 < argc) dump_dir = argv[++i];
     else {
       std::fprintf(stderr, "clash4d_fcl_bench: unknown option or missing value: %s\n%s", a.c_str(), usage);
