@@ -304,7 +304,15 @@ private:
   Primitive<FT> primitive(const Solid& s, const Affine3<FT>& T) const
   {
     Primitive<FT> p = local(s);
-    place(p, T);
+    if (s.kind != Solid::Kind::Block || !T.linear_identity) {
+      place(p, T);
+      return p;
+    }
+    // A block under a translation: its box is its corners 0 and 7, (min)
+    // and (max) moved, as boxed makes it (min < max, the reader; rounding
+    // is monotone, so in every kernel they are vertex_box's numbers too).
+    move_by(p, T);
+    for (int a = 0; a < 3; ++a) p.box.set(a, p.vertices[0][a], p.vertices[7][a]);
     return p;
   }
 

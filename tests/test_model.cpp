@@ -4,6 +4,7 @@
 #include "model/Extrusion.h"
 #include "model/Scene_model.h"
 #include "search/S_bounds.h"
+#include "exact/Interval_kernel.h"
 #include "exact/Rational_kernel.h"
 #include "float/Double_kernel.h"
 #include "scene/Json_reader.h"
@@ -55,6 +56,49 @@ BOOST_AUTO_TEST_CASE(block_is_six_halfspaces_with_its_box)
   BOOST_TEST(m.primitives[0].planes.size() == 6u);
   check_box(m.primitives[0].box, {Q(0), Q(1, 2), Q(-1)}, {Q(1), Q(2), Q(1, 3)});
   check_vertices_on_planes(m.primitives[0]);
+}
+
+// A block under a translation takes its box from its corners min and max
+// (Model_builder::primitive) instead of the min and max over all eight:
+// the same numbers in every kernel, bit for bit, because rounding is
+// monotone. Decimal sides (0.1, 0.3) make the intervals wide and the
+// doubles rounded; exactly, the box is [min + d, max + d].
+template <class K>
+static void check_block_box_is_corners_box()
+{
+  using FT = typename K::FT;
+  K k;
+  Scene scene = scene_with(
+      R"({"translate":["0.1","-0.3",2],"solid":{"block":{"min":["-0.7","0.1","0.3"],"max":["0.2","0.3","1.1"]}}})");
+  CGAL::Protect_FPU_rounding<std::is_same_v<K, Interval_kernel>> protect;   // what the interval kernel needs
+  Primitive<FT> p = Scene_model<K>::build(k, scene).objects[0].csg.primitives[0];
+  BOOST_TEST_REQUIRE(p.vertices.size() == 8u);
+  auto same = [](const FT& x, const FT& y) {
+    if constexpr (std::is_same_v<FT, Interval>) return x.inf() == y.inf() && x.sup() == y.sup();
+    else return x == y;
+  };
+  for (int a = 0; a < 3; ++a) {
+    FT lo = p.vertices[0][a], hi = p.vertices[0][a];
+    for (const auto& v : p.vertices) {
+      lo = Number_ops<FT>::lower(lo, v[a]);
+      hi = Number_ops<FT>::upper(hi, v[a]);
+    }
+    BOOST_TEST_REQUIRE((p.box.has_lo[a] && p.box.has_hi[a]));
+    BOOST_TEST(same(p.box.lo[a], lo), "axis " << a);
+    BOOST_TEST(same(p.box.hi[a], hi), "axis " << a);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(translated_block_box_is_its_corners_box_in_every_kernel)
+{
+  check_block_box_is_corners_box<Rational_kernel>();
+  check_block_box_is_corners_box<Double_kernel>();
+  check_block_box_is_corners_box<Interval_kernel>();
+  check_box(model_of(R"({"translate":["0.1","-0.3",2],"solid":{"block":{"min":["-0.7","0.1","0.3"],)"
+                     R"("max":["0.2","0.3","1.1"]}}})")
+                .primitives[0]
+                .box,
+            {Q(-3, 5), Q(-1, 5), Q(23, 10)}, {Q(3, 10), Q(0), Q(31, 10)});
 }
 
 BOOST_AUTO_TEST_CASE(rotation_matrices_are_exactly_orthogonal)
