@@ -131,8 +131,19 @@ template <class K>
 bool is_generic_inside(const K& k, const Scene_model<K>& model, int i, const Vector4<typename K::FT>& g,
                        const Sides_at<typename K::FT>* sides = nullptr)
 {
-  const Object_model<typename K::FT>& o = model.objects[i];
-  return sides_at(k, model, i, solid_point(k, o, g), sides).generic_inside(o.csg);
+  using FT = typename K::FT;
+  const Object_model<FT>& o = model.objects[i];
+  Vector3<FT> y = solid_point(k, o, g);
+  if (sides || o.csg.nodes.size() != 1 || o.csg.nodes[0].op != Csg_node::Op::Primitive)
+    return sides_at(k, model, i, y, sides).generic_inside(o.csg);
+  // One primitive (a convex pair's object): inside and generic is every
+  // plane negative, Plane_sides' answer without its two vectors. Every
+  // sign is still asked, in its order, so that one the kernel cannot tell
+  // fails here as it fails there.
+  bool inside = true;
+  for (const Plane3<FT>& pl : o.csg.primitives[static_cast<std::size_t>(o.csg.nodes[0].primitive)].planes)
+    inside = (k.side(Vector3<FT>{pl[0], pl[1], pl[2]}, pl[3], y) == CGAL::NEGATIVE) && inside;
+  return inside;
 }
 
 // Whether p = (x, t) is in the closure of the cell of object i whose sides

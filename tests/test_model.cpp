@@ -2,6 +2,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "model/Extrusion.h"
+#include "model/Point_classifier.h"
 #include "model/Scene_model.h"
 #include "search/S_bounds.h"
 #include "exact/Interval_kernel.h"
@@ -99,6 +100,37 @@ BOOST_AUTO_TEST_CASE(translated_block_box_is_its_corners_box_in_every_kernel)
                 .primitives[0]
                 .box,
             {Q(-3, 5), Q(-1, 5), Q(23, 10)}, {Q(3, 10), Q(0), Q(31, 10)});
+}
+
+// is_generic_inside decides a one-primitive object by its planes' signs
+// alone; the block [0, 1/2] x [-1, 1] x [1/3, 2] is strictly inside
+// exactly where each coordinate is strictly between its bounds. Points on
+// a grid through every face (and outside) are held against that rule and
+// against Plane_sides, which every many-primitive object still takes.
+BOOST_AUTO_TEST_CASE(one_primitive_membership_is_its_planes_signs)
+{
+  Rational_kernel k;
+  Scene scene = scene_with(R"({"block":{"min":[0,-1,"1/3"],"max":["1/2",1,2]}})");
+  Scene_model<Rational_kernel> model = Scene_model<Rational_kernel>::build(k, scene);
+  const Csg_model<Q>& csg = model.objects[0].csg;
+  BOOST_TEST_REQUIRE(csg.nodes.size() == 1u);
+  const std::array<Q, 3> lo{Q(0), Q(-1), Q(1, 3)}, hi{Q(1, 2), Q(1), Q(2)};
+  const std::vector<Q> steps{Q(-1), Q(0), Q(1, 4), Q(1, 3), Q(1, 2), Q(1), Q(2), Q(3)};
+  int inside = 0, total = 0;
+  for (const Q& x : steps)
+    for (const Q& y : steps)
+      for (const Q& z : steps) {
+        Vector4<Q> g{x, y, z, Q(1)};
+        bool want = true;
+        for (int a = 0; a < 3; ++a) want = want && lo[a] < g[a] && g[a] < hi[a];
+        bool got = is_generic_inside(k, model, 0, g);
+        BOOST_TEST(got == want, "(" << x << ", " << y << ", " << z << ")");
+        BOOST_TEST(got == Plane_sides<Q>(k, csg, {x, y, z}).generic_inside(csg));
+        inside += got;
+        ++total;
+      }
+  BOOST_TEST(inside == 16);   // x in {1/4, 1/3}, y in {0, 1/4, 1/3, 1/2}, z in {1/2, 1}
+  BOOST_TEST(total == 512);
 }
 
 BOOST_AUTO_TEST_CASE(rotation_matrices_are_exactly_orthogonal)
