@@ -5,6 +5,7 @@
 // --earliest. Targets: writing at most 3x check; verifying faster than
 // deciding.
 //   clash4d_certificate_bench [--seed N] [--random M] [--min-seconds S] [--family paper|contact|random]
+#include "bench/Bench_main.h"
 #include "bench/Fixtures.h"
 #include "bench/Option_number.h"
 #include "bench/Timing.h"
@@ -126,12 +127,4 @@ int run_bench(int argc, char** argv)
 } // namespace
 
 // Bad options end with a message naming them and exit 2.
-int main(int argc, char** argv)
-{
-  try {
-    return run_bench(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "clash4d_certificate_bench: %s\n", e.what());
-    return 2;
-  }
-}
+int main(int argc, char** argv) { return bench_main("clash4d_certificate_bench", run_bench, argc, argv); }

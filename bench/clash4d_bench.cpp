@@ -19,6 +19,7 @@
 // A row whose double answer is wrong says so: "(double differs)", or
 // "(double unverified)" for the same verdict with a witness that fails the
 // check against the scene.
+#include "bench/Bench_main.h"
 #include "bench/Fixtures.h"
 #include "bench/Option_number.h"
 #include "bench/Timing.h"
@@ -195,12 +196,4 @@ int run_bench(int argc, char** argv)
 } // namespace
 
 // Bad options and unreadable scene files end with a message and exit 2.
-int main(int argc, char** argv)
-{
-  try {
-    return run_bench(argc, argv);
-  } catch (const std::exception& e) {   // option_number's message names the option
-    std::fprintf(stderr, "clash4d_bench: %s\n", e.what());
-    return 2;
-  }
-}
+int main(int argc, char** argv) { return bench_main("clash4d_bench", run_bench, argc, argv); }

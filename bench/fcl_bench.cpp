@@ -19,6 +19,7 @@
 // "prep/fcl" holds the two prepared queries side by side; "exact/fcl" the
 // whole check against FCL's prepared query.
 #include "compare/Fcl_subject.h"
+#include "bench/Bench_main.h"
 #include "bench/Fcl_cases.h"
 #include "bench/Option_number.h"
 #include "bench/Timing.h"
@@ -110,13 +111,5 @@ int run_bench(int argc, char** argv)
 
 } // namespace
 
-// Bad options end with a message and exit 2.
-int main(int argc, char** argv)
-{
-  try {
-    return run_bench(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "clash4d_fcl_bench: %s\n", e.what());
-    return 2;
-  }
-}
+// Bad options end with a message naming them and exit 2.
+int main(int argc, char** argv) { return bench_main("clash4d_fcl_bench", run_bench, argc, argv); }
