@@ -109,7 +109,7 @@ int run_bench(int argc, char** argv)
       if (!only.empty() && only != family) continue;
       Means means;
       for (const auto& f : fixture_files(family))
-        row(std::string(family) + "/" + f.filename().string() + " (" + mode + ")", read_scene_file(f.string()), opts,
+        row(std::string(family) + "/" + f.filename().string() + " (" + mode + ")", read_bench_scene(f.string()), opts,
             min_seconds, means);
       means.print(std::string(family) + ", " + mode);
     }

@@ -99,6 +99,12 @@ void row(const std::string& name, const Scene& scene, double min_seconds, Means&
 
 namespace {
 
+void print_header()
+{
+  std::printf("%-58s %11s %11s %11s %8s %8s %11s %11s %8s  %s\n", "scene", "exact us", "rational us", "double us",
+              "ex/dbl", "rat/dbl", "closed ex", "closed dbl", "cl ratio", "exact verdict | closed");
+}
+
 int run_bench(int argc, char** argv)
 {
   unsigned long seed = 1990;
@@ -144,18 +150,19 @@ int run_bench(int argc, char** argv)
     throw std::runtime_error("--family " + only + ": not paper, contact, grid, fuzz or random");
   if (!dump_dir.empty() && !std::filesystem::is_directory(dump_dir))
     throw std::runtime_error("--dump-random " + dump_dir + ": not a directory");
-  std::printf("%-58s %11s %11s %11s %8s %8s %11s %11s %8s  %s\n", "scene", "exact us", "rational us", "double us",
-              "ex/dbl", "rat/dbl", "closed ex", "closed dbl", "cl ratio", "exact verdict | closed");
   if (!scene_file.empty()) {
+    Scene scene = read_bench_scene(scene_file);   // a bad file stops before any output
     Means means;
-    row(scene_file, read_scene_file(scene_file), min_seconds, means);
+    print_header();
+    row(scene_file, scene, min_seconds, means);
     return 0;
   }
+  print_header();
   auto wanted = [&](const std::string& family) { return only.empty() || only == family; };
   for (const char* family : {"paper", "contact"}) {
     if (!wanted(family)) continue;
     Means means;
-    for (const auto& f : fixture_files(family)) row(std::string(family) + "/" + f.filename().string(), read_scene_file(f.string()), min_seconds, means);
+    for (const auto& f : fixture_files(family)) row(std::string(family) + "/" + f.filename().string(), read_bench_scene(f.string()), min_seconds, means);
     means.print(family);
   }
   // §6 scaling: check --all-pairs on n blocks, 5 colliding pairs (reading
