@@ -53,7 +53,8 @@
 namespace clash4d {
 
 // AK::Protector, the RAII guard putting the FPU in the mode AK needs, is
-// held around every AK computation, in the thread doing it.
+// held around every AK computation, in the thread doing it; AK::
+// encloses_here() says whether that mode takes effect on this machine.
 template <class AK, class EK>
 class Filtered_runner {
 public:
@@ -544,12 +545,17 @@ private:
   }
 
   // AK's model, each object's S-bounds (EK's where AK fails), and the sweep's
-  // pairs. False when AK cannot build the model: the whole run goes to EK.
+  // pairs. False when AK cannot build the model, or cannot be trusted on
+  // this machine at all (AK::encloses_here): the whole run goes to EK.
   // Made once (the pairs once per semantics): a prepared scene's later
   // checks reuse them, and their stats give the same counts with no time.
   bool prepare(Check_stats& stats, const std::vector<std::pair<int, int>>*& pairs,
                Semantics semantics = Semantics::regularised)
   {
+    if (!AK::encloses_here()) {   // AK's signs could be wrong on this machine (valgrind): EK alone
+      ++fallbacks_;
+      return false;
+    }
     bool timed = stats.timed;
     Prepared& sweep = sweeps_[semantics == Semantics::closed ? 1 : 0];
     if (!model_.done) {

@@ -40,6 +40,27 @@ public:
   using Protector = CGAL::Protect_FPU_rounding<true>;   // the rounding its arithmetic needs
   static constexpr bool reads_exact_constructions = true;   // tight enclosures, exact zeros (model/Model_builder.h)
   static constexpr bool is_exact = false;
+
+  // Whether this machine rounds as the Protector asks: an interval encloses
+  // its rational only if the FPU honours the upward rounding mode. Under
+  // valgrind (every SSE operation rounded to nearest) or an emulator that
+  // ignores the mode, it does not, and a sign given here could be wrong:
+  // the filtered runner then answers in rationals alone (exact/
+  // Filtered_runner.h, prepare). Measured once per process: 1/3 rounded up
+  // must exceed 1/3 rounded down (the -(-a / b) of CGAL's lower ends).
+  static bool encloses_here()
+  {
+    static const bool upward = [] {
+      Protector protect;
+      // volatile: read after the mode is set and written before it is
+      // restored (plain locals, GCC moves the divisions past the restore,
+      // -frounding-math or not), and never folded.
+      volatile double one = 1.0, three = 3.0;
+      volatile double up = one / three, down = -(-one / three);
+      return up > down;
+    }();
+    return upward;
+  }
   // b > 0: a / b is monotone in a, and its ends divide by b's far or near
   // end as a's ends are positive or negative (rounding upward; -(-x / y)
   // rounds down).
