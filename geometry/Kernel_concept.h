@@ -50,6 +50,10 @@
 //                                   a rational (answers are printed from it)
 //   typename K::Protector           RAII guard the kernel's arithmetic needs
 //                                   (the interval kernel's rounding mode)
+//   K::encloses_here()              a filtered runner's approximate kernel:
+//                                   whether the Protector's mode takes effect
+//                                   on this machine (not under valgrind);
+//                                   false, the run is the exact kernel's alone
 #ifndef CLASH4D_GEOMETRY_KERNEL_CONCEPT_H
 #define CLASH4D_GEOMETRY_KERNEL_CONCEPT_H
 
