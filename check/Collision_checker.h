@@ -40,6 +40,35 @@ struct Pair_result {
   Semantics semantics = Semantics::regularised;
   std::vector<Vector4<FT>> witness_cells;
   std::vector<Vector4<FT>> contact_cells;
+
+  Pair_result() = default;
+  Pair_result(const Pair_result&) = default;
+  Pair_result(Pair_result&&) = default;
+  Pair_result& operator=(const Pair_result&) = default;
+  // By exchange: a defaulted move copies every rational (swap_numbers), and
+  // a pair's answer is moved into its slot once per query.
+  Pair_result& operator=(Pair_result&& o) noexcept
+  {
+    swap(o);
+    return *this;
+  }
+  // Every member (a new one goes here too: test_filtered,
+  // pair_results_move_every_member).
+  void swap(Pair_result& o) noexcept
+  {
+    std::swap(a, o.a);
+    std::swap(b, o.b);
+    std::swap(collide, o.collide);
+    swap_numbers(witness, o.witness);
+    std::swap(has_witness, o.has_witness);
+    std::swap(witness_verified, o.witness_verified);
+    std::swap(earliest, o.earliest);
+    swap_numbers(t_star, o.t_star);
+    swap_numbers(contact, o.contact);
+    std::swap(semantics, o.semantics);
+    witness_cells.swap(o.witness_cells);
+    contact_cells.swap(o.contact_cells);
+  }
 };
 
 // K: the kernel; Policy: search/No_filter.h (a filtered run's is in exact/).

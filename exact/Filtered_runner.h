@@ -174,12 +174,10 @@ private:
           stats = std::move(astats);
           return Pair_result<EFT>();
         }
-        if (found.has_witness && found.witness_verified) {
-          if (std::optional<Pair_result<EFT>> r = exact_copy(found)) {
-            stats = std::move(astats);
-            ++witnesses_by_intervals_;
-            return std::move(*r);
-          }
+        if (found.has_witness && found.witness_verified && exact_copyable(found)) {
+          stats = std::move(astats);
+          ++witnesses_by_intervals_;
+          return exact_copy(found);   // made in the caller's slot: a copy of rationals costs
         }
         if (std::optional<Pair_result<EFT>> r = policy.convex_answer(found)) {
           stats = std::move(astats);
@@ -487,54 +485,69 @@ private:
       stages_adopted_{0}, lines_rerun_{0}, witness_lines_{0}, convex_rational_{0}, closed_cells_{0},
       witnesses_by_terms_{0};
 
-  // A witness AK made and verified on a certified path, in EK's numbers.
-  // Regularised, its coordinates are grid points (Witness::snap), exact
-  // doubles, so AK's point intervals are EK's numbers. Closed, the touching
-  // point is any rational: kept only when every coordinate of it and of the
-  // generic points is a point interval, whose verification (all signs
-  // certain, zeros only of exact point arithmetic) holds for that point.
-  std::optional<Pair_result<EFT>> exact_copy(const Pair_result<AFT>& found) const
+  // Whether AK's witness, verified on a certified path, is EK's: each
+  // number exact_copy takes a point interval. Regularised, the witness's
+  // coordinates are grid points (Witness::snap), exact doubles, so AK's
+  // point intervals are EK's numbers. Closed, the touching point is any
+  // rational: kept only when every coordinate of it and of the generic
+  // points is a point interval, whose verification (all signs certain,
+  // zeros only of exact point arithmetic) holds for that point.
+  // Earliest: t*, the contact point and its generic points (closed: the
+  // first touch, kept above), each kept only as a point interval, the
+  // rational run's number (the goal encloses that run's,
+  // exact/Interval_filter.h).
+  bool exact_copyable(const Pair_result<AFT>& found) const
   {
+    bool closed = found.semantics == Semantics::closed;
+    if (!exact_point(found.witness)) {
+      if (closed) return false;
+      throw std::logic_error("internal error: an interval witness is not a point");
+    }
+    auto cells = [&](const std::vector<Vector4<AFT>>& c) {
+      return c.size() == 2 && exact_point(c[0]) && exact_point(c[1]);
+    };
+    if (closed && !cells(found.witness_cells)) return false;
+    return !found.earliest ||
+           (ak_.has_exact_value(found.t_star) && exact_point(found.contact) && cells(found.contact_cells));
+  }
+  // That witness in EK's numbers (exact_copyable).
+  Pair_result<EFT> exact_copy(const Pair_result<AFT>& found) const
+  {
+    auto take = [&](const auto& x, auto& to) {
+      if (!to_exact(x, to)) throw std::logic_error("internal error: exact_copy of a number that is not a point");
+    };
     Pair_result<EFT> r;
     r.a = found.a;
     r.b = found.b;
     r.semantics = found.semantics;
     r.collide = r.has_witness = r.witness_verified = true;
-    bool closed = found.semantics == Semantics::closed;
-    if (!to_exact(found.witness, r.witness)) {
-      if (closed) return std::nullopt;
-      throw std::logic_error("internal error: an interval witness is not a point");
-    }
-    if (closed) {
-      if (found.witness_cells.size() != 2) return std::nullopt;
+    take(found.witness, r.witness);
+    if (found.semantics == Semantics::closed) {
       r.witness_cells.resize(2);
-      for (int i = 0; i < 2; ++i)
-        if (!to_exact(found.witness_cells[i], r.witness_cells[i])) return std::nullopt;
+      for (int i = 0; i < 2; ++i) take(found.witness_cells[i], r.witness_cells[i]);
       r.contact_cells = r.witness_cells;
       r.contact = r.witness;
     }
-    // Earliest: t*, the contact point and its generic points (closed: the
-    // first touch, kept above), each kept only as a point interval, the
-    // rational run's number (the goal encloses that run's,
-    // exact/Interval_filter.h).
     if (found.earliest) {
-      if (!to_exact(found.t_star, r.t_star) || !to_exact(found.contact, r.contact)) return std::nullopt;
-      if (found.contact_cells.size() != 2) return std::nullopt;
+      take(found.t_star, r.t_star);
+      take(found.contact, r.contact);
       r.contact_cells.resize(2);
-      for (int i = 0; i < 2; ++i)
-        if (!to_exact(found.contact_cells[i], r.contact_cells[i])) return std::nullopt;
+      for (int i = 0; i < 2; ++i) take(found.contact_cells[i], r.contact_cells[i]);
       r.earliest = true;
     }
     return r;
   }
 
   // AK's number x in EK when it is a point interval: then it is the exact
-  // number the rational run has there.
+  // number the rational run has there. Exchanged in (swap_numbers: no copy
+  // of a rational).
   bool to_exact(const AFT& x, EFT& to) const
   {
     std::optional<Rational> v = ak_.exact_value(x);
-    if (v) to = ek_.from_rational(*v);
-    return v.has_value();
+    if (!v) return false;
+    EFT e = ek_.from_rational(*v);
+    swap_numbers(to, e);
+    return true;
   }
   // The same for a point: every coordinate a point interval.
   bool to_exact(const Vector4<AFT>& x, Vector4<EFT>& to) const
@@ -542,6 +555,11 @@ private:
     for (int q = 0; q < 4; ++q)
       if (!to_exact(x[q], to[q])) return false;
     return true;
+  }
+  // Whether to_exact(x) takes, without making the number.
+  bool exact_point(const Vector4<AFT>& x) const
+  {
+    return std::all_of(x.begin(), x.end(), [&](const AFT& c) { return ak_.has_exact_value(c); });
   }
 
   // AK's model, each object's S-bounds (EK's where AK fails), and the sweep's

@@ -54,6 +54,10 @@
 //                                   whether the Protector's mode takes effect
 //                                   on this machine (not under valgrind);
 //                                   false, the run is the exact kernel's alone
+//   k.exact_value(x), k.has_exact_value(x)
+//                                   a filtered runner's approximate kernel:
+//                                   the rational x is when it is one exactly
+//                                   (a point interval), and whether it is
 #ifndef CLASH4D_GEOMETRY_KERNEL_CONCEPT_H
 #define CLASH4D_GEOMETRY_KERNEL_CONCEPT_H
 

@@ -58,6 +58,27 @@ std::array<FT, N> shared_zeros()
   return shared_zeros<FT>(std::make_index_sequence<N>());
 }
 
+// Exchanges two numbers without copying either. A rational is a handle
+// (CGAL's Gmpq declares a destructor, so it has no move: std::swap, and a
+// defaulted move, copy it, a reference count each way); its own swap
+// exchanges the pointers. Other numbers by std::swap.
+template <class FT, class = void>
+struct Has_member_swap : std::false_type {};
+template <class FT>
+struct Has_member_swap<FT, std::void_t<decltype(std::declval<FT&>().swap(std::declval<FT&>()))>> : std::true_type {};
+
+template <class FT>
+void swap_numbers(FT& a, FT& b) noexcept
+{
+  if constexpr (Has_member_swap<FT>::value) a.swap(b);
+  else std::swap(a, b);
+}
+template <class FT, std::size_t N>
+void swap_numbers(std::array<FT, N>& a, std::array<FT, N>& b) noexcept
+{
+  for (std::size_t i = 0; i < N; ++i) swap_numbers(a[i], b[i]);
+}
+
 } // namespace clash4d
 
 #endif

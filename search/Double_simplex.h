@@ -61,12 +61,17 @@ public:
   // (or the run fails to settle in doubles).
   std::optional<Optimum> solve()
   {
-    // Phase 1: the artificials' sum, minimised.
-    for (int c = 0; c < W_; ++c) {
-      double sum = 0;
-      for (int r = 0; r < R_; ++r) sum += at(r, c);
-      at(R_, c) = c >= m_ && c < m_ + R_ ? 0.0 : -sum;
+    // Phase 1: the artificials' sum, minimised. Each column's sum is
+    // 0 + row 0 + row 1 + ..., in that order (the same doubles), added a
+    // row at a time across the columns: a column at a time, every addition
+    // waited for the one before.
+    double* sum = &at(R_, 0);
+    std::fill(sum, sum + W_, 0.0);
+    for (int r = 0; r < R_; ++r) {
+      const double* row = &at(r, 0);
+      for (int c = 0; c < W_; ++c) sum[c] += row[c];
     }
+    for (int c = 0; c < W_; ++c) sum[c] = c >= m_ && c < m_ + R_ ? 0.0 : -sum[c];
     double scale = 1.0;
     for (int r = 0; r < R_; ++r) scale = std::max(scale, std::abs(at(r, W_ - 1)));
     if (!run() || std::abs(at(R_, W_ - 1)) > 1e-7 * scale) return std::nullopt;

@@ -1,6 +1,7 @@
 #define BOOST_TEST_MODULE numbers
 #include <boost/test/unit_test.hpp>
 
+#include "check/Collision_checker.h"
 #include "exact/Interval_kernel.h"
 #include "exact/Rational_kernel.h"
 #include "float/Double_kernel.h"
@@ -758,4 +759,40 @@ BOOST_AUTO_TEST_CASE(coprime_integers_are_one_positive_multiple)
     }
     BOOST_TEST((g == 1 || g == 0), "case " << i << ": not coprime");
   }
+}
+
+// swap_numbers exchanges numbers (rationals by their handles' pointers,
+// which no value shows: only the values are held), and a pair's result moved
+// into its slot (Pair_result's move assignment, by exchange) arrives with
+// every member: a member left out of Pair_result::swap fails here.
+BOOST_AUTO_TEST_CASE(swapped_rationals_and_moved_pair_results_keep_every_member)
+{
+  Rational a = q("1/3"), b = q("-2/7");
+  swap_numbers(a, b);
+  BOOST_TEST((a == q("-2/7") && b == q("1/3")));
+  Vector4<double> x{1, 2, 3, 4}, y{5, 6, 7, 8};
+  swap_numbers(x, y);
+  BOOST_TEST((x == Vector4<double>{5, 6, 7, 8} && y == Vector4<double>{1, 2, 3, 4}));
+
+  Pair_result<Rational> from;
+  from.a = 3;
+  from.b = 5;
+  from.collide = from.has_witness = from.witness_verified = from.earliest = true;
+  from.witness = {q("1/2"), q("1/3"), q("1/5"), q("1/7")};
+  from.t_star = q("9/4");
+  from.contact = {q("-1/2"), q("-1/3"), q("-1/5"), q("9/4")};
+  from.semantics = Semantics::closed;
+  from.witness_cells = {{q("1"), q("2"), q("3"), q("4")}, {q("5"), q("6"), q("7"), q("8")}};
+  from.contact_cells = {{q("-1"), q("-2"), q("-3"), q("9/4")}, {q("-5"), q("-6"), q("-7"), q("9/4")}};
+  const Pair_result<Rational> expected = from;
+  Pair_result<Rational> to;
+  to = std::move(from);
+  BOOST_TEST((to.a == 3 && to.b == 5));
+  BOOST_TEST((to.collide && to.has_witness && to.witness_verified && to.earliest));
+  BOOST_TEST((to.witness == expected.witness));
+  BOOST_TEST((to.t_star == expected.t_star));
+  BOOST_TEST((to.contact == expected.contact));
+  BOOST_TEST((to.semantics == Semantics::closed));
+  BOOST_TEST((to.witness_cells == expected.witness_cells));
+  BOOST_TEST((to.contact_cells == expected.contact_cells));
 }
