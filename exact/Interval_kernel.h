@@ -67,8 +67,13 @@ public:
   FT quotient(const FT& a, const FT& b, CGAL::Sign sb) const
   {
     if (sb == CGAL::NEGATIVE) return quotient(-a, -b, CGAL::POSITIVE);
-    double lo = -(-a.inf() / (a.inf() >= 0 ? b.sup() : b.inf()));
-    double hi = a.sup() / (a.sup() >= 0 ? b.inf() : b.sup());
+    // Opaque operands and results (CGAL::IA_opacify, as in CGAL's own
+    // interval operations): each division is made under the caller's
+    // Protector, never folded or moved past its restore (encloses_here
+    // measured GCC doing both to plain divisions).
+    using CGAL::IA_opacify;
+    double lo = -IA_opacify(IA_opacify(-a.inf()) / IA_opacify(a.inf() >= 0 ? b.sup() : b.inf()));
+    double hi = IA_opacify(IA_opacify(a.sup()) / IA_opacify(a.sup() >= 0 ? b.inf() : b.sup()));
     return FT(lo, hi);
   }
 
