@@ -77,7 +77,7 @@ public:
   // record: an any-witness search, whose trail and witness are wanted.
   // closed: the pair is searched in closed semantics.
   Interval_filter(Runner& runner, Search_trail& trail, Check_stats& stats, bool record, bool closed = false)
-    : runner_(&runner), exact_(std::make_unique<Exact_span<Runner>>(runner, closed)), trail_(&trail), stats_(&stats),
+    : runner_(&runner), trail_(&trail), stats_(&stats),
       record_(record), closed_(closed) {}
 
   // Earliest mode: lines decided against the exact t* (see above);
@@ -252,8 +252,8 @@ public:
       }
     } catch (const CGAL::Uncertain_conversion_exception&) {
     }
-    exact_->region_stage(a, b, index, A, B, st);
-    if (st.region) exact_roots_[index] = exact_->stages().at(index).stage.region;
+    exact().region_stage(a, b, index, A, B, st);
+    if (st.region) exact_roots_[index] = exact().stages().at(index).stage.region;
   }
   // A stage the intervals made, kept for the trail's replay when it is the
   // rational run's in its own numbers: its emptied nodes were certified,
@@ -283,7 +283,7 @@ public:
     }
     for (const auto& n : A.beta) kept.empty_a.push_back(n.empty);
     for (const auto& n : B.beta) kept.empty_b.push_back(n.empty);
-    exact_->stages().emplace(index, std::move(kept));
+    exact().stages().emplace(index, std::move(kept));
   }
 
   // The rational run's goal, made from the line that found it, with the
@@ -321,7 +321,7 @@ public:
   }
 
   // The region stages made in rationals, handed on to the trail's replay.
-  Exact_stages<EFT> take_stages() { return std::move(exact_->stages()); }
+  Exact_stages<EFT> take_stages() { return exact_ ? std::move(exact_->stages()) : Exact_stages<EFT>(); }
 
   void search_span(int a, int b, std::size_t index, const std::array<bool, 3>& frame_of_a)
   {
@@ -548,7 +548,7 @@ public:
     // intervals: asked without a throw.
     CGAL::Uncertain<int> same = proportional_or_unsure(k, h, g);
     if (CGAL::is_certain(same)) return CGAL::get_certain(same);
-    return exact_->proportional(a_, b_, span_, frame_, eh, fh, eg, fg, region);
+    return exact().proportional(a_, b_, span_, frame_, eh, fh, eg, fg, region);
   }
 
   // The normal keys of the sub-span's table, once it had an uncertain line.
@@ -635,7 +635,14 @@ private:
     return exact_convex_->stage;
   }
 
+  // The rational side of the pair's sub-spans, made when first asked (a
+  // convex pair decided in intervals asks nothing of it).
   std::unique_ptr<Exact_span<Runner>> exact_;
+  Exact_span<Runner>& exact()
+  {
+    if (!exact_) exact_ = std::make_unique<Exact_span<Runner>>(*runner_, closed_);
+    return *exact_;
+  }
   Search_trail* trail_ = nullptr;
   Check_stats* stats_ = nullptr;
   bool record_ = false;
@@ -903,8 +910,8 @@ private:
   {
     bool points = true;
     for (int q = 0; q < 4; ++q) points = points && region.lo[q].is_point() && region.hi[q].is_point();
-    std::optional<Box<EFT, 4>> exact = points ? std::nullopt : exact_region(s, region);
-    return exact_->lines(a_, b_, s, frame, layout, region, as_is, exact ? &*exact : nullptr);
+    std::optional<Box<EFT, 4>> root = points ? std::nullopt : exact_region(s, region);
+    return exact().lines(a_, b_, s, frame, layout, region, as_is, root ? &*root : nullptr);
   }
 
   // The rational run's region of sub-span s that the interval region
@@ -940,7 +947,7 @@ private:
   void make_keys()
   {
     if (keyed_) return;
-    exact_->keys(a_, b_, span_, frame_, keys_, plane_keys_);
+    exact().keys(a_, b_, span_, frame_, keys_, plane_keys_);
     keyed_ = true;
   }
 
