@@ -45,15 +45,16 @@ struct Pair_result {
   Pair_result(const Pair_result&) = default;
   Pair_result(Pair_result&&) = default;
   Pair_result& operator=(const Pair_result&) = default;
-  // By exchange: a defaulted move copies every rational (swap_numbers), and
-  // a pair's answer is moved into its slot once per query.
+  // By exchange: a defaulted one copies every rational (CGAL's Gmpq has no
+  // move; numbers/Number_ops.h, swap_numbers), and a pair's answer is moved
+  // into its slot on every query.
   Pair_result& operator=(Pair_result&& o) noexcept
   {
     swap(o);
     return *this;
   }
-  // Every member (a new one goes here too: test_filtered,
-  // pair_results_move_every_member).
+  // Every member: a new one goes here too (test_numbers,
+  // swapped_rationals_and_moved_pair_results_keep_every_member).
   void swap(Pair_result& o) noexcept
   {
     std::swap(a, o.a);

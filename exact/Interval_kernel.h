@@ -135,8 +135,9 @@ public:
     if (!has_exact_value(x)) return std::nullopt;
     return exact_rational(x.inf());
   }
-  // Whether exact_value(x) has one, without making it.
-  bool has_exact_value(const FT& x) const { return x.is_point() && std::isfinite(x.inf()); }   // an overflow is no rational
+  // Whether exact_value(x) has one, without making it (an overflow is no
+  // rational).
+  bool has_exact_value(const FT& x) const { return x.is_point() && std::isfinite(x.inf()); }
   // Certain only when both bounds round to the same grid point (then a point
   // interval: grid values are exact doubles while bits and x are moderate).
   FT floor_to_grid(const FT& x, int bits) const

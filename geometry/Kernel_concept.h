@@ -56,8 +56,8 @@
 //                                   false, the run is the exact kernel's alone
 //   k.exact_value(x), k.has_exact_value(x)
 //                                   a filtered runner's approximate kernel:
-//                                   the rational x is when it is one exactly
-//                                   (a point interval), and whether it is
+//                                   the rational that x is, when it is one
+//                                   exactly (a point interval); whether it is
 #ifndef CLASH4D_GEOMETRY_KERNEL_CONCEPT_H
 #define CLASH4D_GEOMETRY_KERNEL_CONCEPT_H
 

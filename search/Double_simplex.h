@@ -62,9 +62,9 @@ public:
   std::optional<Optimum> solve()
   {
     // Phase 1: the artificials' sum, minimised. Each column's sum is
-    // 0 + row 0 + row 1 + ..., in that order (the same doubles), added a
-    // row at a time across the columns: a column at a time, every addition
-    // waited for the one before.
+    // 0 + row 0 + row 1 + ..., in that order, as a column at a time made it
+    // (the same doubles), but added a row at a time across the columns, so
+    // that no addition waits for the one before.
     double* sum = &at(R_, 0);
     std::fill(sum, sum + W_, 0.0);
     for (int r = 0; r < R_; ++r) {
