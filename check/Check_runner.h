@@ -14,6 +14,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
+#include <type_traits>
 
 namespace clash4d {
 
@@ -50,22 +51,42 @@ void pair_answer(const K& k, const Scene_model<K>& model, const Pair_result<type
   }
 }
 
+// What run_pairs asks of a pair's result: Pair_result here; a filtered
+// run's own type provides the same three (exact/Filtered_result.h).
+template <class FT>
+bool collides(const Pair_result<FT>& r)
+{
+  return r.collide;
+}
+// t*, asked with --earliest only.
+template <class FT>
+const FT& collision_time(const Pair_result<FT>& r)
+{
+  return r.t_star;
+}
+// A regularised collision with a verified witness made the closed answer
+// (closed_pair): true, and r is that answer; false, r unchanged.
+template <class FT>
+bool close_on_witness(Pair_result<FT>& r)
+{
+  if (!r.collide || !r.has_witness || !r.witness_verified) return false;
+  r.semantics = Semantics::closed;
+  r.witness_cells = {r.witness, r.witness};
+  r.contact = r.witness;
+  return true;
+}
+
 // Closed semantics without --earliest: a regularised collision is a closed
 // contact (regularised-semantics item 6), and its generic witness is a
 // touching point inside both objects, so it serves as the point and as the
 // generic point of each object's cell (item 1). The regularised search is
 // the cheaper (S-bounds prune touching pairs, and its witness is a grid
 // point), so it goes first; only a pair it finds apart is searched closed.
-template <class FT, class Check_one>
-Pair_result<FT> closed_pair(std::size_t i, Check_one& check, Check_stats& stats)
+template <class Result, class Check_one>
+Result closed_pair(std::size_t i, Check_one& check, Check_stats& stats)
 {
-  Pair_result<FT> r = check(i, nullptr, Semantics::regularised, stats);
-  if (r.collide && r.has_witness && r.witness_verified) {
-    r.semantics = Semantics::closed;
-    r.witness_cells = {r.witness, r.witness};
-    r.contact = r.witness;
-    return r;
-  }
+  Result r = check(i, nullptr, Semantics::regularised, stats);
+  if (close_on_witness(r)) return r;
   Check_stats closed_stats = stats.fresh();
   r = check(i, nullptr, Semantics::closed, closed_stats);
   stats.add(closed_stats);
@@ -76,14 +97,17 @@ Pair_result<FT> closed_pair(std::size_t i, Check_one& check, Check_stats& stats)
 // kept per pair and merged in pair order, so the answer is the one a single
 // thread gives: the first colliding pair in order, or the smallest t* with
 // the first pair in order among equals. check(i, ceiling, semantics, stats)
-// decides pair i (a filtered run may decide it in two kernels; results are
-// in K's numbers).
-template <class K, class Check_one>
-void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::pair<int, int>>& pairs,
-               const Check_options& options, Check_one check, Check_answer& answer)
+// decides pair i, and answer_one(r, p) writes a colliding result's text
+// into p; a result is a Pair_result in K's numbers, or a filtered run's
+// own (exact/Filtered_result.h: it may hold another kernel's exact numbers),
+// its t* in K's numbers.
+template <class K, class Check_one, class Answer_one>
+void run_pairs(const K& k, const std::vector<std::pair<int, int>>& pairs, const Check_options& options,
+               Check_one check, Answer_one answer_one, Check_answer& answer)
 {
   using FT = typename K::FT;
-  std::vector<Pair_result<FT>> results(pairs.size());
+  using Result = std::decay_t<std::invoke_result_t<Check_one&, std::size_t, const FT*, Semantics, Check_stats&>>;
+  std::vector<Result> results(pairs.size());
   std::vector<Check_stats> stats(pairs.size(), answer.stats.fresh());
   std::atomic<std::size_t> first_hit{pairs.size()};      // any-collision mode: lowest colliding index
   std::mutex best_mutex;
@@ -99,12 +123,13 @@ void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::p
       ceiling = best;
     }
     results[i] = options.semantics == Semantics::closed && !options.earliest
-                     ? closed_pair<FT>(i, check, stats[i])
+                     ? closed_pair<Result>(i, check, stats[i])
                      : check(i, use_ceiling ? &ceiling : nullptr, options.semantics, stats[i]);
-    if (!results[i].collide) return;
+    if (!collides(results[i])) return;
     if (options.earliest) {
       std::lock_guard<std::mutex> lock(best_mutex);
-      if (!have_best || k.less(results[i].t_star, best)) { have_best = true; best = results[i].t_star; }
+      const FT& t = collision_time(results[i]);
+      if (!have_best || k.less(t, best)) { have_best = true; best = t; }
     }
     std::size_t seen = first_hit.load();
     while (i < seen && !first_hit.compare_exchange_weak(seen, i)) {}
@@ -128,14 +153,14 @@ void run_pairs(const K& k, const Scene_model<K>& model, const std::vector<std::p
   FT merged_best = zero_value<FT>();
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     answer.stats.add(stats[i]);
-    const Pair_result<FT>& r = results[i];
-    if (!r.collide) continue;
+    const Result& r = results[i];
+    if (!collides(r)) continue;
     if (!options.all_pairs && !options.earliest && answer.collide) break;
     answer.collide = true;
-    pair_answer(k, model, r, answer.pairs.emplace_back());
-    if (options.earliest && (!merged || k.less(r.t_star, merged_best))) {
+    answer_one(r, answer.pairs.emplace_back());
+    if (options.earliest && (!merged || k.less(collision_time(r), merged_best))) {
       merged = true;
-      merged_best = r.t_star;
+      merged_best = collision_time(r);
       answer.earliest_pair = static_cast<int>(answer.pairs.size()) - 1;
     }
   }
@@ -185,7 +210,8 @@ Check_answer run_check(const K& k, const Scene& scene, const Check_options& opti
     checker.use_convex_lp(options.convex_lp);
     return checker.check_pair(pairs[i].first, pairs[i].second, options.earliest, ceiling, semantics);
   };
-  run_pairs(k, model, pairs, options, check, answer);
+  auto answer_one = [&](const Pair_result<typename K::FT>& r, Pair_answer& p) { pair_answer(k, model, r, p); };
+  run_pairs(k, pairs, options, check, answer_one, answer);
   return answer;
 }
 

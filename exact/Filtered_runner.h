@@ -35,6 +35,7 @@
 #include "check/Check_runner.h"
 #include "exact/Certified_sides.h"
 #include "exact/Exact_witness_signs.h"
+#include "exact/Filtered_result.h"
 #include "exact/Interval_filter.h"
 #include "exact/Lazy_once.h"
 #include "exact/Sweep_tie.h"
@@ -63,6 +64,7 @@ public:
   using AFT = typename AK::FT;
   using EFT = typename EK::FT;
   using Protector = typename AK::Protector;
+  using Result = Filtered_result<AFT, EFT>;
 
   // reusable: check may be called again (exact/Exact_checker.h).
   Filtered_runner(const Scene& scene, bool use_sbounds, bool reusable = false)
@@ -97,7 +99,12 @@ public:
         o.semantics = semantics;
         return check_pair(pairs[i].first, pairs[i].second, o, ceiling, stats);
       };
-      run_pairs(ek_, emodel_, pairs, options, check_one, answer);
+      // A result kept in intervals is printed from them: each number a point.
+      auto answer_one = [&](const Result& r, Pair_answer& p) {
+        if (r.in_points()) pair_answer(ak_, amodel_, r.points(), p);
+        else pair_answer(ek_, emodel_, r.exact(), p);
+      };
+      run_pairs(ek_, pairs, options, check_one, answer_one, answer);
     }
     answer.number = EK_name;
     answer.semantics = options.semantics;
@@ -148,8 +155,9 @@ private:
   static constexpr const char* EK_name = "exact";
 
   // One pair: the interval run, then, when it could not decide or could not
-  // make the witness, EK along its trail or from the start.
-  Pair_result<EFT> check_pair(int a, int b, const Check_options& options, const EFT* ceiling, Check_stats& stats)
+  // make the witness, EK along its trail or from the start. A witness the
+  // interval run made of points stays in them (exact/Filtered_result.h).
+  Result check_pair(int a, int b, const Check_options& options, const EFT* ceiling, Check_stats& stats)
   {
     bool closed = options.semantics == Semantics::closed;
     Search_trail trail;
@@ -172,19 +180,23 @@ private:
             checker.check_pair(a, b, options.earliest, ceiling ? &aceiling : nullptr, options.semantics);
         if (!found.collide) {
           stats = std::move(astats);
-          return Pair_result<EFT>();
+          return Result();
         }
         if (found.has_witness && found.witness_verified && exact_copyable(found)) {
           stats = std::move(astats);
           ++witnesses_by_intervals_;
-          return exact_copy(found);   // made in the caller's slot: a copy of rationals costs
+          if (!found.earliest) return Result::of_points(found);
+          Result r;
+          exact_copy(found, r.make_exact());   // in place: a copy of rationals costs
+          return r;
         }
         if (std::optional<Pair_result<EFT>> r = policy.convex_answer(found)) {
           stats = std::move(astats);
           return std::move(*r);
         }
         if (options.witness_lines)
-          if (std::optional<Pair_result<EFT>> r = witness_line(policy, a, b, options, astats, stats)) return *r;
+          if (std::optional<Pair_result<EFT>> r = witness_line(policy, a, b, options, astats, stats))
+            return std::move(*r);
         earliest_trail = options.earliest && policy.earliest_trail();
         stages = policy.take_stages();
         ++witness_runs_;
@@ -195,23 +207,23 @@ private:
         trail.complete = false;   // decided below, in rationals
       } catch (const Proven_apart&) {
         stopped_in_search(astats, clock, stats);
-        return Pair_result<EFT>();
+        return Result();
       } catch (const Found_inside<EFT>& f) {
         stopped_in_search(astats, clock, stats);
-        return f.result;
+        return Pair_result<EFT>(f.result);
       }
     }
-    if (std::optional<Pair_result<EFT>> r = convex_in_rationals(a, b, options, ceiling, stats)) return *r;
+    if (std::optional<Pair_result<EFT>> r = convex_in_rationals(a, b, options, ceiling, stats)) return std::move(*r);
     need_exact(a);
     need_exact(b);
     if (earliest_trail)
       if (auto r = replayed<Earliest_replay<EFT>>(trail, stages, a, b, true, options.semantics, astats, stats,
                                                   earliest_by_intervals_))
-        return *r;
+        return std::move(*r);
     if (!options.earliest && trail.complete && !trail.approximate)
       if (auto r = replayed<Trail_replay<EFT>>(trail, stages, a, b, false, options.semantics, astats, stats,
                                                witness_replays_))
-        return *r;
+        return std::move(*r);
     Collision_checker<EK> checker(ek_, emodel_, esettled_, stats, use_sbounds_);
     checker.use_convex_lp(convex_lp_);
     checker.check_points_with(&certified_);
@@ -510,13 +522,13 @@ private:
     return !found.earliest ||
            (ak_.has_exact_value(found.t_star) && exact_point(found.contact) && cells(found.contact_cells));
   }
-  // That witness in EK's numbers (exact_copyable).
-  Pair_result<EFT> exact_copy(const Pair_result<AFT>& found) const
+  // That witness in EK's numbers (exact_copyable), written into r, a
+  // fresh result.
+  void exact_copy(const Pair_result<AFT>& found, Pair_result<EFT>& r) const
   {
     auto take = [&](const auto& x, auto& to) {
       if (!to_exact(x, to)) throw std::logic_error("internal error: exact_copy of a number that is not a point");
     };
-    Pair_result<EFT> r;
     r.a = found.a;
     r.b = found.b;
     r.semantics = found.semantics;
@@ -535,7 +547,6 @@ private:
       for (int i = 0; i < 2; ++i) take(found.contact_cells[i], r.contact_cells[i]);
       r.earliest = true;
     }
-    return r;
   }
 
   // AK's number x in EK when it is a point interval: then it is the exact

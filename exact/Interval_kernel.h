@@ -15,6 +15,7 @@
 #include "numbers/Stat_number.h"
 #include <CGAL/FPU.h>
 #include <CGAL/Interval_nt.h>
+#include <algorithm>
 #include <cmath>
 #include <charconv>
 #include <cstdio>
@@ -165,13 +166,15 @@ public:
     FT ga = grid_point(a);
     return a.is_same(b) || ga.is_same(grid_point(b));
   }
-  // Statistics only (answers are never printed from intervals): a point
-  // interval is an exact number, otherwise the enclosure "~[inf, sup]".
-  // Every sub-span writes its bounds so, --stats or not: kept cheap (no
-  // printf, no GMP for the usual short dyadic numbers).
+  // A point interval is an exact number, printed as the rational it is
+  // (dyadic_text); otherwise the enclosure "~[inf, sup]", for statistics
+  // only. Answers are printed from intervals only when every number is a
+  // point (exact/Filtered_result.h). Every sub-span writes its bounds so,
+  // --stats or not: kept cheap (no printf, no GMP for the usual short
+  // dyadic numbers).
   std::string to_text(const FT& x) const
   {
-    if (x.is_point()) return dyadic_text(x.inf());
+    if (x.is_point() && std::isfinite(x.inf())) return dyadic_text(x.inf());
     char text[64] = "~[";
     char* end = std::to_chars(text + 2, text + 30, x.inf()).ptr;
     *end++ = ',';
@@ -183,15 +186,19 @@ public:
 
   Stat_number to_stat(const FT& x) const { return {Stat_number::Kind::Enclosure, Rational(), x.inf(), x.sup()}; }
 
-  // A double as the exact rational it is, "p/q" or "p".
+  // A double as the exact rational it is, "p/q" or "p" in lowest terms:
+  // to_string(Rational(d)) (tests/test_numbers.cpp,
+  // dyadic_text_is_the_exact_rational), an answer's text.
   static std::string dyadic_text(double d)
   {
+    if (d == 0) return "0";
     int e = 0;
     double m = std::frexp(d, &e);                  // d = m 2^e, 0.5 <= |m| < 1
-    long long num = static_cast<long long>(std::ldexp(m, 53));
+    long long num = static_cast<long long>(std::ldexp(m, 53));   // exact: 53 bits
     int shift = 53 - e;                            // d = num / 2^shift
-    while (shift > 0 && num % 2 == 0) num /= 2, --shift;
-    if (d == 0) return "0";
+    // Lowest terms: num's factors of two cancelled against the denominator.
+    int twos = std::min(shift, __builtin_ctzll(static_cast<unsigned long long>(num)));
+    if (twos > 0) num /= 1LL << twos, shift -= twos;   // num a multiple of 2^twos: exact
     if (shift < 0 || shift > 62) return to_string(Rational(d));
     char text[48];
     char* end = std::to_chars(text, text + 24, num).ptr;

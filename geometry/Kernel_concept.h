@@ -57,7 +57,12 @@
 //   k.exact_value(x), k.has_exact_value(x)
 //                                   a filtered runner's approximate kernel:
 //                                   the rational that x is, when it is one
-//                                   exactly (a point interval); whether it is
+//                                   exactly (a point interval); whether it is.
+//                                   Its to_text of such an x is that
+//                                   rational's text, the exact kernel's: a
+//                                   result whose numbers all have exact
+//                                   values is printed from them
+//                                   (exact/Filtered_result.h)
 #ifndef CLASH4D_GEOMETRY_KERNEL_CONCEPT_H
 #define CLASH4D_GEOMETRY_KERNEL_CONCEPT_H
 

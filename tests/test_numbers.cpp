@@ -8,8 +8,10 @@
 #include "scene/Number_text.h"
 #include <CGAL/FPU.h>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <random>
@@ -196,11 +198,34 @@ BOOST_AUTO_TEST_CASE(double_output_is_shortest_round_trip)
   BOOST_TEST(std::stod(k.to_text(1.0 / 3.0)) == 1.0 / 3.0);
 }
 
-// Statistics print intervals' exact doubles as rationals without GMP.
+// Answers kept in point intervals (exact/Filtered_result.h) and statistics
+// print exact doubles as rationals without GMP: the text GMP gives for the
+// same rational (Rational(d) is exact: mpq_set_d), on chosen doubles and on
+// seeded random bit patterns over every exponent, subnormals included.
 BOOST_AUTO_TEST_CASE(dyadic_text_is_the_exact_rational)
 {
-  for (double d : {0.0, 1.0, -3.0, 0.5, -0.375, 1e-10, 12345.6789, 1048575.0 / 1048576.0, 1e20, -7e-300})
+  for (double d : {0.0, -0.0, 1.0, -3.0, 0.5, -0.375, 1e-10, 12345.6789, 1048575.0 / 1048576.0, 1e20, -7e-300,
+                   9007199254740992.0, 9007199254740993.0 / 4, std::ldexp(1.0, -62), std::ldexp(1.0, -63),
+                   std::ldexp(-3.0, -61), 5e-324, -std::numeric_limits<double>::max()})
     BOOST_TEST(Interval_kernel::dyadic_text(d) == to_string(Rational(d)), d);
+  std::uint64_t seed = 20261130;
+  BOOST_TEST_MESSAGE("dyadic text: seed " << seed);
+  std::mt19937_64 rng(seed);
+  int checked = 0, without_gmp = 0;
+  for (int i = 0; i < 20000; ++i) {
+    std::uint64_t bits = rng();
+    if (i % 2) bits = (bits & ~(std::uint64_t{0x7ff} << 52)) | (std::uint64_t(1023 + int(rng() % 140) - 70) << 52);
+    double d = 0;
+    std::memcpy(&d, &bits, sizeof d);
+    if (!std::isfinite(d)) continue;
+    ++checked;
+    std::string want = to_string(Rational(d));
+    BOOST_TEST(Interval_kernel::dyadic_text(d) == want, d);
+    // 2^-10 <= |d| < 2^53: d = num / 2^shift with 0 <= shift <= 62, printed without GMP
+    without_gmp += std::abs(d) >= std::ldexp(1.0, -10) && std::abs(d) < std::ldexp(1.0, 53);
+  }
+  BOOST_TEST(checked > 19000);
+  BOOST_TEST(without_gmp > 1000);   // both paths are taken
 }
 
 // The interval kernel's division by an interval of known sign against
