@@ -15,6 +15,14 @@
 
 namespace clash4d {
 
+// The pivot on a rows x width tableau (row-major): row `leave` divided by
+// its entry in column `enter`, then that column eliminated from every other
+// row (r <- r - r[enter] leave, skipped where r[enter] is zero). Built for
+// AVX2 as well as the base instruction set, chosen when loaded: the same
+// roundings either way (each product and difference rounded on its own, no
+// fused multiply-add: -ffp-contract=off), only more of them at a time.
+void pivot_tableau(double* T, int rows, int width, int leave, int enter);
+
 // maximise cost . y  subject to  A y = b, y >= 0, with A of at most five
 // rows: a two-phase simplex on a dense tableau with Bland's rule. Only a
 // guess: nothing here is exact, and a caller checks what it takes from it.
@@ -128,10 +136,7 @@ private:
 
   void pivot(int leave, int enter)
   {
-    double p = at(leave, enter);
-    for (int c = 0; c < W_; ++c) at(leave, c) /= p;
-    for (int r = 0; r <= R_; ++r)
-      if (r != leave) eliminate(r, leave, enter);
+    pivot_tableau(T_.data(), R_ + 1, W_, leave, enter);
     basis_[static_cast<std::size_t>(leave)] = enter;
   }
 
