@@ -5,8 +5,8 @@
 // convex pair decided in intervals, the common query, so makes no
 // rational: its answer's text is its points' (Interval_kernel::to_text, a
 // point's exact dyadic rational; tests/test_numbers.cpp holds that text
-// equal to the rational's), where converting them made four rationals, and
-// moving and dropping them was a fifth of the query.
+// equal to the rational's), where making, moving and dropping the
+// rationals of its answer was a ninth of the query's instructions.
 // Answers with --earliest are always in the exact kernel's numbers: run_pairs
 // compares their t* across pairs and against its ceiling in that kernel.
 #ifndef CLASH4D_EXACT_FILTERED_RESULT_H
