@@ -10,6 +10,7 @@
 #include "numbers/Number_ops.h"
 #include <atomic>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -110,26 +111,25 @@ void run_pairs(const K& k, const std::vector<std::pair<int, int>>& pairs, const 
   std::vector<Result> results(pairs.size());
   std::vector<Check_stats> stats(pairs.size(), answer.stats.fresh());
   std::atomic<std::size_t> first_hit{pairs.size()};      // any-collision mode: lowest colliding index
+  // The least t* found so far (--earliest): none until one is, and no
+  // number made without --earliest (a rational is an allocation).
   std::mutex best_mutex;
-  bool have_best = false;
-  FT best = zero_value<FT>();
+  std::optional<FT> best;
   auto check_one = [&](std::size_t i) {
     if (!options.all_pairs && !options.earliest && i > first_hit.load()) return;
-    FT ceiling = zero_value<FT>();
-    bool use_ceiling = false;
+    std::optional<FT> ceiling;
     if (options.earliest && !options.all_pairs) {
       std::lock_guard<std::mutex> lock(best_mutex);
-      use_ceiling = have_best;
       ceiling = best;
     }
     results[i] = options.semantics == Semantics::closed && !options.earliest
                      ? closed_pair<Result>(i, check, stats[i])
-                     : check(i, use_ceiling ? &ceiling : nullptr, options.semantics, stats[i]);
+                     : check(i, ceiling ? &*ceiling : nullptr, options.semantics, stats[i]);
     if (!collides(results[i])) return;
     if (options.earliest) {
       std::lock_guard<std::mutex> lock(best_mutex);
       const FT& t = collision_time(results[i]);
-      if (!have_best || k.less(t, best)) { have_best = true; best = t; }
+      if (!best || k.less(t, *best)) best = t;
     }
     std::size_t seen = first_hit.load();
     while (i < seen && !first_hit.compare_exchange_weak(seen, i)) {}
@@ -149,8 +149,7 @@ void run_pairs(const K& k, const std::vector<std::pair<int, int>>& pairs, const 
                       own);
   }
 
-  bool merged = false;
-  FT merged_best = zero_value<FT>();
+  std::optional<FT> merged_best;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     answer.stats.add(stats[i]);
     const Result& r = results[i];
@@ -158,8 +157,7 @@ void run_pairs(const K& k, const std::vector<std::pair<int, int>>& pairs, const 
     if (!options.all_pairs && !options.earliest && answer.collide) break;
     answer.collide = true;
     answer_one(r, answer.pairs.emplace_back());
-    if (options.earliest && (!merged || k.less(collision_time(r), merged_best))) {
-      merged = true;
+    if (options.earliest && (!merged_best || k.less(collision_time(r), *merged_best))) {
       merged_best = collision_time(r);
       answer.earliest_pair = static_cast<int>(answer.pairs.size()) - 1;
     }
