@@ -14,13 +14,8 @@ void pivot_tableau(double* T, int rows, int width, int leave, int enter)
   double* pivot_row = T + static_cast<std::ptrdiff_t>(leave) * width;
   double p = pivot_row[enter];
   for (int c = 0; c < width; ++c) pivot_row[c] /= p;
-  for (int r = 0; r < rows; ++r) {
-    if (r == leave) continue;
-    double* row = T + static_cast<std::ptrdiff_t>(r) * width;
-    double f = row[enter];
-    if (f == 0.0) continue;
-    for (int c = 0; c < width; ++c) row[c] -= f * pivot_row[c];
-  }
+  for (int r = 0; r < rows; ++r)
+    if (r != leave) eliminate_row(T + static_cast<std::ptrdiff_t>(r) * width, pivot_row, width, enter);
 }
 
 } // namespace clash4d

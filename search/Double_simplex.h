@@ -23,6 +23,16 @@ namespace clash4d {
 // fused multiply-add: -ffp-contract=off), only more of them at a time.
 void pivot_tableau(double* T, int rows, int width, int leave, int enter);
 
+// row <- row - row[column] with (a tableau row of `width` entries), skipped
+// where row[column] is zero: pivot_tableau's step, and phase 2's on the
+// objective row.
+inline void eliminate_row(double* row, const double* with, int width, int column)
+{
+  double f = row[column];
+  if (f == 0.0) return;
+  for (int c = 0; c < width; ++c) row[c] -= f * with[c];
+}
+
 // maximise cost . y  subject to  A y = b, y >= 0, with A of at most five
 // rows: a two-phase simplex on a dense tableau with Bland's rule. Only a
 // guess: nothing here is exact, and a caller checks what it takes from it.
@@ -94,8 +104,10 @@ public:
     // Phase 2: cost . y maximised (its negation minimised). An artificial
     // column's reduced cost is then its row's multiplier.
     for (int c = 0; c < W_; ++c) at(R_, c) = c < m_ ? -cost_[static_cast<std::size_t>(c)] : 0.0;
-    for (int r = 0; r < R_; ++r)
-      if (basis_[static_cast<std::size_t>(r)] < m_) eliminate(R_, r, basis_[static_cast<std::size_t>(r)]);
+    for (int r = 0; r < R_; ++r) {
+      int basic = basis_[static_cast<std::size_t>(r)];
+      if (basic < m_) eliminate_row(&at(R_, 0), &at(r, 0), W_, basic);
+    }
     if (!run()) return std::nullopt;
     Optimum o;
     o.basis.reserve(static_cast<std::size_t>(R_));
@@ -126,13 +138,6 @@ private:
   }
 
   double& at(int r, int c) { return T_[static_cast<std::size_t>(r * W_ + c)]; }
-
-  void eliminate(int r, int with, int c)
-  {
-    double f = at(r, c);
-    if (f == 0.0) return;
-    for (int k = 0; k < W_; ++k) at(r, k) -= f * at(with, k);
-  }
 
   void pivot(int leave, int enter)
   {
