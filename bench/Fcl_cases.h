@@ -122,6 +122,24 @@ inline std::vector<Case> all_cases(unsigned long seed)
   return cases;
 }
 
+// The scene's motions, and the same motions restated: one more breakpoint
+// after the span, between equal velocities (the same path, sub-spans and
+// answer). Checks that alternate the two (Exact_checker::check(motions,
+// options)) make the motions, the sweep and the guides' motions on every
+// query, as a query with new transforms does.
+inline std::array<std::vector<Motion>, 2> restated_motions(const Scene& scene)
+{
+  std::array<std::vector<Motion>, 2> out;
+  for (const Scene_object& o : scene.objects) {
+    out[0].push_back(o.motion);
+    Motion later = o.motion;
+    later.times.push_back((later.times.empty() ? scene.t_hi : std::max(later.times.back(), scene.t_hi)) + 1);
+    later.velocities.push_back(later.velocities.back());
+    out[1].push_back(later);
+  }
+  return out;
+}
+
 } // namespace clash4d::fcl_cases
 
 #endif

@@ -16,8 +16,13 @@
 // witness included), "fcl us" FCL's query alone on shapes converted once
 // (how FCL is used), "fcl+build us" adds the conversion (exact hull,
 // rounding, fcl::Convexd), which is what the comparer's fcl subject pays.
-// "prep/fcl" holds the two prepared queries side by side; "exact/fcl" the
-// whole check against FCL's prepared query.
+// "moved us" is exact's check on the shapes prepared once with the motions
+// given per query (Exact_checker::check(motions, options)), as FCL takes
+// new transforms per query: the queries alternate the scene's motions and
+// the same restated (bench/Fcl_cases.h, restated_motions), so each query
+// makes the motions, the sweep and the guides' motions again.
+// "prep/fcl" and "moved/fcl" hold those queries beside FCL's; "exact/fcl"
+// the whole check against FCL's prepared query.
 #include "compare/Fcl_subject.h"
 #include "bench/Bench_main.h"
 #include "bench/Fcl_cases.h"
@@ -52,16 +57,23 @@ void row(const Case& c, double min_seconds, int repeat)
     std::printf("%-22s %s\n", c.name.c_str(), fcl.reason().c_str());
     return;
   }
-  auto [e, p, d, f, fb] = time_in_turns(
+  Exact_checker moving(c.scene);
+  std::array<std::vector<Motion>, 2> motions = restated_motions(c.scene);
+  int turn = 0;
+  auto [e, p, m, d, f, fb] = time_in_turns(
       repeat, min_seconds, [&] { return check_exact(c.scene, opts).collide; },
-      [&] { return prepared.check(opts).collide; }, [&] { return check_double(c.scene, 0, opts).collide; },
-      [&] { return fcl.time_of_contact(0, 1).has_value(); }, [&] { return Fcl_subject(c.scene).check(opts).collide; });
-  std::printf("%-22s %9.1f %8.1f %9.1f %9.1f %12.1f %9.1f %8.2f %10.1f   %-7s %-7s %-7s\n", c.name.c_str(),
-              e.seconds_per_query * 1e6, p.seconds_per_query * 1e6, d.seconds_per_query * 1e6,
-              f.seconds_per_query * 1e6, fb.seconds_per_query * 1e6, e.seconds_per_query / f.seconds_per_query,
-              p.seconds_per_query / f.seconds_per_query, d.seconds_per_query / f.seconds_per_query, verdict(e.collide),
+      [&] { return prepared.check(opts).collide; },
+      [&] { return moving.check(motions[turn ^= 1], opts).collide; },
+      [&] { return check_double(c.scene, 0, opts).collide; }, [&] { return fcl.time_of_contact(0, 1).has_value(); },
+      [&] { return Fcl_subject(c.scene).check(opts).collide; });
+  double fq = f.seconds_per_query;
+  std::printf("%-22s %9.1f %8.1f %8.1f %9.1f %9.1f %12.1f %9.1f %8.2f %9.2f %10.1f   %-7s %-7s %-7s\n", c.name.c_str(),
+              e.seconds_per_query * 1e6, p.seconds_per_query * 1e6, m.seconds_per_query * 1e6,
+              d.seconds_per_query * 1e6, fq * 1e6, fb.seconds_per_query * 1e6, e.seconds_per_query / fq,
+              p.seconds_per_query / fq, m.seconds_per_query / fq, d.seconds_per_query / fq, verdict(e.collide),
               verdict(d.collide), verdict(f.collide));
   if (p.collide != e.collide) throw std::logic_error(c.name + ": the prepared check's verdict differs from check's");
+  if (m.collide != e.collide) throw std::logic_error(c.name + ": the moved check's verdict differs from check's");
 }
 
 const char* usage = "usage: clash4d_fcl_bench [--seed N] [--min-seconds S] [--repeat R] [--dump-scenes DIR]\n";
@@ -96,8 +108,9 @@ int run_bench(int argc, char** argv)
     throw std::invalid_argument("--dump-scenes " + dump_dir + ": not a directory");
   std::printf("clash4d_fcl_bench: seed %lu (hulls), at least %g s per measurement, the least of %d\n", seed,
               min_seconds, repeat);
-  std::printf("%-22s %9s %8s %9s %9s %12s %9s %8s %10s   %-7s %-7s %-7s\n", "case", "exact us", "prep us",
-              "double us", "fcl us", "fcl+build us", "exact/fcl", "prep/fcl", "double/fcl", "exact", "double", "fcl");
+  std::printf("%-22s %9s %8s %8s %9s %9s %12s %9s %8s %9s %10s   %-7s %-7s %-7s\n", "case", "exact us", "prep us",
+              "moved us", "double us", "fcl us", "fcl+build us", "exact/fcl", "prep/fcl", "moved/fcl", "double/fcl",
+              "exact", "double", "fcl");
   for (const Case& c : all_cases(seed)) {
     if (!dump_dir.empty()) {
       std::string file = c.name;

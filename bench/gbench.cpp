@@ -3,9 +3,10 @@
 // (--benchmark_out=FILE --benchmark_out_format=json; scripts/bench-record
 // keeps it under bench/results/) can be compared with later ones
 // (scripts/bench-compare). What is timed:
-//   fcl/<pair>/{exact,prepared,double,fcl}: the six convex pairs of
+//   fcl/<pair>/{exact,prepared,moved,double,fcl}: the six convex pairs of
 //     clash4d_fcl_bench (bench/Fcl_cases.h, seed 1990); prepared is exact on
-//     the scene prepared once (exact/Exact_checker.h), fcl FCL's query alone
+//     the scene prepared once (exact/Exact_checker.h), moved exact on its
+//     shapes prepared once, motions per query, fcl FCL's query alone
 //     on shapes converted once (built with FCL only);
 //   {paper,contact}/<fixture>/{exact,double}/{regularised,closed}[/earliest]:
 //     every scene of fixtures/paper and fixtures/contact.
@@ -95,8 +96,9 @@ void add_fixtures(const char* family)
 }
 
 // The six convex pairs: exact and double run `check` on the scene, prepared
-// exact's check on the scene prepared once (the same answer); fcl is FCL's
-// query alone on shapes converted once (how FCL is used).
+// exact's check on the scene prepared once (the same answer), moved on its
+// shapes prepared once with the motions given per query (restated_motions);
+// fcl is FCL's query alone on shapes converted once (how FCL is used).
 void add_fcl_pairs()
 {
   for (fcl_cases::Case& c : fcl_cases::all_cases(1990)) {
@@ -104,6 +106,11 @@ void add_fcl_pairs()
     add({"fcl", c.name, "exact", ""}, [scene] { return check_exact(*scene, Check_options()).collide; });
     auto prepared = std::make_shared<Exact_checker>(*scene);   // holds a reference to *scene
     add({"fcl", c.name, "prepared", ""}, [scene, prepared] { return prepared->check(Check_options()).collide; });
+    auto moving = std::make_shared<Exact_checker>(*scene);
+    auto motions = std::make_shared<std::array<std::vector<Motion>, 2>>(fcl_cases::restated_motions(*scene));
+    add({"fcl", c.name, "moved", ""}, [scene, moving, motions, turn = 0]() mutable {
+      return moving->check((*motions)[turn ^= 1], Check_options()).collide;
+    });
     add({"fcl", c.name, "double", ""}, [scene] { return check_double(*scene, 0, Check_options()).collide; });
     auto fcl = std::make_shared<const Fcl_subject>(*scene);
     if (fcl->expressible()) add({"fcl", c.name, "fcl", ""}, [fcl] { return fcl->time_of_contact(0, 1).has_value(); });
@@ -125,7 +132,8 @@ struct Column {
 std::vector<Column> columns_of(const std::string& family)
 {
   if (family == "fcl") return {{"exact/double", "", "exact", "double"}, {"exact/fcl", "", "exact", "fcl"},
-                               {"prepared/fcl", "", "prepared", "fcl"}, {"double/fcl", "", "double", "fcl"}};
+                               {"prepared/fcl", "", "prepared", "fcl"}, {"moved/fcl", "", "moved", "fcl"},
+                               {"double/fcl", "", "double", "fcl"}};
   std::vector<Column> out;
   for (const char* mode : {"regularised", "closed", "regularised/earliest", "closed/earliest"})
     out.push_back({mode, mode, "exact", "double"});
@@ -222,7 +230,7 @@ private:
 void print_help()
 {
   std::printf("usage: clash4d_gbench [--benchmark_filter=REGEX] [--benchmark_min_time=S (default 0.05)] ...\n"
-              "  times check per query: fcl/<pair>/{exact,prepared,double,fcl}, {paper,contact}/<fixture>/\n"
+              "  times check per query: fcl/<pair>/{exact,prepared,moved,double,fcl}, {paper,contact}/<fixture>/\n"
               "  {exact,double}/{regularised,closed}[/earliest]; then time ratios per scene and geometric means\n"
               "  per family\n\n");
   benchmark::PrintDefaultHelp();

@@ -2,25 +2,90 @@
 #include "exact/Filtered_runner.h"
 #include "exact/Interval_kernel.h"
 #include "exact/Rational_kernel.h"
+#include "scene/Scene_reader.h"
+#include <stdexcept>
+#include <string>
 
 namespace clash4d {
 
 using Filtered_exact = Filtered_runner<Interval_kernel, Rational_kernel>;
 
-// One runner per S-bounds setting, made on first use and kept.
+namespace {
+
+// A motion as the scene reader accepts one (parse_motion): a velocity per
+// segment, times strictly increasing, within the segment limit.
+void check_motion(const Motion& m, const std::string& object)
+{
+  auto refuse = [&](const std::string& why) {
+    throw std::invalid_argument("Exact_checker: the motion of object \"" + object + "\": " + why);
+  };
+  if (m.velocities.size() != m.times.size() + 1)
+    refuse(std::to_string(m.times.size()) + " times need " + std::to_string(m.times.size() + 1) + " velocities, not " +
+           std::to_string(m.velocities.size()));
+  for (std::size_t k = 1; k < m.times.size(); ++k)
+    if (!(m.times[k - 1] < m.times[k])) refuse("times must be strictly increasing (time " + std::to_string(k + 1) + ")");
+  if (m.times.size() > CLASH4D_MAX_MOTION_SEGMENTS)
+    refuse("more than the limit of " + std::to_string(CLASH4D_MAX_MOTION_SEGMENTS) + " motion segments");
+}
+
+bool same_motion(const Motion& a, const Motion& b) { return a.times == b.times && a.velocities == b.velocities; }
+
+} // namespace
+
+// One runner per S-bounds setting, made on first use and kept. The runners
+// check `moved` once a check has named motions (a copy of the scene, made
+// then), otherwise the scene itself.
 struct Exact_checker::Impl {
   const Scene& scene;
+  std::unique_ptr<Scene> moved;
   std::unique_ptr<Filtered_exact> runner[2];
+
+  Check_answer check(const Check_options& options)
+  {
+    std::unique_ptr<Filtered_exact>& r = runner[options.sbounds ? 1 : 0];
+    if (!r) r = std::make_unique<Filtered_exact>(moved ? *moved : scene, options.sbounds, true);
+    return r->check(options);
+  }
+
+  // The runners' scene with object i moving by motion(i); each runner told
+  // which objects changed.
+  template <class Motion_of>
+  void move_to(Motion_of motion)
+  {
+    if (!moved) {
+      moved = std::make_unique<Scene>(scene);
+      for (auto& r : runner) r.reset();   // they read the scene itself
+    }
+    std::vector<int> changed;
+    for (std::size_t i = 0; i < moved->objects.size(); ++i)
+      if (!same_motion(moved->objects[i].motion, motion(i))) {
+        moved->objects[i].motion = motion(i);
+        changed.push_back(static_cast<int>(i));
+      }
+    if (changed.empty()) return;
+    for (auto& r : runner)
+      if (r) r->motions_changed(changed);
+  }
 };
 
-Exact_checker::Exact_checker(const Scene& scene) : impl_(new Impl{scene, {}}) {}
+Exact_checker::Exact_checker(const Scene& scene) : impl_(new Impl{scene, nullptr, {}}) {}
 Exact_checker::~Exact_checker() = default;
 
 Check_answer Exact_checker::check(const Check_options& options)
 {
-  std::unique_ptr<Filtered_exact>& r = impl_->runner[options.sbounds ? 1 : 0];
-  if (!r) r = std::make_unique<Filtered_exact>(impl_->scene, options.sbounds, true);
-  return r->check(options);
+  if (impl_->moved) impl_->move_to([&](std::size_t i) -> const Motion& { return impl_->scene.objects[i].motion; });
+  return impl_->check(options);
+}
+
+Check_answer Exact_checker::check(const std::vector<Motion>& motions, const Check_options& options)
+{
+  const std::vector<Scene_object>& objects = impl_->scene.objects;
+  if (motions.size() != objects.size())
+    throw std::invalid_argument("Exact_checker: " + std::to_string(motions.size()) + " motions for a scene of " +
+                                std::to_string(objects.size()) + " objects");
+  for (std::size_t i = 0; i < motions.size(); ++i) check_motion(motions[i], objects[i].name);
+  impl_->move_to([&](std::size_t i) -> const Motion& { return motions[i]; });
+  return impl_->check(options);
 }
 
 } // namespace clash4d

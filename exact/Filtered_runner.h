@@ -112,6 +112,33 @@ public:
     return answer;
   }
 
+  // A reusable runner's scene, whose objects in `changed` now have other
+  // motions (exact/Exact_checker.h): what depends on motions is made again
+  // by the next check, as a fresh runner would make it (each object's
+  // motion in AK and EK, its guide's motion, the sweeps, the far exponent);
+  // what depends on shapes alone is kept (the models' trees, S-bounds, EK's
+  // planes, the guides' planes). Only while no check runs.
+  void motions_changed(const std::vector<int>& changed)
+  {
+    if (!reusable_) throw std::logic_error("Filtered_runner::motions_changed: not made reusable");
+    for (Prepared& sweep : sweeps_) sweep = Prepared();
+    for (int i : changed) {
+      made_[i].moved.reset();
+      if (made_[i].guide) made_[i].guide = Convex_guide::moved(*made_[i].guide, scene_.objects[i].motion);
+    }
+    if (!model_.done || !model_.ok) {
+      model_ = Prepared();   // made whole by the next check
+      return;
+    }
+    try {
+      Protector protect;
+      for (int i : changed) amodel_.objects[i].motion = Motion_path<AFT>::build(ak_, scene_.objects[i].motion);
+      amodel_.far_exponent = emodel_.far_exponent = far_exponent(scene_);
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+      model_ = Prepared();
+    }
+  }
+
   Skeleton_answer skeleton()
   {
     if (!use_sbounds_) throw std::logic_error("Filtered_runner::skeleton: made without S-bounds");

@@ -24,6 +24,9 @@ public:
     f();
     done_.store(true, std::memory_order_release);
   }
+  // The work to be done again by the next call (a prepared scene's object
+  // moved: exact/Exact_checker.h). Only while no call runs.
+  void reset() { done_.store(false, std::memory_order_relaxed); }
 
 private:
   std::atomic<bool> done_{false};

@@ -47,6 +47,19 @@ struct Convex_guide {
     return guide;
   }
 
+  // The same object's guide under another motion (a prepared scene's
+  // object moved: exact/Exact_checker.h): planes and deep point depend on
+  // the shape alone and are kept; the motion is made as make makes it.
+  static std::shared_ptr<const Convex_guide> moved(const Convex_guide& from, const Motion& motion)
+  {
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    auto guide = std::make_shared<Convex_guide>();
+    guide->planes = from.planes;
+    guide->deep = from.deep;
+    guide->motion = Motion_path<double>::build(Guide_numbers(), motion);
+    return guide;
+  }
+
   // A point strictly inside the primitive, in doubles: its vertices' mean
   // (interior for a polytope with interior), or for a half-space
   // n.x + d <= 0, -(d + 1) n / (n.n), where it is -1.
