@@ -243,6 +243,20 @@ struct Scene::Impl {
     if (!exact) exact = std::make_unique<in::Exact_checker>(scene);
     return exact->check(o);
   }
+  // The same under other motions (Exact_checker::check(motions, options)).
+  in::Check_answer check_exact(const std::vector<in::Motion>& motions, const in::Check_options& o) const
+  {
+    std::unique_lock<std::mutex> lock(exact_mutex, std::try_to_lock);
+    if (!lock) return in::check_exact(moved(motions), o);
+    if (!exact) exact = std::make_unique<in::Exact_checker>(scene);
+    return exact->check(motions, o);
+  }
+  in::Scene moved(const std::vector<in::Motion>& motions) const
+  {
+    in::Scene s = scene;
+    for (std::size_t i = 0; i < motions.size(); ++i) s.objects[i].motion = motions[i];
+    return s;
+  }
 };
 
 Scene Scene::read_file(const std::string& path)
@@ -387,7 +401,9 @@ Colliding_pair answer_pair(const in::Pair_answer& p, Semantics semantics)
 
 } // namespace
 
-Check_result check(const Scene& scene, const Check_options& options)
+namespace {
+
+in::Check_options internal(const Check_options& options)
 {
   if (options.tolerance != 0 && options.number != Number::double_)
     throw std::invalid_argument("clash4d::api::check: a tolerance applies to Number::double_ only");
@@ -396,15 +412,12 @@ Check_result check(const Scene& scene, const Check_options& options)
   o.all_pairs = options.all_pairs;
   o.earliest = options.earliest;
   o.semantics = internal(options.semantics);
-  const in::Scene& s = scene.impl().scene;
-  in::Check_answer a = guarded(scene.file(), [&] {
-    switch (options.number) {
-    case Number::exact: return scene.impl().check_exact(o);
-    case Number::rational: return in::check_rational(s, o);
-    case Number::double_: break;
-    }
-    return in::check_double(s, options.tolerance, o);
-  });
+  return o;
+}
+
+// The pipeline's answer in the API's form.
+Check_result result_of(const in::Check_answer& a, const Check_options& options)
+{
   Check_result r;
   r.number = options.number;
   r.semantics = options.semantics;
@@ -412,6 +425,44 @@ Check_result check(const Scene& scene, const Check_options& options)
   for (const auto& p : a.pairs) r.pairs.push_back(answer_pair(p, options.semantics));
   if (const in::Pair_answer* main = a.reported()) r.reported_index = static_cast<int>(main - a.pairs.data());
   return r;
+}
+
+// A check in the number options.number asks for; exact on the scene's kept
+// preparation (Scene::Impl::check_exact), given motions or the scene's.
+in::Check_answer run_check(const Scene& scene, const std::vector<in::Motion>* motions, const Check_options& options)
+{
+  in::Check_options o = internal(options);
+  const Scene::Impl& impl = scene.impl();
+  return guarded(scene.file(), [&] {
+    if (options.number == Number::exact) return motions ? impl.check_exact(*motions, o) : impl.check_exact(o);
+    in::Scene moved;
+    if (motions) moved = impl.moved(*motions);
+    const in::Scene& s = motions ? moved : impl.scene;
+    if (options.number == Number::rational) return in::check_rational(s, o);
+    return in::check_double(s, options.tolerance, o);
+  });
+}
+
+} // namespace
+
+Check_result check(const Scene& scene, const Check_options& options)
+{
+  return result_of(run_check(scene, nullptr, options), options);
+}
+
+Check_result check(const Scene& scene, const std::vector<Motion>& motions, const Check_options& options)
+{
+  const in::Scene& s = scene.impl().scene;
+  if (motions.size() != s.objects.size())
+    throw std::invalid_argument("clash4d::api::check: " + std::to_string(motions.size()) + " motions for a scene of " +
+                                std::to_string(s.objects.size()) + " objects");
+  std::vector<in::Motion> parsed;
+  guarded(scene.file(), [&] {
+    for (std::size_t i = 0; i < motions.size(); ++i)
+      parsed.push_back(in::parse_motion(motions[i].text(), "motions[" + std::to_string(i) + "]"));
+    return 0;
+  });
+  return result_of(run_check(scene, &parsed, options), options);
 }
 
 // ---------------------------------------------------------------- compare

@@ -180,6 +180,7 @@ std::vector<std::pair<int, int>> candidate_pairs(const K& k, const Scene_model<K
 {
   Stage_clock clock(stats.timed);
   std::vector<Box<typename K::FT, 3>> roots;
+  roots.reserve(settled.size());
   for (const auto& b : settled) roots.push_back(b[0]);
   std::vector<std::pair<int, int>> pairs =
       Pair_sweep<K>(k, semantics == Semantics::closed).candidates(model, roots, scene, certain);

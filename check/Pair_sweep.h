@@ -44,6 +44,7 @@ public:
                                               const Scene& scene, std::vector<char>* certain = nullptr) const
   {
     std::vector<Item> items;
+    items.reserve(model.objects.size());   // one box per object and motion segment: most objects have one
     for (std::size_t i = 0; i < model.objects.size(); ++i) add_boxes(model, static_cast<int>(i), roots[i], items);
     std::vector<std::pair<std::pair<int, int>, bool>> found;   // a pair, per meeting boxes: certainly?
     auto report = [&](const Item& x, const Item& y) {

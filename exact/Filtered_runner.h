@@ -124,7 +124,10 @@ public:
     for (Prepared& sweep : sweeps_) sweep = Prepared();
     for (int i : changed) {
       made_[i].moved.reset();
-      if (made_[i].guide) made_[i].guide = Convex_guide::moved(*made_[i].guide, scene_.objects[i].motion);
+      if (!made_[i].guide) continue;
+      if (made_[i].guide.use_count() > 1)   // not expected: a check's holders are gone; the holder's copy stays as it is
+        made_[i].guide = std::make_shared<Convex_guide>(*made_[i].guide);
+      made_[i].guide->set_motion(scene_.objects[i].motion);
     }
     if (!model_.done || !model_.ok) {
       model_ = Prepared();   // made whole by the next check
@@ -511,7 +514,7 @@ private:
   // and the object's convex-pair guide (guide(i)), made as lazily.
   struct Exact_parts {
     Lazy_once planed, built, settled, moved, guided;
-    std::shared_ptr<const Convex_guide> guide;
+    std::shared_ptr<Convex_guide> guide;   // changed only by motions_changed
   };
   std::unique_ptr<Exact_parts[]> made_;
   // The witness checks' plane sides in EK's runs (certified_sides).

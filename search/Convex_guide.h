@@ -35,7 +35,7 @@ struct Convex_guide {
   Motion_path<double> motion;
   Vector3<double> deep{};
 
-  static std::shared_ptr<const Convex_guide> make(const Scene_object& object)
+  static std::shared_ptr<Convex_guide> make(const Scene_object& object)
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     auto guide = std::make_shared<Convex_guide>();
@@ -47,17 +47,12 @@ struct Convex_guide {
     return guide;
   }
 
-  // The same object's guide under another motion (a prepared scene's
-  // object moved: exact/Exact_checker.h): planes and deep point depend on
-  // the shape alone and are kept; the motion is made as make makes it.
-  static std::shared_ptr<const Convex_guide> moved(const Convex_guide& from, const Motion& motion)
+  // The motion made again (a prepared scene's object moved: exact/
+  // Exact_checker.h): planes and deep point depend on the shape alone.
+  void set_motion(const Motion& m)
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-    auto guide = std::make_shared<Convex_guide>();
-    guide->planes = from.planes;
-    guide->deep = from.deep;
-    guide->motion = Motion_path<double>::build(Guide_numbers(), motion);
-    return guide;
+    motion = Motion_path<double>::build(Guide_numbers(), m);
   }
 
   // A point strictly inside the primitive, in doubles: its vertices' mean

@@ -271,6 +271,15 @@ struct CLASH4D_API Check_result {
 // round-trip decimal text (so "0.1" is 1/10), not exact answers.
 
 CLASH4D_API Check_result check(const Scene& scene, const Check_options& options = {});
+// The scene's shapes with object i moving by motions[i] (one per object, in
+// scene order) instead of the scene's motions: the answer check gives on
+// that scene. With Number::exact the scene's preparation is kept across
+// such checks (as a peer engine keeps its shapes and takes new transforms
+// per query): only what depends on motions is made again. A motion that is
+// not valid throws Input_error at place "motions[i]"; a count that is not
+// the scene's, std::invalid_argument.
+CLASH4D_API Check_result check(const Scene& scene, const std::vector<Motion>& motions,
+                               const Check_options& options = {});
 
 CLASH4D_API const char* name(Number n);        // "exact", "rational", "double"
 CLASH4D_API const char* name(Semantics s);     // "regularised", "closed"

@@ -7,7 +7,9 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace py = pybind11;
 namespace c4 = clash4d::api;
@@ -125,9 +127,11 @@ void write_json(py::handle v, const std::string& place, std::string& out)
   }
 }
 
-// A dict is written as JSON and read; anything else is a path.
+// A clash4d.Scene is itself (its exact preparation kept); a dict is written
+// as JSON and read; anything else is a path.
 c4::Scene read_scene(py::handle scene)
 {
+  if (py::isinstance<c4::Scene>(scene)) return scene.cast<c4::Scene>();
   if (py::isinstance<py::dict>(scene)) {
     std::string text;
     write_json(scene, "", text);
@@ -171,7 +175,7 @@ py::dict earliest_dict(const c4::Colliding_pair& p)
 }
 
 py::dict check(py::handle scene, const std::string& number, const std::string& semantics, bool earliest,
-               bool all_pairs, double tolerance)
+               bool all_pairs, double tolerance, const std::optional<std::vector<std::string>>& motions)
 {
   c4::Check_options o;
   o.number = c4::number_from_name(number);
@@ -180,10 +184,13 @@ py::dict check(py::handle scene, const std::string& number, const std::string& s
   o.all_pairs = all_pairs;
   o.tolerance = tolerance;
   c4::Scene s = read_scene(scene);
+  std::vector<c4::Motion> moved;
+  if (motions)
+    for (const std::string& m : *motions) moved.push_back(c4::Motion::from_text(m));
   c4::Check_result r;
   {
     py::gil_scoped_release release;
-    r = c4::check(s, o);
+    r = motions ? c4::check(s, moved, o) : c4::check(s, o);
   }
   py::dict out;
   out["collide"] = r.collide;
@@ -314,8 +321,19 @@ PYBIND11_MODULE(clash4d, m)
     }
   });
 
+  py::class_<c4::Scene>(m, "Scene", R"(A scene read and validated once: Scene(scene), scene a dict or a path.
+Passed to check in place of the dict or path, its first exact check prepares
+it (model, bounds, pairs) and the next exact checks reuse that, with the
+scene's motions or with others (check(..., motions=[...])): the same
+answers, faster. Attributes: name, file, time (t_lo, t_hi), objects (names).)")
+      .def(py::init([](py::handle scene) { return read_scene(scene); }), py::arg("scene"))
+      .def_property_readonly("name", &c4::Scene::name)
+      .def_property_readonly("file", &c4::Scene::file)
+      .def_property_readonly("time", [](const c4::Scene& s) { return py::make_tuple(fraction(s.t_lo()), fraction(s.t_hi())); })
+      .def_property_readonly("objects", &c4::Scene::object_names);
   m.def("check", &check, py::arg("scene"), py::arg("number") = "exact", py::arg("semantics") = "regularised",
         py::arg("earliest") = false, py::arg("all_pairs") = false, py::arg("tolerance") = 0.0,
+        py::arg("motions") = py::none(),
         R"(Decides whether any pair of objects collides (`clash4d check`).
 
 number: "exact" (filtered exact, the default), "rational" (every sign in
@@ -324,6 +342,10 @@ the shortest decimals of the doubles). semantics: "regularised" (touching is
 not a collision) or "closed" (touching counts). earliest: also the earliest
 collision (closed: first contact) time t and a contact point. all_pairs:
 every colliding pair, not only the first. tolerance: double only.
+motions: a motion string per object, in scene order, in place of the scene's
+own (the same shapes moving otherwise); with a clash4d.Scene, exact keeps
+its preparation across such checks. A bad motion raises clash4d.InputError
+at place "motions[i]"; a count that is not the scene's, ValueError.
 
 Returns {"collide": bool, "number", "semantics",
  "witness": {"objects": (a, b), "point": [x, y, z, t], "verified": bool},   # when collide

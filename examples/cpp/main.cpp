@@ -87,6 +87,34 @@ int main(int argc, char** argv)
   c4::Check_result again = c4::check(touch, options);
   expect(again.collide && again.reported()->earliest->t == c4::Rational(1), "asked again: first contact at t = 1");
 
+  // The same shapes under motions given per check, as an engine queries
+  // shapes it keeps with new transforms. a at rest on [0, 1], b moving at
+  // -2 from [2, 3]: b's face x = 2 - 2t reaches x = 1 at t* = 1/2.
+  options.semantics = c4::Semantics::regularised;
+  c4::Check_result m = c4::check(approach, {c4::Motion::rest(), c4::Motion::steady({-2, 0, 0})}, options);
+  expect(m.collide && m.reported()->earliest && m.reported()->earliest->t == c4::Rational(1, 2) &&
+             m.reported()->earliest->point[0] == c4::Rational(1),
+         "moved: a at rest, b at -2: t* = 1/2 at x = 1");
+  // Both at rest with a gap of 1: never.
+  expect(!c4::check(approach, {c4::Motion::rest(), c4::Motion::rest()}, options).collide, "moved: both at rest, no collision");
+  // b leaves at +1 until t = 1, then comes back at -3: its face 2 + t, then
+  // 3 - 3(t - 1) = 6 - 3t, meets a's (at rest, x = 1) at t* = 5/3.
+  c4::Check_result back = c4::check(approach,
+      {c4::Motion::rest(), c4::Motion::piecewise({{1, 0, 0}, {-3, 0, 0}}, {1})}, options);
+  expect(back.collide && back.reported()->earliest->t == c4::Rational(5, 3), "moved: out and back, t* = 5/3");
+  // The scene's own motions again: t* = 1/2 at x = 3/2, as first found.
+  c4::Check_result own = c4::check(approach, options);
+  expect(own.collide && own.reported()->earliest->t == c4::Rational(1, 2) &&
+             own.reported()->earliest->point[0] == c4::Rational("1.5"),
+         "the scene's own motions again: t* = 1/2 at x = 3/2");
+  try {
+    c4::check(approach, {c4::Motion::rest(), c4::Motion::from_text("vel 1 0")}, options);
+    expect(false, "a motion that is not one is refused");
+  } catch (const c4::Input_error& e) {
+    std::cout << "  refused: " << e.what() << "\n";
+    expect(e.place() == "motions[1]" && e.exit_code() == c4::exit_invalid, "the error names motions[1]");
+  }
+
   // A fixture: two blocks moving towards each other, meeting at t = 2.
   c4::Scene head_on = c4::Scene::read_file(fixtures + "/contact/clear_collision_head_on.json");
   options.semantics = c4::Semantics::regularised;

@@ -120,6 +120,34 @@ class Check(unittest.TestCase):
                   obj("b", block((2, 0, 0), (3, 1, 1)), f"vel {Fraction(-1, 3)} 0 0"))
         self.assertEqual(clash4d.check(s, earliest=True)["earliest"]["t"], 3)
 
+    def test_prepared_scene_under_other_motions(self):
+        s = clash4d.Scene(APPROACH)
+        self.assertEqual(s.objects, ["a", "b"])
+        self.assertEqual(s.time, (0, 10))
+        # a at rest on [0, 1], b at -2 from [2, 3]: b's face 2 - 2t reaches 1 at t* = 1/2, x = 1.
+        for number in ("exact", "rational", "double"):
+            r = clash4d.check(s, number=number, earliest=True, motions=["rest", "vel -2 0 0"])
+            self.assertEqual((r["earliest"]["t"], r["earliest"]["point"][0]), (Fraction(1, 2), 1), number)
+        # Both at rest, a gap of 1: never; touching only when b covers the gap and stops (closed: t = 1).
+        self.assertFalse(clash4d.check(s, motions=["rest", "rest"])["collide"])
+        stop = ["rest", "vel -1 0 0 until 1 rest"]
+        self.assertFalse(clash4d.check(s, motions=stop)["collide"])
+        self.assertEqual(clash4d.check(s, semantics="closed", earliest=True, motions=stop)["earliest"]["t"], 1)
+        # The scene's own motions again: t* = 1/2 at x = 3/2; a dict scene takes motions too.
+        self.assertEqual(clash4d.check(s, earliest=True)["earliest"]["point"][0], Fraction(3, 2))
+        self.assertEqual(clash4d.check(APPROACH, earliest=True, motions=["rest", "vel -2 0 0"])["earliest"]["t"],
+                         Fraction(1, 2))
+
+    def test_bad_motions(self):
+        s = clash4d.Scene(APPROACH)
+        with self.assertRaises(clash4d.InputError) as e:
+            clash4d.check(s, motions=["rest", "vel 1 0"])
+        self.assertEqual(e.exception.place, "motions[1]")
+        with self.assertRaises(ValueError):
+            clash4d.check(s, motions=["rest"])
+        with self.assertRaises(clash4d.InputError):
+            clash4d.Scene({"format": "clash4d-scene/1"})
+
     def test_path_fixture(self):
         head_on = FIXTURES / "contact" / "clear_collision_head_on.json"   # meeting at t = 2
         for path in (head_on, str(head_on)):
