@@ -63,8 +63,13 @@ struct Exact_checker::Impl {
         changed.push_back(static_cast<int>(i));
       }
     if (changed.empty()) return;
-    for (auto& r : runner)
-      if (r) r->motions_changed(changed);
+    try {
+      for (auto& r : runner)
+        if (r) r->motions_changed(changed);
+    } catch (...) {
+      for (auto& r : runner) r.reset();   // half told: the next check makes them afresh
+      throw;
+    }
   }
 };
 
