@@ -20,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 #include <mutex>
+#include <optional>
 #include <new>
 
 namespace clash4d {
@@ -435,9 +436,9 @@ in::Check_answer run_check(const Scene& scene, const std::vector<in::Motion>* mo
   const Scene::Impl& impl = scene.impl();
   return guarded(scene.file(), [&] {
     if (options.number == Number::exact) return motions ? impl.check_exact(*motions, o) : impl.check_exact(o);
-    in::Scene moved;
+    std::optional<in::Scene> moved;
     if (motions) moved = impl.moved(*motions);
-    const in::Scene& s = motions ? moved : impl.scene;
+    const in::Scene& s = moved ? *moved : impl.scene;
     if (options.number == Number::rational) return in::check_rational(s, o);
     return in::check_double(s, options.tolerance, o);
   });
