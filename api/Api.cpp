@@ -248,15 +248,9 @@ struct Scene::Impl {
   in::Check_answer check_exact(const std::vector<in::Motion>& motions, const in::Check_options& o) const
   {
     std::unique_lock<std::mutex> lock(exact_mutex, std::try_to_lock);
-    if (!lock) return in::check_exact(moved(motions), o);
+    if (!lock) return in::check_exact(in::with_motions(scene, motions), o);
     if (!exact) exact = std::make_unique<in::Exact_checker>(scene);
     return exact->check(motions, o);
-  }
-  in::Scene moved(const std::vector<in::Motion>& motions) const
-  {
-    in::Scene s = scene;
-    for (std::size_t i = 0; i < motions.size(); ++i) s.objects[i].motion = motions[i];
-    return s;
   }
 };
 
@@ -437,7 +431,7 @@ in::Check_answer run_check(const Scene& scene, const std::vector<in::Motion>* mo
   return guarded(scene.file(), [&] {
     if (options.number == Number::exact) return motions ? impl.check_exact(*motions, o) : impl.check_exact(o);
     std::optional<in::Scene> moved;
-    if (motions) moved = impl.moved(*motions);
+    if (motions) moved = in::with_motions(impl.scene, *motions);
     const in::Scene& s = moved ? *moved : impl.scene;
     if (options.number == Number::rational) return in::check_rational(s, o);
     return in::check_double(s, options.tolerance, o);

@@ -62,6 +62,14 @@ struct Scene {
 
 const char* solid_key(Solid::Kind k);
 
+// The scene with object i moving by motions[i] (one per object, already
+// valid): its shapes under other motions (exact/Exact_checker.h, the API).
+inline Scene with_motions(Scene scene, const std::vector<Motion>& motions)
+{
+  for (std::size_t i = 0; i < motions.size(); ++i) scene.objects[i].motion = motions[i];
+  return scene;
+}
+
 } // namespace clash4d
 
 #endif

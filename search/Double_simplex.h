@@ -23,7 +23,7 @@ namespace clash4d {
 // fused multiply-add: -ffp-contract=off), only more of them at a time.
 void pivot_tableau(double* T, int rows, int width, int leave, int enter);
 
-// row <- row - row[column] with (a tableau row of `width` entries), skipped
+// row <- row - row[column] * with (rows of `width` entries), skipped
 // where row[column] is zero: pivot_tableau's step, and phase 2's on the
 // objective row.
 inline void eliminate_row(double* row, const double* with, int width, int column)

@@ -259,12 +259,6 @@ std::vector<Motion> plus_velocity(const Scene& scene, const std::array<Rational,
   return out;
 }
 
-Scene with_motions(Scene scene, const std::vector<Motion>& motions)
-{
-  for (std::size_t i = 0; i < motions.size(); ++i) scene.objects[i].motion = motions[i];
-  return scene;
-}
-
 } // namespace
 
 // A prepared scene checked under other motions (Exact_checker::check with
@@ -279,6 +273,7 @@ BOOST_DATA_TEST_CASE(moved_checks_are_check_exact, data::make(fixture_scenes()),
   std::uint64_t stream = seed;
   for (char c : entry) stream = stream * 1099511628211ull + static_cast<unsigned char>(c);   // one per fixture
   std::mt19937_64 rng(stream);
+  BOOST_TEST_MESSAGE("moved checks, " << entry << ": seed " << seed);
   std::vector<Check_options> modes(4);
   modes[1].semantics = Semantics::closed;
   modes[2].earliest = true;
