@@ -7,12 +7,14 @@
 // point's exact dyadic rational; tests/test_numbers.cpp holds that text
 // equal to the rational's), where making, moving and dropping the
 // rationals of its answer was a ninth of the query's instructions.
-// Answers with --earliest are always in the exact kernel's numbers: run_pairs
-// compares their t* across pairs and against its ceiling in that kernel.
+// An --earliest answer kept in points keeps its t* in the exact kernel's
+// numbers too: run_pairs compares t* across pairs and against its ceiling
+// in that kernel.
 #ifndef CLASH4D_EXACT_FILTERED_RESULT_H
 #define CLASH4D_EXACT_FILTERED_RESULT_H
 
 #include "check/Check_runner.h"
+#include <optional>
 #include <stdexcept>
 #include <variant>
 
@@ -31,17 +33,21 @@ public:
   {
     if (o.in_points()) result_ = std::move(std::get<0>(o.result_));
     else make_exact().swap(std::get<1>(o.result_));
+    t_star_.swap(o.t_star_);
     return *this;
   }
 
   // The interval run's answer, kept as it is: the caller has checked that
   // every number the answer prints is a point (Filtered_runner::
-  // exact_copyable), and that it is not an --earliest answer.
-  static Filtered_result of_points(const Pair_result<AFT>& points)
+  // exact_copyable). An --earliest answer comes with its t* in the exact
+  // kernel's numbers, the number its point t* is.
+  static Filtered_result of_points(const Pair_result<AFT>& points, const EFT* t_star = nullptr)
   {
-    if (points.earliest) throw std::logic_error("internal error: an --earliest answer kept in intervals");
+    if (points.earliest != (t_star != nullptr))
+      throw std::logic_error("internal error: an answer kept in intervals without its exact t*");
     Filtered_result r;
     std::get<0>(r.result_) = points;
+    if (t_star) r.t_star_.emplace(*t_star);
     return r;
   }
 
@@ -64,8 +70,9 @@ public:
   }
   friend const EFT& collision_time(const Filtered_result& r)
   {
-    if (r.in_points()) throw std::logic_error("internal error: the time of an answer kept in intervals");
-    return r.exact().t_star;
+    if (!r.in_points()) return r.exact().t_star;
+    if (!r.points().earliest) throw std::logic_error("internal error: the time of an answer without --earliest");
+    return *r.t_star_;
   }
   // A witness copied into the cells stays a point.
   friend bool close_on_witness(Filtered_result& r)
@@ -75,6 +82,7 @@ public:
 
 private:
   std::variant<Pair_result<AFT>, Pair_result<EFT>> result_;
+  std::optional<EFT> t_star_;   // an --earliest answer kept in points: its t* (none: no number made)
 };
 
 } // namespace clash4d

@@ -99,10 +99,12 @@ public:
         o.semantics = semantics;
         return check_pair(pairs[i].first, pairs[i].second, o, ceiling, stats);
       };
-      // A result kept in intervals is printed from them: each number a point.
+      // A result kept in intervals is printed from them: each number a point
+      // (at_start's comparison too, kept_in_points).
       auto answer_one = [&](const Result& r, Pair_answer& p) {
-        if (r.in_points()) pair_answer(ak_, amodel_, r.points(), p);
-        else pair_answer(ek_, emodel_, r.exact(), p);
+        if (!r.in_points()) return pair_answer(ek_, emodel_, r.exact(), p);
+        Protector protect;
+        pair_answer(ak_, amodel_, r.points(), p);
       };
       run_pairs(ek_, pairs, options, check_one, answer_one, answer);
     }
@@ -215,10 +217,7 @@ private:
         if (found.has_witness && found.witness_verified && exact_copyable(found)) {
           stats = std::move(astats);
           ++witnesses_by_intervals_;
-          if (!found.earliest) return Result::of_points(found);
-          Result r;
-          exact_copy(found, r.make_exact());   // in place: a copy of rationals costs
-          return r;
+          return kept_in_points(found);
         }
         if (std::optional<Pair_result<EFT>> r = policy.convex_answer(found)) {
           stats = std::move(astats);
@@ -551,6 +550,24 @@ private:
     if (closed && !cells(found.witness_cells)) return false;
     return !found.earliest ||
            (ak_.has_exact_value(found.t_star) && exact_point(found.contact) && cells(found.contact_cells));
+  }
+  // An exact_copyable answer kept in its points, with t* in EK for
+  // run_pairs (one rational, where EK's copy of the whole answer made two
+  // dozen). Copied into EK only when --earliest's at_start would compare a
+  // point t* with a t_lo that is no point (pair_answer: in intervals, an
+  // uncertain sign).
+  Result kept_in_points(const Pair_result<AFT>& found) const
+  {
+    if (!found.earliest) return Result::of_points(found);
+    if (!ak_.has_exact_value(amodel_.t_lo)) {
+      Result r;
+      exact_copy(found, r.make_exact());   // in place: a copy of rationals costs
+      return r;
+    }
+    std::optional<Rational> t = ak_.exact_value(found.t_star);
+    if (!t) throw std::logic_error("internal error: an --earliest answer's t* not a point");
+    EFT exact_t = ek_.from_rational(*t);
+    return Result::of_points(found, &exact_t);
   }
   // That witness in EK's numbers (exact_copyable), written into r, a
   // fresh result.

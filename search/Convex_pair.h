@@ -194,6 +194,7 @@ public:
     guess_in_ = false;
     vertex_basis_.reset();
     centre_rows_.reset();
+    cofactors_.reset();
   }
 
   // --- Predicates: arguments and results the same in every kernel. ---
@@ -234,7 +235,7 @@ public:
   }
 
   // Whether the four rows meet in one point (their normals independent).
-  CGAL::Uncertain<bool> vertex_exists(const Basis& B) { return k_.uncertain_sign(normals_det(B, -1)) != CGAL::ZERO; }
+  CGAL::Uncertain<bool> vertex_exists(const Basis& B) { return k_.uncertain_sign(time_cofactors(B).det) != CGAL::ZERO; }
 
   // The sign of row j at the vertex of B (a touch: zero).
   CGAL::Uncertain<CGAL::Sign> vertex_sign(const Basis& B, std::size_t j)
@@ -243,11 +244,13 @@ public:
   }
 
   // The sign of y_i in sum_B y_i n_i = -e_t: by Cramer, y_i =
-  // -det(N with row i replaced by e_t) / det N.
+  // -det(N with row i replaced by e_t) / det N, whose numerator is C_i,
+  // the cofactor of n_i's time coordinate (time_cofactors).
   CGAL::Uncertain<CGAL::Sign> dual_sign(const Basis& B, int i)
   {
-    CGAL::Uncertain<CGAL::Sign> num = k_.uncertain_sign(normals_det(B, i)),
-                                den = k_.uncertain_sign(normals_det(B, -1));
+    const Time_cofactors& tc = time_cofactors(B);
+    CGAL::Uncertain<CGAL::Sign> num = k_.uncertain_sign(tc.c[static_cast<std::size_t>(i)]),
+                                den = k_.uncertain_sign(tc.det);
     if (!CGAL::is_certain(num) || !CGAL::is_certain(den)) return CGAL::Uncertain<CGAL::Sign>::indeterminate();
     return CGAL::Sign(-static_cast<int>(CGAL::get_certain(num)) * static_cast<int>(CGAL::get_certain(den)));
   }
@@ -339,6 +342,12 @@ private:
   V4 vertex_{};
   std::optional<Centre> centre_rows_;
   V4 centre_{};
+  struct Time_cofactors {
+    Basis basis;
+    std::array<R, 4> c;   // C_i, the cofactor of row i's time coordinate
+    R det;                // det N
+  };
+  std::optional<Time_cofactors> cofactors_;   // B's, time_cofactors
   Found found_;
 
   // A predicate, through the policy (a filter may ask another kernel).
@@ -544,14 +553,30 @@ private:
     return Verdict::collide;
   }
 
-  // det of B's normals, with row `with_time` (if any) replaced by e_t, on
-  // the rows in the ring: positive multiples, so it has det's sign.
-  R normals_det(const Basis& B, int with_time)
+  // B's normals N (rows n_i, on the rows in the ring: positive multiples,
+  // so every determinant below keeps its sign) by the cofactors of their
+  // time column: C_i = (-1)^(i+3) det3(the other three normals' x, y, z).
+  // Expanding along that column, det N = sum_i n_i[t] C_i; expanding along
+  // row i, det(N with row i replaced by e_t) = C_i. Four 3x3 determinants
+  // give all five of vertex_exists and dual_sign; kept for B.
+  const Time_cofactors& time_cofactors(const Basis& B)
   {
-    std::array<Vector4<R>, 4> N;
-    for (int i = 0; i < 4; ++i)
-      N[i] = i == with_time ? Vector4<R>{R(0), R(0), R(0), R(1)} : ring_row(static_cast<std::size_t>(B[i])).n;
-    return determinant4(N[0], N[1], N[2], N[3]);
+    if (cofactors_ && cofactors_->basis == B) return *cofactors_;
+    std::array<Vector3<R>, 4> space;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Vector4<R>& n = ring_row(static_cast<std::size_t>(B[i])).n;
+      space[i] = {n[0], n[1], n[2]};
+    }
+    Time_cofactors tc{B, {}, R(0)};
+    for (std::size_t i = 0; i < 4; ++i) {
+      std::array<const Vector3<R>*, 3> other;
+      for (std::size_t j = 0, k = 0; j < 4; ++j)
+        if (j != i) other[k++] = &space[j];
+      R minor = determinant3(*other[0], *other[1], *other[2]);
+      tc.c[i] = i % 2 == 1 ? minor : R(-minor);   // (-1)^(i+3)
+      tc.det += ring_row(static_cast<std::size_t>(B[i])).n[3] * tc.c[i];
+    }
+    return cofactors_.emplace(std::move(tc));
   }
 
   // det of C's equal-margin system (centre_exists).

@@ -868,6 +868,41 @@ BOOST_AUTO_TEST_CASE(earliest_contact_off_the_grid_is_made_from_its_line)
   BOOST_TEST(e.stats.exact_fallbacks == 0u);
 }
 
+// An --earliest answer the intervals made of points is printed from them,
+// with its t* in rationals for the comparisons between pairs
+// (exact/Filtered_result.h); the answer is the rational run's. By hand: b's
+// face x = 2 - t meets a's x = 1 at t = 1, so t* = 1 in both semantics, not
+// at the start; a second b, already inside a, makes t* the start itself. A
+// start of 1/3 is no double, so at_start cannot be asked of the points
+// (Filtered_runner::kept_in_points takes the rationals' copy instead).
+BOOST_AUTO_TEST_CASE(earliest_answers_in_points_are_the_rationals)
+{
+  auto scene = [](const std::string& start, bool inside) {
+    return read_scene(read_json_text(
+        R"({"format":"clash4d-scene/1","time":[)" + start + R"(,4],"objects":[)"
+        R"({"name":"a","shape":{"block":{"min":[0,0,0],"max":[1,1,1]}}},)"
+        R"({"name":"b","shape":{"block":{"min":[2,0,0],"max":[3,1,1]}},"motion":"vel -1 0 0"})" +
+        std::string(inside ? R"(,{"name":"c","shape":{"block":{"min":["1/4",0,0],"max":[1,1,1]}}})" : "") + "]}"));
+  };
+  for (const char* start : {"0", "\"1/3\""})
+    for (bool inside : {false, true})
+      for (Semantics s : {Semantics::regularised, Semantics::closed})
+        for (bool all : {false, true}) {
+          Check_options o;
+          o.earliest = true;
+          o.semantics = s;
+          o.all_pairs = all;
+          std::string label = std::string("start ") + start + (inside ? " with c" : "");
+          Check_answer e = same_answers(scene(start, inside), o, label);
+          BOOST_REQUIRE(e.collide);
+          const Pair_answer& first = *e.reported();
+          std::string t_lo = start[0] == '0' ? "0" : "1/3";
+          BOOST_TEST(first.t_star == (inside ? t_lo : "1"), label);
+          BOOST_TEST(first.at_start == inside, label);
+          BOOST_TEST(e.stats.witnesses_by_intervals >= 1u, label);
+        }
+}
+
 // Closed semantics, any witness (issue 16): in §6 the trays only touch
 // the weaving vehicle (fixtures/paper/expected.json), at faces on the
 // scene's decimals (y = -0.1), so the touching point is no double and the
