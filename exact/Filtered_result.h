@@ -41,12 +41,12 @@ public:
   // every number the answer prints is a point (Filtered_runner::
   // exact_copyable). An --earliest answer comes with its t* in the exact
   // kernel's numbers, the number its point t* is.
-  static Filtered_result of_points(const Pair_result<AFT>& points, const EFT* t_star = nullptr)
+  static Filtered_result of_points(Pair_result<AFT>&& points, const EFT* t_star = nullptr)
   {
     if (points.earliest != (t_star != nullptr))
       throw std::logic_error("internal error: an answer kept in intervals without its exact t*");
     Filtered_result r;
-    std::get<0>(r.result_) = points;
+    std::get<0>(r.result_) = std::move(points);
     if (t_star) r.t_star_.emplace(*t_star);
     return r;
   }

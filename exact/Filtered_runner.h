@@ -103,7 +103,8 @@ public:
       // (at_start's comparison too, kept_in_points).
       auto answer_one = [&](const Result& r, Pair_answer& p) {
         if (!r.in_points()) return pair_answer(ek_, emodel_, r.exact(), p);
-        Protector protect;
+        std::optional<Protector> protect;   // at_start's comparison (--earliest) is interval arithmetic
+        if (r.points().earliest) protect.emplace();
         pair_answer(ak_, amodel_, r.points(), p);
       };
       run_pairs(ek_, pairs, options, check_one, answer_one, answer);
@@ -217,7 +218,7 @@ private:
         if (found.has_witness && found.witness_verified && exact_copyable(found)) {
           stats = std::move(astats);
           ++witnesses_by_intervals_;
-          return kept_in_points(found);
+          return kept_in_points(std::move(found));
         }
         if (std::optional<Pair_result<EFT>> r = policy.convex_answer(found)) {
           stats = std::move(astats);
@@ -556,9 +557,9 @@ private:
   // dozen). Copied into EK only when --earliest's at_start would compare a
   // point t* with a t_lo that is no point (pair_answer: in intervals, an
   // uncertain sign).
-  Result kept_in_points(const Pair_result<AFT>& found) const
+  Result kept_in_points(Pair_result<AFT>&& found) const
   {
-    if (!found.earliest) return Result::of_points(found);
+    if (!found.earliest) return Result::of_points(std::move(found));
     if (!ak_.has_exact_value(amodel_.t_lo)) {
       Result r;
       exact_copy(found, r.make_exact());   // in place: a copy of rationals costs
@@ -567,7 +568,7 @@ private:
     std::optional<Rational> t = ak_.exact_value(found.t_star);
     if (!t) throw std::logic_error("internal error: an --earliest answer's t* not a point");
     EFT exact_t = ek_.from_rational(*t);
-    return Result::of_points(found, &exact_t);
+    return Result::of_points(std::move(found), &exact_t);
   }
   // That witness in EK's numbers (exact_copyable), written into r, a
   // fresh result.
