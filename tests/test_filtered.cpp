@@ -872,7 +872,7 @@ BOOST_AUTO_TEST_CASE(earliest_contact_off_the_grid_is_made_from_its_line)
 // with its t* in rationals for the comparisons between pairs
 // (exact/Filtered_result.h); the answer is the rational run's. By hand: b's
 // face x = 2 - t meets a's x = 1 at t = 1, so t* = 1 in both semantics, not
-// at the start; a second b, already inside a, makes t* the start itself. A
+// at the start; a third block c, already inside a, makes t* the start. A
 // start of 1/3 is no double, so at_start cannot be asked of the points
 // (Filtered_runner::kept_in_points takes the rationals' copy instead).
 BOOST_AUTO_TEST_CASE(earliest_answers_in_points_are_the_rationals)
