@@ -12,6 +12,7 @@
 #include "geometry/Box.h"
 #include "model/Scene_model.h"
 #include <CGAL/box_intersection_d.h>
+#include <boost/container/small_vector.hpp>
 #include <algorithm>
 #include <limits>
 #include <utility>
@@ -43,10 +44,10 @@ public:
   std::vector<std::pair<int, int>> candidates(const Scene_model<K>& model, const std::vector<Box<FT, 3>>& roots,
                                               const Scene& scene, std::vector<char>* certain = nullptr) const
   {
-    std::vector<Item> items;
+    Items items;
     items.reserve(model.objects.size());   // one box per object and motion segment: most objects have one
     for (std::size_t i = 0; i < model.objects.size(); ++i) add_boxes(model, static_cast<int>(i), roots[i], items);
-    std::vector<std::pair<std::pair<int, int>, bool>> found;   // a pair, per meeting boxes: certainly?
+    boost::container::small_vector<std::pair<std::pair<int, int>, bool>, 4> found;   // a pair, per meeting boxes: certainly?
     auto report = [&](const Item& x, const Item& y) {
       if (x.object == y.object || !overlaps(x.box, y.box)) return;
       int i = std::min(x.object, y.object), j = std::max(x.object, y.object);
@@ -121,6 +122,8 @@ private:
     int object;
     Box4 box;
   };
+  // A few objects' boxes (the common scene: a pair) inline, without the heap.
+  using Items = boost::container::small_vector<Item, 4>;
   using Filter_box = CGAL::Box_intersection_d::Box_with_info_d<double, 4, std::size_t>;
 
   // The double box containing b (outward rounding; unbounded sides at +-max).
@@ -135,7 +138,7 @@ private:
     return Filter_box(lo, hi, index);
   }
 
-  void add_boxes(const Scene_model<K>& model, int i, const Box<FT, 3>& root, std::vector<Item>& items) const
+  void add_boxes(const Scene_model<K>& model, int i, const Box<FT, 3>& root, Items& items) const
   {
     if (root.empty) return;
     for (const auto& span : model.sub_spans({i})) items.push_back({i, swept(model, i, root, span)});
@@ -172,7 +175,7 @@ private:
   template <class Test>
   bool any_pair(const Scene_model<K>& model, const std::vector<Box<FT, 3>>& roots, int i, int j, Test test) const
   {
-    std::vector<Item> a, b;
+    Items a, b;
     add_boxes(model, i, roots[static_cast<std::size_t>(i)], a);
     add_boxes(model, j, roots[static_cast<std::size_t>(j)], b);
     for (const Item& x : a)

@@ -121,6 +121,9 @@ public:
     // d > 0 (GMP's canonical form); rounding upward, -(-n / d) rounds down.
     return FT(-(-n / d), n / d);
   }
+  // The reader's enclosure of a.q: CGAL's, the tightest (tests/
+  // test_numbers.cpp holds it equal to from_rational's).
+  FT from_approximation(const Approximation& a) const { return a.enclosure; }
   FT power_of_two(int e) const { return FT(power_of_two_double(e)); }
   // Beyond 2^900 a region face times the grid's 2^20 and a plane's
   // coefficients leave the double range: the rational run takes the pair.

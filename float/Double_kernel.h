@@ -28,6 +28,12 @@ public:
   // The scene's rational rounded to the nearest double; a number beyond the
   // double range cannot be read by this instantiation (std::range_error).
   double from_rational(const Rational& q) const;
+  // The reader's nearest double of a.q (the same number); one beyond the
+  // range is refused by from_rational.
+  double from_approximation(const Approximation& a) const
+  {
+    return std::isfinite(a.nearest) ? a.nearest : from_rational(a.q);
+  }
   Rational to_rational(double x) const { return Rational(x); }
   double floor_to_grid(double x, int bits) const
   {

@@ -54,6 +54,12 @@
 //                                   whether the Protector's mode takes effect
 //                                   on this machine (not under valgrind);
 //                                   false, the run is the exact kernel's alone
+//   k.from_approximation(a)         a kernel that rounds or encloses the
+//                                   scene's numbers: from_rational(a.q),
+//                                   the same number, read from the reader's
+//                                   approximation a (numbers/Approximation.h)
+//                                   instead of converted again
+//                                   (Model_builder; reads_approximations_v)
 //   k.exact_value(x), k.has_exact_value(x)
 //                                   a filtered runner's approximate kernel:
 //                                   the rational that x is, when it is one
@@ -66,6 +72,7 @@
 #ifndef CLASH4D_GEOMETRY_KERNEL_CONCEPT_H
 #define CLASH4D_GEOMETRY_KERNEL_CONCEPT_H
 
+#include "numbers/Approximation.h"
 #include "numbers/Rational.h"
 #include "numbers/Stat_number.h"
 #include "geometry/kernel_ft4.h"
@@ -114,6 +121,19 @@ struct has_required<K, std::void_t<typename K::FT, decltype(std::declval<const c
 // True when K provides every required member above with its signature.
 template <class K>
 inline constexpr bool is_kernel_v = kernel_concept_detail::has_required<K>::value;
+
+namespace kernel_concept_detail {
+template <class K, class = void>
+struct reads_approximations : std::false_type {};
+template <class K>
+struct reads_approximations<
+    K, std::void_t<decltype(std::declval<const K&>().from_approximation(std::declval<const Approximation&>()))>>
+  : std::true_type {};
+} // namespace kernel_concept_detail
+
+// True when K has the optional from_approximation above.
+template <class K>
+inline constexpr bool reads_approximations_v = kernel_concept_detail::reads_approximations<K>::value;
 
 } // namespace clash4d
 

@@ -5,6 +5,7 @@
 #define CLASH4D_MODEL_MODEL_BUILDER_H
 
 #include "model/Csg_model.h"
+#include "geometry/Kernel_concept.h"
 #include "geometry/Polytope_ft.h"
 #include "geometry/Rotation_matrix.h"
 #include "scene/Scene.h"
@@ -112,7 +113,16 @@ private:
     return std::move(model_);
   }
 
-  FT num(const Solid& s, std::size_t i) const { return k_.from_rational(s.numbers[i]); }
+  FT num(const Solid& s, std::size_t i) const { return converted(s.numbers, s.numbers_approximated, i); }
+  // A scene number in FT: from the reader's approximation of it where the
+  // kernel reads those (K::from_approximation: the same number as
+  // from_rational makes, without converting again), else converted.
+  FT converted(const std::vector<Rational>& numbers, const std::vector<Approximation>& a, std::size_t i) const
+  {
+    if constexpr (reads_approximations_v<K>)
+      if (const Approximation* x = approximation_of(numbers, a, i)) return k_.from_approximation(*x);
+    return k_.from_rational(numbers[i]);
+  }
 
   // -1, 0 or 1 (v): in rationals copies of numbers made once (a number
   // made per plane is an allocation), otherwise made in place.
@@ -131,7 +141,7 @@ private:
   // exact coefficient as tightly as a number of the file, and keeps its
   // exact zeros.
   bool exact_read(const Solid& s) const { return K::reads_exact_constructions && !s.constructed.empty(); }
-  FT made(const Solid& s, std::size_t i) const { return k_.from_rational(s.constructed[i]); }
+  FT made(const Solid& s, std::size_t i) const { return converted(s.constructed, s.constructed_approximated, i); }
   Vector3<FT> constructed3(const Solid& s, std::size_t i) const { return {made(s, i), made(s, i + 1), made(s, i + 2)}; }
   Plane3<FT> constructed4(const Solid& s, std::size_t i) const
   {

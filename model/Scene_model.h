@@ -8,7 +8,9 @@
 #include "model/Motion_path.h"
 #include "numbers/Number_ops.h"
 #include "scene/Scene.h"
+#include <boost/container/small_vector.hpp>
 #include <algorithm>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -83,16 +85,23 @@ struct Scene_model {
   // The times are ordered and merged on the scene's own rationals (every
   // model is built from its scene, set_exact_span): a kernel that only
   // encloses times (intervals) could not tell two objects' coinciding
-  // velocity changes apart.
-  std::vector<Time_span<FT>> sub_spans(const std::vector<int>& which) const
+  // velocity changes apart. Asked per object and per pair in every check
+  // (the sweep, the pair's search): up to two spans inline, and no vector
+  // made for `which`.
+  using Spans = boost::container::small_vector<Time_span<FT>, 2>;
+  Spans sub_spans(std::initializer_list<int> which) const { return spans_of(which.begin(), which.end()); }
+  Spans sub_spans(const std::vector<int>& which) const { return spans_of(which.data(), which.data() + which.size()); }
+
+private:
+  Spans spans_of(const int* first, const int* last) const
   {
     bool still = true;   // no velocity change at all: the whole span (most pairs)
-    for (int i : which) still = still && objects[i].motion.times.empty();
+    for (const int* i = first; i != last; ++i) still = still && objects[*i].motion.times.empty();
     if (still && exact_span) return {{t_lo, t_hi, lo_on_grid, hi_on_grid, &exact_t_lo, &exact_t_hi}};
     std::vector<std::pair<const Rational*, FT>> exact{{&exact_t_lo, t_lo}, {&exact_t_hi, t_hi}};
     bool known = exact_span;
-    for (int i : which) {
-      const Motion_path<FT>& m = objects[i].motion;
+    for (const int* i = first; i != last; ++i) {
+      const Motion_path<FT>& m = objects[*i].motion;
       known = known && m.exact_times.size() == m.times.size();
       for (std::size_t k = 0; known && k < m.times.size(); ++k)
         if (exact_t_lo < m.exact_times[k] && m.exact_times[k] < exact_t_hi)
@@ -102,13 +111,14 @@ struct Scene_model {
     std::sort(exact.begin(), exact.end(), [](const auto& x, const auto& y) { return *x.first < *y.first; });
     auto same = [](const auto& x, const auto& y) { return *x.first == *y.first; };
     exact.erase(std::unique(exact.begin(), exact.end(), same), exact.end());
-    std::vector<Time_span<FT>> spans;
+    Spans spans;
     for (std::size_t i = 0; i + 1 < exact.size(); ++i)
       spans.push_back({exact[i].second, exact[i + 1].second, on_grid(*exact[i].first), on_grid(*exact[i + 1].first),
                        exact[i].first, exact[i + 1].first});
     return spans;
   }
 
+public:
   static bool on_grid(const Rational& t) { return is_exact_dyadic(t, K::grid_bits); }
 
   // The motion segment of object i on a sub-span (constant there).

@@ -2,6 +2,7 @@
 #ifndef CLASH4D_SCENE_SCENE_H
 #define CLASH4D_SCENE_SCENE_H
 
+#include "numbers/Approximation.h"
 #include "numbers/Rational.h"
 #include <array>
 #include <string>
@@ -33,7 +34,16 @@ struct Solid {
   // vertices x y z, in the order of triples; rotate: its matrix's rows
   // (geometry/Rotation_matrix.h); empty when not made.
   std::vector<Rational> constructed;
+  // Their approximations (numbers/Approximation.h), made by the reader
+  // (approximate_numbers) for the kernels that convert (Model_builder):
+  // each is read only for the number it was made from, so numbers changed
+  // after reading are converted again.
+  std::vector<Approximation> numbers_approximated, constructed_approximated;
 };
+
+// Every number of s and of the solids under it approximated, once (the
+// reader does it for every scene it reads).
+void approximate_numbers(Solid& s);
 
 struct Motion {
   std::vector<Rational> times;                    // strictly increasing breakpoints

@@ -426,7 +426,15 @@ Scene read_scene(const Json_value& root, const std::string& base_directory)
   for (std::size_t i = 0; i < objects.items.size(); ++i)
     scene.objects.push_back(read_object(objects.items[i], at("objects", i), names, ctx));
   if (const Json_value* ignore = root.find("ignore")) read_ignore(*ignore, scene);
+  for (Scene_object& o : scene.objects) approximate_numbers(o.shape);
   return scene;
+}
+
+void approximate_numbers(Solid& s)
+{
+  s.numbers_approximated = approximations(s.numbers);
+  s.constructed_approximated = approximations(s.constructed);
+  for (Solid& c : s.children) approximate_numbers(c);
 }
 
 Scene read_scene_file(const std::string& path)

@@ -25,6 +25,7 @@ struct Guide_numbers {
   using FT = double;
   static constexpr bool reads_exact_constructions = true;   // the reader's exact hull planes, rounded
   double from_rational(const Rational& q) const { return nearest_double(q); }
+  double from_approximation(const Approximation& a) const { return a.nearest; }
   CGAL::Sign sign(double x) const { return CGAL::sign(x); }
 };
 

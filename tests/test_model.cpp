@@ -10,6 +10,7 @@
 #include "float/Double_kernel.h"
 #include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
+#include <functional>
 
 using namespace clash4d;
 using Q = Rational;
@@ -388,6 +389,57 @@ BOOST_AUTO_TEST_CASE(double_model_reads_rounded_numbers)
   auto m = Scene_model<Double_kernel>::build(k, scene_with(R"({"block":{"min":["0.1",0,0],"max":["1/3",1,1]}})"));
   BOOST_TEST(m.objects[0].csg.primitives[0].box.lo[0] == 0.1);
   BOOST_TEST(m.objects[0].csg.primitives[0].box.hi[0] == 1.0 / 3.0);
+}
+
+// The reader approximates every number once (numbers/Approximation.h) and
+// the interval and double models read those; a number changed after
+// reading (the shrinker changes scenes) is read from itself, never from
+// the approximation of the number it replaced. A block made of 1/3 and a
+// hull (its exact facet planes, Solid::constructed), then its corner moved
+// to 2/3: the interval model must enclose 2/3, and the hull's planes (read
+// again: made from the new numbers by the reader's own code) theirs.
+BOOST_AUTO_TEST_CASE(numbers_changed_after_reading_are_read_again)
+{
+  Scene scene = scene_with(R"({"block":{"min":[0,0,0],"max":["1/3",1,1]}})");
+  Solid& block = scene.objects[0].shape;
+  BOOST_TEST_REQUIRE(block.numbers_approximated.size() == block.numbers.size());
+  BOOST_TEST(block.numbers_approximated[3].of(block.numbers[3]));
+  Interval_kernel ik;
+  auto hi_x = [&](const Scene& s) {
+    CGAL::Protect_FPU_rounding<true> protect;
+    return Scene_model<Interval_kernel>::build(ik, s).objects[0].csg.primitives[0].box.hi[0];
+  };
+  auto read = hi_x(scene);
+  BOOST_TEST((Q(read.inf()) < Q(1, 3) && Q(1, 3) < Q(read.sup())));   // encloses 1/3, no double
+  block.numbers[3] = Q(2, 3);
+  auto changed = hi_x(scene);
+  BOOST_TEST((Q(changed.inf()) < Q(2, 3) && Q(2, 3) < Q(changed.sup())));
+  Double_kernel dk;
+  BOOST_TEST(Scene_model<Double_kernel>::build(dk, scene).objects[0].csg.primitives[0].box.hi[0] == 2.0 / 3.0);
+
+  // Every solid of the tree is approximated, the ones under others too.
+  Scene tree = scene_with(R"({"union":[{"translate":["1/3",0,0],"solid":{"block":{"min":[0,0,0],"max":[1,1,1]}}},)"
+                          R"({"rotate":[1,1,0,0],"solid":{"block":{"min":[0,0,0],"max":[1,1,1]}}}]})");
+  std::function<void(const Solid&)> approximated = [&](const Solid& s) {
+    BOOST_TEST(s.numbers_approximated.size() == s.numbers.size());
+    BOOST_TEST(s.constructed_approximated.size() == s.constructed.size());
+    for (std::size_t i = 0; i < s.numbers.size(); ++i) BOOST_TEST(s.numbers_approximated[i].of(s.numbers[i]));
+    for (const Solid& c : s.children) approximated(c);
+  };
+  approximated(tree.objects[0].shape);
+  BOOST_TEST(!tree.objects[0].shape.children[1].constructed.empty());   // the rotation's exact matrix
+
+  Scene hull = scene_with(R"({"hull":[[0,0,0],[3,0,0],[0,3,0],[0,0,3]]})");
+  Solid& h = hull.objects[0].shape;
+  BOOST_TEST_REQUIRE(h.constructed_approximated.size() == h.constructed.size());
+  for (Rational& c : h.constructed) c = c * Q(2);   // the same planes, scaled: every number another
+  CGAL::Protect_FPU_rounding<true> protect;
+  auto planes = Scene_model<Interval_kernel>::build(ik, hull).objects[0].csg.primitives[0].planes;
+  BOOST_TEST_REQUIRE(planes.size() * 4 == h.constructed.size());
+  for (std::size_t i = 0; i < h.constructed.size(); ++i) {
+    const auto& x = planes[i / 4][i % 4];
+    BOOST_TEST((Q(x.inf()) <= h.constructed[i] && h.constructed[i] <= Q(x.sup())), "coefficient " << i);
+  }
 }
 
 // Corners (Primitive::corners): the points where four or more planes of a

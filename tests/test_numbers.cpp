@@ -160,6 +160,13 @@ BOOST_AUTO_TEST_CASE(double_reading_rounds_to_nearest)
   BOOST_CHECK_THROW(k.from_rational(q("1e400")), std::range_error);
 }
 
+// The interval kernel's reading of x, under its rounding (upward).
+static Interval interval_reading(const Interval_kernel& ik, const Rational& x)
+{
+  CGAL::Protect_FPU_rounding<true> protect;
+  return ik.from_rational(x);
+}
+
 // The kernels' quick reading of rationals with small numerators and
 // denominators (one division of exact doubles) against MPFR's: the nearest
 // double for Double_kernel, the tightest enclosure for Interval_kernel (its
@@ -178,15 +185,55 @@ BOOST_AUTO_TEST_CASE(quick_reading_matches_mpfr)
     Rational x = (i % 2 ? -n : n) / d;
     double nearest = round_to_nearest(x);
     BOOST_TEST(dk.from_rational(x) == nearest, to_string(x));
-    Interval e;
-    {
-      CGAL::Protect_FPU_rounding<true> protect;   // the interval kernel's arithmetic rounds upward
-      e = ik.from_rational(x);
-    }
+    Interval e = interval_reading(ik, x);
     BOOST_TEST((Rational(e.inf()) <= x && x <= Rational(e.sup())), to_string(x));
     bool exact = Rational(nearest) == x;
     BOOST_TEST((exact ? e.is_point() : e.inf() == std::nextafter(e.sup(), -HUGE_VAL)), to_string(x));
   }
+}
+
+// The reader's approximations (numbers/Approximation.h) are the numbers
+// the kernels' own readings make, bit for bit: the interval kernel's
+// enclosure (so an interval run reads the same intervals either way) and
+// the nearest double (the double kernel, the convex pairs' guide); and an
+// approximation is read only for the very number it was made from. On
+// seeded random rationals of 1 to 130 bits a part, both sides of the quick
+// reading's 53-bit limit, and on doubles and integers.
+BOOST_AUTO_TEST_CASE(approximations_are_the_kernels_readings)
+{
+  std::uint64_t seed = 20261130;
+  BOOST_TEST_MESSAGE("approximations: seed " << seed);
+  std::mt19937_64 rng(seed);
+  Double_kernel dk;
+  Interval_kernel ik;
+  auto random_integer = [&](int bits) {
+    mpz_class z = 0;
+    for (int b = 0; b < bits; b += 32) z = (z << 32) + static_cast<unsigned long>(rng() & 0xffffffffu);
+    return mpz_class(z >> ((bits + 31) / 32 * 32 - bits));
+  };
+  for (int i = 0; i < 20000; ++i) {
+    int bits_n = 1 + static_cast<int>(rng() % 130), bits_d = 1 + static_cast<int>(rng() % 130);
+    mpq_class v(random_integer(bits_n), random_integer(bits_d) + 1);
+    v.canonicalize();
+    if (i % 3 == 1) v = mpq_class(static_cast<double>(rng() >> 11) * std::ldexp(1.0, static_cast<int>(rng() % 80) - 60));
+    if (i % 2) v = -v;
+    Rational x(v.get_mpq_t());
+    Approximation a(x);
+    Interval e = interval_reading(ik, x), f;
+    {
+      CGAL::Protect_FPU_rounding<true> protect;
+      f = ik.from_approximation(a);
+    }
+    BOOST_TEST((a.enclosure.inf() == e.inf() && a.enclosure.sup() == e.sup()), to_string(x));
+    BOOST_TEST((f.inf() == e.inf() && f.sup() == e.sup()), to_string(x));
+    BOOST_TEST(a.nearest == round_to_nearest(x), to_string(x));
+    BOOST_TEST(dk.from_approximation(a) == dk.from_rational(x), to_string(x));
+    Rational copy = x;
+    BOOST_TEST((a.of(x) && a.of(copy)), to_string(x));
+    BOOST_TEST(!a.of(Rational(v.get_mpq_t())), "an equal number made again is another number: " << to_string(x));
+  }
+  Approximation far(q("1e400"));
+  BOOST_CHECK_THROW(dk.from_approximation(far), std::range_error);
 }
 
 BOOST_AUTO_TEST_CASE(double_output_is_shortest_round_trip)
