@@ -95,9 +95,13 @@ struct Scene_model {
 private:
   Spans spans_of(const int* first, const int* last) const
   {
+    Spans spans;   // the one object returned (no move of its inline spans)
     bool still = true;   // no velocity change at all: the whole span (most pairs)
     for (const int* i = first; i != last; ++i) still = still && objects[*i].motion.times.empty();
-    if (still && exact_span) return {{t_lo, t_hi, lo_on_grid, hi_on_grid, &exact_t_lo, &exact_t_hi}};
+    if (still && exact_span) {
+      spans.push_back({t_lo, t_hi, lo_on_grid, hi_on_grid, &exact_t_lo, &exact_t_hi});
+      return spans;
+    }
     std::vector<std::pair<const Rational*, FT>> exact{{&exact_t_lo, t_lo}, {&exact_t_hi, t_hi}};
     bool known = exact_span;
     for (const int* i = first; i != last; ++i) {
@@ -111,7 +115,6 @@ private:
     std::sort(exact.begin(), exact.end(), [](const auto& x, const auto& y) { return *x.first < *y.first; });
     auto same = [](const auto& x, const auto& y) { return *x.first == *y.first; };
     exact.erase(std::unique(exact.begin(), exact.end(), same), exact.end());
-    Spans spans;
     for (std::size_t i = 0; i + 1 < exact.size(); ++i)
       spans.push_back({exact[i].second, exact[i + 1].second, on_grid(*exact[i].first), on_grid(*exact[i + 1].first),
                        exact[i].first, exact[i + 1].first});
