@@ -391,13 +391,15 @@ BOOST_AUTO_TEST_CASE(double_model_reads_rounded_numbers)
   BOOST_TEST(m.objects[0].csg.primitives[0].box.hi[0] == 1.0 / 3.0);
 }
 
-// The reader approximates every number once (numbers/Approximation.h) and
-// the interval and double models read those; a number changed after
-// reading (the shrinker changes scenes) is read from itself, never from
-// the approximation of the number it replaced. A block made of 1/3 and a
-// hull (its exact facet planes, Solid::constructed), then its corner moved
-// to 2/3: the interval model must enclose 2/3, and the hull's planes (read
-// again: made from the new numbers by the reader's own code) theirs.
+// The reader approximates every number of every solid once (numbers/
+// Approximation.h), and the interval and double models read those; a
+// number changed after reading (the shrinker changes scenes) is read from
+// itself, never from the approximation of the number it replaced. A
+// block's 1/3 changed to 2/3 after reading: the interval model must
+// enclose 2/3 and the double model read it. Every solid of a tree is
+// approximated, a rotation's exact matrix too. A hull's exact facet planes
+// (Solid::constructed), each coefficient doubled after reading: the
+// interval planes must enclose the new coefficients.
 BOOST_AUTO_TEST_CASE(numbers_changed_after_reading_are_read_again)
 {
   Scene scene = scene_with(R"({"block":{"min":[0,0,0],"max":["1/3",1,1]}})");
