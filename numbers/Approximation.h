@@ -1,6 +1,6 @@
 // A scene number's approximations, made once when the scene is read
-// (scene/Scene_approximations.h): the tightest interval of doubles around
-// it and its nearest double. A check converts every number of the scene to
+// (approximate_numbers in scene/Scene.h, called by read_scene): the
+// tightest interval of doubles around it and its nearest double. A check converts every number of the scene to
 // its kernel (Model_builder), the interval run and the convex pairs' guide
 // each (an exact hull's plane coefficients are rationals of many digits):
 // a hull-hull pair's check spent a fifth of its instructions converting.
