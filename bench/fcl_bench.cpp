@@ -67,7 +67,7 @@ void row(const Case& c, double min_seconds, int repeat)
       [&] { return check_double(c.scene, 0, opts).collide; }, [&] { return fcl.time_of_contact(0, 1).has_value(); },
       [&] { return Fcl_subject(c.scene).check(opts).collide; });
   double fq = f.seconds_per_query;
-  std::printf("%-22s %9.1f %8.1f %8.1f %9.1f %9.1f %12.1f %9.1f %8.2f %9.2f %10.1f   %-7s %-7s %-7s\n", c.name.c_str(),
+  std::printf("%-22s %9.2f %8.2f %8.2f %9.2f %9.2f %12.1f %9.2f %8.2f %9.2f %10.2f   %-7s %-7s %-7s\n", c.name.c_str(),
               e.seconds_per_query * 1e6, p.seconds_per_query * 1e6, m.seconds_per_query * 1e6,
               d.seconds_per_query * 1e6, fq * 1e6, fb.seconds_per_query * 1e6, e.seconds_per_query / fq,
               p.seconds_per_query / fq, m.seconds_per_query / fq, d.seconds_per_query / fq, verdict(e.collide),

@@ -59,7 +59,7 @@
 //                                   the same number, read from the reader's
 //                                   approximation a (numbers/Approximation.h)
 //                                   instead of converted again
-//                                   (Model_builder; reads_approximations_v)
+//                                   (read_number; reads_approximations_v)
 //   k.exact_value(x), k.has_exact_value(x)
 //                                   a filtered runner's approximate kernel:
 //                                   the rational that x is, when it is one
@@ -134,6 +134,19 @@ struct reads_approximations<
 // True when K has the optional from_approximation above.
 template <class K>
 inline constexpr bool reads_approximations_v = kernel_concept_detail::reads_approximations<K>::value;
+
+// A scene number q in K: read from a, the reader's approximation, when K
+// reads those and a was made from q itself (Approximation::of; a may be
+// any other number's, or none); otherwise converted. The same number
+// either way (from_approximation's contract): the models' solids and
+// motions (model/Model_builder.h, model/Motion_path.h).
+template <class K>
+typename K::FT read_number(const K& k, const Rational& q, const Approximation* a)
+{
+  if constexpr (reads_approximations_v<K>)
+    if (a && a->of(q)) return k.from_approximation(*a);
+  return k.from_rational(q);
+}
 
 } // namespace clash4d
 

@@ -5,6 +5,8 @@
 
 #include "geometry/Box.h"
 #include "geometry/kernel_ft4.h"
+#include "scene/Scene.h"
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,8 +21,8 @@ struct Primitive {
   std::vector<Vector3<FT>> vertices; // empty for a half-space
   Box<FT, 3> box;
   // Points where four or more of the planes meet, each as the indices of
-  // those planes (Solid::corners; transforms keep them).
-  std::vector<std::vector<int>> corners;
+  // those planes (Solid::corners, shared; transforms keep them); none, null.
+  std::shared_ptr<const Corners> corners;
 };
 
 struct Csg_node {

@@ -218,10 +218,11 @@ private:
   {
     for (const auto& p : m.object->csg.primitives) {
       std::vector<std::vector<int>> through(p.planes.size());
-      for (const auto& corner : p.corners) {
-        for (int plane : corner) through[plane].push_back(groups.corner_count);
-        ++groups.corner_count;
-      }
+      if (p.corners)
+        for (const auto& corner : *p.corners) {
+          for (int plane : corner) through[plane].push_back(groups.corner_count);
+          ++groups.corner_count;
+        }
       for (std::size_t i = 0; i < p.planes.size(); ++i) groups.corners.insert(groups.corners.end(), 2, through[i]);
     }
   }

@@ -115,13 +115,11 @@ private:
 
   FT num(const Solid& s, std::size_t i) const { return converted(s.numbers, s.numbers_approximated, i); }
   // A scene number in FT: from the reader's approximation of it where the
-  // kernel reads those (K::from_approximation: the same number as
-  // from_rational makes, without converting again), else converted.
+  // kernel reads those (read_number: the same number as from_rational
+  // makes, without converting again), else converted.
   FT converted(const std::vector<Rational>& numbers, const std::vector<Approximation>& a, std::size_t i) const
   {
-    if constexpr (reads_approximations_v<K>)
-      if (const Approximation* x = approximation_of(numbers, a, i)) return k_.from_approximation(*x);
-    return k_.from_rational(numbers[i]);
+    return read_number(k_, numbers[i], i < a.size() ? &a[i] : nullptr);
   }
 
   // -1, 0 or 1 (v): in rationals copies of numbers made once (a number

@@ -3,6 +3,7 @@
 #ifndef CLASH4D_MODEL_MOTION_PATH_H
 #define CLASH4D_MODEL_MOTION_PATH_H
 
+#include "geometry/Kernel_concept.h"
 #include "geometry/kernel_ft4.h"
 #include "scene/Scene.h"
 #include <CGAL/enum.h>
@@ -23,13 +24,24 @@ struct Motion_path {
     // Each vector sized once: a path is made per object in every check (and
     // per moved object of a prepared scene's), where growing them was a
     // tenth of its making.
+    // Numbers from the reader's approximations where K reads them
+    // (read_number: the same numbers, not converted again).
+    auto approximated = [](const std::vector<Approximation>& a, std::size_t i) {
+      return i < a.size() ? &a[i] : nullptr;
+    };
     Motion_path p;
     p.times.reserve(m.times.size());
-    for (const auto& t : m.times) p.times.push_back(k.from_rational(t));
+    for (std::size_t i = 0; i < m.times.size(); ++i)
+      p.times.push_back(read_number(k, m.times[i], approximated(m.times_approximated, i)));
     if (!m.times.empty()) p.exact_times = m.times;
     std::size_t n = m.velocities.size();
     p.velocity.reserve(n);
-    for (const auto& v : m.velocities) p.velocity.push_back({k.from_rational(v[0]), k.from_rational(v[1]), k.from_rational(v[2])});
+    for (std::size_t i = 0; i < n; ++i) {
+      auto at = [&](int a) {
+        return read_number(k, m.velocities[i][a], approximated(m.velocities_approximated, 3 * i + a));
+      };
+      p.velocity.push_back({at(0), at(1), at(2)});
+    }
     p.offset.assign(n, Vector3<FT>{FT(0), FT(0), FT(0)});
     // The segment holding t = 0 has offset 0; continuity at each breakpoint T
     // (v_i T + c_i = v_j T + c_j) fixes the others outward from it.

@@ -1,5 +1,6 @@
 // A scene number's approximations, made once when the scene is read
-// (approximate_numbers in scene/Scene.h, called by read_scene): the
+// (approximate_numbers in scene/Scene.h, called by read_scene; read by
+// read_number, geometry/Kernel_concept.h): the
 // tightest interval of doubles around it and its nearest double. A check converts every number of the scene to
 // its kernel (Model_builder), the interval run and the convex pairs' guide
 // each (an exact hull's plane coefficients are rationals of many digits):
@@ -27,13 +28,6 @@ struct Approximation {
   // shares one value among its copies and never changes it in place).
   bool of(const Rational& x) const { return static_cast<mpq_srcptr>(x.mpq()) == static_cast<mpq_srcptr>(q.mpq()); }
 };
-
-// numbers[i]'s approximation in a, when a holds it (made for these numbers).
-inline const Approximation* approximation_of(const std::vector<Rational>& numbers,
-                                             const std::vector<Approximation>& a, std::size_t i)
-{
-  return i < a.size() && a[i].of(numbers[i]) ? &a[i] : nullptr;
-}
 
 std::vector<Approximation> approximations(const std::vector<Rational>& numbers);
 

@@ -10,7 +10,7 @@ void make_hull_solid(const std::vector<Rational3>& points, Solid& s)
   Polytope_combinatorics c = hull_facets(points);
   s.kind = Solid::Kind::Hull;
   s.triples = c.triples;
-  s.corners = c.corners;
+  s.corners = c.corners.empty() ? nullptr : std::make_shared<const Corners>(std::move(c.corners));
   s.numbers.clear();
   s.constructed.clear();
   for (const auto& p : points) s.numbers.insert(s.numbers.end(), p.begin(), p.end());

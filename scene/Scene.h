@@ -5,11 +5,16 @@
 #include "numbers/Approximation.h"
 #include "numbers/Rational.h"
 #include <array>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace clash4d {
+
+// Points where four or more of a polytope's planes meet, each as the
+// indices of those planes.
+using Corners = std::vector<std::vector<int>>;
 
 struct Solid {
   enum class Kind { Halfspace, Block, Convex, Prism, Hull, Union, Intersection, Difference, Translate, Rotate };
@@ -26,8 +31,10 @@ struct Solid {
   // convex vertices as triples of half-space indices.
   std::vector<std::array<int, 3>> triples;
   // Hull and convex: the corners found by validation (scene/Exact_validation.h,
-  // Polytope_combinatorics), each as the indices of its four or more planes.
-  std::vector<std::vector<int>> corners;
+  // Polytope_combinatorics), each as the indices of its four or more planes;
+  // none, null. Shared, never changed: every model of the solid (one per
+  // check and kernel) holds them without a copy.
+  std::shared_ptr<const Corners> corners;
   // Their exact geometry, made by the reader (geometry/Polytope_ft.h), for the
   // kernels that read constructions rather than compute them
   // (K::reads_exact_constructions): hull facet planes a b c d, convex
@@ -48,7 +55,15 @@ void approximate_numbers(Solid& s);
 struct Motion {
   std::vector<Rational> times;                    // strictly increasing breakpoints
   std::vector<std::array<Rational, 3>> velocities; // times.size() + 1 segments
+  // Their approximations, as a Solid's (made by approximate_numbers):
+  // the times, and the velocities' coordinates in order (3 per segment).
+  // A motion made or changed in code without them is converted.
+  std::vector<Approximation> times_approximated, velocities_approximated;
 };
+
+// The motion's numbers approximated, once (the reader does it for every
+// object's motion).
+void approximate_numbers(Motion& m);
 
 struct Scene_object {
   std::string name;

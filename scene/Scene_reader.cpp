@@ -161,7 +161,7 @@ void read_convex(const Json_value& v, Solid& s, const std::string& path)
   if (!problem.empty()) throw Input_error(path, problem);
   Polytope_combinatorics c = convex_vertex_triples(planes);
   s.triples = c.triples;
-  s.corners = c.corners;
+  if (!c.corners.empty()) s.corners = std::make_shared<const Corners>(std::move(c.corners));
   for (const auto& t : s.triples) {
     Rational3 v = vertex_of(planes[t[0]], planes[t[1]], planes[t[2]]);
     s.constructed.insert(s.constructed.end(), v.begin(), v.end());
@@ -426,7 +426,10 @@ Scene read_scene(const Json_value& root, const std::string& base_directory)
   for (std::size_t i = 0; i < objects.items.size(); ++i)
     scene.objects.push_back(read_object(objects.items[i], at("objects", i), names, ctx));
   if (const Json_value* ignore = root.find("ignore")) read_ignore(*ignore, scene);
-  for (Scene_object& o : scene.objects) approximate_numbers(o.shape);
+  for (Scene_object& o : scene.objects) {
+    approximate_numbers(o.shape);
+    approximate_numbers(o.motion);
+  }
   return scene;
 }
 
@@ -435,6 +438,15 @@ void approximate_numbers(Solid& s)
   s.numbers_approximated = approximations(s.numbers);
   s.constructed_approximated = approximations(s.constructed);
   for (Solid& c : s.children) approximate_numbers(c);
+}
+
+void approximate_numbers(Motion& m)
+{
+  m.times_approximated = approximations(m.times);
+  m.velocities_approximated.clear();
+  m.velocities_approximated.reserve(3 * m.velocities.size());
+  for (const auto& v : m.velocities)
+    for (const Rational& x : v) m.velocities_approximated.emplace_back(x);
 }
 
 Scene read_scene_file(const std::string& path)

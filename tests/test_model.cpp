@@ -293,7 +293,8 @@ BOOST_AUTO_TEST_CASE(planes_and_vertices_trees_are_the_models)
     BOOST_TEST(!m.planes.empty());
     BOOST_TEST(p.planes == m.planes, "primitive " << i);
     BOOST_TEST((p.vertices.empty() && !p.box.has_lo[0] && !p.box.has_hi[0]), "primitive " << i);
-    BOOST_TEST((p.corners == m.corners && p.path == m.path), "primitive " << i);
+    bool same_corners = p.corners && m.corners ? *p.corners == *m.corners : p.corners == m.corners;   // two readings
+    BOOST_TEST((same_corners && p.path == m.path), "primitive " << i);
     BOOST_TEST(v.planes.empty(), "primitive " << i);
     BOOST_TEST(v.vertices == m.vertices, "primitive " << i);
     check_same_box(v.box, m.box, i);
@@ -444,6 +445,53 @@ BOOST_AUTO_TEST_CASE(numbers_changed_after_reading_are_read_again)
   }
 }
 
+// A motion's numbers are approximated by the reader as a solid's are, and
+// read by the interval and double models (Motion_path::build) only for
+// the numbers they were made from: a velocity and a time changed after
+// reading are read from themselves, and so is a motion whose segments
+// shift (its first segment dropped in code), where each index then holds
+// the approximation of another number.
+BOOST_AUTO_TEST_CASE(motion_numbers_changed_after_reading_are_read_again)
+{
+  Scene scene = scene_with(R"({"block":{"min":[0,0,0],"max":[1,1,1]}})", "vel 1/3 1/5 0 until 1/7 vel 1/9 0 1/11");
+  Motion& m = scene.objects[0].motion;
+  BOOST_TEST_REQUIRE(m.times_approximated.size() == 1u);
+  BOOST_TEST_REQUIRE(m.velocities_approximated.size() == 6u);
+  BOOST_TEST(m.times_approximated[0].of(m.times[0]));
+  for (std::size_t i = 0; i < 6; ++i) BOOST_TEST(m.velocities_approximated[i].of(m.velocities[i / 3][i % 3]));
+  Interval_kernel ik;
+  Double_kernel dk;
+  auto encloses = [](const CGAL::Interval_nt<false>& x, const Q& q) { return Q(x.inf()) < q && q < Q(x.sup()); };
+  auto path = [&](const Scene& s) {
+    CGAL::Protect_FPU_rounding<true> protect;
+    return Scene_model<Interval_kernel>::build(ik, s).objects[0].motion;
+  };
+  Motion_path<CGAL::Interval_nt<false>> read = path(scene);
+  BOOST_TEST(encloses(read.times[0], Q(1, 7)));
+  BOOST_TEST(encloses(read.velocity[0][0], Q(1, 3)));
+  BOOST_TEST(encloses(read.velocity[1][2], Q(1, 11)));
+
+  m.velocities[0][0] = Q(2, 3);
+  m.times[0] = Q(2, 7);
+  Motion_path<CGAL::Interval_nt<false>> changed = path(scene);
+  BOOST_TEST(encloses(changed.times[0], Q(2, 7)));
+  BOOST_TEST(encloses(changed.velocity[0][0], Q(2, 3)));
+  BOOST_TEST(encloses(changed.velocity[0][1], Q(1, 5)));   // unchanged, read from its approximation
+  Motion_path<double> rounded = Scene_model<Double_kernel>::build(dk, scene).objects[0].motion;
+  BOOST_TEST(rounded.times[0] == 2.0 / 7.0);
+  BOOST_TEST(rounded.velocity[0][0] == 2.0 / 3.0);
+
+  // The first segment dropped: velocity 0 is now (1/9, 0, 1/11), at the
+  // indices of the approximations of 2/3, 1/5 and 0.
+  m.times.clear();
+  m.velocities.erase(m.velocities.begin());
+  Motion_path<CGAL::Interval_nt<false>> shifted = path(scene);
+  BOOST_TEST_REQUIRE(shifted.velocity.size() == 1u);
+  BOOST_TEST(encloses(shifted.velocity[0][0], Q(1, 9)));
+  BOOST_TEST(encloses(shifted.velocity[0][2], Q(1, 11)));
+  BOOST_TEST(Scene_model<Double_kernel>::build(dk, scene).objects[0].motion.velocity[0][0] == 1.0 / 9.0);
+}
+
 // Corners (Primitive::corners): the points where four or more planes of a
 // primitive meet, found exactly by validation. Checked against the planes:
 // every listed plane is zero at the point, and no other plane is.
@@ -465,9 +513,10 @@ BOOST_AUTO_TEST_CASE(square_pyramid_has_its_apex_as_a_corner)
   auto m = model_of(R"({"hull":[[0,0,0],[2,0,0],[2,2,0],[0,2,0],["1/3","1","5/7"]]})");
   const auto& p = m.primitives[0];
   BOOST_TEST(p.planes.size() == 5u);
-  BOOST_TEST_REQUIRE(p.corners.size() == 1u);
-  BOOST_TEST(p.corners[0].size() == 4u);
-  check_corner(p, p.corners[0]);
+  BOOST_TEST_REQUIRE(p.corners);
+  BOOST_TEST_REQUIRE(p.corners->size() == 1u);
+  BOOST_TEST((*p.corners)[0].size() == 4u);
+  check_corner(p, (*p.corners)[0]);
 }
 
 BOOST_AUTO_TEST_CASE(octahedron_has_six_corners)
@@ -480,11 +529,34 @@ BOOST_AUTO_TEST_CASE(octahedron_has_six_corners)
                   std::to_string(c) + ",-1]";
   auto m = model_of("{\"convex\":[" + planes + "]}");
   const auto& p = m.primitives[0];
-  BOOST_TEST_REQUIRE(p.corners.size() == 6u);
-  for (const auto& c : p.corners) check_corner(p, c);
+  BOOST_TEST_REQUIRE(p.corners);
+  BOOST_TEST_REQUIRE(p.corners->size() == 6u);
+  for (const auto& c : *p.corners) check_corner(p, c);
   // A block has none: three planes at each of its corners.
-  BOOST_TEST(model_of(R"({"hull":[[0,0,0],[1,0,0],[0,1,0],[1,1,0],[0,0,1],[1,0,1],[0,1,1],[1,1,1]]})")
-                 .primitives[0].corners.empty());
+  BOOST_TEST(!model_of(R"({"hull":[[0,0,0],[1,0,0],[0,1,0],[1,1,0],[0,0,1],[1,0,1],[0,1,1],[1,1,1]]})")
+                  .primitives[0]
+                  .corners);
+}
+
+// A solid's corners are made once, by the reader, and every model of it
+// (one per check and kernel) holds them: the same corners, not a copy,
+// moved with the solid (a translated and a rotated pyramid).
+BOOST_AUTO_TEST_CASE(models_share_the_solids_corners)
+{
+  const std::string pyramid = R"({"hull":[[0,0,0],[2,0,0],[2,2,0],[0,2,0],["1/3","1","5/7"]]})";
+  Scene scene = scene_with(R"({"rotate":[1,1,0,0],"solid":{"translate":["1/3",0,0],"solid":)" + pyramid + "}}");
+  const Solid& hull = scene.objects[0].shape.children[0].children[0];
+  BOOST_TEST_REQUIRE(hull.corners);
+  Rational_kernel rk;
+  Interval_kernel ik;
+  Double_kernel dk;
+  Scene_model<Rational_kernel> model = Scene_model<Rational_kernel>::build(rk, scene);
+  const Primitive<Q>& exact = model.objects[0].csg.primitives[0];
+  BOOST_TEST(exact.corners == hull.corners);   // the same object
+  check_corner(exact, (*exact.corners)[0]);     // and the moved planes still meet there
+  CGAL::Protect_FPU_rounding<true> protect;
+  BOOST_TEST(Scene_model<Interval_kernel>::build(ik, scene).objects[0].csg.primitives[0].corners == hull.corners);
+  BOOST_TEST(Scene_model<Double_kernel>::build(dk, scene).objects[0].csg.primitives[0].corners == hull.corners);
 }
 
 // A table entry made alone (Extrusion::pair_entry, what a filter's
