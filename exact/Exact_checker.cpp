@@ -59,7 +59,14 @@ struct Exact_checker::Impl {
     std::vector<int> changed;
     for (std::size_t i = 0; i < moved->objects.size(); ++i)
       if (!same_motion(moved->objects[i].motion, motion(i))) {
-        moved->objects[i].motion = motion(i);
+        // The numbers only: a query's motion is a few numbers, converted
+        // (Motion_path::build) for less than a copy of their approximations
+        // costs (numbers/Approximation.h).
+        Motion& to = moved->objects[i].motion;
+        to.times = motion(i).times;
+        to.velocities = motion(i).velocities;
+        to.times_approximated.clear();
+        to.velocities_approximated.clear();
         changed.push_back(static_cast<int>(i));
       }
     if (changed.empty()) return;
