@@ -82,6 +82,7 @@
 #include <tuple>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace clash4d {
 
@@ -146,6 +147,13 @@ typename K::FT read_number(const K& k, const Rational& q, const Approximation* a
   if constexpr (reads_approximations_v<K>)
     if (a && a->of(q)) return k.from_approximation(*a);
   return k.from_rational(q);
+}
+// The same with a's i-th approximation, where a holds one (a solid's or a
+// motion's, made for its numbers in order).
+template <class K>
+typename K::FT read_number(const K& k, const Rational& q, const std::vector<Approximation>& a, std::size_t i)
+{
+  return read_number(k, q, i < a.size() ? &a[i] : nullptr);
 }
 
 } // namespace clash4d

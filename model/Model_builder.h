@@ -119,7 +119,7 @@ private:
   // makes, without converting again), else converted.
   FT converted(const std::vector<Rational>& numbers, const std::vector<Approximation>& a, std::size_t i) const
   {
-    return read_number(k_, numbers[i], i < a.size() ? &a[i] : nullptr);
+    return read_number(k_, numbers[i], a, i);
   }
 
   // -1, 0 or 1 (v): in rationals copies of numbers made once (a number

@@ -26,14 +26,17 @@ struct Motion_path {
     // tenth of its making.
     Motion_path p;
     p.times.reserve(m.times.size());
-    for (std::size_t i = 0; i < m.times.size(); ++i) p.times.push_back(number(k, m.times[i], m.times_approximated, i));
+    // Each number from the reader's approximation of it where K reads
+    // them (read_number: the same number, not converted again).
+    for (std::size_t i = 0; i < m.times.size(); ++i) p.times.push_back(read_number(k, m.times[i], m.times_approximated, i));
     if (!m.times.empty()) p.exact_times = m.times;
     std::size_t n = m.velocities.size();
     p.velocity.reserve(n);
     const std::vector<Approximation>& va = m.velocities_approximated;
     for (std::size_t i = 0; i < n; ++i) {
       const std::array<Rational, 3>& v = m.velocities[i];
-      p.velocity.push_back({number(k, v[0], va, 3 * i), number(k, v[1], va, 3 * i + 1), number(k, v[2], va, 3 * i + 2)});
+      p.velocity.push_back(
+          {read_number(k, v[0], va, 3 * i), read_number(k, v[1], va, 3 * i + 1), read_number(k, v[2], va, 3 * i + 2)});
     }
     p.offset.assign(n, Vector3<FT>{FT(0), FT(0), FT(0)});
     // The segment holding t = 0 has offset 0; continuity at each breakpoint T
@@ -47,14 +50,6 @@ struct Motion_path {
       for (int a = 0; a < 3; ++a)
         p.offset[i - 1][a] = p.offset[i][a] + (p.velocity[i][a] - p.velocity[i - 1][a]) * p.times[i - 1];
     return p;
-  }
-
-  // Scene number q, a's i-th approximation where K reads them and it is
-  // q's (read_number: the same number, not converted again).
-  template <class K>
-  static FT number(const K& k, const Rational& q, const std::vector<Approximation>& a, std::size_t i)
-  {
-    return read_number(k, q, i < a.size() ? &a[i] : nullptr);
   }
 
   // The segment whose closed interval holds t (the later one at a

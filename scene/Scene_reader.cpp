@@ -161,7 +161,7 @@ void read_convex(const Json_value& v, Solid& s, const std::string& path)
   if (!problem.empty()) throw Input_error(path, problem);
   Polytope_combinatorics c = convex_vertex_triples(planes);
   s.triples = c.triples;
-  if (!c.corners.empty()) s.corners = std::make_shared<const Corners>(std::move(c.corners));
+  s.corners = c.corners.empty() ? nullptr : std::make_shared<const Corners>(std::move(c.corners));
   for (const auto& t : s.triples) {
     Rational3 v = vertex_of(planes[t[0]], planes[t[1]], planes[t[2]]);
     s.constructed.insert(s.constructed.end(), v.begin(), v.end());
