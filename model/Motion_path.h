@@ -28,7 +28,8 @@ struct Motion_path {
     p.times.reserve(m.times.size());
     // Each number from the reader's approximation of it where K reads
     // them (read_number: the same number, not converted again).
-    for (std::size_t i = 0; i < m.times.size(); ++i) p.times.push_back(read_number(k, m.times[i], m.times_approximated, i));
+    for (std::size_t i = 0; i < m.times.size(); ++i)
+      p.times.push_back(read_number(k, m.times[i], m.times_approximated, i));
     if (!m.times.empty()) p.exact_times = m.times;
     std::size_t n = m.velocities.size();
     p.velocity.reserve(n);

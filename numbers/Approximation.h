@@ -1,10 +1,11 @@
 // A scene number's approximations, made once when the scene is read
 // (approximate_numbers in scene/Scene.h, called by read_scene; read by
-// read_number, geometry/Kernel_concept.h): the
-// tightest interval of doubles around it and its nearest double. A check converts every number of the scene to
-// its kernel (Model_builder), the interval run and the convex pairs' guide
-// each (an exact hull's plane coefficients are rationals of many digits):
-// a hull-hull pair's check spent a fifth of its instructions converting.
+// read_number, geometry/Kernel_concept.h): the tightest interval of
+// doubles around it and its nearest double. A check converts every number
+// of the scene to its kernel (Model_builder), the interval run and the
+// convex pairs' guide each (an exact hull's plane coefficients are
+// rationals of many digits): a hull-hull pair's check spent a fifth of its
+// instructions converting.
 // Each approximation holds the number it was made from, and is read only
 // for that very number (the same GMP value, not an equal one), so a scene
 // whose numbers are changed after reading (the shrinker, tests) reads
