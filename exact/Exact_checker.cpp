@@ -39,6 +39,7 @@ struct Exact_checker::Impl {
   const Scene& scene;
   std::unique_ptr<Scene> moved;
   std::unique_ptr<Filtered_exact> runner[2];
+  std::vector<int> changed;   // move_to's, kept: a query allocates none
 
   Check_answer check(const Check_options& options)
   {
@@ -56,7 +57,7 @@ struct Exact_checker::Impl {
       moved = std::make_unique<Scene>(scene);
       for (auto& r : runner) r.reset();   // they read the scene itself
     }
-    std::vector<int> changed;
+    changed.clear();
     for (std::size_t i = 0; i < moved->objects.size(); ++i)
       if (!same_motion(moved->objects[i].motion, motion(i))) {
         // The numbers only: a query's motion is a few numbers, converted
@@ -80,7 +81,7 @@ struct Exact_checker::Impl {
   }
 };
 
-Exact_checker::Exact_checker(const Scene& scene) : impl_(new Impl{scene, nullptr, {}}) {}
+Exact_checker::Exact_checker(const Scene& scene) : impl_(new Impl{scene, nullptr, {}, {}}) {}
 Exact_checker::~Exact_checker() = default;
 
 Check_answer Exact_checker::check(const Check_options& options)

@@ -138,7 +138,7 @@ public:
     }
     try {
       Protector protect;
-      for (int i : changed) amodel_.objects[i].motion = Motion_path<AFT>::build(ak_, scene_.objects[i].motion);
+      for (int i : changed) amodel_.objects[i].motion.rebuild(ak_, scene_.objects[i].motion);
       amodel_.far_exponent = emodel_.far_exponent = far_exponent(scene_);
     } catch (const CGAL::Uncertain_conversion_exception&) {
       model_ = Prepared();

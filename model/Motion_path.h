@@ -21,36 +21,48 @@ struct Motion_path {
   template <class K>
   static Motion_path build(const K& k, const Motion& m)
   {
-    // Each vector sized once: a path is made per object in every check (and
-    // per moved object of a prepared scene's), where growing them was a
-    // tenth of its making.
     Motion_path p;
-    p.times.reserve(m.times.size());
+    p.rebuild(k, m);
+    return p;
+  }
+
+  // This path made again for m, in place: the same numbers as build's, in
+  // the vectors' own storage (a prepared scene's moved object, made again
+  // per query, allocates nothing once its segments fit). Each vector sized
+  // once: growing them was a tenth of a path's making.
+  template <class K>
+  void rebuild(const K& k, const Motion& m)
+  {
+    times.clear();
+    times.reserve(m.times.size());
     // Each number from the reader's approximation of it where K reads
     // them (read_number: the same number, not converted again).
     for (std::size_t i = 0; i < m.times.size(); ++i)
-      p.times.push_back(read_number(k, m.times[i], m.times_approximated, i));
-    if (!m.times.empty()) p.exact_times = m.times;
+      times.push_back(read_number(k, m.times[i], m.times_approximated, i));
+    if (m.times.empty())
+      exact_times.clear();   // most paths: one segment (no assign's work)
+    else
+      exact_times.assign(m.times.begin(), m.times.end());
     std::size_t n = m.velocities.size();
-    p.velocity.reserve(n);
+    velocity.clear();
+    velocity.reserve(n);
     const std::vector<Approximation>& va = m.velocities_approximated;
     for (std::size_t i = 0; i < n; ++i) {
       const std::array<Rational, 3>& v = m.velocities[i];
-      p.velocity.push_back(
+      velocity.push_back(
           {read_number(k, v[0], va, 3 * i), read_number(k, v[1], va, 3 * i + 1), read_number(k, v[2], va, 3 * i + 2)});
     }
-    p.offset.assign(n, Vector3<FT>{FT(0), FT(0), FT(0)});
+    offset.assign(n, Vector3<FT>{FT(0), FT(0), FT(0)});
     // The segment holding t = 0 has offset 0; continuity at each breakpoint T
     // (v_i T + c_i = v_j T + c_j) fixes the others outward from it.
     std::size_t zero = 0;
-    while (zero < p.times.size() && k.sign(p.times[zero]) == CGAL::NEGATIVE) ++zero;
+    while (zero < times.size() && k.sign(times[zero]) == CGAL::NEGATIVE) ++zero;
     for (std::size_t i = zero; i + 1 < n; ++i)
       for (int a = 0; a < 3; ++a)
-        p.offset[i + 1][a] = p.offset[i][a] + (p.velocity[i][a] - p.velocity[i + 1][a]) * p.times[i];
+        offset[i + 1][a] = offset[i][a] + (velocity[i][a] - velocity[i + 1][a]) * times[i];
     for (std::size_t i = zero; i > 0; --i)
       for (int a = 0; a < 3; ++a)
-        p.offset[i - 1][a] = p.offset[i][a] + (p.velocity[i][a] - p.velocity[i - 1][a]) * p.times[i - 1];
-    return p;
+        offset[i - 1][a] = offset[i][a] + (velocity[i][a] - velocity[i - 1][a]) * times[i - 1];
   }
 
   // The segment whose closed interval holds t (the later one at a

@@ -96,9 +96,12 @@ private:
   Spans spans_of(const int* first, const int* last) const
   {
     Spans spans;   // the one object returned (no move of its inline spans)
-    bool still = true;   // no velocity change at all: the whole span (most pairs)
-    for (const int* i = first; i != last; ++i) still = still && objects[*i].motion.times.empty();
-    if (still && exact_span) {
+    // No velocity change inside the span: the whole span (most pairs; a
+    // moved object's breakpoints past tH too), what the general path below
+    // makes of it, without sorting.
+    bool still = exact_span;
+    for (const int* i = first; still && i != last; ++i) still = none_inside(objects[*i].motion);
+    if (still) {
       spans.push_back({t_lo, t_hi, lo_on_grid, hi_on_grid, &exact_t_lo, &exact_t_hi});
       return spans;
     }
@@ -119,6 +122,18 @@ private:
       spans.push_back({exact[i].second, exact[i + 1].second, on_grid(*exact[i].first), on_grid(*exact[i + 1].first),
                        exact[i].first, exact[i + 1].first});
     return spans;
+  }
+
+  // Whether no breakpoint of m lies strictly inside (tL, tH), on the
+  // scene's rationals (a path without them goes the general way, which
+  // refuses it).
+  bool none_inside(const Motion_path<FT>& m) const
+  {
+    if (m.times.empty()) return true;
+    if (m.exact_times.size() != m.times.size()) return false;
+    for (const Rational& t : m.exact_times)
+      if (exact_t_lo < t && t < exact_t_hi) return false;
+    return true;
   }
 
 public:

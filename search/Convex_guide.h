@@ -53,7 +53,7 @@ struct Convex_guide {
   void set_motion(const Motion& m)
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-    motion = Motion_path<double>::build(Guide_numbers(), m);
+    motion.rebuild(Guide_numbers(), m);
   }
 
   // A point strictly inside the primitive, in doubles: its vertices' mean

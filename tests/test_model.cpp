@@ -492,6 +492,64 @@ BOOST_AUTO_TEST_CASE(motion_numbers_changed_after_reading_are_read_again)
   BOOST_TEST(Scene_model<Double_kernel>::build(dk, scene).objects[0].motion.velocity[0][0] == 1.0 / 9.0);
 }
 
+// A path made again in place (Motion_path::rebuild, a prepared scene's
+// moved object) holds what a new one holds, whatever it held before: more
+// segments, fewer, negative times (offsets made outward from t = 0).
+BOOST_AUTO_TEST_CASE(a_rebuilt_motion_path_is_a_new_one)
+{
+  const char* motions[] = {"vel 1/3 1/5 0 until -2 vel 1/9 0 1/11 until 7/2 vel 0 -1 2", "vel 3 0 -1/7", "rest",
+                           "vel 1 2 3 until 5 vel -1/2 0 0"};
+  Rational_kernel rk;
+  Double_kernel dk;
+  Motion_path<Q> exact;
+  Motion_path<double> rounded;
+  for (const char* text : motions) {
+    Scene scene = scene_with(R"({"block":{"min":[0,0,0],"max":[1,1,1]}})", text);
+    const Motion& m = scene.objects[0].motion;
+    exact.rebuild(rk, m);
+    rounded.rebuild(dk, m);
+    Motion_path<Q> e = Motion_path<Q>::build(rk, m);
+    Motion_path<double> d = Motion_path<double>::build(dk, m);
+    BOOST_TEST((exact.times == e.times && exact.exact_times == e.exact_times), text);
+    BOOST_TEST((exact.velocity == e.velocity && exact.offset == e.offset), text);
+    BOOST_TEST((rounded.times == d.times && rounded.exact_times == d.exact_times), text);
+    BOOST_TEST((rounded.velocity == d.velocity && rounded.offset == d.offset), text);
+    BOOST_TEST(exact.velocity.size() == m.velocities.size(), text);
+  }
+}
+
+// [tL, tH] is split at the breakpoints strictly inside it only: a motion
+// whose velocity changes before tL, at tH or after it has the whole span,
+// its ends the scene's own numbers; one inside splits it there, and the
+// end's grid flag is its own (1/3 is no double).
+BOOST_AUTO_TEST_CASE(sub_spans_split_only_at_breakpoints_inside_the_span)
+{
+  const std::string block = R"({"block":{"min":[0,0,0],"max":[1,1,1]}})";
+  auto check_kernel = [&](const auto& k) {
+    using K = std::decay_t<decltype(k)>;
+    for (const char* outside : {"vel 1 0 0 until -2 vel 0 1 0 until 12 vel 0 0 1", "vel 1 0 0 until 10 vel 0 1 0",
+                                "vel 1 0 0 until 0 vel 0 1 0", "rest"}) {
+      Scene scene = scene_with(block, outside);
+      Scene_model<K> model = Scene_model<K>::build(k, scene);
+      for (const auto& spans : {model.sub_spans({0}), model.sub_spans({0, 1})}) {
+        BOOST_TEST_REQUIRE(spans.size() == 1u, outside);
+        BOOST_TEST((spans[0].exact_lo == &model.exact_t_lo && spans[0].exact_hi == &model.exact_t_hi), outside);
+        BOOST_TEST((spans[0].lo_on_grid && spans[0].hi_on_grid), outside);
+      }
+    }
+    Scene scene = scene_with(block, "vel 1 0 0 until -2 vel 0 1 0 until 1/3 vel 0 0 1 until 12 vel 1 1 1");
+    Scene_model<K> model = Scene_model<K>::build(k, scene);
+    auto spans = model.sub_spans({1, 0});
+    BOOST_TEST_REQUIRE(spans.size() == 2u);
+    BOOST_TEST((*spans[0].exact_lo == Q(0) && *spans[0].exact_hi == Q(1, 3)));
+    BOOST_TEST((*spans[1].exact_lo == Q(1, 3) && *spans[1].exact_hi == Q(10)));
+    BOOST_TEST((spans[0].lo_on_grid && !spans[0].hi_on_grid && !spans[1].lo_on_grid && spans[1].hi_on_grid));
+  };
+  check_kernel(Rational_kernel());
+  CGAL::Protect_FPU_rounding<true> protect;
+  check_kernel(Interval_kernel());
+}
+
 // Corners (Primitive::corners): the points where four or more planes of a
 // primitive meet, found exactly by validation. Checked against the planes:
 // every listed plane is zero at the point, and no other plane is.
