@@ -29,7 +29,10 @@ struct Motion_path {
   // This path made again for m, in place: the same numbers as build's, in
   // the vectors' own storage (a prepared scene's moved object, made again
   // per query, allocates nothing once its segments fit). Each vector sized
-  // once: growing them was a tenth of a path's making.
+  // once: growing them was a tenth of a path's making. A throw (a sign the
+  // kernel cannot certify) leaves it part made: its holder makes it again
+  // (Filtered_runner::motions_changed drops the model, Exact_checker the
+  // runners).
   template <class K>
   void rebuild(const K& k, const Motion& m)
   {
