@@ -8,6 +8,7 @@
 #include "check/Pair_skeleton.h"
 #include "check/Pair_sweep.h"
 #include "numbers/Number_ops.h"
+#include <boost/container/small_vector.hpp>
 #include <atomic>
 #include <mutex>
 #include <optional>
@@ -109,8 +110,11 @@ void run_pairs(const K& k, const std::vector<std::pair<int, int>>& pairs, const 
 {
   using FT = typename K::FT;
   using Result = std::decay_t<std::invoke_result_t<Check_one&, std::size_t, const FT*, Semantics, Check_stats&>>;
-  std::vector<Result> results(pairs.size());
-  std::vector<Check_stats> stats(pairs.size(), answer.stats.fresh());
+  // One pair (the common query) inline: no allocation for either. Each
+  // pair's stats fresh (answer.stats.fresh()), made in place.
+  boost::container::small_vector<Result, 1> results(pairs.size());
+  boost::container::small_vector<Check_stats, 1> stats(pairs.size());
+  for (Check_stats& s : stats) s.timed = answer.stats.timed;
   std::atomic<std::size_t> first_hit{pairs.size()};      // any-collision mode: lowest colliding index
   // The least t* found so far (--earliest): none until one is, and no
   // number made without --earliest (a rational is an allocation).
@@ -174,24 +178,32 @@ void run_pairs(const K& k, const std::vector<std::pair<int, int>>& pairs, const 
   }
 }
 
-// Object pairs the sweep keeps (§6), with the sweep's counts and time.
+// Object pairs the sweep keeps (§6), written into pairs (certain: see
+// Pair_sweep::candidates), with the sweep's counts and time. Each object's
+// root is its settled S-bounds' first box, read in place.
 template <class K>
-std::vector<std::pair<int, int>> candidate_pairs(const K& k, const Scene_model<K>& model,
-                                                 const std::vector<typename S_bounds<K>::Bounds>& settled,
-                                                 const Scene& scene, Check_stats& stats,
-                                                 Semantics semantics = Semantics::regularised,
-                                                 std::vector<char>* certain = nullptr)
+void candidate_pairs(const K& k, const Scene_model<K>& model,
+                     const std::vector<typename S_bounds<K>::Bounds>& settled, const Scene& scene,
+                     Check_stats& stats, Semantics semantics, std::vector<std::pair<int, int>>& pairs,
+                     std::vector<char>* certain = nullptr)
 {
   Stage_clock clock(stats.timed);
-  std::vector<Box<typename K::FT, 3>> roots;
-  roots.reserve(settled.size());
-  for (const auto& b : settled) roots.push_back(b[0]);
-  std::vector<std::pair<int, int>> pairs =
-      Pair_sweep<K>(k, semantics == Semantics::closed).candidates(model, roots, scene, certain);
+  Pair_sweep<K>(k, semantics == Semantics::closed)
+      .candidates_into(model, [&](std::size_t i) -> const auto& { return settled[i][0]; }, scene, pairs, certain);
   std::size_t n = model.objects.size();
   stats.object_pairs = n * (n - 1) / 2 - scene.ignore.size();
   stats.candidate_pairs = pairs.size();
   stats.seconds_sweep = clock.seconds();
+}
+// The same, returned.
+template <class K>
+std::vector<std::pair<int, int>> candidate_pairs(const K& k, const Scene_model<K>& model,
+                                                 const std::vector<typename S_bounds<K>::Bounds>& settled,
+                                                 const Scene& scene, Check_stats& stats,
+                                                 Semantics semantics = Semantics::regularised)
+{
+  std::vector<std::pair<int, int>> pairs;
+  candidate_pairs(k, model, settled, scene, stats, semantics, pairs);
   return pairs;
 }
 

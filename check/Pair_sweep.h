@@ -44,9 +44,21 @@ public:
   std::vector<std::pair<int, int>> candidates(const Scene_model<K>& model, const std::vector<Box<FT, 3>>& roots,
                                               const Scene& scene, std::vector<char>* certain = nullptr) const
   {
+    std::vector<std::pair<int, int>> out;
+    candidates_into(model, [&](std::size_t i) -> const Box<FT, 3>& { return roots[i]; }, scene, out, certain);
+    return out;
+  }
+
+  // The same, object i's root read as root_of(i), written into out (and
+  // certain): a prepared scene's sweep, made again on every query with new
+  // motions, keeps their storage and copies no root.
+  template <class Root_of>
+  void candidates_into(const Scene_model<K>& model, Root_of root_of, const Scene& scene,
+                       std::vector<std::pair<int, int>>& out, std::vector<char>* certain = nullptr) const
+  {
     Items items;
     items.reserve(model.objects.size());   // one box per object and motion segment: most objects have one
-    for (std::size_t i = 0; i < model.objects.size(); ++i) add_boxes(model, static_cast<int>(i), roots[i], items);
+    for (std::size_t i = 0; i < model.objects.size(); ++i) add_boxes(model, static_cast<int>(i), root_of(i), items);
     boost::container::small_vector<std::pair<std::pair<int, int>, bool>, 4> found;   // a pair, per meeting boxes: certainly?
     auto report = [&](const Item& x, const Item& y) {
       if (x.object == y.object || !overlaps(x.box, y.box)) return;
@@ -65,7 +77,7 @@ public:
       });
     }
     std::sort(found.begin(), found.end());
-    std::vector<std::pair<int, int>> out;
+    out.clear();
     if (certain) certain->clear();
     for (const auto& [pair, sure] : found) {   // sorted: a pair's certain report last
       if (out.empty() || out.back() != pair) {
@@ -74,7 +86,6 @@ public:
       }
       if (certain && sure) certain->back() = 1;
     }
-    return out;
   }
 
   // The sweep's test on one pair: whether some box of i meets some box of j.

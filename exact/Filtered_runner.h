@@ -124,7 +124,7 @@ public:
   void motions_changed(const std::vector<int>& changed)
   {
     if (!reusable_) throw std::logic_error("Filtered_runner::motions_changed: not made reusable");
-    for (Prepared& sweep : sweeps_) sweep = Prepared();
+    for (Prepared& sweep : sweeps_) sweep.done = false;   // made again by the next check, into the same storage
     for (int i : changed) {
       made_[i].moved.reset();
       if (!made_[i].guide) continue;
@@ -498,14 +498,21 @@ private:
   Scene_model<AK> amodel_;
   std::vector<typename S_bounds<AK>::Bounds> asettled_;
   std::vector<char> exact_only_;              // AK could not bound the object: its pairs go to EK
-  // What prepare made: AK's model and S-bounds; the sweep's pairs per
-  // semantics (regularised, closed). With the stats of their making.
+  // What prepare made: AK's model and S-bounds, with the stats of their
+  // making; the sweep's pairs per semantics (regularised, closed), with
+  // the counts the sweep sets (all of the stats it changes: sweep_pairs), so
+  // that a sweep made again per query (other motions) copies no stats.
+  struct Sweep_counts {
+    std::size_t object_pairs = 0, candidate_pairs = 0, exact_sweep_ties = 0;
+  };
   struct Prepared {
     bool done = false, ok = false;
     std::vector<std::pair<int, int>> pairs;
-    std::optional<Check_stats> stats;
+    std::optional<Check_stats> stats;   // the model's
+    Sweep_counts counts;                // a sweep's
   };
   Prepared model_, sweeps_[2];
+  std::vector<char> sweep_certain_;           // the intervals' sweep's, per pair (drop_apart_ties)
   Scene_model<EK> emodel_;                    // objects built on demand
   std::vector<typename S_bounds<EK>::Bounds> esettled_;
   std::vector<Object_model<EFT>> ebounds_;   // boxes-only trees (need_bounds)
@@ -633,38 +640,36 @@ private:
       ++fallbacks_;
       return false;
     }
-    bool timed = stats.timed;
     Prepared& sweep = sweeps_[semantics == Semantics::closed ? 1 : 0];
     if (!model_.done) {
       model_.ok = build_model(stats);
       model_.done = true;
-      keep(model_, stats);
-    } else if (!sweep.done) {
-      stats = reused(model_, timed);   // (a reused sweep's stats hold the model's)
+      if (reusable_) model_.stats = stats;   // (a single check's runner copies nothing)
+    } else {
+      reuse_model(stats);
     }
     if (!model_.ok) return false;
     if (!sweep.done) {
       sweep_pairs(stats, sweep.pairs, semantics);
       sweep.done = true;
-      keep(sweep, stats);
+      sweep.counts = {stats.object_pairs, stats.candidate_pairs, stats.exact_sweep_ties};
     } else {
-      stats = reused(sweep, timed);
+      stats.object_pairs = sweep.counts.object_pairs;
+      stats.candidate_pairs = sweep.counts.candidate_pairs;
+      stats.exact_sweep_ties = sweep.counts.exact_sweep_ties;
     }
     pairs = &sweep.pairs;
     return true;
   }
-  // The stats of a part just made, kept when the runner is reusable (a
-  // single check's runner copies nothing).
-  void keep(Prepared& part, const Check_stats& stats) const
+  // A reused model's counts in stats, with no time (a later check of a
+  // prepared scene), copied in place.
+  void reuse_model(Check_stats& stats) const
   {
-    if (reusable_) part.stats = stats;
-  }
-  Check_stats reused(const Prepared& part, bool timed) const
-  {
-    if (!part.stats) throw std::logic_error("Filtered_runner: checked again, but not made reusable");
-    Check_stats s = part.stats->untimed();
-    s.timed = timed;
-    return s;
+    if (!model_.stats) throw std::logic_error("Filtered_runner: checked again, but not made reusable");
+    bool timed = stats.timed;
+    stats = *model_.stats;
+    stats.clear_seconds();
+    stats.timed = timed;
   }
   bool build_model(Check_stats& stats)
   {
@@ -687,18 +692,17 @@ private:
   }
   void sweep_pairs(Check_stats& stats, std::vector<std::pair<int, int>>& pairs, Semantics semantics)
   {
-    std::vector<char> certain;
     try {
       Protector protect;
-      pairs = candidate_pairs(ak_, amodel_, asettled_, scene_, stats, semantics, &certain);
+      candidate_pairs(ak_, amodel_, asettled_, scene_, stats, semantics, pairs, &sweep_certain_);
     } catch (const CGAL::Uncertain_conversion_exception&) {
       // The sweep could not order some motion times: sweep in EK instead.
       ++fallbacks_;
       for (std::size_t i = 0; i < scene_.objects.size(); ++i) need_exact(static_cast<int>(i));
-      pairs = candidate_pairs(ek_, emodel_, esettled_, scene_, stats, semantics);
+      candidate_pairs(ek_, emodel_, esettled_, scene_, stats, semantics, pairs);
       return;
     }
-    drop_apart_ties(pairs, certain, stats, semantics);
+    drop_apart_ties(pairs, sweep_certain_, stats, semantics);
   }
 
   // The pairs the intervals' sweep kept only because their boxes might

@@ -126,14 +126,9 @@ struct Check_stats {
     return s;
   }
 
-  // The same counts, with no time: a part made before and reused
-  // (a prepared scene's model and sweep, exact/Filtered_runner.h).
-  Check_stats untimed() const
-  {
-    Check_stats s = *this;
-    s.seconds_sweep = s.seconds_model = s.seconds_sbounds = s.seconds_divide = s.seconds_witness = 0;
-    return s;
-  }
+  // The same counts with no time: a part made before and reused (a
+  // prepared scene's model, exact/Filtered_runner.h).
+  void clear_seconds() { seconds_sweep = seconds_model = seconds_sbounds = seconds_divide = seconds_witness = 0; }
 
   // Adds another run's counts (pairs checked in parallel, merged in order).
   void add(const Check_stats& o)

@@ -308,6 +308,14 @@ static void sweeps_agree(const K& k, const Scene& scene, const std::string& wher
     auto tested = Pair_sweep<K>(k, closed, 1000).candidates(model, roots, scene, &tested_sure);
     BOOST_TEST((swept == tested), where << (closed ? " closed" : ""));
     BOOST_TEST((swept_sure == tested_sure), where << (closed ? " closed" : ""));
+    // Into storage another sweep left filled (a prepared scene's, swept
+    // again per query): the same pairs and certainties, nothing kept.
+    std::vector<std::pair<int, int>> into{{7, 9}, {0, 1}, {2, 5}, {0, 2}};
+    std::vector<char> into_sure(5, 1);
+    Pair_sweep<K>(k, closed, 0)
+        .candidates_into(model, [&](std::size_t i) -> const auto& { return roots[i]; }, scene, into, &into_sure);
+    BOOST_TEST((into == swept), where << (closed ? " closed" : "") << " into used storage");
+    BOOST_TEST((into_sure == swept_sure), where << (closed ? " closed" : "") << " into used storage");
   }
 }
 
