@@ -188,13 +188,17 @@ BOOST_DATA_TEST_CASE(fixture_answers_match_rational, data::make(fixture_scenes()
 
 namespace {
 
-// The counts a prepared scene reuses or makes again per query (its model's
-// and its sweep's) are a fresh check's.
-void same_counts(const Check_stats& kept, const Check_stats& fresh, const std::string& label)
+// The counts a prepared scene reuses or makes again per query (its
+// sweep's) are a fresh check's; so are those the model and the pairs add
+// (sbound_passes, primitives) when every candidate pair is checked whole:
+// --all-pairs, or one pair. (Otherwise pairs run in parallel, and one after
+// the first collision may or may not start: those counts vary by run.)
+void same_counts(const Check_stats& kept, const Check_stats& fresh, bool all_pairs, const std::string& label)
 {
   BOOST_TEST(kept.object_pairs == fresh.object_pairs, label);
   BOOST_TEST(kept.candidate_pairs == fresh.candidate_pairs, label);
   BOOST_TEST(kept.exact_sweep_ties == fresh.exact_sweep_ties, label);
+  if (!all_pairs && fresh.candidate_pairs > 1) return;
   BOOST_TEST(kept.pairs == fresh.pairs, label);
   BOOST_TEST(kept.sbound_passes == fresh.sbound_passes, label);
   BOOST_TEST(kept.primitives == fresh.primitives, label);
@@ -229,7 +233,8 @@ BOOST_DATA_TEST_CASE(prepared_checks_are_check_exact, data::make(fixture_scenes(
                                 << (o.all_pairs ? " --all-pairs" : "") << (o.sbounds ? "" : " --no-sbounds")
                                 << " --semantics " << semantics_name(o.semantics) << "\nprepared: " << k
                                 << "\nfresh: " << f);
-      same_counts(kept.stats, fresh.stats, entry);
+      BOOST_TEST(kept.stats.pairs == fresh.stats.pairs, entry);
+      same_counts(kept.stats, fresh.stats, o.all_pairs, entry);
       if (round == 1) BOOST_TEST(kept.stats.seconds_model == 0.0, entry);
     }
 }
@@ -308,7 +313,7 @@ BOOST_DATA_TEST_CASE(moved_checks_are_check_exact, data::make(fixture_scenes()),
       std::string label = entry + " (seed " + std::to_string(seed) + ") motion set " + std::to_string(m) +
                           (o.earliest ? " --earliest" : "") + " --semantics " + semantics_name(o.semantics);
       BOOST_TEST(describe(kept) == describe(fresh), label << "\nprepared: " << describe(kept) << "\nfresh: " << describe(fresh));
-      same_counts(kept.stats, fresh.stats, label);
+      same_counts(kept.stats, fresh.stats, o.all_pairs, label);
       if (m == 1) {
         BOOST_TEST(fresh.collide == own[k].collide, label);
         if (o.earliest && fresh.collide && own[k].collide)
