@@ -124,7 +124,7 @@ public:
   void motions_changed(const std::vector<int>& changed)
   {
     if (!reusable_) throw std::logic_error("Filtered_runner::motions_changed: not made reusable");
-    for (Prepared& sweep : sweeps_) sweep.done = false;   // made again by the next check, into the same storage
+    for (Prepared_sweep& sweep : sweeps_) sweep.done = false;   // made again by the next check, into the same storage
     for (int i : changed) {
       made_[i].moved.reset();
       if (!made_[i].guide) continue;
@@ -133,7 +133,7 @@ public:
       made_[i].guide->set_motion(scene_.objects[i].motion);
     }
     if (!model_.done || !model_.ok) {
-      model_ = Prepared();   // made whole by the next check
+      model_ = Prepared_model();   // made whole by the next check
       return;
     }
     try {
@@ -141,7 +141,7 @@ public:
       for (int i : changed) amodel_.objects[i].motion.rebuild(ak_, scene_.objects[i].motion);
       amodel_.far_exponent = emodel_.far_exponent = far_exponent(scene_);
     } catch (const CGAL::Uncertain_conversion_exception&) {
-      model_ = Prepared();
+      model_ = Prepared_model();
     }
   }
 
@@ -500,18 +500,19 @@ private:
   std::vector<char> exact_only_;              // AK could not bound the object: its pairs go to EK
   // What prepare made: AK's model and S-bounds, with the stats of their
   // making; the sweep's pairs per semantics (regularised, closed), with
-  // the counts the sweep sets (all of the stats it changes: sweep_pairs), so
-  // that a sweep made again per query (other motions) copies no stats.
-  struct Sweep_counts {
+  // the counts the sweep sets (all of the stats it changes: sweep_pairs),
+  // so that a sweep made again per query (other motions) copies no stats.
+  struct Prepared_model {
+    bool done = false, ok = false;
+    std::optional<Check_stats> stats;
+  };
+  struct Prepared_sweep {
+    bool done = false;
+    std::vector<std::pair<int, int>> pairs;
     std::size_t object_pairs = 0, candidate_pairs = 0, exact_sweep_ties = 0;
   };
-  struct Prepared {
-    bool done = false, ok = false;
-    std::vector<std::pair<int, int>> pairs;
-    std::optional<Check_stats> stats;   // the model's
-    Sweep_counts counts;                // a sweep's
-  };
-  Prepared model_, sweeps_[2];
+  Prepared_model model_;
+  Prepared_sweep sweeps_[2];
   std::vector<char> sweep_certain_;           // the intervals' sweep's, per pair (drop_apart_ties)
   Scene_model<EK> emodel_;                    // objects built on demand
   std::vector<typename S_bounds<EK>::Bounds> esettled_;
@@ -640,7 +641,7 @@ private:
       ++fallbacks_;
       return false;
     }
-    Prepared& sweep = sweeps_[semantics == Semantics::closed ? 1 : 0];
+    Prepared_sweep& sweep = sweeps_[semantics == Semantics::closed ? 1 : 0];
     if (!model_.done) {
       model_.ok = build_model(stats);
       model_.done = true;
@@ -652,11 +653,13 @@ private:
     if (!sweep.done) {
       sweep_pairs(stats, sweep.pairs, semantics);
       sweep.done = true;
-      sweep.counts = {stats.object_pairs, stats.candidate_pairs, stats.exact_sweep_ties};
+      sweep.object_pairs = stats.object_pairs;
+      sweep.candidate_pairs = stats.candidate_pairs;
+      sweep.exact_sweep_ties = stats.exact_sweep_ties;
     } else {
-      stats.object_pairs = sweep.counts.object_pairs;
-      stats.candidate_pairs = sweep.counts.candidate_pairs;
-      stats.exact_sweep_ties = sweep.counts.exact_sweep_ties;
+      stats.object_pairs = sweep.object_pairs;
+      stats.candidate_pairs = sweep.candidate_pairs;
+      stats.exact_sweep_ties = sweep.exact_sweep_ties;
     }
     pairs = &sweep.pairs;
     return true;
