@@ -110,11 +110,9 @@ void run_pairs(const K& k, const std::vector<std::pair<int, int>>& pairs, const 
 {
   using FT = typename K::FT;
   using Result = std::decay_t<std::invoke_result_t<Check_one&, std::size_t, const FT*, Semantics, Check_stats&>>;
-  // One pair (the common query) inline: no allocation for either. Each
-  // pair's stats fresh (answer.stats.fresh()), made in place.
+  // One pair (the common query) inline: no allocation for either.
   boost::container::small_vector<Result, 1> results(pairs.size());
-  boost::container::small_vector<Check_stats, 1> stats(pairs.size());
-  for (Check_stats& s : stats) s.timed = answer.stats.timed;
+  boost::container::small_vector<Check_stats, 1> stats(pairs.size(), answer.stats.fresh());
   std::atomic<std::size_t> first_hit{pairs.size()};      // any-collision mode: lowest colliding index
   // The least t* found so far (--earliest): none until one is, and no
   // number made without --earliest (a rational is an allocation).

@@ -510,6 +510,14 @@ private:
     bool done = false;
     std::vector<std::pair<int, int>> pairs;
     std::size_t object_pairs = 0, candidate_pairs = 0, exact_sweep_ties = 0;
+    void keep(const Check_stats& s)
+    {
+      object_pairs = s.object_pairs, candidate_pairs = s.candidate_pairs, exact_sweep_ties = s.exact_sweep_ties;
+    }
+    void put(Check_stats& s) const
+    {
+      s.object_pairs = object_pairs, s.candidate_pairs = candidate_pairs, s.exact_sweep_ties = exact_sweep_ties;
+    }
   };
   Prepared_model model_;
   Prepared_sweep sweeps_[2];
@@ -653,13 +661,9 @@ private:
     if (!sweep.done) {
       sweep_pairs(stats, sweep.pairs, semantics);
       sweep.done = true;
-      sweep.object_pairs = stats.object_pairs;
-      sweep.candidate_pairs = stats.candidate_pairs;
-      sweep.exact_sweep_ties = stats.exact_sweep_ties;
+      sweep.keep(stats);
     } else {
-      stats.object_pairs = sweep.object_pairs;
-      stats.candidate_pairs = sweep.candidate_pairs;
-      stats.exact_sweep_ties = sweep.exact_sweep_ties;
+      sweep.put(stats);
     }
     pairs = &sweep.pairs;
     return true;
