@@ -5,6 +5,7 @@
 #include "scene/Hull_solid.h"
 #include "scene/Mesh_solid.h"
 #include "scene/Input_error.h"
+#include "scene/Json_fields.h"
 #include "scene/Json_reader.h"
 #include "scene/Number_text.h"
 
@@ -36,72 +37,7 @@ namespace {
 
 using Kind = Json_value::Kind;
 
-std::string at(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
-std::string dot(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
-
-void expect_kind(const Json_value& v, Kind k, const std::string& path)
-{
-  if (v.kind != k)
-    throw Input_error(path, std::string("expected ") + kind_name(k) + ", found " + kind_name(v.kind));
-}
-
-// Every key must be one of `allowed`: a typo must not silently change a verdict.
-void expect_keys(const Json_value& obj, std::initializer_list<const char*> allowed, const std::string& path)
-{
-  for (const auto& m : obj.members) {
-    bool known = false;
-    for (const char* a : allowed) known = known || m.first == a;
-    if (!known) {
-      std::string list;
-      for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
-      throw Input_error(path, "unknown key \"" + m.first + "\" (expected " + list + ")");
-    }
-  }
-}
-
-const Json_value& required(const Json_value& obj, const char* key, const std::string& path)
-{
-  const Json_value* v = obj.find(key);
-  if (!v) throw Input_error(path, std::string("missing key \"") + key + "\"");
-  return *v;
-}
-
-Rational number_from_text(const std::string& text, bool is_string, const std::string& path)
-{
-  Number_parse p = parse_number_text(text, is_string);
-  if (!p.ok) {
-    std::string shown = text.size() > 40 ? text.substr(0, 40) + "..." : text;
-    if (p.limit) throw Input_error(path, "'" + shown + "' is refused: " + p.error, CLASH4D_EXIT_LIMIT);
-    throw Input_error(path, "'" + shown + "' is not a number: " + p.error);
-  }
-  return p.value;
-}
-
-Rational read_number(const Json_value& v, const std::string& path)
-{
-  if (v.kind != Kind::Number && v.kind != Kind::String)
-    throw Input_error(path, std::string("expected a number, found ") + kind_name(v.kind));
-  return number_from_text(v.text, v.kind == Kind::String, path);
-}
-
-std::vector<Rational> read_numbers(const Json_value& v, std::size_t count, const std::string& path)
-{
-  expect_kind(v, Kind::Array, path);
-  if (v.items.size() != count)
-    throw Input_error(path, "expected " + std::to_string(count) + " numbers, found " + std::to_string(v.items.size()));
-  std::vector<Rational> out;
-  for (std::size_t i = 0; i < count; ++i) out.push_back(read_number(v.items[i], at(path, i)));
-  return out;
-}
-
-template <std::size_t N>
-std::array<Rational, N> read_array(const Json_value& v, const std::string& path)
-{
-  std::vector<Rational> xs = read_numbers(v, N, path);
-  std::array<Rational, N> out;
-  for (std::size_t i = 0; i < N; ++i) out[i] = xs[i];
-  return out;
-}
+using namespace json_field;
 
 // What one read of a scene shares: the directory mesh paths are relative to,
 // and each mesh file's solid, made once however often the file is used.
