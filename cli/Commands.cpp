@@ -1,5 +1,6 @@
 #include "cli/Commands.h"
 #include "cli/Campaign_commands.h"
+#include "cli/Ccd_command.h"
 #include "cli/Stats_json.h"
 #include "certify/Certificate_writer.h"
 #include "cli/Verify_command.h"
@@ -572,10 +573,11 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   // In the order --help lists them; each says -1 when it was not the one given.
   std::vector<Command> commands{add_validate(app, out, err), add_extrude(app, out, err), add_check(app, out, err),
                                 add_skeleton(app, out, err),  add_compare(app, out, err), add_fuzz(app, out, err),
-                                add_report(app, out, err),    add_generate(app, out, err), add_verify(app, out, err)};
+                                add_report(app, out, err),    add_generate(app, out, err), add_verify(app, out, err),
+                                add_ccd(app, out, err)};
   // The work budget (search/Work_budget.h), on the commands that search.
   double max_seconds = 0;
-  for (const char* name : {"check", "skeleton", "compare", "fuzz", "report"})
+  for (const char* name : {"check", "skeleton", "compare", "fuzz", "report", "ccd"})
     app.get_subcommand(name)
         ->add_option("--max-seconds", max_seconds,
                      "stop with exit 3 when the run takes longer than S seconds, printing no answer (fuzz: saved "

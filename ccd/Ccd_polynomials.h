@@ -1,0 +1,150 @@
+// The polynomials in t whose signs decide a CCD query (docs/ccd-queries.md),
+// each named by an index and made once, when first asked, over any number
+// type: doubles, intervals or rationals. The static tests (Ccd_contact.h)
+// read only their signs, so a kernel can decide a sign in intervals and,
+// where that is uncertain, on the same named polynomial in rationals.
+//
+// Vertex-face, with P = p - a, E1 = b - a, E2 = c - a (each linear in t) and
+// N = E1 x E2: P = u E1 + v E2 gives E1 x P = v N, P x E2 = u N and
+// (E2 - E1) x (P - E1) = (1 - u - v) N.
+// Edge-edge, with A = a1 - a0, B = b1 - b0, D = b0 - a0 and N = A x B:
+// u A - v B = D gives D x B = u N and D x A = v N.
+// In both, F = N . (P or D) is the coplanarity cubic: zero wherever the
+// primitives meet.
+#ifndef CLASH4D_CCD_CCD_POLYNOMIALS_H
+#define CLASH4D_CCD_CCD_POLYNOMIALS_H
+
+#include "ccd/Ccd_query.h"
+#include "geometry/kernel_ft4.h"
+#include "numbers/Polynomial.h"
+#include <array>
+#include <optional>
+
+namespace clash4d {
+
+// The names. A point-in-segment test of X against [S, S + U] (W = X - S)
+// asks, from its first name o: U at o..o+2, W at o+3..o+5, U x W at
+// o+6..o+8, W . U at o+9 and U . U - W . U at o+10.
+namespace ccd_name {
+constexpr int F = 0;            // the coplanarity cubic N . P (vertex-face), N . D (edge-edge)
+constexpr int N = 1;            // N's components, 1..3
+constexpr int segment_names = 11;
+// Vertex-face.
+constexpr int face_v = 4;       // (E1 x P)_k = v N_k
+constexpr int face_u = 7;       // (P x E2)_k = u N_k
+constexpr int face_w = 10;      // ((E2 - E1) x (P - E1))_k = (1 - u - v) N_k
+constexpr int vf_segment = 13;  // P against [0, E1], [0, E2], [E1, E2]
+constexpr int vf_count = vf_segment + 3 * segment_names;
+// Edge-edge.
+constexpr int cut_u = 4;        // (D x B)_k = u N_k
+constexpr int cut_v = 7;        // (D x A)_k = v N_k
+constexpr int cut_u1 = 10;      // N_k - (D x B)_k = (1 - u) N_k
+constexpr int cut_v1 = 13;      // N_k - (D x A)_k = (1 - v) N_k
+constexpr int ee_segment = 16;  // D, D + B against [0, A]; 0, A against [D, D + B]
+constexpr int ee_count = ee_segment + 4 * segment_names;
+constexpr int max_count = ee_count;
+} // namespace ccd_name
+
+template <class FT>
+class Ccd_polynomials {
+public:
+  using Poly = Polynomial<FT>;
+  using Vector = Vector3<Poly>;
+
+  // rows: the query's eight rows (Ccd_query::rows) in FT.
+  Ccd_polynomials(Ccd_type type, const std::array<Vector3<FT>, 8>& rows) : type_(type)
+  {
+    std::array<Vector, 4> x;
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 3; ++k) x[i][k] = Poly(rows[i][k], rows[i + 4][k] - rows[i][k]);
+    // Vertex-face: P, E1, E2; edge-edge: A, B, D (in the same three slots).
+    if (type == Ccd_type::vertex_face) v_ = {minus(x[0], x[1]), minus(x[2], x[1]), minus(x[3], x[1])};
+    else v_ = {minus(x[1], x[0]), minus(x[3], x[2]), minus(x[2], x[0])};
+  }
+
+  Ccd_type type() const { return type_; }
+  int count() const { return type_ == Ccd_type::vertex_face ? ccd_name::vf_count : ccd_name::ee_count; }
+
+  const Poly& operator()(int name)
+  {
+    auto& p = table_[static_cast<std::size_t>(name)];
+    if (!p) p = make(name);
+    return *p;
+  }
+
+  // The segment test's vectors: segment s's start S, direction U and point X.
+  struct Segment {
+    Vector start, direction, point;
+  };
+  Segment segment(int s) const
+  {
+    const Vector zero{};
+    if (type_ == Ccd_type::vertex_face) {
+      const Vector &P = v_[0], &E1 = v_[1], &E2 = v_[2];
+      if (s == 0) return {zero, E1, P};
+      if (s == 1) return {zero, E2, P};
+      return {E1, minus(E2, E1), P};
+    }
+    const Vector &A = v_[0], &B = v_[1], &D = v_[2];
+    if (s == 0) return {zero, A, D};
+    if (s == 1) return {zero, A, plus(D, B)};
+    if (s == 2) return {D, B, zero};
+    return {D, B, A};
+  }
+
+private:
+  static Vector minus(const Vector& a, const Vector& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+  static Vector plus(const Vector& a, const Vector& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+
+  Poly make(int name)
+  {
+    using namespace ccd_name;
+    const Vector& first = v_[0];   // P or A
+    const Vector& second = v_[1];  // E1 or B
+    const Vector& third = v_[2];   // E2 or D
+    if (name == F) return type_ == Ccd_type::vertex_face ? dot(n(), first) : dot(n(), third);
+    if (name < 4) return n()[name - N];
+    int segment_start = type_ == Ccd_type::vertex_face ? vf_segment : ee_segment;
+    if (name >= segment_start) return segment_name((name - segment_start) / segment_names,
+                                                   (name - segment_start) % segment_names);
+    int k = (name - 4) % 3;
+    if (type_ == Ccd_type::vertex_face) {
+      const Vector &P = first, &E1 = second, &E2 = third;
+      if (name < face_u) return cross(E1, P)[k];
+      if (name < face_w) return cross(P, E2)[k];
+      return cross(minus(E2, E1), minus(P, E1))[k];
+    }
+    const Vector &A = first, &B = second, &D = third;
+    if (name < cut_v) return cross(D, B)[k];
+    if (name < cut_u1) return cross(D, A)[k];
+    if (name < cut_v1) return n()[k] - cross(D, B)[k];
+    return n()[k] - cross(D, A)[k];
+  }
+
+  // N = E1 x E2 or A x B, kept once made (F and the face or cut names use it).
+  const Vector& n()
+  {
+    if (!n_) n_ = type_ == Ccd_type::vertex_face ? cross(v_[1], v_[2]) : cross(v_[0], v_[1]);
+    return *n_;
+  }
+
+  Poly segment_name(int s, int i) const
+  {
+    Segment g = segment(s);
+    Vector w = minus(g.point, g.start);
+    if (i < 3) return g.direction[i];
+    if (i < 6) return w[i - 3];
+    if (i < 9) return cross(g.direction, w)[i - 6];
+    if (i == 9) return dot(w, g.direction);
+    return dot(g.direction, g.direction) - dot(w, g.direction);
+  }
+
+  Ccd_type type_;
+  std::array<Vector, 3> v_;
+  std::optional<Vector> n_;
+  std::array<std::optional<Poly>, ccd_name::max_count> table_;   // made when first asked
+};
+
+} // namespace clash4d
+
+#endif

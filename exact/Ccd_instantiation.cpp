@@ -1,0 +1,51 @@
+#include "exact/Ccd_instantiation.h"
+
+#include "ccd/Ccd_sweep.h"
+#include "exact/Ccd_filtered_kernel.h"
+#include "exact/Ccd_rational_kernel.h"
+#include "exact/Interval_kernel.h"
+
+namespace clash4d {
+
+namespace {
+
+// t*, and (u, v) as the quotients the contact names, evaluated at t* in
+// Q(t*) (numbers/Algebraic.h, quotient_at).
+Ccd_earliest exact_earliest(Ccd_rational_kernel& k, const Algebraic& t, const Ccd_contact& contact)
+{
+  Ccd_uv_fraction<Rational> uv = uv_fraction(k.polynomials(), contact);
+  Algebraic u = Algebraic::quotient_at(t, uv.u_num.coefficients(), uv.u_den.coefficients());
+  Algebraic v = Algebraic::quotient_at(t, uv.v_num.coefficients(), uv.v_den.coefficients());
+  return Ccd_earliest{t, u, v, contact, uv};
+}
+
+} // namespace
+
+Ccd_answer ccd_rational(const Ccd_query& query, const Ccd_options& options)
+{
+  Ccd_rational_kernel k(query);
+  auto r = ccd_sweep(k);
+  Ccd_answer a;
+  a.collide = r.collide;
+  if (r.collide && options.earliest) a.earliest = exact_earliest(k, r.t, r.contact);
+  return a;
+}
+
+Ccd_answer ccd_exact(const Ccd_query& query, const Ccd_options& options)
+{
+  // Where the machine does not round as the intervals ask (valgrind), the
+  // answer is the rational kernel's alone.
+  if (!Interval_kernel::encloses_here()) return ccd_rational(query, options);
+  Ccd_filtered_kernel::Protector protect;   // the intervals' upward rounding; rationals run in nearest
+  Ccd_filtered_kernel k(query);
+  auto r = ccd_sweep(k);
+  Ccd_answer a;
+  a.collide = r.collide;
+  if (r.collide && options.earliest) {
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    a.earliest = exact_earliest(k.rational(), k.exact(r.t), r.contact);
+  }
+  return a;
+}
+
+} // namespace clash4d

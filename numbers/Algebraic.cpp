@@ -1,0 +1,543 @@
+#include "numbers/Algebraic.h"
+
+#include "numbers/Interval_isolation.h"
+#include "numbers/Polynomial.h"
+#include <CGAL/FPU.h>
+#include <cmath>
+#include <optional>
+
+#include <flint/fmpq.h>
+#include <flint/fmpq_mat.h>
+#include <flint/fmpq_poly.h>
+#include <flint/fmpz_poly.h>
+#include <flint/fmpz_poly_factor.h>
+#include <acb.h>
+#include <arb.h>
+#include <arb_fmpz_poly.h>
+#include <algorithm>
+#include <charconv>
+#include <stdexcept>
+
+namespace clash4d {
+
+namespace {
+
+// FLINT's C types with their lifetimes (the library's init/clear pairs).
+struct Fmpz_poly {
+  fmpz_poly_t p;
+  Fmpz_poly() { fmpz_poly_init(p); }
+  ~Fmpz_poly() { fmpz_poly_clear(p); }
+  Fmpz_poly(const Fmpz_poly&) = delete;
+  Fmpz_poly& operator=(const Fmpz_poly&) = delete;
+};
+struct Fmpq_poly {
+  fmpq_poly_t p;
+  Fmpq_poly() { fmpq_poly_init(p); }
+  ~Fmpq_poly() { fmpq_poly_clear(p); }
+  Fmpq_poly(const Fmpq_poly&) = delete;
+  Fmpq_poly& operator=(const Fmpq_poly&) = delete;
+};
+struct Fmpq {
+  fmpq_t q;
+  Fmpq() { fmpq_init(q); }
+  explicit Fmpq(const Rational& x) { fmpq_init(q); fmpq_set_mpq(q, x.mpq()); }
+  ~Fmpq() { fmpq_clear(q); }
+  Fmpq(const Fmpq&) = delete;
+  Fmpq& operator=(const Fmpq&) = delete;
+};
+struct Arb {
+  arb_t x;
+  Arb() { arb_init(x); }
+  ~Arb() { arb_clear(x); }
+  Arb(const Arb&) = delete;
+  Arb& operator=(const Arb&) = delete;
+};
+struct Arf {
+  arf_t x;
+  Arf() { arf_init(x); }
+  ~Arf() { arf_clear(x); }
+  Arf(const Arf&) = delete;
+  Arf& operator=(const Arf&) = delete;
+};
+
+void set_poly(Fmpq_poly& out, const std::vector<Rational>& p)
+{
+  fmpq_poly_zero(out.p);
+  for (std::size_t i = 0; i < p.size(); ++i) fmpq_poly_set_coeff_mpq(out.p, static_cast<slong>(i), p[i].mpq());
+}
+
+void set_poly(Fmpq_poly& out, const std::vector<mpz_class>& p)
+{
+  fmpq_poly_zero(out.p);
+  Fmpz_poly z;
+  for (std::size_t i = 0; i < p.size(); ++i) fmpz_poly_set_coeff_mpz(z.p, static_cast<slong>(i), p[i].get_mpz_t());
+  fmpq_poly_set_fmpz_poly(out.p, z.p);
+}
+
+// A polynomial's coefficients as GMP integers, made primitive with a
+// positive leading coefficient (the spec's normal form of a minimal
+// polynomial).
+std::vector<mpz_class> normal_coefficients(const fmpz_poly_t g)
+{
+  Fmpz_poly prim;
+  fmpz_poly_primitive_part(prim.p, g);
+  slong len = fmpz_poly_length(prim.p);
+  std::vector<mpz_class> out(static_cast<std::size_t>(len));
+  for (slong i = 0; i < len; ++i) fmpz_poly_get_coeff_mpz(out[static_cast<std::size_t>(i)].get_mpz_t(), prim.p, i);
+  if (len > 0 && out.back() < 0)
+    for (auto& c : out) c = -c;
+  return out;
+}
+
+Rational from_fmpq(const fmpq_t q)
+{
+  mpq_t m;
+  mpq_init(m);
+  fmpq_get_mpq(m, q);
+  Rational r(m);
+  mpq_clear(m);
+  return r;
+}
+
+Rational from_arf(const arf_t x)
+{
+  fmpz_t man, exp;
+  fmpz_init(man);
+  fmpz_init(exp);
+  arf_get_fmpz_2exp(man, exp, x);
+  mpz_class m;
+  fmpz_get_mpz(m.get_mpz_t(), man);
+  slong e = fmpz_get_si(exp);
+  fmpz_clear(man);
+  fmpz_clear(exp);
+  Rational r(m.get_mpz_t());
+  return e >= 0 ? r * power_of_two(static_cast<int>(e)) : r / power_of_two(static_cast<int>(-e));
+}
+
+// A dyadic rational (isolating intervals keep dyadic ends) as an arf.
+void to_arf(arf_t out, const Rational& q)
+{
+  mpz_srcptr den = mpq_denref(q.mpq());
+  mp_bitcnt_t k = mpz_scan1(den, 0);
+  if (mpz_sizeinbase(den, 2) != k + 1) throw std::logic_error("Algebraic: an isolating interval's end is not dyadic");
+  fmpz_t man, exp;
+  fmpz_init(man);
+  fmpz_init(exp);
+  fmpz_set_mpz(man, mpq_numref(q.mpq()));
+  fmpz_set_si(exp, -static_cast<slong>(k));
+  arf_set_fmpz_2exp(out, man, exp);
+  fmpz_clear(man);
+  fmpz_clear(exp);
+}
+
+int sign_at_rational(const fmpq_poly_t g, const Rational& q)
+{
+  Fmpq x(q), v;
+  fmpq_poly_evaluate_fmpq(v.q, g, x.q);
+  return fmpq_sgn(v.q);
+}
+
+// A power of two above |root| for every root of g (Cauchy's bound
+// 1 + max |g_i / g_d|, rounded up).
+Rational root_bound(const fmpz_poly_t g)
+{
+  slong d = fmpz_poly_degree(g);
+  mpz_class lead, c, top = 0;
+  fmpz_get_mpz(lead.get_mpz_t(), g->coeffs + d);
+  for (slong i = 0; i < d; ++i) {
+    fmpz_get_mpz(c.get_mpz_t(), g->coeffs + i);
+    c = abs(c);
+    if (c > top) top = c;
+  }
+  mpz_class q = top / abs(lead) + 2;
+  return power_of_two(static_cast<int>(mpz_sizeinbase(q.get_mpz_t(), 2)));
+}
+
+// The real roots of an irreducible g of degree >= 2 in [lo, hi], each in an
+// interval with dyadic ends that holds it and no other root of g.
+struct Isolated {
+  std::vector<std::pair<Rational, Rational>> intervals;   // ascending
+};
+
+// Every real root, by Arb: it isolates every complex root in disjoint
+// balls, the real ones first with an imaginary part exactly zero; a real
+// ball's segment [m - r, m + r] holds that root and no other.
+Isolated isolate_real_roots(const fmpz_poly_t g)
+{
+  slong deg = fmpz_poly_degree(g);
+  acb_ptr roots = _acb_vec_init(deg);
+  arb_fmpz_poly_complex_roots(roots, g, 0, 24);
+  Isolated out;
+  Arf lo, hi, rad;
+  for (slong j = 0; j < deg; ++j) {
+    if (!arb_is_zero(acb_imagref(roots + j))) continue;
+    arb_srcptr re = acb_realref(roots + j);
+    arf_set_mag(rad.x, arb_radref(re));
+    arf_sub(lo.x, arb_midref(re), rad.x, ARF_PREC_EXACT, ARF_RND_DOWN);
+    arf_add(hi.x, arb_midref(re), rad.x, ARF_PREC_EXACT, ARF_RND_UP);
+    out.intervals.emplace_back(from_arf(lo.x), from_arf(hi.x));
+  }
+  _acb_vec_clear(roots, deg);
+  return out;
+}
+
+// The roots in [a, b] first in doubles (numbers/Interval_isolation.h: an
+// irreducible g's roots are simple and irrational, so intervals certify
+// them unless they are closer than doubles tell): no Arb call where that
+// suffices. Nothing when it does not.
+std::optional<Isolated> isolate_in_doubles(const fmpz_poly_t g, const Rational& a, const Rational& b)
+{
+  constexpr int capacity = 7;
+  slong len = fmpz_poly_length(g);
+  if (len > capacity) return std::nullopt;
+  CGAL::Protect_FPU_rounding<true> upward;
+  Polynomial<CGAL::Interval_nt<false>, capacity> p;
+  for (slong i = len - 1; i >= 0; --i) {
+    mpz_class c;
+    fmpz_get_mpz(c.get_mpz_t(), g->coeffs + i);
+    p = p * Polynomial<CGAL::Interval_nt<false>, capacity>(CGAL::Interval_nt<false>(0), CGAL::Interval_nt<false>(1));
+    p = p + Polynomial<CGAL::Interval_nt<false>, capacity>(CGAL::Interval_nt<false>(CGAL::to_interval(Rational(c.get_mpz_t()))));
+  }
+  double lo = CGAL::to_interval(a).first, hi = CGAL::to_interval(b).second;
+  if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi)) return std::nullopt;
+  std::vector<Isolated_root> found;
+  if (!Interval_isolation<capacity>::isolate(p, lo, hi, found)) return std::nullopt;
+  Isolated out;
+  for (const Isolated_root& r : found) {
+    if (r.at.inf() == r.at.sup()) return std::nullopt;   // a rational root: not of an irreducible g
+    out.intervals.emplace_back(Rational(r.at.inf()), Rational(r.at.sup()));
+  }
+  return out;
+}
+
+// g's sign over [lo, hi] when an enclosure in doubles is sure of it and
+// not zero (the filter before the exact test), else 2.
+int sign_in_doubles(const std::vector<Rational>& g, const Rational& lo, const Rational& hi)
+{
+  using I = CGAL::Interval_nt<false>;
+  CGAL::Protect_FPU_rounding<true> upward;
+  I x(CGAL::to_interval(lo).first, CGAL::to_interval(hi).second), v(0);
+  for (std::size_t i = g.size(); i-- > 0;) v = v * x + I(CGAL::to_interval(g[i]));
+  if (v.inf() > 0) return 1;
+  if (v.sup() < 0) return -1;
+  return 2;
+}
+
+// a b mod m.
+void mul_mod(fmpq_poly_t out, const fmpq_poly_t a, const fmpq_poly_t b, const fmpq_poly_t m)
+{
+  fmpq_poly_mul(out, a, b);
+  fmpq_poly_rem(out, out, m);
+}
+
+// The root -c0 / c1 of a linear factor.
+Rational linear_root(const fmpz_poly_struct* g)
+{
+  mpz_class c0, c1;
+  fmpz_get_mpz(c0.get_mpz_t(), g->coeffs);
+  fmpz_get_mpz(c1.get_mpz_t(), g->coeffs + 1);
+  return quotient_of_integers(-c0, c1);
+}
+
+void primitive_integer_poly(Fmpz_poly& out, const std::vector<Rational>& p)
+{
+  Fmpq_poly q;
+  set_poly(q, p);
+  if (fmpq_poly_is_zero(q.p)) throw std::logic_error("Algebraic: the roots of the zero polynomial");
+  fmpq_poly_get_numerator(out.p, q.p);
+  fmpz_poly_primitive_part(out.p, out.p);
+}
+
+} // namespace
+
+Algebraic Algebraic::irrational(std::vector<mpz_class> poly, const Rational& lo, const Rational& hi)
+{
+  auto rep = std::make_shared<Rep>();
+  rep->poly = std::move(poly);
+  return Algebraic(std::move(rep), lo, hi);
+}
+
+int Algebraic::poly_sign(const Rational& q) const
+{
+  Fmpq_poly m;
+  set_poly(m, rep_->poly);
+  return sign_at_rational(m.p, q);
+}
+
+void Algebraic::refine() const
+{
+  if (is_rational()) return;
+  Rational mid = (lo_ + hi_) / 2;
+  // The root is simple: the polynomial's sign at every lower end is the
+  // same, and differs from its sign at every upper end.
+  if (poly_sign(mid) == poly_sign(lo_)) lo_ = mid;
+  else hi_ = mid;
+}
+
+void Algebraic::exclude(const Rational& q) const
+{
+  while (lo_ < q && q < hi_) refine();
+}
+
+std::vector<Algebraic> Algebraic::real_roots(const std::vector<Rational>& p, const Rational& a, const Rational& b)
+{
+  Fmpz_poly f;
+  primitive_integer_poly(f, p);
+  fmpz_poly_factor_t fac;
+  fmpz_poly_factor_init(fac);
+  fmpz_poly_factor(fac, f.p);
+  std::vector<Algebraic> out;
+  for (slong i = 0; i < fac->num; ++i) {
+    const fmpz_poly_struct* g = fac->p + i;
+    slong deg = fmpz_poly_degree(g);
+    if (deg == 1) {
+      Rational root = linear_root(g);
+      if (!(root < a) && !(b < root)) out.emplace_back(root);
+      continue;
+    }
+    std::vector<mpz_class> poly = normal_coefficients(g);
+    auto isolated = isolate_in_doubles(g, a, b);
+    if (!isolated) isolated = isolate_real_roots(g);
+    for (const auto& [lo, hi] : isolated->intervals) {
+      Algebraic x = irrational(poly, lo, hi);
+      if (compare(x, a) >= 0 && compare(x, b) <= 0) out.push_back(std::move(x));
+    }
+  }
+  fmpz_poly_factor_clear(fac);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+Algebraic Algebraic::root_between(const std::vector<Rational>& p, const Rational& lo, const Rational& hi)
+{
+  Fmpz_poly f;
+  primitive_integer_poly(f, p);
+  fmpz_poly_factor_t fac;
+  fmpz_poly_factor_init(fac);
+  fmpz_poly_factor(fac, f.p);
+  // p has one simple root in (lo, hi) and none at the ends: exactly one
+  // factor changes sign there, and it holds that root.
+  for (slong i = 0; i < fac->num; ++i) {
+    Fmpq_poly g;
+    fmpq_poly_set_fmpz_poly(g.p, fac->p + i);
+    if (sign_at_rational(g.p, lo) * sign_at_rational(g.p, hi) >= 0) continue;
+    Algebraic x;
+    if (fmpz_poly_degree(fac->p + i) == 1) {
+      x = Algebraic(linear_root(fac->p + i));
+    } else {
+      x = irrational(normal_coefficients(fac->p + i), lo, hi);
+    }
+    fmpz_poly_factor_clear(fac);
+    return x;
+  }
+  fmpz_poly_factor_clear(fac);
+  throw std::logic_error("Algebraic::root_between: no sign change in the interval");
+}
+
+CGAL::Sign Algebraic::sign_of(const std::vector<Rational>& g) const
+{
+  Fmpq_poly G;
+  set_poly(G, g);
+  if (is_rational()) return CGAL::Sign(sign_at_rational(G.p, value_));
+  if (int s = sign_in_doubles(g, lo_, hi_); s != 2) return CGAL::Sign(s);
+  // g(r) = 0 exactly when the minimal polynomial divides g.
+  Fmpq_poly m, rem;
+  set_poly(m, rep_->poly);
+  fmpq_poly_rem(rem.p, G.p, m.p);
+  if (fmpq_poly_is_zero(rem.p)) return CGAL::ZERO;
+  // Otherwise g(r) != 0: an enclosure of g over the interval excludes zero
+  // once the interval is narrow enough.
+  Fmpz_poly num;
+  fmpq_poly_get_numerator(num.p, rem.p);   // the same sign at r (a positive denominator; r a root of m)
+  Arb x, y;
+  Arf lo, hi;
+  for (slong prec = 64;; prec += 32) {
+    to_arf(lo.x, lo_);
+    to_arf(hi.x, hi_);
+    arb_set_interval_arf(x.x, lo.x, hi.x, prec);
+    arb_fmpz_poly_evaluate_arb(y.x, num.p, x.x, prec);
+    if (arb_is_positive(y.x)) return CGAL::POSITIVE;
+    if (arb_is_negative(y.x)) return CGAL::NEGATIVE;
+    for (int i = 0; i < 8; ++i) refine();
+  }
+}
+
+Algebraic Algebraic::quotient_at(const Algebraic& r, const std::vector<Rational>& num, const std::vector<Rational>& den)
+{
+  Fmpq_poly N, D;
+  set_poly(N, num);
+  set_poly(D, den);
+  if (r.is_rational()) {
+    Fmpq x(r.value_), nv, dv;
+    fmpq_poly_evaluate_fmpq(nv.q, N.p, x.q);
+    fmpq_poly_evaluate_fmpq(dv.q, D.p, x.q);
+    if (fmpq_is_zero(dv.q)) throw std::logic_error("Algebraic::quotient_at: a zero denominator");
+    fmpq_div(nv.q, nv.q, dv.q);
+    return Algebraic(from_fmpq(nv.q));
+  }
+  Fmpq_poly m, alpha, g, s, t;
+  set_poly(m, r.rep_->poly);
+  fmpq_poly_rem(N.p, N.p, m.p);
+  fmpq_poly_rem(D.p, D.p, m.p);
+  if (fmpq_poly_is_zero(D.p)) throw std::logic_error("Algebraic::quotient_at: a zero denominator");
+  // 1 = s D + t m (m irreducible, D not a multiple): 1 / D(r) = s(r).
+  fmpq_poly_xgcd(g.p, s.p, t.p, D.p, m.p);
+  mul_mod(alpha.p, N.p, s.p, m.p);
+  if (fmpq_poly_degree(alpha.p) <= 0) {
+    Fmpq c;
+    fmpq_poly_get_coeff_fmpq(c.q, alpha.p, 0);
+    return Algebraic(from_fmpq(c.q));
+  }
+  // alpha(r)'s minimal polynomial is that of multiplication by alpha on
+  // Q(r) = Q[x] / (m), in the basis 1, x, ..., x^(d-1).
+  slong d = fmpq_poly_degree(m.p);
+  fmpq_mat_t M;
+  fmpq_mat_init(M, d, d);
+  Fmpq_poly column, xj;
+  fmpq_poly_set_ui(xj.p, 1);
+  for (slong j = 0; j < d; ++j) {
+    mul_mod(column.p, alpha.p, xj.p, m.p);
+    for (slong i = 0; i < d; ++i) fmpq_poly_get_coeff_fmpq(fmpq_mat_entry(M, i, j), column.p, i);
+    fmpq_poly_shift_left(xj.p, xj.p, 1);
+  }
+  Fmpq_poly mu;
+  fmpq_mat_minpoly(mu.p, M);
+  fmpq_mat_clear(M);
+  std::vector<Rational> mu_q(static_cast<std::size_t>(fmpq_poly_length(mu.p)));
+  for (std::size_t i = 0; i < mu_q.size(); ++i) {
+    Fmpq c;
+    fmpq_poly_get_coeff_fmpq(c.q, mu.p, static_cast<slong>(i));
+    mu_q[i] = from_fmpq(c.q);
+  }
+  // Its real roots, and the one alpha(r)'s enclosure meets alone.
+  Fmpz_poly mu_z;
+  primitive_integer_poly(mu_z, mu_q);
+  Rational bound = root_bound(mu_z.p);
+  std::vector<Algebraic> candidates = real_roots(mu_q, -bound, bound);
+  Fmpz_poly a_num;
+  fmpq_poly_get_numerator(a_num.p, alpha.p);
+  mpz_class alpha_den;
+  fmpz_get_mpz(alpha_den.get_mpz_t(), fmpq_poly_denref(alpha.p));
+  Rational a_den(alpha_den.get_mpz_t());
+  for (;;) {
+    // The enclosure of alpha(r) over r's interval, as rationals.
+    Arb x, y;
+    Arf lo, hi;
+    to_arf(lo.x, r.lo_);
+    to_arf(hi.x, r.hi_);
+    arb_set_interval_arf(x.x, lo.x, hi.x, 128);
+    arb_fmpz_poly_evaluate_arb(y.x, a_num.p, x.x, 128);
+    Arf ylo, yhi;
+    arb_get_lbound_arf(ylo.x, y.x, 128);
+    arb_get_ubound_arf(yhi.x, y.x, 128);
+    Rational elo = from_arf(ylo.x) / a_den, ehi = from_arf(yhi.x) / a_den;
+    std::vector<const Algebraic*> meet;
+    for (const Algebraic& c : candidates)
+      if (!(c.upper() < elo) && !(ehi < c.lower())) meet.push_back(&c);
+    if (meet.size() == 1) return *meet.front();
+    for (int i = 0; i < 4; ++i) r.refine();
+    for (const Algebraic* c : meet) c->refine();
+  }
+}
+
+int compare(const Algebraic& a, const Rational& q)
+{
+  if (a.is_rational()) return CGAL::compare(a.value_, q);
+  if (!(a.lo_ < q)) return 1;
+  if (!(q < a.hi_)) return -1;
+  // q inside the interval, and not the root (a rational): the root lies
+  // on the side of q where the polynomial changes sign.
+  return a.poly_sign(q) == a.poly_sign(a.lo_) ? 1 : -1;
+}
+
+int compare(const Algebraic& a, const Algebraic& b)
+{
+  if (b.is_rational()) return compare(a, b.value_);
+  if (a.is_rational()) return -compare(b, a.value_);
+  if (a.rep_->poly == b.rep_->poly) {
+    // One minimal polynomial: its roots are simple, so the intersection of
+    // the two intervals holds a root (then both numbers are it) exactly
+    // when the polynomial changes sign across it.
+    Rational lo = std::max(a.lo_, b.lo_), hi = std::min(a.hi_, b.hi_);
+    if (lo < hi && a.poly_sign(lo) != a.poly_sign(hi)) return 0;
+    if (lo < hi) {   // no root in [lo, hi]: each number lies outside it
+      a.exclude(lo), a.exclude(hi), b.exclude(lo), b.exclude(hi);
+    }
+  }
+  // Distinct numbers: refined apart.
+  for (;;) {
+    if (!(a.lo_ < b.hi_)) return 1;
+    if (!(b.lo_ < a.hi_)) return -1;
+    a.refine();
+    b.refine();
+  }
+}
+
+double Algebraic::to_double() const
+{
+  if (is_rational()) return round_to_nearest(value_);
+  Algebraic x = *this;   // refine a copy: this interval stays as it is
+  for (;;) {
+    double lo = round_to_nearest(x.lo_), hi = round_to_nearest(x.hi_);
+    if (lo == hi) return lo;
+    x.refine();
+  }
+}
+
+CGAL::Interval_nt<false> Algebraic::to_interval() const
+{
+  auto lo = CGAL::to_interval(lower()), hi = CGAL::to_interval(upper());
+  return CGAL::Interval_nt<false>(lo.first, hi.second);
+}
+
+std::string Algebraic::approx() const
+{
+  char buffer[64];
+  auto result = std::to_chars(buffer, buffer + sizeof buffer, to_double());
+  return std::string(buffer, result.ptr);
+}
+
+std::pair<Rational, Rational> Algebraic::short_interval() const
+{
+  // A function of the number alone (not of how it was made): its
+  // neighbours among the minimal polynomial's real roots bound it.
+  std::vector<Rational> p(rep_->poly.size());
+  for (std::size_t i = 0; i < p.size(); ++i) p[i] = Rational(rep_->poly[i].get_mpz_t());
+  Fmpz_poly g;
+  primitive_integer_poly(g, p);
+  Rational bound = root_bound(g.p);
+  std::vector<Algebraic> roots = real_roots(p, -bound, bound);
+  const Algebraic *below = nullptr, *above = nullptr;
+  for (const Algebraic& r : roots) {
+    int c = compare(r, *this);
+    if (c < 0) below = &r;
+    if (c > 0 && !above) above = &r;
+  }
+  Algebraic x = *this;
+  for (Rational scale = 1;; scale *= 10) {
+    // floor(x * scale), once the interval no longer holds a multiple of 1 / scale.
+    for (;;) {
+      mpz_class flo, fhi;
+      Rational l = x.lo_ * scale, h = x.hi_ * scale;
+      mpz_fdiv_q(flo.get_mpz_t(), mpq_numref(l.mpq()), mpq_denref(l.mpq()));
+      mpz_fdiv_q(fhi.get_mpz_t(), mpq_numref(h.mpq()), mpq_denref(h.mpq()));
+      if (flo == fhi) {
+        Rational lo = Rational(flo.get_mpz_t()) / scale, hi = Rational(mpz_class(flo + 1).get_mpz_t()) / scale;
+        if ((!below || compare(*below, lo) < 0) && (!above || compare(*above, hi) > 0)) return {lo, hi};
+        break;
+      }
+      x.refine();
+    }
+  }
+}
+
+std::string Algebraic::to_text() const
+{
+  if (is_rational()) return to_string(value_);
+  std::string poly;
+  for (std::size_t i = 0; i < rep_->poly.size(); ++i) poly += (i ? ", " : "") + rep_->poly[i].get_str();
+  auto [lo, hi] = short_interval();
+  return "root of [" + poly + "] in (" + to_string(lo) + ", " + to_string(hi) + ") ~ " + approx();
+}
+
+} // namespace clash4d

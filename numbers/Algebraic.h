@@ -1,0 +1,100 @@
+// Real algebraic numbers, exactly: the times (and contact parameters) that
+// are roots of polynomials in t, where a rational answer is not enough
+// (docs/ccd-queries.md; the scene format's "Exact numbers that are not
+// rational"). A number is a Rational, or the one root of its minimal
+// polynomial (integer coefficients, irreducible over Q, degree at least 2,
+// no common factor, the leading one positive) in an open interval with
+// dyadic ends. Minimal polynomials come from FLINT's factoring
+// (fmpz_poly_factor), isolating intervals from Arb's certified root
+// isolation (arb_fmpz_poly_complex_roots); every sign and comparison is then
+// exact: a zero is a divisibility (the minimal polynomial divides g), and any
+// other sign is read off an Arb enclosure once the interval is narrow enough.
+#ifndef CLASH4D_NUMBERS_ALGEBRAIC_H
+#define CLASH4D_NUMBERS_ALGEBRAIC_H
+
+#include "numbers/Rational.h"
+#include <CGAL/Interval_nt.h>
+#include <CGAL/enum.h>
+#include <gmpxx.h>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace clash4d {
+
+class Algebraic {
+public:
+  Algebraic() : value_(0) {}
+  explicit Algebraic(const Rational& q) : value_(q) {}
+
+  // The distinct real roots of p (coefficients from the constant term up,
+  // not all zero) in the closed interval [a, b], ascending.
+  static std::vector<Algebraic> real_roots(const std::vector<Rational>& p, const Rational& a, const Rational& b);
+  // The one root of p in the open interval (lo, hi), lo < hi dyadic (a
+  // double's value), where p is certified to have a single simple root and
+  // no root at either end (an interval run's isolation, made exact).
+  static Algebraic root_between(const std::vector<Rational>& p, const Rational& lo, const Rational& hi);
+  // num(r) / den(r), den(r) != 0: an element of the field Q(r) as a number
+  // of its own (its minimal polynomial from the multiplication matrix,
+  // FLINT's fmpq_mat_minpoly, and its root chosen by enclosure).
+  static Algebraic quotient_at(const Algebraic& r, const std::vector<Rational>& num, const std::vector<Rational>& den);
+
+  bool is_rational() const { return !rep_; }
+  const Rational& rational() const { return value_; }   // when is_rational()
+  // The minimal polynomial's coefficients, constant term first (irrational).
+  const std::vector<mpz_class>& polynomial() const { return rep_->poly; }
+  // The isolating interval: the open interval (lower, upper) holds this
+  // number and no other root of polynomial() (irrational); both are the
+  // value when rational.
+  const Rational& lower() const { return is_rational() ? value_ : lo_; }
+  const Rational& upper() const { return is_rational() ? value_ : hi_; }
+  // Halves the isolating interval (the number is unchanged).
+  void refine() const;
+
+  // The sign of g (constant term first) at this number.
+  CGAL::Sign sign_of(const std::vector<Rational>& g) const;
+
+  // The double nearest to the number (ties to even), an enclosure in
+  // doubles, and the shortest decimal that reads back to that double.
+  double to_double() const;
+  CGAL::Interval_nt<false> to_interval() const;
+  std::string approx() const;
+  // An isolating interval with short decimal ends, for printing (the
+  // spec's "between"): the coarsest [n / 10^k, (n + 1) / 10^k] that holds
+  // no other root of the minimal polynomial; a function of the number
+  // alone. Irrational only.
+  std::pair<Rational, Rational> short_interval() const;
+  // "p/q" when rational; otherwise "root of POLY in (lo, hi) ~ approx".
+  std::string to_text() const;
+
+  friend int compare(const Algebraic& a, const Algebraic& b);
+  friend int compare(const Algebraic& a, const Rational& q);
+  friend bool operator<(const Algebraic& a, const Algebraic& b) { return compare(a, b) < 0; }
+  friend bool operator==(const Algebraic& a, const Algebraic& b) { return compare(a, b) == 0; }
+  friend bool operator!=(const Algebraic& a, const Algebraic& b) { return compare(a, b) != 0; }
+
+private:
+  struct Rep {
+    std::vector<mpz_class> poly;   // the minimal polynomial
+  };
+  Algebraic(std::shared_ptr<const Rep> rep, const Rational& lo, const Rational& hi)
+    : rep_(std::move(rep)), lo_(lo), hi_(hi) {}
+  static Algebraic irrational(std::vector<mpz_class> poly, const Rational& lo, const Rational& hi);
+  // The sign of the minimal polynomial at a rational (never zero).
+  int poly_sign(const Rational& q) const;
+  // Shrinks the interval to one side of q (q not this number).
+  void exclude(const Rational& q) const;
+
+  Rational value_;                  // rational case
+  std::shared_ptr<const Rep> rep_;  // irrational case
+  mutable Rational lo_, hi_;        // refined in place: the same number
+};
+
+// -1, 0 or 1 as a < b, a = b, a > b (exact).
+int compare(const Algebraic& a, const Algebraic& b);
+int compare(const Algebraic& a, const Rational& q);
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,107 @@
+// A polynomial in one variable over any number type (double, interval,
+// rational), of degree below Capacity, its coefficients from the constant
+// term up. The CCD queries' functions of time (ccd/) are built from the
+// vertices' linear motions by sums and products, and evaluated or
+// differentiated by the kernels; the kernels decide every sign.
+#ifndef CLASH4D_NUMBERS_POLYNOMIAL_H
+#define CLASH4D_NUMBERS_POLYNOMIAL_H
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+#include <vector>
+
+namespace clash4d {
+
+template <class FT, int Capacity = 7>
+class Polynomial {
+public:
+  static constexpr int capacity = Capacity;
+
+  Polynomial() = default;
+  explicit Polynomial(const FT& c0) : size_(1) { c_[0] = c0; }
+  // c0 + c1 t: a coordinate moving linearly.
+  Polynomial(const FT& c0, const FT& c1) : size_(2)
+  {
+    c_[0] = c0;
+    c_[1] = c1;
+  }
+
+  // The coefficients stored; the degree is at most size() - 1 (a leading
+  // coefficient may be zero: only a kernel can tell).
+  int size() const { return size_; }
+  const FT& operator[](int i) const { return c_[i]; }
+  FT& operator[](int i) { return c_[i]; }
+
+  friend Polynomial operator+(const Polynomial& a, const Polynomial& b) { return combine(a, b, 1); }
+  friend Polynomial operator-(const Polynomial& a, const Polynomial& b) { return combine(a, b, -1); }
+  friend Polynomial operator-(const Polynomial& a)
+  {
+    Polynomial r;
+    r.size_ = a.size_;
+    for (int i = 0; i < a.size_; ++i) r.c_[i] = -a.c_[i];
+    return r;
+  }
+  friend Polynomial operator*(const Polynomial& a, const Polynomial& b)
+  {
+    Polynomial r;
+    if (a.size_ == 0 || b.size_ == 0) return r;
+    r.size_ = a.size_ + b.size_ - 1;
+    if (r.size_ > Capacity) throw std::logic_error("Polynomial: a product beyond the capacity");
+    for (int i = 0; i < r.size_; ++i) r.c_[i] = FT(0);
+    for (int i = 0; i < a.size_; ++i)
+      for (int j = 0; j < b.size_; ++j) r.c_[i + j] += a.c_[i] * b.c_[j];
+    return r;
+  }
+  Polynomial& operator+=(const Polynomial& b) { return *this = *this + b; }
+  Polynomial& operator-=(const Polynomial& b) { return *this = *this - b; }
+
+  friend Polynomial operator*(const FT& s, const Polynomial& a)
+  {
+    Polynomial r = a;
+    for (int i = 0; i < r.size_; ++i) r.c_[i] = s * a.c_[i];
+    return r;
+  }
+
+  Polynomial derivative() const
+  {
+    Polynomial r;
+    r.size_ = std::max(size_ - 1, 0);
+    for (int i = 1; i < size_; ++i) r.c_[i - 1] = FT(i) * c_[i];
+    return r;
+  }
+
+  // The value at x by Horner's rule, in X (FT, or a wider type such as an
+  // interval around a time).
+  template <class X>
+  X at(const X& x) const
+  {
+    if (size_ == 0) return X(0);
+    X v = X(c_[size_ - 1]);
+    for (int i = size_ - 2; i >= 0; --i) v = v * x + X(c_[i]);
+    return v;
+  }
+
+  // The coefficients as a vector (the algebraic numbers' input).
+  std::vector<FT> coefficients() const { return std::vector<FT>(c_.begin(), c_.begin() + size_); }
+
+private:
+  static Polynomial combine(const Polynomial& a, const Polynomial& b, int sign)
+  {
+    Polynomial r;
+    r.size_ = std::max(a.size_, b.size_);
+    for (int i = 0; i < r.size_; ++i) {
+      if (i < a.size_ && i < b.size_) r.c_[i] = sign > 0 ? a.c_[i] + b.c_[i] : a.c_[i] - b.c_[i];
+      else if (i < a.size_) r.c_[i] = a.c_[i];
+      else r.c_[i] = sign > 0 ? b.c_[i] : -b.c_[i];
+    }
+    return r;
+  }
+
+  std::array<FT, Capacity> c_{};
+  int size_ = 0;
+};
+
+} // namespace clash4d
+
+#endif

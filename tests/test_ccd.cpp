@@ -1,0 +1,381 @@
+#define BOOST_TEST_MODULE ccd
+// CCD queries (docs/ccd-queries.md): hand-derived cases for each degenerate
+// kind of both primitives, the exact answers of the filtered kernel against
+// the rational kernel on seeded campaigns of the fuzz families (with floors
+// on how often the intervals decide alone, and how often they hand a sign to
+// rationals), the readers' errors, and the command line.
+//
+// CLASH4D_SEED overrides the campaign seed, CLASH4D_CCD_CASES the number of
+// cases.
+#include <boost/test/unit_test.hpp>
+
+#include "ccd/Ccd_families.h"
+#include "ccd/Ccd_reader.h"
+#include "exact/Ccd_filtered_kernel.h"
+#include "exact/Ccd_instantiation.h"
+#include "float/Ccd_double_instantiation.h"
+#include "scene/Input_error.h"
+#include "scene/Number_text.h"
+#include "scene/Random_draw.h"
+#include "support/Cli_run.h"
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace clash4d;
+
+namespace {
+
+std::uint64_t env_number(const char* name, std::uint64_t fallback)
+{
+  const char* v = std::getenv(name);
+  return v && *v ? std::strtoull(v, nullptr, 10) : fallback;
+}
+
+using Rows = Ccd_query::Rows;
+
+// Rows from text: the four vertices at t = 0, then at t = 1.
+Ccd_query query(Ccd_type type, std::initializer_list<std::array<const char*, 3>> rows)
+{
+  Rows r;
+  std::size_t i = 0;
+  for (const auto& row : rows) {
+    for (std::size_t k = 0; k < 3; ++k) r[i][k] = parse_number_text(row[k], true).value;
+    ++i;
+  }
+  BOOST_REQUIRE_EQUAL(i, 8u);
+  return Ccd_query(type, r);
+}
+
+Ccd_answer earliest(const Ccd_query& q, bool filtered = true)
+{
+  Ccd_options o;
+  o.earliest = true;
+  return filtered ? ccd_exact(q, o) : ccd_rational(q, o);
+}
+
+const Algebraic& exact(const Ccd_number& x) { return std::get<Algebraic>(x); }
+Algebraic rational(const char* q) { return Algebraic(Rational(q)); }
+
+// The contact's own check, in Q(t*): the primitives' points at (u, v) agree
+// and (u, v) lies in the parameter domain (docs/ccd-queries.md).
+void check_contact(const Ccd_query& q, const Ccd_answer& a)
+{
+  BOOST_REQUIRE(a.collide && a.earliest && a.earliest->uv);
+  const Algebraic &t = exact(a.earliest->t), &u = exact(a.earliest->u), &v = exact(a.earliest->v);
+  const Ccd_uv_fraction<Rational>& f = *a.earliest->uv;
+  BOOST_TEST((compare(u, Rational(0)) >= 0 && compare(v, Rational(0)) >= 0));
+  if (q.type() == Ccd_type::vertex_face) {   // 1 - u - v = (ud vd - un vd - vn ud) / (ud vd) >= 0
+    Polynomial<Rational> den = f.u_den * f.v_den, num = den - f.u_num * f.v_den - f.v_num * f.u_den;
+    BOOST_TEST(t.sign_of(num.coefficients()) * t.sign_of(den.coefficients()) >= 0);
+  } else {
+    BOOST_TEST((compare(u, Rational(1)) <= 0 && compare(v, Rational(1)) <= 0));
+  }
+  // Each coordinate of the difference of the two points, a polynomial in t
+  // once multiplied by u's and v's denominators, vanishes at t*.
+  for (std::size_t k = 0; k < 3; ++k) {
+    auto x = [&](int i) { return Polynomial<Rational>(q.row(i)[k], q.row(i + 4)[k] - q.row(i)[k]); };
+    Polynomial<Rational> diff;
+    if (q.type() == Ccd_type::vertex_face)   // (p - a) u_den v_den - (b - a) u_num v_den - (c - a) v_num u_den
+      diff = (x(0) - x(1)) * f.u_den * f.v_den - (x(2) - x(1)) * f.u_num * f.v_den - (x(3) - x(1)) * f.v_num * f.u_den;
+    else   // (a0 - b0) u_den v_den + (a1 - a0) u_num v_den - (b1 - b0) v_num u_den
+      diff = (x(0) - x(2)) * f.u_den * f.v_den + (x(1) - x(0)) * f.u_num * f.v_den - (x(3) - x(2)) * f.v_num * f.u_den;
+    BOOST_TEST(t.sign_of(diff.coefficients()) == CGAL::ZERO, "coordinate " << k << " of the contact");
+  }
+}
+
+// Exact (filtered) and rational agree, t* and (u, v) included; returns the
+// filtered answer.
+Ccd_answer agreed(const Ccd_query& q)
+{
+  Ccd_answer e = earliest(q, true), r = earliest(q, false);
+  BOOST_REQUIRE_EQUAL(e.collide, r.collide);
+  if (e.collide) {
+    BOOST_TEST((exact(e.earliest->t) == exact(r.earliest->t)));
+    BOOST_TEST((exact(e.earliest->u) == exact(r.earliest->u)));
+    BOOST_TEST((exact(e.earliest->v) == exact(r.earliest->v)));
+    check_contact(q, e);
+  }
+  return e;
+}
+
+void expect_hit(const Ccd_query& q, const Algebraic& t, const Algebraic& u, const Algebraic& v)
+{
+  Ccd_answer a = agreed(q);
+  BOOST_REQUIRE(a.collide);
+  BOOST_TEST(exact(a.earliest->t).to_text() == t.to_text());
+  BOOST_TEST((exact(a.earliest->t) == t));
+  BOOST_TEST((exact(a.earliest->u) == u));
+  BOOST_TEST((exact(a.earliest->v) == v));
+}
+
+void expect_miss(const Ccd_query& q) { BOOST_TEST(!agreed(q).collide); }
+
+} // namespace
+
+// The triangle a = (0,0,0), b = (1,0,0), c = (0,1,0) at rest in z = 0 unless
+// said otherwise; P = p - a, N = (0,0,1), so F = N . P = p_z(t).
+BOOST_AUTO_TEST_SUITE(vertex_face)
+
+// p = (1/4, 1/4, 1 - 2t): F = 1 - 2t, t* = 1/2, inside at u = v = 1/4.
+BOOST_AUTO_TEST_CASE(through_the_interior)
+{
+  expect_hit(query(Ccd_type::vertex_face, {{"1/4", "1/4", "1"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"},
+                                           {"1/4", "1/4", "-1"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"}}),
+             rational("1/2"), rational("1/4"), rational("1/4"));
+}
+
+// p = (2, 2, 1 - 2t) meets the plane at t = 1/2 at u = v = 2: outside.
+BOOST_AUTO_TEST_CASE(clear_miss)
+{
+  expect_miss(query(Ccd_type::vertex_face, {{"2", "2", "1"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"},
+                                            {"2", "2", "-1"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"}}));
+}
+
+// p = (1/4, 1/4, 1 - t): F = 1 - t is zero only at t = 1, where p is inside:
+// touching exactly at the end of the span counts.
+BOOST_AUTO_TEST_CASE(touching_at_t_one)
+{
+  expect_hit(query(Ccd_type::vertex_face, {{"1/4", "1/4", "1"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"},
+                                           {"1/4", "1/4", "0"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"}}),
+             rational("1"), rational("1/4"), rational("1/4"));
+}
+
+// p = (1/4, 1/4, t): on the triangle at t = 0, leaving it.
+BOOST_AUTO_TEST_CASE(contact_at_t_zero)
+{
+  expect_hit(query(Ccd_type::vertex_face, {{"1/4", "1/4", "0"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"},
+                                           {"1/4", "1/4", "1"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"}}),
+             rational("0"), rational("1/4"), rational("1/4"));
+}
+
+// p = (1/2, 0, 1 - 2t) crosses the plane at (1/2, 0, 0): on edge ab,
+// u = 1/2, v = 0. The vertex passes exactly through the edge.
+BOOST_AUTO_TEST_CASE(through_an_edge)
+{
+  expect_hit(query(Ccd_type::vertex_face, {{"1/2", "0", "1"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"},
+                                           {"1/2", "0", "-1"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"}}),
+             rational("1/2"), rational("1/2"), rational("0"));
+}
+
+// p = (0, 0, 1 - 2t) through the corner a: u = v = 0.
+BOOST_AUTO_TEST_CASE(through_a_corner)
+{
+  expect_hit(query(Ccd_type::vertex_face, {{"0", "0", "1"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"},
+                                           {"0", "0", "-1"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"}}),
+             rational("1/2"), rational("0"), rational("0"));
+}
+
+// The same 1e-15 outside edge ab (y = -1e-15): it misses. The double
+// instantiation, on doubles that keep the offset, misses too; with a
+// tolerance of 1e-9 it calls it a contact.
+BOOST_AUTO_TEST_CASE(near_miss_outside_an_edge)
+{
+  Ccd_query q = query(Ccd_type::vertex_face,
+                      {{"1/2", "-1e-15", "1"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"},
+                       {"1/2", "-1e-15", "-1"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"}});
+  expect_miss(q);
+  Ccd_options o;
+  BOOST_TEST(!ccd_double(q, o).collide);
+  o.tolerance = 1e-9;
+  BOOST_TEST(ccd_double(q, o).collide);
+}
+
+// Everything in z = 0 (F = 0 for all t): p = (2 - 3t, 2 - 3t, 0) enters the
+// triangle where x + y = 1, 4 - 6t = 1, t* = 1/2, on the hypotenuse
+// u = v = 1/2.
+BOOST_AUTO_TEST_CASE(coplanar_sliding_hit)
+{
+  expect_hit(query(Ccd_type::vertex_face, {{"2", "2", "0"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"},
+                                           {"-1", "-1", "0"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"}}),
+             rational("1/2"), rational("1/2"), rational("1/2"));
+}
+
+// p = (2, 2 - 3t, 0): x = 2 > 1 throughout, never in the triangle.
+BOOST_AUTO_TEST_CASE(coplanar_sliding_miss)
+{
+  expect_miss(query(Ccd_type::vertex_face, {{"2", "2", "0"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"},
+                                            {"2", "-1", "0"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "0"}}));
+}
+
+// The triangle a = (0,0,0), b = (2,0,0), c = (1,0,0) is the segment [0, 2]
+// of the x axis; p = (1, 1 - 2t, 0) meets it at t = 1/2. N = 0, so the
+// contact is p on [a, b] at sigma = 1/2: u = 1/2, v = 0.
+BOOST_AUTO_TEST_CASE(degenerate_triangle)
+{
+  expect_hit(query(Ccd_type::vertex_face, {{"1", "1", "0"}, {"0", "0", "0"}, {"2", "0", "0"}, {"1", "0", "0"},
+                                           {"1", "-1", "0"}, {"0", "0", "0"}, {"2", "0", "0"}, {"1", "0", "0"}}),
+             rational("1/2"), rational("1/2"), rational("0"));
+}
+
+// All three corners at the origin: p = (1 - 2t)(1, 1, 1) passes through it
+// at t = 1/2 (a point segment: u = v = 0).
+BOOST_AUTO_TEST_CASE(triangle_that_is_a_point)
+{
+  expect_hit(query(Ccd_type::vertex_face, {{"1", "1", "1"}, {"0", "0", "0"}, {"0", "0", "0"}, {"0", "0", "0"},
+                                           {"-1", "-1", "-1"}, {"0", "0", "0"}, {"0", "0", "0"}, {"0", "0", "0"}}),
+             rational("1/2"), rational("0"), rational("0"));
+}
+
+// An irrational t*. a = (0,0,0), b = (1,0,0) at rest, c = (0, 1, 2t - 1),
+// p = (1/8, t, 1/4 - t). N = E1 x E2 = (0, 1 - 2t, 1), F = N . P =
+// (1 - 2t) t + 1/4 - t = 1/4 - 2t^2 > 0 before t* = 1/(2 sqrt 2), the root
+// of 8t^2 - 1. There p = u b + v c with u = 1/8 (x) and v = t (y), and z
+// agrees: t (2t - 1) = 2t^2 - t = 1/4 - t. So (u, v) = (1/8, t*), inside.
+BOOST_AUTO_TEST_CASE(irrational_first_time)
+{
+  Ccd_query q = query(Ccd_type::vertex_face, {{"1/8", "0", "1/4"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "-1"},
+                                              {"1/8", "1", "-3/4"}, {"0", "0", "0"}, {"1", "0", "0"}, {"0", "1", "1"}});
+  auto roots = Algebraic::real_roots({Rational(-1), Rational(0), Rational(8)}, Rational(0), Rational(1));
+  BOOST_REQUIRE_EQUAL(roots.size(), 1u);
+  expect_hit(q, roots[0], rational("1/8"), roots[0]);
+  Ccd_answer a = earliest(q);
+  BOOST_TEST(!exact(a.earliest->t).is_rational());
+  BOOST_TEST(exact(a.earliest->t).approx() == "0.3535533905932738");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// Edge a along x from (-1,0,.) to (1,0,.), edge b along y at rest unless
+// said otherwise.
+BOOST_AUTO_TEST_SUITE(edge_edge)
+
+// a at z = 1 - 2t crosses b = (0, +-1, 0) at t = 1/2, at the middles.
+BOOST_AUTO_TEST_CASE(crossing)
+{
+  expect_hit(query(Ccd_type::edge_edge, {{"-1", "0", "1"}, {"1", "0", "1"}, {"0", "-1", "0"}, {"0", "1", "0"},
+                                         {"-1", "0", "-1"}, {"1", "0", "-1"}, {"0", "-1", "0"}, {"0", "1", "0"}}),
+             rational("1/2"), rational("1/2"), rational("1/2"));
+}
+
+// b moved to x = 2: the lines meet at x = 2, beyond a's end.
+BOOST_AUTO_TEST_CASE(lines_meet_beyond_an_end)
+{
+  expect_miss(query(Ccd_type::edge_edge, {{"-1", "0", "1"}, {"1", "0", "1"}, {"2", "-1", "0"}, {"2", "1", "0"},
+                                          {"-1", "0", "-1"}, {"1", "0", "-1"}, {"2", "-1", "0"}, {"2", "1", "0"}}));
+}
+
+// a = [(0,y,0), (2,y,0)] with y = 1 - 2t, b = [(1,0,0), (3,0,0)]: parallel,
+// collinear at t = 1/2 with overlap [1, 2]; b0 lies on a at u = 1/2.
+BOOST_AUTO_TEST_CASE(parallel_overlapping)
+{
+  expect_hit(query(Ccd_type::edge_edge, {{"0", "1", "0"}, {"2", "1", "0"}, {"1", "0", "0"}, {"3", "0", "0"},
+                                         {"0", "-1", "0"}, {"2", "-1", "0"}, {"1", "0", "0"}, {"3", "0", "0"}}),
+             rational("1/2"), rational("1/2"), rational("0"));
+}
+
+// The same with b = [(3,0,0), (4,0,0)]: collinear at t = 1/2, disjoint.
+BOOST_AUTO_TEST_CASE(collinear_disjoint)
+{
+  expect_miss(query(Ccd_type::edge_edge, {{"0", "1", "0"}, {"2", "1", "0"}, {"3", "0", "0"}, {"4", "0", "0"},
+                                          {"0", "-1", "0"}, {"2", "-1", "0"}, {"3", "0", "0"}, {"4", "0", "0"}}));
+}
+
+// Parallel in planes 1e-9 apart (b at z = 1e-9): never meet.
+BOOST_AUTO_TEST_CASE(parallel_near_miss)
+{
+  expect_miss(query(Ccd_type::edge_edge, {{"0", "1", "0"}, {"2", "1", "0"}, {"1", "0", "1e-9"}, {"3", "0", "1e-9"},
+                                          {"0", "-1", "0"}, {"2", "-1", "0"}, {"1", "0", "1e-9"}, {"3", "0", "1e-9"}}));
+}
+
+// a = [(-2,0,1-t), (0,0,1-t)] reaches z = 0 at t = 1, where its end a1 =
+// (0,0,0) lies on b at v = 1/2: touching exactly at t = 1, u = 1.
+BOOST_AUTO_TEST_CASE(endpoint_touch_at_t_one)
+{
+  expect_hit(query(Ccd_type::edge_edge, {{"-2", "0", "1"}, {"0", "0", "1"}, {"0", "-1", "0"}, {"0", "1", "0"},
+                                         {"-2", "0", "0"}, {"0", "0", "0"}, {"0", "-1", "0"}, {"0", "1", "0"}}),
+             rational("1"), rational("1"), rational("1/2"));
+}
+
+// a is the point (0, 0, 1 - 2t) (zero length) through b = [(-1,0,0),
+// (1,0,0)] at t = 1/2, v = 1/2.
+BOOST_AUTO_TEST_CASE(zero_length_edge)
+{
+  expect_hit(query(Ccd_type::edge_edge, {{"0", "0", "1"}, {"0", "0", "1"}, {"-1", "0", "0"}, {"1", "0", "0"},
+                                         {"0", "0", "-1"}, {"0", "0", "-1"}, {"-1", "0", "0"}, {"1", "0", "0"}}),
+             rational("1/2"), rational("0"), rational("1/2"));
+}
+
+// Both edges are points: t (1,1,1) and (1 - t)(1,1,1) meet at t = 1/2.
+BOOST_AUTO_TEST_CASE(two_points)
+{
+  expect_hit(query(Ccd_type::edge_edge, {{"0", "0", "0"}, {"0", "0", "0"}, {"1", "1", "1"}, {"1", "1", "1"},
+                                         {"1", "1", "1"}, {"1", "1", "1"}, {"0", "0", "0"}, {"0", "0", "0"}}),
+             rational("1/2"), rational("0"), rational("0"));
+}
+
+// In z = 0 throughout: a = [(0,0,0), (1,0,0)] at rest, b = [(2-2t, -1, 0),
+// (2-2t, 1, 0)] sweeps to x = 0; it reaches a1 at t = 1/2 (u = 1, v = 1/2).
+BOOST_AUTO_TEST_CASE(coplanar_sweep)
+{
+  expect_hit(query(Ccd_type::edge_edge, {{"0", "0", "0"}, {"1", "0", "0"}, {"2", "-1", "0"}, {"2", "1", "0"},
+                                         {"0", "0", "0"}, {"1", "0", "0"}, {"0", "-1", "0"}, {"0", "1", "0"}}),
+             rational("1/2"), rational("1"), rational("1/2"));
+}
+
+// An irrational t*. a = [(0,0,0), (1,t,0)], b = [(1/2,-1,-1/4-t),
+// (1/2,1,-1/4+t)]: A = (1,t,0), B = (0,2,2t), D = (1/2,-1,-1/4-t), and
+// F = A . (B x D) = (z0 + z1) + t (z1 - z0)/2 = -1/2 + t^2: negative before
+// t* = 1/sqrt 2, the root of 2t^2 - 1. There u = 1/2 (x), and y: t/2 =
+// -1 + 2v gives v = 1/2 + t/4, in [0, 1]; z: -1/4 - t + 2t v = -1/4 + t^2/2
+// = 0. v = 1/2 + sqrt(2)/8 is the root of 32v^2 - 32v + 7 near 0.677.
+BOOST_AUTO_TEST_CASE(irrational_first_time)
+{
+  Ccd_query q = query(Ccd_type::edge_edge, {{"0", "0", "0"}, {"1", "0", "0"}, {"1/2", "-1", "-1/4"}, {"1/2", "1", "-1/4"},
+                                            {"0", "0", "0"}, {"1", "1", "0"}, {"1/2", "-1", "-5/4"}, {"1/2", "1", "3/4"}});
+  auto t = Algebraic::real_roots({Rational(-1), Rational(0), Rational(2)}, Rational(0), Rational(1));
+  auto v = Algebraic::real_roots({Rational(7), Rational(-32), Rational(32)}, Rational(1, 2), Rational(1));
+  BOOST_REQUIRE(t.size() == 1 && v.size() == 1);
+  expect_hit(q, t[0], rational("1/2"), v[0]);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(campaigns)
+
+// Every fuzz family, seeded: the filtered kernel's answers are the rational
+// kernel's (t* and (u, v) included) and every contact checks in Q(t*). The
+// floors hold the filter to its job: most cases decided by intervals alone,
+// and some signs handed to rationals (the ties the families are made of).
+BOOST_AUTO_TEST_CASE(filtered_equals_rational_on_the_families)
+{
+  std::uint64_t seed = env_number("CLASH4D_SEED", 20261202), cases = env_number("CLASH4D_CCD_CASES", 1200);
+  BOOST_TEST_MESSAGE("ccd campaign: seed " << seed << ", " << cases << " cases (CLASH4D_SEED, CLASH4D_CCD_CASES)");
+  std::size_t intervals_alone = 0, handed = 0, collide = 0;
+  for (std::uint64_t i = 0; i < cases; ++i) {
+    Ccd_case c = make_ccd_case(seed, i);
+    BOOST_TEST_CONTEXT("case " << i << " (" << c.family << "), seed " << seed)
+    {
+      collide += agreed(c.query).collide;
+      Ccd_filtered_kernel::Protector protect;
+      Ccd_filtered_kernel k(c.query);
+      ccd_sweep(k);
+      (k.exact_questions() == 0 ? intervals_alone : handed) += 1;
+    }
+  }
+  BOOST_TEST_MESSAGE("  " << collide << " collide; intervals alone " << intervals_alone << ", rationals asked " << handed);
+  BOOST_TEST(intervals_alone >= cases / 5);
+  BOOST_TEST(handed >= cases / 5);
+  BOOST_TEST(collide >= cases / 2);
+  BOOST_TEST(collide < cases);
+}
+
+// The simulation-like mix of the benchmark: mostly clear misses, decided by
+// the swept boxes in intervals.
+BOOST_AUTO_TEST_CASE(filtered_equals_rational_on_the_simulation_mix)
+{
+  std::uint64_t seed = env_number("CLASH4D_SEED", 20261202);
+  BOOST_TEST_MESSAGE("simulation mix: seed " << seed);
+  Random_draw draw(seed);
+  std::size_t near_count = 0;
+  for (int i = 0; i < 400; ++i) {
+    bool near = false, degenerate = false;
+    Ccd_query q = make_simulation_query(i % 2 ? Ccd_type::edge_edge : Ccd_type::vertex_face, draw, near, degenerate);
+    near_count += near;
+    BOOST_TEST_CONTEXT("query " << i << ", seed " << seed) { agreed(q); }
+  }
+  BOOST_TEST(near_count > 0u);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
