@@ -15,6 +15,9 @@ namespace clash4d {
 struct Ccd_options {
   bool earliest = false;   // also t* and (u, v)
   double tolerance = 0;    // double only: |value| <= tolerance is zero
+  // Minimum separation D >= 0 (docs/ccd-queries.md): a query collides when
+  // the primitives come within distance D; 0 is the plain contract.
+  Rational separation = 0;
 };
 
 // A number of an answer: exact (an algebraic number, rational or not) or a

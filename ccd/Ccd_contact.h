@@ -19,12 +19,15 @@ namespace clash4d {
 // Which branch of the test held: it names the contact's (u, v).
 struct Ccd_contact {
   enum class Kind {
-    face,     // N_k != 0: vertex-face through the triangle's plane, edge-edge crossing; index = k
-    segment,  // a point on a segment of the degenerate case; index = the segment (Ccd_polynomials::segment)
+    face,     // through the triangle's plane, or the edges' lines crossing (closest); index = k of N_k
+    segment,  // a point at (within D of) a segment; index = the segment (Ccd_polynomials::segment)
   };
+  // Where on the segment: at the ratio W . U / U . U, or at its start or end
+  // (a segment that is a point is at its start).
+  enum class At { ratio, start, end };
   Kind kind = Kind::face;
   int index = 0;
-  bool point_segment = false;   // segment: its direction is zero (the segment is a point)
+  At at = At::ratio;
 };
 
 namespace ccd_contact_detail {
@@ -45,7 +48,20 @@ std::optional<Ccd_contact> on_segment(Sign& sign, int s, int first)
   } else if (sign(first + 9) < 0 || sign(first + 10) < 0) {
     return std::nullopt;
   }
-  return Ccd_contact{Ccd_contact::Kind::segment, s, point};
+  return Ccd_contact{Ccd_contact::Kind::segment, s, point ? Ccd_contact::At::start : Ccd_contact::At::ratio};
+}
+
+// With a separation D: X within D of [S, S + U]: of its start or its end,
+// or, U != 0, of the line where X's projection lies on the segment
+// (0 <= W . U <= U . U). The distance is the least of those that apply.
+template <class Sign>
+std::optional<Ccd_contact> near_segment(Sign& sign, int s, int first)
+{
+  if (sign(first + 3) >= 0) return Ccd_contact{Ccd_contact::Kind::segment, s, Ccd_contact::At::start};
+  if (sign(first + 4) >= 0) return Ccd_contact{Ccd_contact::Kind::segment, s, Ccd_contact::At::end};
+  if (sign(first) > 0 && sign(first + 1) >= 0 && sign(first + 2) >= 0 && sign(first + 5) >= 0)
+    return Ccd_contact{Ccd_contact::Kind::segment, s, Ccd_contact::At::ratio};
+  return std::nullopt;
 }
 
 // The degenerate case: the contact is a point on one of the segments.
@@ -66,19 +82,42 @@ bool all_nonnegative(Sign& sign, int sigma, std::initializer_list<int> names)
   return true;
 }
 
+// Within D: the interior closest points (the projection on the triangle's
+// plane inside it; the lines' closest points inside both edges), where the
+// distance is that to the plane (lines), or else the least distance of a
+// point to a segment (a vertex to an edge; an edge's end to the other).
+template <class Sign>
+std::optional<Ccd_contact> separated_contact(Ccd_type type, Sign& sign)
+{
+  using namespace ccd_name::separated;
+  bool interior = sign(NN) > 0 &&
+                  (type == Ccd_type::vertex_face ? all_nonnegative(sign, 1, {face_u, face_v, face_w})
+                                                 : all_nonnegative(sign, 1, {cut_u, cut_u1, cut_v, cut_v1}));
+  if (interior) {
+    if (sign(plane) < 0) return std::nullopt;
+    return Ccd_contact{Ccd_contact::Kind::face, 0, Ccd_contact::At::ratio};
+  }
+  int count = type == Ccd_type::vertex_face ? 3 : 4, start = type == Ccd_type::vertex_face ? vf_segment : ee_segment;
+  for (int s = 0; s < count; ++s)
+    if (auto c = near_segment(sign, s, start + s * segment_names)) return c;
+  return std::nullopt;
+}
+
 } // namespace ccd_contact_detail
 
-// Whether the primitives meet at the time `sign` evaluates at; which way.
+// Whether the primitives meet (come within D, when the names are
+// separated ones) at the time `sign` evaluates at; which way.
 // F != 0: the four vertices are not coplanar, no contact. Otherwise, with
 // the first k where N_k != 0 (the triangle is proper, the edges are not
 // parallel), the barycentric or edge parameters are quotients by N_k, and
 // their bounds are the signs of the numerators times that of N_k. With
 // N = 0 the test is one of points on segments.
 template <class Sign>
-std::optional<Ccd_contact> static_contact(Ccd_type type, Sign&& sign)
+std::optional<Ccd_contact> static_contact(Ccd_type type, bool separated, Sign&& sign)
 {
   using namespace ccd_name;
   using namespace ccd_contact_detail;
+  if (separated) return separated_contact(type, sign);
   if (sign(F) != 0) return std::nullopt;
   for (int k = 0; k < 3; ++k) {
     int sigma = sign(N + k);
@@ -87,7 +126,7 @@ std::optional<Ccd_contact> static_contact(Ccd_type type, Sign&& sign)
                       ? all_nonnegative(sign, sigma, {face_u + k, face_v + k, face_w + k})
                       : all_nonnegative(sign, sigma, {cut_u + k, cut_u1 + k, cut_v + k, cut_v1 + k});
     if (!inside) return std::nullopt;
-    return Ccd_contact{Ccd_contact::Kind::face, k, false};
+    return Ccd_contact{Ccd_contact::Kind::face, k, Ccd_contact::At::ratio};
   }
   return type == Ccd_type::vertex_face ? on_any_segment(sign, 3, vf_segment) : on_any_segment(sign, 4, ee_segment);
 }
@@ -102,27 +141,44 @@ struct Ccd_uv_fraction {
 template <class FT>
 Ccd_uv_fraction<FT> uv_fraction(Ccd_polynomials<FT>& p, const Ccd_contact& c)
 {
-  using namespace ccd_name;
   using Poly = Polynomial<FT>;
   const Poly zero(FT(0)), one(FT(1));
+  bool vf = p.type() == Ccd_type::vertex_face;
   if (c.kind == Ccd_contact::Kind::face) {
+    if (p.separated()) {
+      namespace sn = ccd_name::separated;
+      const Poly& nn = p(sn::NN);
+      return vf ? Ccd_uv_fraction<FT>{p(sn::face_u), nn, p(sn::face_v), nn}
+                : Ccd_uv_fraction<FT>{p(sn::cut_u), nn, p(sn::cut_v), nn};
+    }
+    using namespace ccd_name;
     const Poly& n = p(N + c.index);
-    if (p.type() == Ccd_type::vertex_face) return {p(face_u + c.index), n, p(face_v + c.index), n};
-    return {p(cut_u + c.index), n, p(cut_v + c.index), n};
+    return vf ? Ccd_uv_fraction<FT>{p(face_u + c.index), n, p(face_v + c.index), n}
+              : Ccd_uv_fraction<FT>{p(cut_u + c.index), n, p(cut_v + c.index), n};
   }
-  // sigma = W . U / U . U along the segment (0 on a point segment).
-  int first = (p.type() == Ccd_type::vertex_face ? vf_segment : ee_segment) + c.index * segment_names;
-  Poly num = c.point_segment ? zero : p(first + 9);
-  Poly den = c.point_segment ? one : p(first + 9) + p(first + 10);
-  if (p.type() == Ccd_type::vertex_face) {
+  // sigma along the segment: W . U / U . U, or its start or end.
+  Poly num = zero, den = one;
+  if (c.at == Ccd_contact::At::end) {
+    num = one;
+  } else if (c.at == Ccd_contact::At::ratio) {
+    if (p.separated()) {
+      namespace sn = ccd_name::separated;
+      int first = (vf ? sn::vf_segment : sn::ee_segment) + c.index * sn::segment_names;
+      num = p(first + 1), den = p(first);
+    } else {
+      int first = (vf ? ccd_name::vf_segment : ccd_name::ee_segment) + c.index * ccd_name::segment_names;
+      num = p(first + 9), den = p(first + 9) + p(first + 10);
+    }
+  }
+  if (vf) {
     if (c.index == 0) return {num, den, zero, one};        // on [a, b]: u = sigma
     if (c.index == 1) return {zero, one, num, den};        // on [a, c]: v = sigma
     return {den - num, den, num, den};                     // on [b, c]: u = 1 - sigma, v = sigma
   }
-  if (c.index == 0) return {num, den, zero, one};          // b0 on edge a
-  if (c.index == 1) return {num, den, one, one};           // b1 on edge a
-  if (c.index == 2) return {zero, one, num, den};          // a0 on edge b
-  return {one, one, num, den};                             // a1 on edge b
+  if (c.index == 0) return {num, den, zero, one};          // b0 on (near) edge a
+  if (c.index == 1) return {num, den, one, one};           // b1 on (near) edge a
+  if (c.index == 2) return {zero, one, num, den};          // a0 on (near) edge b
+  return {one, one, num, den};                             // a1 on (near) edge b
 }
 
 } // namespace clash4d

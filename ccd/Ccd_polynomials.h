@@ -43,6 +43,32 @@ constexpr int cut_v1 = 13;      // N_k - (D x A)_k = (1 - v) N_k
 constexpr int ee_segment = 16;  // D, D + B against [0, A]; 0, A against [D, D + B]
 constexpr int ee_count = ee_segment + 4 * segment_names;
 constexpr int max_count = ee_count;
+
+// With a minimum separation D (Delta = D^2): distances squared against
+// Delta. NN = |N|^2 > 0 when the triangle is proper (the edges are not
+// parallel). A point-to-segment test of X against [S, S + U] (W = X - S)
+// asks, from its first name o: U . U at o, W . U at o+1, U . U - W . U at
+// o+2, Delta - |W|^2 at o+3 (the start within D), Delta - |W - U|^2 at o+4
+// (the end), Delta |U|^2 - |U x W|^2 at o+5 (the line).
+namespace separated {
+constexpr int NN = 0;           // |N|^2
+constexpr int plane = 1;        // Delta |N|^2 - F^2: the plane (lines) within D
+// Vertex-face: P's projection on the plane is (u, v) with u NN = face_u,
+// v NN = face_v, (1 - u - v) NN = face_w.
+constexpr int face_u = 2;       // (P x E2) . N
+constexpr int face_v = 3;       // (E1 x P) . N
+constexpr int face_w = 4;       // ((E2 - E1) x (P - E1)) . N
+constexpr int vf_segment = 5;   // P against [0, E1], [0, E2], [E1, E2]
+// Edge-edge: the lines' closest points are at u NN = cut_u, v NN = cut_v.
+constexpr int cut_u = 2;        // (D x B) . N
+constexpr int cut_u1 = 3;       // NN - cut_u
+constexpr int cut_v = 4;        // (D x A) . N
+constexpr int cut_v1 = 5;       // NN - cut_v
+constexpr int ee_segment = 6;   // D, D + B against [0, A]; 0, A against [D, D + B]
+constexpr int segment_names = 6;
+constexpr int vf_count = vf_segment + 3 * segment_names;
+constexpr int ee_count = ee_segment + 4 * segment_names;
+} // namespace separated
 } // namespace ccd_name
 
 template <class FT>
@@ -51,8 +77,10 @@ public:
   using Poly = Polynomial<FT>;
   using Vector = Vector3<Poly>;
 
-  // rows: the query's eight rows (Ccd_query::rows) in FT.
-  Ccd_polynomials(Ccd_type type, const std::array<Vector3<FT>, 8>& rows) : type_(type)
+  // rows: the query's eight rows (Ccd_query::rows) in FT; delta: D^2 for a
+  // minimum separation D > 0 (the names of ccd_name::separated), or none.
+  Ccd_polynomials(Ccd_type type, const std::array<Vector3<FT>, 8>& rows, std::optional<FT> delta = std::nullopt)
+    : type_(type), delta_(std::move(delta))
   {
     std::array<Vector, 4> x;
     for (int i = 0; i < 4; ++i)
@@ -63,7 +91,7 @@ public:
   }
 
   Ccd_type type() const { return type_; }
-  int count() const { return type_ == Ccd_type::vertex_face ? ccd_name::vf_count : ccd_name::ee_count; }
+  bool separated() const { return delta_.has_value(); }
 
   const Poly& operator()(int name)
   {
@@ -98,6 +126,7 @@ private:
 
   Poly make(int name)
   {
+    if (delta_) return make_separated(name);
     using namespace ccd_name;
     const Vector& first = v_[0];   // P or A
     const Vector& second = v_[1];  // E1 or B
@@ -128,6 +157,43 @@ private:
     return *n_;
   }
 
+  Poly make_separated(int name)
+  {
+    using namespace ccd_name::separated;
+    const Vector &first = v_[0], &second = v_[1], &third = v_[2];
+    const Poly delta(*delta_);
+    if (name == NN) return dot(n(), n());
+    if (name == plane) {
+      Poly f = dot(n(), type_ == Ccd_type::vertex_face ? first : third);
+      return delta * dot(n(), n()) - f * f;
+    }
+    int segment_start = type_ == Ccd_type::vertex_face ? vf_segment : ee_segment;
+    if (name >= segment_start) {
+      Segment g = segment((name - segment_start) / segment_names);
+      Vector w = minus(g.point, g.start);
+      const Vector& u = g.direction;
+      switch ((name - segment_start) % segment_names) {
+        case 0: return dot(u, u);
+        case 1: return dot(w, u);
+        case 2: return dot(u, u) - dot(w, u);
+        case 3: return delta - dot(w, w);
+        case 4: return delta - dot(minus(w, u), minus(w, u));
+        default: return delta * dot(u, u) - dot(cross(u, w), cross(u, w));
+      }
+    }
+    if (type_ == Ccd_type::vertex_face) {
+      const Vector &P = first, &E1 = second, &E2 = third;
+      if (name == face_u) return dot(cross(P, E2), n());
+      if (name == face_v) return dot(cross(E1, P), n());
+      return dot(cross(minus(E2, E1), minus(P, E1)), n());
+    }
+    const Vector &A = first, &B = second, &D = third;
+    if (name == cut_u) return dot(cross(D, B), n());
+    if (name == cut_u1) return dot(n(), n()) - dot(cross(D, B), n());
+    if (name == cut_v) return dot(cross(D, A), n());
+    return dot(n(), n()) - dot(cross(D, A), n());
+  }
+
   Poly segment_name(int s, int i) const
   {
     Segment g = segment(s);
@@ -140,6 +206,7 @@ private:
   }
 
   Ccd_type type_;
+  std::optional<FT> delta_;
   std::array<Vector, 3> v_;
   std::optional<Vector> n_;
   std::array<std::optional<Poly>, ccd_name::max_count> table_;   // made when first asked

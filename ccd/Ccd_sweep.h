@@ -18,8 +18,11 @@
 // A time kernel K provides:
 //   K::Time, K::is_exact         a time (0, 1, or a root of a named polynomial)
 //   k.type()                     the query's type
+//   k.separated()                whether the names are those of a minimum
+//                                separation (ccd_name::separated)
 //   k.swept_boxes_apart()        the primitives' boxes over [0, 1] do not meet
-//                                (a quick "no" that needs no polynomial)
+//                                (or come within the separation): a quick "no"
+//                                that needs no polynomial
 //   k.zero()                     t = 0
 //   k.is_end(t)                  t = 1
 //   k.sign_at(name, t)           the sign of a named polynomial at t
@@ -55,13 +58,13 @@ Ccd_sweep_result<typename K::Time> ccd_sweep(K& k)
   Time t = k.zero();
   Ccd_path path;
   for (;;) {
-    if (auto c = static_contact(k.type(), [&](int name) { return k.sign_at(name, t); })) {
+    if (auto c = static_contact(k.type(), k.separated(), [&](int name) { return k.sign_at(name, t); })) {
       result = {true, t, *c};
       return result;
     }
     if (k.is_end(t)) return result;
     path.clear();
-    auto after = static_contact(k.type(), [&](int name) {
+    auto after = static_contact(k.type(), k.separated(), [&](int name) {
       path.push_back(name);
       return k.sign_after(name, t);
     });

@@ -30,11 +30,20 @@ int sure_sign(const Interval& x) { return Interval_isolation<Poly::capacity>::su
 
 } // namespace
 
+Ccd_filtered_kernel::Ccd_filtered_kernel(const Ccd_query& q, const Rational& separation)
+  : query_(q), separation_(separation), separation_at_(CGAL::to_interval(separation)),
+    p_(q.type(), q.enclosure(),
+       CGAL::is_positive(separation) ? std::optional<Interval>(separation_at_ * separation_at_) : std::nullopt)
+{
+  if (CGAL::FPU_get_cw() != CGAL_FE_UPWARD)
+    throw std::logic_error("Ccd_filtered_kernel: made without its Protector (the intervals need upward rounding)");
+}
+
 Ccd_rational_kernel& Ccd_filtered_kernel::rational()
 {
   if (!rational_) {
     Nearest nearest;
-    rational_.emplace(query_);
+    rational_.emplace(query_, separation_);
   }
   return *rational_;
 }
@@ -43,7 +52,7 @@ bool Ccd_filtered_kernel::swept_boxes_apart()
 {
   bool unsure = false;
   bool apart = clash4d::swept_boxes_apart(type(), query_.enclosure(), [&](const Interval& a, const Interval& b) {
-    CGAL::Uncertain<bool> less = a < b;
+    CGAL::Uncertain<bool> less = a + separation_at_ < b;
     if (CGAL::is_certain(less)) return less.make_certain();
     unsure = true;
     return false;

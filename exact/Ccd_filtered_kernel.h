@@ -44,10 +44,12 @@ public:
     double value = 0;   // the rational 0 or 1, when name < 0
   };
 
-  // The caller holds the Protector (upward rounding) while it asks.
-  explicit Ccd_filtered_kernel(const Ccd_query& q) : query_(q), p_(q.type(), q.enclosure()) {}
+  // The caller holds the Protector (upward rounding) from here on.
+  // separation: the minimum separation D (0: the plain question).
+  Ccd_filtered_kernel(const Ccd_query& q, const Rational& separation = Rational(0));
 
   Ccd_type type() const { return p_.type(); }
+  bool separated() const { return p_.separated(); }
 
   bool swept_boxes_apart();
   Time zero() const { return Time{-1, 0, 0.0}; }
@@ -76,6 +78,8 @@ private:
   int compare(const Time& a, const Time& b);
 
   const Ccd_query& query_;
+  Rational separation_;
+  Interval separation_at_;   // its enclosure
   Ccd_polynomials<Interval> p_;
   std::optional<Ccd_rational_kernel> rational_;
   std::array<std::optional<std::vector<Root>>, ccd_name::max_count> roots_;

@@ -23,7 +23,7 @@ Ccd_earliest exact_earliest(Ccd_rational_kernel& k, const Algebraic& t, const Cc
 
 Ccd_answer ccd_rational(const Ccd_query& query, const Ccd_options& options)
 {
-  Ccd_rational_kernel k(query);
+  Ccd_rational_kernel k(query, options.separation);
   auto r = ccd_sweep(k);
   Ccd_answer a;
   a.collide = r.collide;
@@ -37,7 +37,7 @@ Ccd_answer ccd_exact(const Ccd_query& query, const Ccd_options& options)
   // answer is the rational kernel's alone.
   if (!Interval_kernel::encloses_here()) return ccd_rational(query, options);
   Ccd_filtered_kernel::Protector protect;   // the intervals' upward rounding; rationals run in nearest
-  Ccd_filtered_kernel k(query);
+  Ccd_filtered_kernel k(query, options.separation);
   auto r = ccd_sweep(k);
   Ccd_answer a;
   a.collide = r.collide;

@@ -22,14 +22,22 @@ public:
   using Time = Algebraic;
   static constexpr bool is_exact = true;
 
-  explicit Ccd_rational_kernel(const Ccd_query& q) : query_(q), p_(q.type(), q.rows()) {}
+  // separation: the minimum separation D (0: the plain question).
+  explicit Ccd_rational_kernel(const Ccd_query& q, const Rational& separation = Rational(0))
+    : query_(q), separation_(separation),
+      p_(q.type(), q.rows(), CGAL::is_positive(separation) ? std::optional<Rational>(separation * separation) : std::nullopt)
+  {
+  }
 
   Ccd_type type() const { return p_.type(); }
+  bool separated() const { return p_.separated(); }
   Ccd_polynomials<Rational>& polynomials() { return p_; }
 
+  // Apart by more than the separation on some axis.
   bool swept_boxes_apart() const
   {
-    return clash4d::swept_boxes_apart(type(), query_.rows(), [](const Rational& a, const Rational& b) { return a < b; });
+    const Rational& d = separation_;
+    return clash4d::swept_boxes_apart(type(), query_.rows(), [&d](const Rational& a, const Rational& b) { return a + d < b; });
   }
 
   Time zero() const { return Algebraic(Rational(0)); }
@@ -81,6 +89,7 @@ public:
 
 private:
   const Ccd_query& query_;
+  Rational separation_;
   Ccd_polynomials<Rational> p_;
   std::array<std::optional<std::vector<Algebraic>>, ccd_name::max_count> roots_;
 };

@@ -2,12 +2,16 @@
 
 #include "ccd/Ccd_sweep.h"
 #include "float/Ccd_double_kernel.h"
+#include <cmath>
+#include <stdexcept>
 
 namespace clash4d {
 
 Ccd_answer ccd_double(const Ccd_query& query, const Ccd_options& options)
 {
-  Ccd_double_kernel k(query, options.tolerance);
+  double separation = nearest_double(options.separation);
+  if (!std::isfinite(separation)) throw std::range_error("the separation is beyond the range of double");
+  Ccd_double_kernel k(query, options.tolerance, separation);
   auto r = ccd_sweep(k);
   Ccd_answer a;
   a.collide = r.collide;

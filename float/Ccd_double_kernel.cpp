@@ -54,8 +54,9 @@ void numeric_roots(const Polynomial<double>& g, std::vector<double>& out)
 
 } // namespace
 
-Ccd_double_kernel::Ccd_double_kernel(const Ccd_query& q, double tolerance)
-  : tolerance_(tolerance), rows_(double_rows(q)), p_(q.type(), rows_)
+Ccd_double_kernel::Ccd_double_kernel(const Ccd_query& q, double tolerance, double separation)
+  : tolerance_(tolerance), separation_(separation), rows_(double_rows(q)),
+    p_(q.type(), rows_, separation > 0 ? std::optional<double>(separation * separation) : std::nullopt)
 {
 }
 

@@ -27,15 +27,17 @@ public:
   };
 
   // Throws std::range_error when a number is beyond the double range.
-  Ccd_double_kernel(const Ccd_query& q, double tolerance);
+  // separation: the minimum separation D (0: the plain question).
+  Ccd_double_kernel(const Ccd_query& q, double tolerance, double separation = 0);
 
   Ccd_type type() const { return p_.type(); }
+  bool separated() const { return p_.separated(); }
   Ccd_polynomials<double>& polynomials() { return p_; }
-  // Boxes closer than the tolerance are not apart, as a float engine pads
-  // its boxes by its contact tolerance.
+  // Boxes closer than the separation and the tolerance are not apart, as a
+  // float engine pads its boxes by its contact tolerance.
   bool swept_boxes_apart() const
   {
-    double pad = tolerance_;
+    double pad = separation_ + tolerance_;
     return clash4d::swept_boxes_apart(type(), rows_, [pad](double a, double b) { return a + pad < b; });
   }
   Time zero() const { return {}; }
@@ -48,7 +50,7 @@ private:
   int sign(double x) const { return x > tolerance_ ? 1 : (x < -tolerance_ ? -1 : 0); }
   const std::vector<double>& roots(int name);
 
-  double tolerance_;
+  double tolerance_, separation_;
   std::array<Vector3<double>, 8> rows_;
   Ccd_polynomials<double> p_;
   std::array<std::optional<std::vector<double>>, ccd_name::max_count> roots_;

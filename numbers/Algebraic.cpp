@@ -362,7 +362,8 @@ CGAL::Sign Algebraic::sign_of(const std::vector<Rational>& g) const
   }
 }
 
-Algebraic Algebraic::quotient_at(const Algebraic& r, const std::vector<Rational>& num, const std::vector<Rational>& den)
+std::vector<Rational> Algebraic::field_element(const Algebraic& r, const std::vector<Rational>& num,
+                                               const std::vector<Rational>& den)
 {
   Fmpq_poly N, D;
   set_poly(N, num);
@@ -371,23 +372,34 @@ Algebraic Algebraic::quotient_at(const Algebraic& r, const std::vector<Rational>
     Fmpq x(r.value_), nv, dv;
     fmpq_poly_evaluate_fmpq(nv.q, N.p, x.q);
     fmpq_poly_evaluate_fmpq(dv.q, D.p, x.q);
-    if (fmpq_is_zero(dv.q)) throw std::logic_error("Algebraic::quotient_at: a zero denominator");
+    if (fmpq_is_zero(dv.q)) throw std::logic_error("Algebraic::field_element: a zero denominator");
     fmpq_div(nv.q, nv.q, dv.q);
-    return Algebraic(from_fmpq(nv.q));
+    return {from_fmpq(nv.q)};
   }
   Fmpq_poly m, alpha, g, s, t;
   set_poly(m, r.rep_->poly);
   fmpq_poly_rem(N.p, N.p, m.p);
   fmpq_poly_rem(D.p, D.p, m.p);
-  if (fmpq_poly_is_zero(D.p)) throw std::logic_error("Algebraic::quotient_at: a zero denominator");
+  if (fmpq_poly_is_zero(D.p)) throw std::logic_error("Algebraic::field_element: a zero denominator");
   // 1 = s D + t m (m irreducible, D not a multiple): 1 / D(r) = s(r).
   fmpq_poly_xgcd(g.p, s.p, t.p, D.p, m.p);
   mul_mod(alpha.p, N.p, s.p, m.p);
-  if (fmpq_poly_degree(alpha.p) <= 0) {
+  std::vector<Rational> out(static_cast<std::size_t>(std::max<slong>(fmpq_poly_length(alpha.p), 1)));
+  for (std::size_t i = 0; i < out.size(); ++i) {
     Fmpq c;
-    fmpq_poly_get_coeff_fmpq(c.q, alpha.p, 0);
-    return Algebraic(from_fmpq(c.q));
+    fmpq_poly_get_coeff_fmpq(c.q, alpha.p, static_cast<slong>(i));
+    out[i] = from_fmpq(c.q);
   }
+  return out;
+}
+
+Algebraic Algebraic::quotient_at(const Algebraic& r, const std::vector<Rational>& num, const std::vector<Rational>& den)
+{
+  std::vector<Rational> element = field_element(r, num, den);
+  if (element.size() == 1) return Algebraic(element[0]);
+  Fmpq_poly m, alpha;
+  set_poly(m, r.rep_->poly);
+  set_poly(alpha, element);
   // alpha(r)'s minimal polynomial is that of multiplication by alpha on
   // Q(r) = Q[x] / (m), in the basis 1, x, ..., x^(d-1).
   slong d = fmpq_poly_degree(m.p);

@@ -39,6 +39,11 @@ public:
   // of its own (its minimal polynomial from the multiplication matrix,
   // FLINT's fmpq_mat_minpoly, and its root chosen by enclosure).
   static Algebraic quotient_at(const Algebraic& r, const std::vector<Rational>& num, const std::vector<Rational>& den);
+  // The same element as a polynomial in r of degree below r's (its
+  // coefficients, constant first; one number when it is rational): what a
+  // check in Q(r) reads.
+  static std::vector<Rational> field_element(const Algebraic& r, const std::vector<Rational>& num,
+                                             const std::vector<Rational>& den);
 
   bool is_rational() const { return !rep_; }
   const Rational& rational() const { return value_; }   // when is_rational()

@@ -17,6 +17,7 @@
 #include "scene/Input_error.h"
 #include "scene/Number_text.h"
 #include "scene/Random_draw.h"
+#include "support/Ccd_oracle.h"
 #include "support/Cli_run.h"
 #include <cstdlib>
 #include <filesystem>
@@ -376,6 +377,97 @@ BOOST_AUTO_TEST_CASE(filtered_equals_rational_on_the_simulation_mix)
     BOOST_TEST_CONTEXT("query " << i << ", seed " << seed) { agreed(q); }
   }
   BOOST_TEST(near_count > 0u);
+}
+
+// Against the brute-force oracle (tests/support/Ccd_oracle.h: written from
+// docs/ccd-queries.md alone, its own Sturm sequences and distance test):
+// the verdict, t* compared exactly, and (u, v) checked in Q(t*) by the
+// oracle's own arithmetic; with a separation, the verdict and t*.
+namespace oracle = clash4d::ccd_oracle;
+
+namespace {
+
+oracle::Query oracle_query(const Ccd_query& q)
+{
+  oracle::Query out;
+  for (std::size_t i = 0; i < 8; ++i)
+    for (std::size_t k = 0; k < 3; ++k) out[i][k] = mpq_class(q.rows()[i][k].mpq());
+  return out;
+}
+
+oracle::Real oracle_real(const Algebraic& x)
+{
+  oracle::Real r;
+  r.is_rational = x.is_rational();
+  if (r.is_rational) {
+    r.value = mpq_class(x.rational().mpq());
+    return r;
+  }
+  for (const mpz_class& c : x.polynomial()) r.poly.push_back(mpq_class(c));
+  r.lo = mpq_class(x.lower().mpq());
+  r.hi = mpq_class(x.upper().mpq());
+  return r;
+}
+
+std::vector<mpq_class> oracle_poly(const std::vector<Rational>& p)
+{
+  std::vector<mpq_class> out;
+  for (const Rational& c : p) out.push_back(mpq_class(c.mpq()));
+  return out;
+}
+
+// A query of small integer coordinates over 2: many degenerate
+// configurations (collinear, coplanar, parallel) by chance.
+Ccd_query small_grid_query(Random_draw& d)
+{
+  Ccd_query::Rows r;
+  for (auto& row : r)
+    for (auto& x : row) x = Rational(static_cast<int>(d.range(-2, 2)), 2);
+  return Ccd_query(d.percent(50) ? Ccd_type::vertex_face : Ccd_type::edge_edge, r);
+}
+
+void check_against_oracle(const Ccd_query& q, const Rational& separation)
+{
+  Ccd_options o;
+  o.earliest = true;
+  o.separation = separation;
+  Ccd_answer a = ccd_exact(q, o), r = ccd_rational(q, o);
+  oracle::Type type = q.type() == Ccd_type::vertex_face ? oracle::Type::vertex_face : oracle::Type::edge_edge;
+  oracle::Answer truth = oracle::solve(type, oracle_query(q), mpq_class(separation.mpq()));
+  BOOST_REQUIRE_EQUAL(a.collide, truth.collide);
+  BOOST_REQUIRE_EQUAL(r.collide, truth.collide);
+  if (!a.collide) return;
+  const Algebraic& t = exact(a.earliest->t);
+  BOOST_TEST(oracle::compare(truth.t_star, oracle_real(t)) == 0,
+             "t* " << t.to_text() << " against the oracle's " << oracle::describe(truth.t_star));
+  BOOST_TEST((t == exact(r.earliest->t)));
+  if (CGAL::is_positive(separation)) return;
+  const Ccd_uv_fraction<Rational>& f = *a.earliest->uv;
+  auto u = Algebraic::field_element(t, f.u_num.coefficients(), f.u_den.coefficients());
+  auto v = Algebraic::field_element(t, f.v_num.coefficients(), f.v_den.coefficients());
+  BOOST_TEST(oracle::is_contact(type, oracle_query(q), oracle_real(t), oracle_poly(u), oracle_poly(v)));
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(the_oracle_agrees)
+{
+  std::uint64_t seed = env_number("CLASH4D_SEED", 20261202), cases = env_number("CLASH4D_CCD_ORACLE_CASES", 240);
+  BOOST_TEST_MESSAGE("oracle campaign: seed " << seed << ", " << cases
+                                              << " cases of each kind (CLASH4D_SEED, CLASH4D_CCD_ORACLE_CASES)");
+  Random_draw draw(seed);
+  for (std::uint64_t i = 0; i < cases; ++i) {
+    Ccd_case c = make_ccd_case(seed + 1, i);
+    BOOST_TEST_CONTEXT("family case " << i << " (" << c.family << "), seed " << seed) { check_against_oracle(c.query, 0); }
+    Ccd_query g = small_grid_query(draw);
+    BOOST_TEST_CONTEXT("grid query " << i << ", seed " << seed) { check_against_oracle(g, 0); }
+    Rational separation(static_cast<int>(draw.range(1, 4)), 4);
+    if (i % 3 == 0)
+      BOOST_TEST_CONTEXT("grid query " << i << " with separation " << separation << ", seed " << seed)
+      {
+        check_against_oracle(g, separation);
+      }
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
