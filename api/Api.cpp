@@ -7,18 +7,25 @@
 // (Rational, Scene, ...); the pipeline's are written in::Name.
 #include "clash4d/clash4d.h"
 
+#include "ccd/Ccd_query.h"
 #include "compare/Comparer.h"
+#include "exact/Ccd_instantiation.h"
 #include "exact/Exact_checker.h"
 #include "exact/Exact_instantiation.h"
+#include "float/Ccd_double_instantiation.h"
 #include "float/Double_instantiation.h"
+#include "numbers/Algebraic.h"
 #include "numbers/Rational.h"
 #include "scene/Input_error.h"
 #include "scene/Json_reader.h"
+#include "scene/Number_json.h"
 #include "scene/Number_text.h"
 #include "scene/Scene_reader.h"
 #include "scene/Scene_writer.h"
 
 #include <nlohmann/json.hpp>
+#include <tbb/parallel_for.h>
+#include <cmath>
 #include <mutex>
 #include <optional>
 #include <new>
@@ -95,6 +102,92 @@ Rational operator/(const Rational& a, const Rational& b)
   if (b == Rational(0)) throw std::domain_error("clash4d::api::Rational: division by zero");
   return external(internal(a) / internal(b));
 }
+
+// The pipeline's algebraic number, never refined in place: the pipeline
+// refines a number's isolating interval inside const calls, so each call
+// here works on a copy (a shared polynomial and two rational handles), and
+// one Algebraic is safe to use from several threads.
+struct Algebraic::Impl {
+  in::Algebraic value;
+
+  static Algebraic make(const in::Algebraic& x) { return Algebraic(std::make_shared<const Impl>(Impl{x})); }
+};
+
+namespace {
+
+// "8x^2 - 1", "32x^2 - 32x + 7": coefficients constant first, the last one
+// positive (a minimal polynomial).
+std::string polynomial_text(const std::vector<mpz_class>& p)
+{
+  std::string out;
+  for (std::size_t i = p.size(); i-- > 0;) {
+    if (p[i] == 0) continue;
+    mpz_class c = abs(p[i]);
+    out += out.empty() ? (p[i] < 0 ? "-" : "") : (p[i] < 0 ? " - " : " + ");
+    if (c != 1 || i == 0) out += c.get_str();
+    if (i > 0) out += "x";
+    if (i > 1) out += "^" + std::to_string(i);
+  }
+  return out;
+}
+
+} // namespace
+
+Algebraic::Algebraic()
+{
+  static const std::shared_ptr<const Impl> zero = std::make_shared<const Impl>(Impl{in::Algebraic()});
+  impl_ = zero;
+}
+
+Algebraic::Algebraic(const Rational& q) : impl_(std::make_shared<const Impl>(Impl{in::Algebraic(internal(q))})) {}
+
+bool Algebraic::is_rational() const { return impl_->value.is_rational(); }
+
+Rational Algebraic::rational() const
+{
+  if (!is_rational()) throw std::logic_error("clash4d::api::Algebraic::rational: " + text() + " is not rational");
+  return external(impl_->value.rational());
+}
+
+std::vector<std::string> Algebraic::polynomial() const
+{
+  const in::Algebraic& x = impl_->value;
+  if (x.is_rational()) {
+    const in::Rational& q = x.rational();
+    return {mpz_class(-mpz_class(mpq_numref(q.mpq()))).get_str(), mpz_class(mpq_denref(q.mpq())).get_str()};
+  }
+  std::vector<std::string> out;
+  for (const mpz_class& c : x.polynomial()) out.push_back(c.get_str());
+  return out;
+}
+
+std::array<Rational, 2> Algebraic::between() const
+{
+  in::Algebraic x = impl_->value;
+  if (x.is_rational()) return {external(x.rational()), external(x.rational())};
+  auto [lo, hi] = x.short_interval();
+  return {external(lo), external(hi)};
+}
+
+double Algebraic::to_double() const { return in::Algebraic(impl_->value).to_double(); }
+
+std::string Algebraic::approx() const { return in::Algebraic(impl_->value).approx(); }
+
+std::string Algebraic::text() const
+{
+  in::Algebraic x = impl_->value;
+  if (x.is_rational()) return in::to_string(x.rational());
+  std::array<Rational, 2> b = between();
+  return "root of " + polynomial_text(x.polynomial()) + " in (" + b[0].to_string() + ", " + b[1].to_string() +
+         ") ~ " + x.approx();
+}
+
+int compare(const Algebraic& a, const Algebraic& b)
+{
+  return in::compare(in::Algebraic(a.impl().value), in::Algebraic(b.impl().value));
+}
+
+int compare(const Algebraic& a, const Rational& b) { return in::compare(in::Algebraic(a.impl().value), internal(b)); }
 
 // ---------------------------------------------------------------- errors
 
@@ -398,11 +491,17 @@ Colliding_pair answer_pair(const in::Pair_answer& p, Semantics semantics)
 
 namespace {
 
+// A tolerance applies to Number::double_ only, and is >= 0.
+void check_tolerance(const char* function, Number number, double tolerance)
+{
+  if (tolerance != 0 && number != Number::double_)
+    throw std::invalid_argument(std::string("clash4d::api::") + function + ": a tolerance applies to Number::double_ only");
+  if (!(tolerance >= 0)) throw std::invalid_argument(std::string("clash4d::api::") + function + ": the tolerance must be >= 0");
+}
+
 in::Check_options internal(const Check_options& options)
 {
-  if (options.tolerance != 0 && options.number != Number::double_)
-    throw std::invalid_argument("clash4d::api::check: a tolerance applies to Number::double_ only");
-  if (!(options.tolerance >= 0)) throw std::invalid_argument("clash4d::api::check: the tolerance must be >= 0");
+  check_tolerance("check", options.number, options.tolerance);
   in::Check_options o;
   o.all_pairs = options.all_pairs;
   o.earliest = options.earliest;
@@ -458,6 +557,131 @@ Check_result check(const Scene& scene, const std::vector<Motion>& motions, const
     return 0;
   });
   return result_of(run_check(scene, &parsed, options), options);
+}
+
+// ---------------------------------------------------------------- CCD
+
+namespace {
+
+in::Ccd_type internal(Ccd_type t) { return t == Ccd_type::edge_edge ? in::Ccd_type::edge_edge : in::Ccd_type::vertex_face; }
+
+} // namespace
+
+const char* name(Ccd_type type) { return in::ccd_type_name(internal(type)); }
+
+Ccd_type ccd_type_from_name(const std::string& name)
+{
+  std::optional<in::Ccd_type> t = in::ccd_type_from_name(name);
+  if (!t) throw std::invalid_argument("unknown CCD type \"" + name + "\": vertex-face (vf) or edge-edge (ee)");
+  return *t == in::Ccd_type::edge_edge ? Ccd_type::edge_edge : Ccd_type::vertex_face;
+}
+
+namespace {
+
+const char* const ccd_file = "<query>";
+
+in::Ccd_options internal(const Ccd_options& options)
+{
+  check_tolerance("ccd", options.number, options.tolerance);
+  in::Ccd_options o;
+  o.earliest = options.earliest;
+  o.tolerance = options.tolerance;
+  o.separation = internal(options.separation);
+  if (o.separation < 0) throw std::invalid_argument("clash4d::api::ccd: the separation must be >= 0");
+  if (options.number == Number::double_ && !std::isfinite(in::round_to_nearest(o.separation)))
+    throw Input_error(ccd_file, "separation",
+                      "the number " + options.separation.to_string() +
+                          " is beyond the range of double (the double instantiation cannot read this query)",
+                      exit_invalid);
+  return o;
+}
+
+// The pipeline's query; with Number::double_, every number within the
+// double range, else Input_error at place + "t0[i][k]" (as `clash4d ccd`).
+in::Ccd_query internal(Ccd_type type, const Ccd_query& q, Number number, const std::string& place)
+{
+  in::Ccd_query::Rows rows;
+  for (std::size_t i = 0; i < 8; ++i)
+    for (std::size_t k = 0; k < 3; ++k) rows[i][k] = internal((i < 4 ? q.t0[i] : q.t1[i - 4])[k]);
+  in::Ccd_query out(internal(type), rows);
+  if (number == Number::double_)
+    for (std::size_t i = 0; i < 8; ++i)
+      for (std::size_t k = 0; k < 3; ++k)
+        if (!std::isfinite(out.nearest()[i][k]))
+          throw Input_error(ccd_file,
+                            place + (i < 4 ? "t0[" : "t1[") + std::to_string(i % 4) + "][" + std::to_string(k) + "]",
+                            "the number " + in::to_string(rows[i][k]) +
+                                " is beyond the range of double (the double instantiation cannot read this query)",
+                            exit_invalid);
+  return out;
+}
+
+using Ccd_decide = in::Ccd_answer (*)(const in::Ccd_query&, const in::Ccd_options&);
+
+Ccd_decide ccd_decider(Number number)
+{
+  if (number == Number::rational) return in::ccd_rational;
+  if (number == Number::double_) return in::ccd_double;
+  return in::ccd_exact;
+}
+
+// An answer's number: exact, or a double's shortest decimal (as check's).
+Algebraic ccd_number(const in::Ccd_number& x)
+{
+  if (const in::Algebraic* a = std::get_if<in::Algebraic>(&x)) return Algebraic::Impl::make(*a);
+  return Algebraic(answer_number(in::shortest_decimal(std::get<double>(x))));
+}
+
+Ccd_result ccd_result(const in::Ccd_answer& a)
+{
+  Ccd_result r;
+  r.collide = a.collide;
+  if (a.earliest) {
+    r.t = ccd_number(a.earliest->t);
+    r.u = ccd_number(a.earliest->u);
+    r.v = ccd_number(a.earliest->v);
+  }
+  return r;
+}
+
+} // namespace
+
+Ccd_result ccd(Ccd_type type, const Ccd_query& query, const Ccd_options& options)
+{
+  in::Ccd_options o = internal(options);
+  in::Ccd_query q = internal(type, query, options.number, "");
+  return ccd_result(guarded(ccd_file, [&] { return ccd_decider(options.number)(q, o); }));
+}
+
+Ccd_result ccd_vertex_face(const Vec3& p_t0, const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0, const Vec3& p_t1,
+                           const Vec3& a_t1, const Vec3& b_t1, const Vec3& c_t1, const Ccd_options& options)
+{
+  return ccd(Ccd_type::vertex_face, {{p_t0, a_t0, b_t0, c_t0}, {p_t1, a_t1, b_t1, c_t1}}, options);
+}
+
+Ccd_result ccd_edge_edge(const Vec3& a0_t0, const Vec3& a1_t0, const Vec3& b0_t0, const Vec3& b1_t0, const Vec3& a0_t1,
+                         const Vec3& a1_t1, const Vec3& b0_t1, const Vec3& b1_t1, const Ccd_options& options)
+{
+  return ccd(Ccd_type::edge_edge, {{a0_t0, a1_t0, b0_t0, b1_t0}, {a0_t1, a1_t1, b0_t1, b1_t1}}, options);
+}
+
+std::vector<Ccd_result> ccd_batch(Ccd_type type, const std::vector<Ccd_query>& queries, const Ccd_options& options)
+{
+  in::Ccd_options o = internal(options);
+  std::vector<in::Ccd_query> qs;
+  qs.reserve(queries.size());
+  for (std::size_t j = 0; j < queries.size(); ++j)
+    qs.push_back(internal(type, queries[j], options.number, "queries[" + std::to_string(j) + "]."));
+  Ccd_decide decide = ccd_decider(options.number);
+  std::vector<in::Ccd_answer> answers(qs.size());
+  guarded(ccd_file, [&] {
+    tbb::parallel_for(std::size_t(0), qs.size(), [&](std::size_t j) { answers[j] = decide(qs[j], o); });
+    return 0;
+  });
+  std::vector<Ccd_result> out;
+  out.reserve(answers.size());
+  for (const in::Ccd_answer& a : answers) out.push_back(ccd_result(a));
+  return out;
 }
 
 // ---------------------------------------------------------------- compare

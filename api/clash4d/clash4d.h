@@ -27,6 +27,9 @@
 // message, exit code 2 = invalid or 3 = a resource limit, as the command line
 // exits). An internal error (a bug) throws std::logic_error.
 //
+// CCD queries (vertex-face, edge-edge; `clash4d ccd`) answer with exact
+// algebraic numbers (Algebraic): see "CCD" below.
+//
 // Not here yet: certificates (clash4d check --certificate, clash4d verify).
 #ifndef CLASH4D_API_CLASH4D_H
 #define CLASH4D_API_CLASH4D_H
@@ -90,6 +93,68 @@ inline bool operator!=(const Rational& a, const Rational& b) { return !(a == b);
 inline bool operator>(const Rational& a, const Rational& b) { return b < a; }
 inline bool operator<=(const Rational& a, const Rational& b) { return !(b < a); }
 inline bool operator>=(const Rational& a, const Rational& b) { return !(a < b); }
+
+// A real algebraic number, exactly: a rational, or the one root of its
+// minimal polynomial (integer coefficients, irreducible, degree at least 2)
+// in an open interval (the scene format's "Exact numbers that are not
+// rational"). The answers of CCD queries (t*, u, v) are such numbers.
+// Immutable and cheap to copy (shared); usable from several threads.
+class CLASH4D_API Algebraic {
+public:
+  Algebraic();                                 // 0
+  explicit Algebraic(const Rational& q);       // q
+
+  bool is_rational() const;
+  // The number when is_rational(); throws std::logic_error otherwise.
+  Rational rational() const;
+  // The minimal polynomial's integer coefficients as decimal strings, the
+  // constant term first, no common factor, the last one positive: {"-1",
+  // "0", "8"} is 8x^2 - 1. For a rational p/q it is q x - p: {"-p", "q"}.
+  std::vector<std::string> polynomial() const;
+  // An open interval (lo, hi) holding this number and no other root of
+  // polynomial(), with short decimal ends (the coarsest [n / 10^k, (n + 1) /
+  // 10^k]; a function of the number alone): {0, 1} for 1/(2 sqrt 2), {3/5,
+  // 7/10} for the root of 32x^2 - 32x + 7 near 0.68 (the other is near 0.32).
+  // Both ends are the number when it is rational.
+  std::array<Rational, 2> between() const;
+  // The double nearest to the number (ties to even), and the shortest
+  // decimal that reads back to it ("0.3535533905932738").
+  double to_double() const;
+  std::string approx() const;
+  // "p/q" (or "p") when rational, otherwise
+  // "root of 8x^2 - 1 in (0, 1) ~ 0.3535533905932738".
+  std::string text() const;
+
+  // The pipeline's number: the library's own use (its type is not public).
+  struct Impl;
+  const Impl& impl() const { return *impl_; }
+
+private:
+  explicit Algebraic(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
+  std::shared_ptr<const Impl> impl_;
+};
+// -1, 0 or 1 as a < b, a = b, a > b; exact (isolating intervals are refined
+// until they separate, a zero is decided on the minimal polynomials).
+CLASH4D_API int compare(const Algebraic& a, const Algebraic& b);
+CLASH4D_API int compare(const Algebraic& a, const Rational& b);
+inline bool operator==(const Algebraic& a, const Algebraic& b) { return compare(a, b) == 0; }
+inline bool operator!=(const Algebraic& a, const Algebraic& b) { return compare(a, b) != 0; }
+inline bool operator<(const Algebraic& a, const Algebraic& b) { return compare(a, b) < 0; }
+inline bool operator>(const Algebraic& a, const Algebraic& b) { return compare(a, b) > 0; }
+inline bool operator<=(const Algebraic& a, const Algebraic& b) { return compare(a, b) <= 0; }
+inline bool operator>=(const Algebraic& a, const Algebraic& b) { return compare(a, b) >= 0; }
+inline bool operator==(const Algebraic& a, const Rational& b) { return compare(a, b) == 0; }
+inline bool operator!=(const Algebraic& a, const Rational& b) { return compare(a, b) != 0; }
+inline bool operator<(const Algebraic& a, const Rational& b) { return compare(a, b) < 0; }
+inline bool operator>(const Algebraic& a, const Rational& b) { return compare(a, b) > 0; }
+inline bool operator<=(const Algebraic& a, const Rational& b) { return compare(a, b) <= 0; }
+inline bool operator>=(const Algebraic& a, const Rational& b) { return compare(a, b) >= 0; }
+inline bool operator==(const Rational& a, const Algebraic& b) { return compare(b, a) == 0; }
+inline bool operator!=(const Rational& a, const Algebraic& b) { return compare(b, a) != 0; }
+inline bool operator<(const Rational& a, const Algebraic& b) { return compare(b, a) > 0; }
+inline bool operator>(const Rational& a, const Algebraic& b) { return compare(b, a) < 0; }
+inline bool operator<=(const Rational& a, const Algebraic& b) { return compare(b, a) >= 0; }
+inline bool operator>=(const Rational& a, const Algebraic& b) { return compare(b, a) <= 0; }
 
 using Vec3 = std::array<Rational, 3>;      // x, y, z
 using Point4 = std::array<Rational, 4>;    // x, y, z, t
@@ -286,6 +351,69 @@ CLASH4D_API const char* name(Semantics s);     // "regularised", "closed"
 // Throws std::invalid_argument on an unknown name.
 CLASH4D_API Number number_from_name(const std::string& name);
 CLASH4D_API Semantics semantics_from_name(const std::string& name);
+
+// ---------------------------------------------------------------- CCD
+
+// Continuous collision detection queries (docs/ccd-queries.md, `clash4d
+// ccd`): four vertices, each moving linearly from its position at t = 0 to
+// its position at t = 1, as a vertex-face or an edge-edge question. Closed:
+// touching counts.
+//   vertex-face: vertex p, triangle a, b, c; collides when p(t) = a(t) +
+//     u (b(t) - a(t)) + v (c(t) - a(t)) for some t in [0, 1], u, v >= 0,
+//     u + v <= 1 (a degenerate triangle is the segment or point it spans);
+//   edge-edge: edges a0 a1 and b0 b1; collides when a0(t) + u (a1(t) -
+//     a0(t)) = b0(t) + v (b1(t) - b0(t)) for some t, u, v in [0, 1].
+// t* is the first such t, (u, v) those of a contact at t* (any one where
+// the contact is not unique). With a separation D > 0 a query collides when
+// the closed primitives come within distance D, and (u, v) are then the
+// parameters of a closest pair of points at t* (on the triangle, or one on
+// each edge).
+enum class Ccd_type { vertex_face, edge_edge };
+
+CLASH4D_API const char* name(Ccd_type type);   // "vertex-face", "edge-edge"
+// "vertex-face" or "vf", "edge-edge" or "ee"; throws std::invalid_argument otherwise.
+CLASH4D_API Ccd_type ccd_type_from_name(const std::string& name);
+
+struct Ccd_options {
+  Number number = Number::exact;   // exact (filtered), rational (the reference) or double_
+  bool earliest = true;            // also t* and (u, v)
+  Rational separation = 0;         // minimum separation D >= 0 (0: the plain contract)
+  double tolerance = 0;            // Number::double_ only: |value| <= tolerance counts as zero
+};
+
+// A query: the four vertices at t = 0 and the same four at t = 1, in the
+// order of the CCD benchmark's rows (vertex-face: p, a, b, c; edge-edge:
+// a0, a1, b0, b1).
+struct Ccd_query {
+  std::array<Vec3, 4> t0, t1;
+};
+
+struct Ccd_result {
+  bool collide = false;
+  // With Ccd_options::earliest, when it collides: t* and the contact's (u, v).
+  // Exact numbers (Number::exact, rational) are rational or irrational
+  // algebraic numbers; with Number::double_ each is the rational of the
+  // double's shortest round-trip decimal text (as check gives double
+  // answers), not an exact answer.
+  std::optional<Algebraic> t, u, v;
+};
+
+// One query. A number beyond the double range with Number::double_ throws
+// Input_error (file "<query>", place "t0[i][k]" or "t1[i][k]": vertex i,
+// coordinate k, in the order above); a negative separation, or a tolerance
+// with another number than Number::double_, std::invalid_argument.
+CLASH4D_API Ccd_result ccd_vertex_face(const Vec3& p_t0, const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0,
+                                       const Vec3& p_t1, const Vec3& a_t1, const Vec3& b_t1, const Vec3& c_t1,
+                                       const Ccd_options& options = {});
+CLASH4D_API Ccd_result ccd_edge_edge(const Vec3& a0_t0, const Vec3& a1_t0, const Vec3& b0_t0, const Vec3& b1_t0,
+                                     const Vec3& a0_t1, const Vec3& a1_t1, const Vec3& b0_t1, const Vec3& b1_t1,
+                                     const Ccd_options& options = {});
+CLASH4D_API Ccd_result ccd(Ccd_type type, const Ccd_query& query, const Ccd_options& options = {});
+// Many queries of one type, decided in parallel (TBB); the results are in
+// the queries' order. Invalid input is found before any query is decided:
+// Input_error at place "queries[j].t0[i][k]".
+CLASH4D_API std::vector<Ccd_result> ccd_batch(Ccd_type type, const std::vector<Ccd_query>& queries,
+                                              const Ccd_options& options = {});
 
 // ---------------------------------------------------------------- compare
 

@@ -7,6 +7,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +44,17 @@ relative to the current directory.
 
 Answers are dicts in the form of `clash4d check --json` and
 `clash4d compare --json`, with every exact number a fractions.Fraction.
+
+CCD queries (`clash4d ccd`, docs/ccd-queries.md): a vertex and a triangle,
+or two edges, whose four vertices move linearly over t in [0, 1]:
+
+    clash4d.ccd_vertex_face(t0, t1)   # t0 = [p, a, b, c] at t = 0, t1 at t = 1
+    clash4d.ccd_edge_edge(t0, t1)     # t0 = [a0, a1, b0, b1], t1 likewise
+    clash4d.ccd_batch([(t0, t1), ...], type="edge-edge")   # in parallel, in order
+
+answer {"collide", "t", "uv"} with t* and (u, v) exact: a Fraction, or a
+clash4d.Algebraic (an irrational root, with poly, between and approx,
+float() and exact comparisons with Fraction).
 Invalid input raises clash4d.InputError (a ValueError) with the attributes
 file, place, message and exit_code (EXIT_INVALID = 2, EXIT_LIMIT = 3).
 "Verify" (certificates) is not in the toolkit yet.)";
@@ -73,33 +86,44 @@ py::list point(const c4::Vec3& p)
   throw c4::Input_error(file, place, message, c4::exit_invalid);
 }
 
-// The JSON text of a JSON-like Python value, numbers kept exact.
-void write_json(py::handle v, const std::string& place, std::string& out)
+// The exact text of a Python number ("3", "p/q"): an int, any
+// numbers.Rational (Fraction), and a float or decimal.Decimal by its exact
+// value (inf and nan are bad input at `place`); none for anything else
+// (bool included: it is not a number here).
+std::optional<std::string> number_text(py::handle v, const std::string& file, const std::string& place)
 {
-  static py::object* json_dumps = new py::object(py::module_::import("json").attr("dumps"));
   static py::object* rational = new py::object(py::module_::import("numbers").attr("Rational"));
   static py::object* fraction_type = new py::object(py::module_::import("fractions").attr("Fraction"));
   static py::object* decimal = new py::object(py::module_::import("decimal").attr("Decimal"));
-  auto exact = [&](py::handle x) {   // numbers.Rational: "p/q"
+  auto exact = [](py::handle x) {   // numbers.Rational: "p/q"
     py::int_ p = x.attr("numerator"), q = x.attr("denominator");
-    out += "\"" + std::string(py::str(p)) + "/" + std::string(py::str(q)) + "\"";
+    return std::string(py::str(p)) + "/" + std::string(py::str(q));
   };
-  if (v.is_none()) {
-    out += "null";
-  } else if (py::isinstance<py::bool_>(v)) {
-    out += v.cast<bool>() ? "true" : "false";
-  } else if (py::isinstance<py::int_>(v)) {
-    out += std::string(py::str(py::int_(py::reinterpret_borrow<py::object>(v))));
-  } else if (py::isinstance(v, *rational)) {
-    exact(v);
-  } else if (py::isinstance<py::float_>(v) || py::isinstance(v, *decimal)) {
+  if (py::isinstance<py::bool_>(v)) return std::nullopt;
+  if (py::isinstance<py::int_>(v)) return std::string(py::str(py::int_(py::reinterpret_borrow<py::object>(v))));
+  if (py::isinstance(v, *rational)) return exact(v);
+  if (py::isinstance<py::float_>(v) || py::isinstance(v, *decimal)) {
     py::object f;
     try {
       f = (*fraction_type)(v);
     } catch (py::error_already_set&) {   // inf, nan
-      bad_input("<scene>", place, "not a finite number: " + std::string(py::repr(v)));
+      bad_input(file, place, "not a finite number: " + std::string(py::repr(v)));
     }
-    exact(f);
+    return exact(f);
+  }
+  return std::nullopt;
+}
+
+// The JSON text of a JSON-like Python value, numbers kept exact.
+void write_json(py::handle v, const std::string& place, std::string& out)
+{
+  static py::object* json_dumps = new py::object(py::module_::import("json").attr("dumps"));
+  if (v.is_none()) {
+    out += "null";
+  } else if (py::isinstance<py::bool_>(v)) {
+    out += v.cast<bool>() ? "true" : "false";
+  } else if (std::optional<std::string> number = number_text(v, "<scene>", place)) {
+    out += py::isinstance<py::int_>(v) ? *number : "\"" + *number + "\"";
   } else if (py::isinstance<py::str>(v)) {
     out += (*json_dumps)(v).cast<std::string>();
   } else if (py::isinstance<py::dict>(v)) {
@@ -292,6 +316,160 @@ py::dict validate(py::handle scene)
   return out;
 }
 
+// ---------------------------------------------------------------- CCD
+
+const char* const ccd_file = "<query>";   // the file of a CCD query's InputError (c4::ccd's)
+
+// An exact number: a Python number as number_text reads it, or a string in
+// the scene format's forms ("1/3", "0.1", "-2.5e-3").
+c4::Rational exact_number(py::handle v, const std::string& place)
+{
+  std::optional<std::string> text = number_text(v, ccd_file, place);
+  if (!text && py::isinstance<py::str>(v)) text = v.cast<std::string>();
+  if (!text) bad_input(ccd_file, place, "not a number: " + std::string(py::repr(v)));
+  try {
+    return c4::Rational(*text);
+  } catch (const std::invalid_argument& e) {
+    bad_input(ccd_file, place, e.what());
+  }
+}
+
+// The items of a list or tuple (any sequence but a string) of n items.
+std::vector<py::handle> items(py::handle v, std::size_t n, const char* what, const std::string& place)
+{
+  if (!py::isinstance<py::sequence>(v) || py::isinstance<py::str>(v) || py::isinstance<py::bytes>(v) ||
+      py::len(v) != n)
+    bad_input(ccd_file, place, "expected " + std::to_string(n) + " " + what + ", not " + std::string(py::repr(v)));
+  std::vector<py::handle> out;
+  for (py::handle x : py::reinterpret_borrow<py::sequence>(v)) out.push_back(x);
+  return out;
+}
+
+// Four vertices [[x, y, z], ...] at one time.
+std::array<c4::Vec3, 4> vertices(py::handle v, const std::string& place)
+{
+  std::array<c4::Vec3, 4> out;
+  std::vector<py::handle> points = items(v, 4, "points", place);
+  for (std::size_t i = 0; i < 4; ++i) {
+    std::string at = place + "[" + std::to_string(i) + "]";
+    std::vector<py::handle> xyz = items(points[i], 3, "numbers", at);
+    for (std::size_t k = 0; k < 3; ++k) out[i][k] = exact_number(xyz[k], at + "[" + std::to_string(k) + "]");
+  }
+  return out;
+}
+
+// A batch's query: (t0, t1), or a dict as a JSON line of `clash4d ccd`
+// ({"t0", "t1"} and optionally "type", which must be the batch's, and
+// "label" and "meta", not read).
+c4::Ccd_query ccd_query(py::handle q, c4::Ccd_type type, const std::string& place)
+{
+  if (!py::isinstance<py::dict>(q)) {
+    std::vector<py::handle> ends = items(q, 2, "items (t0, t1) or a dict {\"t0\", \"t1\"}", place);
+    return {vertices(ends[0], place + ".t0"), vertices(ends[1], place + ".t1")};
+  }
+  py::dict d = py::reinterpret_borrow<py::dict>(q);
+  for (auto item : d) {
+    std::string key = py::isinstance<py::str>(item.first) ? item.first.cast<std::string>() : "";
+    if (key != "t0" && key != "t1" && key != "type" && key != "label" && key != "meta")
+      bad_input(ccd_file, place, "unknown key " + std::string(py::repr(item.first)) + " (t0, t1, type, label, meta)");
+  }
+  for (const char* key : {"t0", "t1"})
+    if (!d.contains(key)) bad_input(ccd_file, place, std::string("missing \"") + key + "\"");
+  if (d.contains("type")) {
+    py::object t = d["type"];
+    if (!py::isinstance<py::str>(t) || t.cast<std::string>() != c4::name(type))
+      bad_input(ccd_file, place + ".type", std::string(py::repr(t)) + " is not the batch's type \"" + c4::name(type) + "\"");
+  }
+  return {vertices(d["t0"], place + ".t0"), vertices(d["t1"], place + ".t1")};
+}
+
+c4::Ccd_options ccd_options(const std::string& number, bool earliest, py::handle separation, double tolerance)
+{
+  c4::Ccd_options o;
+  o.number = c4::number_from_name(number);
+  o.earliest = earliest;
+  if (!separation.is_none()) o.separation = exact_number(separation, "separation");
+  o.tolerance = tolerance;
+  return o;
+}
+
+// A rational as a Fraction, an irrational number as a clash4d.Algebraic.
+py::object algebraic(const c4::Algebraic& x)
+{
+  return x.is_rational() ? fraction(x.rational()) : py::cast(x);
+}
+
+// The form of a `clash4d ccd --json` line, without its index.
+py::dict ccd_dict(const c4::Ccd_result& r, bool earliest)
+{
+  py::dict out;
+  out["collide"] = r.collide;
+  if (!earliest) return out;
+  out["t"] = r.t ? algebraic(*r.t) : py::none();
+  if (r.t) out["uv"] = py::make_tuple(algebraic(*r.u), algebraic(*r.v));
+  return out;
+}
+
+py::dict ccd_one(c4::Ccd_type type, py::handle t0, py::handle t1, const std::string& number, bool earliest,
+                 py::handle separation, double tolerance)
+{
+  c4::Ccd_options o = ccd_options(number, earliest, separation, tolerance);
+  c4::Ccd_query q{vertices(t0, "t0"), vertices(t1, "t1")};
+  c4::Ccd_result r;
+  {
+    py::gil_scoped_release release;
+    r = c4::ccd(type, q, o);
+  }
+  return ccd_dict(r, earliest);
+}
+
+py::list ccd_batch(py::iterable queries, const std::string& type_name, const std::string& number, bool earliest,
+                   py::object separation, double tolerance)
+{
+  c4::Ccd_type type = c4::ccd_type_from_name(type_name);
+  c4::Ccd_options o = ccd_options(number, earliest, separation, tolerance);
+  std::vector<c4::Ccd_query> qs;
+  for (py::handle q : queries) qs.push_back(ccd_query(q, type, "queries[" + std::to_string(qs.size()) + "]"));
+  std::vector<c4::Ccd_result> rs;
+  {
+    py::gil_scoped_release release;
+    rs = c4::ccd_batch(type, qs, o);
+  }
+  py::list out;
+  for (const c4::Ccd_result& r : rs) out.append(ccd_dict(r, earliest));
+  return out;
+}
+
+// An exact Python number as a c4::Rational (int, Fraction, finite float or
+// Decimal), for comparisons; none for anything else.
+std::optional<c4::Rational> comparable(py::handle v)
+{
+  if (py::isinstance<py::bool_>(v)) return c4::Rational(v.cast<bool>() ? 1 : 0);   // as Python's int
+  std::optional<std::string> text;
+  try {
+    text = number_text(v, ccd_file, "");
+  } catch (const c4::Input_error&) {   // inf, nan: compared by the caller
+  }
+  if (!text) return std::nullopt;
+  return c4::Rational(*text);
+}
+
+// a <op> b for a clash4d.Algebraic and another number, op on compare's
+// -1, 0, 1: exact with an Algebraic, an int, a Fraction or a float (its
+// exact value; +-inf beyond every number, and nan unordered: the answer is
+// if_nan); NotImplemented for anything else.
+template <class Op>
+py::object compared(const c4::Algebraic& a, py::handle b, Op op, bool if_nan = false)
+{
+  if (py::isinstance<c4::Algebraic>(b)) return py::bool_(op(c4::compare(a, b.cast<const c4::Algebraic&>())));
+  if (std::optional<c4::Rational> q = comparable(b)) return py::bool_(op(c4::compare(a, *q)));
+  if (py::isinstance<py::float_>(b)) {
+    double x = b.cast<double>();
+    return py::bool_(std::isnan(x) ? if_nan : op(x > 0 ? -1 : 1));
+  }
+  return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+}
+
 } // namespace
 
 PYBIND11_MODULE(clash4d, m)
@@ -366,4 +544,111 @@ its own semantics (`clash4d compare`). Returns {"file", "name", "agree",
         "\"objects\": [names]}.");
   m.def("scene_json", [](py::handle scene) { return read_scene(scene).to_json(); }, py::arg("scene"),
         "The scene (validated) as scene-format JSON text, every number an exact string.");
+
+  py::class_<c4::Algebraic>(m, "Algebraic", R"(An irrational real algebraic number, exactly: the one root of its minimal
+polynomial in an open interval. CCD answers (t, u, v) are these where they
+are not rational (rationals come as fractions.Fraction). Not made from
+Python.
+
+    t.poly       # [-1, 0, 8]: the minimal polynomial 8x^2 - 1, integer coefficients, constant term first
+    t.between    # (Fraction(0, 1), Fraction(1, 1)): the only root of poly in that open interval
+    t.approx     # '0.3535533905932738': the shortest decimal of the nearest double
+    float(t)     # 0.3535533905932738
+    Fraction(7, 20) < t < Fraction(9, 25)   # exact comparisons with int, Fraction, float
+                                            # (its exact value) and other Algebraic numbers
+    repr(t)      # 'Algebraic(root of 8x^2 - 1 in (0, 1) ~ 0.3535533905932738)')")
+      .def_property_readonly("poly",
+                             [](const c4::Algebraic& x) {
+                               py::list out;
+                               for (const std::string& c : x.polynomial()) out.append(py::int_(py::str(c)));
+                               return out;
+                             },
+                             "The minimal polynomial's integer coefficients, constant term first (the last one positive).")
+      .def_property_readonly("between",
+                             [](const c4::Algebraic& x) {
+                               std::array<c4::Rational, 2> b = x.between();
+                               return py::make_tuple(fraction(b[0]), fraction(b[1]));
+                             },
+                             "(lo, hi), Fractions: the open interval holding this root of poly and no other.")
+      .def_property_readonly("approx", &c4::Algebraic::approx,
+                             "The shortest decimal that reads back to the nearest double (a str).")
+      .def("__float__", &c4::Algebraic::to_double)
+      .def("__eq__", [](const c4::Algebraic& a, py::handle b) { return compared(a, b, [](int c) { return c == 0; }); })
+      .def("__ne__", [](const c4::Algebraic& a, py::handle b) { return compared(a, b, [](int c) { return c != 0; }, true); })
+      .def("__lt__", [](const c4::Algebraic& a, py::handle b) { return compared(a, b, [](int c) { return c < 0; }); })
+      .def("__le__", [](const c4::Algebraic& a, py::handle b) { return compared(a, b, [](int c) { return c <= 0; }); })
+      .def("__gt__", [](const c4::Algebraic& a, py::handle b) { return compared(a, b, [](int c) { return c > 0; }); })
+      .def("__ge__", [](const c4::Algebraic& a, py::handle b) { return compared(a, b, [](int c) { return c >= 0; }); })
+      .def("__hash__",   // equal numbers have one minimal polynomial
+           [](const c4::Algebraic& x) {
+             if (x.is_rational()) return py::hash(fraction(x.rational()));
+             py::list poly;
+             for (const std::string& c : x.polynomial()) poly.append(py::int_(py::str(c)));
+             return py::hash(py::tuple(poly));
+           })
+      .def("__repr__", [](const c4::Algebraic& x) { return "Algebraic(" + x.text() + ")"; })
+      .def("__str__", &c4::Algebraic::text);
+
+  const char* const ccd_doc_tail = R"(
+
+number: "exact" (the default), "rational" (the reference; the same answers)
+or "double" (plain doubles: its numbers are the exact values of the
+shortest decimals of the doubles). earliest (default True): also t*, the
+first time of contact, and the contact's (u, v). separation: a minimum
+separation D >= 0 (any exact number): the query collides when the closed
+primitives come within distance D, and (u, v) are then a closest pair's.
+tolerance: double only.
+
+Numbers are read exactly: int, fractions.Fraction, str ("1/3", "0.1" is
+1/10) and float or decimal.Decimal by their exact value. A point that is
+not 3 numbers, a time that is not 4 points or a number that is not one
+raises clash4d.InputError (file "<query>", place e.g. "t0[1][2]": vertex 1,
+coordinate z at t = 0).
+
+Returns {"collide": bool, "t": t*, "uv": (u, v)}, as a line of `clash4d
+ccd --json` (without its index): with earliest, "t" is None when it does
+not collide, and "uv" is there when it does. A number is a
+fractions.Fraction when rational, else a clash4d.Algebraic.)";
+  auto ccd_def = [&](const char* function, c4::Ccd_type type, const std::string& doc) {
+    m.def(function,
+          [type](py::object t0, py::object t1, const std::string& number, bool earliest, py::object separation,
+                 double tolerance) { return ccd_one(type, t0, t1, number, earliest, separation, tolerance); },
+          py::arg("t0"), py::arg("t1"), py::kw_only(), py::arg("number") = "exact", py::arg("earliest") = true,
+          py::arg("separation") = py::none(), py::arg("tolerance") = 0.0, (doc + ccd_doc_tail).c_str());
+  };
+  ccd_def("ccd_vertex_face", c4::Ccd_type::vertex_face,
+          R"(A CCD vertex-face query (docs/ccd-queries.md; closed: touching counts).
+
+    clash4d.ccd_vertex_face(t0=[p, a, b, c], t1=[p, a, b, c])
+
+t0 holds the vertex p and the triangle a, b, c at t = 0, t1 the same four
+at t = 1, each point [x, y, z]; each moves linearly between them. It
+collides when p(t) = a(t) + u (b(t) - a(t)) + v (c(t) - a(t)) for some t
+in [0, 1], u, v >= 0, u + v <= 1.
+
+    r = clash4d.ccd_vertex_face([[F(1, 4), F(1, 4), 1], [0, 0, 0], [1, 0, 0], [0, 1, 0]],
+                                [[F(1, 4), F(1, 4), -1], [0, 0, 0], [1, 0, 0], [0, 1, 0]])
+    r == {"collide": True, "t": F(1, 2), "uv": (F(1, 4), F(1, 4))})");
+  ccd_def("ccd_edge_edge", c4::Ccd_type::edge_edge,
+          R"(A CCD edge-edge query (docs/ccd-queries.md; closed: touching counts).
+
+    clash4d.ccd_edge_edge(t0=[a0, a1, b0, b1], t1=[a0, a1, b0, b1])
+
+t0 holds the edges a0 a1 and b0 b1 at t = 0, t1 the same four vertices at
+t = 1, each point [x, y, z]; each moves linearly between them. It collides
+when a0(t) + u (a1(t) - a0(t)) = b0(t) + v (b1(t) - b0(t)) for some t, u,
+v in [0, 1].)");
+  m.def("ccd_batch", &ccd_batch, py::arg("queries"), py::arg("type") = "vertex-face", py::kw_only(),
+        py::arg("number") = "exact", py::arg("earliest") = true, py::arg("separation") = py::none(),
+        py::arg("tolerance") = 0.0,
+        R"(Many CCD queries of one type, decided in parallel (the GIL released):
+a list of answers in the queries' order, each as ccd_vertex_face's.
+
+queries: an iterable of (t0, t1) pairs, or of dicts in the form of a JSON
+line of `clash4d ccd` ({"t0": [...], "t1": [...]}, optionally "type",
+which must be the batch's, and "label" and "meta", not read). type:
+"vertex-face" (or "vf", the default) or "edge-edge" ("ee"). number,
+earliest, separation and tolerance as for ccd_vertex_face. Every query is
+read before any is decided; bad input raises clash4d.InputError at place
+"queries[j].t0[i][k]".)");
 }

@@ -131,6 +131,43 @@ int main(int argc, char** argv)
               << (s.cause ? " <- " + *s.cause : "") << "\n";
   expect(c.agree(), "every subject agrees with exact");
 
+  // CCD queries: four vertices moving linearly over t in [0, 1]. The vertex
+  // p = (1/4, 1/4, 1 - 2t) crosses the triangle (0,0,0), (1,0,0), (0,1,0) at
+  // rest in z = 0 at t* = 1/2, at (u, v) = (1/4, 1/4).
+  const c4::Rational q(1, 4);
+  c4::Ccd_result vf = c4::ccd_vertex_face({q, q, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+                                          {q, q, -1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  std::cout << "ccd vertex-face: " << (vf.collide ? "collision" : "no collision");
+  if (vf.t) std::cout << " at t* = " << vf.t->text() << ", (u, v) = (" << vf.u->text() << ", " << vf.v->text() << ")";
+  std::cout << "\n";
+  expect(vf.collide && vf.t && *vf.t == c4::Rational(1, 2) && *vf.u == q && *vf.v == q,
+         "ccd vertex-face: t* = 1/2 at (u, v) = (1/4, 1/4)");
+  // Edges a0 = 0, a1 = (1, t, 0) and b0 = (1/2, -1, -1/4 - t), b1 = (1/2, 1, -1/4 + t)
+  // are coplanar when det(a1, b0, b1) = 1/2 - t^2 = 0: t* = 1/sqrt 2, irrational,
+  // the root of 2t^2 - 1; there u = 1/2 and v = 1/2 + t*/4.
+  const c4::Rational half(1, 2);
+  c4::Ccd_result ee = c4::ccd_edge_edge({0, 0, 0}, {1, 0, 0}, {half, -1, -q}, {half, 1, -q},
+                                        {0, 0, 0}, {1, 1, 0}, {half, -1, c4::Rational(-5, 4)}, {half, 1, c4::Rational(3, 4)});
+  if (ee.t) std::cout << "ccd edge-edge: t* = " << ee.t->text() << ", v = " << ee.v->text() << "\n";
+  expect(ee.collide && ee.t && !ee.t->is_rational() &&
+             ee.t->polynomial() == std::vector<std::string>{"-1", "0", "2"} && *ee.t > c4::Rational(7071, 10000) &&
+             *ee.t < c4::Rational(7072, 10000) && *ee.u == half && *ee.v > half && *ee.v < 1,
+         "ccd edge-edge: t* = 1/sqrt 2 (root of 2t^2 - 1), u = 1/2");
+  // Many queries of one type in parallel, answered in order: p from (x, x, 1)
+  // to (x, x, z1) over the same triangle crosses z = 0 at t = 1 / (1 - z1)
+  // when x = 1/4; beside the triangle when x = 2.
+  auto falling = [](const c4::Rational& x, const c4::Rational& z1) {
+    c4::Ccd_query query;
+    query.t0 = {{{x, x, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}}};
+    query.t1 = {{{x, x, z1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}}};
+    return query;
+  };
+  std::vector<c4::Ccd_result> batch =
+      c4::ccd_batch(c4::Ccd_type::vertex_face, {falling(q, -3), falling(2, -1), falling(q, 0)});
+  expect(batch.size() == 3 && batch[0].t && *batch[0].t == q && !batch[1].collide && batch[2].t &&
+             *batch[2].t == 1,
+         "ccd batch: t* = 1/4, no collision, t* = 1, in order");
+
   // Invalid input is an Input_error with the file and the place.
   try {
     c4::Scene::read_file(fixtures + "/bad/block_min_two_numbers.json");

@@ -238,5 +238,175 @@ class Validate_and_compare(unittest.TestCase):
         self.assertTrue(rows["exact closed"]["collide"])
 
 
+# CCD queries (docs/ccd-queries.md): four vertices moving linearly over t in [0, 1].
+F = Fraction
+TRIANGLE = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]   # at rest in z = 0
+# p = (1/4, 1/4, 1 - 2t) crosses z = 0 at t = 1/2, inside the triangle at (u, v) = (1/4, 1/4).
+VF_HALF = ([[F(1, 4), F(1, 4), 1]] + TRIANGLE, [["1/4", "0.25", -1]] + TRIANGLE)
+# a = (0,0,0), b = (1,0,0) at rest, c = (0, 1, 2t - 1); p = (1/8, t, 1/4 - t). The
+# triangle's points (u, v, v (2t - 1)) meet p at u = 1/8, v = t and t (2t - 1) = 1/4 - t,
+# that is 8t^2 = 1: t* = 1/(2 sqrt 2) ~ 0.35355 (the normal (0, 1 - 2t, 1) . p = 1/4 - 2t^2
+# vanishes nowhere else in [0, 1]).
+VF_ROOT = ([[F(1, 8), 0, F(1, 4)], [0, 0, 0], [1, 0, 0], [0, 1, -1]],
+           [[F(1, 8), 1, F(-3, 4)], [0, 0, 0], [1, 0, 0], [0, 1, 1]])
+# a0 = 0, a1 = (1, t, 0); b0 = (1/2, -1, -1/4 - t), b1 = (1/2, 1, -1/4 + t). The four are
+# coplanar when det(a1, b0, b1) = 1/2 - t^2 = 0: t* = 1/sqrt 2. There a0 + u (a1 - a0) =
+# b0 + v (b1 - b0) gives u = 1/2 (x), v = 1/2 + t/4 (y) and z: -1/4 + t^2/2 = 0. v is the
+# root of 32v^2 - 32v + 7 (t = 4v - 2 in 2t^2 - 1) ~ 0.6768.
+EE_ROOT = ([[0, 0, 0], [1, 0, 0], [F(1, 2), -1, F(-1, 4)], [F(1, 2), 1, F(-1, 4)]],
+           [[0, 0, 0], [1, 1, 0], [F(1, 2), -1, F(-5, 4)], [F(1, 2), 1, F(3, 4)]])
+
+
+class Ccd(unittest.TestCase):
+    def test_vertex_face_rational(self):
+        r = clash4d.ccd_vertex_face(*VF_HALF)
+        self.assertEqual(r, {"collide": True, "t": F(1, 2), "uv": (F(1, 4), F(1, 4))})
+        self.assertIsInstance(r["t"], Fraction)
+        for number in ("rational", "double"):
+            self.assertEqual(clash4d.ccd_vertex_face(*VF_HALF, number=number), r, number)
+        self.assertEqual(clash4d.ccd_vertex_face(*VF_HALF, earliest=False), {"collide": True})
+        # p at (2, 2) passes beside the triangle.
+        miss = ([[2, 2, 1]] + TRIANGLE, [[2, 2, -1]] + TRIANGLE)
+        self.assertEqual(clash4d.ccd_vertex_face(*miss), {"collide": False, "t": None})
+        # Touching counts: p comes down to z = 0 at t = 1 and stops there.
+        touch = ([[F(1, 4), F(1, 4), 1]] + TRIANGLE, [[F(1, 4), F(1, 4), 0]] + TRIANGLE)
+        self.assertEqual(clash4d.ccd_vertex_face(*touch)["t"], 1)
+
+    def test_vertex_face_irrational(self):
+        r = clash4d.ccd_vertex_face(*VF_ROOT)
+        self.assertTrue(r["collide"])
+        t = r["t"]
+        u, v = r["uv"]
+        self.assertIsInstance(t, clash4d.Algebraic)
+        self.assertEqual(t.poly, [-1, 0, 8])
+        self.assertTrue(all(type(c) is int for c in t.poly))
+        self.assertEqual(t.between, (0, 1))   # the coarsest [n/10^k, (n+1)/10^k] without the root -t*
+        self.assertEqual(t.approx, "0.3535533905932738")
+        self.assertTrue(F(35, 100) < t < F(36, 100))
+        self.assertTrue(F(35, 100) <= t <= F(36, 100) and t > F(35, 100) and t >= F(35, 100))
+        self.assertTrue(0 < t < 1 and 0.35 < t < 0.36)
+        self.assertNotEqual(t, F(35355339, 10 ** 8))
+        self.assertFalse(t == F(35355339, 10 ** 8))
+        self.assertAlmostEqual(float(t), 0.35355339059327373, places=15)
+        self.assertEqual(repr(t), "Algebraic(root of 8x^2 - 1 in (0, 1) ~ 0.3535533905932738)")
+        self.assertEqual(str(t), "root of 8x^2 - 1 in (0, 1) ~ 0.3535533905932738")
+        self.assertEqual(u, F(1, 8))
+        self.assertIsInstance(u, Fraction)
+        self.assertIsInstance(v, clash4d.Algebraic)
+        self.assertTrue(v == t and not v != t and v <= t and hash(v) == hash(t))   # v = t*
+        self.assertEqual(len({t, v}), 1)
+        # The reference gives the same numbers; double gives decimals near them.
+        self.assertEqual(clash4d.ccd_vertex_face(*VF_ROOT, number="rational"), r)
+        d = clash4d.ccd_vertex_face(*VF_ROOT, number="double")
+        self.assertIsInstance(d["t"], Fraction)
+        self.assertAlmostEqual(float(d["t"]), 0.35355339, places=7)
+
+    def test_edge_edge_irrational(self):
+        r = clash4d.ccd_edge_edge(*EE_ROOT)
+        self.assertTrue(r["collide"])
+        t = r["t"]
+        u, v = r["uv"]
+        self.assertEqual(t.poly, [-1, 0, 2])   # 1/sqrt 2
+        self.assertTrue(F(707, 1000) < t < F(708, 1000))
+        self.assertEqual(u, F(1, 2))
+        self.assertEqual(v.poly, [7, -32, 32])
+        self.assertTrue(F(676, 1000) < v < F(677, 1000))
+        self.assertAlmostEqual(float(v), 0.5 + float(t) / 4, places=15)
+        # [0, 1] also holds the other root 1/2 - t*/4 ~ 0.32: between is [6/10, 7/10].
+        self.assertEqual(repr(v), "Algebraic(root of 32x^2 - 32x + 7 in (3/5, 7/10) ~ 0.6767766952966369)")
+        # Comparisons between algebraic numbers: vertex-face's 1/(2 sqrt 2) is half of 1/sqrt 2.
+        vf_t = clash4d.ccd_vertex_face(*VF_ROOT)["t"]
+        self.assertTrue(vf_t < t and t > vf_t and vf_t != t and not vf_t == t)
+        self.assertTrue(v < t and v <= t and t >= v and v != t)   # 0.6768 < 0.7071
+        # Not numbers: no order, and never equal.
+        self.assertFalse(t == "0.7")
+        with self.assertRaises(TypeError):
+            t < "0.7"
+        self.assertFalse(t == float("nan") or t < float("nan"))
+        self.assertTrue(t < float("inf") and t > float("-inf"))
+
+    def test_batch_keeps_order(self):
+        def falling(z1):   # p = (1/4, 1/4, 1 + (z1 - 1) t) meets z = 0 at t = 1 / (1 - z1)
+            return ([[F(1, 4), F(1, 4), 1]] + TRIANGLE, [[F(1, 4), F(1, 4), z1]] + TRIANGLE)
+        queries = [falling(-1), VF_ROOT, falling(-3), ([[2, 2, 1]] + TRIANGLE, [[2, 2, -1]] + TRIANGLE),
+                   {"t0": falling(0)[0], "t1": falling(0)[1], "type": "vertex-face", "label": 1}]
+        rs = clash4d.ccd_batch(queries)
+        self.assertEqual([r["collide"] for r in rs], [True, True, True, False, True])
+        self.assertEqual(rs[0]["t"], F(1, 2))
+        self.assertEqual(rs[1]["t"].poly, [-1, 0, 8])
+        self.assertEqual(rs[2]["t"], F(1, 4))
+        self.assertIsNone(rs[3]["t"])
+        self.assertEqual(rs[4]["t"], 1)
+        self.assertEqual(rs[2]["uv"], (F(1, 4), F(1, 4)))
+        self.assertEqual(clash4d.ccd_batch(queries, "vf", number="double")[2]["t"], F(1, 4))
+        self.assertEqual([r["collide"] for r in clash4d.ccd_batch(queries, earliest=False)],
+                         [True, True, True, False, True])
+        ee = clash4d.ccd_batch(iter([EE_ROOT, EE_ROOT]), type="edge-edge")
+        self.assertEqual([r["uv"][0] for r in ee], [F(1, 2), F(1, 2)])
+        self.assertEqual(clash4d.ccd_batch([]), [])
+        # Many at once, in parallel: each answer is its own query's.
+        many = [falling(-k) for k in range(1, 60)]
+        self.assertEqual([r["t"] for r in clash4d.ccd_batch(many)], [F(1, 1 + k) for k in range(1, 60)])
+
+    def test_bad_input(self):
+        p0, p1 = VF_HALF
+        with self.assertRaises(clash4d.InputError) as c:   # a point of 2 numbers
+            clash4d.ccd_vertex_face([[0, 0]] + TRIANGLE, p1)
+        self.assertEqual((c.exception.file, c.exception.place), ("<query>", "t0[0]"))
+        self.assertEqual(c.exception.exit_code, clash4d.EXIT_INVALID)
+        with self.assertRaises(clash4d.InputError) as c:   # not a number
+            clash4d.ccd_vertex_face(p0, [[0, 0, "abc"]] + TRIANGLE)
+        self.assertEqual(c.exception.place, "t1[0][2]")
+        with self.assertRaises(clash4d.InputError) as c:
+            clash4d.ccd_edge_edge(p0, p1[:3])   # 3 points
+        self.assertEqual(c.exception.place, "t1")
+        for bad in (None, True, float("nan"), [1]):
+            with self.assertRaises(clash4d.InputError):
+                clash4d.ccd_vertex_face(p0, [[0, 0, bad]] + TRIANGLE)
+        with self.assertRaises(clash4d.InputError) as c:   # beyond double's range, for double only
+            clash4d.ccd_vertex_face(p0, [[0, "1e400", 0]] + TRIANGLE, number="double")
+        self.assertEqual(c.exception.place, "t1[0][1]")
+        # Exact reads it: p = ((1 - t)/4, 10^400 t, 1 - t) reaches z = 0 only at t = 1, far away.
+        self.assertFalse(clash4d.ccd_vertex_face(p0, [[0, "1e400", 0]] + TRIANGLE)["collide"])
+        with self.assertRaises(clash4d.InputError) as c:
+            clash4d.ccd_batch([VF_HALF, (p0, [[0, 0]] + TRIANGLE)])
+        self.assertEqual(c.exception.place, "queries[1].t1[0]")
+        with self.assertRaises(clash4d.InputError) as c:
+            clash4d.ccd_batch([VF_HALF, {"t0": p0, "t1": p1, "type": "edge-edge"}])
+        self.assertEqual(c.exception.place, "queries[1].type")
+        with self.assertRaises(clash4d.InputError):
+            clash4d.ccd_batch([{"t0": p0, "t2": p1}])
+        with self.assertRaises(clash4d.InputError):
+            clash4d.ccd_batch([VF_HALF[0]])   # not (t0, t1)
+        with self.assertRaises(ValueError):
+            clash4d.ccd_batch([VF_HALF], type="face-face")
+        with self.assertRaises(ValueError):
+            clash4d.ccd_vertex_face(*VF_HALF, number="float")
+        with self.assertRaises(ValueError):
+            clash4d.ccd_vertex_face(*VF_HALF, tolerance=1e-9)   # double only
+        with self.assertRaises(ValueError):
+            clash4d.ccd_vertex_face(*VF_HALF, separation=-1)
+        with self.assertRaises(clash4d.InputError) as c:
+            clash4d.ccd_vertex_face(*VF_HALF, separation="x")
+        self.assertEqual(c.exception.place, "separation")
+        with self.assertRaises(TypeError):
+            clash4d.Algebraic()
+
+    def test_separation(self):
+        # p = (1/4, 1/4, 1 - 2t) is at distance |1 - 2t| from the triangle (it projects
+        # inside it): within D = 1/2 from t* = 1/4, the closest point at (u, v) = (1/4, 1/4).
+        r = clash4d.ccd_vertex_face(*VF_HALF, separation=F(1, 2))
+        self.assertEqual(r, {"collide": True, "t": F(1, 4), "uv": (F(1, 4), F(1, 4))})
+        for number in ("rational", "double"):
+            self.assertEqual(clash4d.ccd_vertex_face(*VF_HALF, separation="0.5", number=number), r, number)
+        self.assertEqual(clash4d.ccd_batch([VF_HALF], separation=0.5), [r])
+        self.assertEqual(clash4d.ccd_vertex_face(*VF_HALF, separation=0), clash4d.ccd_vertex_face(*VF_HALF))
+        # p beside the triangle at (2, 2): its closest point is (1/2, 1/2, 0) on the edge
+        # b c, at distance 3/sqrt 2 ~ 2.12 at t = 1/2 (more at other times).
+        miss = ([[2, 2, 1]] + TRIANGLE, [[2, 2, -1]] + TRIANGLE)
+        self.assertFalse(clash4d.ccd_vertex_face(*miss, separation=2)["collide"])
+        self.assertTrue(clash4d.ccd_vertex_face(*miss, separation=3)["collide"])
+
+
 if __name__ == "__main__":
     unittest.main()
