@@ -1,4 +1,5 @@
 #include "cli/Campaign_commands.h"
+#include "compare/Ccd_query_files.h"
 #include "compare/External_subject.h"
 #include "compare/Report_writer.h"
 #include "scene/Input_error.h"
@@ -47,6 +48,33 @@ bool apply_subject_args(const Subject_args& args, Compare_options& o, const char
   return true;
 }
 
+void add_ccd_options(CLI::App& command, Ccd_compare_args& args)
+{
+  command.add_option("--type", args.type,
+                     "CCD query files: vf (vertex-face) or ee (edge-edge), for CSV files whose path names no type "
+                     "(docs/ccd-queries.md)")
+      ->check(CLI::IsMember({"vf", "ee", "vertex-face", "edge-edge"}));
+  command.add_option("--time-bound", args.time_bound,
+                     "CCD queries, with earliest: the largest |t - t*| that is no disagreement (default 1e-9; beyond "
+                     "it the cause is time)")
+      ->check(CLI::NonNegativeNumber);
+}
+
+Ccd_compare_options ccd_options_of(const Compare_options& o, const Ccd_compare_args& args)
+{
+  Ccd_compare_options c;
+  c.tolerances = o.tolerances;
+  c.earliest = o.earliest;
+  c.time_bound = args.time_bound;
+  c.externals = o.externals;
+  return c;
+}
+
+std::optional<Ccd_type> ccd_type_of(const Ccd_compare_args& args)
+{
+  return args.type.empty() ? std::nullopt : ccd_type_from_name(args.type);
+}
+
 namespace {
 
 // A whole non-negative decimal number, or none.
@@ -62,7 +90,7 @@ std::optional<std::uint64_t> whole_number(const char* text)
 }
 
 // K and S from the scheduler's variables; a message in `problem` when they are wrong.
-bool shard_from_scheduler(std::uint64_t count, const std::function<const char*(const char*)>& env, Fuzz_options& o,
+bool shard_from_scheduler(std::uint64_t count, const std::function<const char*(const char*)>& env, Campaign_options& o,
                           std::string& problem)
 {
   if (const char* k8s = env("JOB_COMPLETION_INDEX")) {
@@ -94,7 +122,7 @@ bool shard_from_scheduler(std::uint64_t count, const std::function<const char*(c
 } // namespace
 
 bool resolve_shard(const std::string& shard, std::uint64_t shard_count, const std::function<const char*(const char*)>& env,
-                   Fuzz_options& o, std::ostream& err)
+                   Campaign_options& o, std::ostream& err)
 {
   std::string problem;
   if (!shard.empty()) {
@@ -118,10 +146,13 @@ bool resolve_shard(const std::string& shard, std::uint64_t shard_count, const st
   return true;
 }
 
-int fuzz_command(const Fuzz_options& options, std::ostream& out, std::ostream& err)
+namespace {
+
+int campaign_command(const Campaign_options& options, const std::function<Fuzz_summary()>& run, std::ostream& out,
+                     std::ostream& err)
 {
   try {
-    Fuzz_summary s = run_fuzz(options, err);
+    Fuzz_summary s = run();
     out << options.out << ": shard " << options.shard << "/" << options.shards << ", " << s.done << " cases"
         << (s.resumed_from ? " (resumed at case " + std::to_string(s.resumed_from) + ")" : "") << ", " << s.findings
         << " findings in " << (fs::path(options.out) / "findings").string() << "\n";
@@ -130,6 +161,18 @@ int fuzz_command(const Fuzz_options& options, std::ostream& out, std::ostream& e
     err << "clash4d fuzz: " << e.what() << "\n";
     return CLASH4D_EXIT_INVALID;
   }
+}
+
+} // namespace
+
+int fuzz_command(const Fuzz_options& options, std::ostream& out, std::ostream& err)
+{
+  return campaign_command(options, [&] { return run_fuzz(options, err); }, out, err);
+}
+
+int fuzz_command(const Ccd_fuzz_options& options, std::ostream& out, std::ostream& err)
+{
+  return campaign_command(options, [&] { return run_ccd_fuzz(options, err); }, out, err);
 }
 
 int merge_command(const std::vector<std::string>& dirs, const std::string& out_dir, std::ostream& out, std::ostream& err)
@@ -146,7 +189,8 @@ int merge_command(const std::vector<std::string>& dirs, const std::string& out_d
 
 namespace {
 
-// Saved findings carry their scene and comparison: no need to rerun them.
+// Saved findings carry their scene (or query) and comparison: no need to
+// rerun them.
 void add_fuzz_folder(const fs::path& dir, std::vector<Report_case>& cases)
 {
   std::vector<fs::path> files;
@@ -155,8 +199,12 @@ void add_fuzz_folder(const fs::path& dir, std::vector<Report_case>& cases)
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
     nlohmann::ordered_json document = read_json_document(f.string());
+    std::string family = document.value("meta", nlohmann::ordered_json::object()).value("family", "");
+    if (is_ccd_finding(document)) {
+      cases.push_back(ccd_report_case(f.string(), finding_ccd_comparison(document, f.string()), family));
+      continue;
+    }
     Comparison comparison = finding_comparison(document, f.string());
-    std::string family = document["meta"].value("family", "");
     Scene scene;
     try {
       scene = read_scene_file(f.string());
@@ -178,22 +226,50 @@ void add_scene_file(const fs::path& file, const Compare_options& compare, std::v
   cases.push_back({file.string(), scene, compare_scene(scene, file.string(), compare), ""});
 }
 
+// A case per query of the file.
+void add_ccd_file(const fs::path& file, const Report_inputs& inputs, std::vector<Report_case>& cases)
+{
+  std::vector<Ccd_query> queries;
+  try {
+    queries = read_ccd_queries(file.string(), inputs.type);
+  } catch (const Input_error& e) {
+    throw std::runtime_error(e.format(file.string()));
+  }
+  for (std::size_t i = 0; i < queries.size(); ++i)
+    cases.push_back(ccd_report_case(file.string(), compare_query(queries[i], file.string(), i, inputs.queries), ""));
+}
+
+void add_file(const fs::path& file, const Report_inputs& inputs, std::vector<Report_case>& cases)
+{
+  if (is_ccd_query_file(file.string())) add_ccd_file(file, inputs, cases);
+  else add_scene_file(file, inputs.scenes, cases);
+}
+
+// A folder's scene and query files, by name.
+std::vector<fs::path> folder_files(const fs::path& dir)
+{
+  std::vector<fs::path> files;
+  for (const auto& f : fs::directory_iterator(dir)) {
+    std::string e = f.path().extension().string();
+    bool queries = e == ".csv" || e == ".jsonl" || e == ".ndjson";
+    if (queries || (e == ".json" && f.path().filename() != "expected.json")) files.push_back(f.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
 } // namespace
 
-int report_command(const std::vector<std::string>& inputs, const std::string& out_dir, const Compare_options& compare,
-                   std::ostream& out, std::ostream& err)
+int report_command(const Report_inputs& inputs, const std::string& out_dir, std::ostream& out, std::ostream& err)
 {
   try {
     std::vector<Report_case> cases;
-    for (const auto& input : inputs) {
+    for (const auto& input : inputs.paths) {
       fs::path p(input);
-      if (fs::is_directory(p / "findings")) { add_fuzz_folder(p, cases); continue; }
-      if (!fs::is_directory(p)) { add_scene_file(p, compare, cases); continue; }
-      std::vector<fs::path> files;
-      for (const auto& f : fs::directory_iterator(p))
-        if (f.path().extension() == ".json" && f.path().filename() != "expected.json") files.push_back(f.path());
-      std::sort(files.begin(), files.end());
-      for (const auto& f : files) add_scene_file(f, compare, cases);
+      if (fs::is_directory(p / "findings")) add_fuzz_folder(p, cases);
+      else if (!fs::is_directory(p)) add_file(p, inputs, cases);
+      else
+        for (const auto& f : folder_files(p)) add_file(f, inputs, cases);
     }
     write_report(cases, out_dir);
     std::size_t disagreeing = 0;

@@ -2,10 +2,12 @@
 #ifndef CLASH4D_CLI_CAMPAIGN_COMMANDS_H
 #define CLASH4D_CLI_CAMPAIGN_COMMANDS_H
 
+#include "compare/Ccd_fuzz_campaign.h"
 #include "compare/Fuzz_campaign.h"
 #include <cstdint>
 #include <functional>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,19 +28,39 @@ void add_subject_options(CLI::App& command, Subject_args& args);
 // subject, as --fcl); false after a message naming the argument when one is wrong.
 bool apply_subject_args(const Subject_args& args, Compare_options& o, const char* command, std::ostream& err);
 
+// --type vf|ee (CSV files whose path names no type) and --time-bound, for
+// the CCD query files of compare and report.
+struct Ccd_compare_args {
+  std::string type;
+  double time_bound = 1e-9;
+};
+void add_ccd_options(CLI::App& command, Ccd_compare_args& args);
+// The options of CCD queries from the scenes' (tolerances, earliest and
+// external subjects are shared) and the CCD arguments.
+Ccd_compare_options ccd_options_of(const Compare_options& o, const Ccd_compare_args& args);
+std::optional<Ccd_type> ccd_type_of(const Ccd_compare_args& args);
+
 // Which shard this process runs: --shard K/S when given; else, under a
 // scheduler, K from SLURM_ARRAY_TASK_ID - SLURM_ARRAY_TASK_MIN + 1 or
 // JOB_COMPLETION_INDEX + 1 and S from --shard-count (Slurm: or
 // SLURM_ARRAY_TASK_COUNT); else 1/1 (docs/campaigns.md). `env` reads a
 // variable (std::getenv; tests pass their own). False after a message.
 bool resolve_shard(const std::string& shard, std::uint64_t shard_count, const std::function<const char*(const char*)>& env,
-                   Fuzz_options& o, std::ostream& err);
+                   Campaign_options& o, std::ostream& err);
 
 int fuzz_command(const Fuzz_options& options, std::ostream& out, std::ostream& err);
+int fuzz_command(const Ccd_fuzz_options& options, std::ostream& out, std::ostream& err);
 int merge_command(const std::vector<std::string>& dirs, const std::string& out_dir, std::ostream& out, std::ostream& err);
-// INPUT: scene files, folders of scene files, or fuzz output folders.
-int report_command(const std::vector<std::string>& inputs, const std::string& out_dir, const Compare_options& compare,
-                   std::ostream& out, std::ostream& err);
+
+// What report compares: its INPUTs (scene files, CCD query files, folders
+// of them, or fuzz output folders) and the options for each kind.
+struct Report_inputs {
+  std::vector<std::string> paths;
+  Compare_options scenes;
+  Ccd_compare_options queries;
+  std::optional<Ccd_type> type;   // --type
+};
+int report_command(const Report_inputs& inputs, const std::string& out_dir, std::ostream& out, std::ostream& err);
 
 } // namespace clash4d
 

@@ -4,6 +4,8 @@
 #include "cli/Stats_json.h"
 #include "certify/Certificate_writer.h"
 #include "cli/Verify_command.h"
+#include "compare/Ccd_comparer.h"
+#include "compare/Ccd_query_files.h"
 #include "compare/Comparer.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
@@ -211,11 +213,15 @@ void print_skeleton(const Skeleton_answer& a, bool as_json, std::ostream& out)
   }
 }
 
-void print_comparison(const Comparison& c, std::ostream& out)
+// A comparison under its title (the scene's file, or the file and query).
+void print_comparison(const Comparison& c, const std::string& title, std::ostream& out)
 {
-  out << c.file << (c.has_disagreement() ? ": DISAGREEMENT\n" : ": all subjects agree\n");
+  // Scenes are compared in two semantics, so closed subjects are marked; a
+  // CCD query has only the closed one.
+  bool marked = c.find("exact closed") != nullptr;
+  out << title << (c.has_disagreement() ? ": DISAGREEMENT\n" : ": all subjects agree\n");
   for (const Subject_row& s : c.subjects) {
-    out << "  " << s.subject << (s.semantics == "closed" && s.subject != "exact closed" ? " [closed]" : "") << ": ";
+    out << "  " << s.subject << (marked && s.semantics == "closed" && s.subject != "exact closed" ? " [closed]" : "") << ": ";
     if (s.failed()) {
       out << "failed: " << s.error << (s.cause ? "  <- " + *s.cause : "") << "\n";
       continue;
@@ -230,18 +236,50 @@ void print_comparison(const Comparison& c, std::ostream& out)
   }
 }
 
-int compare(const std::vector<std::string>& files, const Compare_options& o, bool as_json, std::ostream& out, std::ostream& err)
+int compare_scene_file(const std::string& f, const Compare_options& o, bool as_json, json& all, std::ostream& out,
+                       std::ostream& err)
+{
+  Scene scene;
+  if (load(f, scene, err)) return CLASH4D_EXIT_INVALID;
+  return guarded(f, err, [&] {
+    Comparison c = compare_scene(scene, f, o);
+    if (as_json) all.push_back(c.to_json()); else print_comparison(c, f, out);
+    return c.has_disagreement() ? 1 : 0;
+  });
+}
+
+// Every query of a CCD file, read whole first: bad input is exit 2 naming
+// the place, never a partial list.
+int compare_ccd_file(const std::string& f, const Ccd_compare_options& o, std::optional<Ccd_type> type, bool as_json,
+                     json& all, std::ostream& out, std::ostream& err)
+{
+  std::vector<Ccd_query> queries;
+  try {
+    queries = read_ccd_queries(f, type);
+  } catch (const Input_error& e) {
+    err << e.format(f) << "\n";
+    return e.exit_code();
+  }
+  return guarded(f, err, [&] {
+    int status = 0;
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+      Ccd_comparison c = compare_query(queries[i], f, i, o);
+      if (as_json) all.push_back(c.to_json()); else print_comparison(c.comparison, f + ": " + c.comparison.name, out);
+      if (c.comparison.has_disagreement()) status = 1;
+    }
+    return status;
+  });
+}
+
+// Scene files and CCD query files (compare/Ccd_query_files.h), in order.
+int compare(const std::vector<std::string>& files, const Compare_options& o, const Ccd_compare_options& ccd,
+            std::optional<Ccd_type> type, bool as_json, std::ostream& out, std::ostream& err)
 {
   int status = 0;
   json all = json::array();
   for (const auto& f : files) {
-    Scene scene;
-    if (load(f, scene, err)) { status = CLASH4D_EXIT_INVALID; continue; }
-    int s = guarded(f, err, [&] {
-      Comparison c = compare_scene(scene, f, o);
-      if (as_json) all.push_back(c.to_json()); else print_comparison(c, out);
-      return c.has_disagreement() ? 1 : 0;
-    });
+    int s = is_ccd_query_file(f) ? compare_ccd_file(f, ccd, type, as_json, all, out, err)
+                                 : compare_scene_file(f, o, as_json, all, out, err);
     if (s == 1 && status == 0) status = 1;
     if (s > 1) status = s;
   }
@@ -451,6 +489,7 @@ struct Compare_args {
   std::vector<double> tolerances;
   bool earliest = false, fcl = false, as_json = false;
   std::string semantics = "regularised";
+  Ccd_compare_args ccd;
   Subject_args subjects;
 };
 
@@ -462,13 +501,14 @@ const char* const own_semantics_help =
 Command add_compare(CLI::App& app, std::ostream& out, std::ostream& err)
 {
   auto a = std::make_shared<Compare_args>();
-  CLI::App* cmd = app.add_subcommand("compare", "Run exact, double, double with tolerances and exact-on-rounded-input on each scene; flag and classify every disagreement with exact (exit 1 when any).");
-  cmd->add_option("SCENE", a->files, "scene files")->required();
+  CLI::App* cmd = app.add_subcommand("compare", "Run exact, double, double with tolerances and exact-on-rounded-input on each scene or CCD query; flag and classify every disagreement with exact (exit 1 when any).");
+  cmd->add_option("FILE", a->files, "scene files, and CCD query files (.csv, or JSON lines of queries: docs/ccd-queries.md), one comparison per query")->required();
   cmd->add_option("--tolerance", a->tolerances, "a double subject treating |value| <= EPS as zero; repeatable (default 1e-9)")->check(CLI::PositiveNumber);
   cmd->add_flag("--earliest", a->earliest, "also compare earliest collision times t*");
-  cmd->add_flag("--fcl", a->fcl, "also run FCL's continuous collision (the fcl subject) where FCL can express the scene; skipped with the reason elsewhere");
-  cmd->add_flag("--json", a->as_json, "print one JSON object per scene in a list");
+  cmd->add_flag("--fcl", a->fcl, "also run FCL's continuous collision (the fcl subject) where FCL can express the scene; skipped with the reason elsewhere (scenes only)");
+  cmd->add_flag("--json", a->as_json, "print one JSON object per scene or query in a list");
   cmd->add_option("--semantics", a->semantics, own_semantics_help)->check(CLI::IsMember({"regularised", "closed"}));
+  add_ccd_options(*cmd, a->ccd);
   add_subject_options(*cmd, a->subjects);
   return [cmd, a, &out, &err] {
     if (!cmd->parsed()) return -1;
@@ -478,7 +518,7 @@ Command add_compare(CLI::App& app, std::ostream& out, std::ostream& err)
     o.earliest = a->earliest;
     o.fcl = a->fcl;
     if (!apply_subject_args(a->subjects, o, "compare", err)) return CLASH4D_EXIT_INVALID;
-    return compare(a->files, o, a->as_json, out, err);
+    return compare(a->files, o, ccd_options_of(o, a->ccd), ccd_type_of(a->ccd), a->as_json, out, err);
   };
 }
 
@@ -489,8 +529,27 @@ struct Fuzz_args {
   std::vector<std::string> merge_dirs;
   std::vector<double> tolerances;
   std::string semantics = "regularised";
+  bool ccd = false, earliest = false;
+  Ccd_compare_args ccd_args;
   Subject_args subjects;
 };
+
+// fuzz --ccd: the same campaign over CCD queries; the scenes' own options
+// (--fcl, bullet, --semantics) have no meaning there.
+int ccd_fuzz(const Fuzz_args& a, const CLI::App& cmd, std::ostream& out, std::ostream& err)
+{
+  if (a.fuzz.compare.fcl || a.fuzz.compare.bullet || cmd.count("--semantics")) {
+    err << "clash4d fuzz: --fcl, --subject fcl or bullet and --semantics are for scenes: CCD queries have one "
+           "semantics (closed) and no library subject\n";
+    return CLASH4D_EXIT_INVALID;
+  }
+  Ccd_fuzz_options c;
+  static_cast<Campaign_options&>(c) = a.fuzz;
+  Compare_options scenes = a.fuzz.compare;
+  scenes.earliest = a.earliest;
+  c.compare = ccd_options_of(scenes, a.ccd_args);
+  return fuzz_command(c, out, err);
+}
 
 Command add_fuzz(CLI::App& app, std::ostream& out, std::ostream& err)
 {
@@ -507,6 +566,13 @@ Command add_fuzz(CLI::App& app, std::ostream& out, std::ostream& err)
   cmd->add_option("--merge", a->merge_dirs, "join these fuzz output folders into --out instead of running");
   cmd->add_flag("--fcl", a->fuzz.compare.fcl, "also run the fcl subject (FCL's continuous collision) on the cases FCL can express");
   cmd->add_option("--semantics", a->semantics, own_semantics_help)->check(CLI::IsMember({"regularised", "closed"}));
+  cmd->add_flag("--ccd", a->ccd,
+                "a campaign of CCD queries (ccd/Ccd_families.h, every family) instead of scenes; findings are also "
+                "written in the benchmark's CSV (docs/ccd-queries.md)");
+  cmd->add_flag("--earliest", a->earliest, "--ccd: also compare t* (a disagreement of cause time beyond --time-bound)");
+  cmd->add_option("--time-bound", a->ccd_args.time_bound,
+                  "--ccd --earliest: the largest |t - t*| that is no disagreement (default 1e-9)")
+      ->check(CLI::NonNegativeNumber);
   add_subject_options(*cmd, a->subjects);
   return [cmd, a, &out, &err] {
     if (!cmd->parsed()) return -1;
@@ -517,6 +583,11 @@ Command add_fuzz(CLI::App& app, std::ostream& out, std::ostream& err)
     fuzz.compare.semantics = *semantics_from_name(a->semantics);
     if (!apply_subject_args(a->subjects, fuzz.compare, "fuzz", err)) return CLASH4D_EXIT_INVALID;
     fuzz.progress = isatty(fileno(stderr)) != 0;
+    if (a->ccd) return ccd_fuzz(*a, *cmd, out, err);
+    if (a->earliest || cmd->count("--time-bound")) {
+      err << "clash4d fuzz: --earliest and --time-bound are for --ccd campaigns\n";
+      return CLASH4D_EXIT_INVALID;
+    }
     return fuzz_command(fuzz, out, err);
   };
 }
@@ -525,16 +596,18 @@ struct Report_args {
   std::vector<std::string> inputs;
   std::string out;
   std::string semantics = "regularised";
+  Ccd_compare_args ccd;
   Subject_args subjects;
 };
 
 Command add_report(CLI::App& app, std::ostream& out, std::ostream& err)
 {
   auto a = std::make_shared<Report_args>();
-  CLI::App* cmd = app.add_subcommand("report", "Compare scenes (files, folders, fuzz outputs) and write DIR/index.html, report.json and junit.xml.");
-  cmd->add_option("INPUT", a->inputs, "scene files, folders of scenes, or fuzz output folders")->required();
+  CLI::App* cmd = app.add_subcommand("report", "Compare scenes and CCD queries (files, folders, fuzz outputs) and write DIR/index.html, report.json and junit.xml.");
+  cmd->add_option("INPUT", a->inputs, "scene files, CCD query files (.csv or JSON lines), folders of them, or fuzz output folders (fuzz --ccd's too)")->required();
   cmd->add_option("--out", a->out, "output folder")->required();
   cmd->add_option("--semantics", a->semantics, own_semantics_help)->check(CLI::IsMember({"regularised", "closed"}));
+  add_ccd_options(*cmd, a->ccd);
   add_subject_options(*cmd, a->subjects);
   return [cmd, a, &out, &err] {
     if (!cmd->parsed()) return -1;
@@ -542,7 +615,8 @@ Command add_report(CLI::App& app, std::ostream& out, std::ostream& err)
     o.earliest = true;
     o.semantics = *semantics_from_name(a->semantics);
     if (!apply_subject_args(a->subjects, o, "report", err)) return CLASH4D_EXIT_INVALID;
-    return report_command(a->inputs, a->out, o, out, err);
+    Report_inputs inputs{a->inputs, o, ccd_options_of(o, a->ccd), ccd_type_of(a->ccd)};
+    return report_command(inputs, a->out, out, err);
   };
 }
 

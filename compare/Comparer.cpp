@@ -23,18 +23,10 @@
 namespace clash4d {
 namespace {
 
-struct Run {
-  std::string subject;
+struct Run : Subject_run {
   bool exact_numbers = true;      // witness strings are rationals (else doubles)
   bool reads_doubles = false;     // it sees the scene's numbers as doubles (input rounding applies)
-  bool ok = true;
-  std::string error;
-  std::string fault;              // external subject: crash, timeout or protocol
-  std::string skipped;            // why the subject did not run (fcl: scene not expressible)
-  std::string semantics = "regularised";
-  std::optional<double> tolerance;
   Check_answer answer;
-  double seconds = 0;
 };
 
 template <class F>
@@ -170,14 +162,6 @@ Run library_run(const char* name, const Scene& scene, const Check_options& co)
   return r;
 }
 
-std::string decimal(const Rational& q)
-{
-  std::ostringstream out;
-  out.precision(3);
-  out << std::scientific << CGAL::to_double(q);
-  return out.str();
-}
-
 } // namespace
 
 Scene rounded_scene(const Scene& scene)
@@ -258,7 +242,7 @@ void fill_answer(Subject_row& s, const Run& r, const Reference& ref, const Scene
   const Pair_answer* exact = ref.in(r.semantics).answer.reported();
   if (exact && exact->earliest) {
     Rational e = value_of(main->t_star, r.exact_numbers) - value_of(exact->t_star, true);
-    s.t_error = decimal(e < 0 ? Rational(-e) : e);
+    s.t_error = t_error_text(e < 0 ? Rational(-e) : e);
   }
 }
 
@@ -292,18 +276,8 @@ std::string classify(const Run& r, const Subject_row& s, Reference& ref, std::st
 
 Subject_row row_of(const Run& r, Reference& ref, const Scene_model<Rational_kernel>& model, std::vector<Disagreement>& list)
 {
-  Subject_row s;
-  s.subject = r.subject;
-  s.semantics = r.semantics;
-  s.tolerance = r.tolerance;
-  s.reference = &r == &ref.regularised || &r == &ref.closed;
-  s.ok = r.ok;
-  s.error = r.error;
-  s.seconds = r.seconds;
-  if (!r.skipped.empty()) {   // no answer: nothing to hold against exact
-    s.skipped = r.skipped;
-    return s;
-  }
+  Subject_row s = r.row(&r == &ref.regularised || &r == &ref.closed);
+  if (s.skipped) return s;
   fill_answer(s, r, ref, model);
   std::string detail, cause = classify(r, s, ref, detail);
   s.agrees = r.ok && cause.empty();
@@ -369,6 +343,14 @@ Comparison compare_scene(const Scene& scene, const std::string& file, const Comp
   // objects touch (never null there); where it is yes, they collide.
   if (!ref.regularised.answer.collide) out.closed_touch = ref.closed.answer.collide;
   return out;
+}
+
+std::string t_error_text(const Rational& error)
+{
+  std::ostringstream out;
+  out.precision(3);
+  out << std::scientific << CGAL::to_double(error);
+  return out.str();
 }
 
 const char* builtin_semantics(const std::string& subject)

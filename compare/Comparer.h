@@ -75,6 +75,10 @@ Scene rounded_scene(const Scene& scene);
 // The name of the double subject with tolerance tol ("double tol=1e-09").
 std::string tolerance_subject(double tol);
 
+// A row's t error |t* - exact t*| as it is shown, 3 significant digits
+// ("1.25e-10"): a display, never decided on.
+std::string t_error_text(const Rational& error);
+
 // The semantics a compiled-in library decides in: FCL and Bullet the closed
 // question (they count touching).
 const char* builtin_semantics(const std::string& subject);

@@ -108,6 +108,20 @@ Subject_row row_from_json(const json& s, const std::string& where)
 
 } // namespace
 
+Subject_row Subject_run::row(bool reference) const
+{
+  Subject_row s;
+  s.subject = subject;
+  s.semantics = semantics;
+  s.tolerance = tolerance;
+  s.reference = reference;
+  s.ok = ok;
+  s.error = error;
+  s.seconds = seconds;
+  if (!skipped.empty()) s.skipped = skipped;   // no answer: nothing to hold against exact
+  return s;
+}
+
 const Subject_row* Comparison::reference() const { return reference_in("regularised"); }
 
 const Subject_row* Comparison::reference_in(const std::string& semantics) const
@@ -145,21 +159,24 @@ Comparison Comparison::reproducible() const
   return c;
 }
 
+json row_json(const Subject_row& s)
+{
+  json r = {{"subject", s.subject}, {"reference", s.reference}, {"ok", s.ok}, {"error", s.error},
+            {"skipped", optional_json(s.skipped)}, {"collide", optional_json(s.collide)},
+            {"witness", located_json(s.witness, false)}, {"witness_valid", optional_json(s.witness_valid)},
+            {"earliest", located_json(s.earliest, true)}, {"t_error", optional_json(s.t_error)}};
+  if (s.seconds) r["seconds"] = *s.seconds;
+  r["agrees"] = optional_json(s.agrees);
+  r["cause"] = optional_json(s.cause);
+  r["semantics"] = s.semantics;
+  if (s.tolerance) r["tolerance"] = *s.tolerance;
+  return r;
+}
+
 json Comparison::to_json() const
 {
   json rows = json::array(), list = json::array();
-  for (const Subject_row& s : subjects) {
-    json r = {{"subject", s.subject}, {"reference", s.reference}, {"ok", s.ok}, {"error", s.error},
-              {"skipped", optional_json(s.skipped)}, {"collide", optional_json(s.collide)},
-              {"witness", located_json(s.witness, false)}, {"witness_valid", optional_json(s.witness_valid)},
-              {"earliest", located_json(s.earliest, true)}, {"t_error", optional_json(s.t_error)}};
-    if (s.seconds) r["seconds"] = *s.seconds;
-    r["agrees"] = optional_json(s.agrees);
-    r["cause"] = optional_json(s.cause);
-    r["semantics"] = s.semantics;
-    if (s.tolerance) r["tolerance"] = *s.tolerance;
-    rows.push_back(r);
-  }
+  for (const Subject_row& s : subjects) rows.push_back(row_json(s));
   for (const Disagreement& d : disagreements)
     list.push_back({{"subject", d.subject}, {"semantics", d.semantics}, {"cause", d.cause}, {"detail", d.detail}});
   return {{"file", file}, {"name", name}, {"closed_touch", optional_json(closed_touch)}, {"subjects", rows},

@@ -44,10 +44,31 @@ struct Subject_row {
   bool disagrees() const { return ok && cause.has_value(); }
 };
 
+// How a subject's run went, whatever it was asked (a scene or a CCD query):
+// the part of its row every comparer fills alike.
+struct Subject_run {
+  std::string subject;
+  std::string semantics = "regularised";
+  std::optional<double> tolerance;
+  bool ok = true;
+  std::string error;
+  std::string fault;              // external subject: crash, timeout or protocol
+  std::string skipped;            // why the subject did not run (fcl: scene not expressible; unsupported)
+  double seconds = 0;
+
+  // Its row with these fields (and `skipped` when it did not run); the
+  // answer, agreement and cause are the comparer's to fill.
+  Subject_row row(bool reference) const;
+};
+
 struct Disagreement {
   std::string subject, cause, detail;
   std::string semantics = "regularised";   // the question the subject was judged in
 };
+
+// A row as Comparison::to_json writes it (compare/README.md); the CCD
+// comparison writes its rows from it too (compare/Ccd_comparison.h).
+nlohmann::ordered_json row_json(const Subject_row& s);
 
 struct Comparison {
   std::string file, name;

@@ -1,4 +1,5 @@
 #include "compare/External_subject.h"
+#include "compare/Ccd_query_files.h"
 #include "scene/Input_error.h"
 #include "scene/Json_reader.h"
 #include "scene/Number_text.h"
@@ -68,7 +69,8 @@ std::optional<std::string> exact_text(const Json_value& v)
 }
 
 // Parses an answer line; on a protocol violation returns why in `problem`.
-Subject_answer parse_answer(const std::string& line, long id, bool earliest, std::string& problem)
+// A CCD answer has no witness (there is no scene point to check).
+Subject_answer parse_answer(const std::string& line, long id, bool earliest, bool ccd, std::string& problem)
 {
   Subject_answer a;
   Json_value v;
@@ -79,7 +81,8 @@ Subject_answer parse_answer(const std::string& line, long id, bool earliest, std
     return a;
   }
   if (v.kind != Kind::Object) return problem = "the answer is not a JSON object", a;
-  std::string extra = unknown_key(v, {"id", "collide", "t", "witness", "unsupported"});
+  std::string extra = ccd ? unknown_key(v, {"id", "collide", "t", "unsupported"})
+                          : unknown_key(v, {"id", "collide", "t", "witness", "unsupported"});
   if (!extra.empty()) return problem = "unknown key \"" + extra + "\" in the answer", a;
   const Json_value* got = v.find("id");
   if (!got || got->kind != Kind::Number || got->text != std::to_string(id))
@@ -277,12 +280,22 @@ bool External_subject::write_all(const std::string& text)
 
 Subject_answer External_subject::ask(const Scene& scene, bool earliest)
 {
+  return exchange("scene", scene_json(scene), earliest);
+}
+
+Subject_answer External_subject::ask(const Ccd_query& query, bool earliest)
+{
+  return exchange("ccd", ccd_query_json(query), earliest);
+}
+
+Subject_answer External_subject::exchange(const char* key, const nlohmann::ordered_json& body, bool earliest)
+{
   if (pid_ < 0) {
     Subject_answer started = start();
     if (started.kind == Subject_answer::Kind::Fault) return started;
   }
   long id = next_id_++;
-  nlohmann::ordered_json request = {{"id", id}, {"scene", scene_json(scene)}, {"earliest", earliest}};
+  nlohmann::ordered_json request = {{"id", id}, {key, body}, {"earliest", earliest}};
   if (!write_all(request.dump() + "\n")) {
     // It stopped reading: it is gone (its output has ended), or stuck.
     std::string ignored;
@@ -294,7 +307,7 @@ Subject_answer External_subject::ask(const Scene& scene, bool earliest)
   Subject_answer got = read_line(line, spec_.timeout_seconds);
   if (got.kind == Subject_answer::Kind::Fault) return got;
   std::string problem;
-  Subject_answer a = parse_answer(line, id, earliest, problem);
+  Subject_answer a = parse_answer(line, id, earliest, std::string(key) == "ccd", problem);
   if (!problem.empty()) return fault("protocol", problem + ": " + line.substr(0, 200));
   return a;
 }

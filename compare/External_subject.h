@@ -1,16 +1,19 @@
 // An external subject (spec: "External subjects"): a collision engine run as
 // `/bin/sh -c COMMAND`, speaking newline-delimited JSON on its standard input
 // and output (docs/subject-protocol.md). One long-lived process answers many
-// requests; a crash, a request past the time limit or an answer out of
-// protocol is a Subject_fault (cause "crash", "timeout" or "protocol"), the
-// process is killed and the next request starts a fresh one.
+// requests (scenes and CCD queries); a crash, a request past the time limit
+// or an answer out of protocol is a Subject_fault (cause "crash", "timeout"
+// or "protocol"), the process is killed and the next request starts a fresh
+// one.
 //
 // Processes run in their own process group, so a shell's children are killed
 // with it; every child is reaped (no zombie survives the object).
 #ifndef CLASH4D_COMPARE_EXTERNAL_SUBJECT_H
 #define CLASH4D_COMPARE_EXTERNAL_SUBJECT_H
 
+#include "ccd/Ccd_query.h"
 #include "scene/Scene.h"
+#include <nlohmann/json.hpp>
 #include <sys/types.h>
 #include <array>
 #include <memory>
@@ -31,7 +34,8 @@ struct Subject_spec {
 Subject_spec parse_subject_spec(const std::string& text, double timeout_seconds);
 
 // One answer. Numbers are the subject's text read exactly and written back
-// as rationals (never through a double).
+// as rationals (never through a double); an answer to a CCD query has no
+// witness.
 struct Subject_answer {
   enum class Kind { Answer, Unsupported, Fault };
   Kind kind = Kind::Answer;
@@ -52,6 +56,9 @@ public:
   // Sends the scene (started on first use or after a fault) and waits for
   // the answer, at most the time limit.
   Subject_answer ask(const Scene& scene, bool earliest);
+  // The same for a CCD query ({"id", "ccd": {"type", "t0", "t1"}, "earliest"});
+  // its answer has no witness.
+  Subject_answer ask(const Ccd_query& query, bool earliest);
 
   const Subject_spec& spec() const { return spec_; }
   // From the hello line; "regularised" until a process has said otherwise.
@@ -59,6 +66,8 @@ public:
   std::optional<double> tolerance() const { return tolerance_; }
 
 private:
+  // One request {"id": N, key: body, "earliest": ...} and its answer.
+  Subject_answer exchange(const char* key, const nlohmann::ordered_json& body, bool earliest);
   Subject_answer start();
   Subject_answer read_hello();
   void stop(bool kill_now);

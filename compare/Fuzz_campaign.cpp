@@ -29,75 +29,45 @@ json campaign_json(const Fuzz_options& o)
   if (o.compare.fcl) c["fcl"] = true;   // only when on, so folders of campaigns without it still match
   if (o.compare.semantics == Semantics::closed) c["semantics"] = "closed";
   if (o.compare.bullet) c["bullet"] = true;
-  if (!o.compare.externals.empty()) {
-    c["subjects"] = json::array();
-    for (const auto& pool : o.compare.externals)
-      c["subjects"].push_back({{"name", pool->spec().name}, {"command", pool->spec().command}});
-  }
+  if (!o.compare.externals.empty()) c["subjects"] = subjects_json(o.compare.externals);
   return c;
 }
 
 // The campaign folder: created, or checked to hold this very campaign.
-void prepare(const Fuzz_options& o)
+void prepare(const Campaign_options& o, const json& want)
 {
   fs::create_directories(fs::path(o.out) / "findings");
   std::string path = (fs::path(o.out) / "campaign.json").string();
-  json want = campaign_json(o);
   if (fs::exists(path)) {
     if (read_json_document(path) != want)
-      throw std::runtime_error(path + ": this folder holds another campaign (seed, cases, tolerances, --semantics, --fcl or --subject differ)");
+      throw std::runtime_error(path + ": this folder holds another campaign (seed, cases, tolerances, --semantics, --fcl, --ccd or --subject differ)");
   } else {
     write_file_atomically(path, want.dump(2) + "\n");
   }
 }
 
-std::string progress_path(const Fuzz_options& o)
+std::string file_text(const fs::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path.string() + ": cannot read");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string progress_path(const Campaign_options& o)
 {
   return (fs::path(o.out) / ("progress-" + std::to_string(o.shard) + "-of-" + std::to_string(o.shards) + ".json")).string();
 }
-
-std::string finding_path(const Fuzz_options& o, std::uint64_t index, const char* suffix)
-{
-  return (fs::path(o.out) / "findings" / ("case-" + std::to_string(index) + suffix)).string();
-}
-
-json disagreement_meta(const Comparison& c, const Disagreement& d)
-{
-  const Subject_row* row = c.find(d.subject);
-  json m = {{"subject", d.subject}, {"semantics", d.semantics}, {"cause", d.cause}, {"detail", d.detail}};
-  if (row && row->tolerance) m["tolerance"] = *row->tolerance;
-  return m;
-}
-
-// A finding is a scene file (check, compare and validate take it as it is);
-// where it came from goes under its `meta` key (spec). Timings are left out:
-// they differ from run to run, and findings must not.
-json finding_meta(const Fuzz_options& o, const std::string& family, std::uint64_t index, const Comparison& comparison)
-{
-  json disagreements = json::array();
-  for (const auto& d : comparison.disagreements) disagreements.push_back(disagreement_meta(comparison, d));
-  return {{"tool", "clash4d fuzz"}, {"family", family}, {"seed", o.seed}, {"index", index},
-          {"disagreements", disagreements}, {"comparison", comparison.reproducible().to_json()}};
-}
-
-// Faults of an external subject: kept as they are (a fault may depend on the
-// process's history, and each retry of a time-out costs the time limit).
-bool is_fault(const std::string& cause) { return cause == "crash" || cause == "timeout" || cause == "protocol"; }
 
 // Shrinks while the first disagreement (same subject, same cause) persists,
 // running only the subjects that decide it.
 Scene shrink(const Fuzz_options& o, const Scene& scene, const Disagreement& first)
 {
   std::string key = first.subject + ": " + first.cause;
-  Compare_options narrow = o.compare;
-  narrow.tolerances.clear();
-  for (double tol : o.compare.tolerances)
-    if (first.subject == tolerance_subject(tol)) narrow.tolerances.push_back(tol);
+  Compare_options narrow = narrowed_to(o.compare, first.subject);
   narrow.fcl = o.compare.fcl && first.subject == "fcl";
   narrow.bullet = o.compare.bullet && first.subject == "bullet";
-  narrow.externals.clear();
-  for (const auto& pool : o.compare.externals)
-    if (pool->spec().name == first.subject) narrow.externals.push_back(pool);
   auto still_fails = [&](const Scene& candidate) {
     std::vector<std::string> k = compare_scene(candidate, "", narrow).disagreement_keys();
     return std::find(k.begin(), k.end(), key) != k.end();
@@ -113,11 +83,18 @@ bool run_case(const Fuzz_options& o, std::uint64_t index)
   std::string name = "case-" + std::to_string(index);
   Comparison comparison = compare_scene(scene, name, o.compare);
   if (!comparison.has_disagreement()) return false;
-  write_file_atomically(finding_path(o, index, ".json"), write_scene(scene, finding_meta(o, c.family, index, comparison)));
+  // A finding is a scene file (check, compare and validate take it as it
+  // is); where it came from goes under its `meta` key (spec). Timings are
+  // left out: they differ from run to run, and findings must not.
+  json found = finding_meta(o, c.family, index, comparison);
+  found["comparison"] = comparison.reproducible().to_json();
+  write_file_atomically(finding_path(o, index, ".json"), write_scene(scene, found));
   const Disagreement& first = comparison.disagreements.front();
   bool fault = is_fault(first.cause);
   Scene small = fault ? scene : shrink(o, scene, first);
-  json meta = finding_meta(o, c.family, index, fault ? comparison : compare_scene(small, name + ".min", o.compare));
+  Comparison again = fault ? comparison : compare_scene(small, name + ".min", o.compare);
+  json meta = finding_meta(o, c.family, index, again);
+  meta["comparison"] = again.reproducible().to_json();
   meta["shrunk_from"] = name + ".json";
   meta["disagreement"] = disagreement_meta(comparison, first);
   if (fault) meta["not_shrunk"] = "a subject's crash, time-out or protocol fault may depend on its state";
@@ -137,8 +114,14 @@ void show_progress(std::ostream& err, std::uint64_t done, std::uint64_t total, s
 
 Fuzz_summary run_fuzz(const Fuzz_options& o, std::ostream& err)
 {
+  return run_campaign(o, campaign_json(o), [&](std::uint64_t index) { return run_case(o, index); }, err);
+}
+
+Fuzz_summary run_campaign(const Campaign_options& o, const json& description,
+                          const std::function<bool(std::uint64_t)>& run_case, std::ostream& err)
+{
   if (o.shards == 0 || o.shard == 0 || o.shard > o.shards) throw std::runtime_error("--shard K/S needs 1 <= K <= S");
-  prepare(o);
+  prepare(o, description);
   // The cases of this shard: indices i with i mod S = K - 1, in order.
   std::vector<std::uint64_t> mine;
   for (std::uint64_t i = o.shard - 1; i < o.cases; i += o.shards) mine.push_back(i);
@@ -156,7 +139,7 @@ Fuzz_summary run_fuzz(const Fuzz_options& o, std::ostream& err)
     std::size_t end = std::min(mine.size(), b + batch);
     tbb::parallel_for(b, end, [&](std::size_t k) {
       bool known = fs::exists(finding_path(o, mine[k], ".json"));   // redone after an interruption
-      if (run_case(o, mine[k]) && !known) ++findings;
+      if (run_case(mine[k]) && !known) ++findings;
     });
     // Only after the whole batch is saved does the progress move past it.
     std::uint64_t next = end < mine.size() ? mine[end] : o.cases;
@@ -172,17 +155,65 @@ Fuzz_summary run_fuzz(const Fuzz_options& o, std::ostream& err)
   return s;
 }
 
-Comparison finding_comparison(const json& finding, const std::string& path)
+std::string finding_path(const Campaign_options& o, std::uint64_t index, const std::string& suffix)
+{
+  return (fs::path(o.out) / "findings" / ("case-" + std::to_string(index) + suffix)).string();
+}
+
+json disagreement_meta(const Comparison& c, const Disagreement& d)
+{
+  const Subject_row* row = c.find(d.subject);
+  json m = {{"subject", d.subject}, {"semantics", d.semantics}, {"cause", d.cause}, {"detail", d.detail}};
+  if (row && row->tolerance) m["tolerance"] = *row->tolerance;
+  return m;
+}
+
+json finding_meta(const Campaign_options& o, const std::string& family, std::uint64_t index, const Comparison& comparison)
+{
+  json disagreements = json::array();
+  for (const auto& d : comparison.disagreements) disagreements.push_back(disagreement_meta(comparison, d));
+  return {{"tool", "clash4d fuzz"}, {"family", family}, {"seed", o.seed}, {"index", index}, {"disagreements", disagreements}};
+}
+
+json subjects_json(const std::vector<std::shared_ptr<External_pool>>& externals)
+{
+  json list = json::array();
+  for (const auto& pool : externals) list.push_back({{"name", pool->spec().name}, {"command", pool->spec().command}});
+  return list;
+}
+
+bool is_fault(const std::string& cause) { return cause == "crash" || cause == "timeout" || cause == "protocol"; }
+
+namespace {
+
+// meta.comparison of a finding read as `read` reads it, errors naming the file.
+template <class Read>
+auto saved_comparison(const json& finding, const std::string& path, Read read)
 {
   if (!finding.is_object() || !finding.contains("meta") || !finding["meta"].is_object() ||
       !finding["meta"].contains("comparison"))
     throw std::runtime_error(path + ": not a clash4d fuzz finding (no meta.comparison)");
   try {
-    return Comparison::from_json(finding["meta"]["comparison"]);
+    return read(finding["meta"]["comparison"]);
   } catch (const std::runtime_error& e) {
     throw std::runtime_error(path + ": meta." + e.what());
   }
 }
+
+} // namespace
+
+Comparison finding_comparison(const json& finding, const std::string& path)
+{
+  if (is_ccd_finding(finding)) return finding_ccd_comparison(finding, path).comparison;
+  return saved_comparison(finding, path, Comparison::from_json);
+}
+
+Ccd_comparison finding_ccd_comparison(const json& finding, const std::string& path)
+{
+  return saved_comparison(finding, path, Ccd_comparison::from_json);
+}
+
+bool is_ccd_finding(const json& finding) { return finding.is_object() && finding.contains("t0"); }
 
 Fuzz_summary merge_fuzz(const std::vector<std::string>& dirs, const std::string& out)
 {
@@ -193,14 +224,20 @@ Fuzz_summary merge_fuzz(const std::vector<std::string>& dirs, const std::string&
     fs::path findings = fs::path(d) / "findings";
     if (!fs::is_directory(findings)) throw std::runtime_error(d + ": not a fuzz output folder (no findings/)");
     for (const auto& f : fs::directory_iterator(findings)) {
-      if (f.path().extension() != ".json") continue;
-      std::string name = f.path().filename().string();
+      std::string extension = f.path().extension().string(), name = f.path().filename().string();
+      if (extension != ".json" && extension != ".csv") continue;
+      // Copied as they are: a CCD finding's JSON line must stay one line.
+      std::string text = file_text(f.path());
+      fs::path target = fs::path(out) / "findings" / name;
+      if (fs::exists(target) && file_text(target) != text)
+        throw std::runtime_error(target.string() + ": two campaigns disagree on this finding (different seeds?)");
+      if (extension == ".csv") {
+        write_file_atomically(target.string(), text);
+        continue;
+      }
       json finding = read_json_document(f.path().string());
       Comparison comparison = finding_comparison(finding, f.path().string());
-      fs::path target = fs::path(out) / "findings" / name;
-      if (fs::exists(target) && read_json_document(target.string()) != finding)
-        throw std::runtime_error(target.string() + ": two campaigns disagree on this finding (different seeds?)");
-      write_file_atomically(target.string(), finding.dump(2) + "\n");
+      write_file_atomically(target.string(), text);
       if (name.find(".min.json") != std::string::npos) continue;
       ++s.findings;
       ++by_family[finding["meta"].value("family", "")];

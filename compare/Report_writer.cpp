@@ -24,8 +24,9 @@ namespace {
 using json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 
-// Disagreements, then faults of external subjects.
-const char* const all_causes[] = {"contact", "input rounding", "arithmetic", "invalid witness", "crash", "timeout", "protocol"};
+// Disagreements (scenes and CCD queries), then faults of external subjects.
+const char* const all_causes[] = {"contact",         "input rounding", "tolerance", "arithmetic", "time",
+                                  "invalid witness", "crash",          "timeout",   "protocol"};
 const char* const palette[] = {"#4e79a7", "#f28e2b", "#59a14f", "#b07aa1", "#76b7b2",
                                "#edc948", "#9c755f", "#ff9da7", "#e15759", "#bab0ac"};
 constexpr std::size_t max_drawn_objects = 24;
@@ -147,17 +148,19 @@ struct Tally {
   }
 };
 
-// Scene counts; answer counts over the non-reference subjects, in total and
-// per subject; failures of the reference counted apart.
+// Case counts (scenes and CCD queries apart; agreeing, disagreeing and with
+// errors over both); answer counts over the non-reference subjects, in total
+// and per subject; failures of the reference counted apart.
 json summary_of(const std::vector<Report_case>& cases)
 {
-  int agreeing = 0, disagreeing = 0, with_errors = 0, reference_errors = 0;
+  int queries = 0, agreeing = 0, disagreeing = 0, with_errors = 0, reference_errors = 0;
   Tally total, reference;
   json by_subject = json::object();
   std::vector<std::string> order;
   std::vector<Tally> tallies;
   for (const Report_case& c : cases) {
     bool d = case_disagrees(c.comparison), e = c.comparison.has_failure();
+    queries += c.ccd.has_value();
     agreeing += !d && !e;
     disagreeing += d;
     with_errors += e;
@@ -175,8 +178,8 @@ json summary_of(const std::vector<Report_case>& cases)
   }
   for (std::size_t i = 0; i < order.size(); ++i) by_subject[order[i]] = tallies[i].subject_json();
   json t = total.to_json();
-  return {{"scenes", cases.size()}, {"scenes_agreeing", agreeing}, {"scenes_disagreeing", disagreeing},
-          {"scenes_with_errors", with_errors}, {"answers", t["answers"]}, {"agreements", t["agreements"]},
+  return {{"scenes", cases.size() - static_cast<std::size_t>(queries)}, {"queries", queries},
+          {"scenes_agreeing", agreeing}, {"scenes_disagreeing", disagreeing}, {"scenes_with_errors", with_errors}, {"answers", t["answers"]}, {"agreements", t["agreements"]},
           {"disagreements", t["disagreements"]}, {"errors", t["errors"]}, {"skipped", t["skipped"]}, {"reference_errors", reference_errors},
           {"by_cause", t["by_cause"]}, {"by_subject", by_subject},
           {"reference_seconds_per_query", reference.subject_json()["seconds_per_query"]}};
@@ -185,16 +188,19 @@ json summary_of(const std::vector<Report_case>& cases)
 std::string report_json(const std::vector<Report_case>& cases, const json& summary)
 {
   json out = {{"format", "clash4d-report/1"}, {"summary", summary}, {"cases", json::array()}};
-  for (const Report_case& c : cases) out["cases"].push_back(c.comparison.to_json());
+  for (const Report_case& c : cases) out["cases"].push_back(c.ccd ? c.ccd->to_json() : c.comparison.to_json());
   return out.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 // ---------------------------------------------------------------- JUnit
 
+// A case's name: its file, and for a CCD query which one.
+std::string case_title(const Report_case& c) { return c.ccd ? c.file + ": " + c.comparison.name : c.file; }
+
 std::string junit_case(const Report_case& c, const Subject_row& s)
 {
   std::ostringstream out;
-  out << "  <testcase classname=\"" << escape(c.file) << "\" name=\"" << escape(s.subject) << "\"";
+  out << "  <testcase classname=\"" << escape(case_title(c)) << "\" name=\"" << escape(s.subject) << "\"";
   if (s.seconds) out << " time=\"" << format("%.6f", *s.seconds) << "\"";
   if (s.failed()) {
     std::string type = s.cause.value_or("error");
@@ -573,12 +579,16 @@ std::string family_html(const json& s)
 std::string summary_html(const json& s)
 {
   std::ostringstream out;
-  out << "<h2>Summary</h2>\n<table>\n<tr><th>scenes</th><th>all agree</th><th>some disagreement</th><th>some error</th>"
-      << "<th>answers compared</th><th>agreements</th><th>disagreements</th><th>errors</th><th>skipped</th></tr>\n<tr>";
-  for (const char* k : {"scenes", "scenes_agreeing", "scenes_disagreeing", "scenes_with_errors", "answers",
-                        "agreements", "disagreements", "errors", "skipped"})
+  out << "<h2>Summary</h2>\n<table>\n<tr><th>cases</th><th>all agree</th><th>some disagreement</th><th>some error</th>"
+      << "<th>answers compared</th><th>agreements</th><th>disagreements</th><th>errors</th><th>skipped</th></tr>\n<tr>"
+      << number_cell(s.value("scenes", 0L) + s.value("queries", 0L));
+  for (const char* k : {"scenes_agreeing", "scenes_disagreeing", "scenes_with_errors", "answers", "agreements",
+                        "disagreements", "errors", "skipped"})
     out << number_cell(s.value(k, 0L));
-  out << "</tr>\n</table>\n<table>\n<tr><th>subject</th><th>semantics</th><th>time per query</th><th>answers</th><th>agreements</th>";
+  out << "</tr>\n</table>\n";
+  if (s.value("queries", 0L) > 0)
+    out << "<p>" << s.value("scenes", 0L) << " scenes, " << s.value("queries", 0L) << " CCD queries.</p>\n";
+  out << "<table>\n<tr><th>subject</th><th>semantics</th><th>time per query</th><th>answers</th><th>agreements</th>";
   for (const auto& c : s["by_cause"].items()) out << "<th>" << escape(c.key()) << "</th>";
   out << "<th>errors</th><th>skipped</th></tr>\n";
   auto time_cell = [&](const json& t) {
@@ -617,7 +627,7 @@ const char* case_class(const Comparison& comparison)
 std::string index_html(const std::vector<Report_case>& cases, const std::vector<std::size_t>& order)
 {
   std::ostringstream out;
-  out << "<h2>Scenes</h2>\n<table>\n<tr><th>file</th><th>name</th><th>exact</th><th>result</th></tr>\n";
+  out << "<h2>Cases</h2>\n<table>\n<tr><th>file</th><th>name</th><th>exact</th><th>result</th></tr>\n";
   for (std::size_t i : order) {
     const Comparison& c = cases[i].comparison;
     std::string cls = std::string(case_class(c)) + "-cell";
@@ -643,12 +653,17 @@ std::string number_html(const std::string& s)
   return std::string(s.size() <= 24 ? "<code class=\"whole\">" : "<code>") + escape(s) + "</code>";
 }
 
-std::string subject_row(const Subject_row& s)
+// A subject's row: a scene's has its semantics and witness, a CCD query's not
+// (one semantics, no witness).
+std::string subject_row(const Subject_row& s, bool scene)
 {
   std::string t_star = s.earliest ? number_html(s.earliest->t) : dash;
-  return "<tr>" + cell(escape(s.subject)) + cell(escape(s.semantics)) + cell(verdict_text(&s)) +
-         cell("<span class=\"mono\">" + escape(located_text(s.witness)) + "</span>") +
-         cell(yes_no(s.witness_valid)) + cell(t_star) + cell(s.t_error ? number_html(*s.t_error) : dash) +
+  std::string row = "<tr>" + cell(escape(s.subject));
+  if (scene) row += cell(escape(s.semantics));
+  row += cell(verdict_text(&s));
+  if (scene)
+    row += cell("<span class=\"mono\">" + escape(located_text(s.witness)) + "</span>") + cell(yes_no(s.witness_valid));
+  return row + cell(t_star) + cell(s.t_error ? number_html(*s.t_error) : dash) +
          cell(s.seconds ? seconds_text(*s.seconds) : dash, "n whole") + result_cell(s) + "</tr>\n";
 }
 
@@ -682,15 +697,51 @@ std::string facts_html(const Report_case& rc)
   return out + "</dl>\n";
 }
 
-std::string case_html(const Report_case& rc, std::size_t index)
+std::string section_head(const Report_case& rc, std::size_t index)
+{
+  return std::string("<section class=\"case ") + case_class(rc.comparison) + "\" id=\"case-" + std::to_string(index) +
+         "\">\n<h2><code>" + escape(rc.file) + "</code></h2>\n<p class=\"name\">" + escape(rc.comparison.name) + "</p>\n";
+}
+
+// A CCD query's vertices, exact, at t = 0 and t = 1 (in place of diagrams).
+std::string query_html(const Ccd_query& q)
+{
+  static const char* const vertex_face[] = {"v", "f0", "f1", "f2"};
+  static const char* const edge_edge[] = {"ea0", "ea1", "eb0", "eb1"};
+  const char* const* names = q.type() == Ccd_type::vertex_face ? vertex_face : edge_edge;
+  auto point = [](const Ccd_query::Point& p) {
+    return "<span class=\"mono\">(" + escape(to_string(p[0]) + ", " + to_string(p[1]) + ", " + to_string(p[2])) + ")</span>";
+  };
+  std::string out = "<table>\n<tr><th>vertex</th><th>at t = 0</th><th>at t = 1</th></tr>\n";
+  for (int i = 0; i < 4; ++i) out += "<tr>" + cell(names[i]) + cell(point(q.row(i))) + cell(point(q.row(i + 4))) + "</tr>\n";
+  return out + "</table>\n";
+}
+
+std::string ccd_case_html(const Report_case& rc, std::size_t index)
 {
   const Comparison& c = rc.comparison;
+  const Subject_row* exact = c.reference();
   std::ostringstream out;
-  out << "<section class=\"case " << case_class(c) << "\" id=\"case-" << index << "\">\n<h2><code>"
-      << escape(rc.file) << "</code></h2>\n<p class=\"name\">" << escape(c.name) << "</p>\n" << facts_html(rc)
+  out << section_head(rc, index) << "<dl>\n<dt>query</dt><dd>" << ccd_type_name(rc.ccd->query.type()) << "</dd>\n";
+  if (!rc.family.empty()) out << "<dt>family</dt><dd>" << escape(rc.family) << "</dd>\n";
+  out << "<dt>exact verdict (closed: touching counts)</dt><dd><b>" << verdict_text(exact) << "</b></dd>\n"
+      << "<dt>exact t*</dt><dd class=\"mono\">" << (exact && exact->earliest ? escape(exact->earliest->t) : dash)
+      << "</dd>\n</dl>\n<table>\n<tr><th>subject</th><th>verdict</th><th>t*</th><th>t error</th><th>time</th>"
+      << "<th>result</th></tr>\n";
+  for (const Subject_row& s : c.subjects) out << subject_row(s, false);
+  out << "</table>\n" << details_html(c) << query_html(rc.ccd->query) << "</section>\n";
+  return out.str();
+}
+
+std::string case_html(const Report_case& rc, std::size_t index)
+{
+  if (rc.ccd) return ccd_case_html(rc, index);
+  const Comparison& c = rc.comparison;
+  std::ostringstream out;
+  out << section_head(rc, index) << facts_html(rc)
       << "<table>\n<tr><th>subject</th><th>semantics</th><th>verdict</th><th>witness</th><th>witness valid</th><th>t*</th>"
       << "<th>t error</th><th>time</th><th>result</th></tr>\n";
-  for (const Subject_row& s : c.subjects) out << subject_row(s);
+  for (const Subject_row& s : c.subjects) out << subject_row(s, true);
   out << "</table>\n" << details_html(c);
   Drawing d = drawing_of(rc);
   out << "<div class=\"diagrams\">\n";
@@ -711,7 +762,7 @@ std::string page_html(const std::vector<Report_case>& cases, const json& summary
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>clash4d verification report</title>\n"
       << "<style>" << page_style << "</style>\n</head>\n<body>\n<h1>clash4d verification report</h1>\n"
       << "<p>Every subject's answer held against the exact one in the subject's own semantics (regularised: touching "
-      << "is not a collision; closed: touching counts). "
+      << "is not a collision; closed: touching counts; a CCD query is always closed). "
       << "Diagrams: each object's extent along one axis over time; doubles, for presentation only.</p>\n"
       << summary_html(summary) << index_html(cases, order);
   for (std::size_t i : order) out << case_html(cases[i], i);
@@ -722,6 +773,11 @@ std::string page_html(const std::vector<Report_case>& cases, const json& summary
 // ---------------------------------------------------------------- files
 
 } // namespace
+
+Report_case ccd_report_case(const std::string& file, const Ccd_comparison& c, const std::string& family)
+{
+  return {file, Scene(), c.comparison, family, c};
+}
 
 void write_report(const std::vector<Report_case>& cases, const std::string& dir)
 {

@@ -1,23 +1,32 @@
 // The verification report of `clash4d report`: comparison objects (schema in
 // compare/README.md) rendered as a self-contained HTML page with q-t diagrams
-// (paper figures 1 and 5: each object's extent along one axis over time), a
-// machine-readable report.json and a JUnit XML file for CI.
+// (paper figures 1 and 5: each object's extent along one axis over time) or,
+// for a CCD query, its rows, a machine-readable report.json and a JUnit XML
+// file for CI.
 #ifndef CLASH4D_COMPARE_REPORT_WRITER_H
 #define CLASH4D_COMPARE_REPORT_WRITER_H
 
+#include "compare/Ccd_comparison.h"
 #include "compare/Comparison.h"
 #include "scene/Scene.h"
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace clash4d {
 
 struct Report_case {
-  std::string file;                   // scene path as given
-  Scene scene;                        // the parsed scene (exact rationals), for drawing
-  Comparison comparison;
+  std::string file;                   // scene (or query file) path as given
+  Scene scene;                        // the parsed scene (exact rationals), for drawing; empty for a CCD query
+  Comparison comparison;              // the rows every case has (a CCD query's: ccd->comparison)
   std::string family;                 // a fuzz finding's family (its meta), else empty
+  // A CCD query's comparison: shown with the query's rows instead of q-t
+  // diagrams, and written to report.json in its own form.
+  std::optional<Ccd_comparison> ccd = std::nullopt;
 };
+
+// The case of a CCD query.
+Report_case ccd_report_case(const std::string& file, const Ccd_comparison& c, const std::string& family);
 
 // Writes DIR/index.html, DIR/report.json, DIR/junit.xml. Each file is written to
 // a temporary name in DIR and renamed, so no half-written file is ever left.

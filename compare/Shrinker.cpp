@@ -1,9 +1,11 @@
 #include "compare/Shrinker.h"
+#include "numbers/Rational.h"
 #include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
 #include "scene/Scene_writer.h"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 
 namespace clash4d {
@@ -236,24 +238,83 @@ std::vector<Scene> simplify_numbers(const Scene& s)
   return out;
 }
 
-} // namespace
+// ------------------------------------------------------------------ queries
 
-Scene shrink_scene(const Scene& scene, const std::function<bool(const Scene&)>& still_fails, std::size_t max_checks)
+using Query_steps = std::vector<Ccd_query> (*)(const Ccd_query&);
+
+// The query moved by -p: every vertex at both times (its answer and t* stay).
+Ccd_query translated(const Ccd_query& q, const Ccd_query::Point& p)
 {
-  Scene best = scene;
-  std::string best_text = write_scene(best);
-  std::set<std::string> seen{best_text};   // the input and every candidate tried (the predicate is a function)
-  std::size_t checks = 0;
-  auto accept = [&](const Scene& candidate) {
-    std::string text = write_scene(candidate);
-    if (!seen.insert(text).second) return false;
-    Scene valid;
-    try {
-      valid = read_scene(read_json_text(text));
-    } catch (const std::exception&) {
-      return false;
+  Ccd_query c = q;
+  for (int i = 0; i < 8; ++i) c.set_row(i, {q.row(i)[0] - p[0], q.row(i)[1] - p[1], q.row(i)[2] - p[2]});
+  return c;
+}
+
+// Each row moved to the origin, then the integer part of row 0 removed.
+std::vector<Ccd_query> remove_translations(const Ccd_query& q)
+{
+  std::vector<Ccd_query> out;
+  for (int i = 0; i < 8; ++i) out.push_back(translated(q, q.row(i)));
+  const Ccd_query::Point& first = q.row(0);
+  out.push_back(translated(q, {truncated(first[0]), truncated(first[1]), truncated(first[2])}));
+  return out;
+}
+
+// A vertex at rest: its position at t = 1 that of t = 0, or the reverse.
+std::vector<Ccd_query> stop_vertices(const Ccd_query& q)
+{
+  std::vector<Ccd_query> out;
+  for (int i = 0; i < 4; ++i)
+    for (int from : {i, i + 4}) {
+      Ccd_query c = q;
+      c.set_row(from == i ? i + 4 : i, q.row(from));
+      out.push_back(std::move(c));
     }
-    if (checks >= max_checks) return false;
+  return out;
+}
+
+std::vector<Ccd_query> simplify_coordinates(const Ccd_query& q)
+{
+  std::vector<Ccd_query> out;
+  for (int i = 0; i < 8; ++i)
+    for (std::size_t k = 0; k < 3; ++k)
+      for (const Rational& r : simpler_values(q.row(i)[k])) {
+        Ccd_query c = q;
+        Ccd_query::Point p = q.row(i);
+        p[k] = r;
+        c.set_row(i, p);
+        out.push_back(std::move(c));
+      }
+  return out;
+}
+
+std::string query_text(const Ccd_query& q)
+{
+  std::string out;
+  for (const auto& p : q.rows())
+    for (const Rational& x : p) out += to_string(x) + ",";
+  return out;
+}
+
+// ------------------------------------------------------------------ the loop
+
+// Greedy shrinking of `start` by the passes (each lists candidates, largest
+// step first) while `still_fails` holds; none when no candidate was kept.
+// `prepare` makes a candidate what the predicate is asked on (false: an
+// invalid candidate, skipped); `text` names a candidate, so none is tried
+// twice.
+template <class T, class Steps_of, class Prepare, class Text>
+std::optional<T> greedy_shrink(const T& start, const std::vector<Steps_of>& passes, Prepare prepare, Text text,
+                               const std::function<bool(const T&)>& still_fails, std::size_t max_checks)
+{
+  std::optional<T> kept;
+  T best = start;
+  std::set<std::string> seen{text(best)};   // the input and every candidate tried (the predicate is a function)
+  std::size_t checks = 0;
+  auto accept = [&](const T& candidate) {
+    if (!seen.insert(text(candidate)).second) return false;
+    T valid;
+    if (!prepare(candidate, valid) || checks >= max_checks) return false;
     ++checks;
     bool fails = false;
     try {
@@ -263,25 +324,62 @@ Scene shrink_scene(const Scene& scene, const std::function<bool(const Scene&)>& 
     }
     if (!fails) return false;
     best = std::move(valid);
-    best_text = std::move(text);
+    kept = best;
     return true;
   };
-  const Steps passes[] = {drop_objects, replace_by_child, drop_children, shorten_motions, drop_parts, simplify_numbers};
   for (bool progress = true; progress && checks < max_checks;) {
     progress = false;
-    for (Steps steps : passes) {
-      std::vector<Scene> candidates = steps(best);
+    for (Steps_of steps : passes) {
+      std::vector<T> candidates = steps(best);
       for (std::size_t i = 0; i < candidates.size() && checks < max_checks;) {
         if (!accept(candidates[i])) {
           ++i;
           continue;
         }
         progress = true;
-        candidates = steps(best);   // go on from the same place in the new scene's list
+        candidates = steps(best);   // go on from the same place in the new list
       }
     }
   }
-  if (best_text != write_scene(scene)) best.name = scene.name.empty() ? "shrunk" : "shrunk from: " + scene.name;
+  return kept;
+}
+
+} // namespace
+
+Scene shrink_scene(const Scene& scene, const std::function<bool(const Scene&)>& still_fails, std::size_t max_checks)
+{
+  // Every candidate is written and read back: validated, its combinatorics redone.
+  auto read_back = [](const Scene& candidate, Scene& valid) {
+    try {
+      valid = read_scene(read_json_text(write_scene(candidate)));
+      return true;
+    } catch (const std::exception&) {
+      return false;
+    }
+  };
+  std::optional<Scene> best =
+      greedy_shrink<Scene>(scene,
+                           std::vector<Steps>{drop_objects, replace_by_child, drop_children, shorten_motions, drop_parts,
+                                              simplify_numbers},
+                           read_back, [](const Scene& s) { return write_scene(s); }, still_fails, max_checks);
+  if (!best) return scene;
+  best->name = scene.name.empty() ? "shrunk" : "shrunk from: " + scene.name;
+  return *best;
+}
+
+Ccd_query shrink_query(const Ccd_query& query, const std::function<bool(const Ccd_query&)>& still_fails,
+                       std::size_t max_checks)
+{
+  auto as_is = [](const Ccd_query& candidate, Ccd_query& valid) {   // every query is valid
+    valid = candidate;
+    return true;
+  };
+  Ccd_query best = greedy_shrink<Ccd_query>(query, std::vector<Query_steps>{remove_translations, stop_vertices,
+                                                                            simplify_coordinates},
+                                            as_is, query_text, still_fails, max_checks)
+                       .value_or(query);
+  best.label = query.label;
+  best.line = query.line;
   return best;
 }
 

@@ -1,6 +1,6 @@
-// Greedy shrinking of a scene on which something fails (in the manner of
-// delta debugging and QuickCheck's shrinkers), so a fuzz finding comes out
-// small enough to read. Steps, largest first:
+// Greedy shrinking of a scene (or a CCD query) on which something fails (in
+// the manner of delta debugging and QuickCheck's shrinkers), so a fuzz
+// finding comes out small enough to read. Scene steps, largest first:
 //   drop an object (at least two stay; `ignore` is renumbered);
 //   replace a union, intersection, difference, translate or rotate node by
 //   one of its children;
@@ -15,6 +15,7 @@
 #ifndef CLASH4D_COMPARE_SHRINKER_H
 #define CLASH4D_COMPARE_SHRINKER_H
 
+#include "ccd/Ccd_query.h"
 #include "scene/Scene.h"
 #include <cstddef>
 #include <functional>
@@ -31,6 +32,15 @@ namespace clash4d {
 // counts as "does not fail".
 Scene shrink_scene(const Scene& scene, const std::function<bool(const Scene&)>& still_fails,
                    std::size_t max_checks = 2000);
+
+// The same for a CCD query (fuzz --ccd), by the same loop. Steps, largest
+// first: a common translation removed (every vertex moved so that one of
+// the eight rows is at the origin, or by the integer part of the first row:
+// the exact answer and t* stay, the doubles' rounding changes); a vertex at
+// rest (its two rows made equal); each coordinate replaced by a simpler
+// number, as above. The query keeps its type, label and line.
+Ccd_query shrink_query(const Ccd_query& query, const std::function<bool(const Ccd_query&)>& still_fails,
+                       std::size_t max_checks = 2000);
 
 } // namespace clash4d
 

@@ -1,6 +1,7 @@
 #define BOOST_TEST_MODULE compare
 #include <boost/test/unit_test.hpp>
 
+#include "support/Comparison_rows.h"
 #include "compare/Comparer.h"
 #include "scene/Input_error.h"
 #include "scene/Json_reader.h"
@@ -18,13 +19,7 @@ static json compare_fixture(const std::string& entry, bool earliest = false, Sem
   return compare_scene(read_scene_file(std::string(CLASH4D_FIXTURES) + "/" + entry), entry, o).to_json();
 }
 
-static const json& subject(const json& c, const std::string& name)
-{
-  for (const auto& s : c["subjects"])
-    if (s["subject"] == name) return s;
-  BOOST_FAIL("no subject " << name);
-  return c;
-}
+static const json& subject(const json& c, const std::string& name) { return subject_row(c, name); }
 
 BOOST_AUTO_TEST_CASE(decimal_sums_that_miss_are_input_rounding)
 {

@@ -1,6 +1,7 @@
 #define BOOST_TEST_MODULE report
 #include <boost/test/unit_test.hpp>
 
+#include "compare/Ccd_comparer.h"
 #include "compare/Report_writer.h"
 #include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
@@ -199,4 +200,41 @@ BOOST_AUTO_TEST_CASE(unwritable_directory_is_a_clear_error)
   BOOST_CHECK_EXCEPTION(write_report({colliding_case()}, (file / "out").string()), std::runtime_error,
                         [&](const std::runtime_error& e) { return std::string(e.what()).find(file.string()) != std::string::npos; });
   fs::remove(file);
+}
+
+// A CCD query's case (compare/Ccd_comparer.h) next to a scene's: its rows in
+// every file, its vertices in place of diagrams, counted as a query.
+BOOST_AUTO_TEST_CASE(ccd_queries_have_rows_beside_scenes)
+{
+  Ccd_query::Rows rows;   // a vertex falling through the triangle z = 0 at t = 1/2
+  rows[0] = {Rational(1, 4), Rational(1, 4), Rational(1)};
+  rows[4] = {Rational(1, 4), Rational(1, 4), Rational(-1)};
+  for (int k : {0, 4}) {
+    rows[k + 1] = {Rational(0), Rational(0), Rational(0)};
+    rows[k + 2] = {Rational(1), Rational(0), Rational(0)};
+    rows[k + 3] = {Rational(0), Rational(1), Rational(0)};
+  }
+  Ccd_query q(Ccd_type::vertex_face, rows);
+  q.line = 9;
+  Ccd_compare_options o;
+  o.earliest = true;
+  fs::path dir = fs::temp_directory_path() / ("clash4d_test_report_ccd_" + std::to_string(::getpid()));
+  write_report({colliding_case(), ccd_report_case("q.jsonl", compare_query(q, "q.jsonl", 2, o), "vf-face")},
+               (dir / "out").string());
+  json r = json::parse(slurp(dir / "out" / "report.json"));
+  BOOST_TEST(r["summary"]["scenes"] == 1);
+  BOOST_TEST(r["summary"]["queries"] == 1);
+  BOOST_TEST(r["summary"]["scenes_agreeing"] == 2);
+  const json& c = r["cases"][1];
+  BOOST_TEST(c["index"] == 2);
+  BOOST_TEST(c["line"] == 9);
+  BOOST_TEST(c["query"]["t1"][0][2] == "-1");
+  BOOST_TEST(c["subjects"][0]["t"] == "1/2");
+  BOOST_TEST(!c["subjects"][0].contains("witness"));
+  std::string x = slurp(dir / "out" / "junit.xml"), h = slurp(dir / "out" / "index.html");
+  BOOST_TEST(count(x, "classname=\"q.jsonl: query 2 (line 9)\"") == 4u);   // exact, double, double tol, exact-rounded
+  BOOST_TEST(h.find("<td>v</td><td><span class=\"mono\">(1/4, 1/4, 1)</span></td>") != std::string::npos);
+  BOOST_TEST(h.find("<dt>family</dt><dd>vf-face</dd>") != std::string::npos);
+  BOOST_TEST(count(h, "<svg") == 3u);   // the scene's diagrams only
+  fs::remove_all(dir);
 }

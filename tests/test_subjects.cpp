@@ -8,6 +8,7 @@
 // completes with no child process left behind.
 
 #include "support/Cli_run.h"
+#include "support/Comparison_rows.h"
 #include "compare/Comparer.h"
 #include "compare/External_subject.h"
 #include "compare/Fuzz_campaign.h"
@@ -56,13 +57,7 @@ std::vector<std::string> some_fixtures()
   return files;
 }
 
-const json& row(const json& comparison, const std::string& subject)
-{
-  for (const auto& s : comparison["subjects"])
-    if (s["subject"] == subject) return s;
-  BOOST_FAIL("no row " << subject);
-  return comparison;
-}
+const json& row(const json& comparison, const std::string& name) { return subject_row(comparison, name); }
 
 json compare_json(const std::vector<std::string>& files, const std::string& subject, double timeout = 5)
 {
