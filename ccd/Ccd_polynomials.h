@@ -77,17 +77,14 @@ public:
   using Poly = Polynomial<FT>;
   using Vector = Vector3<Poly>;
 
-  // rows: the query's eight rows (Ccd_query::rows) in FT; delta: D^2 for a
-  // minimum separation D > 0 (the names of ccd_name::separated), or none.
+  // rows: the query's eight rows (Ccd_query::rows) in FT, kept by
+  // reference (the kernel's, for its lifetime); delta: D^2 for a minimum
+  // separation D > 0 (the names of ccd_name::separated), or none. Nothing
+  // is computed until a polynomial is asked for: most queries of a
+  // simulation end at the swept boxes.
   Ccd_polynomials(Ccd_type type, const std::array<Vector3<FT>, 8>& rows, std::optional<FT> delta = std::nullopt)
-    : type_(type), delta_(std::move(delta))
+    : type_(type), rows_(rows), delta_(std::move(delta))
   {
-    std::array<Vector, 4> x;
-    for (int i = 0; i < 4; ++i)
-      for (int k = 0; k < 3; ++k) x[i][k] = Poly(rows[i][k], rows[i + 4][k] - rows[i][k]);
-    // Vertex-face: P, E1, E2; edge-edge: A, B, D (in the same three slots).
-    if (type == Ccd_type::vertex_face) v_ = {minus(x[0], x[1]), minus(x[2], x[1]), minus(x[3], x[1])};
-    else v_ = {minus(x[1], x[0]), minus(x[3], x[2]), minus(x[2], x[0])};
   }
 
   Ccd_type type() const { return type_; }
@@ -96,7 +93,7 @@ public:
   const Poly& operator()(int name)
   {
     auto& p = table_[static_cast<std::size_t>(name)];
-    if (!p) p = make(name);
+    if (!p) make(name);
     return *p;
   }
 
@@ -104,16 +101,17 @@ public:
   struct Segment {
     Vector start, direction, point;
   };
-  Segment segment(int s) const
+  Segment segment(int s)
   {
     const Vector zero{};
+    const auto& v = vectors();
     if (type_ == Ccd_type::vertex_face) {
-      const Vector &P = v_[0], &E1 = v_[1], &E2 = v_[2];
+      const Vector &P = v[0], &E1 = v[1], &E2 = v[2];
       if (s == 0) return {zero, E1, P};
       if (s == 1) return {zero, E2, P};
       return {E1, minus(E2, E1), P};
     }
-    const Vector &A = v_[0], &B = v_[1], &D = v_[2];
+    const Vector &A = v[0], &B = v[1], &D = v[2];
     if (s == 0) return {zero, A, D};
     if (s == 1) return {zero, A, plus(D, B)};
     if (s == 2) return {D, B, zero};
@@ -124,43 +122,71 @@ private:
   static Vector minus(const Vector& a, const Vector& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
   static Vector plus(const Vector& a, const Vector& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
-  Poly make(int name)
+  // P, E1, E2 (vertex-face) or A, B, D (edge-edge), linear in t.
+  const std::array<Vector, 3>& vectors()
   {
-    if (delta_) return make_separated(name);
-    using namespace ccd_name;
-    const Vector& first = v_[0];   // P or A
-    const Vector& second = v_[1];  // E1 or B
-    const Vector& third = v_[2];   // E2 or D
-    if (name == F) return type_ == Ccd_type::vertex_face ? dot(n(), first) : dot(n(), third);
-    if (name < 4) return n()[name - N];
-    int segment_start = type_ == Ccd_type::vertex_face ? vf_segment : ee_segment;
-    if (name >= segment_start) return segment_name((name - segment_start) / segment_names,
-                                                   (name - segment_start) % segment_names);
-    int k = (name - 4) % 3;
-    if (type_ == Ccd_type::vertex_face) {
-      const Vector &P = first, &E1 = second, &E2 = third;
-      if (name < face_u) return cross(E1, P)[k];
-      if (name < face_w) return cross(P, E2)[k];
-      return cross(minus(E2, E1), minus(P, E1))[k];
+    if (!v_) {
+      std::array<Vector, 4> x;
+      for (int i = 0; i < 4; ++i)
+        for (int k = 0; k < 3; ++k) x[i][k] = Poly(rows_[i][k], rows_[i + 4][k] - rows_[i][k]);
+      if (type_ == Ccd_type::vertex_face) v_ = {minus(x[0], x[1]), minus(x[2], x[1]), minus(x[3], x[1])};
+      else v_ = {minus(x[1], x[0]), minus(x[3], x[2]), minus(x[2], x[0])};
     }
-    const Vector &A = first, &B = second, &D = third;
-    if (name < cut_v) return cross(D, B)[k];
-    if (name < cut_u1) return cross(D, A)[k];
-    if (name < cut_v1) return n()[k] - cross(D, B)[k];
-    return n()[k] - cross(D, A)[k];
+    return *v_;
+  }
+
+  // Makes a name, and the names made with it: the three components of one
+  // vector, or every name of one segment test (each is asked with the
+  // others).
+  void make(int name)
+  {
+    using namespace ccd_name;
+    auto set = [&](int at, const Poly& q) { table_[static_cast<std::size_t>(at)] = q; };
+    if (delta_) return set(name, make_separated(name));
+    const auto& v = vectors();   // P, E1, E2 or A, B, D
+    bool vf = type_ == Ccd_type::vertex_face;
+    if (name == F) return set(F, dot(n(), vf ? v[0] : v[2]));
+    int segment_start = vf ? vf_segment : ee_segment;
+    if (name >= segment_start) return make_segment((name - segment_start) / segment_names);
+    int group = name < 4 ? N : 4 + 3 * ((name - 4) / 3);
+    Vector x;
+    if (group == N) x = n();
+    else if (vf) x = group == face_v ? cross(v[1], v[0]) : group == face_u ? cross(v[0], v[2])
+                                                                           : cross(minus(v[2], v[1]), minus(v[0], v[1]));
+    else x = group == cut_u || group == cut_u1 ? cross(v[2], v[1]) : cross(v[2], v[0]);
+    if (!vf && (group == cut_u1 || group == cut_v1)) x = minus(n(), x);
+    for (int k = 0; k < 3; ++k) set(group + k, x[k]);
+  }
+
+  // A segment test's eleven names (ccd_name: U, W, U x W, W . U, U . U - W . U).
+  void make_segment(int s)
+  {
+    Segment g = segment(s);
+    Vector w = minus(g.point, g.start), c = cross(g.direction, w);
+    int first = (type_ == Ccd_type::vertex_face ? ccd_name::vf_segment : ccd_name::ee_segment) +
+                s * ccd_name::segment_names;
+    Poly wu = dot(w, g.direction);
+    for (int k = 0; k < 3; ++k) {
+      table_[static_cast<std::size_t>(first + k)] = g.direction[k];
+      table_[static_cast<std::size_t>(first + 3 + k)] = w[k];
+      table_[static_cast<std::size_t>(first + 6 + k)] = c[k];
+    }
+    table_[static_cast<std::size_t>(first + 9)] = wu;
+    table_[static_cast<std::size_t>(first + 10)] = dot(g.direction, g.direction) - wu;
   }
 
   // N = E1 x E2 or A x B, kept once made (F and the face or cut names use it).
   const Vector& n()
   {
-    if (!n_) n_ = type_ == Ccd_type::vertex_face ? cross(v_[1], v_[2]) : cross(v_[0], v_[1]);
+    const auto& v = vectors();
+    if (!n_) n_ = type_ == Ccd_type::vertex_face ? cross(v[1], v[2]) : cross(v[0], v[1]);
     return *n_;
   }
 
   Poly make_separated(int name)
   {
     using namespace ccd_name::separated;
-    const Vector &first = v_[0], &second = v_[1], &third = v_[2];
+    const Vector &first = vectors()[0], &second = vectors()[1], &third = vectors()[2];
     const Poly delta(*delta_);
     if (name == NN) return dot(n(), n());
     if (name == plane) {
@@ -194,20 +220,12 @@ private:
     return dot(n(), n()) - dot(cross(D, A), n());
   }
 
-  Poly segment_name(int s, int i) const
-  {
-    Segment g = segment(s);
-    Vector w = minus(g.point, g.start);
-    if (i < 3) return g.direction[i];
-    if (i < 6) return w[i - 3];
-    if (i < 9) return cross(g.direction, w)[i - 6];
-    if (i == 9) return dot(w, g.direction);
-    return dot(g.direction, g.direction) - dot(w, g.direction);
-  }
+
 
   Ccd_type type_;
+  const std::array<Vector3<FT>, 8>& rows_;
   std::optional<FT> delta_;
-  std::array<Vector, 3> v_;
+  std::optional<std::array<Vector, 3>> v_;
   std::optional<Vector> n_;
   std::array<std::optional<Poly>, ccd_name::max_count> table_;   // made when first asked
 };

@@ -5,6 +5,7 @@
 #include "exact/Ccd_instantiation.h"
 #include "float/Ccd_double_instantiation.h"
 #include "scene/Input_error.h"
+#include "scene/Number_text.h"
 #include "search/Work_budget.h"
 
 #include <CLI/CLI.hpp>
@@ -32,7 +33,7 @@ constexpr std::size_t batch_size = 1 << 14;
 
 struct Ccd_args {
   std::vector<std::string> files;
-  std::string type, number = "exact";
+  std::string type, number = "exact", separation;
   Ccd_options options;
   bool json = false, labels = false;
 };
@@ -186,18 +187,27 @@ void print_summary(const Ccd_args& a, const std::string& path, const Tally& t, s
 {
   double us = t.queries ? 1e6 * t.seconds / static_cast<double>(t.queries) : 0;
   s << path << ": " << t.queries << " queries, " << t.collide << " collide (" << a.number << ", closed"
-    << (a.options.earliest ? ", earliest" : "") << "); " << std::fixed << std::setprecision(3) << us
+    << (a.separation.empty() ? "" : ", separation " + a.separation) << (a.options.earliest ? ", earliest" : "") << "); " << std::fixed << std::setprecision(3) << us
     << " us per query (" << tbb::this_task_arena::max_concurrency() << " threads, reading included)\n"
     << std::defaultfloat;
   if (a.labels) s << "  labels: " << t.agree << " agree, " << t.disagree << " disagree, "
                   << t.queries - t.agree - t.disagree << " unlabelled\n";
 }
 
-int run_ccd(const Ccd_args& a, std::ostream& out, std::ostream& err)
+int run_ccd(Ccd_args& a, std::ostream& out, std::ostream& err)
 {
   if (a.options.tolerance != 0 && a.number != "double") {
     err << "clash4d ccd: --tolerance applies to --number double only\n";
     return CLASH4D_EXIT_INVALID;
+  }
+  if (!a.separation.empty()) {
+    Number_parse d = parse_number_text(a.separation, true);
+    if (!d.ok || CGAL::is_negative(d.value)) {
+      err << "clash4d ccd: --separation expects a number D >= 0 (decimal or p/q, read exactly), found '"
+          << a.separation << "'" << (d.ok ? "" : ": " + d.error) << "\n";
+      return d.limit ? CLASH4D_EXIT_LIMIT : CLASH4D_EXIT_INVALID;
+    }
+    a.options.separation = d.value;
   }
   std::vector<Checked_file> files;
   if (int s = check_files(a, files, err)) return s;
@@ -238,6 +248,9 @@ std::function<int()> add_ccd(CLI::App& app, std::ostream& out, std::ostream& err
                 "compare each answer with the file's label (CSV column 7, JSON \"label\"); exit 1 when one disagrees");
   cmd->add_option("--tolerance", a->options.tolerance, "double only: treat |value| <= EPS as zero (default 0)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--separation", a->separation,
+                  "D >= 0: a query collides when the primitives come within distance D (exact: squared distances "
+                  "against D^2; read exactly, e.g. 1e-6 or 1/1000); t* is the first such time");
   return [cmd, a, &out, &err] {
     if (!cmd->parsed()) return -1;
     return run_ccd(*a, out, err);

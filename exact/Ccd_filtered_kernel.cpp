@@ -96,19 +96,15 @@ Algebraic Ccd_filtered_kernel::exact(const Time& t)
 }
 
 // Halves t's enclosure where a sure sign at its middle says which half
-// holds it; false when it cannot be narrowed in intervals.
+// holds it; false when it cannot be narrowed in intervals. A root that came
+// from rationals is left as it is: its enclosure is already narrow
+// (numbers/Algebraic.h), and a question it leaves open is one for
+// rationals.
 bool Ccd_filtered_kernel::refine(const Time& t)
 {
   if (t.name < 0) return false;
   Root& x = root(t);
-  if (x.exact) {
-    Nearest nearest;
-    x.exact->refine();
-    Interval narrower = x.exact->to_interval();
-    bool moved = narrower.inf() > x.at.inf() || narrower.sup() < x.at.sup();
-    x.at = narrower;
-    return moved;
-  }
+  if (x.lower_sign == 0) return false;
   double lo = x.at.inf(), hi = x.at.sup(), m = lo + (hi - lo) / 2;
   if (!(lo < m && m < hi)) return false;
   int s = sure_sign(p_(t.name).at(Interval(m)));

@@ -198,10 +198,13 @@ std::optional<Isolated> isolate_in_doubles(const fmpz_poly_t g, const Rational& 
     p = p * Polynomial<CGAL::Interval_nt<false>, capacity>(CGAL::Interval_nt<false>(0), CGAL::Interval_nt<false>(1));
     p = p + Polynomial<CGAL::Interval_nt<false>, capacity>(CGAL::Interval_nt<false>(CGAL::to_interval(Rational(c.get_mpz_t()))));
   }
-  double lo = CGAL::to_interval(a).first, hi = CGAL::to_interval(b).second;
+  // Searched beyond [a, b] by half its width each side, so that a root at
+  // or near an end is inside (the caller keeps those in [a, b]).
+  double lo = CGAL::to_interval(a).first, hi = CGAL::to_interval(b).second, half = (hi - lo) / 2;
+  lo -= half, hi += half;
   if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi)) return std::nullopt;
   std::vector<Isolated_root> found;
-  if (!Interval_isolation<capacity>::isolate(p, lo, hi, found)) return std::nullopt;
+  if (!Interval_isolation<capacity>::isolate(p, lo, hi, found, true)) return std::nullopt;
   Isolated out;
   for (const Isolated_root& r : found) {
     if (r.at.inf() == r.at.sup()) return std::nullopt;   // a rational root: not of an irreducible g
@@ -212,12 +215,21 @@ std::optional<Isolated> isolate_in_doubles(const fmpz_poly_t g, const Rational& 
 
 // g's sign over [lo, hi] when an enclosure in doubles is sure of it and
 // not zero (the filter before the exact test), else 2.
-int sign_in_doubles(const std::vector<Rational>& g, const Rational& lo, const Rational& hi)
+CGAL::Interval_nt<false> enclosure_of(const Rational& x) { return CGAL::Interval_nt<false>(CGAL::to_interval(x)); }
+CGAL::Interval_nt<false> enclosure_of(const mpz_class& x)
+{
+  double d = 0;
+  if (small_double(x.get_mpz_t(), d)) return CGAL::Interval_nt<false>(d);
+  return CGAL::Interval_nt<false>(CGAL::to_interval(Rational(x.get_mpz_t())));
+}
+
+template <class Coefficient>
+int sign_in_doubles(const std::vector<Coefficient>& g, const Rational& lo, const Rational& hi)
 {
   using I = CGAL::Interval_nt<false>;
   CGAL::Protect_FPU_rounding<true> upward;
   I x(CGAL::to_interval(lo).first, CGAL::to_interval(hi).second), v(0);
-  for (std::size_t i = g.size(); i-- > 0;) v = v * x + I(CGAL::to_interval(g[i]));
+  for (std::size_t i = g.size(); i-- > 0;) v = v * x + enclosure_of(g[i]);
   if (v.inf() > 0) return 1;
   if (v.sup() < 0) return -1;
   return 2;
@@ -239,6 +251,14 @@ Rational linear_root(const fmpz_poly_struct* g)
   return quotient_of_integers(-c0, c1);
 }
 
+void primitive_integer_poly(Fmpz_poly& out, const std::vector<mpz_class>& p)
+{
+  fmpz_poly_zero(out.p);
+  for (std::size_t i = 0; i < p.size(); ++i) fmpz_poly_set_coeff_mpz(out.p, static_cast<slong>(i), p[i].get_mpz_t());
+  if (fmpz_poly_is_zero(out.p)) throw std::logic_error("Algebraic: the roots of the zero polynomial");
+  fmpz_poly_primitive_part(out.p, out.p);
+}
+
 void primitive_integer_poly(Fmpz_poly& out, const std::vector<Rational>& p)
 {
   Fmpq_poly q;
@@ -250,6 +270,13 @@ void primitive_integer_poly(Fmpz_poly& out, const std::vector<Rational>& p)
 
 } // namespace
 
+// The work on FLINT's types, with Algebraic's representation at hand.
+struct Algebraic_access {
+  static std::vector<Algebraic> real_roots(const fmpz_poly_struct* f, const Rational& a, const Rational& b);
+  static Algebraic root_between(const fmpz_poly_struct* f, const Rational& lo, const Rational& hi);
+  static CGAL::Sign sign_of(const Algebraic& x, const fmpq_poly_struct* g);
+};
+
 Algebraic Algebraic::irrational(std::vector<mpz_class> poly, const Rational& lo, const Rational& hi)
 {
   auto rep = std::make_shared<Rep>();
@@ -259,9 +286,15 @@ Algebraic Algebraic::irrational(std::vector<mpz_class> poly, const Rational& lo,
 
 int Algebraic::poly_sign(const Rational& q) const
 {
-  Fmpq_poly m;
-  set_poly(m, rep_->poly);
-  return sign_at_rational(m.p, q);
+  // d^k m(n / d) in integers (d > 0): Horner with the powers of d.
+  mpz_srcptr n = mpq_numref(q.mpq()), d = mpq_denref(q.mpq());
+  const std::vector<mpz_class>& m = rep_->poly;
+  mpz_class v = 0, dk = 1;
+  for (std::size_t i = m.size(); i-- > 0;) {
+    v = v * mpz_class(n) + m[i] * dk;
+    dk *= mpz_class(d);
+  }
+  return sgn(v);
 }
 
 void Algebraic::refine() const
@@ -283,9 +316,21 @@ std::vector<Algebraic> Algebraic::real_roots(const std::vector<Rational>& p, con
 {
   Fmpz_poly f;
   primitive_integer_poly(f, p);
+  return Algebraic_access::real_roots(f.p, a, b);
+}
+
+std::vector<Algebraic> Algebraic::real_roots(const std::vector<mpz_class>& p, const Rational& a, const Rational& b)
+{
+  Fmpz_poly f;
+  primitive_integer_poly(f, p);
+  return Algebraic_access::real_roots(f.p, a, b);
+}
+
+std::vector<Algebraic> Algebraic_access::real_roots(const fmpz_poly_struct* f, const Rational& a, const Rational& b)
+{
   fmpz_poly_factor_t fac;
   fmpz_poly_factor_init(fac);
-  fmpz_poly_factor(fac, f.p);
+  fmpz_poly_factor(fac, f);
   std::vector<Algebraic> out;
   for (slong i = 0; i < fac->num; ++i) {
     const fmpz_poly_struct* g = fac->p + i;
@@ -299,7 +344,7 @@ std::vector<Algebraic> Algebraic::real_roots(const std::vector<Rational>& p, con
     auto isolated = isolate_in_doubles(g, a, b);
     if (!isolated) isolated = isolate_real_roots(g);
     for (const auto& [lo, hi] : isolated->intervals) {
-      Algebraic x = irrational(poly, lo, hi);
+      Algebraic x = Algebraic::irrational(poly, lo, hi);
       if (compare(x, a) >= 0 && compare(x, b) <= 0) out.push_back(std::move(x));
     }
   }
@@ -312,9 +357,21 @@ Algebraic Algebraic::root_between(const std::vector<Rational>& p, const Rational
 {
   Fmpz_poly f;
   primitive_integer_poly(f, p);
+  return Algebraic_access::root_between(f.p, lo, hi);
+}
+
+Algebraic Algebraic::root_between(const std::vector<mpz_class>& p, const Rational& lo, const Rational& hi)
+{
+  Fmpz_poly f;
+  primitive_integer_poly(f, p);
+  return Algebraic_access::root_between(f.p, lo, hi);
+}
+
+Algebraic Algebraic_access::root_between(const fmpz_poly_struct* f, const Rational& lo, const Rational& hi)
+{
   fmpz_poly_factor_t fac;
   fmpz_poly_factor_init(fac);
-  fmpz_poly_factor(fac, f.p);
+  fmpz_poly_factor(fac, f);
   // p has one simple root in (lo, hi) and none at the ends: exactly one
   // factor changes sign there, and it holds that root.
   for (slong i = 0; i < fac->num; ++i) {
@@ -325,7 +382,7 @@ Algebraic Algebraic::root_between(const std::vector<Rational>& p, const Rational
     if (fmpz_poly_degree(fac->p + i) == 1) {
       x = Algebraic(linear_root(fac->p + i));
     } else {
-      x = irrational(normal_coefficients(fac->p + i), lo, hi);
+      x = Algebraic::irrational(normal_coefficients(fac->p + i), lo, hi);
     }
     fmpz_poly_factor_clear(fac);
     return x;
@@ -336,29 +393,45 @@ Algebraic Algebraic::root_between(const std::vector<Rational>& p, const Rational
 
 CGAL::Sign Algebraic::sign_of(const std::vector<Rational>& g) const
 {
+  if (!is_rational())
+    if (int s = sign_in_doubles(g, lo_, hi_); s != 2) return CGAL::Sign(s);
   Fmpq_poly G;
   set_poly(G, g);
-  if (is_rational()) return CGAL::Sign(sign_at_rational(G.p, value_));
-  if (int s = sign_in_doubles(g, lo_, hi_); s != 2) return CGAL::Sign(s);
+  return Algebraic_access::sign_of(*this, G.p);
+}
+
+CGAL::Sign Algebraic::sign_of(const std::vector<mpz_class>& g) const
+{
+  if (!is_rational())
+    if (int s = sign_in_doubles(g, lo_, hi_); s != 2) return CGAL::Sign(s);
+  Fmpq_poly G;
+  set_poly(G, g);
+  return Algebraic_access::sign_of(*this, G.p);
+}
+
+CGAL::Sign Algebraic_access::sign_of(const Algebraic& x, const fmpq_poly_struct* g)
+{
+  const Algebraic::Rep* rep_ = x.rep_.get();
+  if (x.is_rational()) return CGAL::Sign(sign_at_rational(g, x.value_));
   // g(r) = 0 exactly when the minimal polynomial divides g.
   Fmpq_poly m, rem;
   set_poly(m, rep_->poly);
-  fmpq_poly_rem(rem.p, G.p, m.p);
+  fmpq_poly_rem(rem.p, g, m.p);
   if (fmpq_poly_is_zero(rem.p)) return CGAL::ZERO;
   // Otherwise g(r) != 0: an enclosure of g over the interval excludes zero
   // once the interval is narrow enough.
   Fmpz_poly num;
   fmpq_poly_get_numerator(num.p, rem.p);   // the same sign at r (a positive denominator; r a root of m)
-  Arb x, y;
+  Arb at, y;
   Arf lo, hi;
   for (slong prec = 64;; prec += 32) {
-    to_arf(lo.x, lo_);
-    to_arf(hi.x, hi_);
-    arb_set_interval_arf(x.x, lo.x, hi.x, prec);
-    arb_fmpz_poly_evaluate_arb(y.x, num.p, x.x, prec);
+    to_arf(lo.x, x.lo_);
+    to_arf(hi.x, x.hi_);
+    arb_set_interval_arf(at.x, lo.x, hi.x, prec);
+    arb_fmpz_poly_evaluate_arb(y.x, num.p, at.x, prec);
     if (arb_is_positive(y.x)) return CGAL::POSITIVE;
     if (arb_is_negative(y.x)) return CGAL::NEGATIVE;
-    for (int i = 0; i < 8; ++i) refine();
+    for (int i = 0; i < 8; ++i) x.refine();
   }
 }
 

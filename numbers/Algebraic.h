@@ -31,10 +31,12 @@ public:
   // The distinct real roots of p (coefficients from the constant term up,
   // not all zero) in the closed interval [a, b], ascending.
   static std::vector<Algebraic> real_roots(const std::vector<Rational>& p, const Rational& a, const Rational& b);
+  static std::vector<Algebraic> real_roots(const std::vector<mpz_class>& p, const Rational& a, const Rational& b);
   // The one root of p in the open interval (lo, hi), lo < hi dyadic (a
   // double's value), where p is certified to have a single simple root and
   // no root at either end (an interval run's isolation, made exact).
   static Algebraic root_between(const std::vector<Rational>& p, const Rational& lo, const Rational& hi);
+  static Algebraic root_between(const std::vector<mpz_class>& p, const Rational& lo, const Rational& hi);
   // num(r) / den(r), den(r) != 0: an element of the field Q(r) as a number
   // of its own (its minimal polynomial from the multiplication matrix,
   // FLINT's fmpq_mat_minpoly, and its root chosen by enclosure).
@@ -59,6 +61,7 @@ public:
 
   // The sign of g (constant term first) at this number.
   CGAL::Sign sign_of(const std::vector<Rational>& g) const;
+  CGAL::Sign sign_of(const std::vector<mpz_class>& g) const;
 
   // The double nearest to the number (ties to even), an enclosure in
   // doubles, and the shortest decimal that reads back to that double.
@@ -80,6 +83,8 @@ public:
   friend bool operator!=(const Algebraic& a, const Algebraic& b) { return compare(a, b) != 0; }
 
 private:
+  friend struct Algebraic_access;   // Algebraic.cpp: the work on FLINT's types
+
   struct Rep {
     std::vector<mpz_class> poly;   // the minimal polynomial
   };

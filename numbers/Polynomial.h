@@ -91,14 +91,14 @@ private:
     Polynomial r;
     r.size_ = std::max(a.size_, b.size_);
     for (int i = 0; i < r.size_; ++i) {
-      if (i < a.size_ && i < b.size_) r.c_[i] = sign > 0 ? a.c_[i] + b.c_[i] : a.c_[i] - b.c_[i];
+      if (i < a.size_ && i < b.size_) r.c_[i] = sign > 0 ? FT(a.c_[i] + b.c_[i]) : FT(a.c_[i] - b.c_[i]);
       else if (i < a.size_) r.c_[i] = a.c_[i];
-      else r.c_[i] = sign > 0 ? b.c_[i] : -b.c_[i];
+      else r.c_[i] = sign > 0 ? b.c_[i] : FT(-b.c_[i]);
     }
     return r;
   }
 
-  std::array<FT, Capacity> c_{};
+  std::array<FT, Capacity> c_;   // c_[0 .. size_) hold the coefficients; the rest is unread
   int size_ = 0;
 };
 

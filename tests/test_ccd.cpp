@@ -17,12 +17,14 @@
 #include "scene/Input_error.h"
 #include "scene/Number_text.h"
 #include "scene/Random_draw.h"
+#include <nlohmann/json.hpp>
 #include "support/Ccd_oracle.h"
 #include "support/Cli_run.h"
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 using namespace clash4d;
 
@@ -471,3 +473,193 @@ BOOST_AUTO_TEST_CASE(the_oracle_agrees)
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(reading)
+
+namespace {
+
+// The through_the_interior query as CSV rows (label 1) and a miss (label 0).
+const char* const hit_rows =
+    "1,4,1,4,1,1,1\n0,1,0,1,0,1,1\n1,1,0,1,0,1,1\n0,1,1,1,0,1,1\n"
+    "1,4,1,4,-1,1,1\n0,1,0,1,0,1,1\n1,1,0,1,0,1,1\n0,1,1,1,0,1,1\n";
+const char* const miss_rows =
+    "2,1,2,1,1,1,0\n0,1,0,1,0,1,0\n1,1,0,1,0,1,0\n0,1,1,1,0,1,0\n"
+    "2,1,2,1,-1,1,0\n0,1,0,1,0,1,0\n1,1,0,1,0,1,0\n0,1,1,1,0,1,0\n";
+
+std::vector<Ccd_query> read_text(const std::string& text, Ccd_reader::Format f, std::optional<Ccd_type> type)
+{
+  std::istringstream in(text);
+  Ccd_reader reader(in, f, type);
+  std::vector<Ccd_query> out;
+  while (reader.read(3, out) > 0) {}
+  return out;
+}
+
+// The error a text gives: "place: message" (exit code in *code).
+std::string error_of(const std::string& text, Ccd_reader::Format f, std::optional<Ccd_type> type, int* code = nullptr)
+{
+  try {
+    read_text(text, f, type);
+  } catch (const Input_error& e) {
+    if (code) *code = e.exit_code();
+    return e.place() + ": " + e.what();
+  }
+  return "no error";
+}
+
+std::string temp_file(const std::string& name, const std::string& text)
+{
+  auto dir = std::filesystem::temp_directory_path() / ("clash4d-ccd-test-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir / "vertex-face");
+  auto path = dir / name;
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(csv_queries_exactly)
+{
+  std::string crlf;   // the second query's rows end in "\r\n"
+  for (char c : std::string(miss_rows)) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  auto qs = read_text(std::string(hit_rows) + crlf, Ccd_reader::Format::csv, Ccd_type::vertex_face);
+  BOOST_REQUIRE_EQUAL(qs.size(), 2u);
+  BOOST_TEST(qs[0].row(0)[0] == Rational(1, 4));
+  BOOST_TEST(qs[0].row(4)[2] == Rational(-1));
+  BOOST_TEST(*qs[0].label);
+  BOOST_TEST(!*qs[1].label);
+  BOOST_TEST(qs[1].line == 9u);
+}
+
+BOOST_AUTO_TEST_CASE(csv_errors_name_line_and_column)
+{
+  auto csv = Ccd_reader::Format::csv;
+  std::string rows = hit_rows;
+  BOOST_TEST(error_of(rows.substr(0, rows.size() - 14), csv, Ccd_type::vertex_face).find("line 8") == 0);
+  BOOST_TEST(error_of("1,4,1,4,1,1\n", csv, Ccd_type::vertex_face) ==
+             "line 1: expected 7 comma-separated integers (x, y and z as numerator, denominator; a 0/1 label), found 6 "
+             "fields");
+  BOOST_TEST(error_of("1,4,x,4,1,1,1\n", csv, Ccd_type::vertex_face) ==
+             "line 1, column 5: the y numerator is not an integer: 'x'");
+  BOOST_TEST(error_of("1,4,1,0,1,1,1\n", csv, Ccd_type::vertex_face) == "line 1, column 7: the y denominator is zero");
+  BOOST_TEST(error_of("1,4,1,4,1,1,2\n", csv, Ccd_type::vertex_face) ==
+             "line 1, column 13: the label is not 0 or 1: '2'");
+  std::string mixed = rows;
+  mixed[mixed.size() - 2] = '0';   // the last row's label
+  BOOST_TEST(error_of(mixed, csv, Ccd_type::vertex_face).find("line 8: the label differs") == 0);
+  BOOST_TEST(error_of(std::string(hit_rows).insert(14, "\n"), csv, Ccd_type::vertex_face).find("line 2: a blank line") == 0);
+  int code = 0;
+  BOOST_TEST(error_of("1" + std::string(1200, '0') + ",1,1,1,1,1,1\n", csv, Ccd_type::vertex_face, &code)
+                 .find("more than 1000 digits") != std::string::npos);
+  BOOST_TEST(code == CLASH4D_EXIT_LIMIT);
+  std::istringstream in(hit_rows);
+  BOOST_CHECK_THROW(Ccd_reader(in, csv, std::nullopt), Input_error);   // CSV needs a type
+}
+
+BOOST_AUTO_TEST_CASE(json_lines)
+{
+  auto json = Ccd_reader::Format::json_lines;
+  auto qs = read_text("{\"type\": \"edge-edge\", \"t0\": [[0,0,0],[1,0,0],[\"1/2\",-1,1],[0.5,1,1]], "
+                      "\"t1\": [[0,0,0],[1,0,0],[\"1/2\",-1,-1],[0.5,1,-1]], \"label\": 1}\n\n",
+                      json, std::nullopt);
+  BOOST_REQUIRE_EQUAL(qs.size(), 1u);
+  BOOST_TEST((qs[0].type() == Ccd_type::edge_edge));
+  BOOST_TEST(qs[0].row(3)[0] == Rational(1, 2));
+  BOOST_TEST(*qs[0].label);
+  Ccd_options o;
+  o.earliest = true;
+  BOOST_TEST((exact(ccd_exact(qs[0], o).earliest->t) == rational("1/2")));
+  BOOST_TEST(error_of("{\"t0\": [], \"t1\": []}\n", json, Ccd_type::vertex_face) ==
+             "line 1: t0: expected the 4 vertices, found 0");
+  BOOST_TEST(error_of("{\"type\": \"vf\", \"t0\": [[0,0,0],[1,0,0],[0,1],[0,0,1]], \"t1\": []}\n", json, std::nullopt) ==
+             "line 1: t0[2]: expected 3 numbers, found 2");
+  BOOST_TEST(error_of("\n{\"type\": \"edge-edge\", \"t0\": [], \"t1\": []}\n", json, Ccd_type::vertex_face) ==
+             "line 2: type: \"edge-edge\" differs from --type vertex-face");
+  BOOST_TEST(error_of("{\"tO\": 1}\n", json, Ccd_type::vertex_face).find("line 1: unknown key \"tO\"") == 0);
+  BOOST_TEST(error_of("{\"t0\": [1,\n", json, Ccd_type::vertex_face).find("line 1, column") == 0);
+  BOOST_TEST(error_of("{\"t0\": []}\n", json, std::nullopt).find("the query type is not known") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(the_command_line)
+{
+  std::string file = temp_file("vertex-face/two.csv", std::string(hit_rows) + miss_rows);
+  Cli_run r = run_clash4d({"ccd", file});
+  BOOST_TEST(r.status == 1, r.err);   // a query collides
+  BOOST_TEST(r.out.find("two.csv: 2 queries, 1 collide (exact, closed)") != std::string::npos, r.out);
+  r = run_clash4d({"ccd", file, "--json", "--earliest", "--labels"});
+  BOOST_TEST(r.status == 0);   // both answers agree with their labels
+  BOOST_TEST(r.out == "{\"index\":0,\"collide\":true,\"t\":\"1/2\",\"uv\":[\"1/4\",\"1/4\"],\"label\":true,\"agree\":true}\n"
+                      "{\"index\":1,\"collide\":false,\"t\":null,\"label\":false,\"agree\":true}\n");
+  BOOST_TEST(r.err.find("labels: 2 agree, 0 disagree") != std::string::npos, r.err);
+  r = run_clash4d({"ccd", file, "--number", "double", "--json", "--earliest"});
+  BOOST_TEST(r.out.find("\"t\":\"0.5\",\"uv\":[\"0.25\",\"0.25\"]") != std::string::npos, r.out);
+  // A wrong label: exit 1, the query named.
+  std::string wrong = std::string(hit_rows);
+  for (std::size_t at = wrong.find(",1\n"); at != std::string::npos; at = wrong.find(",1\n", at)) wrong[at + 1] = '0';
+  std::string wrong_file = temp_file("vertex-face/wrong.csv", wrong);
+  r = run_clash4d({"ccd", wrong_file, "--labels"});
+  BOOST_TEST(r.status == 1);
+  BOOST_TEST(r.out.find("query 0 (line 1): collides, labelled 0") != std::string::npos, r.out);
+  // Bad input: exit 2, the file and place named, no answer printed.
+  std::string bad = temp_file("vertex-face/bad.csv", std::string(hit_rows) + "1,2,3\n");
+  r = run_clash4d({"ccd", file, bad, "--json"});
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.out.empty());
+  BOOST_TEST(r.err.find("bad.csv: line 9: expected 7 comma-separated integers") != std::string::npos, r.err);
+  std::string untyped = temp_file("q.csv", hit_rows);
+  r = run_clash4d({"ccd", untyped});
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.err.find("the query type is not known") != std::string::npos, r.err);
+  BOOST_TEST(run_clash4d({"ccd", untyped, "--type", "vf"}).status == 1);
+  r = run_clash4d({"ccd", std::filesystem::path(file).parent_path().string()});
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.err.find("is a folder") != std::string::npos, r.err);
+  // With a separation of 2, the miss's vertex (distance 3 sqrt(2) / 2 > 2)
+  // still misses; with 3 it is within reach from the start.
+  BOOST_TEST(run_clash4d({"ccd", file, "--separation", "2", "--json"}).out.find("\"index\":1,\"collide\":false") !=
+             std::string::npos);
+  BOOST_TEST(run_clash4d({"ccd", file, "--separation", "3", "--json"}).out.find("\"index\":1,\"collide\":true") !=
+             std::string::npos);
+  BOOST_TEST(run_clash4d({"ccd", file, "--separation", "x"}).status == 2);
+  BOOST_TEST(run_clash4d({"ccd", file, "--tolerance", "1e-9"}).status == 2);   // double only
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// The fixtures (fixtures/ccd/TYPE/hand-derived.csv and .jsonl, the same
+// queries): each answer of `clash4d ccd --earliest --json --labels` in both
+// exact kernels is the one expected.json derives by hand, numbers as the
+// spec prints them (an irrational t* as its minimal polynomial, the
+// coarsest decimal interval and the nearest double).
+BOOST_AUTO_TEST_CASE(fixtures_answer_as_derived)
+{
+  namespace fs = std::filesystem;
+  for (const char* type : {"vertex-face", "edge-edge"}) {
+    fs::path dir = fs::path(CLASH4D_FIXTURES) / "ccd" / type;
+    auto expected = nlohmann::json::parse(std::ifstream(dir / "expected.json"));
+    for (const char* file : {"hand-derived.csv", "hand-derived.jsonl"})
+      for (const char* number : {"exact", "rational"}) {
+        Cli_run r = run_clash4d({"ccd", (dir / file).string(), "--earliest", "--json", "--labels", "--number", number});
+        BOOST_TEST_CONTEXT(type << "/" << file << " --number " << number)
+        {
+          BOOST_TEST(r.status == 0, r.err);   // every label (the expected verdict) agrees
+          std::istringstream lines(r.out);
+          std::string line;
+          std::size_t i = 0;
+          for (; std::getline(lines, line); ++i) {
+            const auto& want = expected["queries"].at(i);
+            auto got = nlohmann::json::parse(line);
+            BOOST_TEST_CONTEXT("query " << i << " (" << want["name"].get<std::string>() << ")")
+            {
+              BOOST_TEST(got["collide"] == want["collide"]);
+              if (want["collide"].get<bool>()) {
+                BOOST_TEST(got["t"] == want["t"], got["t"].dump() << " != " << want["t"].dump());
+                BOOST_TEST(got["uv"] == want["uv"], got["uv"].dump() << " != " << want["uv"].dump());
+              }
+            }
+          }
+          BOOST_TEST(i == expected["queries"].size());
+        }
+      }
+  }
+}
