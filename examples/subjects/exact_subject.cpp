@@ -40,8 +40,14 @@ json reply(const std::string& line)
   const Json_value* id = request.find("id");
   const Json_value* scene = request.find("scene");
   const Json_value* earliest = request.find("earliest");
-  if (!id || id->kind != Json_value::Kind::Number || !scene) throw Input_error("", "a request needs id and scene");
+  if (!id || id->kind != Json_value::Kind::Number) throw Input_error("", "a request needs an id");
   json out = {{"id", std::stoll(id->text)}};
+  // A CCD query request ("ccd"): this subject answers scenes only.
+  if (request.find("ccd")) {
+    out["unsupported"] = "clash4d-exact answers scenes, not CCD queries";
+    return out;
+  }
+  if (!scene) throw Input_error("", "a request needs a scene or a ccd query");
   try {
     json a = answer(read_scene(*scene), earliest && earliest->boolean);
     out.update(a);
