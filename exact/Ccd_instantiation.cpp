@@ -11,10 +11,9 @@ namespace {
 
 Polynomial<Rational> rational_poly(const Polynomial<mpz_class>& p)
 {
-  Polynomial<Rational> out;
-  for (int i = p.size() - 1; i >= 0; --i)
-    out = out * Polynomial<Rational>(Rational(0), Rational(1)) + Polynomial<Rational>(Rational(p[i].get_mpz_t()));
-  return out;
+  std::vector<Rational> c;
+  for (int i = 0; i < p.size(); ++i) c.emplace_back(p[i].get_mpz_t());
+  return Polynomial<Rational>(c);
 }
 
 // t*, and (u, v) as the quotients the contact names, evaluated at t* in
@@ -22,10 +21,10 @@ Polynomial<Rational> rational_poly(const Polynomial<mpz_class>& p)
 Ccd_earliest exact_earliest(Ccd_rational_kernel& k, const Algebraic& t, const Ccd_contact& contact)
 {
   Ccd_uv_fraction<mpz_class> f = uv_fraction(k.polynomials(), contact);
+  Algebraic u = Algebraic::quotient_at(t, f.u_num.coefficients(), f.u_den.coefficients());
+  Algebraic v = Algebraic::quotient_at(t, f.v_num.coefficients(), f.v_den.coefficients());
   Ccd_uv_fraction<Rational> uv{rational_poly(f.u_num), rational_poly(f.u_den), rational_poly(f.v_num),
                                rational_poly(f.v_den)};
-  Algebraic u = Algebraic::quotient_at(t, uv.u_num.coefficients(), uv.u_den.coefficients());
-  Algebraic v = Algebraic::quotient_at(t, uv.v_num.coefficients(), uv.v_den.coefficients());
   return Ccd_earliest{t, u, v, contact, uv};
 }
 

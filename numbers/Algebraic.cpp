@@ -235,6 +235,55 @@ int sign_in_doubles(const std::vector<Coefficient>& g, const Rational& lo, const
   return 2;
 }
 
+// N(r) / D(r)'s enclosure over r's interval, as dyadic rationals.
+std::pair<Rational, Rational> quotient_enclosure(const Algebraic& r, const fmpz_poly_struct* n,
+                                                 const fmpz_poly_struct* d, slong prec)
+{
+  Arb x, nv, dv, q;
+  Arf lo, hi;
+  to_arf(lo.x, r.lower());
+  to_arf(hi.x, r.upper());
+  arb_set_interval_arf(x.x, lo.x, hi.x, prec);
+  arb_fmpz_poly_evaluate_arb(nv.x, n, x.x, prec);
+  arb_fmpz_poly_evaluate_arb(dv.x, d, x.x, prec);
+  arb_div(q.x, nv.x, dv.x, prec);
+  Arf qlo, qhi;
+  arb_get_lbound_arf(qlo.x, q.x, prec);
+  arb_get_ubound_arf(qhi.x, q.x, prec);
+  if (!arf_is_finite(qlo.x) || !arf_is_finite(qhi.x)) return {Rational(1), Rational(-1)};   // D's enclosure holds 0
+  return {from_arf(qlo.x), from_arf(qhi.x)};
+}
+
+// Whether g surely has no root in [lo, hi]: its enclosure there excludes 0.
+bool surely_no_root(const fmpz_poly_struct* g, const Rational& lo, const Rational& hi)
+{
+  Arb x, y;
+  Arf a, b;
+  to_arf(a.x, lo);
+  to_arf(b.x, hi);
+  arb_set_interval_arf(x.x, a.x, b.x, 128);
+  arb_fmpz_poly_evaluate_arb(y.x, g, x.x, 128);
+  return !arb_contains_zero(y.x);
+}
+
+// Whether g has exactly one root in [lo, hi] and none at the ends: its
+// signs at the ends differ (exactly) and g' surely has no zero between.
+bool single_root(const fmpz_poly_struct* g, const Rational& lo, const Rational& hi)
+{
+  Fmpq_poly q;
+  fmpq_poly_set_fmpz_poly(q.p, g);
+  if (sign_at_rational(q.p, lo) * sign_at_rational(q.p, hi) >= 0) return false;
+  Fmpz_poly dg;
+  fmpz_poly_derivative(dg.p, g);
+  Arb x, y;
+  Arf a, b;
+  to_arf(a.x, lo);
+  to_arf(b.x, hi);
+  arb_set_interval_arf(x.x, a.x, b.x, 128);
+  arb_fmpz_poly_evaluate_arb(y.x, dg.p, x.x, 128);
+  return !arb_contains_zero(y.x);
+}
+
 // a b mod m.
 void mul_mod(fmpq_poly_t out, const fmpq_poly_t a, const fmpq_poly_t b, const fmpq_poly_t m)
 {
@@ -275,6 +324,9 @@ struct Algebraic_access {
   static std::vector<Algebraic> real_roots(const fmpz_poly_struct* f, const Rational& a, const Rational& b);
   static Algebraic root_between(const fmpz_poly_struct* f, const Rational& lo, const Rational& hi);
   static CGAL::Sign sign_of(const Algebraic& x, const fmpq_poly_struct* g);
+  // The root of one of R's irreducible factors that N(r) / D(r) is.
+  static Algebraic root_of_factor(const fmpz_poly_struct* R, const Algebraic& r, const fmpz_poly_struct* n,
+                                  const fmpz_poly_struct* d);
 };
 
 Algebraic Algebraic::irrational(std::vector<mpz_class> poly, const Rational& lo, const Rational& hi)
@@ -435,6 +487,39 @@ CGAL::Sign Algebraic_access::sign_of(const Algebraic& x, const fmpq_poly_struct*
   }
 }
 
+Algebraic Algebraic_access::root_of_factor(const fmpz_poly_struct* R, const Algebraic& r, const fmpz_poly_struct* n,
+                                           const fmpz_poly_struct* d)
+{
+  fmpz_poly_factor_t fac;
+  fmpz_poly_factor_init(fac);
+  fmpz_poly_factor(fac, R);
+  Algebraic x = r;   // refined on a copy
+  // Each round narrows r's interval 256-fold, alpha's enclosure with it,
+  // until one factor's root is alone there; past the cap (far beyond any
+  // separation of roots of these degrees) something is wrong.
+  for (int round = 0;; ++round) {
+    if (round == 200) throw std::logic_error("Algebraic::quotient_at: no factor isolates the quotient");
+    auto [lo, hi] = quotient_enclosure(x, n, d, 128 + 8 * round);
+    // alpha lies in [lo, hi] and is a root of one factor: when exactly one
+    // factor may have a root there, that is its minimal polynomial, and its
+    // root there is alpha once certified alone.
+    const fmpz_poly_struct* hit = nullptr;
+    int hits = 0;
+    for (slong i = 0; lo <= hi && i < fac->num; ++i) {
+      const fmpz_poly_struct* g = fac->p + i;
+      bool maybe = fmpz_poly_degree(g) == 1 ? lo <= linear_root(g) && linear_root(g) <= hi : !surely_no_root(g, lo, hi);
+      if (maybe) ++hits, hit = g;
+    }
+    if (hits == 1 && (fmpz_poly_degree(hit) == 1 || single_root(hit, lo, hi))) {
+      Algebraic out = fmpz_poly_degree(hit) == 1 ? Algebraic(linear_root(hit))
+                                                 : Algebraic::irrational(normal_coefficients(hit), lo, hi);
+      fmpz_poly_factor_clear(fac);
+      return out;
+    }
+    for (int i = 0; i < 8; ++i) x.refine();
+  }
+}
+
 std::vector<Rational> Algebraic::field_element(const Algebraic& r, const std::vector<Rational>& num,
                                                const std::vector<Rational>& den)
 {
@@ -466,63 +551,67 @@ std::vector<Rational> Algebraic::field_element(const Algebraic& r, const std::ve
   return out;
 }
 
+// alpha = N(r) / D(r) for r irrational. Its conjugates are N(r_i) / D(r_i)
+// over m's roots r_i, so R(X) = Res_t(m(t), D(t) X - N(t)), a polynomial of
+// degree d = deg m in Z[X] (D(r_i) != 0: m is irreducible and does not
+// divide D), vanishes at alpha, and alpha's minimal polynomial is one of
+// R's irreducible factors. R is interpolated from its values at
+// X = 0 .. d (one integer resultant each: FLINT's fmpz_poly_resultant, no
+// rational arithmetic), factored (fmpz_poly_factor), and the factor and
+// root are the one alpha's enclosure (Arb, over r's interval) meets alone,
+// certified: a sign change across the enclosure and a derivative whose
+// enclosure excludes zero.
 Algebraic Algebraic::quotient_at(const Algebraic& r, const std::vector<Rational>& num, const std::vector<Rational>& den)
 {
-  std::vector<Rational> element = field_element(r, num, den);
-  if (element.size() == 1) return Algebraic(element[0]);
-  Fmpq_poly m, alpha;
-  set_poly(m, r.rep_->poly);
-  set_poly(alpha, element);
-  // alpha(r)'s minimal polynomial is that of multiplication by alpha on
-  // Q(r) = Q[x] / (m), in the basis 1, x, ..., x^(d-1).
-  slong d = fmpq_poly_degree(m.p);
-  fmpq_mat_t M;
-  fmpq_mat_init(M, d, d);
-  Fmpq_poly column, xj;
-  fmpq_poly_set_ui(xj.p, 1);
-  for (slong j = 0; j < d; ++j) {
-    mul_mod(column.p, alpha.p, xj.p, m.p);
-    for (slong i = 0; i < d; ++i) fmpq_poly_get_coeff_fmpq(fmpq_mat_entry(M, i, j), column.p, i);
-    fmpq_poly_shift_left(xj.p, xj.p, 1);
+  if (r.is_rational()) return Algebraic(field_element(r, num, den)[0]);
+  // num and den over one common denominator: integers, the same quotient.
+  std::vector<Rational> both = num;
+  both.insert(both.end(), den.begin(), den.end());
+  Fmpq_poly joint;
+  set_poly(joint, both);
+  mpz_class l;
+  fmpz_get_mpz(l.get_mpz_t(), fmpq_poly_denref(joint.p));
+  auto scaled = [&](const std::vector<Rational>& p) {
+    std::vector<mpz_class> out;
+    for (const Rational& c : p) out.push_back(mpz_class(Rational(c * Rational(l.get_mpz_t())).numerator().mpz()));
+    return out;
+  };
+  return quotient_at(r, scaled(num), scaled(den));
+}
+
+Algebraic Algebraic::quotient_at(const Algebraic& r, const std::vector<mpz_class>& num, const std::vector<mpz_class>& den)
+{
+  if (r.is_rational()) {
+    std::vector<Rational> n(num.size()), d(den.size());
+    for (std::size_t i = 0; i < num.size(); ++i) n[i] = Rational(num[i].get_mpz_t());
+    for (std::size_t i = 0; i < den.size(); ++i) d[i] = Rational(den[i].get_mpz_t());
+    return Algebraic(field_element(r, n, d)[0]);
   }
-  Fmpq_poly mu;
-  fmpq_mat_minpoly(mu.p, M);
-  fmpq_mat_clear(M);
-  std::vector<Rational> mu_q(static_cast<std::size_t>(fmpq_poly_length(mu.p)));
-  for (std::size_t i = 0; i < mu_q.size(); ++i) {
-    Fmpq c;
-    fmpq_poly_get_coeff_fmpq(c.q, mu.p, static_cast<slong>(i));
-    mu_q[i] = from_fmpq(c.q);
+  Fmpz_poly n, d_, m;
+  for (std::size_t i = 0; i < num.size(); ++i) fmpz_poly_set_coeff_mpz(n.p, static_cast<slong>(i), num[i].get_mpz_t());
+  for (std::size_t i = 0; i < den.size(); ++i) fmpz_poly_set_coeff_mpz(d_.p, static_cast<slong>(i), den[i].get_mpz_t());
+  for (std::size_t i = 0; i < r.rep_->poly.size(); ++i)
+    fmpz_poly_set_coeff_mpz(m.p, static_cast<slong>(i), r.rep_->poly[i].get_mpz_t());
+  // The points X avoid the one where D X - N drops below its degree in t
+  // (the resultant's value there is not R's).
+  slong degree = fmpz_poly_degree(m.p), k = std::max(fmpz_poly_degree(n.p), fmpz_poly_degree(d_.p));
+  std::vector<fmpz> xs(static_cast<std::size_t>(degree + 1)), ys(xs.size());
+  slong x = 0;
+  for (slong j = 0; j <= degree; ++j, ++x) {
+    Fmpz_poly g;
+    for (;; ++x) {
+      fmpz_poly_scalar_mul_si(g.p, d_.p, x);
+      fmpz_poly_sub(g.p, g.p, n.p);
+      if (fmpz_poly_degree(g.p) == k) break;
+    }
+    fmpz_init_set_si(&xs[j], x);
+    fmpz_init(&ys[j]);
+    fmpz_poly_resultant(&ys[j], m.p, g.p);
   }
-  // Its real roots, and the one alpha(r)'s enclosure meets alone.
-  Fmpz_poly mu_z;
-  primitive_integer_poly(mu_z, mu_q);
-  Rational bound = root_bound(mu_z.p);
-  std::vector<Algebraic> candidates = real_roots(mu_q, -bound, bound);
-  Fmpz_poly a_num;
-  fmpq_poly_get_numerator(a_num.p, alpha.p);
-  mpz_class alpha_den;
-  fmpz_get_mpz(alpha_den.get_mpz_t(), fmpq_poly_denref(alpha.p));
-  Rational a_den(alpha_den.get_mpz_t());
-  for (;;) {
-    // The enclosure of alpha(r) over r's interval, as rationals.
-    Arb x, y;
-    Arf lo, hi;
-    to_arf(lo.x, r.lo_);
-    to_arf(hi.x, r.hi_);
-    arb_set_interval_arf(x.x, lo.x, hi.x, 128);
-    arb_fmpz_poly_evaluate_arb(y.x, a_num.p, x.x, 128);
-    Arf ylo, yhi;
-    arb_get_lbound_arf(ylo.x, y.x, 128);
-    arb_get_ubound_arf(yhi.x, y.x, 128);
-    Rational elo = from_arf(ylo.x) / a_den, ehi = from_arf(yhi.x) / a_den;
-    std::vector<const Algebraic*> meet;
-    for (const Algebraic& c : candidates)
-      if (!(c.upper() < elo) && !(ehi < c.lower())) meet.push_back(&c);
-    if (meet.size() == 1) return *meet.front();
-    for (int i = 0; i < 4; ++i) r.refine();
-    for (const Algebraic* c : meet) c->refine();
-  }
+  Fmpz_poly resultant;
+  fmpz_poly_interpolate_fmpz_vec(resultant.p, xs.data(), ys.data(), degree + 1);
+  for (slong j = 0; j <= degree; ++j) fmpz_clear(&xs[j]), fmpz_clear(&ys[j]);
+  return Algebraic_access::root_of_factor(resultant.p, r, n.p, d_.p);
 }
 
 int compare(const Algebraic& a, const Rational& q)

@@ -41,6 +41,7 @@ public:
   // of its own (its minimal polynomial from the multiplication matrix,
   // FLINT's fmpq_mat_minpoly, and its root chosen by enclosure).
   static Algebraic quotient_at(const Algebraic& r, const std::vector<Rational>& num, const std::vector<Rational>& den);
+  static Algebraic quotient_at(const Algebraic& r, const std::vector<mpz_class>& num, const std::vector<mpz_class>& den);
   // The same element as a polynomial in r of degree below r's (its
   // coefficients, constant first; one number when it is rational): what a
   // check in Q(r) reads.

@@ -20,6 +20,12 @@ public:
 
   Polynomial() = default;
   explicit Polynomial(const FT& c0) : size_(1) { c_[0] = c0; }
+  // c[0] + c[1] t + ...: at most Capacity coefficients.
+  explicit Polynomial(const std::vector<FT>& c) : size_(static_cast<int>(c.size()))
+  {
+    if (size_ > Capacity) throw std::logic_error("Polynomial: more coefficients than the capacity");
+    std::copy(c.begin(), c.end(), c_.begin());
+  }
   // c0 + c1 t: a coordinate moving linearly.
   Polynomial(const FT& c0, const FT& c1) : size_(2)
   {

@@ -663,3 +663,63 @@ BOOST_AUTO_TEST_CASE(fixtures_answer_as_derived)
       }
   }
 }
+
+// Algebraic::quotient_at (the printed u and v): on seeded cubic roots r and
+// quotients alpha = N(r) / D(r), its minimal polynomial mu has mu(alpha) = 0
+// in Q(r) (mu evaluated at alpha's polynomial in r, reduced modulo r's
+// minimal polynomial, is 0), and it is alpha and not a conjugate: its
+// double is alpha's, evaluated in long double at r's.
+BOOST_AUTO_TEST_CASE(quotients_at_a_root_are_those_numbers)
+{
+  std::uint64_t seed = env_number("CLASH4D_SEED", 20261202);
+  BOOST_TEST_MESSAGE("quotients at roots: seed " << seed);
+  Random_draw draw(seed);
+  auto small_poly = [&](int degree) {
+    std::vector<Rational> p;
+    for (int i = 0; i <= degree; ++i) p.emplace_back(static_cast<int>(draw.range(-9, 9)), static_cast<int>(draw.range(1, 4)));
+    return p;
+  };
+  auto remainder = [](std::vector<Rational> a, const std::vector<Rational>& m) {   // a mod m, m's leading term non-zero
+    while (a.size() >= m.size()) {
+      Rational f = a.back() / m.back();
+      for (std::size_t i = 0; i < m.size(); ++i) a[a.size() - m.size() + i] -= f * m[i];
+      a.pop_back();
+    }
+    return a;
+  };
+  int irrational = 0;
+  for (int i = 0; i < 200; ++i) {
+    auto roots = Algebraic::real_roots(small_poly(3), Rational(-8), Rational(8));
+    for (const Algebraic& r : roots) {
+      if (r.is_rational()) continue;
+      std::vector<Rational> num = small_poly(2), den = small_poly(2);
+      if (r.sign_of(den) == CGAL::ZERO) continue;
+      Algebraic q = Algebraic::quotient_at(r, num, den);
+      std::vector<Rational> alpha = Algebraic::field_element(r, num, den), m;
+      for (const mpz_class& c : r.polynomial()) m.emplace_back(c.get_mpz_t());
+      // mu(alpha) by Horner in Q[t] / (m).
+      std::vector<Rational> value{Rational(0)};
+      std::vector<mpz_class> mu = q.is_rational() ? std::vector<mpz_class>{} : q.polynomial();
+      if (q.is_rational()) mu = {mpz_class(-mpz_class(q.rational().numerator().mpz())), mpz_class(q.rational().denominator().mpz())};
+      for (std::size_t k = mu.size(); k-- > 0;) {
+        std::vector<Rational> product(value.size() + alpha.size() - 1, Rational(0));
+        for (std::size_t a = 0; a < value.size(); ++a)
+          for (std::size_t b = 0; b < alpha.size(); ++b) product[a + b] += value[a] * alpha[b];
+        product[0] += Rational(mu[k].get_mpz_t());
+        value = remainder(product, m);
+      }
+      bool zero = true;
+      for (const Rational& c : value) zero = zero && CGAL::is_zero(c);
+      BOOST_TEST_CONTEXT("root " << r.to_text() << ", quotient " << q.to_text())
+      {
+        BOOST_TEST(zero);
+        long double t = r.to_double(), n = 0, d = 0;
+        for (std::size_t k = num.size(); k-- > 0;) n = n * t + CGAL::to_double(num[k]);
+        for (std::size_t k = den.size(); k-- > 0;) d = d * t + CGAL::to_double(den[k]);
+        BOOST_TEST(std::abs(q.to_double() - static_cast<double>(n / d)) <= 1e-9 * (1 + std::abs(static_cast<double>(n / d))));
+      }
+      irrational += !q.is_rational();
+    }
+  }
+  BOOST_TEST(irrational > 50);
+}
