@@ -17,7 +17,7 @@
 //   c4::Check_result r = c4::check(b.build(), o);
 //   // r.collide == true; r.reported()->earliest->t == c4::Rational(1)
 //
-// Scenes are those of the scene format (../shared/spec/scene-format.md in
+// Scenes are those of the scene format (docs/scene-format.md in
 // the project; `clash4d validate --help`): a scene built here is written in
 // that format and read back by the same reader as `clash4d check`, so it is
 // validated exactly like a file. Every number is an exact rational: nothing
