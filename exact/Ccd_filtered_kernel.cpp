@@ -1,6 +1,8 @@
 #include "exact/Ccd_filtered_kernel.h"
 
 #include "numbers/Interval_isolation.h"
+#include <algorithm>
+#include <cmath>
 
 namespace clash4d {
 
@@ -61,6 +63,25 @@ bool Ccd_filtered_kernel::swept_boxes_apart()
   ++exact_questions_;
   Nearest nearest;
   return rational().swept_boxes_apart();
+}
+
+bool Ccd_filtered_kernel::boxes_surely_apart(const Ccd_query& q, const Rational& separation)
+{
+  double d = CGAL::is_zero(separation) ? 0.0 : CGAL::to_interval(separation).second;
+  if (!std::isfinite(d)) return false;
+  int first = q.type() == Ccd_type::vertex_face ? 1 : 2;
+  const auto& e = q.enclosure();
+  for (int axis = 0; axis < 3; ++axis) {
+    double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
+    for (int v = 0; v < 8; ++v) {
+      int side = v % 4 < first ? 0 : 1;
+      lo[side] = std::min(lo[side], e[static_cast<std::size_t>(v)][static_cast<std::size_t>(axis)].inf());
+      hi[side] = std::max(hi[side], e[static_cast<std::size_t>(v)][static_cast<std::size_t>(axis)].sup());
+    }
+    auto up = [d](double x) { return d == 0 ? x : std::nextafter(x + d, HUGE_VAL); };
+    if (up(hi[0]) < lo[1] || up(hi[1]) < lo[0]) return true;
+  }
+  return false;
 }
 
 const std::vector<Ccd_filtered_kernel::Root>& Ccd_filtered_kernel::roots(int name)

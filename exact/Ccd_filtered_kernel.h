@@ -52,6 +52,11 @@ public:
   bool separated() const { return p_.separated(); }
 
   bool swept_boxes_apart();
+  // The same predicate's quickest filter, before any kernel or rounding
+  // mode: the enclosures' ends compared as doubles (a min or max of ends
+  // is exact), the separation's end added and rounded up by one ulp. True
+  // only when the boxes are surely apart.
+  static bool boxes_surely_apart(const Ccd_query& q, const Rational& separation);
   Time zero() const { return Time{-1, 0, 0.0}; }
   bool is_end(const Time& t) const { return t.name < 0 && t.value == 1; }
   int sign_at(int name, const Time& t);

@@ -45,6 +45,7 @@ Ccd_answer ccd_exact(const Ccd_query& query, const Ccd_options& options)
   // Where the machine does not round as the intervals ask (valgrind), the
   // answer is the rational kernel's alone.
   if (!Interval_kernel::encloses_here()) return ccd_rational(query, options);
+  if (Ccd_filtered_kernel::boxes_surely_apart(query, options.separation)) return {};   // most queries of a simulation
   Ccd_filtered_kernel::Protector protect;   // the intervals' upward rounding; rationals run in nearest
   Ccd_filtered_kernel k(query, options.separation);
   auto r = ccd_sweep(k);

@@ -333,7 +333,9 @@ Algebraic Algebraic::irrational(std::vector<mpz_class> poly, const Rational& lo,
 {
   auto rep = std::make_shared<Rep>();
   rep->poly = std::move(poly);
-  return Algebraic(std::move(rep), lo, hi);
+  Algebraic x(std::move(rep), lo, hi);
+  x.narrow_in_doubles();
+  return x;
 }
 
 int Algebraic::poly_sign(const Rational& q) const
@@ -347,6 +349,34 @@ int Algebraic::poly_sign(const Rational& q) const
     dk *= mpz_class(d);
   }
   return sgn(v);
+}
+
+// The interval narrowed to a few ulps by bisection in doubles, while the
+// polynomial's sign at the middle is sure (intervals, rounding upward): a
+// sign or comparison then seldom needs the exact bisection of refine().
+void Algebraic::narrow_in_doubles() const
+{
+  using I = CGAL::Interval_nt<false>;
+  constexpr int capacity = 7;
+  const std::vector<mpz_class>& m = rep_->poly;
+  if (m.size() > capacity) return;
+  int lower = poly_sign(lo_);
+  double a = CGAL::to_interval(lo_).second, b = CGAL::to_interval(hi_).first;
+  if (!(a < b) || !std::isfinite(a) || !std::isfinite(b)) return;
+  CGAL::Protect_FPU_rounding<true> upward;
+  Polynomial<I, capacity> p;
+  for (std::size_t i = m.size(); i-- > 0;) p = p * Polynomial<I, capacity>(I(0), I(1)) + Polynomial<I, capacity>(enclosure_of(m[i]));
+  auto sign_at = [&](double t) { return Interval_isolation<capacity>::sure_sign(p.at(I(t))); };
+  if (sign_at(a) != lower || sign_at(b) != -lower) return;   // the root may lie between lo and a, or b and hi
+  for (int i = 0; i < 64; ++i) {
+    double mid = a + (b - a) / 2;
+    if (!(a < mid && mid < b)) break;
+    int s = sign_at(mid);
+    if (s != 1 && s != -1) break;
+    (s == lower ? a : b) = mid;
+  }
+  lo_ = Rational(a);
+  hi_ = Rational(b);
 }
 
 void Algebraic::refine() const

@@ -59,6 +59,8 @@ public:
   const Rational& upper() const { return is_rational() ? value_ : hi_; }
   // Halves the isolating interval (the number is unchanged).
   void refine() const;
+  // Narrows it in doubles as far as sure signs allow (made numbers are).
+  void narrow_in_doubles() const;
 
   // The sign of g (constant term first) at this number.
   CGAL::Sign sign_of(const std::vector<Rational>& g) const;
