@@ -7,6 +7,7 @@
 #define CLASH4D_CCD_CCD_READER_H
 
 #include "ccd/Ccd_query.h"
+#include "scene/Json_value.h"
 #include <fstream>
 #include <istream>
 #include <memory>
@@ -37,13 +38,18 @@ public:
   Ccd_reader(std::istream& in, Format format, std::optional<Ccd_type> type);
 
   // Appends up to `count` queries to `out`; returns how many (0 at the end).
+  // The queries are parsed on all cores; the error is the first bad one's.
   std::size_t read(std::size_t count, std::vector<Ccd_query>& out);
   Format format() const { return format_; }
 
 private:
+  struct Text;
   bool next_line(std::string& line);
-  bool read_csv(Ccd_query& q);
-  bool read_json_line(Ccd_query& q);
+  bool take_csv(Text& t);
+  bool take_json_line(Text& t);
+  Ccd_query parse_csv(const Text& t) const;
+  Ccd_query parse_json_line(const Text& t) const;
+  Ccd_query json_query(const Json_value& v, std::size_t line) const;
 
   std::unique_ptr<std::ifstream> file_;
   std::istream* in_;

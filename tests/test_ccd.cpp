@@ -552,6 +552,12 @@ BOOST_AUTO_TEST_CASE(csv_errors_name_line_and_column)
   BOOST_TEST(error_of("1" + std::string(1200, '0') + ",1,1,1,1,1,1\n", csv, Ccd_type::vertex_face, &code)
                  .find("more than 1000 digits") != std::string::npos);
   BOOST_TEST(code == CLASH4D_EXIT_LIMIT);
+  // A line over the limit is refused as such (exit 3), a bad row before it first.
+  std::string long_line = std::string(hit_rows) + std::string(CLASH4D_MAX_CCD_LINE + 1, '1') + "\n";
+  BOOST_TEST(error_of(long_line, csv, Ccd_type::vertex_face, &code).find("line 9: longer than the limit") == 0);
+  BOOST_TEST(code == CLASH4D_EXIT_LIMIT);
+  BOOST_TEST(error_of("1,4,1,4,1,1,x\n" + std::string(CLASH4D_MAX_CCD_LINE + 1, '1') + "\n", csv, Ccd_type::vertex_face)
+                 .find("line 1, column 13") == 0);
   std::istringstream in(hit_rows);
   BOOST_CHECK_THROW(Ccd_reader(in, csv, std::nullopt), Input_error);   // CSV needs a type
 }
