@@ -22,7 +22,8 @@ void add_subject_options(CLI::App& command, Subject_args& args)
   command.add_option("--subject", args.subjects,
                      "NAME=COMMAND: an external collision engine run by /bin/sh -c COMMAND, speaking the protocol of "
                      "docs/subject-protocol.md; repeatable. '--subject fcl' and '--subject bullet' select the built-in FCL "
-                     "(same as --fcl) and Bullet subjects");
+                     "(same as --fcl) and Bullet subjects")
+      ->allow_extra_args(false);   // one value per occurrence: the files after it stay files
   command.add_option("--subject-timeout", args.timeout_seconds,
                      "seconds an external subject may take per request before it is killed and restarted (default 10)")
       ->check(CLI::PositiveNumber);

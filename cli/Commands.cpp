@@ -18,6 +18,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <unistd.h>
@@ -430,6 +431,12 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
       err << "clash4d: --certificate needs an exact answer (--number exact or rational)\n";
       return CLASH4D_EXIT_INVALID;
     }
+    std::error_code same;
+    if (!a->certificate.empty() && std::filesystem::equivalent(a->certificate, a->file, same)) {
+      err << "clash4d check: --certificate " << a->certificate << " is the scene file itself; refusing to write over "
+          << "the input\n";
+      return CLASH4D_EXIT_INVALID;
+    }
     a->options.sbounds = !a->no_sbounds;
     a->options.convex_lp = !a->no_convex_lp;
     a->options.json = a->as_json;
@@ -503,7 +510,9 @@ Command add_compare(CLI::App& app, std::ostream& out, std::ostream& err)
   auto a = std::make_shared<Compare_args>();
   CLI::App* cmd = app.add_subcommand("compare", "Run exact, double, double with tolerances and exact-on-rounded-input on each scene or CCD query; flag and classify every disagreement with exact (exit 1 when any).");
   cmd->add_option("FILE", a->files, "scene files, and CCD query files (.csv, or JSON lines of queries: docs/ccd-queries.md), one comparison per query")->required();
-  cmd->add_option("--tolerance", a->tolerances, "a double subject treating |value| <= EPS as zero; repeatable (default 1e-9)")->check(CLI::PositiveNumber);
+  cmd->add_option("--tolerance", a->tolerances, "a double subject treating |value| <= EPS as zero; repeatable (default 1e-9)")
+      ->check(CLI::PositiveNumber)
+      ->allow_extra_args(false);   // one value per occurrence: the files after it stay files
   cmd->add_flag("--earliest", a->earliest, "also compare earliest collision times t*");
   cmd->add_flag("--fcl", a->fcl, "also run FCL's continuous collision (the fcl subject) where FCL can express the scene; skipped with the reason elsewhere (scenes only)");
   cmd->add_flag("--json", a->as_json, "print one JSON object per scene or query in a list");
@@ -562,7 +571,9 @@ Command add_fuzz(CLI::App& app, std::ostream& out, std::ostream& err)
                   "S, without --shard: this is shard K of S with K from SLURM_ARRAY_TASK_ID (minus SLURM_ARRAY_TASK_MIN, "
                   "plus 1) or JOB_COMPLETION_INDEX (plus 1); Slurm's SLURM_ARRAY_TASK_COUNT gives S when omitted");
   cmd->add_option("--out", a->fuzz.out, "output folder")->required();
-  cmd->add_option("--tolerance", a->tolerances, "double subjects with tolerance EPS (default 1e-9)")->check(CLI::PositiveNumber);
+  cmd->add_option("--tolerance", a->tolerances, "double subjects with tolerance EPS (default 1e-9); repeatable")
+      ->check(CLI::PositiveNumber)
+      ->allow_extra_args(false);
   cmd->add_option("--merge", a->merge_dirs, "join these fuzz output folders into --out instead of running");
   cmd->add_flag("--fcl", a->fuzz.compare.fcl, "also run the fcl subject (FCL's continuous collision) on the cases FCL can express");
   cmd->add_option("--semantics", a->semantics, own_semantics_help)->check(CLI::IsMember({"regularised", "closed"}));
@@ -582,7 +593,7 @@ Command add_fuzz(CLI::App& app, std::ostream& out, std::ostream& err)
     if (!a->tolerances.empty()) fuzz.compare.tolerances = a->tolerances;
     fuzz.compare.semantics = *semantics_from_name(a->semantics);
     if (!apply_subject_args(a->subjects, fuzz.compare, "fuzz", err)) return CLASH4D_EXIT_INVALID;
-    fuzz.progress = isatty(fileno(stderr)) != 0;
+    fuzz.progress = isatty(fileno(stderr)) != 0 ? Campaign_options::Progress::terminal : Campaign_options::Progress::log;
     if (a->ccd) return ccd_fuzz(*a, *cmd, out, err);
     if (a->earliest || cmd->count("--time-bound")) {
       err << "clash4d fuzz: --earliest and --time-bound are for --ccd campaigns\n";

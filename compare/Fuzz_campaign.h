@@ -37,7 +37,10 @@ struct Campaign_options {
   std::uint64_t cases = 100;
   std::uint64_t shard = 1, shards = 1;     // this is shard `shard` (1-based) of `shards`
   std::string out;
-  bool progress = false;                   // a progress line on standard error
+  // Progress on standard error: none, a line rewritten after each batch on
+  // a terminal, or a line every ten seconds in a log (a Slurm job's).
+  enum class Progress { none, terminal, log };
+  Progress progress = Progress::none;
   // Each shrinking step reruns the comparison: a bound on the steps (not on
   // time, so findings stay reproducible) keeps one stubborn case from
   // holding a campaign up.

@@ -2,6 +2,7 @@
 #include "scene/Input_error.h"
 #include "scene/Number_text.h"
 
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -149,19 +150,24 @@ Json_value read_json_text(const std::string& text)
   return std::move(builder.result);
 }
 
+// A file's text, or a pipe's (`check <(cat scene.json)`): read as a stream,
+// within the size limit either way.
 Json_value read_json_file(const std::string& path)
 {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw Input_error("", "is a folder, not a scene file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Input_error("", "cannot open the file");
-  in.seekg(0, std::ios::end);
-  std::streamoff size = in.tellg();
-  if (size < 0) throw Input_error("", "cannot read the file");
-  if (static_cast<std::size_t>(size) > CLASH4D_MAX_FILE_BYTES)
-    throw Input_error("", "file larger than the limit of " + std::to_string(CLASH4D_MAX_FILE_BYTES >> 20) + " MiB", CLASH4D_EXIT_LIMIT);
-  in.seekg(0);
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return read_json_text(buffer.str());
+  std::string text;
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > CLASH4D_MAX_FILE_BYTES)
+      throw Input_error("", "file larger than the limit of " + std::to_string(CLASH4D_MAX_FILE_BYTES >> 20) + " MiB",
+                        CLASH4D_EXIT_LIMIT);
+  }
+  if (in.bad()) throw Input_error("", "cannot read the file");
+  return read_json_text(text);
 }
 
 } // namespace clash4d

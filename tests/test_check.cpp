@@ -11,6 +11,8 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <thread>
+#include <unistd.h>
 
 using namespace clash4d;
 
@@ -272,4 +274,41 @@ BOOST_AUTO_TEST_CASE(a_run_past_its_work_budget_exits_3_with_no_answer)
   Run ok = run({"check", scene_file("budget", spec_example), "--max-seconds", "1000"});
   BOOST_TEST(ok.status == 1);
   BOOST_TEST(run({"check", scene_file("budget", spec_example), "--max-seconds", "0"}).status == 2);
+}
+
+// A folder given as the scene is named as such (exit 2), not a file over
+// the size limit; a scene read through a pipe is read as a stream
+// (`check <(cat scene.json)`); a certificate that would write over the
+// scene itself is refused, and the scene is left as it was.
+BOOST_AUTO_TEST_CASE(folders_pipes_and_the_certificate_over_the_scene)
+{
+  Run r = run({"check", "/tmp"});
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.err.find("/tmp: is a folder, not a scene file") != std::string::npos, r.err);
+
+  int fds[2];
+  BOOST_REQUIRE(::pipe(fds) == 0);
+  std::thread writer([&] {
+    std::size_t left = spec_example.size();
+    const char* at = spec_example.data();
+    while (left > 0) {
+      ssize_t n = ::write(fds[1], at, left);
+      if (n <= 0) break;
+      at += n, left -= static_cast<std::size_t>(n);
+    }
+    ::close(fds[1]);
+  });
+  r = run({"check", "/dev/fd/" + std::to_string(fds[0]), "--json"});
+  writer.join();
+  ::close(fds[0]);
+  BOOST_TEST(r.status == 1, r.err);
+  BOOST_TEST(r.out.find("\"collide\": true") != std::string::npos, r.out);
+
+  std::string scene = scene_file("certificate_over_scene", spec_example);
+  r = run({"check", scene, "--certificate", scene});
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.err.find("is the scene file itself") != std::string::npos, r.err);
+  std::ifstream in(scene);
+  std::string kept((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  BOOST_TEST(kept == spec_example);
 }

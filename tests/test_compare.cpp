@@ -1,6 +1,7 @@
 #define BOOST_TEST_MODULE compare
 #include <boost/test/unit_test.hpp>
 
+#include "support/Cli_run.h"
 #include "support/Comparison_rows.h"
 #include "compare/Comparer.h"
 #include "scene/Input_error.h"
@@ -121,4 +122,20 @@ BOOST_AUTO_TEST_CASE(earliest_error_is_reported_for_double)
   BOOST_TEST(subject(c, "exact")["earliest"]["t"] == "199999999/100000000");
   BOOST_TEST(subject(c, "exact")["t_error"] == "0.000e+00");
   BOOST_TEST(!subject(c, "double")["t_error"].is_null());
+}
+
+// A repeatable option takes one value per occurrence: the scene files after
+// `--tolerance EPS` or `--subject NAME=COMMAND` are files, not more values.
+BOOST_AUTO_TEST_CASE(repeatable_options_take_one_value_each)
+{
+  std::string a = std::string(CLASH4D_FIXTURES) + "/contact/approach_stop_at_contact.json";
+  std::string b = std::string(CLASH4D_FIXTURES) + "/contact/approach_stop_at_contact_overlap_1e-9.json";
+  Cli_run r = run_clash4d({"compare", "--tolerance", "1e-6", a, b});
+  BOOST_TEST(r.err.empty(), r.err);
+  BOOST_TEST(r.out.find("approach_stop_at_contact.json:") != std::string::npos, r.out);
+  BOOST_TEST(r.out.find("approach_stop_at_contact_overlap_1e-9.json:") != std::string::npos, r.out);
+  BOOST_TEST(r.out.find("double tol=1e-06") != std::string::npos, r.out);
+  r = run_clash4d({"compare", "--subject", "mine=true", a, b});
+  BOOST_TEST(r.err.find("expects NAME=COMMAND") == std::string::npos, r.err);
+  BOOST_TEST(r.out.find("approach_stop_at_contact_overlap_1e-9.json:") != std::string::npos, r.out);
 }

@@ -124,3 +124,26 @@ BOOST_AUTO_TEST_CASE(command_line_checks_its_arguments)
   BOOST_TEST(run({"fuzz", "--merge", "/nonexistent", "--out", dir}) == 2);
   BOOST_TEST(run({"report", "/nonexistent.json", "--out", dir}) == 2);
 }
+
+// Progress in a log (not a terminal: a Slurm job's file): whole lines, the
+// last one at the end of the campaign; none unless asked; on a terminal the
+// line is rewritten in place.
+BOOST_AUTO_TEST_CASE(progress_in_a_log_is_whole_lines)
+{
+  fs::path out = fresh("progress_log");
+  Fuzz_options o = campaign(out);
+  o.progress = Campaign_options::Progress::log;
+  std::ostringstream err;
+  run_fuzz(o, err);
+  BOOST_TEST(err.str().find("clash4d fuzz: 24/24 cases") != std::string::npos, err.str());
+  BOOST_TEST(err.str().find('\r') == std::string::npos);
+  BOOST_TEST(err.str().back() == '\n');
+  std::ostringstream quiet;
+  run_fuzz(campaign(fresh("progress_none")), quiet);
+  BOOST_TEST(quiet.str().empty(), quiet.str());
+  std::ostringstream terminal;
+  Fuzz_options t = campaign(fresh("progress_terminal"));
+  t.progress = Campaign_options::Progress::terminal;
+  run_fuzz(t, terminal);
+  BOOST_TEST(terminal.str().find("\r24/24 cases") != std::string::npos, terminal.str());
+}
