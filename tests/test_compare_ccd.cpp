@@ -217,7 +217,7 @@ BOOST_AUTO_TEST_CASE(ccd_campaigns_shard_merge_and_rerun_like_scene_campaigns)
   fs::path whole = fresh("whole"), a = fresh("a"), b = fresh("b"), merged = fresh("merged");
   auto campaign = [](const fs::path& out, std::uint64_t shard, std::uint64_t shards) {
     Ccd_fuzz_options o;   // seed 5, 40 cases, 10 shrinking steps
-    static_cast<Campaign_options&>(o) = Campaign_options{5, 40, shard, shards, out.string(), false, 10};
+    static_cast<Campaign_options&>(o) = Campaign_options{5, 40, shard, shards, out.string(), Campaign_options::Progress::none, 10};
     return o;
   };
   std::ostringstream err;
