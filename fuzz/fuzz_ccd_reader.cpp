@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <iostream>
 #include <sstream>
 #include <string>
 
@@ -33,7 +34,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           if (std::isfinite(x) && !(e.inf() <= x && x <= e.sup())) std::abort();
         }
   } catch (const Input_error& e) {
-    if (e.exit_code() != CLASH4D_EXIT_INVALID && e.exit_code() != CLASH4D_EXIT_LIMIT) std::abort();
+    if (e.exit_code() == CLASH4D_EXIT_INVALID || e.exit_code() == CLASH4D_EXIT_LIMIT) return 0;
+    std::cerr << "an input error with exit code " << e.exit_code() << ": " << e.format("input") << "\n";
+    std::abort();
+  } catch (const std::exception& e) {
+    std::cerr << "an exception other than Input_error escaped the reader: " << e.what() << "\n";
+    std::abort();
   }
   return 0;
 }

@@ -10,6 +10,7 @@
 #include "scene/Mesh_solid.h"
 #include <cstdint>
 #include <cstdlib>
+#include <iostream>
 #include <string_view>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
@@ -28,7 +29,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     Checked_mesh mesh = check_mesh(read_mesh(bytes, format, "fuzz", limits), "fuzz");
     mesh_solid(mesh, "fuzz", limits);
   } catch (const Input_error& e) {
-    if (e.exit_code() != CLASH4D_EXIT_INVALID && e.exit_code() != CLASH4D_EXIT_LIMIT) std::abort();
+    if (e.exit_code() == CLASH4D_EXIT_INVALID || e.exit_code() == CLASH4D_EXIT_LIMIT) return 0;
+    std::cerr << "an input error with exit code " << e.exit_code() << ": " << e.format("input") << "\n";
+    std::abort();
+  } catch (const std::exception& e) {
+    std::cerr << "an exception other than Input_error escaped the reader: " << e.what() << "\n";
+    std::abort();
   }
   return 0;
 }

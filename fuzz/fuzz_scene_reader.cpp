@@ -19,8 +19,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     scene = read_scene(read_json_text(std::string(reinterpret_cast<const char*>(data), size)));
   } catch (const Input_error& e) {
-    if (e.exit_code() != CLASH4D_EXIT_INVALID && e.exit_code() != CLASH4D_EXIT_LIMIT) std::abort();
-    return 0;
+    if (e.exit_code() == CLASH4D_EXIT_INVALID || e.exit_code() == CLASH4D_EXIT_LIMIT) return 0;
+    std::cerr << "an input error with exit code " << e.exit_code() << ": " << e.format("input") << "\n";
+    std::abort();
+  } catch (const std::exception& e) {
+    std::cerr << "an exception other than Input_error escaped the reader: " << e.what() << "\n";
+    std::abort();
   }
   std::string once = write_scene(scene);
   std::string twice;
