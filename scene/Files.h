@@ -9,9 +9,14 @@
 
 namespace clash4d {
 
-// Writes text to DIR/.NAME.PID.N.tmp and renames it to path (atomic on one
-// file system); the temporary is removed on failure. Safe from several
-// threads and processes at once. Throws std::runtime_error naming the file.
+// Writes text so that no reader sees half of it: to a new hidden file beside
+// path (DIR/.NAME.PID.N.RANDOM.tmp, created with O_EXCL | O_NOFOLLOW) renamed
+// over path, which keeps a replaced file's permissions; the temporary is
+// removed on failure. Only a regular file, or nothing, is replaced: a
+// symbolic link is written through to the file it names, a device or a pipe
+// (/dev/null) is written to as it is, and a folder is refused. Safe from
+// several threads and processes at once. Throws std::runtime_error naming
+// the file.
 void write_file_atomically(const std::string& path, const std::string& text);
 
 // Parses a JSON file; throws std::runtime_error "PATH: cannot read" or

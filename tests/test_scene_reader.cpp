@@ -179,3 +179,129 @@ BOOST_AUTO_TEST_CASE(cone_apex_is_one_vertex)
   BOOST_REQUIRE(c.corners.size() == 1u);
   BOOST_TEST(c.corners[0].size() == 34u);
 }
+
+// ---- scene/Files.h: what an atomic write replaces (issue 59 items 10, 11) ----
+
+#include "scene/Files.h"
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <thread>
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh folder per test, removed after it.
+struct Scratch {
+  fs::path dir;
+  Scratch()
+  {
+    std::string pattern = (fs::temp_directory_path() / "clash4d-files-XXXXXX").string();
+    BOOST_TEST_REQUIRE(::mkdtemp(pattern.data()) != nullptr);
+    dir = pattern;
+  }
+  ~Scratch() { std::error_code ec; fs::remove_all(dir, ec); }
+  std::string text_of(const fs::path& p) const
+  {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+  // The folder's entries other than those named: no temporary is left behind.
+  std::size_t entries() const { return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), {})); }
+};
+
+} // namespace
+
+BOOST_AUTO_TEST_SUITE(atomic_writes)
+
+BOOST_AUTO_TEST_CASE(new_and_replaced_regular_files_keep_permissions)
+{
+  Scratch s;
+  fs::path out = s.dir / "out.json";
+  write_file_atomically(out.string(), "one\n");
+  BOOST_TEST(s.text_of(out) == "one\n");
+  fs::permissions(out, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  write_file_atomically(out.string(), "two\n");
+  BOOST_TEST(s.text_of(out) == "two\n");
+  BOOST_TEST((fs::status(out).permissions() == (fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read)));
+  BOOST_TEST(s.entries() == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(a_symbolic_link_is_written_through_not_replaced)
+{
+  Scratch s;
+  fs::path real = s.dir / "real.json", link = s.dir / "link.json";
+  { std::ofstream(real) << "old\n"; }
+  fs::create_symlink(real, link);
+  write_file_atomically(link.string(), "new\n");
+  BOOST_TEST(fs::is_symlink(fs::symlink_status(link)));
+  BOOST_TEST(s.text_of(real) == "new\n");
+  BOOST_TEST(s.entries() == 2u);
+}
+
+BOOST_AUTO_TEST_CASE(a_dangling_link_and_a_folder_are_refused_by_name)
+{
+  Scratch s;
+  fs::path link = s.dir / "dangling.json", folder = s.dir / "folder";
+  fs::create_symlink(s.dir / "missing" / "x.json", link);
+  fs::create_directory(folder);
+  for (const fs::path& p : {link, folder}) {
+    try {
+      write_file_atomically(p.string(), "x\n");
+      BOOST_FAIL("written: " << p);
+    } catch (const std::runtime_error& e) {
+      BOOST_TEST(std::string(e.what()).find(p.string()) == 0u, e.what());
+    }
+  }
+  BOOST_TEST(fs::is_symlink(fs::symlink_status(link)));
+  BOOST_TEST(fs::is_directory(folder));
+  BOOST_TEST(s.entries() == 2u);
+}
+
+BOOST_AUTO_TEST_CASE(a_device_or_a_pipe_is_written_to_as_it_is)
+{
+  // `--certificate /dev/null` as root made /dev/null a regular file. The
+  // test makes a null device of its own where it may (as root), never
+  // touching the machine's.
+  Scratch s;
+  fs::path null_device = s.dir / "null";
+  if (::mknod(null_device.c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0) {
+    write_file_atomically(null_device.string(), "discarded\n");
+    BOOST_TEST(fs::is_character_file(fs::status(null_device)));
+    fs::remove(null_device);
+  } else {
+    BOOST_TEST_MESSAGE("not root: the device case is left to the pipe");
+  }
+  fs::path fifo = s.dir / "fifo";
+  BOOST_TEST_REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  std::string read_back;
+  std::thread reader([&] { read_back = s.text_of(fifo); });
+  write_file_atomically(fifo.string(), "through the pipe\n");
+  reader.join();
+  BOOST_TEST(read_back == "through the pipe\n");
+  BOOST_TEST(fs::is_fifo(fs::status(fifo)));
+}
+
+BOOST_AUTO_TEST_CASE(a_planted_link_at_the_old_temporary_name_is_not_followed)
+{
+  // The old temporary name was .NAME.PID.N.tmp, opened with O_TRUNC: a link
+  // planted there let the tool overwrite the file it named.
+  Scratch s;
+  fs::path victim = s.dir / "victim.txt", out = s.dir / "out.json";
+  { std::ofstream(victim) << "keep\n"; }
+  // Every counter value this process can have reached by now.
+  for (int n = 0; n < 64; ++n)
+    fs::create_symlink(victim, s.dir / (".out.json." + std::to_string(::getpid()) + "." + std::to_string(n) + ".tmp"));
+  write_file_atomically(out.string(), "written\n");
+  BOOST_TEST(s.text_of(victim) == "keep\n");
+  BOOST_TEST(s.text_of(out) == "written\n");
+  BOOST_TEST(s.entries() == 66u);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
