@@ -1,10 +1,10 @@
 #include "cli/Verify_command.h"
 #include "scene/Input_error.h"
+#include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
 #include "verify/Certificate_checker.h"
 
 #include <CLI/CLI.hpp>
-#include <fstream>
 #include <memory>
 #include <ostream>
 
@@ -12,7 +12,25 @@ namespace clash4d {
 
 using namespace verifier;
 
-int run_verify(const std::string& scene_file, const std::string& cert_file, std::ostream& out, std::ostream& err)
+// The certificate's text, within max_mb (exit 3 beyond it: a certificate
+// takes 10 to 16 times its size in memory as JSON), or the exit status.
+static int read_certificate(const std::string& cert_file, double max_mb, Json& cert, std::ostream& err)
+{
+  try {
+    cert = Json::parse(read_file_text(cert_file, static_cast<std::size_t>(max_mb * 1048576.0)));
+  } catch (const Input_error& e) {
+    err << "clash4d verify: " << cert_file << ": "
+        << (e.exit_code() == CLASH4D_EXIT_LIMIT ? std::string(e.what()) + " (--certificate-max-mb)" : e.what()) << "\n";
+    return e.exit_code() == CLASH4D_EXIT_LIMIT ? CLASH4D_EXIT_LIMIT : CLASH4D_VERIFY_UNREADABLE;
+  } catch (const std::exception& e) {   // bad JSON, a file cut short: the parser says where
+    err << "clash4d verify: " << cert_file << ": " << e.what() << "\n";
+    return CLASH4D_VERIFY_UNREADABLE;
+  }
+  return 0;
+}
+
+int run_verify(const std::string& scene_file, const std::string& cert_file, double certificate_max_mb,
+               std::ostream& out, std::ostream& err)
 {
   Scene scene;
   try {
@@ -25,17 +43,7 @@ int run_verify(const std::string& scene_file, const std::string& cert_file, std:
     return CLASH4D_VERIFY_UNREADABLE;
   }
   Json cert;
-  try {
-    std::ifstream in(cert_file, std::ios::binary);
-    if (!in) {
-      err << "clash4d verify: " << cert_file << ": cannot open the certificate\n";
-      return CLASH4D_VERIFY_UNREADABLE;
-    }
-    cert = Json::parse(in);
-  } catch (const std::exception& e) {   // bad JSON, a file cut short: the parser says where
-    err << "clash4d verify: " << cert_file << ": " << e.what() << "\n";
-    return CLASH4D_VERIFY_UNREADABLE;
-  }
+  if (int status = read_certificate(cert_file, certificate_max_mb, cert, err)) return status;
   Verify_result r = verify_certificate(scene, cert);
   if (r.ok) {
     out << r.claim << "\n";
@@ -47,13 +55,23 @@ int run_verify(const std::string& scene_file, const std::string& cert_file, std:
 
 std::function<int()> add_verify(CLI::App& app, std::ostream& out, std::ostream& err)
 {
-  auto files = std::make_shared<std::pair<std::string, std::string>>();
+  struct Args {
+    std::string scene, certificate;
+    double certificate_max_mb = 256;
+  };
+  auto a = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("verify", "Check a certificate written by check --certificate against the scene, "
                                                "independently of the decision (docs/certificate-format.md); exit 0 "
-                                               "when it proves its claim, 1 when not, 2 on unreadable input.");
-  cmd->add_option("SCENE", files->first, "scene file")->required();
-  cmd->add_option("CERT", files->second, "certificate file")->required();
-  return [cmd, files, &out, &err] { return cmd->parsed() ? run_verify(files->first, files->second, out, err) : -1; };
+                                               "when it proves its claim, 1 when not, 2 on unreadable input, 3 "
+                                               "when the certificate is larger than --certificate-max-mb.");
+  cmd->add_option("SCENE", a->scene, "scene file")->required();
+  cmd->add_option("CERT", a->certificate, "certificate file")->required();
+  cmd->add_option("--certificate-max-mb", a->certificate_max_mb,
+                  "refuse (exit 3) a certificate larger than this, unread (default 256, as check writes)")
+      ->check(CLI::PositiveNumber);
+  return [cmd, a, &out, &err] {
+    return cmd->parsed() ? run_verify(a->scene, a->certificate, a->certificate_max_mb, out, err) : -1;
+  };
 }
 
 } // namespace clash4d

@@ -12,8 +12,10 @@ namespace CLI { class App; }
 namespace clash4d {
 
 // Exit 0 printing the claim proved; 1 with the first failure and its JSON
-// path; 2 when the scene or the certificate cannot be read.
-int run_verify(const std::string& scene_file, const std::string& cert_file, std::ostream& out, std::ostream& err);
+// path; 2 when the scene or the certificate cannot be read; 3 when the
+// certificate is larger than certificate_max_mb (MiB), left unread.
+int run_verify(const std::string& scene_file, const std::string& cert_file, double certificate_max_mb,
+               std::ostream& out, std::ostream& err);
 
 // Registers the subcommand; the function runs it when it was the one given
 // (else returns -1), as every command of cli/Commands.cpp.

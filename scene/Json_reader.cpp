@@ -2,10 +2,11 @@
 #include "scene/Input_error.h"
 #include "scene/Number_text.h"
 
+#include <cerrno>
+#include <fcntl.h>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
+#include <unistd.h>
 
 namespace clash4d {
 
@@ -150,24 +151,35 @@ Json_value read_json_text(const std::string& text)
   return std::move(builder.result);
 }
 
-// A file's text, or a pipe's (`check <(cat scene.json)`): read as a stream,
-// within the size limit either way.
+std::string read_file_text(const std::string& path, std::size_t max_bytes)
+{
+  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw Input_error("", "cannot open the file");
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+  std::string text;
+  char chunk[1 << 16];
+  for (;;) {
+    ssize_t n = ::read(fd, chunk, sizeof chunk);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      ::close(fd);
+      if (n < 0) throw Input_error("", "cannot read the file");
+      return text;
+    }
+    text.append(chunk, static_cast<std::size_t>(n));
+    if (text.size() > max_bytes) {
+      ::close(fd);
+      throw Input_error("", "file larger than the limit of " + std::to_string(max_bytes >> 20) + " MiB",
+                        CLASH4D_EXIT_LIMIT);
+    }
+  }
+}
+
 Json_value read_json_file(const std::string& path)
 {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw Input_error("", "is a folder, not a scene file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Input_error("", "cannot open the file");
-  std::string text;
-  char chunk[1 << 16];
-  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
-    text.append(chunk, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > CLASH4D_MAX_FILE_BYTES)
-      throw Input_error("", "file larger than the limit of " + std::to_string(CLASH4D_MAX_FILE_BYTES >> 20) + " MiB",
-                        CLASH4D_EXIT_LIMIT);
-  }
-  if (in.bad()) throw Input_error("", "cannot read the file");
-  return read_json_text(text);
+  return read_json_text(read_file_text(path, CLASH4D_MAX_FILE_BYTES));
 }
 
 } // namespace clash4d

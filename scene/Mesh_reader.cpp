@@ -705,7 +705,11 @@ Mesh read_mesh_file(const std::string& path, const std::string& file_name, const
 {
   Mesh_format format = mesh_format_of(file_name);
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw Input_error(file_name, "is a directory, not a mesh file");
+  std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (std::filesystem::is_directory(status)) throw Input_error(file_name, "is a directory, not a mesh file");
+  // A pipe or a device would block or never end: a mesh is a regular file.
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw Input_error(file_name, "is not a regular file (a pipe, a device or a socket), not a mesh file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Input_error(file_name, "cannot open the mesh file");
   in.seekg(0, std::ios::end);

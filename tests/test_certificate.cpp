@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
 #include <unistd.h>
 
 using namespace clash4d;
@@ -350,6 +351,27 @@ BOOST_AUTO_TEST_CASE(certificates_need_an_exact_kernel_and_stay_within_their_lim
   BOOST_TEST(l.err.find("--certificate-max-mb") != std::string::npos, l.err);
   BOOST_TEST(l.out.empty(), l.out);
   BOOST_TEST(!fs::exists(cert));
+}
+
+// verify refuses, unread, a certificate beyond its --certificate-max-mb
+// (exit 3 naming the limit; it had no cap, issue 59 item 17), and a named
+// pipe nobody writes to is an unreadable certificate at once, not a hang.
+BOOST_AUTO_TEST_CASE(verify_has_a_size_limit_and_does_not_wait_on_a_pipe)
+{
+  Made m = made("apart", apart_example, {});
+  std::uintmax_t size = fs::file_size(m.cert);
+  BOOST_TEST_REQUIRE(size > 200u);
+  Cli_run l = run_clash4d({"verify", m.scene, m.cert, "--certificate-max-mb", "0.0001"});
+  BOOST_TEST(l.status == 3, l.err);
+  BOOST_TEST(l.err.find("--certificate-max-mb") != std::string::npos, l.err);
+  BOOST_TEST(l.out.empty(), l.out);
+  BOOST_TEST(run_clash4d({"verify", m.scene, m.cert, "--certificate-max-mb", "1"}).status == 0);
+  std::string fifo = (work / ("cert." + std::to_string(::getpid()) + ".fifo")).string();
+  fs::remove(fifo);
+  BOOST_TEST_REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  Cli_run p = run_clash4d({"verify", m.scene, fifo});
+  BOOST_TEST(p.status == 2, p.err);
+  fs::remove(fifo);
 }
 
 BOOST_AUTO_TEST_CASE(json_output_names_the_certificate)

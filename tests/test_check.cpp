@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
 #include <thread>
 #include <unistd.h>
 
@@ -303,6 +304,20 @@ BOOST_AUTO_TEST_CASE(folders_pipes_and_the_certificate_over_the_scene)
   ::close(fds[0]);
   BOOST_TEST(r.status == 1, r.err);
   BOOST_TEST(r.out.find("\"collide\": true") != std::string::npos, r.out);
+
+  // A named pipe nobody writes to is read as empty, at once (it was a hang),
+  // and a pipe named as a mesh is refused (issue 59 item 6).
+  std::string fifo = "/tmp/clash4d_test_check_fifo." + std::to_string(::getpid()) + ".off";
+  std::remove(fifo.c_str());
+  BOOST_REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  r = run({"check", fifo});
+  BOOST_TEST(r.status == 2, r.err);
+  r = run({"check", scene_file("fifo_mesh", R"({"format":"clash4d-scene/1","time":[0,1],"objects":[
+    {"name":"pipe","shape":{"mesh":")" + fifo + R"("}},
+    {"name":"box","shape":{"block":{"min":[0,0,0],"max":[1,1,1]}}}]})")});
+  BOOST_TEST(r.status == 2, r.err);
+  BOOST_TEST(r.err.find("is not a regular file") != std::string::npos, r.err);
+  std::remove(fifo.c_str());
 
   std::string scene = scene_file("certificate_over_scene", spec_example);
   r = run({"check", scene, "--certificate", scene});
