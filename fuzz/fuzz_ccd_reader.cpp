@@ -5,7 +5,7 @@
 // else escaping, a crash, a leak or a hang is a finding, and so is a query
 // whose nearest double is outside its enclosure.
 #include "ccd/Ccd_reader.h"
-#include "scene/Input_error.h"
+#include "fuzz/Read_or_refuse.h"
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -22,7 +22,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (data[0] / 2 % 3 == 1) type = Ccd_type::vertex_face;
   if (data[0] / 2 % 3 == 2) type = Ccd_type::edge_edge;
   std::istringstream in(std::string(reinterpret_cast<const char*>(data + 1), size - 1));
-  try {
+  read_or_refuse([&] {
     Ccd_reader reader(in, format, type);
     std::vector<Ccd_query> queries;
     while (reader.read(16, queries) > 0) {}
@@ -33,13 +33,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           auto e = q.enclosure()[i][k];
           if (std::isfinite(x) && !(e.inf() <= x && x <= e.sup())) std::abort();
         }
-  } catch (const Input_error& e) {
-    if (e.exit_code() == CLASH4D_EXIT_INVALID || e.exit_code() == CLASH4D_EXIT_LIMIT) return 0;
-    std::cerr << "an input error with exit code " << e.exit_code() << ": " << e.format("input") << "\n";
-    std::abort();
-  } catch (const std::exception& e) {
-    std::cerr << "an exception other than Input_error escaped the reader: " << e.what() << "\n";
-    std::abort();
-  }
+  });
   return 0;
 }

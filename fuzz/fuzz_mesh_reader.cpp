@@ -4,13 +4,11 @@
 // The first byte picks the format, the rest is the file. Bad input must end
 // in Input_error with exit 2 or 3; anything else escaping (exit 4 included:
 // CGAL failing inside), a crash, a leak or a hang is a finding.
-#include "scene/Input_error.h"
+#include "fuzz/Read_or_refuse.h"
 #include "scene/Mesh_check.h"
 #include "scene/Mesh_reader.h"
 #include "scene/Mesh_solid.h"
 #include <cstdint>
-#include <cstdlib>
-#include <iostream>
 #include <string_view>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
@@ -25,16 +23,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   Mesh_limits limits;
   limits.facets = limits.vertices = 400;
   limits.pieces = 100;
-  try {
+  read_or_refuse([&] {
     Checked_mesh mesh = check_mesh(read_mesh(bytes, format, "fuzz", limits), "fuzz");
     mesh_solid(mesh, "fuzz", limits);
-  } catch (const Input_error& e) {
-    if (e.exit_code() == CLASH4D_EXIT_INVALID || e.exit_code() == CLASH4D_EXIT_LIMIT) return 0;
-    std::cerr << "an input error with exit code " << e.exit_code() << ": " << e.format("input") << "\n";
-    std::abort();
-  } catch (const std::exception& e) {
-    std::cerr << "an exception other than Input_error escaped the reader: " << e.what() << "\n";
-    std::abort();
-  }
+  });
   return 0;
 }

@@ -3,6 +3,7 @@
 // place); anything else escaping, a crash, a leak or a hang is a finding.
 // A scene that reads must also survive the writer: written and read again it
 // gives the same text (the writer's round-trip promise, scene/Scene_writer.h).
+#include "fuzz/Read_or_refuse.h"
 #include "scene/Input_error.h"
 #include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
@@ -16,16 +17,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 {
   using namespace clash4d;
   Scene scene;
-  try {
-    scene = read_scene(read_json_text(std::string(reinterpret_cast<const char*>(data), size)));
-  } catch (const Input_error& e) {
-    if (e.exit_code() == CLASH4D_EXIT_INVALID || e.exit_code() == CLASH4D_EXIT_LIMIT) return 0;
-    std::cerr << "an input error with exit code " << e.exit_code() << ": " << e.format("input") << "\n";
-    std::abort();
-  } catch (const std::exception& e) {
-    std::cerr << "an exception other than Input_error escaped the reader: " << e.what() << "\n";
-    std::abort();
-  }
+  if (!read_or_refuse([&] { scene = read_scene(read_json_text(std::string(reinterpret_cast<const char*>(data), size))); }))
+    return 0;
   std::string once = write_scene(scene);
   std::string twice;
   try {
