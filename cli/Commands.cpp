@@ -420,7 +420,7 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
                   "also write a proof of the answer to FILE, checkable by 'clash4d verify SCENE FILE' "
                   "(exact kernels only; docs/certificate-format.md)");
   cmd->add_option("--certificate-max-mb", a->certificate_max_mb, "refuse (exit 3) a certificate larger than this (default 256)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::PositiveNumber)->check(CLI::Range(0.0, 1048576.0));
   return [cmd, a, &out, &err] {
     if (!cmd->parsed()) return -1;
     if (a->tolerance != 0 && a->number != "double") {

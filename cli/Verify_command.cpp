@@ -68,7 +68,7 @@ std::function<int()> add_verify(CLI::App& app, std::ostream& out, std::ostream& 
   cmd->add_option("CERT", a->certificate, "certificate file")->required();
   cmd->add_option("--certificate-max-mb", a->certificate_max_mb,
                   "refuse (exit 3) a certificate larger than this, unread (default 256, as check writes)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::PositiveNumber)->check(CLI::Range(0.0, 1048576.0));
   return [cmd, a, &out, &err] {
     return cmd->parsed() ? run_verify(a->scene, a->certificate, a->certificate_max_mb, out, err) : -1;
   };
