@@ -3,8 +3,10 @@
 #include "scene/Number_text.h"
 
 #include <cerrno>
+#include <cstdint>
 #include <fcntl.h>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
@@ -34,8 +36,16 @@ std::string line_column(const std::string& text, std::size_t byte)
   return "line " + std::to_string(line) + ", column " + std::to_string(col);
 }
 
+// The SAX events' JSON type. Its floats are long double only so that the
+// parser does not call a token such as 1e1000 an overflow: the value is never
+// used (numbers are read exactly from their text), and with long double's
+// range (1e+-4932) every token within CLASH4D_MAX_EXPONENT reaches the
+// builder, as the same text in a string does (docs/scene-format.md, Numbers).
+using Sax_json = nlohmann::basic_json<std::map, std::vector, std::string, bool, std::int64_t, std::uint64_t,
+                                      long double>;
+
 // Builds a Json_value tree; open containers live on an explicit stack.
-class Builder : public nlohmann::json_sax<nlohmann::json> {
+class Builder : public nlohmann::json_sax<Sax_json> {
 public:
   explicit Builder(const std::string& text) : text_(text) {}
   Json_value result;
@@ -142,8 +152,12 @@ private:
 
 Json_value read_json_text(const std::string& text)
 {
+  // nlohmann's lexer takes a NUL byte for the end of the input, so whatever
+  // follows one would pass unread; JSON text holds none (RFC 8259 section 7).
+  if (std::size_t nul = text.find('\0'); nul != std::string::npos)
+    throw Input_error(line_column(text, nul), "a NUL byte, which JSON text never holds");
   Builder builder(text);
-  bool ok = nlohmann::json::sax_parse(text, &builder, nlohmann::json::input_format_t::json, true, false);
+  bool ok = Sax_json::sax_parse(text, &builder, Sax_json::input_format_t::json, true, false);
   if (!ok || !builder.error.empty()) {
     std::string why = builder.error.empty() ? "not valid JSON" : builder.error;
     throw Input_error(builder.place, why, builder.exit_code);

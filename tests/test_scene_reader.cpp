@@ -126,6 +126,35 @@ BOOST_AUTO_TEST_CASE(malformed_json_is_refused_with_a_position)
   expect_error(R"({"time": NaN})", "line 1, column 11", "syntax error");
 }
 
+// One document rule for the scene reader and both verifiers (docs/scene-format.md,
+// "The file"): a leading byte-order mark is ignored; nothing but whitespace
+// follows the document, and a NUL byte, which nlohmann's lexer would take
+// for the end of the input, is refused where it stands.
+BOOST_AUTO_TEST_CASE(one_document_rule_bom_nul_and_trailing_bytes)
+{
+  Scene plain = read_scene(read_json_text(two_blocks));
+  Scene bom = read_scene(read_json_text("\xEF\xBB\xBF" + two_blocks));
+  BOOST_TEST(bom.objects.size() == plain.objects.size());
+  expect_error(two_blocks + std::string("\0garbage", 8), "line 3, column 115", "NUL byte");
+  expect_error(std::string("\0", 1) + two_blocks, "line 1, column 1", "NUL byte");
+  expect_error(two_blocks + " x", "line 3, column 117", "syntax error");
+  BOOST_TEST(read_scene(read_json_text(two_blocks + " \r\n\t")).objects.size() == 2u);
+}
+
+// spec, Numbers: a number is read from its text whether written as a JSON
+// number or as a string, under the same limits; 1e1000 is within them (the
+// exponent limit is 1000), so both forms give the same exact value.
+BOOST_AUTO_TEST_CASE(a_json_number_and_its_string_are_one_rule)
+{
+  for (const char* form : {R"(1e1000)", R"("1e1000")"}) {
+    Scene s = read_scene(read_json_text(edited(R"("max":[4,1,1])", std::string(R"("max":[)") + form + ",1,1]")));
+    BOOST_TEST(s.objects[1].shape.numbers[3] == parse_number_text("1e1000", false).value, form);
+  }
+  for (const char* form : {R"(1e1001)", R"("1e1001")", R"(-2e4933)", R"("-2e4933")"})
+    expect_error(edited(R"("max":[4,1,1])", std::string(R"("max":[)") + form + ",1,1]"), "objects[1].shape.block.max[0]",
+                 "exponent", 3);
+}
+
 BOOST_AUTO_TEST_CASE(absurd_input_hits_a_named_limit)
 {
   std::string deep = R"({"format":"clash4d-scene/1","time":[0,1],"objects":[{"name":"a","shape":)";
