@@ -11,6 +11,7 @@
 #include "float/Double_instantiation.h"
 #include "scene/Files.h"
 #include "scene/Input_error.h"
+#include "scene/Printable.h"
 #include "scene/Grid_scene.h"
 #include "search/Work_budget.h"
 #include "scene/Scene_reader.h"
@@ -41,11 +42,15 @@ const char* const about =
     "\nExit status: 0 no collision / valid, 1 collision, 2 invalid input or usage,\n"
     "3 a resource limit was reached, 4 internal error.";
 
+// The folders besides each scene's own that its mesh files may be in
+// (--allow-mesh-path, docs/meshes.md), as the command line gave them.
+std::vector<std::string> allowed_mesh_folders;
+
 // Reads a scene, or prints why not; returns the exit status (0 when read).
 int load(const std::string& file, Scene& scene, std::ostream& err)
 {
   try {
-    scene = read_scene_file(file);
+    scene = read_scene_file(file, allowed_mesh_folders);
     return 0;
   } catch (const Input_error& e) {
     err << e.format(file) << "\n";
@@ -107,7 +112,7 @@ void print_extrusion_text(const json& report, std::ostream& out)
     out << "sub-span " << span["t"][0].get<std::string>() << " <= t <= " << span["t"][1].get<std::string>() << "\n";
     for (const auto& o : span["objects"]) {
       const auto &v = o["velocity"], &c = o["offset"];
-      out << "  object " << o["name"].get<std::string>() << ": D(t) = (" << v[0].get<std::string>() << ", "
+      out << "  object " << printable(o["name"].get<std::string>()) << ": D(t) = (" << v[0].get<std::string>() << ", "
           << v[1].get<std::string>() << ", " << v[2].get<std::string>() << ") t + (" << c[0].get<std::string>()
           << ", " << c[1].get<std::string>() << ", " << c[2].get<std::string>() << ")\n";
       tree(o["tree"], 2);
@@ -176,7 +181,7 @@ void print_check(const Check_answer& a, const Check_options& o, bool stats, doub
   if (!a.collide) out << "no collision (" << how << (closed ? ": the closed objects do not meet" : "") << ")\n";
   for (const auto& p : a.pairs) {
     if (!o.all_pairs && &p != main) continue;
-    out << (closed ? "contact or collision: " : "collision: ") << p.a << " and " << p.b << " (" << how << ")\n";
+    out << (closed ? "contact or collision: " : "collision: ") << printable(p.a) << " and " << printable(p.b) << " (" << how << ")\n";
     out << (closed ? "  common point: " : "  witness: ") << point_text(p.witness)
         << (p.witness_verified ? "" : "  [NOT verified: fails the check against the scene]") << "\n";
     if (closed) {
@@ -188,7 +193,7 @@ void print_check(const Check_answer& a, const Check_options& o, bool stats, doub
           << ", y = " << p.contact[1] << ", z = " << p.contact[2]
           << (p.at_start ? "  (already in contact at the start of the span)" : "") << "\n";
   }
-  if (o.earliest && main && o.all_pairs) out << "earliest pair: " << main->a << " and " << main->b << "\n";
+  if (o.earliest && main && o.all_pairs) out << "earliest pair: " << printable(main->a) << " and " << printable(main->b) << "\n";
   if (!certificate.empty()) out << "certificate: " << certificate << " (check it: clash4d verify SCENE " << certificate << ")\n";
   if (stats) {
     out << "stats:\n";
@@ -207,7 +212,7 @@ void print_skeleton(const Skeleton_answer& a, bool as_json, std::ostream& out)
   }
   if (a.pairs.empty()) out << "no collision (" << a.number << "): the collision region is empty\n";
   for (const auto& p : a.pairs) {
-    out << "collision region of " << p.a << " and " << p.b << " (" << a.number << "): " << p.edges.size() << " edges\n";
+    out << "collision region of " << printable(p.a) << " and " << printable(p.b) << " (" << a.number << "): " << p.edges.size() << " edges\n";
     for (const auto& e : p.edges)
       out << "  (" << e[0][0] << ", " << e[0][1] << ", " << e[0][2] << ", " << e[0][3] << ") -- (" << e[1][0] << ", "
           << e[1][1] << ", " << e[1][2] << ", " << e[1][3] << ")\n";
@@ -654,6 +659,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
 {
   CLI::App app(about, "clash4d");
   app.require_subcommand(1);
+  allowed_mesh_folders.clear();   // run() may be called again in one process (tests)
   app.failure_message(CLI::FailureMessage::help);
   // In the order --help lists them; each says -1 when it was not the one given.
   std::vector<Command> commands{add_validate(app, out, err), add_extrude(app, out, err), add_check(app, out, err),
@@ -668,6 +674,12 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
                      "stop with exit 3 when the run takes longer than S seconds, printing no answer (fuzz: saved "
                      "up to its last finished batch, resumable; default: unlimited)")
         ->check(CLI::PositiveNumber);
+  for (const char* name : {"validate", "extrude", "check", "skeleton"})
+    app.get_subcommand(name)
+        ->add_option("--allow-mesh-path", allowed_mesh_folders,
+                     "let the scene's mesh files be under DIR too (repeatable; by default a mesh file must be under "
+                     "the scene's own folder, docs/meshes.md)")
+        ->type_name("DIR")->allow_extra_args(false)->check(CLI::ExistingDirectory);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

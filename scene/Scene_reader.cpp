@@ -40,11 +40,43 @@ using Kind = Json_value::Kind;
 using namespace json_field;
 
 // What one read of a scene shares: the directory mesh paths are relative to,
-// and each mesh file's solid, made once however often the file is used.
+// the folders a mesh file may be in (that directory and the user's
+// --allow-mesh-path folders, canonical), and each mesh file's solid, made
+// once however often the file is used.
 struct Reader_context {
   std::filesystem::path base;
+  std::vector<std::filesystem::path> allowed;
   std::map<std::string, Solid> meshes;   // by canonical path
 };
+
+// The path with its links resolved as far as it exists, absolute.
+std::filesystem::path resolved(const std::filesystem::path& p)
+{
+  std::error_code ec;
+  std::filesystem::path r = std::filesystem::weakly_canonical(std::filesystem::absolute(p, ec), ec);
+  return ec ? std::filesystem::absolute(p, ec).lexically_normal() : r;
+}
+
+bool is_under(const std::filesystem::path& file, const std::filesystem::path& folder)
+{
+  auto f = file.begin();
+  for (auto d = folder.begin(); d != folder.end(); ++d, ++f)
+    if (!d->empty() && (f == file.end() || *f != *d)) return false;
+  return true;
+}
+
+// docs/meshes.md, "Where a mesh file may be": a scene reaches only files
+// under its own folder, links resolved (an absolute path, a "../" or a link
+// out of the folder is refused), unless the user allowed another folder.
+void check_mesh_place(const std::filesystem::path& file, const std::string& name, const std::string& path,
+                      const Reader_context& ctx)
+{
+  for (const auto& folder : ctx.allowed)
+    if (is_under(file, folder)) return;
+  throw Input_error(path, "the mesh file \"" + name + "\" is outside the scene's folder " +
+                              ctx.allowed.front().string() +
+                              " (a scene reaches only files under its folder; --allow-mesh-path DIR allows another)");
+}
 
 Solid read_solid(const Json_value& v, const std::string& path, Reader_context& ctx);
 
@@ -150,9 +182,9 @@ Solid read_mesh_body(const Json_value& v, const std::string& path, Reader_contex
   if (v.text.empty()) throw Input_error(path, "the mesh file name must not be empty");
   namespace fs = std::filesystem;
   fs::path file = fs::path(v.text).is_absolute() ? fs::path(v.text) : ctx.base / v.text;
-  std::error_code ec;
-  fs::path canonical = fs::weakly_canonical(file, ec);
-  std::string key = ec ? file.lexically_normal().string() : canonical.string();
+  fs::path canonical = resolved(file);
+  check_mesh_place(canonical, v.text, path, ctx);
+  std::string key = canonical.string();
   auto found = ctx.meshes.find(key);
   if (found == ctx.meshes.end()) {
     try {
@@ -333,10 +365,13 @@ static void read_ignore(const Json_value& ignore, Scene& scene)
   }
 }
 
-Scene read_scene(const Json_value& root, const std::string& base_directory)
+Scene read_scene(const Json_value& root, const std::string& base_directory,
+                 const std::vector<std::string>& allowed_mesh_folders)
 {
   Reader_context ctx;
   ctx.base = base_directory.empty() ? std::filesystem::path(".") : std::filesystem::path(base_directory);
+  ctx.allowed.push_back(resolved(ctx.base));
+  for (const std::string& folder : allowed_mesh_folders) ctx.allowed.push_back(resolved(folder));
   expect_kind(root, Kind::Object, "");
   // meta: provenance written by tools (spec), any JSON value, never read here.
   expect_keys(root, {"format", "name", "time", "objects", "ignore", "meta"}, "");
@@ -385,10 +420,10 @@ void approximate_numbers(Motion& m)
     for (const Rational& x : v) m.velocities_approximated.emplace_back(x);
 }
 
-Scene read_scene_file(const std::string& path)
+Scene read_scene_file(const std::string& path, const std::vector<std::string>& allowed_mesh_folders)
 {
   std::string base = std::filesystem::path(path).parent_path().string();
-  return read_scene(read_json_file(path), base);
+  return read_scene(read_json_file(path), base, allowed_mesh_folders);
 }
 
 } // namespace clash4d

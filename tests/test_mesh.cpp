@@ -12,6 +12,8 @@
 #include "support/Cli_run.h"
 
 #include <cstring>
+#include <filesystem>
+#include <unistd.h>
 #include <fstream>
 #include <limits>
 #include <set>
@@ -449,4 +451,51 @@ BOOST_AUTO_TEST_CASE(mesh_key_is_strict)
   BOOST_TEST(contains(r.first, "unknown key \"scale\""), r.first);
   r = refusal([] { read_scene(read_json_text(scene_text({{"sphere", 1}}, {{"mesh", "x.off"}}, "rest"))); });
   BOOST_TEST(contains(r.first, "hull, mesh, union"), r.first);
+}
+
+// Issue 59 item 13 (docs/meshes.md, "Where a mesh file may be"): a scene
+// reaches only mesh files under its own folder, links resolved, unless the
+// user allows another folder; a link to a system file is refused unread.
+BOOST_AUTO_TEST_CASE(a_scene_reaches_only_mesh_files_under_its_folder)
+{
+  namespace fs = std::filesystem;
+  fs::path root = fs::temp_directory_path() / ("clash4d_test_mesh_paths." + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root / "scene" / "parts");
+  fs::create_directories(root / "elsewhere");
+  fs::copy_file(meshes + "/cube.off", root / "scene" / "parts" / "cube.off");
+  fs::copy_file(meshes + "/cube.off", root / "elsewhere" / "cube.off");
+  fs::create_symlink("/etc/passwd", root / "scene" / "passwd.off");
+  fs::create_symlink(root / "elsewhere" / "cube.off", root / "scene" / "linked.off");
+  auto scene_with = [&](const std::string& mesh) {
+    std::string file = (root / "scene" / "s.json").string();
+    std::ofstream(file) << scene_text({{"mesh", mesh}}, {{"block", {{"min", {5, 5, 5}}, {"max", {6, 6, 6}}}}}, "rest");
+    return file;
+  };
+  const std::string elsewhere = (root / "elsewhere").string();
+  for (const std::string& inside : {"parts/cube.off", "./parts/../parts/cube.off"})
+    BOOST_TEST(run_clash4d({"check", scene_with(inside)}).status == 0, inside);
+  for (const std::string& outside : std::vector<std::string>{"../elsewhere/cube.off", elsewhere + "/cube.off", "linked.off", "passwd.off"}) {
+    Cli_run r = run_clash4d({"check", scene_with(outside)});
+    BOOST_TEST(r.status == 2, outside << ": " << r.err);
+    BOOST_TEST(contains(r.err, "objects[0].shape.mesh: the mesh file \"" + outside + "\" is outside the scene's folder"), r.err);
+    BOOST_TEST(!contains(r.err, "root:"), r.err);   // nothing of /etc/passwd is read
+  }
+  for (const std::string& allowed : std::vector<std::string>{"../elsewhere/cube.off", elsewhere + "/cube.off", "linked.off"}) {
+    Cli_run r = run_clash4d({"check", scene_with(allowed), "--allow-mesh-path", elsewhere});
+    BOOST_TEST(r.status == 0, allowed << ": " << r.err);
+  }
+  Cli_run r = run_clash4d({"check", scene_with("passwd.off"), "--allow-mesh-path", elsewhere});
+  BOOST_TEST(r.status == 2, r.err);
+  // The library's reader: relative to the directory it is given.
+  auto in_memory = [&](const std::string& mesh, const std::vector<std::string>& allowed) {
+    return refusal([&] {
+      read_scene(read_json_text(scene_text({{"mesh", mesh}}, {{"mesh", "parts/cube.off"}}, "rest")),
+                 (root / "scene").string(), allowed);
+    });
+  };
+  BOOST_TEST(in_memory("parts/cube.off", {}).second == 0);
+  BOOST_TEST(in_memory("../elsewhere/cube.off", {}).second == 2);
+  BOOST_TEST(in_memory("../elsewhere/cube.off", {elsewhere}).second == 0);
+  fs::remove_all(root);
 }
