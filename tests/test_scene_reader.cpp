@@ -144,6 +144,15 @@ BOOST_AUTO_TEST_CASE(one_document_rule_bom_nul_and_trailing_bytes)
 // spec, Numbers: a number is read from its text whether written as a JSON
 // number or as a string, under the same limits; 1e1000 is within them (the
 // exponent limit is 1000), so both forms give the same exact value.
+// Issue 59 item 14: a NUL or a line feed in a name is written as JSON writes
+// it; it neither cuts the message short nor breaks its one line.
+BOOST_AUTO_TEST_CASE(names_with_control_characters_are_printed_escaped)
+{
+  std::string text = edited(R"("name":"box")", R"("name":"r\u0000a\nm")");
+  text = text.replace(text.find(R"("name":"ram")"), 12, R"("name":"r\u0000a\nm")");
+  expect_error(text, "objects[1].name", R"(duplicate object name "r\u0000a\u000am")");
+}
+
 BOOST_AUTO_TEST_CASE(a_json_number_and_its_string_are_one_rule)
 {
   for (const char* form : {R"(1e1000)", R"("1e1000")"}) {
