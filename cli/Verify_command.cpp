@@ -17,14 +17,17 @@ using namespace verifier;
 static int read_certificate(const std::string& cert_file, double max_mb, Json& cert, std::ostream& err)
 {
   try {
-    cert = Json::parse(read_file_text(cert_file, static_cast<std::size_t>(max_mb * 1048576.0)));
+    cert = parse_certificate(read_file_text(cert_file, static_cast<std::size_t>(max_mb * 1048576.0)));
+  } catch (const Cert_failure& e) {   // section 1's reading rules, at their place
+    err << "clash4d verify: " << cert_file << ": " << e.where() << ": " << e.what() << "\n";
+    return e.exit_code();
   } catch (const Input_error& e) {
     err << "clash4d verify: " << cert_file << ": "
         << (e.exit_code() == CLASH4D_EXIT_LIMIT ? std::string(e.what()) + " (--certificate-max-mb)" : e.what()) << "\n";
     return e.exit_code() == CLASH4D_EXIT_LIMIT ? CLASH4D_EXIT_LIMIT : CLASH4D_VERIFY_UNREADABLE;
-  } catch (const std::exception& e) {   // bad JSON, a file cut short: the parser says where
-    err << "clash4d verify: " << cert_file << ": " << e.what() << "\n";
-    return CLASH4D_VERIFY_UNREADABLE;
+  } catch (const std::bad_alloc&) {
+    err << "clash4d verify: " << cert_file << ": out of memory reading the certificate\n";
+    return CLASH4D_VERIFY_LIMIT;
   }
   return 0;
 }

@@ -3,13 +3,17 @@
 // derived by hand in its comment; literals [a,b,c,e_t,e] read
 // a x + b y + c z + e_t t + e < 0.
 #define BOOST_TEST_MODULE verify
+#include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
 
+#include "cli/Verify_command.h"
 #include "support/Cli_run.h"
 #include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
 #include "verify/Certificate_checker.h"
 #include <fstream>
+#include <random>
+#include <sstream>
 
 using namespace clash4d;
 using namespace clash4d::verifier;
@@ -481,11 +485,111 @@ BOOST_AUTO_TEST_CASE(cli_exit_codes)
   std::string cut = file("cut.json", good.substr(0, good.size() / 2));
   r = run_clash4d({"verify", s, cut});
   BOOST_TEST(r.status == 2);
-  BOOST_TEST(r.err.find(cut + ": [json.exception.parse_error") != std::string::npos, r.err);
+  BOOST_TEST(r.err.find(cut + ": line 1, column ") != std::string::npos, r.err);
+  BOOST_TEST(r.err.find("[json.exception.parse_error") != std::string::npos, r.err);
   r = run_clash4d({"verify", s, "/tmp/clash4d_test_verify_no_such_file.json"});
   BOOST_TEST(r.status == 2);
   BOOST_TEST(r.err.find("cannot open") != std::string::npos, r.err);
   r = run_clash4d({"verify", file("bad_scene.json", "{\"format\":\"clash4d-scene/1\"}"), cut});
   BOOST_TEST(r.status == 2);
   BOOST_TEST(r.err.find("bad_scene.json") != std::string::npos, r.err);
+}
+
+// The shared conformance corpus (fixtures/certificates/conformance, issue 59
+// items 3, 15, 16): every case's exit code as manifest.json gives it from
+// docs/certificate-format.md; tests/python/test_verify_py.py runs it too.
+namespace {
+
+const std::string conformance = std::string(CLASH4D_FIXTURES) + "/certificates/conformance/";
+
+Json manifest()
+{
+  std::ifstream in(conformance + "manifest.json");
+  return Json::parse(in);
+}
+
+std::string slurp(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// A generated case: its base text with the edits, in order.
+std::string generated_text(const Json& c)
+{
+  std::string text = slurp(conformance + c["from"].get<std::string>());
+  for (const Json& e : c["edits"]) {
+    std::string by = e["prefix"].get<std::string>(), unit = e["unit"].get<std::string>();
+    for (int i = 0; i < e["count"].get<int>(); ++i) by += unit;
+    by += e["suffix"].get<std::string>();
+    std::size_t at = text.find(e["replace"].get<std::string>());
+    BOOST_REQUIRE(at != std::string::npos);
+    text.replace(at, e["replace"].get<std::string>().size(), by);
+  }
+  return text;
+}
+
+struct Conformance_case {
+  std::string name, certificate, why;
+  int exit;
+};
+std::ostream& operator<<(std::ostream& o, const Conformance_case& c) { return o << c.name; }
+
+std::vector<Conformance_case> conformance_cases()
+{
+  std::vector<Conformance_case> out;
+  Json m = manifest();
+  for (const Json& c : m["cases"])
+    out.push_back({c["certificate"], conformance + c["certificate"].get<std::string>(), c["why"], c["exit"]});
+  for (const Json& c : m["generated"]) {
+    std::string path = "/tmp/clash4d_test_verify_conformance_" + c["name"].get<std::string>() + ".json";
+    std::ofstream(path, std::ios::binary) << generated_text(c);
+    out.push_back({c["name"], path, c["why"], c["exit"]});
+  }
+  return out;
+}
+
+} // namespace
+
+BOOST_DATA_TEST_CASE(conformance_corpus, boost::unit_test::data::make(conformance_cases()), c)
+{
+  std::ostringstream out, err;
+  int status = run_verify(conformance + manifest()["scene"].get<std::string>(), c.certificate, 256, out, err);
+  BOOST_TEST(status == c.exit, c.name << " (" << c.why << "): " << err.str());
+  if (status != 0) BOOST_TEST(err.str().find(c.certificate) != std::string::npos, err.str());
+}
+
+// Issue 59 item 4: a 300-point hull on a cube's faces (gift wrapping, not
+// the O(n^4) triples) and a 9,999-segment motion (binary search per piece)
+// verify within the suite's ordinary time. Hull x - 1000 and the block's
+// 1500 - x, lambda 1 and 1: constants 500 >= 0.
+BOOST_AUTO_TEST_CASE(a_hull_of_300_points_and_a_long_motion)
+{
+  unsigned seed = 59;
+  BOOST_TEST_MESSAGE("seed " << seed);
+  std::mt19937 rnd(seed);
+  std::string pts = "[0,0,0],[0,0,1000],[0,1000,0],[0,1000,1000],[1000,0,0],[1000,0,1000],[1000,1000,0],[1000,1000,1000]";
+  for (int i = 8; i < 300; ++i) {
+    int c[3] = {int(rnd() % 1001), int(rnd() % 1001), int(rnd() % 1001)};
+    c[i % 3] = rnd() % 2 ? 1000 : 0;
+    pts += ",[" + std::to_string(c[0]) + "," + std::to_string(c[1]) + "," + std::to_string(c[2]) + "]";
+  }
+  std::string s = scene(R"({"name":"A","shape":{"hull":[)" + pts + "]}}," + block("B", "[1500,0,0]", "[1600,100,100]"));
+  std::string pairs = R"([{"objects":["A","B"],"collide":false,"apart":{"until":"10","pieces":[
+    {"t":["0","10"],"proof":{"conflicts":[{"literals":[["1","0","0","0","-1000"],["-1","0","0","0","1500"]],"lambda":["1","1"]}]}}]}}])";
+  expect_ok(verify(s, cert("regularised", false, false, false, pairs)), "verified: no collision in [0, 10] (regularised): 1 pair apart");
+
+  std::string motion, pieces;
+  for (int k = 1; k <= 9999; ++k) motion += "vel 0 0 0 until " + std::to_string(k) + "/1000 ";
+  std::string cuts_prev = "0";
+  for (int k = 1; k <= 10000; ++k) {
+    std::string cut = k == 10000 ? "10" : std::to_string(k) + "/1000";
+    pieces += std::string(k > 1 ? "," : "") + R"({"t":[")" + cuts_prev + R"(",")" + cut +
+              R"("],"proof":{"conflicts":[{"literals":[["1","0","0","0","-1"],["-1","0","0","0","2"]],"lambda":["1","1"]}]}})";
+    cuts_prev = cut;
+  }
+  std::string long_scene = scene(block("A", "[0,0,0]", "[1,1,1]") + "," + block("B", "[2,0,0]", "[3,1,1]", (motion + "vel 0 0 0").c_str()));
+  expect_ok(verify(long_scene, cert("regularised", false, false, false,
+                                    R"([{"objects":["A","B"],"collide":false,"apart":{"until":"10","pieces":[)" + pieces + "]}}]")),
+            "verified: no collision in [0, 10] (regularised): 1 pair apart");
 }

@@ -1,6 +1,7 @@
 #include "verify/Cert_reader.h"
 #include <algorithm>
 #include <cctype>
+#include <set>
 
 namespace clash4d::verifier {
 namespace {
@@ -30,7 +31,109 @@ mpq_class parse(const Json& j, const std::string& at, bool integer)
   return q;
 }
 
+std::string line_column(const std::string& text, std::size_t byte)
+{
+  std::size_t line = 1, col = 1;
+  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') line++, col = 1;
+    else ++col;
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(col);
+}
+
+// nlohmann's DOM builder, with the rules it does not have: a key twice, a
+// JSON number, nesting too deep. Each failure keeps its JSON path.
+class Cert_sax : public nlohmann::json_sax<Json> {
+public:
+  explicit Cert_sax(Json& result) : dom_(result, false) {}
+  int exit_code = CLASH4D_VERIFY_UNREADABLE;
+  std::string where, reason;
+
+  bool null() override { return value() && dom_.null(); }
+  bool boolean(bool b) override { return value() && dom_.boolean(b); }
+  bool number_integer(number_integer_t) override { return number(); }
+  bool number_unsigned(number_unsigned_t) override { return number(); }
+  bool number_float(number_float_t, const string_t&) override { return number(); }
+  bool string(string_t& s) override { return value() && dom_.string(s); }
+  bool binary(binary_t&) override { return fail(path(), "binary values are not JSON"); }
+  bool start_object(std::size_t n) override { return open(false) && dom_.start_object(n); }
+  bool key(string_t& k) override
+  {
+    Level& top = levels_.back();
+    top.key = k;
+    if (!top.keys.insert(k).second) return fail(path(), "the key '" + k + "' appears twice in one object");
+    return dom_.key(k);
+  }
+  bool end_object() override { return close() && dom_.end_object(); }
+  bool start_array(std::size_t n) override { return open(true) && dom_.start_array(n); }
+  bool end_array() override { return close() && dom_.end_array(); }
+  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& ex) override
+  {
+    std::string what = ex.what();   // a number beyond double's range is a number too
+    if (what.find("number overflow") != std::string::npos) return number();
+    return fail(line_column(*text_, position > 0 ? position - 1 : 0), what);
+  }
+  void set_text(const std::string* text) { text_ = text; }
+
+private:
+  struct Level {
+    bool array;
+    std::size_t index = 0;
+    std::string key;
+    std::set<std::string> keys;
+  };
+  nlohmann::detail::json_sax_dom_parser<Json> dom_;
+  std::vector<Level> levels_;
+  const std::string* text_ = nullptr;
+
+  std::string path() const
+  {
+    std::string at;
+    for (const Level& l : levels_) at = l.array ? index_at(at, l.index) : key_at(at, l.key);
+    if (at.size() > 200) at = at.substr(0, 100) + " ... " + at.substr(at.size() - 80);   // deep nesting: its ends
+    return at.empty() ? "(top level)" : at;
+  }
+  bool fail(const std::string& w, const std::string& r)
+  {
+    if (reason.empty()) where = w, reason = r;
+    return false;
+  }
+  bool value()
+  {
+    if (!levels_.empty() && levels_.back().array) ++levels_.back().index;
+    return true;
+  }
+  // An array level's index is the element being read (counted after it).
+  bool number() { return fail(path(), "expected a number as a string, not a JSON number (section 1)"); }
+  bool open(bool array)
+  {
+    if (levels_.size() >= CLASH4D_VERIFY_MAX_NESTING) {
+      exit_code = CLASH4D_VERIFY_LIMIT;
+      return fail(path(), "nesting deeper than the limit of " + std::to_string(CLASH4D_VERIFY_MAX_NESTING) + " levels");
+    }
+    levels_.push_back({array, 0, {}, {}});
+    return true;
+  }
+  bool close()
+  {
+    levels_.pop_back();
+    return value();
+  }
+};
+
 } // namespace
+
+Json parse_certificate(const std::string& text)
+{
+  std::size_t nul = text.find('\0');   // nlohmann would end the text there
+  if (nul != std::string::npos) unreadable(line_column(text, nul), "a NUL byte (section 1)");
+  Json result;
+  Cert_sax sax(result);
+  sax.set_text(&text);
+  if (!Json::sax_parse(text, &sax, nlohmann::json::input_format_t::json, true) || !sax.reason.empty())
+    throw Cert_failure(sax.exit_code, sax.where, sax.reason.empty() ? "not JSON" : sax.reason);
+  return result;
+}
 
 void reject(const std::string& where, const std::string& reason)
 {

@@ -15,6 +15,10 @@ using Json = nlohmann::json;
 
 constexpr int CLASH4D_VERIFY_REJECTED = 1;     // the certificate does not prove its claim
 constexpr int CLASH4D_VERIFY_UNREADABLE = 2;   // not a certificate of this format
+constexpr int CLASH4D_VERIFY_LIMIT = 3;        // beyond a limit of section 6
+constexpr int CLASH4D_VERIFY_INTERNAL = 4;     // the checker failed: nothing proved
+// Section 6: JSON nested deeper is refused (splits stop at 2,000 before).
+constexpr std::size_t CLASH4D_VERIFY_MAX_NESTING = 5000;
 
 // The first failure: its exit status, its JSON path, the reason.
 class Cert_failure : public std::runtime_error {
@@ -27,6 +31,13 @@ private:
   int exit_code_;
   std::string where_;
 };
+
+// The certificate's text as JSON by section 1's reading rules: UTF-8, one
+// leading byte-order mark skipped, nothing but JSON whitespace after the
+// value, no NUL byte, no key twice in an object, no JSON number anywhere
+// (numbers are strings), nesting at most CLASH4D_VERIFY_MAX_NESTING. Throws
+// Cert_failure (2, or 3 for the nesting) with the place.
+Json parse_certificate(const std::string& text);
 
 [[noreturn]] void reject(const std::string& where, const std::string& reason);
 

@@ -1,4 +1,5 @@
 #include "verify/Certificate_checker.h"
+#include <algorithm>
 #include <functional>
 
 namespace clash4d::verifier {
@@ -287,6 +288,10 @@ Leaf_conflict Certificate_checker::check_conflict(const Json& j, const std::stri
     c.lits.push_back(intern(as_rationals(l)));
     strict_part = strict_part || c.lits.back() == piece.strict_end;
   }
+  // Which literals are there is all the enumeration asks: each id once
+  // (a literal repeated N times must not cost N at every step).
+  std::sort(c.lits.begin(), c.lits.end());
+  c.lits.erase(std::unique(c.lits.begin(), c.lits.end()), c.lits.end());
   const char* var[4] = {"x", "y", "z", "t"};
   for (int k = 0; k < 4; ++k)
     if (sum[k] != 0) reject(at, std::string("the sum of lambda times the ") + var[k] + " coefficients is " + text(sum[k]) + ", not 0");
@@ -332,10 +337,10 @@ Verify_result verify_certificate(const Scene& scene, const Json& certificate)
     r.ok = true;
   } catch (const Cert_failure& e) {
     r.exit_code = e.exit_code(), r.where = e.where(), r.reason = e.what();
-  } catch (const std::bad_alloc&) {
-    r.exit_code = CLASH4D_VERIFY_REJECTED, r.reason = "out of memory";
-  } catch (const std::exception& e) {
-    r.exit_code = CLASH4D_VERIFY_REJECTED, r.reason = e.what();
+  } catch (const std::bad_alloc&) {   // section 6: a limit, nothing proved
+    r.exit_code = CLASH4D_VERIFY_LIMIT, r.reason = "out of memory";
+  } catch (const std::exception& e) {   // a flaw of the checker: nothing proved
+    r.exit_code = CLASH4D_VERIFY_INTERNAL, r.reason = std::string("internal error of the checker: ") + e.what();
   }
   return r;
 }

@@ -12,7 +12,8 @@
 namespace clash4d::verifier {
 
 // ok: claim is the line `verify` prints (section 5). Otherwise exit_code is 1
-// (rejected) or 2 (unreadable), where the JSON path of the failure.
+// (rejected), 2 (unreadable), 3 (out of memory) or 4 (a flaw of the checker),
+// where the JSON path of the failure.
 struct Verify_result {
   bool ok = false;
   int exit_code = 0;

@@ -36,19 +36,22 @@ Object_model::Object_model(const Scene_object& o) : name_(o.name), formula_(soli
 
 int Object_model::segment_at(const mpq_class& t) const
 {
-  return static_cast<int>(std::count_if(times_.begin(), times_.end(), [&](const mpq_class& s) { return s < t; }));
+  // times_ increase strictly (the scene reader's rule): binary searches, so
+  // a motion of many segments costs a logarithm per piece, not a scan.
+  return static_cast<int>(std::lower_bound(times_.begin(), times_.end(), t) - times_.begin());
 }
 
 bool Object_model::is_change(const mpq_class& t) const
 {
-  return std::find(times_.begin(), times_.end(), t) != times_.end();
+  return std::binary_search(times_.begin(), times_.end(), t);
 }
 
 bool Object_model::change_between(const mpq_class& a, const mpq_class& b) const
 {
   const mpq_class& lo = a < b ? a : b;
   const mpq_class& hi = a < b ? b : a;
-  return std::any_of(times_.begin(), times_.end(), [&](const mpq_class& s) { return lo < s && s < hi; });
+  auto first_above = std::upper_bound(times_.begin(), times_.end(), lo);
+  return first_above != times_.end() && *first_above < hi;
 }
 
 // A point p at time t is in the object when p - D(t) is in the shape, so

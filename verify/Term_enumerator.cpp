@@ -11,29 +11,48 @@ bool Term_enumerator::present(int lit, unsigned sides) const
 
 // Section 4: regularised conflicts range over the whole term, path and slab;
 // closed "of": "A" over TA and the slab only, "B" over TB and the slab.
-bool Term_enumerator::valid(const Leaf_conflict& c) const
+unsigned Term_enumerator::sides(const Leaf_conflict& c) const
 {
-  unsigned sides = 0xFu;
-  if (!regularised_ && c.of == Of_A) sides = 1u << Side_A | 1u << Side_slab;
-  if (!regularised_ && c.of == Of_B) sides = 1u << Side_B | 1u << Side_slab;
-  for (int l : c.lits)
-    if (!present(l, sides)) return false;
-  return true;
+  if (!regularised_ && c.of == Of_A) return 1u << Side_A | 1u << Side_slab;
+  if (!regularised_ && c.of == Of_B) return 1u << Side_B | 1u << Side_slab;
+  return 0xFu;
 }
 
-// Only conflicts using the literal just added can have become valid.
+void Term_enumerator::count_step(std::size_t n)
+{
+  steps_ += static_cast<long long>(n);
+  if (steps_ > CLASH4D_VERIFY_MAX_STEPS) throw Step_limit_reached();
+}
+
+// Only conflicts using the literal just added can have become valid; each
+// keeps the count of its literals still missing, so this is one look each.
 bool Term_enumerator::closes(int lit) const
 {
   if (regularised_ && present(lit ^ 1, 0xFu)) return true;   // a literal and its negation
   auto it = by_literal_.find(lit);
   if (it == by_literal_.end()) return false;
   for (int c : it->second)
-    if (valid((*conflicts_)[c])) return true;
+    if (missing_[c] == 0) return true;
   return false;
 }
 
+// The literal comes (by 1) or goes (by -1) on a side; every conflict using
+// it whose sides see it appear or vanish updates its missing count.
 void Term_enumerator::add(int lit, Side side, int by)
 {
+  auto it = by_literal_.find(lit);
+  if (it != by_literal_.end()) {
+    count_step(it->second.size());
+    for (int c : it->second) {
+      unsigned s = sides((*conflicts_)[c]);
+      if (!(s >> side & 1u)) continue;
+      bool before = present(lit, s);
+      count_[lit][side] += by;
+      if (before && !present(lit, s)) ++missing_[c];
+      if (!before && present(lit, s)) --missing_[c];
+      count_[lit][side] -= by;
+    }
+  }
   count_[lit][side] += by;
   if (by > 0) term_.emplace_back(lit, side);
   else term_.pop_back();
@@ -48,8 +67,12 @@ bool Term_enumerator::all_closed(bool regularised, const Lit_tree& fa, const Lit
   conflicts_ = &conflicts;
   if (count_.size() < ids) count_.resize(ids, {0, 0, 0, 0});
   by_literal_.clear();
-  for (std::size_t c = 0; c < conflicts.size(); ++c)
+  missing_.assign(conflicts.size(), 0);
+  for (std::size_t c = 0; c < conflicts.size(); ++c) {
+    count_step(conflicts[c].lits.size());
+    missing_[c] = conflicts[c].lits.size();
     for (int l : conflicts[c].lits) by_literal_[l].push_back(static_cast<int>(c));
+  }
   // The path and the slab are in every term; they may close off the leaf alone.
   bool closed = false;
   for (int l : path) add(l, Side_path, 1), closed = closed || closes(l);
@@ -74,7 +97,7 @@ bool Term_enumerator::walk(Side side)
     todo_.pop_back();
     return ok;
   }
-  if (++steps_ > CLASH4D_VERIFY_MAX_STEPS) throw Step_limit_reached();
+  count_step(1);
   const Lit_tree* n = todo_.back();
   todo_.pop_back();
   bool ok = true;

@@ -15,6 +15,8 @@ namespace clash4d::verifier {
 // Section 4: the steps of term enumeration one certificate may take.
 constexpr long long CLASH4D_VERIFY_MAX_STEPS = 10000000;
 
+// A step is one node of the walk or one conflict's count updated when a
+// literal comes or goes: the work grows with neither more than the steps.
 struct Step_limit_reached : std::runtime_error {
   Step_limit_reached() : std::runtime_error("term enumeration passed 10,000,000 steps") {}
 };
@@ -30,6 +32,7 @@ struct Lit_tree {
 enum Side { Side_A, Side_B, Side_path, Side_slab };
 enum Of { Of_both, Of_A, Of_B };
 
+// lits: the conflict's literal ids, each once (sorted, duplicates dropped).
 struct Leaf_conflict {
   std::vector<int> lits;
   Of of = Of_both;
@@ -49,14 +52,16 @@ private:
   bool walk(Side side);
   bool closes(int lit) const;
   bool present(int lit, unsigned sides) const;
-  bool valid(const Leaf_conflict& c) const;
+  unsigned sides(const Leaf_conflict& c) const;
   void add(int lit, Side side, int by);
+  void count_step(std::size_t n);
 
   long long& steps_;
   bool regularised_ = true;
   const Lit_tree* fb_ = nullptr;
   const std::vector<Leaf_conflict>* conflicts_ = nullptr;
   std::unordered_map<int, std::vector<int>> by_literal_;   // literal -> conflicts using it
+  std::vector<std::size_t> missing_;                       // per conflict: its literals not yet present
   std::vector<std::array<int, 4>> count_;                  // per literal and side, zero between leaves
   std::vector<const Lit_tree*> todo_;
   std::vector<std::pair<int, Side>> term_, uncovered_;

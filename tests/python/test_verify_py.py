@@ -162,8 +162,11 @@ class Verify(unittest.TestCase):
         self.assertIn("claim.collide", err)
 
     def test_unknown_key_fails_and_wrong_type_is_unreadable(self):
-        rc, _, err = self.tampered(self.APART, [], lambda d: d.update(extra=1))
+        rc, _, err = self.tampered(self.APART, [], lambda d: d.update(extra="1"))
         self.assertEqual(rc, 1, err)
+        # A JSON number anywhere is unreadable (section 1), an unknown key's value too.
+        rc, _, err = self.tampered(self.APART, [], lambda d: d.update(extra=1))
+        self.assertEqual(rc, 2, err)
         rc, _, err = self.tampered(self.APART, [], lambda d: d.update(time=[0, 10]))
         self.assertEqual(rc, 2, err)
         self.assertIn("time[0]", err)
@@ -185,6 +188,136 @@ class Verify(unittest.TestCase):
         rc, out, err = run_cli(scene, cert)
         self.assertEqual(rc, 2, err)
         self.assertIn("mesh", err)
+
+
+CONFORMANCE = SOURCE / "fixtures" / "certificates" / "conformance"
+
+
+def generated_text(case):
+    """A generated case of the corpus: its base text with the edits, in order (manifest.json)."""
+    text = (CONFORMANCE / case["from"]).read_text(encoding="utf-8")
+    for e in case["edits"]:
+        text = text.replace(e["replace"], e["prefix"] + e["unit"] * e["count"] + e["suffix"], 1)
+    return text
+
+
+class Conformance(unittest.TestCase):
+    """The shared corpus (docs/certificate-format.md): each case's exit code, as the C++
+    checker's test asserts it too (tests/test_verify.cpp)."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = pathlib.Path(self.tmp.name)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def expect(self, scene, cert, exit_code, why):
+        rc, out, err = run_inprocess(scene, cert)
+        self.assertEqual(rc, exit_code, f"{why}: {err}")
+        self.assertNotIn("Traceback", err)
+        if rc:
+            self.assertTrue(err.startswith("clash4d_verify.py: ") and str(cert) in err, err)
+        else:
+            self.assertTrue(out.startswith("verified: "), out)
+
+    def test_every_case_of_the_corpus(self):
+        manifest = json.loads((CONFORMANCE / "manifest.json").read_text())
+        scene = CONFORMANCE / manifest["scene"]
+        for case in manifest["cases"]:
+            with self.subTest(case=case["certificate"]):
+                self.expect(scene, CONFORMANCE / case["certificate"], case["exit"], case["why"])
+        for case in manifest["generated"]:
+            with self.subTest(case=case["name"]):
+                cert = self.dir / (case["name"] + ".json")
+                cert.write_text(generated_text(case), encoding="utf-8")
+                self.expect(scene, cert, case["exit"], case["why"])
+
+    def test_an_internal_failure_is_exit_4_without_a_traceback(self):
+        manifest = json.loads((CONFORMANCE / "manifest.json").read_text())
+        scene = CONFORMANCE / manifest["scene"]
+        broken = clash4d_verify.Checker.check
+        clash4d_verify.Checker.check = lambda self, doc: 1 / 0
+        try:
+            rc, out, err = run_inprocess(scene, CONFORMANCE / "valid.json")
+        finally:
+            clash4d_verify.Checker.check = broken
+        self.assertEqual(rc, 4, err)
+        self.assertIn("internal error of the checker: ZeroDivisionError", err)
+        self.assertNotIn("Traceback", err)
+
+
+def cube_hull_scene(n, seed):
+    """A hull of n points on the faces of [0,1000]^3 (its 8 corners among them) and a block
+    at x in [1500,1600]; the certificate: the hull's x - 1000 and the block's 1500 - x, 1 and 1."""
+    import random
+    rnd = random.Random(seed)
+    pts = [[x, y, z] for x in (0, 1000) for y in (0, 1000) for z in (0, 1000)]
+    while len(pts) < n:
+        c = [rnd.randint(0, 1000) for _ in range(3)]
+        c[len(pts) % 3] = rnd.choice((0, 1000))
+        pts.append(c)
+    scene = {"format": "clash4d-scene/1", "time": [0, 10], "objects": [
+        {"name": "A", "shape": {"hull": pts}},
+        {"name": "B", "shape": {"block": {"min": [1500, 0, 0], "max": [1600, 100, 100]}}}]}
+    leaf = {"conflicts": [{"literals": [["1", "0", "0", "0", "-1000"], ["-1", "0", "0", "0", "1500"]],
+                           "lambda": ["1", "1"]}]}
+    return scene, certificate([{"t": ["0", "10"], "proof": leaf}])
+
+
+def certificate(pieces):
+    return {"format": "clash4d-certificate/1", "semantics": "regularised", "time": ["0", "10"],
+            "claim": {"collide": False, "earliest": False, "all_pairs": False},
+            "pairs": [{"objects": ["A", "B"], "collide": False,
+                       "apart": {"until": "10", "pieces": pieces}}]}
+
+
+class Costs(unittest.TestCase):
+    """Issue 59 item 4: a 300-point hull and a 9,999-segment motion verify within the suite's
+    ordinary time (no timing assert: before, they took minutes)."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = pathlib.Path(self.tmp.name)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def run_pair(self, scene, cert):
+        (self.dir / "s.json").write_text(json.dumps(scene))
+        (self.dir / "c.json").write_text(json.dumps(cert))
+        return run_inprocess(self.dir / "s.json", self.dir / "c.json")
+
+    def test_a_hull_of_300_points_on_a_cube(self):
+        seed = 59
+        print(f"\nseed {seed}", file=sys.stderr)
+        rc, out, err = self.run_pair(*cube_hull_scene(300, seed))
+        self.assertEqual(rc, 0, err)
+        self.assertEqual(out, "verified: no collision in [0, 10] (regularised): 1 pair apart\n")
+
+    def test_the_hull_atoms_are_the_facet_planes(self):
+        from fractions import Fraction
+        pts = [tuple(map(Fraction, p)) for p in
+               [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), (1, 1, 1)]]
+        pts.append((Fraction(1, 10), Fraction(1, 10), Fraction(1, 10)))   # inside
+        pts.append((Fraction(1, 2), Fraction(1, 2), Fraction(0)))         # on a face
+        keys = {clash4d_verify.primitive(a) for a in clash4d_verify.hull_atoms(pts)}
+        # the bipyramid's six faces: three at the origin's coordinate planes, three through (1,1,1)
+        self.assertEqual(keys, {(-1, 0, 0, 0), (0, -1, 0, 0), (0, 0, -1, 0),
+                                (1, 1, -1, -1), (1, -1, 1, -1), (-1, 1, 1, -1)})
+
+    def test_a_motion_of_9999_segments(self):
+        n = 9999
+        motion = " ".join(f"vel 0 0 0 until {k}/1000" for k in range(1, n + 1)) + " vel 0 0 0"
+        scene = {"format": "clash4d-scene/1", "time": [0, 10], "objects": [
+            {"name": "A", "shape": {"block": {"min": [0, 0, 0], "max": [1, 1, 1]}}},
+            {"name": "B", "shape": {"block": {"min": [2, 0, 0], "max": [3, 1, 1]}}, "motion": motion}]}
+        leaf = {"conflicts": [{"literals": [["1", "0", "0", "0", "-1"], ["-1", "0", "0", "0", "2"]],
+                               "lambda": ["1", "1"]}]}
+        cuts = ["0"] + [f"{k}/1000" for k in range(1, n + 1)] + ["10"]
+        pieces = [{"t": [cuts[k], cuts[k + 1]], "proof": leaf} for k in range(n + 1)]
+        rc, out, err = self.run_pair(scene, certificate(pieces))
+        self.assertEqual(rc, 0, err)
 
 
 if __name__ == "__main__":

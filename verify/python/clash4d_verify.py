@@ -7,8 +7,10 @@ Written from docs/certificate-format.md ("the doc", section numbers below as
 "s2.1" and so on) and ../shared/spec/scene-format.md alone; it shares no code
 with clash4d (not even the scene reader). Exits as `clash4d verify`: 0 and the
 proved claim (s5), 1 and the first reason the certificate fails with its JSON
-path, 2 when the scene or the certificate cannot be read.
+path, 2 when the scene or the certificate cannot be read, 3 beyond a limit
+(nesting, memory), 4 on a flaw of this checker (never a traceback).
 """
+import bisect
 import itertools
 import json
 import math
@@ -22,10 +24,23 @@ STEP_LIMIT = 10_000_000      # s4: steps of term enumeration in one certificate
 MAX_SPLIT_DEPTH = 2000       # s4: splits nested deeper are refused
 SEMANTICS = ("regularised", "closed")
 MAX_EXPONENT = 1000          # the scene reader's limit on a decimal exponent
+MAX_NESTING = 5000           # s6: JSON nested deeper is refused (exit 3)
+
+# s1: integers of any length, as the C++ checker (GMP) reads them; Python
+# 3.11 refuses to convert more than 4,300 digits by default.
+if hasattr(sys, "set_int_max_str_digits"):
+    sys.set_int_max_str_digits(0)
 
 
 class Unreadable(Exception):
     """Exit 2: the scene or the certificate cannot be read (or interpreted)."""
+
+    def __init__(self, where, reason):
+        super().__init__(f"{where}: {reason}")
+
+
+class Limit(Exception):
+    """Exit 3: beyond a limit of s6."""
 
     def __init__(self, where, reason):
         super().__init__(f"{where}: {reason}")
@@ -38,22 +53,107 @@ class Failed(Exception):
         super().__init__(f"{path}: {reason}")
 
 
-def load_json(filename, **options):
+def line_column(data, i):
+    line, start = data.count(b"\n", 0, i) + 1, data.rfind(b"\n", 0, i) + 1
+    return f"line {line}, column {i - start + 1}"
+
+
+def read_text(filename):
+    """s1's text rules: UTF-8, one leading byte-order mark skipped, no NUL byte."""
     try:
-        with open(filename, encoding="utf-8") as f:
-            text = f.read()
-    except (OSError, UnicodeDecodeError) as e:
+        with open(filename, "rb") as f:
+            data = f.read()
+    except OSError as e:
         raise Unreadable(filename, f"cannot read: {e}")
+    nul = data.find(b"\0")
+    if nul >= 0:
+        raise Unreadable(f"{filename}: {line_column(data, nul)}", "a NUL byte (section 1)")
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as e:
+        raise Unreadable(f"{filename}: {line_column(data, e.start)}", "not UTF-8 text")
+    return text[1:] if text.startswith("\ufeff") else text
+
+
+def load_json(filename, **options):
+    text = read_text(filename)
     try:
         return json.loads(text, **options)
-    except (ValueError, RecursionError) as e:
-        raise Unreadable(filename, f"not JSON: {e}")
+    except RecursionError:
+        raise Limit(filename, f"nesting deeper than the limit of {MAX_NESTING} levels")
+    except ValueError as e:   # json's own errors (after the value: JSON whitespace only) and the hooks'
+        where = f"{filename}: line {e.lineno}, column {e.colno}" if hasattr(e, "lineno") else filename
+        raise Unreadable(where, f"not JSON: {getattr(e, 'msg', e)}")
+
+
+class JsonNumber:
+    """A JSON number token, kept as text: a certificate has none (s1)."""
+
+    def __init__(self, text):
+        self.text = text
+
+
+class Duplicate(dict):
+    """An object in which a key appears twice (s1: unreadable)."""
+
+    key = None
+
+
+def certificate_object(pairs):
+    d = dict(pairs)
+    if len(d) != len(pairs):
+        seen = set()
+        d = Duplicate(pairs)
+        d.key = next(k for k, _ in pairs if k in seen or seen.add(k))
+    return d
+
+
+SURROGATE = re.compile("[\ud800-\udfff]")    # an escaped lone surrogate: not Unicode text
+
+
+def load_certificate(filename):
+    """The certificate's JSON by s1's rules, each failure at its JSON path."""
+    doc = load_json(filename, parse_int=JsonNumber, parse_float=JsonNumber,
+                    parse_constant=JsonNumber, object_pairs_hook=certificate_object)
+    keys = [None]                  # per open level: the key or index being read
+    stack = [iter(((None, doc),))]
+
+    def fail(kind, reason, key=None):
+        parts = [k for k in keys[1:]] + ([key] if key is not None else [])
+        path = "".join(f"[{k}]" if isinstance(k, int) else f".{k}" for k in parts).lstrip(".")
+        if len(path) > 200:                        # deep nesting: its ends say where
+            path = path[:100] + " ... " + path[-80:]
+        raise kind(f"{filename}: {path or '(top level)'}", reason)
+    while stack:                   # in document order, iteratively; paths built only to report
+        for key, v in stack[-1]:
+            keys[-1] = key
+            t = type(v)
+            if t is str:
+                if SURROGATE.search(v):
+                    fail(Unreadable, "a lone surrogate escape is not Unicode text")
+            elif t is JsonNumber:
+                fail(Unreadable, "expected a number as a string, not a JSON number (section 1)")
+            elif t is dict or t is Duplicate or t is list:
+                if len(stack) > MAX_NESTING:
+                    fail(Limit, f"nesting deeper than the limit of {MAX_NESTING} levels")
+                if t is Duplicate:
+                    fail(Unreadable, f"the key '{v.key}' appears twice in one object", v.key)
+                if t is not list and any(SURROGATE.search(k) for k in v):
+                    fail(Unreadable, "a lone surrogate escape is not Unicode text")
+                stack.append(iter(v.items() if t is not list else enumerate(v)))
+                keys.append(None)
+                break
+        else:
+            stack.pop()
+            keys.pop()
+    return doc
 
 
 # ---------------------------------------------------------------- numbers
 
-SCENE_NUMBER = re.compile(r"[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d+)?|[-+]?\d+/\d+")
-CERT_NUMBER = re.compile(r"-?\d+(/\d+)?")         # s1: "-12" or "p/q"
+# Digits are ASCII 0-9 only (s1): \d would take any Unicode digit.
+SCENE_NUMBER = re.compile(r"[-+]?([0-9]+(\.[0-9]*)?|\.[0-9]+)([eE][-+]?[0-9]+)?|[-+]?[0-9]+/[0-9]+")
+CERT_NUMBER = re.compile(r"-?[0-9]+(/[0-9]+)?")         # s1: "-12" or "p/q"
 
 
 def scene_number_from_text(text):
@@ -70,6 +170,9 @@ def scene_number_from_text(text):
 
 def primitive(v):
     """The coprime integer form k v (k > 0) of a rational vector (s2.2)."""
+    if all(type(x) is int for x in v):            # the common case: no Fraction at all
+        g = math.gcd(*v)
+        return tuple(x // g for x in v) if g else None
     den = 1
     for x in v:
         den = den * Fraction(x).denominator // math.gcd(den, Fraction(x).denominator)
@@ -126,26 +229,107 @@ def cross(u, v):
     return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
 
 
+def dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def sub(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+class Flat(ValueError):
+    """The hull's points lie in one plane."""
+
+
+def supporting(P, n, p):
+    """The plane through p with normal n, coprime, with every point on its <= 0 side; and its points."""
+    e = -dot(n, p)
+    side, on = 0, []
+    for i, s in enumerate(P):
+        v = dot(n, s) + e
+        if v == 0:
+            on.append(i)
+        elif side == 0:
+            side = 1 if v > 0 else -1
+        elif (v > 0) != (side > 0):
+            raise AssertionError("hull wrapping: a plane that does not support the points")
+    g = math.gcd(math.gcd(n[0], n[1]), math.gcd(n[2], e)) * (-1 if side > 0 else 1)
+    return (n[0] // g, n[1] // g, n[2] // g, e // g), on
+
+
+def pivot(P, h, p, e, w):
+    """Gift wrapping about the line through P[p] along e, in the supporting plane h (the
+    plane's other points on the side of w): the plane through the line and the point of
+    largest angle from w towards the inside supports every point."""
+    n = h[:3]
+    best, ba, bb = None, 0, 0
+    for i, s in enumerate(P):
+        d = sub(s, P[p])
+        a, b = dot(w, d), -dot(n, d)
+        if b != 0 and (best is None or ba * b - bb * a > 0):
+            best, ba, bb = i, a, b
+    if best is None:
+        raise Flat("the points lie in one plane")
+    return supporting(P, cross(e, sub(P[best], P[p])), P[p])
+
+
+def facet_polygon(P, h, on):
+    """The corners of a facet in order (monotone chain, dropping the normal's first non-zero axis)."""
+    drop = 0 if h[0] else 1 if h[1] else 2
+    u, v = (1, 2) if drop == 0 else (0, 2) if drop == 1 else (0, 1)
+    pts = sorted(on, key=lambda i: (P[i][u], P[i][v]))
+
+    def turn(o, a, b):
+        return ((P[a][u] - P[o][u]) * (P[b][v] - P[o][v]) - (P[a][v] - P[o][v]) * (P[b][u] - P[o][u]))
+    chain = []
+    for i in pts:                                              # lower chain
+        while len(chain) >= 2 and turn(chain[-2], chain[-1], i) <= 0:
+            chain.pop()
+        chain.append(i)
+    lower = len(chain) + 1
+    for i in reversed(pts[:-1]):                               # upper chain
+        while len(chain) >= lower and turn(chain[-2], chain[-1], i) <= 0:
+            chain.pop()
+        chain.append(i)
+    return chain[:-1]
+
+
+def first_facet(P):
+    """The plane x = min x supports the lowest point p; wrap about the z line through p, and,
+    if the plane found holds only points on one line, about that line (as the C++ checker)."""
+    p = min(range(len(P)), key=lambda i: P[i])
+    h, on = pivot(P, supporting(P, (-1, 0, 0), P[p])[0], p, (0, 0, 1), (0, 1, 0))
+    q = next((i for i in on if P[i] != P[p]), None)
+    e = sub(P[q], P[p])
+    if any(cross(e, sub(P[i], P[p])) != (0, 0, 0) for i in on):
+        return h, on
+    return pivot(P, h, p, e, cross(h[:3], e))
+
+
 def hull_atoms(points):
-    """Every plane through three points with all points on its <= 0 side (s2.1)."""
-    atoms, seen = [], set()
-    for p, q, r in itertools.combinations(points, 3):
-        n = cross([q[i] - p[i] for i in range(3)], [r[i] - p[i] for i in range(3)])
-        if n == (0, 0, 0):
-            continue
-        d = -(n[0] * p[0] + n[1] * p[1] + n[2] * p[2])
-        vals = [n[0] * s[0] + n[1] * s[1] + n[2] * s[2] + d for s in points]
-        if all(v <= 0 for v in vals):
-            atom = (*n, d)
-        elif all(v >= 0 for v in vals):
-            atom = (-n[0], -n[1], -n[2], -d)
-        else:
-            continue
-        key = primitive(atom)
-        if key not in seen:
-            seen.add(key)
-            atoms.append(atom)
-    return atoms
+    """Every plane through three points with all points on its <= 0 side (s2.1), each once, in
+    increasing coprime form: the hull's facets, by gift wrapping from facet to facet across each
+    facet polygon's edges, O(n) per edge (at most O(n^2) in all), on the points scaled to integers."""
+    L = math.lcm(*(x.denominator for p in points for x in p))
+    P = [tuple(int(x * L) for x in p) for p in points]
+    h, on = first_facet(P)
+    seen, todo = {h}, [(h, on)]
+    while todo:
+        h, on = todo.pop()
+        poly = facet_polygon(P, h, on)
+        if len(poly) < 3:
+            raise AssertionError("hull wrapping: a facet with fewer than three corners")
+        for i, p in enumerate(poly):
+            q, r = poly[(i + 1) % len(poly)], poly[(i + 2) % len(poly)]
+            e = sub(P[q], P[p])
+            w = cross(h[:3], e)
+            if dot(w, sub(P[r], P[p])) < 0:                     # towards the facet
+                w = (-w[0], -w[1], -w[2])
+            g, g_on = pivot(P, h, p, e, w)
+            if g not in seen:
+                seen.add(g)
+                todo.append((g, g_on))
+    return [(a, b, c, Fraction(e, L)) for a, b, c, e in sorted(seen)]
 
 
 def rotation(q):
@@ -175,8 +359,19 @@ class Motion:
         # A velocity change is every time the motion lists (s3), even between equal velocities.
         self.changes = list(times)
 
+    # The times increase strictly: binary searches, so a motion of many
+    # segments costs a logarithm per piece, not a scan.
     def segment(self, t):
-        return sum(1 for T in self.times if T < t)
+        return bisect.bisect_left(self.times, t)
+
+    def is_change(self, t):
+        i = bisect.bisect_left(self.times, t)
+        return i < len(self.times) and self.times[i] == t
+
+    def change_between(self, lo, hi):
+        """The first velocity change strictly between lo < hi, or None."""
+        i = bisect.bisect_right(self.times, lo)
+        return self.times[i] if i < len(self.times) and self.times[i] < hi else None
 
 
 class Object:
@@ -362,7 +557,10 @@ class SceneReader:
                 atoms.append(self.halfspace((dy, -dx, 0, -dy * xi + dx * yi), f"{p}.base[{i}]"))
             return conj(atoms + [(0, 0, 1, -z1), (0, 0, -1, z0)])
         if kind == "hull":
-            atoms = hull_atoms(self.rows(arg, p, 3, 4))
+            try:
+                atoms = hull_atoms(self.rows(arg, p, 3, 4))
+            except Flat:
+                atoms = []
             if len(atoms) < 4:
                 self.bad(p, "the points have no hull with an interior")
             return conj(atoms)
@@ -450,9 +648,12 @@ class Checker:
     def num(self, v, path):
         if not isinstance(v, str) or not CERT_NUMBER.fullmatch(v):
             self.bad(path, "expected a number as a string, \"-12\" or \"p/q\"")
-        if "/" in v and int(v.split("/")[1]) == 0:
+        if "/" not in v:
+            return int(v)                 # an integer stays an int: cheaper arithmetic
+        p, q = v.split("/")
+        if int(q) == 0:
             self.bad(path, "zero denominator")
-        return Fraction(v)
+        return Fraction(int(p), int(q))
 
     def point(self, v, path):
         return tuple(self.num(x, f"{path}[{i}]") for i, x in enumerate(self.array(v, path, 4)))
@@ -618,7 +819,7 @@ class Checker:
         if not tL < w[3] < tH:
             raise Failed(path + "[3]", f"t = {w[3]} is not strictly inside ({tL}, {tH})")
         for O in (A, B):
-            if w[3] in O.motion.changes:
+            if O.motion.is_change(w[3]):
                 raise Failed(path + "[3]", f"t = {w[3]} is a velocity change of {O.name}")
             if not strictly_true(O.formula_at(w[3]), w):
                 raise Failed(path, f"{fmt_point(w)} is not inside {O.name} with strict signs")
@@ -627,9 +828,9 @@ class Checker:
         """w is a generic witness of c for objs (s3): c is in the closure of their interior."""
         lo, hi = min(c[3], w[3]), max(c[3], w[3])
         for O in objs:
-            for T in O.motion.changes:
-                if lo < T < hi:
-                    raise Failed(path + "[3]", f"a velocity change of {O.name} at t = {T} lies between "
+            T = O.motion.change_between(lo, hi)
+            if T is not None:
+                raise Failed(path + "[3]", f"a velocity change of {O.name} at t = {T} lies between "
                                        f"{c[3]} and {w[3]}")
         for O in objs:
             f = O.formula_at((lo + hi) / 2)
@@ -660,9 +861,9 @@ class Checker:
             if not lo < hi:
                 raise Failed(pp + ".t[1]", f"lo = {lo} is not below hi = {hi}")
             for O in (A, B):
-                for T in O.motion.changes:
-                    if lo < T < hi:
-                        raise Failed(pp + ".t", f"a velocity change of {O.name} at t = {T} lies inside")
+                T = O.motion.change_between(lo, hi)
+                if T is not None:
+                    raise Failed(pp + ".t", f"a velocity change of {O.name} at t = {T} lies inside")
             mid = (lo + hi) / 2
             slab_lo, slab_hi = primitive((0, 0, 0, -1, lo)), primitive((0, 0, 0, 1, -hi))
             strict_hi = slab_hi if self.closed and open_end and hi == until else None
@@ -680,7 +881,7 @@ class Checker:
             v, path, spl = stack.pop()
             if not isinstance(v, dict):
                 self.bad(path, "expected an object")
-            if "conflicts" in v:
+            if "split" not in v:                  # s3: a NODE with a split is a split node
                 self.keys(v, path, {"conflicts"})
                 self.leaf(v["conflicts"], path, fa, fb, slab, spl, strict_hi)
                 continue
@@ -718,7 +919,14 @@ class Checker:
                 lams.append(self.num(lam, f"{cp}.lambda[{i}]"))
                 if not lams[-1] > 0:
                     raise Failed(f"{cp}.lambda[{i}]", f"{lams[-1]} is not positive")
-            total = [sum(lam * lit[m] for lam, lit in zip(lams, lits)) for m in range(5)]
+            # Over one common denominator, so the sums are of integers (linear in the conflict).
+            den = 1
+            for lam in lams:
+                if isinstance(lam, Fraction) and den % lam.denominator:
+                    den = den * lam.denominator // math.gcd(den, lam.denominator)
+            scaled = [lam * den if isinstance(lam, int) else lam.numerator * (den // lam.denominator)
+                      for lam in lams]
+            total = [Fraction(sum(k * lit[m] for k, lit in zip(scaled, lits)), den) for m in range(5)]
             if any(total[:4]):
                 raise Failed(cp, "sum lambda_i (a_i, b_i, c_i, e_t,i) = "
                              f"({', '.join(map(str, total[:4]))}), not zero")
@@ -733,6 +941,13 @@ class Checker:
             conflicts.append((of, frozenset(keys)))
         self.terms(path, fa, fb, slab, spl, conflicts)
 
+    def step(self, path, n):
+        """s4: a step is one node of the walk or one conflict's count updated."""
+        self.steps += n
+        if self.steps > STEP_LIMIT:
+            raise Failed(path, f"more than {STEP_LIMIT:,} steps of term enumeration: "
+                               "the certificate is too costly to check")
+
     def terms(self, path, fa, fb, slab, spl, conflicts):
         """Enumerate the terms (s4), closing off partial terms as soon as they are.
 
@@ -742,57 +957,73 @@ class Checker:
         conflicts "of" A close pool A, "of" B pool B, "both" pool U.
         """
         closed = self.closed
-        base = [primitive(s) for s in spl] + slab
-        U = {}
-        own = ({}, {}) if closed else (U, U)
-        for k in base:
-            U[k] = U.get(k, 0) + 1
-        if closed:
-            for pool in own:
-                for k in slab:
-                    pool[k] = pool.get(k, 0) + 1
-        index = ({}, {}, {})     # literal key -> conflicts holding it, for pools A, B, U
-        for of, ks in conflicts:
+        # Pools: 0 holds TA and the slab, 1 TB and the slab (closed only), 2 everything.
+        # Each conflict keeps the count of its literals missing from its pool, so a
+        # literal's coming or going costs one step per conflict holding it (s4).
+        pools = ({}, {}, {})
+        index = ({}, {}, {})     # per pool: literal key -> the conflicts holding it
+        missing = []
+        for c, (of, ks) in enumerate(conflicts):
+            pid = {"A": 0, "B": 1, "both": 2}[of]
+            missing.append(len(ks))
+            self.step(path, len(ks))
             for k in ks:
-                index[{"A": 0, "B": 1, "both": 2}[of]].setdefault(k, []).append(ks)
+                index[pid].setdefault(k, []).append(c)
 
-        def shut(pool, ks):
-            return all(x in pool for x in ks)
+        def inc(pid, k):
+            pool = pools[pid]
+            pool[k] = pool.get(k, 0) + 1
+            hit = False
+            if pool[k] == 1:
+                watchers = index[pid].get(k, ())
+                self.step(path, len(watchers))
+                for c in watchers:
+                    missing[c] -= 1
+                    hit = hit or missing[c] == 0
+            return hit
 
+        def dec(pid, k):
+            pool = pools[pid]
+            pool[k] -= 1
+            if not pool[k]:
+                del pool[k]
+                watchers = index[pid].get(k, ())
+                self.step(path, len(watchers))
+                for c in watchers:
+                    missing[c] += 1
+
+        U = pools[2]
+        shut = False
+        for k in [primitive(s) for s in spl] + slab:
+            shut = inc(2, k) or shut
+        if closed:
+            for pid in (0, 1):
+                for k in slab:
+                    shut = inc(pid, k) or shut
         # closed off before any term literal?
-        if (any(shut(U, ks) for of, ks in conflicts if of == "both")
-                or (closed and any(shut(own[0 if of == "A" else 1], ks) for of, ks in conflicts if of != "both"))
-                or (not closed and any(negate(k) in U for k in U))):
+        if shut or (not closed and any(negate(k) in U for k in U)):
             return
         term = []
 
         def add(k, side):
             term.append((k, side))
-            U[k] = U.get(k, 0) + 1
+            hit = inc(2, k)
             if closed:
-                own[side][k] = own[side].get(k, 0) + 1
-            if not closed and negate(k) in U:
-                return True
-            if closed and any(shut(own[side], ks) for ks in index[side].get(k, ())):
-                return True
-            return any(shut(U, ks) for ks in index[2].get(k, ()))
+                hit = inc(side, k) or hit
+            return hit or (not closed and negate(k) in U)
 
         def remove(k, side):
             term.pop()
-            for pool in ((U, own[side]) if closed else (U,)):
-                pool[k] -= 1
-                if not pool[k]:
-                    del pool[k]
+            dec(2, k)
+            if closed:
+                dec(side, k)
 
         def dfs(pending):
             """True when every term completing the current partial term is closed off."""
             added = []
             try:
                 while pending is not None:
-                    self.steps += 1
-                    if self.steps > STEP_LIMIT:
-                        raise Failed(path, f"more than {STEP_LIMIT:,} steps of term enumeration: "
-                                           "the certificate is too costly to check")
+                    self.step(path, 1)
                     (node, side), pending = pending
                     tag, arg = node
                     if tag == "lit":
@@ -841,7 +1072,7 @@ def check_files(argv):
         return 2
     try:
         scene = SceneReader(argv[1])
-        doc = load_json(argv[2])
+        doc = load_certificate(argv[2])
         line = Checker(scene, argv[2]).check(doc)
     except Unreadable as e:
         print(f"{PROG}: {e}", file=sys.stderr)
@@ -849,6 +1080,15 @@ def check_files(argv):
     except Failed as e:
         print(f"{PROG}: {argv[2]}: {e}", file=sys.stderr)
         return 1
+    except Limit as e:
+        print(f"{PROG}: {e}", file=sys.stderr)
+        return 3
+    except (MemoryError, RecursionError) as e:   # s6: a limit of this checker, nothing proved
+        print(f"{PROG}: {argv[2]}: beyond this checker's limits ({type(e).__name__})", file=sys.stderr)
+        return 3
+    except Exception as e:                        # a flaw of this checker: nothing proved, no traceback
+        print(f"{PROG}: {argv[2]}: internal error of the checker: {type(e).__name__}: {e}", file=sys.stderr)
+        return 4
     print(line)
     return 0
 
