@@ -5,6 +5,7 @@
 #include "scene/Input_error.h"
 #include "scene/Files.h"
 #include "scene/Scene_reader.h"
+#include "search/Work_budget.h"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -154,6 +155,7 @@ int campaign_command(const Campaign_options& options, const std::function<Fuzz_s
 {
   try {
     Fuzz_summary s = run();
+    Work_budget::check();   // past --max-seconds no summary is printed (exit 3)
     out << options.out << ": shard " << options.shard << "/" << options.shards << ", " << s.done << " cases"
         << (s.resumed_from ? " (resumed at case " + std::to_string(s.resumed_from) + ")" : "") << ", " << s.findings
         << " findings in " << (fs::path(options.out) / "findings").string() << "\n";
@@ -272,6 +274,7 @@ int report_command(const Report_inputs& inputs, const std::string& out_dir, std:
       else
         for (const auto& f : folder_files(p)) add_file(f, inputs, cases);
     }
+    Work_budget::check();   // past --max-seconds no report is written (exit 3)
     write_report(cases, out_dir);
     std::size_t disagreeing = 0;
     for (const auto& c : cases) disagreeing += c.comparison.has_disagreement();

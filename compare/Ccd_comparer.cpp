@@ -234,6 +234,7 @@ Ccd_comparison compare_query(const Ccd_query& query, const std::string& file, st
   out.comparison.file = file;
   out.comparison.name = ccd_query_name(index, query.line);
   for (const Run& r : runs) out.comparison.subjects.push_back(row_of(r, ref, out.comparison.disagreements));
+  Work_budget::check();   // a comparison finished past the budget is not shown (--max-seconds)
   return out;
 }
 

@@ -13,6 +13,7 @@
 #include "scene/Number_text.h"
 #include "scene/Scene_reader.h"
 #include "scene/Scene_writer.h"
+#include "search/Work_budget.h"
 
 #include <algorithm>
 #include <chrono>
@@ -324,6 +325,7 @@ std::vector<Run> builtin_runs(const Scene& scene, const Compare_options& options
 
 Comparison compare_scene(const Scene& scene, const std::string& file, const Compare_options& options)
 {
+  Work_budget::check();
   Check_options co;
   co.earliest = options.earliest;
   std::vector<Run> runs = builtin_runs(scene, options, co);
@@ -342,6 +344,7 @@ Comparison compare_scene(const Scene& scene, const std::string& file, const Comp
   // Where the regularised answer is no, the closed one says whether the
   // objects touch (never null there); where it is yes, they collide.
   if (!ref.regularised.answer.collide) out.closed_touch = ref.closed.answer.collide;
+  Work_budget::check();   // a comparison finished past the budget is not shown (--max-seconds)
   return out;
 }
 

@@ -1,9 +1,11 @@
 #include "compare/External_subject.h"
 #include "compare/Ccd_query_files.h"
+#include "compare/Subject_processes.h"
 #include "scene/Input_error.h"
 #include "scene/Json_reader.h"
 #include "scene/Number_text.h"
 #include "scene/Scene_writer.h"
+#include "search/Work_budget.h"
 
 #include <chrono>
 #include <cstdio>
@@ -24,6 +26,9 @@ using Kind = Json_value::Kind;
 
 constexpr std::size_t max_line_bytes = 64u << 20;
 constexpr double grace_seconds = 2;   // for a subject to exit once its input is closed
+// Waits are cut in slices this long, to look at the run's budget and at
+// whether the subject has exited between them.
+constexpr int slice_ms = 50;
 
 // A write to a subject that died must be an error we report, not a SIGPIPE
 // that ends clash4d: ignored once for the process (children get it back).
@@ -46,6 +51,25 @@ int remaining_ms(Clock::time_point deadline)
 Clock::time_point after(double seconds)
 {
   return Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+int slice(Clock::time_point deadline) { return std::min(remaining_ms(deadline), slice_ms); }
+
+bool within_budget()
+{
+  try {
+    Work_budget::check();
+    return true;
+  } catch (const Budget_exceeded&) {
+    return false;
+  }
+}
+
+std::string seconds_text(double seconds)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", seconds);
+  return text;
 }
 
 // The keys of an object must be among `allowed`.
@@ -130,7 +154,8 @@ Subject_spec parse_subject_spec(const std::string& text, double timeout_seconds)
 
 External_subject::External_subject(Subject_spec spec) : spec_(std::move(spec)) {}
 
-External_subject::~External_subject() { stop(false); }
+// Past the run's budget there is no time to let it exit by itself.
+External_subject::~External_subject() { stop(!within_budget()); }
 
 Subject_answer External_subject::fault(const std::string& cause, const std::string& what)
 {
@@ -149,19 +174,23 @@ std::string External_subject::exit_text()
   return "exited with status " + std::to_string(WEXITSTATUS(exit_status_));
 }
 
-// Closes its input (spec: stdin closed when done); waits for it to exit,
-// at most the grace time unless `kill_now`; then kills its process group.
-void External_subject::stop(bool kill_now)
+void External_subject::close_input()
 {
   if (to_child_ >= 0) ::close(to_child_);
   to_child_ = -1;
+}
+
+// Closes its input (spec: stdin closed when done); waits for it to exit,
+// at most the grace time unless `kill_now`; then kills its process group
+// and whatever it started (compare/Subject_processes.h).
+void External_subject::stop(bool kill_now)
+{
+  close_input();
   if (pid_ > 0) {
     bool reaped = exit_status_ >= 0;
     for (auto deadline = after(kill_now ? 0 : grace_seconds); !reaped && Clock::now() < deadline; ::usleep(2000))
       reaped = ::waitpid(pid_, &exit_status_, WNOHANG) == pid_;
-    ::kill(-pid_, SIGKILL);   // its process group: a shell's children, whatever it left running
-    if (!reaped)
-      while (::waitpid(pid_, &exit_status_, 0) < 0 && errno == EINTR) {}
+    subject_processes::end(pid_, reaped, exit_status_);
   }
   pid_ = -1;
   if (from_child_ >= 0) ::close(from_child_);
@@ -179,25 +208,15 @@ Subject_answer External_subject::start()
     ::close(in[1]);
     return fault("crash", std::string("cannot make a pipe: ") + std::strerror(errno));
   }
-  pid_t pid = ::fork();
-  if (pid == 0) {   // the child: only async-signal-safe calls until exec
-    ::setpgid(0, 0);
-    struct sigaction sa {};
-    sa.sa_handler = SIG_DFL;
-    ::sigaction(SIGPIPE, &sa, nullptr);
-    ::dup2(in[0], 0);
-    ::dup2(out[1], 1);
-    ::execl("/bin/sh", "sh", "-c", spec_.command.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
+  pid_t pid = subject_processes::start(spec_.command, in[0], out[1]);
+  int started = errno;
   ::close(in[0]);
   ::close(out[1]);
   if (pid < 0) {
     ::close(in[1]);
     ::close(out[0]);
-    return fault("crash", std::string("cannot start it: ") + std::strerror(errno));
+    return fault("crash", std::string("cannot start it: ") + std::strerror(started));
   }
-  ::setpgid(pid, pid);   // also here: whichever runs first
   pid_ = pid;
   exit_status_ = -1;
   to_child_ = in[1];
@@ -210,7 +229,7 @@ Subject_answer External_subject::start()
 Subject_answer External_subject::read_hello()
 {
   std::string line;
-  Subject_answer got = read_line(line, spec_.timeout_seconds);
+  Subject_answer got = read_line(line, spec_.timeout_seconds, true);
   if (got.kind == Subject_answer::Kind::Fault) return got;
   Json_value hello;
   try {
@@ -233,7 +252,17 @@ Subject_answer External_subject::read_hello()
   return Subject_answer();
 }
 
-Subject_answer External_subject::read_line(std::string& line, double seconds)
+// Why it ended: its exit status or signal when reaped, else that its
+// output ended; "before its hello line" when it never said hello.
+std::string External_subject::ended_text(bool hello)
+{
+  return exit_text() + (hello ? " before its hello line" : "");
+}
+
+// Cut in slices: past the run's budget it throws Budget_exceeded; once the
+// subject has exited, or its output has ended, it says so at once, not at
+// the time limit (a descendant may hold its output open after it died).
+Subject_answer External_subject::read_line(std::string& line, double seconds, bool hello)
 {
   auto deadline = after(seconds);
   for (;;) {
@@ -244,20 +273,22 @@ Subject_answer External_subject::read_line(std::string& line, double seconds)
       return Subject_answer();
     }
     if (buffer_.size() > max_line_bytes) return fault("protocol", "a line longer than 64 MB");
+    Work_budget::check();
+    bool exited = exit_status_ >= 0 || ::waitpid(pid_, &exit_status_, WNOHANG) == pid_;
     struct pollfd p {from_child_, POLLIN, 0};
-    int r = ::poll(&p, 1, remaining_ms(deadline));
+    int r = ::poll(&p, 1, exited ? 0 : slice(deadline));
     if (r < 0 && errno == EINTR) continue;
-    if (r == 0) {
-      char limit[32];
-      std::snprintf(limit, sizeof limit, "%g", seconds);
-      return fault("timeout", std::string("no answer within ") + limit + " s (--subject-timeout)");
-    }
+    if (r <= 0 && exited) return fault("crash", ended_text(hello));   // all it wrote is read
+    if (r <= 0 && Clock::now() >= deadline)
+      return fault("timeout", (hello ? "did not say hello within " : "no answer within ") + seconds_text(seconds) +
+                                  " s (--subject-timeout)");
+    if (r <= 0) continue;
     char chunk[65536];
     ssize_t n = ::read(from_child_, chunk, sizeof chunk);
     if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
-    if (n <= 0) {   // end of its output: it is gone (or going); reap it for the message
-      for (auto d = after(1); ::waitpid(pid_, &exit_status_, WNOHANG) != pid_ && Clock::now() < d;) ::usleep(2000);
-      return fault("crash", exit_text());
+    if (n <= 0) {   // end of its output: it is gone or going; its status if it comes soon
+      for (auto d = after(0.05); ::waitpid(pid_, &exit_status_, WNOHANG) != pid_ && Clock::now() < d;) ::usleep(1000);
+      return fault("crash", ended_text(hello));
     }
     buffer_.append(chunk, static_cast<std::size_t>(n));
   }
@@ -272,8 +303,10 @@ bool External_subject::write_all(const std::string& text)
     if (n > 0) { done += static_cast<std::size_t>(n); continue; }
     if (n < 0 && errno == EINTR) continue;
     if (n < 0 && errno != EAGAIN) return false;   // EPIPE: it closed its input or died
+    Work_budget::check();
+    if (Clock::now() >= deadline || (exit_status_ < 0 && ::waitpid(pid_, &exit_status_, WNOHANG) == pid_)) return false;
     struct pollfd p {to_child_, POLLOUT, 0};
-    if (::poll(&p, 1, remaining_ms(deadline)) == 0) return false;
+    ::poll(&p, 1, slice(deadline));
   }
   return true;
 }
@@ -288,7 +321,19 @@ Subject_answer External_subject::ask(const Ccd_query& query, bool earliest)
   return exchange("ccd", ccd_query_json(query), earliest);
 }
 
+// Past the run's budget the subject is killed at once and the budget's end
+// goes on up: the run answers nothing (--max-seconds).
 Subject_answer External_subject::exchange(const char* key, const nlohmann::ordered_json& body, bool earliest)
+{
+  try {
+    return converse(key, body, earliest);
+  } catch (const Budget_exceeded&) {
+    stop(true);
+    throw;
+  }
+}
+
+Subject_answer External_subject::converse(const char* key, const nlohmann::ordered_json& body, bool earliest)
 {
   if (pid_ < 0) {
     Subject_answer started = start();
@@ -299,12 +344,12 @@ Subject_answer External_subject::exchange(const char* key, const nlohmann::order
   if (!write_all(request.dump() + "\n")) {
     // It stopped reading: it is gone (its output has ended), or stuck.
     std::string ignored;
-    Subject_answer gone = read_line(ignored, 0.05);
+    Subject_answer gone = read_line(ignored, 0.05, false);
     if (gone.kind == Subject_answer::Kind::Fault && gone.fault == "crash") return gone;
     return fault("timeout", "it did not read the request within the time limit (--subject-timeout)");
   }
   std::string line;
-  Subject_answer got = read_line(line, spec_.timeout_seconds);
+  Subject_answer got = read_line(line, spec_.timeout_seconds, false);
   if (got.kind == Subject_answer::Kind::Fault) return got;
   std::string problem;
   Subject_answer a = parse_answer(line, id, earliest, std::string(key) == "ccd", problem);
@@ -319,6 +364,14 @@ External_pool::Lease External_pool::acquire()
   std::unique_ptr<External_subject> s = std::move(idle_.back());
   idle_.pop_back();
   return Lease(*this, std::move(s));
+}
+
+// Every idle process is told to end first, so they exit side by side
+// within one grace time, not one after another.
+External_pool::~External_pool()
+{
+  for (auto& s : idle_) s->close_input();
+  idle_.clear();
 }
 
 void External_pool::give_back(std::unique_ptr<External_subject> s)

@@ -7,7 +7,10 @@
 // one.
 //
 // Processes run in their own process group, so a shell's children are killed
-// with it; every child is reaped (no zombie survives the object).
+// with it; every child is reaped (no zombie survives the object), and what
+// it started dies with it or with clash4d (compare/Subject_processes.h).
+// Every wait looks at the run's budget (--max-seconds): past it the subject
+// is killed and Budget_exceeded goes on up.
 #ifndef CLASH4D_COMPARE_EXTERNAL_SUBJECT_H
 #define CLASH4D_COMPARE_EXTERNAL_SUBJECT_H
 
@@ -64,16 +67,22 @@ public:
   // From the hello line; "regularised" until a process has said otherwise.
   const std::string& semantics() const { return semantics_; }
   std::optional<double> tolerance() const { return tolerance_; }
+  // Closes its standard input: the subject should end (spec); the
+  // destructor waits for it, then kills what is left.
+  void close_input();
 
 private:
   // One request {"id": N, key: body, "earliest": ...} and its answer.
   Subject_answer exchange(const char* key, const nlohmann::ordered_json& body, bool earliest);
+  Subject_answer converse(const char* key, const nlohmann::ordered_json& body, bool earliest);
   Subject_answer start();
   Subject_answer read_hello();
   void stop(bool kill_now);
   Subject_answer fault(const std::string& cause, const std::string& what);
-  // A whole line within the deadline; a fault otherwise.
-  Subject_answer read_line(std::string& line, double seconds);
+  // A whole line within the deadline (`hello`: the first one); a fault
+  // otherwise, with its cause.
+  Subject_answer read_line(std::string& line, double seconds, bool hello);
+  std::string ended_text(bool hello);
   bool write_all(const std::string& text);
   std::string exit_text();
 
@@ -92,6 +101,9 @@ private:
 class External_pool {
 public:
   explicit External_pool(Subject_spec spec) : spec_(std::move(spec)) {}
+  ~External_pool();
+  External_pool(const External_pool&) = delete;
+  External_pool& operator=(const External_pool&) = delete;
   const Subject_spec& spec() const { return spec_; }
 
   class Lease {

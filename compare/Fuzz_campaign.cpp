@@ -8,8 +8,13 @@
 #include "scene/Scene_writer.h"
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -58,6 +63,42 @@ std::string file_text(const fs::path& path)
 std::string progress_path(const Campaign_options& o)
 {
   return (fs::path(o.out) / ("progress-" + std::to_string(o.shard) + "-of-" + std::to_string(o.shards) + ".json")).string();
+}
+
+// One run per shard of a folder at a time: a second one would redo the same
+// cases and print counts the folder does not hold. The lock is the kernel's
+// (flock), so a killed run leaves none behind.
+class Shard_lock {
+public:
+  explicit Shard_lock(const Campaign_options& o)
+  {
+    std::string path = (fs::path(o.out) / ("lock-" + std::to_string(o.shard) + "-of-" + std::to_string(o.shards))).string();
+    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd_ < 0) throw std::runtime_error(path + ": cannot open the campaign's lock: " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) == 0) return;
+    int why = errno;
+    ::close(fd_);
+    if (why == EWOULDBLOCK)
+      throw std::runtime_error(path + ": another clash4d fuzz is running shard " + std::to_string(o.shard) + "/" +
+                               std::to_string(o.shards) + " in this folder (it holds this lock); wait for it to end, "
+                               "or give another --out");
+    throw std::runtime_error(path + ": cannot take the campaign's lock: " + std::strerror(why));
+  }
+  ~Shard_lock() { ::close(fd_); }
+  Shard_lock(const Shard_lock&) = delete;
+  Shard_lock& operator=(const Shard_lock&) = delete;
+
+private:
+  int fd_;
+};
+
+// The findings the folder holds (every shard's): what a run reports.
+std::uint64_t count_findings(const Campaign_options& o)
+{
+  std::uint64_t n = 0;
+  for (const auto& f : fs::directory_iterator(fs::path(o.out) / "findings"))
+    n += f.path().string().find(".min.json") == std::string::npos && f.path().extension() == ".json";
+  return n;
 }
 
 // Shrinks while the first disagreement (same subject, same cause) persists,
@@ -144,6 +185,7 @@ Fuzz_summary run_campaign(const Campaign_options& o, const json& description,
 {
   if (o.shards == 0 || o.shard == 0 || o.shard > o.shards) throw std::runtime_error("--shard K/S needs 1 <= K <= S");
   prepare(o, description);
+  Shard_lock lock(o);
   // The cases of this shard: indices i with i mod S = K - 1, in order.
   std::vector<std::uint64_t> mine;
   for (std::uint64_t i = o.shard - 1; i < o.cases; i += o.shards) mine.push_back(i);
@@ -152,9 +194,7 @@ Fuzz_summary run_campaign(const Campaign_options& o, const json& description,
   if (fs::exists(progress)) s.resumed_from = read_json_document(progress).value("next", 0u);
   std::size_t start = 0;
   while (start < mine.size() && mine[start] < s.resumed_from) ++start;
-  std::atomic<std::uint64_t> findings{0};
-  for (const auto& f : fs::directory_iterator(fs::path(o.out) / "findings"))
-    findings += f.path().string().find(".min.json") == std::string::npos && f.path().extension() == ".json";
+  std::atomic<std::uint64_t> findings{count_findings(o)};
   Campaign_progress shown(o, err);
   const std::size_t batch = 16;
   for (std::size_t b = start; b < mine.size(); b += batch) {
@@ -170,7 +210,7 @@ Fuzz_summary run_campaign(const Campaign_options& o, const json& description,
     shown.show(end, mine.size(), findings, end == mine.size());
   }
   s.done = mine.size();
-  s.findings = findings;
+  s.findings = count_findings(o);   // the folder's, whoever else wrote to it
   return s;
 }
 

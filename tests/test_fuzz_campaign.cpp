@@ -4,8 +4,11 @@
 #include "cli/Commands.h"
 #include "compare/Fuzz_campaign.h"
 #include "search/Work_budget.h"
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <sys/file.h>
+#include <unistd.h>
 #include <map>
 #include <sstream>
 
@@ -107,6 +110,38 @@ BOOST_AUTO_TEST_CASE(a_folder_holds_one_campaign)
   Fuzz_options other = campaign(dir);
   other.seed = 1;
   BOOST_CHECK_THROW(run_fuzz(other, err), std::runtime_error);
+}
+
+// Issue 59 item 17: a second run of the same shard in the same folder,
+// while the first holds its lock, is refused with exit 2 naming the lock
+// (the lock is held here by this test); another shard, or the same shard
+// once the lock is free, runs.
+BOOST_AUTO_TEST_CASE(one_run_per_shard_and_folder_at_a_time)
+{
+  fs::path dir = fresh("lock");
+  fs::create_directories(dir);
+  std::string lock = (dir / "lock-1-of-2").string();
+  int held = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  BOOST_TEST_REQUIRE(::flock(held, LOCK_EX | LOCK_NB) == 0);
+  std::vector<std::string> args{"clash4d", "fuzz", "--cases", "4", "--shard", "1/2", "--out", dir.string()};
+  auto run = [&] {
+    std::vector<const char*> argv;
+    for (const auto& a : args) argv.push_back(a.c_str());
+    std::ostringstream out, err;
+    int status = run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
+    return std::make_pair(status, err.str());
+  };
+  auto [refused, why] = run();
+  BOOST_TEST(refused == 2);
+  BOOST_TEST(why.find(lock + ": another clash4d fuzz is running shard 1/2 in this folder") != std::string::npos, why);
+  BOOST_TEST(!fs::exists(dir / "progress-1-of-2.json"));
+  args[5] = "2/2";
+  BOOST_TEST(run().first <= 1);
+  ::close(held);
+  args[5] = "1/2";
+  BOOST_TEST(run().first <= 1);
+  BOOST_TEST(fs::exists(dir / "progress-1-of-2.json"));
+  fs::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_CASE(command_line_checks_its_arguments)

@@ -17,7 +17,12 @@
 
 #include <nlohmann/json.hpp>
 #include <dirent.h>
+#include <spawn.h>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -105,6 +110,89 @@ std::size_t leftovers()
     n = leftovers_now();
   }
   return n;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+fs::path scratch(const std::string& name)
+{
+  fs::path dir = fs::temp_directory_path() / ("clash4d_test_subjects_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// A subject that starts a grandchild which leaves its process group
+// (setsid) and sleeps, and writes "LEADER GRANDCHILD" to `pids` before its
+// hello; then it answers no (or, `hang`, never answers).
+std::string escaping(const fs::path& pids, bool hang)
+{
+  return "setsid sleep 947 & echo $$ $! >> '" + pids.string() + "'; " + hello + "while read -r line; do " +
+         (hang ? std::string("sleep 948; done") : read_id + R"(echo "{\"id\":$id,\"collide\":false}"; done)");
+}
+
+// The pids written to `file`: leaders at even places, grandchildren at odd.
+std::vector<pid_t> pids_in(const fs::path& file)
+{
+  std::ifstream in(file);
+  std::vector<pid_t> pids;
+  for (long p; in >> p;) pids.push_back(static_cast<pid_t>(p));
+  return pids;
+}
+
+// The processes not yet gone (kill(pid, 0) is not ESRCH) once the kills
+// have had 10 s to land. A dead one may come back to this process as a
+// zombie (the test is a subreaper once it has run a subject): reaped here.
+std::vector<pid_t> still_there(const std::vector<pid_t>& pids)
+{
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  std::vector<pid_t> left;
+  do {
+    while (::waitpid(-1, nullptr, WNOHANG) > 0) {}
+    left.clear();
+    for (pid_t p : pids)
+      if (::kill(p, 0) == 0 || errno != ESRCH) left.push_back(p);
+    if (!left.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  } while (!left.empty() && std::chrono::steady_clock::now() < deadline);
+  return left;
+}
+
+// Ends what a check left (a failure, or the group members kill -9 leaves
+// behind) with their groups, and reaps those that came back to this
+// process, so nothing leaks into the next test.
+void kill_left(const std::vector<pid_t>& pids)
+{
+  for (pid_t p : pids) {
+    ::kill(-p, SIGKILL);
+    ::kill(p, SIGKILL);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  while (::waitpid(-1, nullptr, WNOHANG) > 0) {}
+}
+
+// `clash4d ARGS...` as a process of its own, SIGTERM and SIGINT at their
+// default actions (a test runner may have them ignored).
+pid_t spawn_clash4d(const std::vector<std::string>& args)
+{
+  std::vector<char*> argv{const_cast<char*>(CLASH4D_BINARY)};
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGTERM);
+  sigaddset(&defaults, SIGINT);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF);
+  pid_t pid = -1;
+  int failed = posix_spawn(&pid, CLASH4D_BINARY, nullptr, &attr, argv.data(), environ);
+  posix_spawnattr_destroy(&attr);
+  BOOST_TEST_REQUIRE(failed == 0);
+  return pid;
 }
 
 } // namespace
@@ -234,3 +322,128 @@ BOOST_AUTO_TEST_CASE(the_python_sampling_subject_tunnels_and_counts_touching)
   fs::remove_all(dir);
 }
 #endif
+
+// Issue 59 item 7: a subject's grandchild that left its group (setsid) is
+// gone at the end of the run, as is the subject.
+BOOST_AUTO_TEST_CASE(nothing_a_subject_started_outlives_a_normal_end)
+{
+  fs::path dir = scratch("escape");
+  fs::path pids = dir / "pids";
+  compare_json({fixture("contact/face_touch_static.json"), fixture("contact/clear_collision_head_on.json")},
+               escaping(pids, false));
+  std::vector<pid_t> started = pids_in(pids);
+  BOOST_TEST(started.size() == 2u);
+  std::vector<pid_t> left = still_there(started);
+  BOOST_TEST(left.empty(), left.size() << " of the subject's processes left running");
+  kill_left(left);
+  BOOST_TEST(leftovers() == 0u);
+  fs::remove_all(dir);
+}
+
+// Issue 59 item 7: SIGTERM or SIGINT to `clash4d fuzz` with hung subjects
+// kills them and what they started, then ends clash4d by that signal;
+// kill -9 still takes the subjects (their parent-death signal).
+BOOST_AUTO_TEST_CASE(nothing_a_subject_started_outlives_a_signal_to_fuzz)
+{
+  for (int sig : {SIGTERM, SIGINT, SIGKILL}) {
+    fs::path dir = scratch("signal");
+    fs::path pids = dir / "pids";
+    pid_t fuzz = spawn_clash4d({"fuzz", "--cases", "4", "--out", (dir / "fz").string(), "--subject",
+                                "e=" + escaping(pids, true), "--subject-timeout", "300"});
+    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (pids_in(pids).empty() && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));   // its request sent: it hangs
+    ::kill(fuzz, sig);
+    int status = 0;
+    while (::waitpid(fuzz, &status, 0) < 0 && errno == EINTR) {}
+    BOOST_TEST((WIFSIGNALED(status) && WTERMSIG(status) == sig), "signal " << sig << ", status " << status);
+    std::vector<pid_t> started = pids_in(pids), watched;
+    BOOST_TEST_REQUIRE(!started.empty());
+    for (std::size_t i = 0; i < started.size(); ++i)
+      if (sig != SIGKILL || i % 2 == 0) watched.push_back(started[i]);   // kill -9: the leaders only (spec)
+    std::vector<pid_t> left = still_there(watched);
+    BOOST_TEST(left.empty(), "signal " << sig << ": " << left.size() << " processes left running");
+    kill_left(started);
+    fs::remove_all(dir);
+  }
+}
+
+// Issue 59 item 6: --max-seconds bounds the wait for a hung subject in
+// compare, report and fuzz: exit 3 naming the budget, no answer, no report,
+// nothing left running (each run would take the 60 s time limit otherwise).
+BOOST_AUTO_TEST_CASE(max_seconds_bounds_the_wait_for_a_hung_subject)
+{
+  fs::path dir = scratch("budget");
+  std::string scene = fixture("contact/face_touch_static.json");
+  std::vector<std::string> subject{"--subject", "s=" + hangs, "--subject-timeout", "60", "--max-seconds", "1"};
+  std::vector<std::vector<std::string>> runs{{"compare", scene},
+                                             {"report", scene, "--out", (dir / "report").string()},
+                                             {"fuzz", "--cases", "4", "--out", (dir / "fz").string()}};
+  auto start = std::chrono::steady_clock::now();
+  for (auto args : runs) {
+    args.insert(args.end(), subject.begin(), subject.end());
+    Cli_result r = run(args);
+    BOOST_TEST(r.status == 3, args[0] << ": " << r.err);
+    BOOST_TEST(r.out.empty(), args[0]);
+    BOOST_TEST(r.err.find("the work budget of --max-seconds 1 ran out") != std::string::npos, r.err);
+  }
+  BOOST_TEST(!fs::exists(dir / "report"));
+  BOOST_TEST(seconds_since(start) < 50);
+  BOOST_TEST(leftovers() == 0u);
+  fs::remove_all(dir);
+}
+
+// Issue 59 item 9: a subject that dies while a child of its holds its output
+// open is a crash at once, not after the time limit.
+BOOST_AUTO_TEST_CASE(a_subject_that_exits_is_reported_at_once)
+{
+  const std::string dies_on_second = hello + "n=0; while read -r line; do " + read_id +
+      R"(n=$((n+1)); if [ $n -ge 2 ]; then sleep 937 & exit 3; fi; echo "{\"id\":$id,\"collide\":false}"; done)";
+  auto start = std::chrono::steady_clock::now();
+  json all = compare_json(some_fixtures(), dies_on_second, 60);
+  std::size_t crashes = 0;
+  for (const auto& c : all) {
+    const json& s = row(c, "s");
+    if (s["cause"] != "crash") continue;
+    ++crashes;
+    BOOST_TEST(s["error"] == "exited with status 3");
+  }
+  BOOST_TEST(crashes == some_fixtures().size() / 2);
+  BOOST_TEST(seconds_since(start) < 50);   // 3 crashes: 180 s when each waited out its time limit
+  BOOST_TEST(leftovers() == 0u);
+}
+
+// Issue 59 item 17: a subject that never says hello is reported with the
+// cause, at once where there is one.
+BOOST_AUTO_TEST_CASE(no_hello_is_reported_with_its_cause)
+{
+  struct Expect { std::string command; double timeout; std::string error; };
+  auto start = std::chrono::steady_clock::now();
+  for (const Expect& e : {Expect{"exec >&-; sleep 937", 60, "it closed its output before its hello line"},
+                          Expect{"sleep 937 & exit 4", 60, "exited with status 4 before its hello line"},
+                          Expect{"sleep 937", 0.5, "did not say hello within 0.5 s (--subject-timeout)"}}) {
+    json all = compare_json({fixture("contact/face_touch_static.json")}, e.command, e.timeout);
+    const json& s = row(all[0], "s");
+    BOOST_TEST(s["cause"] == (e.timeout < 1 ? "timeout" : "crash"), e.command);
+    BOOST_TEST(s["error"] == e.error, e.command);
+  }
+  BOOST_TEST(seconds_since(start) < 50);
+  BOOST_TEST(leftovers() == 0u);
+}
+
+// Issue 59 item 17: the findings fuzz prints are the folder's, even when
+// another run wrote one meanwhile (here the subject plays that run).
+BOOST_AUTO_TEST_CASE(fuzz_prints_the_findings_its_folder_holds)
+{
+  fs::path dir = scratch("count");
+  fs::path other = dir / "fz" / "findings" / "case-999.json";
+  std::string writes_a_finding = "echo '{}' > '" + other.string() + "'; " + always_no;
+  Cli_result r = run({"fuzz", "--cases", "2", "--out", (dir / "fz").string(), "--subject", "s=" + writes_a_finding});
+  std::size_t held = 0;
+  for (const auto& f : fs::directory_iterator(dir / "fz" / "findings"))
+    held += f.path().extension() == ".json" && f.path().string().find(".min.json") == std::string::npos;
+  BOOST_TEST(fs::exists(other));
+  BOOST_TEST(r.out.find(", " + std::to_string(held) + " findings in") != std::string::npos, r.out << r.err);
+  fs::remove_all(dir);
+}
