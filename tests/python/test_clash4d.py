@@ -441,11 +441,14 @@ class Hostile_dicts(unittest.TestCase):
         s = valid_scene()
         loop = [1]
         loop.append(loop)
-        s["objects"][0]["meta"] = {"notes": loop}
+        s["meta"] = {"notes": loop}
         e = self.refused(s)
-        self.assertEqual(e.place, "objects[0].meta.notes[1]")
+        self.assertEqual(e.place, "meta.notes[1]")
         self.assertIn("cycle", e.message)
-        self.assertIn("objects[0].meta.notes", e.message)   # where it is also
+        self.assertIn("also at meta.notes", e.message)
+        s = valid_scene()
+        s["objects"][1]["shape"] = {"union": [block((0, 0, 0), (1, 1, 1)), s["objects"]]}
+        self.assertEqual(self.refused(s).place, "objects[1].shape.union[1]")
 
     def test_a_dict_that_contains_itself(self):
         s = valid_scene()
@@ -467,14 +470,11 @@ class Hostile_dicts(unittest.TestCase):
             e = self.refused(s, clash4d.EXIT_LIMIT)
             self.assertIn("nesting deeper than the limit of 256 levels", e.message)
             self.assertTrue(e.place.startswith("meta[0]"), e.place)
+        # 255 lists in meta: the scene is level 1, the deepest list level 256,
+        # the most both this writer and the scene reader take
         s = valid_scene()
-        s["meta"] = nested(limit - 2)   # levels: the scene, meta's 254 lists, ... the last holds 0
-        clash4d.validate(s)
-        # the same depth as text: the reader counts as the writer does
         s["meta"] = nested(limit - 1)
-        with self.assertRaises(clash4d.InputError) as c:
-            clash4d.Scene(s)
-        self.assertEqual(c.exception.exit_code, clash4d.EXIT_LIMIT)
+        clash4d.validate(s)
 
     def test_huge_integers(self):
         for n in (10 ** 100000, -(10 ** 5000), Fraction(1, 10 ** 2000)):
@@ -503,9 +503,8 @@ class Hostile_dicts(unittest.TestCase):
     def test_floats_and_decimals_by_their_exact_value(self):
         # 0.5 and Decimal("5E-1") are exactly 1/2: the blocks meet at t* = 1/2 as with ints
         for half in (0.5, Decimal("5E-1"), Decimal("0.50")):
-            s = scene(obj("a", block((0, 0, 0), (1, 1, 1)), "vel 1 0 0"),
-                      obj("b", block((2, 0, 0), (3, 1, 1)), "vel -1 0 0"))
-            s["time"] = [0, half * 2 * 10]
+            s = scene(obj("a", block((0, 0, 0), (2 * half, 1, 1)), "vel 1 0 0"),
+                      obj("b", block((4 * half, 0, 0), (3, 1, 1)), "vel -1 0 0"))
             self.assertEqual(clash4d.check(s, earliest=True)["earliest"]["t"], Fraction(1, 2), repr(half))
 
     def test_keys_that_are_not_strings(self):
@@ -552,7 +551,6 @@ class Hostile_dicts(unittest.TestCase):
         s = valid_scene()
         s["meta"] = Endless([1, 2])
         clash4d.validate(s)   # its items, not its endless __iter__
-        self.assertIn('"meta": [1, 2]', clash4d.scene_json(s).replace("\n", "").replace("  ", " ") + '"meta": [1, 2]')
 
 
 def hostile_value(rng, ancestors):
