@@ -22,11 +22,15 @@
 #include "scene/Number_text.h"
 #include "scene/Scene_reader.h"
 #include "scene/Scene_writer.h"
+#include "search/Work_budget.h"
 
 #include <nlohmann/json.hpp>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <tbb/task_scheduler_observer.h>
 #include <cmath>
 #include <mutex>
+#include <sstream>
 #include <optional>
 #include <new>
 
@@ -214,7 +218,70 @@ auto guarded(const std::string& file, F f) -> decltype(f())
   }
 }
 
+// The worker threads of one budgeted run's arena take its budget on entry
+// and drop it on exit (search/Work_budget.h: held weakly, so a thread that
+// leaves unnoticed holds nothing once the run is over).
+class Budget_observer : public tbb::task_scheduler_observer {
+public:
+  Budget_observer(tbb::task_arena& arena, const std::shared_ptr<const in::Run_budget>& run)
+    : tbb::task_scheduler_observer(arena), run_(run)
+  {
+    observe(true);
+  }
+  ~Budget_observer() override { observe(false); }
+  void on_scheduler_entry(bool worker) override
+  {
+    if (worker) in::Work_budget::this_thread_run() = run_;
+  }
+  void on_scheduler_exit(bool worker) override
+  {
+    if (worker) in::Work_budget::this_thread_run().reset();
+  }
+
+private:
+  std::weak_ptr<const in::Run_budget> run_;
+};
+
+// This thread's run for a scope, the one before restored after.
+struct Run_scope {
+  std::weak_ptr<const in::Run_budget> saved = in::Work_budget::this_thread_run();
+  explicit Run_scope(const std::shared_ptr<const in::Run_budget>& run) { in::Work_budget::this_thread_run() = run; }
+  ~Run_scope() { in::Work_budget::this_thread_run() = saved; }
+};
+
+// f() within max_seconds (0: unlimited) and the cancel flag, in a task arena
+// of its own, so that concurrent runs keep their own limits. Past the
+// deadline, Input_error (exit_limit) as `clash4d check --max-seconds`
+// reports it; when cancelled, Cancelled.
+template <class F>
+auto budgeted(const std::string& file, double max_seconds, const std::atomic<bool>* cancel, F f) -> decltype(f())
+{
+  if (!(max_seconds >= 0)) throw std::invalid_argument("clash4d::api: max_seconds must be >= 0 (0: unlimited)");
+  if (max_seconds == 0 && !cancel) return f();
+  auto run = std::make_shared<in::Run_budget>();
+  run->seconds = max_seconds;
+  run->deadline = in::Work_budget::deadline_after(max_seconds);
+  run->cancel = cancel;
+  try {
+    tbb::task_arena arena;
+    Budget_observer observer(arena, run);
+    Run_scope scope(run);
+    return arena.execute([&] { return f(); });
+  } catch (const in::Budget_exceeded& e) {
+    std::ostringstream m;
+    m << "the work budget of max_seconds " << e.seconds << " ran out before an answer";
+    throw Input_error(file, "max_seconds", m.str(), exit_limit);
+  } catch (const in::Run_cancelled&) {
+    throw Cancelled();
+  }
+}
+
 } // namespace
+
+Cancelled::Cancelled() : std::runtime_error("clash4d: the run was cancelled") {}
+
+std::size_t max_json_depth() { return in::CLASH4D_MAX_JSON_DEPTH; }
+std::size_t max_number_chars() { return in::CLASH4D_MAX_NUMBER_CHARS; }
 
 // ---------------------------------------------------------------- scenes
 
@@ -335,7 +402,7 @@ struct Scene::Impl {
     std::unique_lock<std::mutex> lock(exact_mutex, std::try_to_lock);
     if (!lock) return in::check_exact(scene, o);
     if (!exact) exact = std::make_unique<in::Exact_checker>(scene);
-    return exact->check(o);
+    return kept([&] { return exact->check(o); });
   }
   // The same under other motions (Exact_checker::check(motions, options)).
   in::Check_answer check_exact(const std::vector<in::Motion>& motions, const in::Check_options& o) const
@@ -343,7 +410,19 @@ struct Scene::Impl {
     std::unique_lock<std::mutex> lock(exact_mutex, std::try_to_lock);
     if (!lock) return in::check_exact(in::with_motions(scene, motions), o);
     if (!exact) exact = std::make_unique<in::Exact_checker>(scene);
-    return exact->check(motions, o);
+    return kept([&] { return exact->check(motions, o); });
+  }
+  // f() on the kept preparation, dropped when f stops midway (a time limit,
+  // a cancel): the next check makes it afresh rather than trust a half.
+  template <class F>
+  in::Check_answer kept(F f) const
+  {
+    try {
+      return f();
+    } catch (...) {
+      exact.reset();
+      throw;
+    }
   }
 };
 
@@ -527,13 +606,15 @@ in::Check_answer run_check(const Scene& scene, const std::vector<in::Motion>* mo
 {
   in::Check_options o = internal(options);
   const Scene::Impl& impl = scene.impl();
-  return guarded(scene.file(), [&] {
-    if (options.number == Number::exact) return motions ? impl.check_exact(*motions, o) : impl.check_exact(o);
-    std::optional<in::Scene> moved;
-    if (motions) moved = in::with_motions(impl.scene, *motions);
-    const in::Scene& s = moved ? *moved : impl.scene;
-    if (options.number == Number::rational) return in::check_rational(s, o);
-    return in::check_double(s, options.tolerance, o);
+  return budgeted(scene.file(), options.max_seconds, options.cancel, [&] {
+    return guarded(scene.file(), [&] {
+      if (options.number == Number::exact) return motions ? impl.check_exact(*motions, o) : impl.check_exact(o);
+      std::optional<in::Scene> moved;
+      if (motions) moved = in::with_motions(impl.scene, *motions);
+      const in::Scene& s = moved ? *moved : impl.scene;
+      if (options.number == Number::rational) return in::check_rational(s, o);
+      return in::check_double(s, options.tolerance, o);
+    });
   });
 }
 
@@ -650,7 +731,12 @@ Ccd_result ccd(Ccd_type type, const Ccd_query& query, const Ccd_options& options
 {
   in::Ccd_options o = internal(options);
   in::Ccd_query q = internal(type, query, options.number, "");
-  return ccd_result(guarded(ccd_file, [&] { return ccd_decider(options.number)(q, o); }));
+  return ccd_result(budgeted(ccd_file, options.max_seconds, options.cancel, [&] {
+    return guarded(ccd_file, [&] {
+      in::Work_budget::check();
+      return ccd_decider(options.number)(q, o);
+    });
+  }));
 }
 
 Ccd_result ccd_vertex_face(const Vec3& p_t0, const Vec3& a_t0, const Vec3& b_t0, const Vec3& c_t0, const Vec3& p_t1,
@@ -674,9 +760,14 @@ std::vector<Ccd_result> ccd_batch(Ccd_type type, const std::vector<Ccd_query>& q
     qs.push_back(internal(type, queries[j], options.number, "queries[" + std::to_string(j) + "]."));
   Ccd_decide decide = ccd_decider(options.number);
   std::vector<in::Ccd_answer> answers(qs.size());
-  guarded(ccd_file, [&] {
-    tbb::parallel_for(std::size_t(0), qs.size(), [&](std::size_t j) { answers[j] = decide(qs[j], o); });
-    return 0;
+  budgeted(ccd_file, options.max_seconds, options.cancel, [&] {
+    return guarded(ccd_file, [&] {
+      tbb::parallel_for(std::size_t(0), qs.size(), [&](std::size_t j) {
+        in::Work_budget::check();   // once per query, as `clash4d ccd --max-seconds`
+        answers[j] = decide(qs[j], o);
+      });
+      return 0;
+    });
   });
   std::vector<Ccd_result> out;
   out.reserve(answers.size());
@@ -725,7 +816,9 @@ Comparison compare(const Scene& scene, const Compare_options& options)
   o.rounded = options.rounded;
   o.fcl = options.fcl;
   o.bullet = options.bullet;
-  in::Comparison c = guarded(scene.file(), [&] { return in::compare_scene(scene.impl().scene, scene.file(), o); });
+  in::Comparison c = budgeted(scene.file(), options.max_seconds, options.cancel, [&] {
+    return guarded(scene.file(), [&] { return in::compare_scene(scene.impl().scene, scene.file(), o); });
+  });
   Comparison out;
   out.file = c.file;
   out.name = c.name;

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <memory>
 
 namespace clash4d {
 
@@ -20,6 +21,19 @@ struct Budget_exceeded {
   double seconds;   // the budget that ran out
 };
 
+// Thrown, past the same places, when a run's cancel flag is set (the API's
+// cancellation: Ctrl-C in Python). Not a std::exception either.
+struct Run_cancelled {};
+
+// The budget of one run of the public API (its max_seconds and cancel flag),
+// which the threads doing that run look at (Work_budget::Scope) instead of
+// the process's: concurrent runs keep their own limits.
+struct Run_budget {
+  double seconds = 0;                            // 0: no deadline
+  std::int64_t deadline = 0;                     // Work_budget::deadline_after(seconds)
+  const std::atomic<bool>* cancel = nullptr;     // set from another thread to stop the run
+};
+
 // One budget per process, set by the command line before a command runs.
 class Work_budget {
 public:
@@ -27,16 +41,31 @@ public:
   static void start(double seconds)
   {
     seconds_().store(seconds);
-    std::int64_t deadline = 0;
-    if (seconds > 0)
-      deadline = now_ns() + static_cast<std::int64_t>(seconds * 1e9 < 9e18 ? seconds * 1e9 : 9e18);
-    deadline_().store(deadline);
+    deadline_().store(deadline_after(seconds));
   }
-  // Throws Budget_exceeded past the deadline.
+  // Throws Budget_exceeded past the deadline (Run_cancelled when cancelled).
   static void check()
   {
+    if (std::shared_ptr<const Run_budget> run = this_thread_run().lock()) {
+      if (run->cancel && run->cancel->load(std::memory_order_relaxed)) throw Run_cancelled{};
+      if (run->deadline != 0 && now_ns() > run->deadline) throw Budget_exceeded{run->seconds};
+      return;
+    }
     std::int64_t deadline = deadline_().load(std::memory_order_relaxed);
     if (deadline != 0 && now_ns() > deadline) throw Budget_exceeded{seconds_().load()};
+  }
+  // The steady-clock deadline `seconds` from now; 0 when seconds <= 0.
+  static std::int64_t deadline_after(double seconds)
+  {
+    if (!(seconds > 0)) return 0;
+    return now_ns() + static_cast<std::int64_t>(seconds * 1e9 < 9e18 ? seconds * 1e9 : 9e18);
+  }
+  // This thread's run (none: the process's budget). Held weakly, so a worker
+  // thread that outlives the run falls back to the process's budget.
+  static std::weak_ptr<const Run_budget>& this_thread_run()
+  {
+    static thread_local std::weak_ptr<const Run_budget> run;
+    return run;
   }
 
 private:

@@ -25,7 +25,9 @@
 //
 // Errors: invalid input throws clash4d::api::Input_error (file, place,
 // message, exit code 2 = invalid or 3 = a resource limit, as the command line
-// exits). An internal error (a bug) throws std::logic_error.
+// exits), and so does a check, a comparison or a CCD batch past its
+// max_seconds (exit code 3). One stopped through its cancel flag throws
+// clash4d::api::Cancelled. An internal error (a bug) throws std::logic_error.
 //
 // CCD queries (vertex-face, edge-edge; `clash4d ccd`) answer with exact
 // algebraic numbers (Algebraic): see "CCD" below.
@@ -35,6 +37,7 @@
 #define CLASH4D_API_CLASH4D_H
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -182,6 +185,19 @@ private:
   int exit_code_;
 };
 
+// A run stopped by its options' cancel flag (see Check_options::cancel).
+class CLASH4D_API Cancelled : public std::runtime_error {
+public:
+  Cancelled();
+};
+
+// The scene reader's limits, for callers that build scenes from other data
+// (the Python module): containers nested at most max_json_depth() deep (the
+// outermost is level 1), and a number at most max_number_chars() characters
+// long. Beyond either, reading throws Input_error with exit_limit.
+CLASH4D_API std::size_t max_json_depth();
+CLASH4D_API std::size_t max_number_chars();
+
 // ---------------------------------------------------------------- scenes
 
 // A solid of the scene format, held as its JSON text. The factories check
@@ -294,6 +310,16 @@ struct Check_options {
   bool earliest = false;     // the earliest collision (closed: first contact) time t* and a contact point
   bool all_pairs = false;    // every colliding pair, not only the first
   double tolerance = 0;      // Number::double_ only: |value| <= tolerance counts as zero
+  // A time limit, as `clash4d check --max-seconds`: when the check takes
+  // longer than this many seconds it stops, with no answer, throwing
+  // Input_error (exit_limit, place "max_seconds"). 0 (the default) is
+  // unlimited; a negative or NaN value throws std::invalid_argument. The
+  // work looks at the clock once per region of its search, so it stops
+  // within about one region's work of the limit.
+  double max_seconds = 0;
+  // When not null, another thread may set it to true to stop the check at
+  // the same places: it then throws Cancelled. It must outlive the call.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 // The earliest collision of a pair: t* (the infimum of collision times) and
@@ -379,6 +405,8 @@ struct Ccd_options {
   bool earliest = true;            // also t* and (u, v)
   Rational separation = 0;         // minimum separation D >= 0 (0: the plain contract)
   double tolerance = 0;            // Number::double_ only: |value| <= tolerance counts as zero
+  double max_seconds = 0;          // as Check_options::max_seconds (ccd_batch looks once per query)
+  const std::atomic<bool>* cancel = nullptr;   // as Check_options::cancel
 };
 
 // A query: the four vertices at t = 0 and the same four at t = 1, in the
@@ -427,6 +455,8 @@ struct Compare_options {
   bool rounded = true;                            // the exact-rounded subject
   bool fcl = false;                               // FCL's continuous collision, where built in
   bool bullet = false;                            // Bullet's, likewise
+  double max_seconds = 0;                         // as Check_options::max_seconds (`clash4d compare --max-seconds`)
+  const std::atomic<bool>* cancel = nullptr;      // as Check_options::cancel
 };
 
 // A witness or an earliest contact as a subject gave it.

@@ -8,9 +8,16 @@
 #include <pybind11/stl.h>
 
 #include <array>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
+#include <unordered_map>
 #include <vector>
 
 namespace py = pybind11;
@@ -41,6 +48,16 @@ decimal.Decimal by their exact value (Fraction(0.1) is
 for a tenth). Motions are strings ("vel 1 0 0", "rest until 0 vel 1/2 0 0
 until 5 rest"). Relative file paths inside a dict scene (mesh solids) are
 relative to the current directory.
+
+A dict is refused with clash4d.InputError at the place of the fault (e.g.
+"objects[0].shape") when it holds itself (a cycle: a list that contains
+itself), nests deeper than the scene reader's limit of 256 levels
+(exit_code EXIT_LIMIT, as the reader), holds an integer of more digits than
+a number's limit of 1000 characters (EXIT_LIMIT), a nan or an inf, a key
+that is not a str, a str with a lone surrogate, or a value that is not JSON
+(bytes, a set, any other object). True and False are JSON's booleans, never
+numbers: where the format wants a number they are refused as the reader
+refuses a boolean there.
 
 Answers are dicts in the form of `clash4d check --json` and
 `clash4d compare --json`, with every exact number a fractions.Fraction.
@@ -86,69 +103,214 @@ py::list point(const c4::Vec3& p)
   throw c4::Input_error(file, place, message, c4::exit_invalid);
 }
 
-// The exact text of a Python number ("3", "p/q"): an int, any
-// numbers.Rational (Fraction), and a float or decimal.Decimal by its exact
-// value (inf and nan are bad input at `place`); none for anything else
-// (bool included: it is not a number here).
+[[noreturn]] void over_limit(const std::string& file, const std::string& place, const std::string& message)
+{
+  throw c4::Input_error(file, place, message, c4::exit_limit);
+}
+
+// repr(v), cut to a readable length; the type's name when repr fails or
+// would be long to make (a large bytes).
+std::string short_repr(py::handle v)
+{
+  std::string type = py::str(py::type::handle_of(v).attr("__name__"));
+  if (py::isinstance<py::bytes>(v) && py::len(v) > 64) return "a bytes object of " + std::to_string(py::len(v)) + " bytes";
+  try {
+    std::string r = py::repr(v);
+    return r.size() <= 80 ? r : r.substr(0, 60) + "... (a " + type + ")";
+  } catch (py::error_already_set&) {
+    return "an object of type " + type;
+  }
+}
+
+// The decimal text of a Python int. One longer than the scene reader's limit
+// on a number's characters is refused here (as the reader would), before
+// Python writes its digits (or refuses to, past sys.get_int_max_str_digits()).
+std::string int_text(py::handle v, const std::string& file, const std::string& place)
+{
+  py::int_ i = py::reinterpret_borrow<py::object>(v);
+  std::size_t bits = i.attr("bit_length")().cast<std::size_t>();
+  std::size_t limit = c4::max_number_chars();
+  if (bits > 1 && (bits - 1) * 30103 / 100000 >= limit)   // at least 1 + (bits - 1) log10(2) digits
+    over_limit(file, place, "an integer of " + std::to_string(bits) + " bits: more digits than the limit of " +
+                                std::to_string(limit) + " characters of a number");
+  try {
+    return py::str(i);
+  } catch (py::error_already_set& e) {   // a lower sys.set_int_max_str_digits
+    over_limit(file, place, "Python cannot write this integer in decimal: " + std::string(py::str(e.value())));
+  }
+}
+
+// The exact text of a Python number ("3", "p/q", "1E+5"): an int, any
+// numbers.Rational (Fraction), a float by its exact value (a double is a
+// binary fraction: 0.1 is 3602879701896397/36028797018963968) and a
+// decimal.Decimal by its own text, which is its exact value; inf and nan
+// are bad input at `place`. None for anything else (bool included: it is
+// not a number here).
 std::optional<std::string> number_text(py::handle v, const std::string& file, const std::string& place)
 {
   static py::object* rational = new py::object(py::module_::import("numbers").attr("Rational"));
-  static py::object* fraction_type = new py::object(py::module_::import("fractions").attr("Fraction"));
   static py::object* decimal = new py::object(py::module_::import("decimal").attr("Decimal"));
-  auto exact = [](py::handle x) {   // numbers.Rational: "p/q"
-    py::int_ p = x.attr("numerator"), q = x.attr("denominator");
-    return std::string(py::str(p)) + "/" + std::string(py::str(q));
-  };
+  auto exact = [&](py::handle p, py::handle q) { return int_text(p, file, place) + "/" + int_text(q, file, place); };
   if (py::isinstance<py::bool_>(v)) return std::nullopt;
-  if (py::isinstance<py::int_>(v)) return std::string(py::str(py::int_(py::reinterpret_borrow<py::object>(v))));
-  if (py::isinstance(v, *rational)) return exact(v);
-  if (py::isinstance<py::float_>(v) || py::isinstance(v, *decimal)) {
-    py::object f;
-    try {
-      f = (*fraction_type)(v);
-    } catch (py::error_already_set&) {   // inf, nan
-      bad_input(file, place, "not a finite number: " + std::string(py::repr(v)));
-    }
-    return exact(f);
+  if (py::isinstance<py::int_>(v)) return int_text(v, file, place);
+  if (py::isinstance(v, *rational)) return exact(v.attr("numerator"), v.attr("denominator"));
+  if (py::isinstance<py::float_>(v)) {
+    double x = v.cast<double>();
+    if (!std::isfinite(x)) bad_input(file, place, "not a finite number: " + short_repr(v));
+    py::tuple pq = py::float_(x).attr("as_integer_ratio")();
+    return exact(pq[0], pq[1]);
+  }
+  if (py::isinstance(v, *decimal)) {
+    if (!v.attr("is_finite")().cast<bool>()) bad_input(file, place, "not a finite number: " + short_repr(v));
+    return std::string(py::str(v));   // JSON's number grammar: "-1.5E+7"
   }
   return std::nullopt;
 }
 
-// The JSON text of a JSON-like Python value, numbers kept exact.
-void write_json(py::handle v, const std::string& place, std::string& out)
+// The JSON text of a JSON-like Python value (dict, list, tuple, str, int,
+// float, Fraction, Decimal, bool, None), numbers kept exact. Refused with
+// InputError at its place: a container that holds itself (a cycle), nesting
+// deeper than the scene reader's limit (exit 3, as the reader), a key that
+// is not a str, a str that is not Unicode text, and any other value.
+class Json_writer {
+public:
+  explicit Json_writer(std::string file) : file_(std::move(file)) {}
+
+  std::string write(py::handle v)
+  {
+    std::string out;
+    value(v, "", 1, out);
+    return out;
+  }
+
+private:
+  std::string file_;
+  std::unordered_map<const PyObject*, std::string> open_;   // the containers on the path, at their place
+
+  void value(py::handle v, const std::string& place, std::size_t depth, std::string& out);
+  void container(py::handle v, const std::string& place, std::size_t depth, std::string& out);
+  void text(py::handle v, const std::string& place, std::string& out);
+};
+
+void Json_writer::value(py::handle v, const std::string& place, std::size_t depth, std::string& out)
 {
-  static py::object* json_dumps = new py::object(py::module_::import("json").attr("dumps"));
   if (v.is_none()) {
     out += "null";
   } else if (py::isinstance<py::bool_>(v)) {
-    out += v.cast<bool>() ? "true" : "false";
-  } else if (std::optional<std::string> number = number_text(v, "<scene>", place)) {
+    out += v.ptr() == Py_True ? "true" : "false";
+  } else if (std::optional<std::string> number = number_text(v, file_, place)) {
     out += py::isinstance<py::int_>(v) ? *number : "\"" + *number + "\"";
   } else if (py::isinstance<py::str>(v)) {
-    out += (*json_dumps)(v).cast<std::string>();
-  } else if (py::isinstance<py::dict>(v)) {
+    text(v, place, out);
+  } else if (py::isinstance<py::dict>(v) || py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
+    container(v, place, depth, out);
+  } else {
+    bad_input(file_, place, "not a JSON value: " + short_repr(v));
+  }
+}
+
+// A dict, list or tuple, its items at depth + 1; refused before recursing
+// when it is on its own path or too deep, so no input can overflow the stack.
+void Json_writer::container(py::handle v, const std::string& place, std::size_t depth, std::string& out)
+{
+  if (auto seen = open_.find(v.ptr()); seen != open_.end())
+    bad_input(file_, place, "a cycle: this " + std::string(py::str(py::type::handle_of(v).attr("__name__"))) +
+                                " contains itself (it is also at " + (seen->second.empty() ? "the scene" : seen->second) + ")");
+  if (depth > c4::max_json_depth())
+    over_limit(file_, place, "nesting deeper than the limit of " + std::to_string(c4::max_json_depth()) + " levels");
+  open_.emplace(v.ptr(), place);
+  if (py::isinstance<py::dict>(v)) {
     out += "{";
-    bool first = true;
-    for (auto item : py::reinterpret_borrow<py::dict>(v)) {
-      if (!py::isinstance<py::str>(item.first))
-        bad_input("<scene>", place, "a key is not a string: " + std::string(py::repr(item.first)));
-      std::string key = item.first.cast<std::string>();
-      out += (first ? "" : ", ") + (*json_dumps)(item.first).cast<std::string>() + ": ";
-      first = false;
-      write_json(item.second, place.empty() ? key : place + "." + key, out);
+    // Its items held (a list of (key, value)), so that Python code a value
+    // runs (a Rational's numerator) cannot free what is being read.
+    py::list items = py::reinterpret_steal<py::list>(PyDict_Items(v.ptr()));
+    if (!items) throw py::error_already_set();
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      py::tuple item = items[i];
+      if (!py::isinstance<py::str>(item[0])) bad_input(file_, place, "a key is not a string: " + short_repr(item[0]));
+      out += i ? ", " : "";
+      text(item[0], place, out);
+      std::string key = item[0].cast<std::string>();
+      std::string at = place.empty() ? key : place + "." + key;
+      out += ": ";
+      value(item[1], at, depth + 1, out);
     }
     out += "}";
-  } else if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
+  } else {
     out += "[";
+    // Its items as stored (a subclass's __iter__ is not run), held as above.
+    py::object items = py::reinterpret_steal<py::object>(py::isinstance<py::list>(v)
+                                                             ? PyList_GetSlice(v.ptr(), 0, PY_SSIZE_T_MAX)
+                                                             : PyTuple_GetSlice(v.ptr(), 0, PY_SSIZE_T_MAX));
+    if (!items) throw py::error_already_set();
     std::size_t i = 0;
-    for (auto item : v) {
+    for (py::handle item : items) {
       out += i ? ", " : "";
-      write_json(item, place + "[" + std::to_string(i++) + "]", out);
+      value(item, place + "[" + std::to_string(i++) + "]", depth + 1, out);
     }
     out += "]";
-  } else {
-    bad_input("<scene>", place, "not a JSON value: " + std::string(py::repr(v)));
   }
+  open_.erase(v.ptr());
+}
+
+// A str as a JSON string; one that is not Unicode text (a lone surrogate)
+// is refused.
+void Json_writer::text(py::handle v, const std::string& place, std::string& out)
+{
+  static py::object* json_dumps = new py::object(py::module_::import("json").attr("dumps"));
+  Py_ssize_t size = 0;
+  if (!PyUnicode_AsUTF8AndSize(v.ptr(), &size)) {
+    PyErr_Clear();
+    bad_input(file_, place, "a string that is not Unicode text (a lone surrogate): " + short_repr(v));
+  }
+  out += (*json_dumps)(v).cast<std::string>();
+}
+
+// work(cancel) run in a thread of its own while this thread, the GIL
+// released, looks for signals every 50 ms (Python runs its signal handlers
+// only when asked, and only in the main thread). When a handler raises
+// (Ctrl-C: KeyboardInterrupt), the work is cancelled through the flag,
+// awaited, and that exception is raised; otherwise the work's result or
+// exception comes back. work must not touch Python objects.
+template <class F>
+auto interruptible(F work) -> decltype(work(std::declval<const std::atomic<bool>*>()))
+{
+  using Result = decltype(work(std::declval<const std::atomic<bool>*>()));
+  std::atomic<bool> cancel{false};
+  std::optional<Result> result;
+  std::exception_ptr error;
+  bool done = false, interrupted = false;
+  std::mutex m;
+  std::condition_variable finished;
+  {
+    py::gil_scoped_release release;
+    std::thread worker([&] {
+      try {
+        result.emplace(work(&cancel));
+      } catch (...) {
+        error = std::current_exception();
+      }
+      std::lock_guard<std::mutex> lock(m);
+      done = true;
+      finished.notify_one();
+    });
+    std::unique_lock<std::mutex> lock(m);
+    while (!finished.wait_for(lock, std::chrono::milliseconds(50), [&] { return done; }))
+      if (!interrupted) {
+        lock.unlock();
+        {
+          py::gil_scoped_acquire acquire;
+          interrupted = PyErr_CheckSignals() != 0;   // the handler's exception stays set
+        }
+        if (interrupted) cancel = true;
+        lock.lock();
+      }
+    lock.unlock();
+    worker.join();
+  }
+  if (interrupted) throw py::error_already_set();
+  if (error) std::rethrow_exception(error);
+  return std::move(*result);
 }
 
 // A clash4d.Scene is itself (its exact preparation kept); a dict is written
@@ -157,8 +319,7 @@ c4::Scene read_scene(py::handle scene)
 {
   if (py::isinstance<c4::Scene>(scene)) return scene.cast<c4::Scene>();
   if (py::isinstance<py::dict>(scene)) {
-    std::string text;
-    write_json(scene, "", text);
+    std::string text = Json_writer("<scene>").write(scene);
     py::gil_scoped_release release;
     return c4::Scene::parse(text, "<scene>");
   }
@@ -199,7 +360,8 @@ py::dict earliest_dict(const c4::Colliding_pair& p)
 }
 
 py::dict check(py::handle scene, const std::string& number, const std::string& semantics, bool earliest,
-               bool all_pairs, double tolerance, const std::optional<std::vector<std::string>>& motions)
+               bool all_pairs, double tolerance, const std::optional<std::vector<std::string>>& motions,
+               double max_seconds)
 {
   c4::Check_options o;
   o.number = c4::number_from_name(number);
@@ -207,15 +369,16 @@ py::dict check(py::handle scene, const std::string& number, const std::string& s
   o.earliest = earliest;
   o.all_pairs = all_pairs;
   o.tolerance = tolerance;
+  o.max_seconds = max_seconds;
   c4::Scene s = read_scene(scene);
   std::vector<c4::Motion> moved;
   if (motions)
     for (const std::string& m : *motions) moved.push_back(c4::Motion::from_text(m));
-  c4::Check_result r;
-  {
-    py::gil_scoped_release release;
-    r = motions ? c4::check(s, moved, o) : c4::check(s, o);
-  }
+  c4::Check_result r = interruptible([&](const std::atomic<bool>* cancel) {
+    c4::Check_options run = o;
+    run.cancel = cancel;
+    return motions ? c4::check(s, moved, run) : c4::check(s, run);
+  });
   py::dict out;
   out["collide"] = r.collide;
   out["number"] = c4::name(r.number);
@@ -253,7 +416,7 @@ py::object optional(const std::optional<T>& x)
 }
 
 py::dict compare(py::handle scene, const std::string& semantics, const std::vector<double>& tolerances, bool earliest,
-                 bool rounded, bool fcl, bool bullet)
+                 bool rounded, bool fcl, bool bullet, double max_seconds)
 {
   c4::Compare_options o;
   o.semantics = c4::semantics_from_name(semantics);
@@ -262,12 +425,13 @@ py::dict compare(py::handle scene, const std::string& semantics, const std::vect
   o.rounded = rounded;
   o.fcl = fcl;
   o.bullet = bullet;
+  o.max_seconds = max_seconds;
   c4::Scene s = read_scene(scene);
-  c4::Comparison c;
-  {
-    py::gil_scoped_release release;
-    c = c4::compare(s, o);
-  }
+  c4::Comparison c = interruptible([&](const std::atomic<bool>* cancel) {
+    c4::Compare_options run = o;
+    run.cancel = cancel;
+    return c4::compare(s, run);
+  });
   py::dict out;
   out["file"] = c.file;
   out["name"] = c.name;
@@ -424,17 +588,18 @@ py::dict ccd_one(c4::Ccd_type type, py::handle t0, py::handle t1, const std::str
 }
 
 py::list ccd_batch(py::iterable queries, const std::string& type_name, const std::string& number, bool earliest,
-                   py::object separation, double tolerance)
+                   py::object separation, double tolerance, double max_seconds)
 {
   c4::Ccd_type type = c4::ccd_type_from_name(type_name);
   c4::Ccd_options o = ccd_options(number, earliest, separation, tolerance);
+  o.max_seconds = max_seconds;
   std::vector<c4::Ccd_query> qs;
   for (py::handle q : queries) qs.push_back(ccd_query(q, type, "queries[" + std::to_string(qs.size()) + "]"));
-  std::vector<c4::Ccd_result> rs;
-  {
-    py::gil_scoped_release release;
-    rs = c4::ccd_batch(type, qs, o);
-  }
+  std::vector<c4::Ccd_result> rs = interruptible([&](const std::atomic<bool>* cancel) {
+    c4::Ccd_options run = o;
+    run.cancel = cancel;
+    return c4::ccd_batch(type, qs, run);
+  });
   py::list out;
   for (const c4::Ccd_result& r : rs) out.append(ccd_dict(r, earliest));
   return out;
@@ -511,7 +676,7 @@ answers, faster. Attributes: name, file, time (t_lo, t_hi), objects (names).)")
       .def_property_readonly("objects", &c4::Scene::object_names);
   m.def("check", &check, py::arg("scene"), py::arg("number") = "exact", py::arg("semantics") = "regularised",
         py::arg("earliest") = false, py::arg("all_pairs") = false, py::arg("tolerance") = 0.0,
-        py::arg("motions") = py::none(),
+        py::arg("motions") = py::none(), py::kw_only(), py::arg("max_seconds") = 0.0,
         R"(Decides whether any pair of objects collides (`clash4d check`).
 
 number: "exact" (filtered exact, the default), "rational" (every sign in
@@ -524,6 +689,12 @@ motions: a motion string per object, in scene order, in place of the scene's
 own (the same shapes moving otherwise); with a clash4d.Scene, exact keeps
 its preparation across such checks. A bad motion raises clash4d.InputError
 at place "motions[i]"; a count that is not the scene's, ValueError.
+max_seconds (keyword only): a time limit on the check, as `clash4d check
+--max-seconds` (0, the default: none; the scene's reading is not counted):
+past it the check stops with no answer and raises clash4d.InputError with
+place "max_seconds" and exit_code EXIT_LIMIT. Negative: ValueError.
+Ctrl-C (KeyboardInterrupt, or any exception a signal handler raises) stops
+the check within about 50 ms plus one step of its search, and is raised.
 
 Returns {"collide": bool, "number", "semantics",
  "witness": {"objects": (a, b), "point": [x, y, z, t], "verified": bool},   # when collide
@@ -532,13 +703,14 @@ Returns {"collide": bool, "number", "semantics",
 with every number a fractions.Fraction.)");
   m.def("compare", &compare, py::arg("scene"), py::arg("semantics") = "regularised",
         py::arg("tolerances") = std::vector<double>{1e-9}, py::arg("earliest") = false, py::arg("rounded") = true,
-        py::arg("fcl") = false, py::arg("bullet") = false,
+        py::arg("fcl") = false, py::arg("bullet") = false, py::kw_only(), py::arg("max_seconds") = 0.0,
         R"(Runs every subject (double, double with each tolerance, exact on the rounded
 scene, optionally fcl and bullet) and holds each against the exact answer in
 its own semantics (`clash4d compare`). Returns {"file", "name", "agree",
 "closed_touch", "subjects": [{"subject", "semantics", "collide", "witness",
 "witness_valid", "earliest", "t_error", "agrees", "cause", "skipped", ...}],
-"disagreements": [{"subject", "cause", "detail", "semantics"}]}.)");
+"disagreements": [{"subject", "cause", "detail", "semantics"}]}.
+max_seconds and Ctrl-C as for check.)");
   m.def("validate", &validate, py::arg("scene"),
         "Raises clash4d.InputError when the scene is not valid; else returns {\"name\", \"time\": (t_lo, t_hi), "
         "\"objects\": [names]}.");
@@ -640,7 +812,7 @@ when a0(t) + u (a1(t) - a0(t)) = b0(t) + v (b1(t) - b0(t)) for some t, u,
 v in [0, 1].)");
   m.def("ccd_batch", &ccd_batch, py::arg("queries"), py::arg("type") = "vertex-face", py::kw_only(),
         py::arg("number") = "exact", py::arg("earliest") = true, py::arg("separation") = py::none(),
-        py::arg("tolerance") = 0.0,
+        py::arg("tolerance") = 0.0, py::arg("max_seconds") = 0.0,
         R"(Many CCD queries of one type, decided in parallel (the GIL released):
 a list of answers in the queries' order, each as ccd_vertex_face's.
 
@@ -650,5 +822,6 @@ which must be the batch's, and "label" and "meta", not read). type:
 "vertex-face" (or "vf", the default) or "edge-edge" ("ee"). number,
 earliest, separation and tolerance as for ccd_vertex_face. Every query is
 read before any is decided; bad input raises clash4d.InputError at place
-"queries[j].t0[i][k]".)");
+"queries[j].t0[i][k]". max_seconds (looked at once per query) and Ctrl-C
+as for check.)");
 }

@@ -4,8 +4,10 @@
 //   clash4d_example FIXTURES_DIR
 #include <clash4d/clash4d.h>
 
+#include <atomic>
 #include <iostream>
 #include <string>
+#include <thread>
 
 namespace c4 = clash4d::api;
 
@@ -175,6 +177,45 @@ int main(int argc, char** argv)
   } catch (const c4::Input_error& e) {
     std::cout << "  refused: " << e.what() << "\n";
     expect(e.place() == "objects[0].shape.block.min" && e.exit_code() == c4::exit_invalid, "the error names the place");
+  }
+
+  // A time limit (as `clash4d check --max-seconds`) and a cancel flag. The
+  // skewed section 6 scene takes seconds in rationals, far beyond 1 ms: the
+  // check stops with an Input_error at place "max_seconds", exit_limit.
+  // Meanwhile an unlimited check of the same scene in another thread keeps
+  // no limit (each run has its own) and answers.
+  c4::Scene skewed = c4::Scene::read_file(fixtures + "/paper/section6_weaving_vehicle_skewed.json");
+  c4::Check_options exact;
+  bool unlimited_collides = false;
+  std::thread other([&] { unlimited_collides = c4::check(skewed, exact).collide; });
+  c4::Check_options limited;
+  limited.number = c4::Number::rational;
+  limited.max_seconds = 0.001;
+  try {
+    c4::check(skewed, limited);
+    expect(false, "max_seconds 0.001 stops a check of seconds");
+  } catch (const c4::Input_error& e) {
+    std::cout << "  stopped: " << e.what() << "\n";
+    expect(e.is_limit() && e.place() == "max_seconds", "max_seconds 0.001 stops a check of seconds (exit_limit)");
+  }
+  other.join();
+  expect(unlimited_collides == c4::check(skewed, exact).collide, "a concurrent unlimited check answers as alone");
+  std::atomic<bool> cancel{true};   // set before: the check stops at its first look
+  limited.max_seconds = 0;
+  limited.cancel = &cancel;
+  try {
+    c4::check(skewed, limited);
+    expect(false, "a cancelled check stops");
+  } catch (const c4::Cancelled&) {
+    expect(true, "a cancelled check throws Cancelled");
+  }
+  limited.cancel = nullptr;
+  limited.max_seconds = -1;
+  try {
+    c4::check(approach, limited);
+    expect(false, "a negative max_seconds is refused");
+  } catch (const std::invalid_argument&) {
+    expect(true, "a negative max_seconds is refused");
   }
 
   std::cout << (failures ? "FAILED\n" : "all answers as expected\n");

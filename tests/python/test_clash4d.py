@@ -5,8 +5,15 @@ CLASH4D_FIXTURES the fixtures folder:
     PYTHONPATH=build/python CLASH4D_FIXTURES=fixtures python3 -m unittest -v test_clash4d
 Every expected answer is derived by hand in the comment beside it.
 """
+import copy
+import json
 import os
 import pathlib
+import random
+import signal
+import sys
+import threading
+import time
 import unittest
 from decimal import Decimal
 from fractions import Fraction
@@ -406,6 +413,285 @@ class Ccd(unittest.TestCase):
         miss = ([[2, 2, 1]] + TRIANGLE, [[2, 2, -1]] + TRIANGLE)
         self.assertFalse(clash4d.ccd_vertex_face(*miss, separation=2)["collide"])
         self.assertTrue(clash4d.ccd_vertex_face(*miss, separation=3)["collide"])
+
+
+def valid_scene():
+    return copy.deepcopy(APPROACH)
+
+
+def nested(depth, leaf=0):
+    """depth lists, one in another, around leaf: [[...[leaf]...]]."""
+    v = leaf
+    for _ in range(depth):
+        v = [v]
+    return v
+
+
+class Hostile_dicts(unittest.TestCase):
+    """A dict scene is refused with clash4d.InputError at the place of the
+    fault, whatever it holds; never a crash (issue 59, item 1)."""
+
+    def refused(self, s, exit_code=clash4d.EXIT_INVALID):
+        with self.assertRaises(clash4d.InputError) as c:
+            clash4d.validate(s)
+        self.assertEqual(c.exception.exit_code, exit_code, str(c.exception))
+        return c.exception
+
+    def test_a_list_that_contains_itself(self):
+        s = valid_scene()
+        loop = [1]
+        loop.append(loop)
+        s["meta"] = {"notes": loop}
+        e = self.refused(s)
+        self.assertEqual(e.place, "meta.notes[1]")
+        self.assertIn("cycle", e.message)
+        self.assertIn("also at meta.notes", e.message)
+        s = valid_scene()
+        s["objects"][1]["shape"] = {"union": [block((0, 0, 0), (1, 1, 1)), s["objects"]]}
+        self.assertEqual(self.refused(s).place, "objects[1].shape.union[1]")
+
+    def test_a_dict_that_contains_itself(self):
+        s = valid_scene()
+        s["meta"] = s
+        e = self.refused(s)
+        self.assertEqual(e.place, "meta")
+        self.assertIn("cycle", e.message)
+        # the same list twice, side by side, is not a cycle
+        shared = [1, 2]
+        s = valid_scene()
+        s["meta"] = [shared, shared]
+        clash4d.validate(s)
+
+    def test_deep_nesting_is_the_readers_limit(self):
+        limit = 256   # scene/Json_reader.h, CLASH4D_MAX_JSON_DEPTH: the scene is level 1
+        for depth in (30000, 10000, limit):
+            s = valid_scene()
+            s["meta"] = nested(depth)
+            e = self.refused(s, clash4d.EXIT_LIMIT)
+            self.assertIn("nesting deeper than the limit of 256 levels", e.message)
+            self.assertTrue(e.place.startswith("meta[0]"), e.place)
+        # 255 lists in meta: the scene is level 1, the deepest list level 256,
+        # the most both this writer and the scene reader take
+        s = valid_scene()
+        s["meta"] = nested(limit - 1)
+        clash4d.validate(s)
+
+    def test_huge_integers(self):
+        for n in (10 ** 100000, -(10 ** 5000), Fraction(1, 10 ** 2000)):
+            s = scene(obj("a", block((0, 0, 0), (n, 1, 1))), obj("b", block((2, 0, 0), (3, 1, 1))))
+            e = self.refused(s, clash4d.EXIT_LIMIT)
+            self.assertEqual(e.place, "objects[0].shape.block.max[0]")
+            self.assertIn("limit of 1000 characters", e.message)
+        # Python's own limit on writing an int in decimal, lowered: refused as a limit
+        if hasattr(sys, "set_int_max_str_digits"):
+            old = sys.get_int_max_str_digits()
+            sys.set_int_max_str_digits(640)
+            try:
+                s = scene(obj("a", block((0, 0, 0), (10 ** 700, 1, 1))), obj("b", block((2, 0, 0), (3, 1, 1))))
+                e = self.refused(s, clash4d.EXIT_LIMIT)
+                self.assertEqual(e.place, "objects[0].shape.block.max[0]")
+            finally:
+                sys.set_int_max_str_digits(old)
+
+    def test_not_finite(self):
+        for x in (float("nan"), float("inf"), -float("inf"), Decimal("NaN"), Decimal("-Infinity")):
+            s = scene(obj("a", block((0, 0, 0), (x, 1, 1))), obj("b", block((2, 0, 0), (3, 1, 1))))
+            e = self.refused(s)
+            self.assertEqual(e.place, "objects[0].shape.block.max[0]")
+            self.assertIn("not a finite number", e.message)
+
+    def test_floats_and_decimals_by_their_exact_value(self):
+        # 0.5 and Decimal("5E-1") are exactly 1/2: the blocks meet at t* = 1/2 as with ints
+        for half in (0.5, Decimal("5E-1"), Decimal("0.50")):
+            s = scene(obj("a", block((0, 0, 0), (2 * half, 1, 1)), "vel 1 0 0"),
+                      obj("b", block((4 * half, 0, 0), (3, 1, 1)), "vel -1 0 0"))
+            self.assertEqual(clash4d.check(s, earliest=True)["earliest"]["t"], Fraction(1, 2), repr(half))
+
+    def test_keys_that_are_not_strings(self):
+        for key in (1, b"name", None, (1, 2), 1.5):
+            s = valid_scene()
+            s["meta"] = {"notes": {key: 1}}
+            e = self.refused(s)
+            self.assertEqual(e.place, "meta.notes")
+            self.assertIn("a key is not a string", e.message)
+
+    def test_values_that_are_not_json(self):
+        for v in (b"bytes", b"x" * 10 ** 6, bytearray(b"x"), object(), {1, 2}, frozenset(), complex(1, 2),
+                  range(3), iter([1]), Fraction, print):
+            s = valid_scene()
+            s["objects"][1]["shape"] = v
+            e = self.refused(s)
+            self.assertEqual(e.place, "objects[1].shape")
+            self.assertIn("not a JSON value", e.message)
+            self.assertLess(len(e.message), 200)   # a short repr, never a megabyte of it
+
+    def test_bool_is_never_a_number(self):
+        s = scene(obj("a", block((0, 0, 0), (True, 1, 1))), obj("b", block((2, 0, 0), (3, 1, 1))))
+        e = self.refused(s)
+        self.assertTrue(e.place.startswith("objects[0].shape.block.max"), e.place)
+        s = valid_scene()
+        s["time"] = [False, 10]
+        e = self.refused(s)
+        self.assertTrue(e.place.startswith("time"), e.place)
+
+    def test_a_string_that_is_not_text(self):
+        s = valid_scene()
+        s["objects"][0]["name"] = "a\ud800"
+        e = self.refused(s)
+        self.assertEqual(e.place, "objects[0].name")
+        s = valid_scene()
+        s["meta"] = {"\udfff": 1}
+        self.assertEqual(self.refused(s).place, "meta")
+
+    def test_a_list_subclass_is_read_as_stored(self):
+        class Endless(list):
+            def __iter__(self):
+                while True:
+                    yield 0
+        s = valid_scene()
+        s["meta"] = Endless([1, 2])
+        clash4d.validate(s)   # its items, not its endless __iter__
+
+
+def hostile_value(rng, ancestors):
+    """A value to put somewhere in a scene: wrong types, limits, cycles."""
+    kinds = [
+        lambda: rng.choice(ancestors),                       # a cycle to a container on the path
+        lambda: nested(rng.choice([255, 256, 257, 5000, 40000])),
+        lambda: rng.choice([10 ** 100000, -(10 ** 999), 10 ** 1001, 2 ** 64, -1, 0]),
+        lambda: rng.choice([float("nan"), float("inf"), -0.0, 1e308, 5e-324, 0.1]),
+        lambda: rng.choice([Decimal("1e999999999"), Decimal("-0"), Decimal("sNaN"), Decimal("1.5")]),
+        lambda: rng.choice([Fraction(1, 3), Fraction(10 ** 3000, 7)]),
+        lambda: rng.choice([True, False, None]),
+        lambda: rng.choice([b"x", bytearray(3), object(), {1}, 1j, print, int]),
+        lambda: rng.choice(["", "0.1", "1/0", "1/3", "vel 1 0 0", "\ud800", "\x00", "x" * 100000, "1e1000"]),
+        lambda: rng.choice([{}, [], (), {1: 2}, {"block": None}, [[]] * 3]),
+    ]
+    return rng.choice(kinds)()
+
+
+def mutate(rng, s):
+    """One random change somewhere in the scene s (in place)."""
+    ancestors = [s]
+    node = s
+    while True:
+        keys = list(node.keys()) if isinstance(node, dict) else list(range(len(node)))
+        if not keys:
+            return
+        k = rng.choice(keys)
+        child = node[k]
+        if isinstance(child, (dict, list)) and child and rng.random() < 0.7:
+            ancestors.append(child)
+            node = child
+            continue
+        action = rng.random()
+        if action < 0.15 and isinstance(node, dict):
+            del node[k]
+        elif action < 0.25 and isinstance(node, dict):
+            node[rng.choice(["meta", "extra", "block", "z"])] = hostile_value(rng, ancestors)
+        else:
+            node[k] = hostile_value(rng, ancestors)
+        return
+
+
+class Random_hostile_dicts(unittest.TestCase):
+    def test_every_call_answers_or_raises_input_error(self):
+        """Seeded: CLASH4D_PY_SEED overrides the seed, CLASH4D_PY_CASES the count."""
+        seed = int(os.environ.get("CLASH4D_PY_SEED", "59"))
+        cases = int(os.environ.get("CLASH4D_PY_CASES", "300"))
+        print(f"\nhostile dicts: seed {seed}, {cases} cases (CLASH4D_PY_SEED, CLASH4D_PY_CASES)", file=sys.stderr)
+        rng = random.Random(seed)
+        outcomes = {}
+        for i in range(cases):
+            s = valid_scene()
+            for _ in range(rng.randint(1, 3)):
+                mutate(rng, s)
+            try:
+                if i % 2:
+                    r = clash4d.check(s, max_seconds=5)
+                    self.assertIn(r["collide"], (True, False))
+                else:
+                    self.assertIsInstance(clash4d.validate(s), dict)
+                outcome = "answered"
+            except clash4d.InputError as e:
+                self.assertIn(e.exit_code, (clash4d.EXIT_INVALID, clash4d.EXIT_LIMIT))
+                self.assertTrue(str(e).startswith("<scene>: "), f"seed {seed} case {i}: {e}")
+                outcome = "refused"
+            outcomes[outcome] = outcomes.get(outcome, 0) + 1
+        print(f"hostile dicts: {outcomes}", file=sys.stderr)
+        self.assertGreater(outcomes.get("refused", 0), 0)
+
+
+def slow_scene(copies):
+    """copies of the skewed section 6 scene's pair, 1000 apart in x: in
+    rationals each pair takes seconds (papers/cameron1990/README.md)."""
+    one = json.loads((FIXTURES / "paper" / "section6_weaving_vehicle_skewed.json").read_text())
+    objects = []
+    for k in range(copies):
+        for o in one["objects"]:
+            objects.append({"name": f"{o['name']}{k}", "motion": o.get("motion", "rest"),
+                            "shape": {"translate": [1000 * k, 0, 0], "solid": o["shape"]}})
+    return {"format": "clash4d-scene/1", "time": one["time"], "objects": objects}
+
+
+SLOW = slow_scene(4)
+GENEROUS = 15   # seconds: far less than the slow scene's full check in rationals, far more than a stop needs
+
+
+class Time_limit_and_interrupt(unittest.TestCase):
+    """max_seconds as `clash4d check --max-seconds`, and Ctrl-C during a
+    check (issue 59, item 8)."""
+
+    def test_max_seconds_stops_a_long_check(self):
+        prepared = clash4d.Scene(SLOW)
+        start = time.monotonic()
+        with self.assertRaises(clash4d.InputError) as c:
+            clash4d.check(prepared, number="rational", all_pairs=True, max_seconds=0.5)
+        self.assertLess(time.monotonic() - start, GENEROUS)
+        e = c.exception
+        self.assertEqual(e.exit_code, clash4d.EXIT_LIMIT)
+        self.assertEqual(e.place, "max_seconds")
+        self.assertIn("the work budget of max_seconds 0.5 ran out before an answer", e.message)
+
+    def test_a_prepared_scene_answers_after_a_stopped_check(self):
+        path = FIXTURES / "paper" / "section6_weaving_vehicle_skewed.json"
+        prepared = clash4d.Scene(path)
+        with self.assertRaises(clash4d.InputError):
+            clash4d.check(prepared, earliest=True, max_seconds=1e-9)
+        self.assertEqual(clash4d.check(prepared, earliest=True), clash4d.check(path, earliest=True))
+
+    def test_max_seconds_within_the_limit_and_refused(self):
+        self.assertEqual(clash4d.check(APPROACH, earliest=True, max_seconds=1000),
+                         clash4d.check(APPROACH, earliest=True))
+        for bad in (-1, float("nan")):
+            with self.assertRaises(ValueError):
+                clash4d.check(APPROACH, max_seconds=bad)
+
+    def test_compare_and_ccd_batch_have_the_limit(self):
+        with self.assertRaises(clash4d.InputError) as c:
+            clash4d.compare(FIXTURES / "paper" / "section6_weaving_vehicle_skewed.json", max_seconds=1e-9)
+        self.assertEqual(c.exception.exit_code, clash4d.EXIT_LIMIT)
+        t0 = [[Fraction(1, 4), Fraction(1, 4), 1], [0, 0, 0], [1, 0, 0], [0, 1, 0]]
+        t1 = [[Fraction(1, 4), Fraction(1, 4), -1], [0, 0, 0], [1, 0, 0], [0, 1, 0]]
+        with self.assertRaises(clash4d.InputError) as c:
+            clash4d.ccd_batch([(t0, t1)] * 100, max_seconds=1e-9)
+        self.assertEqual(c.exception.place, "max_seconds")
+        self.assertEqual(len(clash4d.ccd_batch([(t0, t1)] * 3, max_seconds=1000)), 3)
+
+    def test_ctrl_c_interrupts_a_long_check(self):
+        old = signal.signal(signal.SIGINT, signal.default_int_handler)
+        timer = threading.Timer(0.5, os.kill, (os.getpid(), signal.SIGINT))
+        start = time.monotonic()
+        try:
+            timer.start()
+            with self.assertRaises(KeyboardInterrupt):
+                clash4d.check(SLOW, number="rational", all_pairs=True)
+            self.assertLess(time.monotonic() - start, GENEROUS)
+        finally:
+            timer.cancel()
+            signal.signal(signal.SIGINT, old)
+        # the module is whole afterwards
+        self.assertEqual(clash4d.check(APPROACH, earliest=True)["earliest"]["t"], Fraction(1, 2))
 
 
 if __name__ == "__main__":
