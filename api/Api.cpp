@@ -78,11 +78,25 @@ Rational::Rational(long long p, long long q)
   split(r, num_, den_);
 }
 
+// The scene format's forms, under the reader's limits; beyond them, still
+// "p" or "p/q" of any length: the form of every number this library
+// returns and of its arithmetic's results (issue 59 item 2).
 Rational::Rational(const std::string& text)
 {
   in::Number_parse n = in::parse_number_text(text, true);
-  if (!n.ok) throw std::invalid_argument("not an exact number: \"" + text + "\": " + n.error);
-  split(n.value, num_, den_);
+  if (n.ok) {
+    split(n.value, num_, den_);
+    return;
+  }
+  if (n.limit) {
+    try {
+      split(in::rational_from_string(text), num_, den_);
+      return;
+    } catch (const std::invalid_argument&) {
+    }
+  }
+  throw std::invalid_argument("not an exact number: \"" + text.substr(0, 40) + (text.size() > 40 ? "...\": " : "\": ") +
+                              n.error);
 }
 
 std::string Rational::to_string() const { return den_ == "1" ? num_ : num_ + "/" + den_; }
@@ -426,17 +440,18 @@ struct Scene::Impl {
   }
 };
 
-Scene Scene::read_file(const std::string& path)
+Scene Scene::read_file(const std::string& path, const std::vector<std::string>& allowed_mesh_folders)
 {
   return guarded(path, [&] {
-    return Scene(std::make_shared<const Impl>(path, in::read_scene_file(path)));
+    return Scene(std::make_shared<const Impl>(path, in::read_scene_file(path, allowed_mesh_folders)));
   });
 }
 
-Scene Scene::parse(const std::string& json, const std::string& file)
+Scene Scene::parse(const std::string& json, const std::string& file,
+                   const std::vector<std::string>& allowed_mesh_folders)
 {
   return guarded(file, [&] {
-    return Scene(std::make_shared<const Impl>(file, in::read_scene(in::read_json_text(json))));
+    return Scene(std::make_shared<const Impl>(file, in::read_scene(in::read_json_text(json), "", allowed_mesh_folders)));
   });
 }
 

@@ -2,7 +2,6 @@
 
 #include "certify/Apart_prover.h"
 #include "scene/Files.h"
-#include "scene/Number_text.h"
 #include <map>
 
 namespace clash4d {
@@ -10,11 +9,16 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
+// The answer's numbers are printed by to_string, of any length: read back by
+// its inverse, not by the scene reader, whose 1000-character limit is for
+// input (issue 59 item 2: a long t* made a right answer an internal error).
 Rational rational(const std::string& text)
 {
-  Number_parse p = parse_number_text(text, true);
-  if (!p.ok) throw std::logic_error("certificate: the answer's number '" + text + "' is not exact");
-  return p.value;
+  try {
+    return rational_from_string(text);
+  } catch (const std::invalid_argument& e) {
+    throw std::logic_error(std::string("certificate: the answer's number is not exact: ") + e.what());
+  }
 }
 
 json point(const std::array<std::string, 4>& p) { return json::array({p[0], p[1], p[2], p[3]}); }

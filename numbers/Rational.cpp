@@ -24,6 +24,22 @@ bool one_limb(mpz_srcptr z, std::uint64_t& magnitude)
 
 } // namespace
 
+Rational rational_from_string(const std::string& text)
+{
+  std::size_t slash = text.find('/');
+  auto digits = [&](std::size_t from, std::size_t to) {
+    return to > from && text.find_first_not_of("0123456789", from) >= to;
+  };
+  std::size_t start = !text.empty() && text[0] == '-' ? 1 : 0;
+  bool ok = slash == std::string::npos ? digits(start, text.size())
+                                       : digits(start, slash) && digits(slash + 1, text.size());
+  mpq_class q;
+  if (!ok || q.set_str(text, 10) != 0 || q.get_den() == 0)
+    throw std::invalid_argument("not a rational printed as p or p/q: '" + text.substr(0, 40) + "'");
+  q.canonicalize();
+  return Rational(q.get_mpq_t());
+}
+
 std::string to_string(const Rational& q)
 {
   // Gmpq is always canonical (lowest terms, positive denominator), and GMP

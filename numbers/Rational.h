@@ -19,6 +19,11 @@ using Rational = CGAL::Gmpq;
 // "p/q" in lowest terms, or "p" when q = 1 (the spec's output form).
 std::string to_string(const Rational& q);
 
+// The inverse of to_string, for text this program printed: "p" or "p/q"
+// with q > 0, of any length (input goes through scene/Number_text.h, with
+// its limits, instead). Throws std::invalid_argument on other text.
+Rational rational_from_string(const std::string& text);
+
 // A finite double x as the rational it is, made from its bits (x = m 2^e,
 // m odd): Gmpq(double)'s number (mpq_set_d) without its general path's
 // reallocation. How point intervals become the rational run's numbers.

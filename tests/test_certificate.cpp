@@ -138,6 +138,30 @@ BOOST_AUTO_TEST_CASE(every_fixture_in_every_mode_is_certified_and_verified)
 
 // A mesh solid (an L-shaped part, the exact union of the reader's convex
 // pieces) against a probe, in every mode.
+// Issue 59 item 2: sixteen nested rotations by 28-digit quaternions make a
+// t* of about 3,500 digits; the certificate's writer read the answer back
+// through the scene reader's 1000-character limit (exit 4, "not exact").
+// The answer's numbers are of any length, in every mode.
+BOOST_AUTO_TEST_CASE(answers_with_numbers_longer_than_the_input_limit_are_certified)
+{
+  json shape = {{"block", {{"min", {0, 0, 0}}, {"max", {1, 1, 1}}}}};
+  for (int i = 0; i < 16; ++i)
+    shape = {{"rotate", {"123456789012345678901234567" + std::to_string(i), "98765432109876543210987654" + std::to_string(i),
+                         "1234567890123456789012345", "7654321098765432109876543"}},
+             {"solid", shape}};
+  json scene = {{"format", "clash4d-scene/1"},
+                {"time", {0, 10}},
+                {"objects", {{{"name", "a"}, {"shape", shape}},
+                             {{"name", "b"},
+                              {"shape", {{"block", {{"min", {5, -3, -3}}, {"max", {6, 3, 3}}}}}},
+                              {"motion", "vel -1 0 0"}}}}};
+  std::string path = write_text("long_numbers.json", scene.dump());
+  Cli_run c = run_clash4d({"check", path, "--earliest", "--json"});
+  BOOST_TEST_REQUIRE(c.status == 1, c.err);
+  BOOST_TEST(json::parse(c.out)["earliest"]["t"].get<std::string>().size() > 1000u);
+  for (const auto& mode : modes) certify_and_verify(path, mode, "exact", "long_numbers");
+}
+
 BOOST_AUTO_TEST_CASE(a_mesh_scene_in_every_mode)
 {
   std::string scene = (fs::path(CLASH4D_FIXTURES) / "meshes" / "scene_l_part.json").string();

@@ -70,8 +70,10 @@ public:
   Rational(long long p, long long q);          // p/q; throws std::invalid_argument when q = 0
   // Exactly the number the text means, in the scene format's forms: an
   // integer "-3", a decimal with an optional exponent "0.1" (= 1/10),
-  // "-2.5e-3" (= -1/400), or a fraction "p/q". Throws std::invalid_argument
-  // on anything else.
+  // "-2.5e-3" (= -1/400), or a fraction "p/q". Beyond the scene reader's
+  // limits (1000 characters, exponents within +-1000) only "p" and "p/q"
+  // are read, of any length: every number this library returns has that
+  // form. Throws std::invalid_argument on anything else.
   explicit Rational(const std::string& text);
 
   const std::string& numerator() const { return num_; }      // "-1"
@@ -250,9 +252,14 @@ private:
 class CLASH4D_API Scene {
 public:
   // A scene file (JSON); throws Input_error naming the file and the place.
-  static Scene read_file(const std::string& path);
-  // A scene as JSON text; `file` names it in error messages.
-  static Scene parse(const std::string& json, const std::string& file = "<scene>");
+  // Its mesh files must be under the file's folder or one of
+  // allowed_mesh_folders (docs/meshes.md, "Where a mesh file may be").
+  static Scene read_file(const std::string& path, const std::vector<std::string>& allowed_mesh_folders = {});
+  // A scene as JSON text; `file` names it in error messages. Its mesh files
+  // are relative to, and must be under, the current directory or one of
+  // allowed_mesh_folders.
+  static Scene parse(const std::string& json, const std::string& file = "<scene>",
+                     const std::vector<std::string>& allowed_mesh_folders = {});
 
   const std::string& file() const;                 // the path, or the name given to parse
   const std::string& name() const;                 // the scene's "name" ("" when none)

@@ -315,13 +315,15 @@ auto interruptible(F work) -> decltype(work(std::declval<const std::atomic<bool>
 
 // A clash4d.Scene is itself (its exact preparation kept); a dict is written
 // as JSON and read; anything else is a path.
-c4::Scene read_scene(py::handle scene)
+// mesh_folders: where mesh files may be besides the scene's folder (the
+// current directory for a dict; docs/meshes.md).
+c4::Scene read_scene(py::handle scene, const std::vector<std::string>& mesh_folders = {})
 {
   if (py::isinstance<c4::Scene>(scene)) return scene.cast<c4::Scene>();
   if (py::isinstance<py::dict>(scene)) {
     std::string text = Json_writer("<scene>").write(scene);
     py::gil_scoped_release release;
-    return c4::Scene::parse(text, "<scene>");
+    return c4::Scene::parse(text, "<scene>", mesh_folders);
   }
   static py::object* fspath = new py::object(py::module_::import("os").attr("fspath"));
   static py::object* fsdecode = new py::object(py::module_::import("os").attr("fsdecode"));
@@ -334,7 +336,7 @@ c4::Scene read_scene(py::handle scene)
   }
   std::string file = path.cast<std::string>();
   py::gil_scoped_release release;
-  return c4::Scene::read_file(file);
+  return c4::Scene::read_file(file, mesh_folders);
 }
 
 py::dict witness_dict(const c4::Colliding_pair& p)
@@ -669,7 +671,10 @@ Passed to check in place of the dict or path, its first exact check prepares
 it (model, bounds, pairs) and the next exact checks reuse that, with the
 scene's motions or with others (check(..., motions=[...])): the same
 answers, faster. Attributes: name, file, time (t_lo, t_hi), objects (names).)")
-      .def(py::init([](py::handle scene) { return read_scene(scene); }), py::arg("scene"))
+      .def(py::init([](py::handle scene, const std::vector<std::string>& allow_mesh_path) {
+             return read_scene(scene, allow_mesh_path);
+           }),
+           py::arg("scene"), py::kw_only(), py::arg("allow_mesh_path") = std::vector<std::string>{})
       .def_property_readonly("name", &c4::Scene::name)
       .def_property_readonly("file", &c4::Scene::file)
       .def_property_readonly("time", [](const c4::Scene& s) { return py::make_tuple(fraction(s.t_lo()), fraction(s.t_hi())); })

@@ -187,6 +187,24 @@ class Errors(unittest.TestCase):
         self.assertEqual(e.exit_code, clash4d.EXIT_INVALID)
         self.assertTrue(e.message)
 
+    def test_mesh_files_only_under_the_scene_folder(self):
+        # docs/meshes.md: a dict's meshes are relative to the current
+        # directory and must be under it, or under an allowed folder.
+        meshes = FIXTURES / "meshes"
+        s = scene(obj("a", {"mesh": str(meshes / "cube.off")}), obj("b", block((5, 5, 5), (6, 6, 6))))
+        old = os.getcwd()
+        try:
+            os.chdir(FIXTURES / "paper")
+            with self.assertRaises(clash4d.InputError) as c:
+                clash4d.Scene(s)
+            self.assertEqual(c.exception.place, "objects[0].shape.mesh")
+            self.assertIn("outside the scene's folder", str(c.exception))
+            self.assertFalse(clash4d.check(clash4d.Scene(s, allow_mesh_path=[str(meshes)]))["collide"])
+            os.chdir(meshes)
+            self.assertFalse(clash4d.check(s)["collide"])
+        finally:
+            os.chdir(old)
+
     def test_bad_fixture_file(self):
         path = FIXTURES / "bad" / "block_min_two_numbers.json"
         with self.assertRaises(clash4d.InputError) as c:
