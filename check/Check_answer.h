@@ -33,6 +33,10 @@ struct Check_options {
   // --stats, which sets this). Off by default: the clock reads are about
   // 5% of a convex pair's query (search/Stage_clock.h).
   bool stage_seconds = false;
+  // Candidate pairs checked at a time (check/Check_runner.h, run_pairs): the
+  // memory kept per pair is the chunk's. Any size gives the same answer;
+  // tests make it small to cross chunk boundaries.
+  std::size_t pair_chunk = 4096;
   bool json = false;          // output form (used by the command line only)
   Semantics semantics = Semantics::regularised;
 };

@@ -8,7 +8,9 @@
 #include "check/Pair_skeleton.h"
 #include "check/Pair_sweep.h"
 #include "numbers/Number_ops.h"
+#include "search/Work_budget.h"
 #include <boost/container/small_vector.hpp>
+#include <algorithm>
 #include <atomic>
 #include <mutex>
 #include <optional>
@@ -96,6 +98,11 @@ Result closed_pair(std::size_t i, Check_one& check, Check_stats& stats)
   return r;
 }
 
+// Pairs are checked a chunk (Check_options::pair_chunk) at a time: a Result
+// and a 700-byte Check_stats are kept per pair of the chunk, not of the
+// scene (issue 59 item 5: 2,000 overlapping blocks, 2 million candidate
+// pairs, took 1.76 GB), and the work budget is looked at between chunks.
+
 // Pairs are independent, so they are checked in parallel (TBB); results are
 // kept per pair and merged in pair order, so the answer is the one a single
 // thread gives: the first colliding pair in order, or the smallest t* with
@@ -105,78 +112,122 @@ Result closed_pair(std::size_t i, Check_one& check, Check_stats& stats)
 // own (exact/Filtered_result.h: it may hold another kernel's exact numbers),
 // its t* in K's numbers.
 template <class K, class Check_one, class Answer_one>
+class Pair_runner {
+public:
+  using FT = typename K::FT;
+  using Result = std::decay_t<std::invoke_result_t<Check_one&, std::size_t, const FT*, Semantics, Check_stats&>>;
+
+  Pair_runner(const K& k, const Check_options& options, Check_one& check, Answer_one& answer_one, Check_answer& answer)
+    : k_(k), options_(options), check_(check), answer_one_(answer_one), answer_(answer)
+  {}
+
+  // Pairs [from, to): checked, then merged into the answer in order. False
+  // when the answer is complete (any-collision mode found its pair).
+  bool run_chunk(std::size_t from, std::size_t to)
+  {
+    // One pair (the common query) inline: no allocation for either. Each
+    // pair's stats made empty in place, timed as the run (what fresh() gives,
+    // without copying a 700-byte struct per pair).
+    boost::container::small_vector<Result, 1> results(to - from);
+    boost::container::small_vector<Check_stats, 1> stats(to - from);
+    for (Check_stats& s : stats) s.timed = answer_.stats.timed;
+    std::atomic<std::size_t> first_hit{to};   // any-collision mode: lowest colliding index
+    auto check_one = [&](std::size_t i) {
+      if (!options_.all_pairs && !options_.earliest && i > first_hit.load()) return;
+      Result& r = results[i - from];
+      r = decide(i, stats[i - from]);
+      if (!collides(r)) return;
+      if (options_.earliest) lower_best(collision_time(r));
+      std::size_t seen = first_hit.load();
+      while (i < seen && !first_hit.compare_exchange_weak(seen, i)) {}
+    };
+    // In a context of its own: a caller's cancellation (another case of a
+    // fuzz batch throwing) would otherwise end this loop early and silently,
+    // leaving pairs unchecked, a "no collision" nobody decided.
+    // One pair (the common query) is checked here: no tasks to share.
+    if (to - from == 1) {
+      check_one(from);
+    } else {
+      tbb::task_group_context own(tbb::task_group_context::isolated);
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(from, to, 1),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t i = r.begin(); i != r.end(); ++i) check_one(i);
+                        },
+                        own);
+    }
+    return merge(results, stats);
+  }
+
+  // --earliest alone: only the earliest pair is reported (others may have
+  // been cut short by the ceiling), moved to the front: a copy of its texts
+  // was a tenth of an --earliest query.
+  void keep_earliest_only()
+  {
+    if (!options_.earliest || options_.all_pairs || answer_.earliest_pair < 0) return;
+    auto first = static_cast<std::size_t>(answer_.earliest_pair);
+    if (first > 0) std::swap(answer_.pairs.front(), answer_.pairs[first]);
+    answer_.pairs.erase(answer_.pairs.begin() + 1, answer_.pairs.end());
+    answer_.earliest_pair = 0;
+  }
+
+private:
+  const K& k_;
+  const Check_options& options_;
+  Check_one& check_;
+  Answer_one& answer_one_;
+  Check_answer& answer_;
+  std::mutex best_mutex_;
+  std::optional<FT> best_;          // the least t* found so far (--earliest): a ceiling for later pairs
+  std::optional<FT> merged_best_;   // the least t* merged into the answer
+
+  Result decide(std::size_t i, Check_stats& stats)
+  {
+    std::optional<FT> ceiling;
+    if (options_.earliest && !options_.all_pairs) {
+      std::lock_guard<std::mutex> lock(best_mutex_);
+      ceiling = best_;
+    }
+    return options_.semantics == Semantics::closed && !options_.earliest
+               ? closed_pair<Result>(i, check_, stats)
+               : check_(i, ceiling ? &*ceiling : nullptr, options_.semantics, stats);
+  }
+
+  void lower_best(const FT& t)
+  {
+    std::lock_guard<std::mutex> lock(best_mutex_);
+    if (!best_ || k_.less(t, *best_)) best_ = t;
+  }
+
+  template <class Results, class Stats>
+  bool merge(const Results& results, const Stats& stats)
+  {
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      answer_.stats.add(stats[i]);
+      const Result& r = results[i];
+      if (!collides(r)) continue;
+      if (!options_.all_pairs && !options_.earliest && answer_.collide) return false;
+      answer_.collide = true;
+      answer_one_(r, answer_.pairs.emplace_back());
+      if (options_.earliest && (!merged_best_ || k_.less(collision_time(r), *merged_best_))) {
+        merged_best_ = collision_time(r);
+        answer_.earliest_pair = static_cast<int>(answer_.pairs.size()) - 1;
+      }
+    }
+    return options_.all_pairs || options_.earliest || !answer_.collide;
+  }
+};
+
+template <class K, class Check_one, class Answer_one>
 void run_pairs(const K& k, const std::vector<std::pair<int, int>>& pairs, const Check_options& options,
                Check_one check, Answer_one answer_one, Check_answer& answer)
 {
-  using FT = typename K::FT;
-  using Result = std::decay_t<std::invoke_result_t<Check_one&, std::size_t, const FT*, Semantics, Check_stats&>>;
-  // One pair (the common query) inline: no allocation for either. Each
-  // pair's stats made empty in place, timed as the run (what fresh() gives,
-  // without copying a 700-byte struct per pair).
-  boost::container::small_vector<Result, 1> results(pairs.size());
-  boost::container::small_vector<Check_stats, 1> stats(pairs.size());
-  for (Check_stats& s : stats) s.timed = answer.stats.timed;
-  std::atomic<std::size_t> first_hit{pairs.size()};      // any-collision mode: lowest colliding index
-  // The least t* found so far (--earliest): none until one is, and no
-  // number made without --earliest (a rational is an allocation).
-  std::mutex best_mutex;
-  std::optional<FT> best;
-  auto check_one = [&](std::size_t i) {
-    if (!options.all_pairs && !options.earliest && i > first_hit.load()) return;
-    std::optional<FT> ceiling;
-    if (options.earliest && !options.all_pairs) {
-      std::lock_guard<std::mutex> lock(best_mutex);
-      ceiling = best;
-    }
-    results[i] = options.semantics == Semantics::closed && !options.earliest
-                     ? closed_pair<Result>(i, check, stats[i])
-                     : check(i, ceiling ? &*ceiling : nullptr, options.semantics, stats[i]);
-    if (!collides(results[i])) return;
-    if (options.earliest) {
-      std::lock_guard<std::mutex> lock(best_mutex);
-      const FT& t = collision_time(results[i]);
-      if (!best || k.less(t, *best)) best = t;
-    }
-    std::size_t seen = first_hit.load();
-    while (i < seen && !first_hit.compare_exchange_weak(seen, i)) {}
-  };
-  // In a context of its own: a caller's cancellation (another case of a
-  // fuzz batch throwing) would otherwise end this loop early and silently,
-  // leaving pairs unchecked, a "no collision" nobody decided.
-  // One pair (the common query) is checked here: no tasks to share.
-  if (pairs.size() == 1) {
-    check_one(0);
-  } else {
-    tbb::task_group_context own(tbb::task_group_context::isolated);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 1),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t i = r.begin(); i != r.end(); ++i) check_one(i);
-                      },
-                      own);
+  Pair_runner<K, Check_one, Answer_one> runner(k, options, check, answer_one, answer);
+  std::size_t chunk = std::max<std::size_t>(1, options.pair_chunk);
+  for (std::size_t from = 0; from < pairs.size(); from += chunk) {
+    if (from > 0) Work_budget::check();
+    if (!runner.run_chunk(from, std::min(pairs.size(), from + chunk))) break;
   }
-
-  std::optional<FT> merged_best;
-  for (std::size_t i = 0; i < pairs.size(); ++i) {
-    answer.stats.add(stats[i]);
-    const Result& r = results[i];
-    if (!collides(r)) continue;
-    if (!options.all_pairs && !options.earliest && answer.collide) break;
-    answer.collide = true;
-    answer_one(r, answer.pairs.emplace_back());
-    if (options.earliest && (!merged_best || k.less(collision_time(r), *merged_best))) {
-      merged_best = collision_time(r);
-      answer.earliest_pair = static_cast<int>(answer.pairs.size()) - 1;
-    }
-  }
-  if (options.earliest && !options.all_pairs && answer.earliest_pair >= 0) {
-    // Report only the earliest pair (others may have been cut short by the
-    // ceiling), moved to the front: a copy of its texts was a tenth of an
-    // --earliest query.
-    auto first = static_cast<std::size_t>(answer.earliest_pair);
-    if (first > 0) std::swap(answer.pairs.front(), answer.pairs[first]);
-    answer.pairs.erase(answer.pairs.begin() + 1, answer.pairs.end());
-    answer.earliest_pair = 0;
-  }
+  runner.keep_earliest_only();
 }
 
 // Object pairs the sweep keeps (§6), written into pairs (certain: see

@@ -11,6 +11,7 @@
 
 #include "geometry/Box.h"
 #include "model/Scene_model.h"
+#include "search/Work_budget.h"
 #include <CGAL/box_intersection_d.h>
 #include <boost/container/small_vector.hpp>
 #include <algorithm>
@@ -60,7 +61,10 @@ public:
     items.reserve(model.objects.size());   // one box per object and motion segment: most objects have one
     for (std::size_t i = 0; i < model.objects.size(); ++i) add_boxes(model, static_cast<int>(i), root_of(i), items);
     boost::container::small_vector<std::pair<std::pair<int, int>, bool>, 4> found;   // a pair, per meeting boxes: certainly?
+    std::size_t reports = 0;
     auto report = [&](const Item& x, const Item& y) {
+      // Many overlapping objects report n^2 pairs: the budget bounds that too.
+      if (++reports % 65536 == 0) Work_budget::check();
       if (x.object == y.object || !overlaps(x.box, y.box)) return;
       int i = std::min(x.object, y.object), j = std::max(x.object, y.object);
       if (!scene.ignored(i, j)) found.push_back({{i, j}, certain && surely_overlaps(x.box, y.box)});

@@ -51,6 +51,9 @@ int load(const std::string& file, Scene& scene, std::ostream& err)
 {
   try {
     scene = read_scene_file(file, allowed_mesh_folders);
+    // Reading may take long (a mesh's convex decomposition is one CGAL call
+    // that cannot be cut short): past the budget, no answer (issue 59 item 6).
+    Work_budget::check();
     return 0;
   } catch (const Input_error& e) {
     err << e.format(file) << "\n";
@@ -631,7 +634,7 @@ Command add_report(CLI::App& app, std::ostream& out, std::ostream& err)
     o.earliest = true;
     o.semantics = *semantics_from_name(a->semantics);
     if (!apply_subject_args(a->subjects, o, "report", err)) return CLASH4D_EXIT_INVALID;
-    Report_inputs inputs{a->inputs, o, ccd_options_of(o, a->ccd), ccd_type_of(a->ccd)};
+    Report_inputs inputs{a->inputs, o, ccd_options_of(o, a->ccd), ccd_type_of(a->ccd), allowed_mesh_folders};
     return report_command(inputs, a->out, out, err);
   };
 }
@@ -674,7 +677,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
                      "stop with exit 3 when the run takes longer than S seconds, printing no answer (fuzz: saved "
                      "up to its last finished batch, resumable; default: unlimited)")
         ->check(CLI::PositiveNumber);
-  for (const char* name : {"validate", "extrude", "check", "skeleton"})
+  for (const char* name : {"validate", "extrude", "check", "skeleton", "compare", "report"})
     app.get_subcommand(name)
         ->add_option("--allow-mesh-path", allowed_mesh_folders,
                      "let the scene's mesh files be under DIR too (repeatable; by default a mesh file must be under "
