@@ -218,11 +218,12 @@ void add_fuzz_folder(const fs::path& dir, std::vector<Report_case>& cases)
   }
 }
 
-void add_scene_file(const fs::path& file, const Compare_options& compare, std::vector<Report_case>& cases)
+void add_scene_file(const fs::path& file, const Report_inputs& inputs, std::vector<Report_case>& cases)
 {
+  const Compare_options& compare = inputs.scenes;
   Scene scene;
   try {
-    scene = read_scene_file(file.string());
+    scene = read_scene_file(file.string(), inputs.mesh_folders);
   } catch (const Input_error& e) {
     throw std::runtime_error(e.format(file.string()));
   }
@@ -245,7 +246,7 @@ void add_ccd_file(const fs::path& file, const Report_inputs& inputs, std::vector
 void add_file(const fs::path& file, const Report_inputs& inputs, std::vector<Report_case>& cases)
 {
   if (is_ccd_query_file(file.string())) add_ccd_file(file, inputs, cases);
-  else add_scene_file(file, inputs.scenes, cases);
+  else add_scene_file(file, inputs, cases);
 }
 
 // A folder's scene and query files, by name.

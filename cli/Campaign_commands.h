@@ -59,6 +59,7 @@ struct Report_inputs {
   Compare_options scenes;
   Ccd_compare_options queries;
   std::optional<Ccd_type> type;   // --type
+  std::vector<std::string> mesh_folders;   // --allow-mesh-path (docs/meshes.md)
 };
 int report_command(const Report_inputs& inputs, const std::string& out_dir, std::ostream& out, std::ostream& err);
 

@@ -33,11 +33,11 @@ static int read_certificate(const std::string& cert_file, double max_mb, Json& c
 }
 
 int run_verify(const std::string& scene_file, const std::string& cert_file, double certificate_max_mb,
-               std::ostream& out, std::ostream& err)
+               std::ostream& out, std::ostream& err, const std::vector<std::string>& mesh_folders)
 {
   Scene scene;
   try {
-    scene = read_scene_file(scene_file);
+    scene = read_scene_file(scene_file, mesh_folders);
   } catch (const Input_error& e) {   // a scene beyond the reader's limits cannot be read either
     err << "clash4d verify: " << e.format(scene_file) << "\n";
     return CLASH4D_VERIFY_UNREADABLE;
@@ -61,6 +61,7 @@ std::function<int()> add_verify(CLI::App& app, std::ostream& out, std::ostream& 
   struct Args {
     std::string scene, certificate;
     double certificate_max_mb = 256;
+    std::vector<std::string> mesh_folders;
   };
   auto a = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("verify", "Check a certificate written by check --certificate against the scene, "
@@ -72,8 +73,11 @@ std::function<int()> add_verify(CLI::App& app, std::ostream& out, std::ostream& 
   cmd->add_option("--certificate-max-mb", a->certificate_max_mb,
                   "refuse (exit 3) a certificate larger than this, unread (default 256, as check writes)")
       ->check(CLI::PositiveNumber)->check(CLI::Range(0.0, 1048576.0));
+  cmd->add_option("--allow-mesh-path", a->mesh_folders,
+                  "let the scene's mesh files be under DIR too (repeatable; docs/meshes.md)")
+      ->type_name("DIR")->allow_extra_args(false)->check(CLI::ExistingDirectory);
   return [cmd, a, &out, &err] {
-    return cmd->parsed() ? run_verify(a->scene, a->certificate, a->certificate_max_mb, out, err) : -1;
+    return cmd->parsed() ? run_verify(a->scene, a->certificate, a->certificate_max_mb, out, err, a->mesh_folders) : -1;
   };
 }
 
