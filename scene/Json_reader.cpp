@@ -118,7 +118,24 @@ private:
     return path;
   }
   std::string value_path() const { return container_path(true); }
-  bool number(const std::string& s) { Json_value v; v.kind = Json_value::Kind::Number; v.text = s; return add(std::move(v)); }
+  bool number(const std::string& s)
+  {
+    // The number rule's limits hold for every number token, meta's included
+    // (the Python verifier's reader refuses them there too); only a long
+    // token or one with an exponent can exceed them.
+    if (s.size() > CLASH4D_MAX_NUMBER_CHARS || s.find_first_of("eE") != std::string::npos) {
+      Number_parse p = parse_number_text(s, false);
+      if (p.limit) {
+        exit_code = CLASH4D_EXIT_LIMIT;
+        place = value_path();
+        return fail("'" + s.substr(0, 40) + (s.size() > 40 ? "...' " : "' ") + "is refused: " + p.error);
+      }
+    }
+    Json_value v;
+    v.kind = Json_value::Kind::Number;
+    v.text = s;
+    return add(std::move(v));
+  }
   bool open(Json_value::Kind k)
   {
     if (stack_.size() >= CLASH4D_MAX_JSON_DEPTH) {

@@ -559,6 +559,39 @@ BOOST_DATA_TEST_CASE(conformance_corpus, boost::unit_test::data::make(conformanc
   if (status != 0) BOOST_TEST(err.str().find(c.certificate) != std::string::npos, err.str());
 }
 
+// The scene documents of the same corpus (conformance/scenes, issue 59 item
+// 15): the C++ scene reader (validate) and the verifier's reading of the
+// scene, each with the exit code the manifest gives from
+// docs/scene-format.md; the Python verifier's test runs them too.
+namespace {
+
+struct Scene_document_case {
+  std::string name;
+  int validate, verify;
+  std::string why;
+};
+std::ostream& operator<<(std::ostream& o, const Scene_document_case& c) { return o << c.name; }
+
+std::vector<Scene_document_case> scene_document_cases()
+{
+  std::ifstream in(conformance + "scenes/manifest.json");
+  std::vector<Scene_document_case> out;
+  for (const Json& c : Json::parse(in)["cases"]) out.push_back({c["scene"], c["validate"], c["verify"], c["why"]});
+  return out;
+}
+
+} // namespace
+
+BOOST_DATA_TEST_CASE(conformance_scene_documents, boost::unit_test::data::make(scene_document_cases()), c)
+{
+  std::string scene = conformance + "scenes/" + c.name;
+  Cli_run v = run_clash4d({"validate", scene});
+  BOOST_TEST(v.status == c.validate, c.name << " (" << c.why << "): " << v.err);
+  std::ostringstream out, err;
+  int status = run_verify(scene, conformance + "valid.json", 256, out, err);
+  BOOST_TEST(status == c.verify, c.name << " (" << c.why << "): " << err.str());
+}
+
 // Issue 59 item 4: a 300-point hull on a cube's faces (gift wrapping, not
 // the O(n^4) triples) and a 9,999-segment motion (binary search per piece)
 // verify within the suite's ordinary time. Hull x - 1000 and the block's

@@ -24,6 +24,7 @@ STEP_LIMIT = 10_000_000      # s4: steps of term enumeration in one certificate
 MAX_SPLIT_DEPTH = 2000       # s4: splits nested deeper are refused
 SEMANTICS = ("regularised", "closed")
 MAX_EXPONENT = 1000          # the scene reader's limit on a decimal exponent
+MAX_NUMBER_CHARS = 1000      # and on the characters of one number
 MAX_NESTING = 5000           # s6: JSON nested deeper is refused (exit 3)
 
 # s1: integers of any length, as the C++ checker (GMP) reads them; Python
@@ -58,13 +59,20 @@ def line_column(data, i):
     return f"line {line}, column {i - start + 1}"
 
 
-def read_text(filename):
-    """s1's text rules: UTF-8, one leading byte-order mark skipped, no NUL byte."""
+MAX_SCENE_BYTES = 64 << 20          # the scene reader's limit (docs/scene-format.md): unreadable beyond
+MAX_CERTIFICATE_BYTES = 256 << 20   # clash4d verify's default --certificate-max-mb: exit 3 beyond
+
+
+def read_text(filename, max_bytes, over):
+    """s1's text rules: UTF-8, one leading byte-order mark skipped, no NUL byte; at most
+    max_bytes, read no further (`over` is raised beyond)."""
     try:
         with open(filename, "rb") as f:
-            data = f.read()
+            data = f.read(max_bytes + 1)
     except OSError as e:
         raise Unreadable(filename, f"cannot read: {e}")
+    if len(data) > max_bytes:
+        raise over(filename, f"file larger than the limit of {max_bytes >> 20} MiB")
     nul = data.find(b"\0")
     if nul >= 0:
         raise Unreadable(f"{filename}: {line_column(data, nul)}", "a NUL byte (section 1)")
@@ -75,8 +83,8 @@ def read_text(filename):
     return text[1:] if text.startswith("\ufeff") else text
 
 
-def load_json(filename, **options):
-    text = read_text(filename)
+def load_json(filename, max_bytes, over, **options):
+    text = read_text(filename, max_bytes, over)
     try:
         return json.loads(text, **options)
     except RecursionError:
@@ -113,7 +121,7 @@ SURROGATE = re.compile("[\ud800-\udfff]")    # an escaped lone surrogate: not Un
 
 def load_certificate(filename):
     """The certificate's JSON by s1's rules, each failure at its JSON path."""
-    doc = load_json(filename, parse_int=JsonNumber, parse_float=JsonNumber,
+    doc = load_json(filename, MAX_CERTIFICATE_BYTES, Limit, parse_int=JsonNumber, parse_float=JsonNumber,
                     parse_constant=JsonNumber, object_pairs_hook=certificate_object)
     keys = [None]                  # per open level: the key or index being read
     stack = [iter(((None, doc),))]
@@ -158,6 +166,8 @@ CERT_NUMBER = re.compile(r"-?[0-9]+(/[0-9]+)?")         # s1: "-12" or "p/q"
 
 def scene_number_from_text(text):
     """A number of the scene format, exactly, from its text (decimal, exponent, p/q)."""
+    if len(text) > MAX_NUMBER_CHARS:
+        raise ValueError(f"number longer than the limit of {MAX_NUMBER_CHARS} characters: {text[:40]!r}...")
     m = SCENE_NUMBER.fullmatch(text)
     if not m:
         raise ValueError(f"not a number: {text!r}")
@@ -436,7 +446,7 @@ class SceneReader:
 
     def __init__(self, filename):
         self.file = filename
-        doc = load_json(filename, parse_float=scene_number_from_text, parse_int=Fraction,
+        doc = load_json(filename, MAX_SCENE_BYTES, Unreadable, parse_float=scene_number_from_text, parse_int=scene_number_from_text,
                         parse_constant=self.constant, object_pairs_hook=self.unique_keys)
         self.keys(doc, "", {"format", "time", "objects"}, {"name", "ignore", "meta"})
         if not isinstance(doc.get("name", ""), str):
