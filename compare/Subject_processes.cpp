@@ -207,12 +207,16 @@ void on_signal(int sig)
   errno = saved;
 }
 
-// Once, before the first subject: the subreaper and the signal handlers
-// (only over the default action: an ignored signal stays ignored).
+// Whether keep_descendants() made this process their keeper.
+std::atomic<bool> keeper{false};
+
+// Once: the subreaper and the signal handlers (only over the default
+// action: an ignored signal stays ignored).
 void guard()
 {
   static std::once_flag once;
   std::call_once(once, [] {
+    keeper = true;
     ::prctl(PR_SET_CHILD_SUBREAPER, 1);
     for (int sig : {SIGTERM, SIGINT, SIGHUP}) {
       struct sigaction old {}, sa {};
@@ -225,7 +229,6 @@ void guard()
 }
 #else
 void guard() {}
-void sweep(pid_t) {}
 #endif
 
 // In the child, before exec: only async-signal-safe calls.
@@ -250,9 +253,10 @@ void sweep(pid_t) {}
 
 } // namespace
 
+void keep_descendants() { guard(); }
+
 pid_t start(const std::string& command, int in, int out)
 {
-  guard();
   // Everything the child needs, made before fork: it may not allocate.
   pid_t parent = ::getpid();
   std::vector<std::string> env;
@@ -281,7 +285,9 @@ void end(pid_t leader, bool reaped, int& status)
   if (!reaped) reap(leader, &status);
   std::lock_guard<std::mutex> lock(fork_mutex);
   forget(leader);
-  sweep(leader);
+#ifdef __linux__
+  if (keeper) sweep(leader);   // a library in another program reaps none of its children
+#endif
 }
 
 } // namespace clash4d::subject_processes

@@ -32,6 +32,15 @@ pid_t start(const std::string& command, int in, int out);
 // descendant that came back to clash4d, until none is left (bounded).
 void end(pid_t leader, bool reaped, int& status);
 
+// Makes this process the keeper of its subjects' descendants: a child
+// subreaper that kills and reaps what comes back to it (zombies included)
+// and the SIGTERM, SIGINT and SIGHUP handlers above. For a program that
+// owns all of its children, as the clash4d command does (cli/main.cpp); a
+// program that embeds the library and waits for children of its own
+// (Python's subprocess) must not call it, and then only the subjects'
+// groups are killed.
+void keep_descendants();
+
 } // namespace clash4d::subject_processes
 
 #endif

@@ -11,6 +11,7 @@
 #include "support/Comparison_rows.h"
 #include "compare/Comparer.h"
 #include "compare/External_subject.h"
+#include "compare/Subject_processes.h"
 #include "compare/Fuzz_campaign.h"
 #include "scene/Scene_builder.h"
 #include "scene/Scene_reader.h"
@@ -327,6 +328,8 @@ BOOST_AUTO_TEST_CASE(the_python_sampling_subject_tunnels_and_counts_touching)
 // gone at the end of the run, as is the subject.
 BOOST_AUTO_TEST_CASE(nothing_a_subject_started_outlives_a_normal_end)
 {
+  // This test program owns its children, as the clash4d command does.
+  subject_processes::keep_descendants();
   fs::path dir = scratch("escape");
   fs::path pids = dir / "pids";
   compare_json({fixture("contact/face_touch_static.json"), fixture("contact/clear_collision_head_on.json")},
