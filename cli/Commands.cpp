@@ -682,7 +682,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
         ->add_option("--allow-mesh-path", allowed_mesh_folders,
                      "let the scene's mesh files be under DIR too (repeatable; by default a mesh file must be under "
                      "the scene's own folder, docs/meshes.md)")
-        ->type_name("DIR")->allow_extra_args(false)->check(CLI::ExistingDirectory);
+        ->type_name("DIR")->allow_extra_args(false)->check(CLI::ExistingDirectory.description(""));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -75,7 +75,7 @@ std::function<int()> add_verify(CLI::App& app, std::ostream& out, std::ostream& 
       ->check(CLI::PositiveNumber)->check(CLI::Range(0.0, 1048576.0));
   cmd->add_option("--allow-mesh-path", a->mesh_folders,
                   "let the scene's mesh files be under DIR too (repeatable; docs/meshes.md)")
-      ->type_name("DIR")->allow_extra_args(false)->check(CLI::ExistingDirectory);
+      ->type_name("DIR")->allow_extra_args(false)->check(CLI::ExistingDirectory.description(""));
   return [cmd, a, &out, &err] {
     return cmd->parsed() ? run_verify(a->scene, a->certificate, a->certificate_max_mb, out, err, a->mesh_folders) : -1;
   };

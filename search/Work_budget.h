@@ -26,7 +26,7 @@ struct Budget_exceeded {
 struct Run_cancelled {};
 
 // The budget of one run of the public API (its max_seconds and cancel flag),
-// which the threads doing that run look at (Work_budget::Scope) instead of
+// which the threads doing that run look at (this_thread_run) instead of
 // the process's: concurrent runs keep their own limits.
 struct Run_budget {
   double seconds = 0;                            // 0: no deadline
