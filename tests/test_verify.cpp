@@ -575,8 +575,9 @@ std::ostream& operator<<(std::ostream& o, const Scene_document_case& c) { return
 std::vector<Scene_document_case> scene_document_cases()
 {
   std::ifstream in(conformance + "scenes/manifest.json");
+  Json manifest = Json::parse(in);   // kept: a range over a temporary's member would dangle
   std::vector<Scene_document_case> out;
-  for (const Json& c : Json::parse(in)["cases"]) out.push_back({c["scene"], c["validate"], c["verify"], c["why"]});
+  for (const Json& c : manifest["cases"]) out.push_back({c["scene"], c["validate"], c["verify"], c["why"]});
   return out;
 }
 
