@@ -502,9 +502,10 @@ namespace {
 
 const std::string conformance = std::string(CLASH4D_FIXTURES) + "/certificates/conformance/";
 
-Json manifest()
+// The corpus's manifest, or one of its folders' ("scenes/manifest.json").
+Json manifest(const std::string& name = "manifest.json")
 {
-  std::ifstream in(conformance + "manifest.json");
+  std::ifstream in(conformance + name);
   return Json::parse(in);
 }
 
@@ -574,10 +575,9 @@ std::ostream& operator<<(std::ostream& o, const Scene_document_case& c) { return
 
 std::vector<Scene_document_case> scene_document_cases()
 {
-  std::ifstream in(conformance + "scenes/manifest.json");
-  Json manifest = Json::parse(in);   // kept: a range over a temporary's member would dangle
+  Json scenes = manifest("scenes/manifest.json");   // kept: a range over a temporary's member would dangle
   std::vector<Scene_document_case> out;
-  for (const Json& c : manifest["cases"]) out.push_back({c["scene"], c["validate"], c["verify"], c["why"]});
+  for (const Json& c : scenes["cases"]) out.push_back({c["scene"], c["validate"], c["verify"], c["why"]});
   return out;
 }
 
