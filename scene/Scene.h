@@ -52,13 +52,37 @@ struct Solid {
 // reader does it for every scene it reads).
 void approximate_numbers(Solid& s);
 
+// One pose of a pose motion (spec: Motion with rotation (poses)): at time t
+// the object occupies { R(rotate) p + translate : p in shape }, R the
+// un-normalised quaternion's rational matrix (geometry/Rotation_matrix.h).
+struct Pose {
+  Rational t;
+  std::array<Rational, 3> translate{Rational(0), Rational(0), Rational(0)};
+  std::array<Rational, 4> rotate{Rational(1), Rational(0), Rational(0), Rational(0)};   // w x y z, != 0
+};
+
 struct Motion {
+  // The poses as written ({"poses": [...]}); empty for a ROBMOD string. A
+  // pose motion that never rotates is also read into times and velocities
+  // (a piecewise-linear translation, spec: "a motion written either way
+  // gives the same answers"); one that rotates is not (rotates()).
+  std::vector<Pose> poses;
   std::vector<Rational> times;                    // strictly increasing breakpoints
   std::vector<std::array<Rational, 3>> velocities; // times.size() + 1 segments
   // Their approximations, as a Solid's (made by approximate_numbers):
   // the times, and the velocities' coordinates in order (3 per segment).
   // A motion made or changed in code without them is converted.
   std::vector<Approximation> times_approximated, velocities_approximated;
+
+  // Whether some pose turns the shape: a rotate with x, y or z non-zero
+  // (a quaternion (w, 0, 0, 0) is the identity, whatever w).
+  bool rotates() const
+  {
+    for (const Pose& p : poses)
+      for (int i = 1; i < 4; ++i)
+        if (p.rotate[i] != 0) return true;
+    return false;
+  }
 };
 
 // The motion's numbers approximated, once (the reader does it for every
