@@ -1,6 +1,7 @@
 #include "cli/Commands.h"
 #include "cli/Campaign_commands.h"
 #include "cli/Ccd_command.h"
+#include "cli/Rotating_check_command.h"
 #include "cli/Stats_json.h"
 #include "certify/Certificate_writer.h"
 #include "cli/Verify_command.h"
@@ -9,6 +10,7 @@
 #include "compare/Comparer.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
+#include "rotation/Rotating_check.h"
 #include "scene/Files.h"
 #include "scene/Input_error.h"
 #include "scene/Printable.h"
@@ -451,6 +453,8 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
     a->options.stage_seconds = a->stats;   // the stage clocks are read only when printed
     a->options.semantics = *semantics_from_name(a->semantics);
     return with_scene(*a, err, [&](const Scene& scene) {
+      if (scene_rotates(scene))   // time slices (rotation/), regularised-semantics.md facts 9-12
+        return run_rotating_check(scene, {a->file, a->number, a->certificate, a->options, a->stats}, out, err);
       Check_answer answer = instantiation(a->number).check(scene, a->options, a->tolerance);
       if (!a->certificate.empty()) {
         // Before the answer is printed: a certificate that cannot be made

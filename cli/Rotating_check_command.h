@@ -1,0 +1,27 @@
+// `check` on a scene where some object turns (rotation/Rotating_check.h):
+// the same options and the same output as for translations (spec: clash4d
+// check), with t* and points printed as the spec's algebraic-number object
+// where rotation makes them irrational.
+#ifndef CLASH4D_CLI_ROTATING_CHECK_COMMAND_H
+#define CLASH4D_CLI_ROTATING_CHECK_COMMAND_H
+
+#include "check/Check_answer.h"
+#include "scene/Scene.h"
+#include <iosfwd>
+#include <string>
+
+namespace clash4d {
+
+struct Rotating_check_request {
+  std::string file, number, certificate;
+  Check_options options;
+  bool stats = false;
+};
+
+// The exit status: 0 no collision, 1 collision, 2 a question this release
+// does not decide for rotating scenes (named, never a guess).
+int run_rotating_check(const Scene& scene, const Rotating_check_request& r, std::ostream& out, std::ostream& err);
+
+} // namespace clash4d
+
+#endif

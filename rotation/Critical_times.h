@@ -1,0 +1,54 @@
+// The critical times of a pair on an open time interval (regularised-
+// semantics.md, fact 10): the real roots of the minors of the matrix whose
+// rows are the pair's planes v_i(t) = (n_i(t), e_i(t)) and v_inf = (0, 0, 0,
+// 1). Between two consecutive critical times every minor keeps its sign, so
+// the pair's oriented matroid, hence every answer about the pair at time t,
+// is constant there. Minors whose planes all come from one object keep
+// their sign under a rigid motion and are left out. When neither object's
+// normals span space (a slab against a half-space) the rank can be below
+// four, and the 3 x 3 minors of each three columns are taken too.
+#ifndef CLASH4D_ROTATION_CRITICAL_TIMES_H
+#define CLASH4D_ROTATION_CRITICAL_TIMES_H
+
+#include "numbers/Algebraic.h"
+#include "rotation/Moving_planes.h"
+#include <array>
+#include <vector>
+
+namespace clash4d {
+
+// Four rows of the matrix; -1 stands for v_inf. A 3 x 3 minor of columns
+// other than x, y, z (low rank only) is not kept: it names no contact.
+using Minor_rows = std::array<int, 4>;
+
+struct Critical_time {
+  Algebraic t;
+  std::vector<Minor_rows> vanishing;   // the minors with a root at t
+};
+
+class Critical_times {
+public:
+  // rows: the first object's planes, then the second's (first_count of
+  // them); the interval (lo, hi), lo < hi.
+  Critical_times(const std::vector<Moving_plane>& rows, std::size_t first_count, const Rational& lo,
+                 const Rational& hi, bool low_rank);
+
+  // Ascending, distinct, each strictly inside (lo, hi).
+  const std::vector<Critical_time>& times() const { return times_; }
+  std::size_t minor_count() const { return minor_count_; }
+
+private:
+  std::vector<Critical_time> times_;
+  std::size_t minor_count_ = 0;
+};
+
+// det [n_i; n_j; n_k] (normals only) and the 4 x 4 determinant of four rows.
+Time_poly normal_minor(const Moving_plane& a, const Moving_plane& b, const Moving_plane& c);
+
+// The coefficients without trailing zeros, made monic: one key per
+// polynomial up to a non-zero factor; empty for the zero polynomial.
+std::vector<Rational> monic(const Time_poly& p);
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,60 @@
+// One pair of objects of which at least one turns, decided exactly by time
+// slices (regularised-semantics.md, facts 9 to 12): the critical times of
+// the pair's planes cut [tL, tH] into open intervals on which every answer
+// about the pair is constant; the static question is asked at one rational
+// sample per interval (and, in closed semantics, at each critical time),
+// and the static question is the static pipeline's (exact/), unchanged.
+#ifndef CLASH4D_ROTATION_ROTATING_PAIR_H
+#define CLASH4D_ROTATION_ROTATING_PAIR_H
+
+#include "check/Check_answer.h"
+#include "numbers/Algebraic.h"
+#include "rotation/Pose_segments.h"
+#include "rotation/Shape_planes.h"
+#include "scene/Scene.h"
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace clash4d {
+
+// An object as the rotation stage reads it.
+struct Rotating_object {
+  const Scene_object* object = nullptr;
+  Shape_planes shape;
+  std::vector<Pose_segment> segments;
+
+  static Rotating_object make(const Scene_object& o);
+};
+
+// A question this release of the stage cannot decide exactly (the reason
+// names it); the command reports it as unsupported input, never as an answer.
+struct Rotation_unsupported : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Rotating_answer {
+  bool collide = false;
+  // Regularised: a rational generic point inside both at a rational time.
+  // Closed: a point of both closed objects, possibly at an irrational time.
+  std::array<Algebraic, 4> witness;
+  bool witness_verified = false;
+  bool earliest = false;
+  Algebraic t_star;                  // with --earliest
+  std::array<Algebraic, 3> contact;  // a point of the closure at t*
+  bool at_start = false;
+};
+
+// The static question at a rational time: check_exact or check_rational.
+using Static_check = Check_answer (*)(const Scene&, const Check_options&);
+
+Rotating_answer decide_rotating_pair(const Rotating_object& a, const Rotating_object& b, const Rational& t_lo,
+                                     const Rational& t_hi, const Check_options& options, Static_check check);
+
+// The scene of the two objects at rest, placed as they are at time t.
+Scene posed_pair(const Rotating_object& a, const Rotating_object& b, const Rational& t);
+
+} // namespace clash4d
+
+#endif

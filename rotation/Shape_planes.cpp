@@ -1,0 +1,86 @@
+#include "rotation/Shape_planes.h"
+
+#include "model/Far_bound.h"
+#include "model/Model_builder.h"
+
+#include <map>
+
+namespace clash4d {
+
+namespace {
+
+Rational magnitude(const Rational& x) { return x < 0 ? -x : x; }
+
+// The plane scaled so its first non-zero coefficient is 1 or -1 ... and the
+// sign: +1 when the scaling was by a positive number.
+std::pair<Plane3<Rational>, int> canonical(const Plane3<Rational>& p)
+{
+  int lead = 0;
+  while (lead < 4 && CGAL::sign(p[lead]) == CGAL::ZERO) ++lead;
+  if (lead == 4) return {p, 1};
+  Rational s = magnitude(p[lead]);
+  Plane3<Rational> c = p;
+  for (auto& x : c) x /= s;
+  int orientation = 1;
+  if (c[lead] < 0) {
+    for (auto& x : c) x = -x;
+    orientation = -1;
+  }
+  return {c, orientation};
+}
+
+bool union_of_primitives(const Csg_model<Rational>& csg)
+{
+  for (const Csg_node& n : csg.nodes)
+    if (n.op != Csg_node::Op::Primitive && n.op != Csg_node::Op::Union) return false;
+  return true;
+}
+
+struct Plane_less {
+  bool operator()(const Plane3<Rational>& a, const Plane3<Rational>& b) const
+  {
+    for (int i = 0; i < 4; ++i) {
+      if (a[i] < b[i]) return true;
+      if (b[i] < a[i]) return false;
+    }
+    return false;
+  }
+};
+
+} // namespace
+
+Shape_planes shape_planes(const Solid& shape)
+{
+  far_bound_detail::Exact_reader reader;
+  Csg_model<Rational> csg = Model_builder<far_bound_detail::Exact_reader>(reader).build(shape);
+  Shape_planes out;
+  std::map<Plane3<Rational>, int, Plane_less> index;
+  bool bounded = true, convex_union = union_of_primitives(csg);
+  Rational reach(0);
+  for (const auto& prim : csg.primitives) {
+    std::vector<std::pair<int, int>> piece;
+    for (const auto& p : prim.planes) {
+      auto [c, orientation] = canonical(p);
+      auto [it, added] = index.emplace(c, static_cast<int>(out.planes.size()));
+      if (added) out.planes.push_back(c);
+      piece.emplace_back(it->second, orientation);
+    }
+    if (prim.vertices.empty()) bounded = false;
+    for (const auto& v : prim.vertices) reach = std::max(reach, magnitude(v[0]) + magnitude(v[1]) + magnitude(v[2]));
+    out.convex_pieces.push_back(std::move(piece));
+  }
+  if (!(bounded && convex_union)) out.convex_pieces.clear();
+  if (bounded) out.reach = reach;
+  // The normals span R^3 when some three are independent.
+  const auto& P = out.planes;
+  for (std::size_t i = 0; i < P.size() && !out.spans_space; ++i)
+    for (std::size_t j = i + 1; j < P.size() && !out.spans_space; ++j)
+      for (std::size_t k = j + 1; k < P.size() && !out.spans_space; ++k) {
+        Rational d = P[i][0] * (P[j][1] * P[k][2] - P[j][2] * P[k][1]) - P[i][1] * (P[j][0] * P[k][2] - P[j][2] * P[k][0]) +
+                     P[i][2] * (P[j][0] * P[k][1] - P[j][1] * P[k][0]);
+        out.spans_space = CGAL::sign(d) != CGAL::ZERO;
+      }
+  return out;
+}
+
+} // namespace clash4d

@@ -1,0 +1,34 @@
+// What the rotation stage reads of a shape, in the shape's own coordinates
+// (before its motion): its distinct planes, whether it is a union of bounded
+// convex pieces (closed semantics at an irrational time, Rotating_pair.h),
+// and a bound on its reach from its origin (the swept boxes of many objects).
+#ifndef CLASH4D_ROTATION_SHAPE_PLANES_H
+#define CLASH4D_ROTATION_SHAPE_PLANES_H
+
+#include "geometry/kernel_ft4.h"
+#include "scene/Scene.h"
+#include <optional>
+#include <vector>
+
+namespace clash4d {
+
+struct Shape_planes {
+  // Each plane of the shape once: a plane and its complement (a difference)
+  // are one row of fact 10's matrix.
+  std::vector<Plane3<Rational>> planes;
+  // The convex pieces when the shape is a union of bounded convex
+  // primitives (their closed union is the closed regular set), each as
+  // indices into planes with the orientation of the piece (+1: plane <= 0
+  // inside, -1: its complement); empty otherwise.
+  std::vector<std::vector<std::pair<int, int>>> convex_pieces;
+  // max |p|_1 over the shape's vertices, a bound on |p|_2 that a rotation
+  // about the origin keeps; none when some primitive is unbounded.
+  std::optional<Rational> reach;
+  bool spans_space = false;   // the normals span R^3 (rank four with v_inf)
+};
+
+Shape_planes shape_planes(const Solid& shape);
+
+} // namespace clash4d
+
+#endif
