@@ -11,6 +11,7 @@
 #include "scene/Input_error.h"
 #include "scene/Json_reader.h"
 #include "scene/Number_text.h"
+#include "scene/Rotation_refusal.h"
 #include "scene/Scene_reader.h"
 #include "scene/Scene_writer.h"
 #include "search/Work_budget.h"
@@ -326,6 +327,9 @@ std::vector<Run> builtin_runs(const Scene& scene, const Compare_options& options
 Comparison compare_scene(const Scene& scene, const std::string& file, const Compare_options& options)
 {
   Work_budget::check();
+  // Its subjects decide translations only: a rotating object is refused
+  // (exit 2 naming it), never compared as if at rest.
+  refuse_rotation(scene, rotation_unsupported_by("compare (nor by report or fuzz)"));
   Check_options co;
   co.earliest = options.earliest;
   std::vector<Run> runs = builtin_runs(scene, options, co);
