@@ -177,6 +177,11 @@ Scene rounded_scene(const Scene& scene)
   r.t_lo = round(r.t_lo);
   r.t_hi = round(r.t_hi);
   for (auto& o : r.objects) {
+    // A rotation-free pose motion is read by the double instantiation as its
+    // translation and its shape at c(0) (scene/Pose_motion.h): those are
+    // the numbers rounded here, so the rounded scene is that ROBMOD motion
+    // and that shape, not the poses (rotating ones are refused before).
+    o.motion.poses.clear();
     map_numbers(o.shape, round);
     for (auto& t : o.motion.times) t = round(t);
     for (auto& v : o.motion.velocities)
