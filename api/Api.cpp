@@ -24,6 +24,7 @@
 #include "scene/Scene_writer.h"
 #include "search/Work_budget.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -422,7 +423,11 @@ struct Scene::Impl {
   in::Check_answer check_exact(const std::vector<in::Motion>& motions, const in::Check_options& o) const
   {
     std::unique_lock<std::mutex> lock(exact_mutex, std::try_to_lock);
-    if (!lock) return in::check_exact(in::with_motions(scene, motions), o);
+    // A pose motion's shape is placed for its poses (scene/Pose_motion.h):
+    // the kept preparation cannot take other motions; a fresh check can.
+    bool poses = std::any_of(scene.objects.begin(), scene.objects.end(),
+                             [](const in::Scene_object& x) { return !x.motion.poses.empty(); });
+    if (!lock || poses) return in::check_exact(in::with_motions(scene, motions), o);
     if (!exact) exact = std::make_unique<in::Exact_checker>(scene);
     return kept([&] { return exact->check(motions, o); });
   }

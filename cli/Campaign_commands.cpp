@@ -224,10 +224,10 @@ void add_scene_file(const fs::path& file, const Report_inputs& inputs, std::vect
   Scene scene;
   try {
     scene = read_scene_file(file.string(), inputs.mesh_folders);
+    cases.push_back({file.string(), scene, compare_scene(scene, file.string(), compare), ""});
   } catch (const Input_error& e) {
     throw std::runtime_error(e.format(file.string()));
   }
-  cases.push_back({file.string(), scene, compare_scene(scene, file.string(), compare), ""});
 }
 
 // A case per query of the file.

@@ -13,6 +13,7 @@
 #include "rotation/Rotating_check.h"
 #include "scene/Files.h"
 #include "scene/Input_error.h"
+#include "scene/Rotation_refusal.h"
 #include "scene/Printable.h"
 #include "scene/Grid_scene.h"
 #include "search/Work_budget.h"
@@ -84,13 +85,25 @@ int guarded(const std::string& file, std::ostream& err, Run run)
   }
 }
 
+// The objects moving by poses (spec: Motion with rotation (poses)), and
+// whether each rotates: which commands decide the scene depends on it.
+std::string pose_note(const Scene& scene)
+{
+  std::string note;
+  for (const Scene_object& o : scene.objects)
+    if (!o.motion.poses.empty())
+      note += std::string(note.empty() ? " (pose motions: " : ", ") + "\"" + o.name + "\" " +
+              (o.motion.rotates() ? "rotates" : "translates only");
+  return note.empty() ? note : note + ")";
+}
+
 int validate(const std::vector<std::string>& files, std::ostream& out, std::ostream& err)
 {
   int status = 0;
   for (const auto& f : files) {
     Scene scene;
     int s = load(f, scene, err);
-    if (s == 0) out << f << ": valid\n";
+    if (s == 0) out << f << ": valid" << pose_note(scene) << "\n";
     else if (status == 0 || s == CLASH4D_EXIT_INVALID) status = s;
   }
   return status;
@@ -390,6 +403,7 @@ Command add_extrude(CLI::App& app, std::ostream& out, std::ostream& err)
   return [cmd, a, &out, &err] {
     if (!cmd->parsed()) return -1;
     return with_scene(*a, err, [&](const Scene& scene) {
+      refuse_rotation(scene, rotation_unsupported_by("extrude"));
       json report = instantiation(a->number).extrude(scene);
       if (a->as_json) out << report.dump(2) << "\n"; else print_extrusion_text(report, out);
       return 0;
@@ -453,8 +467,9 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
     a->options.stage_seconds = a->stats;   // the stage clocks are read only when printed
     a->options.semantics = *semantics_from_name(a->semantics);
     return with_scene(*a, err, [&](const Scene& scene) {
+      if (!a->certificate.empty()) refuse_rotation(scene, "certificates for motions with rotation are not supported yet");
       if (scene_rotates(scene))   // time slices (rotation/), regularised-semantics.md facts 9-12
-        return run_rotating_check(scene, {a->file, a->number, a->certificate, a->options, a->stats}, out, err);
+        return run_rotating_check(scene, {a->file, a->number, a->options, a->stats}, out, err);
       Check_answer answer = instantiation(a->number).check(scene, a->options, a->tolerance);
       if (!a->certificate.empty()) {
         // Before the answer is printed: a certificate that cannot be made
@@ -496,6 +511,7 @@ Command add_skeleton(CLI::App& app, std::ostream& out, std::ostream& err)
       return CLASH4D_EXIT_INVALID;
     }
     return with_scene(*a, err, [&](const Scene& scene) {
+      refuse_rotation(scene, rotation_unsupported_by("skeleton"));
       Skeleton_answer answer = instantiation(a->number).skeleton(scene);
       print_skeleton(answer, a->as_json, out);
       return answer.pairs.empty() ? 0 : 1;

@@ -1,7 +1,7 @@
 #include "cli/Rotating_check_command.h"
 
 #include "rotation/Rotating_check.h"
-#include "scene/Input_error.h"
+#include "scene/Rotation_refusal.h"
 #include "scene/Number_json.h"
 #include "scene/Printable.h"
 
@@ -78,35 +78,17 @@ void print_text(const Rotating_check_answer& a, const Check_options& o, bool sta
   if (stats) out << "stats:\n  method: time slices (rotation)\n  pairs_examined: " << a.pairs_examined << "\n";
 }
 
-// The first turning object's place, for messages.
-std::string turning_place(const Scene& scene)
-{
-  for (std::size_t i = 0; i < scene.objects.size(); ++i)
-    if (scene.objects[i].motion.rotates()) return "objects[" + std::to_string(i) + "].motion";
-  return "objects";
-}
-
 } // namespace
 
 int run_rotating_check(const Scene& scene, const Rotating_check_request& r, std::ostream& out, std::ostream& err)
 {
-  std::string place = r.file + ": " + turning_place(scene) + ": ";
-  if (r.number == "double") {
-    err << place << "a motion with rotation: --number double does not decide rotating scenes yet (use exact or "
-        << "rational)\n";
-    return CLASH4D_EXIT_INVALID;
-  }
-  if (!r.certificate.empty()) {
-    err << place << "a motion with rotation: certificates for rotating scenes are not supported yet (check without "
-        << "--certificate)\n";
-    return CLASH4D_EXIT_INVALID;
-  }
+  if (r.number == "double")
+    refuse_rotation(scene, "--number double does not decide motions with rotation yet (use exact or rational)");
   Rotating_check_answer answer;
   try {
     answer = check_rotating(scene, r.options, r.number);
   } catch (const Rotation_unsupported& e) {
-    err << place << "a motion with rotation: not decided: " << e.what() << "\n";
-    return CLASH4D_EXIT_INVALID;
+    refuse_rotation(scene, std::string("not decided: ") + e.what());
   }
   if (r.options.json) out << answer_json(answer, r.options, r.stats).dump(2) << "\n";
   else print_text(answer, r.options, r.stats, out);

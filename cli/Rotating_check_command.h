@@ -13,13 +13,14 @@
 namespace clash4d {
 
 struct Rotating_check_request {
-  std::string file, number, certificate;
+  std::string file, number;
   Check_options options;
   bool stats = false;
 };
 
-// The exit status: 0 no collision, 1 collision, 2 a question this release
-// does not decide for rotating scenes (named, never a guess).
+// The exit status: 0 no collision, 1 collision. A question this release
+// does not decide for rotating scenes is an Input_error naming the turning
+// object (exit 2, never a guess).
 int run_rotating_check(const Scene& scene, const Rotating_check_request& r, std::ostream& out, std::ostream& err);
 
 } // namespace clash4d

@@ -11,6 +11,7 @@
 #include "scene/Input_error.h"
 #include "scene/Json_reader.h"
 #include "scene/Number_text.h"
+#include "scene/Rotation_refusal.h"
 #include "scene/Scene_reader.h"
 #include "scene/Scene_writer.h"
 #include "search/Work_budget.h"
@@ -176,6 +177,11 @@ Scene rounded_scene(const Scene& scene)
   r.t_lo = round(r.t_lo);
   r.t_hi = round(r.t_hi);
   for (auto& o : r.objects) {
+    // A rotation-free pose motion is read by the double instantiation as its
+    // translation and its shape at c(0) (scene/Pose_motion.h): those are
+    // the numbers rounded here, so the rounded scene is that ROBMOD motion
+    // and that shape, not the poses (rotating ones are refused before).
+    o.motion.poses.clear();
     map_numbers(o.shape, round);
     for (auto& t : o.motion.times) t = round(t);
     for (auto& v : o.motion.velocities)
@@ -326,6 +332,9 @@ std::vector<Run> builtin_runs(const Scene& scene, const Compare_options& options
 Comparison compare_scene(const Scene& scene, const std::string& file, const Compare_options& options)
 {
   Work_budget::check();
+  // Its subjects decide translations only: a rotating object is refused
+  // (exit 2 naming it), never compared as if at rest.
+  refuse_rotation(scene, rotation_unsupported_by("compare (nor by report or fuzz)"));
   Check_options co;
   co.earliest = options.earliest;
   std::vector<Run> runs = builtin_runs(scene, options, co);

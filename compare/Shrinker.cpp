@@ -351,7 +351,13 @@ Scene shrink_scene(const Scene& scene, const std::function<bool(const Scene&)>& 
   // Every candidate is written and read back: validated, its combinatorics redone.
   auto read_back = [](const Scene& candidate, Scene& valid) {
     try {
-      valid = read_scene(read_json_text(write_scene(candidate)));
+      // The steps change shapes and times / velocities: a rotation-free pose
+      // motion is written as that translation (its shape at c(0) included,
+      // scene/Pose_motion.h), so the change is kept.
+      Scene edited = candidate;
+      for (Scene_object& o : edited.objects)
+        if (!o.motion.rotates()) o.motion.poses.clear();
+      valid = read_scene(read_json_text(write_scene(edited)));
       return true;
     } catch (const std::exception&) {
       return false;

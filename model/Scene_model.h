@@ -7,6 +7,7 @@
 #include "model/Model_builder.h"
 #include "model/Motion_path.h"
 #include "numbers/Number_ops.h"
+#include "scene/Rotation_refusal.h"
 #include "scene/Scene.h"
 #include <boost/container/small_vector.hpp>
 #include <algorithm>
@@ -57,6 +58,9 @@ struct Scene_model {
 
   static Scene_model build(const K& k, const Scene& scene)
   {
+    // A rotating pose motion is not the rest its times / velocities say
+    // (scene/Pose_motion.h): refused, never decided as if at rest.
+    refuse_rotation(scene, "motions with rotation are not supported by this command");
     Scene_model m;
     m.kernel = k;
     m.scene = &scene;

@@ -111,11 +111,16 @@ struct Scene {
 
 const char* solid_key(Solid::Kind k);
 
+// The object moving by `motion` (already valid), its shape as written: a
+// rotation-free pose motion's shape is kept at c(0) (scene/Pose_motion.h),
+// so the shape is taken back to its written form first.
+void set_motion(Scene_object& object, Motion motion);
+
 // The scene with object i moving by motions[i] (one per object, already
 // valid): its shapes under other motions (exact/Exact_checker.h, the API).
 inline Scene with_motions(Scene scene, const std::vector<Motion>& motions)
 {
-  for (std::size_t i = 0; i < motions.size(); ++i) scene.objects[i].motion = motions[i];
+  for (std::size_t i = 0; i < motions.size(); ++i) set_motion(scene.objects[i], motions[i]);
   return scene;
 }
 

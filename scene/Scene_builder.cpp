@@ -1,4 +1,5 @@
 #include "scene/Scene_builder.h"
+#include "scene/Pose_motion.h"
 #include "scene/Scene_writer.h"
 
 #include <algorithm>
@@ -121,7 +122,9 @@ Scene_builder::Scene_builder(std::string name, const Rational& t_lo, const Ratio
 
 Scene_builder& Scene_builder::object(std::string name, Solid shape, Motion motion)
 {
+  std::vector<Pose> poses = std::move(motion.poses);
   scene_.objects.push_back({std::move(name), std::move(shape), std::move(motion)});
+  if (!poses.empty()) motion_poses(scene_.objects.back().name, std::move(poses));
   return *this;
 }
 
@@ -129,7 +132,14 @@ int Scene_builder::index_of(const std::string& name) const
 {
   for (std::size_t i = 0; i < scene_.objects.size(); ++i)
     if (scene_.objects[i].name == name) return static_cast<int>(i);
-  throw std::invalid_argument("Scene_builder::ignore: no object named \"" + name + "\"");
+  throw std::invalid_argument("Scene_builder: no object named \"" + name + "\"");
+}
+
+Scene_builder& Scene_builder::motion_poses(const std::string& name, std::vector<Pose> poses)
+{
+  int i = index_of(name);
+  set_pose_motion(scene_.objects[i], std::move(poses), "objects[" + std::to_string(i) + "].motion");
+  return *this;
 }
 
 Scene_builder& Scene_builder::ignore(const std::string& a, const std::string& b)

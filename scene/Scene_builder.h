@@ -44,6 +44,10 @@ class Scene_builder {
 public:
   Scene_builder(std::string name, const Rational& t_lo, const Rational& t_hi);
   Scene_builder& object(std::string name, Solid shape, Motion motion = rest());
+  // The object (already added) moving by these poses (spec: Motion with
+  // rotation (poses)), checked as the reader checks them: Input_error at
+  // "objects[i].motion..." (scene/Pose_motion.h).
+  Scene_builder& motion_poses(const std::string& name, std::vector<Pose> poses);
   // Objects by name; both must have been added.
   Scene_builder& ignore(const std::string& a, const std::string& b);
   const Scene& scene() const { return scene_; }

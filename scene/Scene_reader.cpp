@@ -8,6 +8,7 @@
 #include "scene/Json_fields.h"
 #include "scene/Json_reader.h"
 #include "scene/Number_text.h"
+#include "scene/Pose_motion.h"
 
 #include <filesystem>
 #include <map>
@@ -320,6 +321,34 @@ Motion parse_motion(const std::string& text, const std::string& place)
   return m;
 }
 
+// {"poses": [{"t": T, "translate": [x,y,z], "rotate": [w,x,y,z]}, ...]}
+// (spec: Motion with rotation (poses)), numbers read exactly; the checks
+// on their values are check_poses'.
+static std::vector<Pose> read_poses(const Json_value& motion, const std::string& place)
+{
+  expect_keys(motion, {"poses"}, place);
+  std::string list_place = dot(place, "poses");
+  const Json_value& list = required(motion, "poses", place);
+  if (list.kind != Kind::Array || list.items.empty())
+    throw Input_error(list_place, "expected a non-empty list of poses");
+  if (list.items.size() > CLASH4D_MAX_POSES)
+    throw Input_error(list_place, "more than the limit of " + std::to_string(CLASH4D_MAX_POSES) + " poses",
+                      CLASH4D_EXIT_LIMIT);
+  std::vector<Pose> poses;
+  for (std::size_t i = 0; i < list.items.size(); ++i) {
+    const Json_value& p = list.items[i];
+    std::string pose_place = at(list_place, i);
+    expect_kind(p, Kind::Object, pose_place);
+    expect_keys(p, {"t", "translate", "rotate"}, pose_place);
+    Pose pose;
+    pose.t = read_number(required(p, "t", pose_place), dot(pose_place, "t"));
+    if (const Json_value* c = p.find("translate")) pose.translate = read_array<3>(*c, dot(pose_place, "translate"));
+    if (const Json_value* q = p.find("rotate")) pose.rotate = read_array<4>(*q, dot(pose_place, "rotate"));
+    poses.push_back(std::move(pose));
+  }
+  return poses;
+}
+
 // objects[i]: a uniquely named solid with its motion (default: at rest).
 static Scene_object read_object(const Json_value& o, const std::string& path, std::set<std::string>& names,
                                 Reader_context& ctx)
@@ -334,8 +363,10 @@ static Scene_object read_object(const Json_value& o, const std::string& path, st
   obj.name = name.text;
   obj.shape = read_solid(required(o, "shape", path), dot(path, "shape"), ctx);
   if (const Json_value* motion = o.find("motion")) {
-    expect_kind(*motion, Kind::String, dot(path, "motion"));
-    obj.motion = parse_motion(motion->text, dot(path, "motion"));
+    std::string place = dot(path, "motion");
+    if (motion->kind == Kind::Object) set_pose_motion(obj, read_poses(*motion, place), place);
+    else if (motion->kind == Kind::String) obj.motion = parse_motion(motion->text, place);
+    else throw Input_error(place, "expected a ROBMOD string or an object {\"poses\": [...]}");
   } else {
     obj.motion.velocities.push_back({Rational(0), Rational(0), Rational(0)});
   }

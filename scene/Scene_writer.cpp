@@ -1,4 +1,5 @@
 #include "scene/Scene_writer.h"
+#include "scene/Pose_motion.h"
 
 #include <nlohmann/json.hpp>
 
@@ -61,6 +62,21 @@ std::string motion_text(const Motion& m)
   return out;
 }
 
+// A pose motion as written (spec: Motion with rotation (poses)), every key
+// of every pose; else the ROBMOD text.
+json motion_json(const Motion& m)
+{
+  if (m.poses.empty()) return motion_text(m);
+  json poses = json::array();
+  for (const Pose& p : m.poses) {
+    json translate = json::array(), rotate = json::array();
+    for (const Rational& x : p.translate) translate.push_back(to_string(x));
+    for (const Rational& x : p.rotate) rotate.push_back(to_string(x));
+    poses.push_back({{"t", to_string(p.t)}, {"translate", translate}, {"rotate", rotate}});
+  }
+  return {{"poses", poses}};
+}
+
 json scene_json(const Scene& scene, const json& meta)
 {
   json j = {{"format", "clash4d-scene/1"}};
@@ -68,7 +84,7 @@ json scene_json(const Scene& scene, const json& meta)
   j["time"] = {to_string(scene.t_lo), to_string(scene.t_hi)};
   j["objects"] = json::array();
   for (const auto& o : scene.objects)
-    j["objects"].push_back({{"name", o.name}, {"shape", solid_json(o.shape)}, {"motion", motion_text(o.motion)}});
+    j["objects"].push_back({{"name", o.name}, {"shape", solid_json(written_shape(o))}, {"motion", motion_json(o.motion)}});
   if (!scene.ignore.empty()) {
     j["ignore"] = json::array();
     for (const auto& p : scene.ignore) j["ignore"].push_back({scene.objects[p.first].name, scene.objects[p.second].name});

@@ -5,8 +5,11 @@
 #include "scene/Input_error.h"
 #include "scene/Json_reader.h"
 #include "scene/Number_text.h"
+#include "scene/Pose_motion.h"
+#include "scene/Scene_builder.h"
 #include "scene/Scene_reader.h"
 #include "scene/Scene_writer.h"
+#include <nlohmann/json.hpp>
 
 using namespace clash4d;
 
@@ -343,3 +346,157 @@ BOOST_AUTO_TEST_CASE(a_planted_link_at_the_old_temporary_name_is_not_followed)
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+// ---------------------------------------------------------------- poses
+// Spec: "Motion with rotation (poses)"; issue 61 item 1.
+
+// The two-block scene with ram's motion replaced by `motion` (JSON text).
+static std::string with_ram_motion(const std::string& motion)
+{
+  return edited(R"("rest until 0 vel -1 0 0 until 5 rest")", motion);
+}
+
+BOOST_AUTO_TEST_CASE(pose_errors_name_their_place)
+{
+  const std::string m = "objects[1].motion";
+  expect_error(with_ram_motion(R"({"poses":[{"t":0}],"spin":1})"), m, "unknown key \"spin\"");
+  expect_error(with_ram_motion(R"({})"), m, "missing key \"poses\"");
+  expect_error(with_ram_motion(R"({"poses":[]})"), m + ".poses", "non-empty list");
+  expect_error(with_ram_motion(R"({"poses":{"t":0}})"), m + ".poses", "non-empty list");
+  expect_error(with_ram_motion(R"(7)"), m, "ROBMOD string or an object");
+  expect_error(with_ram_motion(R"({"poses":[{"t":0},{"translate":[1,0,0]}]})"), m + ".poses[1]", "missing key \"t\"");
+  expect_error(with_ram_motion(R"({"poses":[{"t":0,"rotation":[1,0,0,0]}]})"), m + ".poses[0]", "unknown key \"rotation\"");
+  expect_error(with_ram_motion(R"({"poses":[3]})"), m + ".poses[0]", "expected an object");
+  expect_error(with_ram_motion(R"({"poses":[{"t":1},{"t":"1/1"}]})"), m + ".poses[1].t", "strictly increasing");
+  expect_error(with_ram_motion(R"({"poses":[{"t":1},{"t":2},{"t":0}]})"), m + ".poses[2].t", "strictly increasing");
+  expect_error(with_ram_motion(R"({"poses":[{"t":0},{"t":1,"rotate":[0,0,0,"0/5"]}]})"), m + ".poses[1].rotate",
+               "must not be zero");
+  expect_error(with_ram_motion(R"({"poses":[{"t":0},{"t":1,"rotate":[1,0,0]}]})"), m + ".poses[1].rotate", "expected 4 numbers");
+  expect_error(with_ram_motion(R"({"poses":[{"t":0},{"t":1,"translate":[1,"x",0]}]})"), m + ".poses[1].translate[1]", "is not a number");
+  expect_error(with_ram_motion(R"({"poses":[{"t":"1/0"}]})"), m + ".poses[0].t", "zero denominator");
+  // q_{i+1} = lambda q_i, lambda < 0: q(t) passes through 0 (exactly, with fractions).
+  expect_error(with_ram_motion(R"({"poses":[{"t":0,"rotate":[1,2,0,"1/3"]},{"t":1,"rotate":["-1/2",-1,0,"-1/6"]}]})"),
+               m + ".poses[1].rotate", "negative multiple");
+  expect_error(with_ram_motion(R"({"poses":[{"t":0},{"t":1},{"t":2,"rotate":[-3,0,0,0]}]})"), m + ".poses[2].rotate",
+               "negative multiple");
+  // A positive multiple, an orthogonal or an almost-opposite quaternion is fine.
+  for (const char* ok : {R"({"poses":[{"t":0,"rotate":[1,2,0,3]},{"t":1,"rotate":[2,4,0,6]}]})",
+                         R"({"poses":[{"t":0,"rotate":[1,0,0,0]},{"t":1,"rotate":[0,1,0,0]}]})",
+                         R"({"poses":[{"t":0,"rotate":[1,0,0,0]},{"t":1,"rotate":[-1,"1/1000",0,0]}]})"})
+    BOOST_CHECK_NO_THROW(read_scene(read_json_text(with_ram_motion(ok))));
+}
+
+BOOST_AUTO_TEST_CASE(more_than_ten_thousand_poses_is_a_limit)
+{
+  auto poses = [](int n) {
+    std::string s = R"({"poses":[)";
+    for (int i = 0; i < n; ++i) s += (i ? "," : "") + std::string(R"({"t":)") + std::to_string(i) + "}";
+    return s + "]}";
+  };
+  BOOST_CHECK_NO_THROW(read_scene(read_json_text(with_ram_motion(poses(10000)))));
+  expect_error(with_ram_motion(poses(10001)), "objects[1].motion.poses", "limit of 10000 poses", 3);
+}
+
+// Rotation-free poses are the piecewise-linear translation D(t) = c(t) - c(0)
+// (rest outside the poses, no breakpoint where the velocity does not change)
+// with the shape put at c(0).
+BOOST_AUTO_TEST_CASE(rotation_free_poses_are_a_translation)
+{
+  Scene s = read_scene(read_json_text(with_ram_motion(
+      R"({"poses":[{"t":1,"translate":[5,0,0]},{"t":3,"translate":[3,0,0],"rotate":[2,0,0,0]},{"t":4,"translate":[2,0,0]},{"t":6,"translate":[2,"1/2",0]}]})")));
+  const Scene_object& ram = s.objects[1];
+  BOOST_TEST(!ram.motion.rotates());
+  BOOST_TEST(ram.motion.poses.size() == 4u);
+  // Velocity -1 on [1, 4] (one segment: no breakpoint at 3), (0, 1/4, 0) on [4, 6].
+  BOOST_TEST(ram.motion.times == (std::vector<Rational>{Rational(1), Rational(4), Rational(6)}));
+  BOOST_REQUIRE(ram.motion.velocities.size() == 4u);
+  BOOST_TEST(ram.motion.velocities[0] == (std::array<Rational, 3>{Rational(0), Rational(0), Rational(0)}));
+  BOOST_TEST(ram.motion.velocities[1] == (std::array<Rational, 3>{Rational(-1), Rational(0), Rational(0)}));
+  BOOST_TEST(ram.motion.velocities[2] == (std::array<Rational, 3>{Rational(0), Rational(1, 4), Rational(0)}));
+  BOOST_TEST(ram.motion.velocities[3] == (std::array<Rational, 3>{Rational(0), Rational(0), Rational(0)}));
+  // c(0) = c(1) = (5, 0, 0): the written block translated there, approximated as read.
+  BOOST_TEST((ram.shape.kind == Solid::Kind::Translate));
+  BOOST_TEST(ram.shape.numbers == (std::vector<Rational>{Rational(5), Rational(0), Rational(0)}));
+  BOOST_TEST(ram.shape.numbers_approximated.size() == 3u);
+  BOOST_TEST((ram.shape.children.at(0).kind == Solid::Kind::Block));
+  BOOST_TEST(&written_shape(ram) == &ram.shape.children[0]);
+  BOOST_TEST(ram.motion.times_approximated.size() == 3u);
+
+  // c(0) between poses: c(0) = (1, 2, 0) + 1/4 ((5, 2, 0) - (1, 2, 0)) = (2, 2, 0).
+  Scene mid = read_scene(read_json_text(with_ram_motion(R"({"poses":[{"t":-1,"translate":[1,2,0]},{"t":3,"translate":[5,2,0]}]})")));
+  BOOST_TEST(mid.objects[1].shape.numbers == (std::vector<Rational>{Rational(2), Rational(2), Rational(0)}));
+  // c(0) after the last pose; and c(0) = 0: no wrapper.
+  Scene after = read_scene(read_json_text(with_ram_motion(R"({"poses":[{"t":-3,"translate":[0,0,0]},{"t":-1,"translate":[0,0,"-1/3"]}]})")));
+  BOOST_TEST(after.objects[1].shape.numbers == (std::vector<Rational>{Rational(0), Rational(0), Rational(-1, 3)}));
+  Scene none = read_scene(read_json_text(with_ram_motion(R"({"poses":[{"t":0},{"t":2,"translate":[1,0,0]}]})")));
+  BOOST_TEST((none.objects[1].shape.kind == Solid::Kind::Block));
+  // One pose: placed, at rest.
+  Scene one = read_scene(read_json_text(with_ram_motion(R"({"poses":[{"t":7,"translate":[1,0,0]}]})")));
+  BOOST_TEST(one.objects[1].motion.times.empty());
+  BOOST_TEST(one.objects[1].motion.velocities.size() == 1u);
+  BOOST_TEST((one.objects[1].shape.kind == Solid::Kind::Translate));
+}
+
+BOOST_AUTO_TEST_CASE(rotating_poses_are_read_at_rest_for_the_pipeline)
+{
+  Scene s = read_scene(read_json_text(with_ram_motion(
+      R"({"poses":[{"t":0,"translate":[1,0,0]},{"t":2,"translate":[1,0,0],"rotate":[1,0,0,1]}]})")));
+  const Motion& m = s.objects[1].motion;
+  BOOST_TEST(m.rotates());
+  BOOST_TEST(m.times.empty());
+  BOOST_TEST(m.velocities.size() == 1u);
+  BOOST_TEST((s.objects[1].shape.kind == Solid::Kind::Block));   // no wrapper: the pipeline refuses it
+}
+
+BOOST_AUTO_TEST_CASE(pose_motions_round_trip_through_the_writer)
+{
+  for (const char* motion :
+       {R"({"poses":[{"t":"1/3","translate":["0.5",0,0]},{"t":2,"translate":[1,0,"-2/7"],"rotate":[1,0,0,1]},{"t":3}]})",
+        R"({"poses":[{"t":1,"translate":[5,0,0]},{"t":4,"translate":[2,"1e-3",0],"rotate":[3,0,0,0]}]})",
+        R"({"poses":[{"t":-2}]})"}) {
+    Scene a = read_scene(read_json_text(with_ram_motion(motion)));
+    std::string once = write_scene(a);
+    Scene b = read_scene(read_json_text(once));
+    BOOST_TEST(write_scene(b) == once);
+    BOOST_TEST(b.objects[1].motion.poses.size() == a.objects[1].motion.poses.size());
+    BOOST_TEST(b.objects[1].motion.times == a.objects[1].motion.times);
+    BOOST_TEST(b.objects[1].shape.numbers == a.objects[1].shape.numbers);
+    // The written shape is the original block, not the c(0) wrapper.
+    nlohmann::json j = nlohmann::json::parse(once);
+    BOOST_TEST(j["objects"][1]["shape"].contains("block"), once);
+    BOOST_TEST(j["objects"][1]["motion"].contains("poses"), once);
+  }
+  // A ROBMOD motion is still written as ROBMOD.
+  BOOST_TEST(nlohmann::json::parse(write_scene(read_scene(read_json_text(two_blocks))))["objects"][1]["motion"].is_string());
+}
+
+BOOST_AUTO_TEST_CASE(scene_builder_takes_poses_checked_as_the_reader)
+{
+  Pose a, b;
+  a.t = Rational(1);
+  a.translate = {Rational(5), Rational(0), Rational(0)};
+  b.t = Rational(3);
+  b.translate = {Rational(3), Rational(0), Rational(0)};
+  Scene_builder builder("poses", Rational(0), Rational(10));
+  builder.object("box", block(vec(0, 0, 0), vec(1, 1, 1))).object("ram", block(vec(0, 0, 0), vec(1, 1, 1)));
+  builder.motion_poses("ram", {a, b});
+  const Scene_object& ram = builder.scene().objects[1];
+  BOOST_TEST((ram.shape.kind == Solid::Kind::Translate));
+  BOOST_TEST(ram.motion.times.size() == 2u);
+  Scene read = read_scene(read_json_text(builder.text()));
+  BOOST_TEST(read.objects[1].shape.numbers == ram.shape.numbers);
+  BOOST_TEST(read.objects[1].motion.times == ram.motion.times);
+  BOOST_TEST(write_scene(read) == builder.text());
+
+  Pose opposite = b;
+  opposite.rotate = {Rational(-1), Rational(0), Rational(0), Rational(0)};
+  try {
+    builder.motion_poses("ram", {a, opposite});
+    BOOST_FAIL("a negative multiple was accepted");
+  } catch (const Input_error& e) {
+    BOOST_TEST(e.place() == "objects[1].motion.poses[1].rotate");
+    BOOST_TEST(e.exit_code() == 2);
+  }
+  BOOST_CHECK_THROW(builder.motion_poses("ram", {}), Input_error);
+  BOOST_CHECK_THROW(builder.motion_poses("arm", {a}), std::invalid_argument);
+}
