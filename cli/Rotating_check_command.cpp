@@ -80,7 +80,7 @@ void print_text(const Rotating_check_answer& a, const Check_options& o, bool sta
 
 } // namespace
 
-int run_rotating_check(const Scene& scene, const Rotating_check_request& r, std::ostream& out, std::ostream& err)
+int run_rotating_check(const Scene& scene, const Rotating_check_request& r, std::ostream& out)
 {
   if (r.number == "double")
     refuse_rotation(scene, "--number double does not decide motions with rotation yet (use exact or rational)");

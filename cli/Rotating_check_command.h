@@ -21,7 +21,7 @@ struct Rotating_check_request {
 // The exit status: 0 no collision, 1 collision. A question this release
 // does not decide for rotating scenes is an Input_error naming the turning
 // object (exit 2, never a guess).
-int run_rotating_check(const Scene& scene, const Rotating_check_request& r, std::ostream& out, std::ostream& err);
+int run_rotating_check(const Scene& scene, const Rotating_check_request& r, std::ostream& out);
 
 } // namespace clash4d
 

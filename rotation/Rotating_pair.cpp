@@ -184,18 +184,54 @@ bool in_closed_pieces(const std::vector<Moving_plane>& rows, std::size_t offset,
   return false;
 }
 
-// The closed question at an irrational critical time r (fact 12), for two
-// unions of bounded convex pieces: closed pieces that meet at r meet in a
-// vertex-face or edge-edge contact, a point on the four planes of a minor
-// that vanishes at r, where three of them are independent. Each such point
+// Whether x(r) = num / den is in the closed regular set of a CSG shape
+// whose planes are rows[offset ...]: some open cell next to the point is
+// inside. The planes through the point must be at most three and
+// independent there, so that every choice of their sides is a cell.
+bool in_closed_cells(const std::vector<Moving_plane>& rows, std::size_t offset, const Rotating_object& o,
+                     const std::array<Time_poly, 3>& num, const Time_poly& den, CGAL::Sign den_sign, const Algebraic& r)
+{
+  std::size_t m = o.shape.planes.size();
+  std::vector<int> side(m), zero;
+  for (std::size_t p = 0; p < m; ++p) {
+    const Moving_plane& h = rows[offset + p];
+    side[p] = sign_at(h[0] * num[0] + h[1] * num[1] + h[2] * num[2] + h[3] * den, r) * den_sign;
+    if (side[p] == 0) zero.push_back(static_cast<int>(p));
+  }
+  bool independent = zero.size() < 2;
+  if (zero.size() == 3)
+    independent = sign_at(normal_minor(rows[offset + zero[0]], rows[offset + zero[1]], rows[offset + zero[2]]), r) != CGAL::ZERO;
+  if (zero.size() == 2) {
+    const Moving_plane &u = rows[offset + zero[0]], &v = rows[offset + zero[1]];
+    for (int i = 0; i < 3 && !independent; ++i)
+      independent = sign_at(u[i] * v[(i + 1) % 3] - u[(i + 1) % 3] * v[i], r) != CGAL::ZERO;
+  }
+  if (!independent)
+    throw Rotation_unsupported("closed semantics at an irrational critical time: a contact point on more than three "
+                               "planes of '" + o.object->name + "', or on dependent ones (a degenerate contact this "
+                               "release does not resolve)");
+  for (unsigned mask = 0; mask < (1u << zero.size()); ++mask) {
+    for (std::size_t k = 0; k < zero.size(); ++k) side[zero[k]] = (mask >> k) & 1 ? 1 : -1;
+    if (inside_at_generic(o.shape, side)) return true;
+  }
+  return false;
+}
+
+bool in_closed_object(const std::vector<Moving_plane>& rows, std::size_t offset, const Rotating_object& o,
+                      const std::array<Time_poly, 3>& num, const Time_poly& den, CGAL::Sign den_sign, const Algebraic& r)
+{
+  if (!o.shape.convex_pieces.empty()) return in_closed_pieces(rows, offset, o.shape, num, den, den_sign, r);
+  return in_closed_cells(rows, offset, o, num, den, den_sign, r);
+}
+
+// The closed question at an irrational critical time r (fact 12): closed
+// objects that meet at r and at no time near it meet in a vertex-face or
+// edge-edge contact, a point on the four planes of a minor that vanishes
+// at r, three of them independent there (docs/rotation.md). Each such point
 // is tried against both objects, exactly in Q(r).
 std::optional<std::array<Algebraic, 3>> closed_at_irrational(const std::vector<Moving_plane>& rows, const Rotating_object& a,
                                                              const Rotating_object& b, const Critical_time& c)
 {
-  if (a.shape.convex_pieces.empty() || b.shape.convex_pieces.empty())
-    throw Rotation_unsupported("closed semantics at an irrational critical time is decided here only for objects that "
-                               "are unions of bounded convex pieces (blocks, hulls, convex solids, meshes); '" +
-                               (a.shape.convex_pieces.empty() ? a.object->name : b.object->name) + "' is not");
   std::size_t offset = a.shape.planes.size();
   for (const Minor_rows& m : c.vanishing) {
     std::vector<int> ids;
@@ -210,7 +246,7 @@ std::optional<std::array<Algebraic, 3>> closed_at_irrational(const std::vector<M
       CGAL::Sign ds = sign_at(den, c.t);
       if (ds == CGAL::ZERO) continue;
       auto num = cramer_numerators(rows[t[0]], rows[t[1]], rows[t[2]]);
-      if (in_closed_pieces(rows, 0, a.shape, num, den, ds, c.t) && in_closed_pieces(rows, offset, b.shape, num, den, ds, c.t))
+      if (in_closed_object(rows, 0, a, num, den, ds, c.t) && in_closed_object(rows, offset, b, num, den, ds, c.t))
         return point_at(num, den, c.t);
     }
   }

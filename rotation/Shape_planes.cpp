@@ -67,9 +67,10 @@ Shape_planes shape_planes(const Solid& shape)
     }
     if (prim.vertices.empty()) bounded = false;
     for (const auto& v : prim.vertices) reach = std::max(reach, magnitude(v[0]) + magnitude(v[1]) + magnitude(v[2]));
-    out.convex_pieces.push_back(std::move(piece));
+    out.primitives.push_back(std::move(piece));
   }
-  if (!(bounded && convex_union)) out.convex_pieces.clear();
+  out.nodes = csg.nodes;
+  if (bounded && convex_union) out.convex_pieces = out.primitives;
   if (bounded) out.reach = reach;
   // The normals span R^3 when some three are independent.
   const auto& P = out.planes;
@@ -81,6 +82,40 @@ Shape_planes shape_planes(const Solid& shape)
         out.spans_space = CGAL::sign(d) != CGAL::ZERO;
       }
   return out;
+}
+
+namespace {
+
+bool node_inside(const Shape_planes& shape, int n, const std::vector<int>& side)
+{
+  const Csg_node& node = shape.nodes[n];
+  switch (node.op) {
+  case Csg_node::Op::Primitive:
+    for (auto [plane, orientation] : shape.primitives[node.primitive])
+      if (orientation * side[plane] > 0) return false;
+    return true;
+  case Csg_node::Op::Union:
+    for (int c : node.children)
+      if (node_inside(shape, c, side)) return true;
+    return false;
+  case Csg_node::Op::Intersection:
+    for (int c : node.children)
+      if (!node_inside(shape, c, side)) return false;
+    return true;
+  case Csg_node::Op::Difference:
+    if (!node_inside(shape, node.children.front(), side)) return false;
+    for (std::size_t i = 1; i < node.children.size(); ++i)
+      if (node_inside(shape, node.children[i], side)) return false;
+    return true;
+  }
+  return false;
+}
+
+} // namespace
+
+bool inside_at_generic(const Shape_planes& shape, const std::vector<int>& side)
+{
+  return !shape.nodes.empty() && node_inside(shape, 0, side);
 }
 
 } // namespace clash4d

@@ -6,6 +6,7 @@
 #define CLASH4D_ROTATION_SHAPE_PLANES_H
 
 #include "geometry/kernel_ft4.h"
+#include "model/Csg_model.h"
 #include "scene/Scene.h"
 #include <optional>
 #include <vector>
@@ -21,6 +22,10 @@ struct Shape_planes {
   // indices into planes with the orientation of the piece (+1: plane <= 0
   // inside, -1: its complement); empty otherwise.
   std::vector<std::vector<std::pair<int, int>>> convex_pieces;
+  // The whole CSG tree (any shape): its nodes, and each primitive's planes
+  // as (index into planes, orientation) as above.
+  std::vector<Csg_node> nodes;
+  std::vector<std::vector<std::pair<int, int>>> primitives;
   // max |p|_1 over the shape's vertices, a bound on |p|_2 that a rotation
   // about the origin keeps; none when some primitive is unbounded.
   std::optional<Rational> reach;
@@ -28,6 +33,11 @@ struct Shape_planes {
 };
 
 Shape_planes shape_planes(const Solid& shape);
+
+// Whether a point strictly on the sides `side` of the planes (each -1 or
+// +1, indexed as planes) is inside the shape: the CSG formula with strict
+// signs, which decides membership at a generic point (fact 1).
+bool inside_at_generic(const Shape_planes& shape, const std::vector<int>& side);
 
 } // namespace clash4d
 
