@@ -1,5 +1,6 @@
 #include "cli/Rotating_check_command.h"
 
+#include "rotation/Critical_times.h"
 #include "rotation/Rotating_check.h"
 #include "scene/Rotation_refusal.h"
 #include "scene/Number_json.h"
@@ -89,6 +90,8 @@ int run_rotating_check(const Scene& scene, const Rotating_check_request& r, std:
     answer = check_rotating(scene, r.options, r.number);
   } catch (const Rotation_unsupported& e) {
     refuse_rotation(scene, std::string("not decided: ") + e.what());
+  } catch (const Minor_limit& e) {
+    throw Input_error("objects", e.what(), CLASH4D_EXIT_LIMIT);
   }
   if (r.options.json) out << answer_json(answer, r.options, r.stats).dump(2) << "\n";
   else print_text(answer, r.options, r.stats, out);

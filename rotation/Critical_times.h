@@ -13,6 +13,7 @@
 #include "numbers/Algebraic.h"
 #include "rotation/Moving_planes.h"
 #include <array>
+#include <stdexcept>
 #include <vector>
 
 namespace clash4d {
@@ -20,6 +21,14 @@ namespace clash4d {
 // Four rows of the matrix; -1 stands for v_inf. A 3 x 3 minor of columns
 // other than x, y, z (low rank only) is not kept: it names no contact.
 using Minor_rows = std::array<int, 4>;
+
+// More minors than a pair may have (exit 3 at the command): the minors of
+// every plane of a pair grow as the fourth power of the planes.
+constexpr std::size_t CLASH4D_MAX_PAIR_MINORS = 500000;
+
+struct Minor_limit : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 struct Critical_time {
   Algebraic t;
@@ -29,7 +38,8 @@ struct Critical_time {
 class Critical_times {
 public:
   // rows: the first object's planes, then the second's (first_count of
-  // them); the interval (lo, hi), lo < hi.
+  // them); the interval (lo, hi), lo < hi. Throws Minor_limit past
+  // CLASH4D_MAX_PAIR_MINORS; looks at the work budget (--max-seconds).
   Critical_times(const std::vector<Moving_plane>& rows, std::size_t first_count, const Rational& lo,
                  const Rational& hi, bool low_rank);
 
@@ -42,12 +52,12 @@ private:
   std::size_t minor_count_ = 0;
 };
 
-// det [n_i; n_j; n_k] (normals only) and the 4 x 4 determinant of four rows.
-Time_poly normal_minor(const Moving_plane& a, const Moving_plane& b, const Moving_plane& c);
-
-// The coefficients without trailing zeros, made monic: one key per
-// polynomial up to a non-zero factor; empty for the zero polynomial.
-std::vector<Rational> monic(const Time_poly& p);
+// det [n_i; n_j; n_k], the normals' minor, for rows of any polynomial type.
+template <class Row>
+auto normal_minor(const Row& a, const Row& b, const Row& c)
+{
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
 
 } // namespace clash4d
 

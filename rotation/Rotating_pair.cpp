@@ -309,6 +309,9 @@ private:
   bool piece(const Rational& lo, const Rational& hi)
   {
     Rational mid = (lo + hi) / 2;
+    // A verdict alone: one sample first, for the common case where the
+    // pair collides there, before any minor is made.
+    if (!options_.earliest && in_interval({}, Algebraic(lo), Algebraic(hi))) return true;
     std::vector<Moving_plane> rows = pair_rows(a_, b_, mid);
     bool low_rank = !a_.shape.spans_space && !b_.shape.spans_space;
     Critical_times critical(rows, a_.shape.planes.size(), lo, hi, low_rank);

@@ -382,6 +382,9 @@ BOOST_AUTO_TEST_CASE(random_rotating_scenes)
           continue;
         }
         BOOST_TEST(a.collide == b.collide);
+        Check_options verdict = o;
+        verdict.earliest = false;   // a sample before any minor (Slice_search::piece)
+        BOOST_TEST(check_rotating(scene, verdict, "exact").collide == a.collide);
         if (!a.collide || !b.collide) continue;
         const Algebraic& t = a.reported()->answer.t_star;
         BOOST_TEST(compare(t, b.reported()->answer.t_star) == 0, "t* " << t.to_text() << " turned: "
