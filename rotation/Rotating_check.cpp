@@ -2,6 +2,7 @@
 
 #include "exact/Exact_instantiation.h"
 
+#include <algorithm>
 #include <optional>
 
 namespace clash4d {
@@ -51,6 +52,26 @@ bool may_meet(const Swept_box& a, const Swept_box& b)
   return true;
 }
 
+// The pairs (i < j, in pair order) whose boxes may meet: a sweep along x
+// over the bounded boxes, and every pair with an unbounded one.
+std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Swept_box>& boxes)
+{
+  std::vector<int> bounded, unbounded;
+  for (int i = 0; i < static_cast<int>(boxes.size()); ++i) (boxes[i].bounded ? bounded : unbounded).push_back(i);
+  std::sort(bounded.begin(), bounded.end(), [&](int a, int b) { return boxes[a].min[0] < boxes[b].min[0]; });
+  std::vector<std::pair<int, int>> out;
+  for (std::size_t k = 0; k < bounded.size(); ++k)
+    for (std::size_t l = k + 1; l < bounded.size() && !(boxes[bounded[k]].max[0] < boxes[bounded[l]].min[0]); ++l)
+      if (may_meet(boxes[bounded[k]], boxes[bounded[l]]))
+        out.emplace_back(std::min(bounded[k], bounded[l]), std::max(bounded[k], bounded[l]));
+  for (int u : unbounded)
+    for (int i = 0; i < static_cast<int>(boxes.size()); ++i)
+      if (i != u) out.emplace_back(std::min(u, i), std::max(u, i));
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 } // namespace
 
 bool scene_rotates(const Scene& scene)
@@ -73,22 +94,20 @@ Rotating_check_answer check_rotating(const Scene& scene, const Check_options& op
   out.number = number;
   out.semantics = options.semantics;
   bool every_pair = options.all_pairs || options.earliest;
-  int n = static_cast<int>(objects.size());
-  for (int i = 0; i < n; ++i)
-    for (int j = i + 1; j < n; ++j) {
-      if (scene.ignored(i, j) || !may_meet(boxes[i], boxes[j])) continue;
-      ++out.pairs_examined;
-      Rotating_answer a = decide_rotating_pair(objects[i], objects[j], scene.t_lo, scene.t_hi, options, check);
-      if (!a.collide) continue;
-      out.collide = true;
-      out.pairs.push_back({scene.objects[i].name, scene.objects[j].name, std::move(a)});
-      if (options.earliest) {
-        int last = static_cast<int>(out.pairs.size()) - 1;
-        if (out.earliest_pair < 0 || out.pairs[last].answer.t_star < out.pairs[out.earliest_pair].answer.t_star)
-          out.earliest_pair = last;
-      }
-      if (!every_pair) return out;
+  for (auto [i, j] : candidate_pairs(boxes)) {
+    if (scene.ignored(i, j)) continue;
+    ++out.pairs_examined;
+    Rotating_answer a = decide_rotating_pair(objects[i], objects[j], scene.t_lo, scene.t_hi, options, check);
+    if (!a.collide) continue;
+    out.collide = true;
+    out.pairs.push_back({scene.objects[i].name, scene.objects[j].name, std::move(a)});
+    if (options.earliest) {
+      int last = static_cast<int>(out.pairs.size()) - 1;
+      if (out.earliest_pair < 0 || out.pairs[last].answer.t_star < out.pairs[out.earliest_pair].answer.t_star)
+        out.earliest_pair = last;
     }
+    if (!every_pair) return out;
+  }
   return out;
 }
 

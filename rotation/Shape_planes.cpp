@@ -29,6 +29,19 @@ std::pair<Plane3<Rational>, int> canonical(const Plane3<Rational>& p)
   return {c, orientation};
 }
 
+// A dyadic r with r^2 >= q >= 0, within 2^-10 of sqrt q: the square root
+// of q 2^20 in integers, rounded up (no floating point).
+Rational root_above(const Rational& q)
+{
+  mpz_class scaled(q.numerator().mpz());
+  scaled <<= 20;
+  mpz_class den(q.denominator().mpz()), n, r;
+  mpz_cdiv_q(n.get_mpz_t(), scaled.get_mpz_t(), den.get_mpz_t());   // ceil(q 2^20)
+  mpz_sqrt(r.get_mpz_t(), n.get_mpz_t());
+  r += 1;                                                             // r^2 > n
+  return Rational(CGAL::Gmpz(r.get_mpz_t()), CGAL::Gmpz(1 << 10));
+}
+
 bool union_of_primitives(const Csg_model<Rational>& csg)
 {
   for (const Csg_node& n : csg.nodes)
@@ -66,12 +79,12 @@ Shape_planes shape_planes(const Solid& shape)
       piece.emplace_back(it->second, orientation);
     }
     if (prim.vertices.empty()) bounded = false;
-    for (const auto& v : prim.vertices) reach = std::max(reach, magnitude(v[0]) + magnitude(v[1]) + magnitude(v[2]));
+    for (const auto& v : prim.vertices) reach = std::max(reach, v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     out.primitives.push_back(std::move(piece));
   }
   out.nodes = csg.nodes;
   if (bounded && convex_union) out.convex_pieces = out.primitives;
-  if (bounded) out.reach = reach;
+  if (bounded) out.reach = root_above(reach);
   // The normals span R^3 when some three are independent.
   const auto& P = out.planes;
   for (std::size_t i = 0; i < P.size() && !out.spans_space; ++i)

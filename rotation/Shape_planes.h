@@ -26,8 +26,9 @@ struct Shape_planes {
   // as (index into planes, orientation) as above.
   std::vector<Csg_node> nodes;
   std::vector<std::vector<std::pair<int, int>>> primitives;
-  // max |p|_1 over the shape's vertices, a bound on |p|_2 that a rotation
-  // about the origin keeps; none when some primitive is unbounded.
+  // A bound on |p|_2 over the shape's vertices, which a rotation about the
+  // origin keeps (a dyadic just above the root of the largest |p|^2); none
+  // when some primitive is unbounded.
   std::optional<Rational> reach;
   bool spans_space = false;   // the normals span R^3 (rank four with v_inf)
 };

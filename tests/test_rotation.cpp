@@ -8,6 +8,7 @@
 #include "scene/Json_reader.h"
 #include "scene/Random_draw.h"
 #include "scene/Scene_reader.h"
+#include "support/Cli_run.h"
 #include "support/Random_scene.h"
 #include <nlohmann/json.hpp>
 #include <cstdlib>
@@ -401,4 +402,41 @@ BOOST_AUTO_TEST_CASE(random_rotating_scenes)
   BOOST_TEST_MESSAGE(collisions << " collisions, " << contacts << " closed contacts, " << irrational << " irrational t*");
   BOOST_TEST(collisions >= cases / 5);
   BOOST_TEST(irrational >= 1);
+}
+
+// The command line on rotating scenes: the spec's exit statuses and JSON
+// (t* and irrational coordinates as the algebraic-number object).
+BOOST_AUTO_TEST_CASE(check_command_on_rotating_scenes)
+{
+  std::string dir = std::string(CLASH4D_FIXTURES) + "/rotation/";
+  Cli_run r = run_clash4d({"check", dir + "square_into_slab.json", "--earliest", "--json"});
+  BOOST_TEST(r.status == 1);
+  json j = json::parse(r.out);
+  BOOST_TEST(j["collide"] == true);
+  BOOST_TEST(j["semantics"] == "regularised");
+  BOOST_TEST(j["witness"]["point"].size() == 4u);
+  for (const auto& c : j["witness"]["point"]) BOOST_TEST(c.is_string());   // a regularised witness is rational
+  const json& t = j["earliest"]["t"];
+  BOOST_TEST(t["poly"] == json({"1", "-10", "11"}));
+  BOOST_TEST(t["approx"] == "0.11439478302055078");   // (5 - sqrt 14) / 11, the figure
+  Algebraic between = expected_number(t);   // its interval isolates the root
+  BOOST_TEST(compare(between, expected_number(json{{"poly", {"1", "-10", "11"}}, {"between", {"1/10", "1/8"}}})) == 0);
+  BOOST_TEST(j["earliest"]["point"][0] == "6/5");
+  BOOST_TEST(j["earliest"]["point"][3] == t);
+
+  Cli_run apart = run_clash4d({"check", dir + "door_against_stop.json"});
+  BOOST_TEST(apart.status == 0);
+  BOOST_TEST(apart.out.find("no collision (exact, with rotation)") != std::string::npos, apart.out);
+  Cli_run touch = run_clash4d({"check", dir + "door_against_stop.json", "--semantics", "closed", "--number", "rational"});
+  BOOST_TEST(touch.status == 1);
+
+  for (std::vector<std::string> refused : {std::vector<std::string>{"--number", "double"},
+                                           std::vector<std::string>{"--certificate", "/tmp/clash4d-never-written.json"}}) {
+    std::vector<std::string> args = {"check", dir + "door_against_stop.json"};
+    args.insert(args.end(), refused.begin(), refused.end());
+    Cli_run no = run_clash4d(args);
+    BOOST_TEST(no.status == 2);
+    BOOST_TEST(no.err.find("objects[0].motion: object \"door\"") != std::string::npos, no.err);
+    BOOST_TEST(no.out.empty());
+  }
 }
