@@ -2,6 +2,8 @@
 
 #include "search/Work_budget.h"
 
+#include <CGAL/Interval_nt.h>
+
 #include <algorithm>
 #include <map>
 
@@ -35,6 +37,20 @@ Int_row integer_row(const Moving_plane& h)
 
 using Poly_key = std::vector<mpz_class>;
 
+// Whether two rows are proportional as vectors of polynomials (every 2 x 2
+// minor identically zero): the same plane up to a factor that is a
+// function of t of one sign (a norm |q(t)|^2, or its negative).
+bool proportional(const Int_row& u, const Int_row& v)
+{
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b) {
+      Int_poly d = u[a] * v[b] - u[b] * v[a];
+      for (int i = 0; i < d.size(); ++i)
+        if (d[i] != 0) return false;
+    }
+  return true;
+}
+
 // The coefficients without trailing zeros, divided by their gcd, the last
 // one positive: one key per polynomial up to a non-zero factor; empty for
 // the zero polynomial.
@@ -67,9 +83,9 @@ private:
 
 // The 4 x 4 determinant of rows i < j < k < l by the last column: the
 // offsets e against the minors of the normals.
-Int_poly full_minor(const std::vector<Int_row>& r, const Minor_rows& m, const std::map<std::array<int, 3>, Int_poly>& normals)
+template <class Normals>
+Int_poly full_minor(const std::vector<Int_row>& r, const Minor_rows& m, Normals& D)
 {
-  auto D = [&](int a, int b, int c) -> const Int_poly& { return normals.at({a, b, c}); };
   auto [i, j, k, l] = m;
   return r[j][3] * D(i, k, l) - r[i][3] * D(j, k, l) + r[l][3] * D(i, j, k) - r[k][3] * D(i, j, l);
 }
@@ -90,6 +106,85 @@ void low_rank_minors(const std::vector<Int_row>& r, int i, int j, int k, Minor_t
     table.add(normal_minor(rows[0], rows[1], rows[2]), {i, j, k, -1});
   }
 }
+
+// A filter before any exact minor (one predicate: "this minor has no root
+// on [lo, hi]"): the rows evaluated in intervals on a few closed pieces of
+// [lo, hi] that cover it; a minor whose interval value excludes 0 on every
+// piece has no root there, surely, and is not made exactly. Minors the
+// intervals cannot settle are made and solved exactly as before.
+class Interval_rows {
+public:
+  using I = CGAL::Interval_nt<false>;
+  static constexpr int pieces = 32;
+
+  Interval_rows(const std::vector<Moving_plane>& planes, const Rational& lo, const Rational& hi)
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    at_.resize(pieces);
+    for (int k = 0; k < pieces; ++k) {
+      I t(CGAL::to_interval(lo + (hi - lo) * Rational(k, pieces)).first,
+          CGAL::to_interval(lo + (hi - lo) * Rational(k + 1, pieces)).second);
+      for (const Moving_plane& h : planes) {
+        std::array<I, 4> v;
+        for (int c = 0; c < 4; ++c) v[c] = horner(h[c], t);
+        at_[k].push_back(v);
+      }
+    }
+  }
+
+  // Whether the minor of these rows (four, or three with v_inf: -1 last)
+  // surely has no root on [lo, hi] that is a critical time: non-zero on
+  // every piece, or exactly 0 on one (a polynomial that vanishes on an
+  // interval is identically zero: a plane's structural zeros, such as the
+  // z part of a vertical plane turning about z, are exact in intervals).
+  bool settled(const Minor_rows& m) const
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    bool nonzero = true;
+    for (const auto& rows : at_) {
+      I d = m[3] < 0 ? normal(rows, m[0], m[1], m[2]) : full(rows, m);
+      if (d.inf() == 0 && d.sup() == 0) return true;
+      nonzero = nonzero && (d.inf() > 0 || d.sup() < 0);
+    }
+    return nonzero;
+  }
+
+private:
+  static I horner(const Time_poly& p, const I& t)
+  {
+    I v(0);
+    for (int i = p.size() - 1; i >= 0; --i) v = v * t + I(CGAL::to_interval(p[i]));
+    return v;
+  }
+  static I normal(const std::vector<std::array<I, 4>>& r, int i, int j, int k)
+  {
+    return normal_minor(r[i], r[j], r[k]);
+  }
+  static I full(const std::vector<std::array<I, 4>>& r, const Minor_rows& m)
+  {
+    auto [i, j, k, l] = m;
+    return r[j][3] * normal(r, i, k, l) - r[i][3] * normal(r, j, k, l) + r[l][3] * normal(r, i, j, k) -
+           r[k][3] * normal(r, i, j, l);
+  }
+
+  std::vector<std::vector<std::array<I, 4>>> at_;   // [piece][row]
+};
+
+// The exact minors of the normals, made when a full minor needs them.
+class Normal_minors {
+public:
+  explicit Normal_minors(const std::vector<Int_row>& rows) : rows_(rows) {}
+  const Int_poly& operator()(int i, int j, int k)
+  {
+    auto [it, added] = made_.try_emplace({i, j, k});
+    if (added) it->second = normal_minor(rows_[i], rows_[j], rows_[k]);
+    return it->second;
+  }
+
+private:
+  const std::vector<Int_row>& rows_;
+  std::map<std::array<int, 3>, Int_poly> made_;
+};
 
 } // namespace
 
@@ -112,12 +207,33 @@ Critical_times::Critical_times(const std::vector<Moving_plane>& planes, std::siz
                       std::to_string(static_cast<long long>(count)) + " minors, more than the limit of " +
                       std::to_string(CLASH4D_MAX_PAIR_MINORS) + " (the time slices take every minor of a pair's "
                       "planes; docs/rotation.md, Cost)");
+  // A plane both objects have (a face of each on z = 0, both turning
+  // about z: rows equal up to a factor of one sign) is one row of both: minors of it with one object's planes keep
+  // their sign, and minors holding it twice are zero. owner: 1 the first
+  // object's only, 2 the second's only, 3 both; alias: its first copy.
+  std::vector<int> owner(m), alias(m);
+  for (int i = 0; i < m; ++i) {
+    alias[i] = i;
+    owner[i] = i < split ? 1 : 2;
+    for (int j = 0; j < i && alias[i] == i; ++j)
+      if (alias[j] == j && proportional(rows[j], rows[i])) {
+        alias[i] = j;
+        owner[j] |= owner[i];
+      }
+  }
+  for (int i = 0; i < m; ++i) owner[i] = owner[alias[i]];
   auto mixed = [&](std::initializer_list<int> ids) {
     bool a = false, b = false;
-    for (int i : ids) (i < split ? a : b) = true;
+    for (int i : ids) {
+      a = a || owner[i] == 1;
+      b = b || owner[i] == 2;
+      for (int j : ids)
+        if (j < i && alias[j] == alias[i]) return false;   // a plane twice: zero
+    }
     return a && b;
   };
-  std::map<std::array<int, 3>, Int_poly> normals;
+  Interval_rows filter(planes, lo, hi);
+  Normal_minors normals(rows);
   Minor_table table;
   if (low_rank)
     for (int i = 0; i < m; ++i)
@@ -125,20 +241,18 @@ Critical_times::Critical_times(const std::vector<Moving_plane>& planes, std::siz
         if (mixed({i, j})) pair_minors(rows, i, j, table);
   for (int i = 0; i < m; ++i)
     for (int j = i + 1; j < m; ++j)
-      for (int k = j + 1; k < m; ++k) {
-        Int_poly d = normal_minor(rows[i], rows[j], rows[k]);
+      for (int k = j + 1; k < m; ++k)
         if (mixed({i, j, k})) {
-          table.add(d, {i, j, k, -1});   // with v_inf: parallel or meeting at infinity
+          // with v_inf: parallel planes, or three meeting at infinity
+          if (!filter.settled({i, j, k, -1})) table.add(normals(i, j, k), {i, j, k, -1});
           if (low_rank) low_rank_minors(rows, i, j, k, table);
         }
-        normals.emplace(std::array<int, 3>{i, j, k}, std::move(d));
-      }
   for (int i = 0; i < m; ++i)
     for (int j = i + 1; j < m; ++j)
       for (int k = j + 1; k < m; ++k)
         for (int l = k + 1; l < m; ++l)
           if (mixed({i, j, k, l})) {
-            table.add(full_minor(rows, {i, j, k, l}, normals), {i, j, k, l});
+            if (!filter.settled({i, j, k, l})) table.add(full_minor(rows, {i, j, k, l}, normals), {i, j, k, l});
             if (++minor_count_ % 4096 == 0) Work_budget::check();
           }
   minor_count_ = 0;

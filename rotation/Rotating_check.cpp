@@ -52,6 +52,66 @@ bool may_meet(const Swept_box& a, const Swept_box& b)
   return true;
 }
 
+// The convex leaves of a union (meshes are unions of hulls), each under the
+// transforms above it: pieces whose closed union is the closed shape.
+void convex_leaves(const Solid& s, std::vector<Solid>& out)
+{
+  if (s.kind == Solid::Kind::Union) {
+    for (const Solid& c : s.children) convex_leaves(c, out);
+    return;
+  }
+  if (s.kind != Solid::Kind::Translate && s.kind != Solid::Kind::Rotate) {
+    out.push_back(s);
+    return;
+  }
+  std::vector<Solid> inner;
+  convex_leaves(s.children.front(), inner);
+  for (Solid& leaf : inner) {
+    Solid wrap = s;
+    wrap.children = {std::move(leaf)};
+    out.push_back(std::move(wrap));
+  }
+}
+
+// An object and, when it is a union of several bounded convex pieces, each
+// piece on its own: a pair of such objects collides (or touches) exactly
+// when some pair of pieces does, and its t* is the least of theirs, so the
+// minors are those of two pieces' planes, not of two whole meshes.
+struct Object_parts {
+  Rotating_object whole;
+  std::vector<Solid> piece_solids;   // owned here, pointed to by pieces
+  std::vector<Rotating_object> pieces;
+  std::vector<Swept_box> piece_boxes;
+
+  Object_parts(const Scene_object& o, const Rational& lo, const Rational& hi) : whole(Rotating_object::make(o))
+  {
+    if (whole.shape.convex_pieces.size() < 2) return;
+    convex_leaves(o.shape, piece_solids);
+    for (const Solid& p : piece_solids) {
+      pieces.push_back(Rotating_object::piece(o, p));
+      piece_boxes.push_back(swept_box(pieces.back(), lo, hi));
+    }
+  }
+};
+
+Rotating_answer decide_parts(const Object_parts& a, const Object_parts& b, const Rational& lo, const Rational& hi,
+                             const Check_options& options, Static_check check)
+{
+  if (a.pieces.empty() && b.pieces.empty()) return decide_rotating_pair(a.whole, b.whole, lo, hi, options, check);
+  auto count = [](const Object_parts& p) { return p.pieces.empty() ? std::size_t(1) : p.pieces.size(); };
+  auto part = [](const Object_parts& p, std::size_t i) -> const Rotating_object& { return p.pieces.empty() ? p.whole : p.pieces[i]; };
+  Rotating_answer best;
+  for (std::size_t i = 0; i < count(a); ++i)
+    for (std::size_t j = 0; j < count(b); ++j) {
+      if (!a.pieces.empty() && !b.pieces.empty() && !may_meet(a.piece_boxes[i], b.piece_boxes[j])) continue;
+      Rotating_answer r = decide_rotating_pair(part(a, i), part(b, j), lo, hi, options, check);
+      if (!r.collide) continue;
+      if (!options.earliest) return r;
+      if (!best.collide || r.t_star < best.t_star) best = std::move(r);
+    }
+  return best;
+}
+
 // The pairs (i < j, in pair order) whose boxes may meet: a sweep along x
 // over the bounded boxes, and every pair with an unbounded one.
 std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Swept_box>& boxes)
@@ -84,11 +144,11 @@ bool scene_rotates(const Scene& scene)
 Rotating_check_answer check_rotating(const Scene& scene, const Check_options& options, const std::string& number)
 {
   Static_check check = number == "rational" ? &check_rational : &check_exact;
-  std::vector<Rotating_object> objects;
+  std::vector<Object_parts> objects;
   std::vector<Swept_box> boxes;
   for (const Scene_object& o : scene.objects) {
-    objects.push_back(Rotating_object::make(o));
-    boxes.push_back(swept_box(objects.back(), scene.t_lo, scene.t_hi));
+    objects.emplace_back(o, scene.t_lo, scene.t_hi);
+    boxes.push_back(swept_box(objects.back().whole, scene.t_lo, scene.t_hi));
   }
   Rotating_check_answer out;
   out.number = number;
@@ -97,7 +157,7 @@ Rotating_check_answer check_rotating(const Scene& scene, const Check_options& op
   for (auto [i, j] : candidate_pairs(boxes)) {
     if (scene.ignored(i, j)) continue;
     ++out.pairs_examined;
-    Rotating_answer a = decide_rotating_pair(objects[i], objects[j], scene.t_lo, scene.t_hi, options, check);
+    Rotating_answer a = decide_parts(objects[i], objects[j], scene.t_lo, scene.t_hi, options, check);
     if (!a.collide) continue;
     out.collide = true;
     out.pairs.push_back({scene.objects[i].name, scene.objects[j].name, std::move(a)});

@@ -208,7 +208,7 @@ bool in_closed_cells(const std::vector<Moving_plane>& rows, std::size_t offset, 
   }
   if (!independent)
     throw Rotation_unsupported("closed semantics at an irrational critical time: a contact point on more than three "
-                               "planes of '" + o.object->name + "', or on dependent ones (a degenerate contact this "
+                               "planes of '" + o.name + "', or on dependent ones (a degenerate contact this "
                                "release does not resolve)");
   for (unsigned mask = 0; mask < (1u << zero.size()); ++mask) {
     for (std::size_t k = 0; k < zero.size(); ++k) side[zero[k]] = (mask >> k) & 1 ? 1 : -1;
@@ -257,7 +257,12 @@ std::optional<std::array<Algebraic, 3>> closed_at_irrational(const std::vector<M
 
 Rotating_object Rotating_object::make(const Scene_object& o)
 {
-  return {&o, shape_planes(o.shape), pose_segments(o.motion)};
+  return {o.name, &o.shape, shape_planes(o.shape), pose_segments(o.motion)};
+}
+
+Rotating_object Rotating_object::piece(const Scene_object& o, const Solid& piece)
+{
+  return {o.name, &piece, shape_planes(piece), pose_segments(o.motion)};
 }
 
 Scene posed_pair(const Rotating_object& a, const Rotating_object& b, const Rational& t)
@@ -268,8 +273,8 @@ Scene posed_pair(const Rotating_object& a, const Rotating_object& b, const Ratio
   s.t_hi = Rational(1);
   for (const auto* o : {&a, &b}) {
     Scene_object so;
-    so.name = o->object->name;
-    so.shape = posed_solid(o->object->shape, segment_at(o->segments, t), t);
+    so.name = o->name;
+    so.shape = posed_solid(*o->solid, segment_at(o->segments, t), t);
     so.motion.velocities.push_back({Rational(0), Rational(0), Rational(0)});
     approximate_numbers(so.motion);
     s.objects.push_back(std::move(so));

@@ -19,13 +19,16 @@
 
 namespace clash4d {
 
-// An object as the rotation stage reads it.
+// An object, or one convex piece of it, as the rotation stage reads it.
 struct Rotating_object {
-  const Scene_object* object = nullptr;
+  std::string name;             // the object's
+  const Solid* solid = nullptr; // its shape or the piece, owned elsewhere
   Shape_planes shape;
   std::vector<Pose_segment> segments;
 
   static Rotating_object make(const Scene_object& o);
+  // A piece of o's shape, moving as o does.
+  static Rotating_object piece(const Scene_object& o, const Solid& piece);
 };
 
 // A question this release of the stage cannot decide exactly (the reason

@@ -293,11 +293,19 @@ json random_poses(Random_draw& r, bool turns)
   return {{"poses", poses}};
 }
 
+// A block, or a union of two (decided piece by piece: Rotating_check.cpp).
+json random_shape(Random_draw& r)
+{
+  if (r.percent(60)) return random_block(r);
+  json u = json::array({random_block(r), random_block(r)});
+  return {{"union", u}};
+}
+
 json random_rotating_scene(Random_draw& r)
 {
   json objects = json::array();
-  objects.push_back({{"name", "a"}, {"shape", random_block(r)}, {"motion", random_poses(r, true)}});
-  json b = {{"name", "b"}, {"shape", random_block(r)}};
+  objects.push_back({{"name", "a"}, {"shape", random_shape(r)}, {"motion", random_poses(r, true)}});
+  json b = {{"name", "b"}, {"shape", random_shape(r)}};
   if (r.percent(50)) b["motion"] = random_poses(r, r.percent(50));
   objects.push_back(b);
   return {{"format", "clash4d-scene/1"}, {"name", "random rotating"}, {"time", {0, 3}}, {"objects", objects}};
