@@ -14,6 +14,17 @@ using Point3 = std::array<Rational, 3>;
 
 bool is_zero(const Rational& x) { return CGAL::sign(x) == CGAL::ZERO; }
 
+// s under a transform solid (rotate or translate) with these numbers.
+Solid wrapped(Solid::Kind kind, const Rational* numbers, int count, Solid s)
+{
+  Solid w;
+  w.kind = kind;
+  w.path = s.path;
+  w.numbers.assign(numbers, numbers + count);
+  w.children.push_back(std::move(s));
+  return w;
+}
+
 // The shape where the pose puts it at time t: rotated about its origin,
 // then translated (spec: Motion with rotation (poses)), as the scene's own
 // rotate and translate solids, so the static pipeline reads it unchanged.
@@ -21,23 +32,9 @@ Solid posed_solid(const Solid& shape, const Pose_segment& s, const Rational& t)
 {
   Solid out = shape;
   std::array<Rational, 4> q = {s.q[0].at(t), s.q[1].at(t), s.q[2].at(t), s.q[3].at(t)};
-  if (!is_zero(q[1]) || !is_zero(q[2]) || !is_zero(q[3])) {
-    Solid r;
-    r.kind = Solid::Kind::Rotate;
-    r.path = shape.path;
-    r.numbers.assign(q.begin(), q.end());
-    r.children.push_back(std::move(out));
-    out = std::move(r);
-  }
+  if (!is_zero(q[1]) || !is_zero(q[2]) || !is_zero(q[3])) out = wrapped(Solid::Kind::Rotate, q.data(), 4, std::move(out));
   Point3 c = {s.c[0].at(t), s.c[1].at(t), s.c[2].at(t)};
-  if (!is_zero(c[0]) || !is_zero(c[1]) || !is_zero(c[2])) {
-    Solid m;
-    m.kind = Solid::Kind::Translate;
-    m.path = shape.path;
-    m.numbers.assign(c.begin(), c.end());
-    m.children.push_back(std::move(out));
-    out = std::move(m);
-  }
+  if (!is_zero(c[0]) || !is_zero(c[1]) || !is_zero(c[2])) out = wrapped(Solid::Kind::Translate, c.data(), 3, std::move(out));
   approximate_numbers(out);
   return out;
 }
