@@ -335,8 +335,11 @@ private:
     if (!hit.collide) return false;
     if (closed_ && options_.earliest)
       // The closed contact set is closed: had it met this interval first,
-      // it would have met its left end, which was asked before.
-      throw std::logic_error("rotation: closed contact inside a critical interval but not at its left end");
+      // it would have met its left end, which was asked before. An
+      // irrational left end whose contact point the minors did not give is
+      // named, never answered with a later time.
+      throw Rotation_unsupported("the first contact is at a critical time where no contact point was found "
+                                 "(a degenerate contact this release does not resolve)");
     answer_.collide = true;
     answer_.witness = with_time(hit.x, s);
     answer_.witness_verified = hit.verified;
