@@ -188,13 +188,10 @@ private:
 
 } // namespace
 
-Critical_times::Critical_times(const std::vector<Moving_plane>& planes, std::size_t first_count, const Rational& lo,
-                               const Rational& hi, bool low_rank)
+namespace {
+
+void check_minor_count(int m, int split)
 {
-  std::vector<Int_row> rows;
-  rows.reserve(planes.size());
-  for (const Moving_plane& h : planes) rows.push_back(integer_row(h));
-  int m = static_cast<int>(rows.size()), split = static_cast<int>(first_count);
   auto choose = [](double n, int k) {
     double c = 1;
     for (int i = 0; i < k; ++i) c = c * (n - i) / (i + 1);
@@ -207,56 +204,89 @@ Critical_times::Critical_times(const std::vector<Moving_plane>& planes, std::siz
                       std::to_string(static_cast<long long>(count)) + " minors, more than the limit of " +
                       std::to_string(CLASH4D_MAX_PAIR_MINORS) + " (the time slices take every minor of a pair's "
                       "planes; docs/rotation.md, Cost)");
-  // A plane both objects have (a face of each on z = 0, both turning
-  // about z: rows equal up to a factor of one sign) is one row of both: minors of it with one object's planes keep
-  // their sign, and minors holding it twice are zero. owner: 1 the first
-  // object's only, 2 the second's only, 3 both; alias: its first copy.
-  std::vector<int> owner(m), alias(m);
-  for (int i = 0; i < m; ++i) {
-    alias[i] = i;
-    owner[i] = i < split ? 1 : 2;
-    for (int j = 0; j < i && alias[i] == i; ++j)
-      if (alias[j] == j && proportional(rows[j], rows[i])) {
-        alias[i] = j;
-        owner[j] |= owner[i];
-      }
+}
+
+// Which object each row is a plane of. A plane both objects have (a face
+// of each on z = 0, both turning about z: rows equal up to a factor of one
+// sign) is one row of both, its first copy: a minor of it with one
+// object's planes keeps its sign, and a minor with another copy is a
+// multiple of one with the first.
+class Row_owners {
+public:
+  Row_owners(const std::vector<Int_row>& rows, int split) : owner_(rows.size()), first_(rows.size())
+  {
+    int m = static_cast<int>(rows.size());
+    for (int i = 0; i < m; ++i) {
+      first_[i] = true;
+      owner_[i] = i < split ? 1 : 2;
+      for (int j = 0; j < i && first_[i]; ++j)
+        if (first_[j] && proportional(rows[j], rows[i])) {
+          first_[i] = false;
+          owner_[j] |= owner_[i];
+        }
+    }
   }
-  for (int i = 0; i < m; ++i) owner[i] = owner[alias[i]];
-  auto mixed = [&](std::initializer_list<int> ids) {
+
+  // Whether the minor of these rows is one to solve: first copies only,
+  // with a plane of the first object only and one of the second only.
+  bool mixed(std::initializer_list<int> ids) const
+  {
     bool a = false, b = false;
     for (int i : ids) {
-      a = a || owner[i] == 1;
-      b = b || owner[i] == 2;
-      for (int j : ids)
-        if (j < i && alias[j] == alias[i]) return false;   // a plane twice: zero
+      if (!first_[i]) return false;
+      a = a || owner_[i] == 1;
+      b = b || owner_[i] == 2;
     }
     return a && b;
-  };
+  }
+
+private:
+  std::vector<int> owner_;    // 1: the first object's only, 2: the second's only, 3: both
+  std::vector<bool> first_;   // the first copy of its plane
+};
+
+} // namespace
+
+Critical_times::Critical_times(const std::vector<Moving_plane>& planes, std::size_t first_count, const Rational& lo,
+                               const Rational& hi, bool low_rank)
+{
+  std::vector<Int_row> rows;
+  rows.reserve(planes.size());
+  for (const Moving_plane& h : planes) rows.push_back(integer_row(h));
+  int m = static_cast<int>(rows.size());
+  check_minor_count(m, static_cast<int>(first_count));
+  Row_owners owners(rows, static_cast<int>(first_count));
   Interval_rows filter(planes, lo, hi);
   Normal_minors normals(rows);
   Minor_table table;
   if (low_rank)
     for (int i = 0; i < m; ++i)
       for (int j = i + 1; j < m; ++j)
-        if (mixed({i, j})) pair_minors(rows, i, j, table);
+        if (owners.mixed({i, j})) pair_minors(rows, i, j, table);
   for (int i = 0; i < m; ++i)
     for (int j = i + 1; j < m; ++j)
       for (int k = j + 1; k < m; ++k)
-        if (mixed({i, j, k})) {
+        if (owners.mixed({i, j, k})) {
           // with v_inf: parallel planes, or three meeting at infinity
           if (!filter.settled({i, j, k, -1})) table.add(normals(i, j, k), {i, j, k, -1});
           if (low_rank) low_rank_minors(rows, i, j, k, table);
         }
+  std::size_t made = 0;
   for (int i = 0; i < m; ++i)
     for (int j = i + 1; j < m; ++j)
       for (int k = j + 1; k < m; ++k)
         for (int l = k + 1; l < m; ++l)
-          if (mixed({i, j, k, l})) {
+          if (owners.mixed({i, j, k, l})) {
             if (!filter.settled({i, j, k, l})) table.add(full_minor(rows, {i, j, k, l}, normals), {i, j, k, l});
-            if (++minor_count_ % 4096 == 0) Work_budget::check();
+            if (++made % 4096 == 0) Work_budget::check();
           }
-  minor_count_ = 0;
-  for (const auto& [key, minors] : table.table()) {
+  solve(table.table(), lo, hi);
+}
+
+void Critical_times::solve(const std::map<std::vector<mpz_class>, std::vector<Minor_rows>>& table, const Rational& lo,
+                           const Rational& hi)
+{
+  for (const auto& [key, minors] : table) {
     Work_budget::check();
     minor_count_ += minors.size();
     for (Algebraic& r : Algebraic::real_roots(key, lo, hi)) {

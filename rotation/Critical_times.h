@@ -13,6 +13,7 @@
 #include "numbers/Algebraic.h"
 #include "rotation/Moving_planes.h"
 #include <array>
+#include <map>
 #include <stdexcept>
 #include <vector>
 
@@ -45,9 +46,14 @@ public:
 
   // Ascending, distinct, each strictly inside (lo, hi).
   const std::vector<Critical_time>& times() const { return times_; }
+  // The minors solved (those the intervals did not settle).
   std::size_t minor_count() const { return minor_count_; }
 
 private:
+  // The real roots in (lo, hi) of each distinct minor, merged in order.
+  void solve(const std::map<std::vector<mpz_class>, std::vector<Minor_rows>>& table, const Rational& lo,
+             const Rational& hi);
+
   std::vector<Critical_time> times_;
   std::size_t minor_count_ = 0;
 };
