@@ -432,6 +432,14 @@ BOOST_AUTO_TEST_CASE(check_command_on_rotating_scenes)
   BOOST_TEST(j["earliest"]["point"][0] == "6/5");
   BOOST_TEST(j["earliest"]["point"][3] == t);
 
+  // Three objects: the peg stays in the pocket, the part's corner reaches
+  // the wall (fixtures/rotation/expected.json): one colliding pair.
+  Cli_run all = run_clash4d({"check", dir + "pocket_past_peg.json", "--all-pairs", "--json"});
+  BOOST_TEST(all.status == 1);
+  json pairs = json::parse(all.out)["pairs"];
+  BOOST_TEST(pairs.size() == 1u);
+  BOOST_TEST(pairs[0]["objects"] == json({"part", "wall"}));
+
   Cli_run apart = run_clash4d({"check", dir + "door_against_stop.json"});
   BOOST_TEST(apart.status == 0);
   BOOST_TEST(apart.out.find("no collision (exact, with rotation)") != std::string::npos, apart.out);
