@@ -1,5 +1,8 @@
 #include "rotation/Pose_segments.h"
 
+#include "model/Far_bound.h"
+#include "model/Motion_path.h"
+
 #include <stdexcept>
 
 namespace clash4d {
@@ -47,28 +50,22 @@ std::vector<Pose_segment> from_poses(const std::vector<Pose>& poses)
   return out;
 }
 
-// D(t) = v_i t + o_i on segment i, D(0) = 0 and D continuous (spec: Motion).
+// D(t) = v_i t + o_i on segment i, as the translation pipeline's own path
+// makes it (model/Motion_path.h), in the scene's rationals.
 std::vector<Pose_segment> from_robmod(const Motion& m)
 {
-  std::size_t n = m.velocities.size();
-  if (n != m.times.size() + 1) throw std::logic_error("pose_segments: a motion without its velocities");
-  std::vector<std::array<Rational, 3>> offset(n, {Rational(0), Rational(0), Rational(0)});
-  std::size_t zero = 0;
-  while (zero < m.times.size() && m.times[zero] < 0) ++zero;
-  for (std::size_t i = zero; i + 1 < n; ++i)
-    for (int a = 0; a < 3; ++a) offset[i + 1][a] = offset[i][a] + (m.velocities[i][a] - m.velocities[i + 1][a]) * m.times[i];
-  for (std::size_t i = zero; i > 0; --i)
-    for (int a = 0; a < 3; ++a)
-      offset[i - 1][a] = offset[i][a] + (m.velocities[i][a] - m.velocities[i - 1][a]) * m.times[i - 1];
+  far_bound_detail::Exact_reader reader;
+  Motion_path<Rational> path = Motion_path<Rational>::build(reader, m);
+  std::size_t n = path.velocity.size();
   std::vector<Pose_segment> out(n);
   for (std::size_t i = 0; i < n; ++i) {
     Pose_segment& s = out[i];
     s.from_minus_infinity = i == 0;
     s.to_plus_infinity = i + 1 == n;
-    if (i > 0) s.lo = m.times[i - 1];
-    if (i + 1 < n) s.hi = m.times[i];
+    if (i > 0) s.lo = path.times[i - 1];
+    if (i + 1 < n) s.hi = path.times[i];
     s.q = {constant(Rational(1)), constant(Rational(0)), constant(Rational(0)), constant(Rational(0))};
-    for (int a = 0; a < 3; ++a) s.c[a] = Time_poly(offset[i][a], m.velocities[i][a]);
+    for (int a = 0; a < 3; ++a) s.c[a] = Time_poly(path.offset[i][a], path.velocity[i][a]);
   }
   return out;
 }
