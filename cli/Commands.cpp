@@ -11,6 +11,7 @@
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
 #include "rotation/Rotating_check.h"
+#include "rotation/Rotating_extrusion.h"
 #include "scene/Files.h"
 #include "scene/Input_error.h"
 #include "scene/Rotation_refusal.h"
@@ -129,6 +130,11 @@ void print_extrusion_text(const json& report, std::ostream& out)
   for (const auto& span : report["spans"]) {
     out << "sub-span " << span["t"][0].get<std::string>() << " <= t <= " << span["t"][1].get<std::string>() << "\n";
     for (const auto& o : span["objects"]) {
+      if (o.contains("pose")) {   // a scene where something turns
+        out << "  object " << printable(o["name"].get<std::string>()) << ": " << o["pose"]["text"].get<std::string>() << "\n";
+        tree(o["tree"], 2);
+        continue;
+      }
       const auto &v = o["velocity"], &c = o["offset"];
       out << "  object " << printable(o["name"].get<std::string>()) << ": D(t) = (" << v[0].get<std::string>() << ", "
           << v[1].get<std::string>() << ", " << v[2].get<std::string>() << ") t + (" << c[0].get<std::string>()
@@ -403,8 +409,15 @@ Command add_extrude(CLI::App& app, std::ostream& out, std::ostream& err)
   return [cmd, a, &out, &err] {
     if (!cmd->parsed()) return -1;
     return with_scene(*a, err, [&](const Scene& scene) {
-      refuse_rotation(scene, rotation_unsupported_by("extrude"));
-      json report = instantiation(a->number).extrude(scene);
+      json report;
+      if (scene_rotates(scene)) {
+        // Polynomials in t are printed exactly (rotation/Rotating_extrusion.h).
+        if (a->number == "double") refuse_rotation(scene, "it turns, and extrude prints its polynomials exactly only (--number exact or rational, not double)");
+        report = rotating_extrusion(scene);
+        report["number"] = a->number;   // exact or rational: the same exact polynomials
+      } else {
+        report = instantiation(a->number).extrude(scene);
+      }
       if (a->as_json) out << report.dump(2) << "\n"; else print_extrusion_text(report, out);
       return 0;
     });

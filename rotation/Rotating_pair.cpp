@@ -114,6 +114,53 @@ std::array<Algebraic, 3> point_at(const std::array<Time_poly, 3>& num, const Tim
   return {quotient_at(num[0], den, t), quotient_at(num[1], den, t), quotient_at(num[2], den, t)};
 }
 
+// t's minimal polynomial over Q (t - q for a rational q), constant first.
+std::vector<Rational> minimal_polynomial(const Algebraic& t)
+{
+  if (t.is_rational()) return {-t.rational(), Rational(1)};
+  std::vector<Rational> m;
+  for (const mpz_class& c : t.polynomial()) m.emplace_back(CGAL::Gmpz(c.get_mpz_t()));
+  return m;
+}
+
+// p / m when m divides p in Q[t] (long division, remainder zero); p = 0
+// divides as 0.
+std::optional<Time_poly> divided(const Time_poly& p, const std::vector<Rational>& m)
+{
+  std::vector<Rational> r = p.coefficients();
+  while (!r.empty() && is_zero(r.back())) r.pop_back();
+  if (r.empty()) return Time_poly(Rational(0));
+  if (r.size() < m.size()) return std::nullopt;
+  std::vector<Rational> q(r.size() - m.size() + 1);
+  for (std::size_t i = q.size(); i-- > 0;) {
+    q[i] = r[i + m.size() - 1] / m.back();
+    for (std::size_t j = 0; j < m.size(); ++j) r[i + j] -= q[i] * m[j];
+  }
+  for (const Rational& x : r)
+    if (!is_zero(x)) return std::nullopt;
+  return Time_poly(q);
+}
+
+// lim num(t) / den(t) as t -> t*, den not identically zero: with m the
+// minimal polynomial of t* and m^k the largest power dividing den, the
+// limit is (num / m^k)(t*) / (den / m^k)(t*) when m^k divides each num
+// (L'Hopital, exactly); otherwise the point runs off to infinity (none).
+std::optional<std::array<Algebraic, 3>> limit_at(std::array<Time_poly, 3> num, Time_poly den, const Algebraic& t)
+{
+  std::vector<Rational> m = minimal_polynomial(t);
+  while (sign_at(den, t) == CGAL::ZERO) {
+    std::optional<Time_poly> d = divided(den, m);
+    if (!d) return std::nullopt;   // not reached: m divides every p with p(t*) = 0
+    den = *d;
+    for (Time_poly& n : num) {
+      std::optional<Time_poly> q = divided(n, m);
+      if (!q) return std::nullopt;
+      n = *q;
+    }
+  }
+  return point_at(num, den, t);
+}
+
 std::array<Algebraic, 4> with_time(const Point3& x, const Rational& t)
 {
   return {Algebraic(x[0]), Algebraic(x[1]), Algebraic(x[2]), Algebraic(t)};
@@ -123,9 +170,11 @@ std::array<Algebraic, 4> with_time(const Point3& x, const Rational& t)
 // left end of the first colliding critical interval whose sample s has the
 // generic witness w. The closure of w's cell at s, P(t) = { x : h_i(x, t)
 // is 0 or of the sign of h_i(w, s) },
-// keeps its vertices' planes on the whole interval (fact 10), so a vertex of
-// P(s) whose three planes stay independent at t* moves to a point of the
-// closure: its coordinates, Cramer's quotients, at t*.
+// keeps its vertices' planes on the whole interval (fact 10), so a vertex
+// x(t) of P(s) (Cramer's quotients) is a point of the closure for every t
+// in (t*, s], and so is its limit at t*: the quotients at t*, or, where the
+// vertex's three planes become dependent at t*, the limit of the quotients
+// when it is finite (limit_at).
 std::array<Algebraic, 3> contact_point(const std::vector<Moving_plane>& rows, const Point3& w, const Rational& s,
                                        const Algebraic& t_star)
 {
@@ -155,11 +204,10 @@ std::array<Algebraic, 3> contact_point(const std::vector<Moving_plane>& rows, co
           in_cell = side[l] * CGAL::sign(at[l][0] * x[0] + at[l][1] * x[1] + at[l][2] * x[2] + at[l][3]) >= 0;
         if (!in_cell) continue;
         Time_poly den = normal_minor(rows[i], rows[j], rows[k]);
-        if (sign_at(den, t_star) == CGAL::ZERO) continue;
-        return point_at(cramer_numerators(rows[i], rows[j], rows[k]), den, t_star);
+        if (auto x = limit_at(cramer_numerators(rows[i], rows[j], rows[k]), den, t_star)) return *x;
       }
-  throw Rotation_unsupported("the contact point at t*: no vertex of the witness's cell stays a vertex at t* "
-                             "(a degenerate contact this release does not resolve)");
+  throw Rotation_unsupported("the contact point at t*: every vertex of the witness's cell runs off to infinity "
+                             "at t* (a degenerate contact this release does not resolve)");
 }
 
 // Whether the point x(r) = num / den lies in the closed object: in some

@@ -400,6 +400,14 @@ BOOST_AUTO_TEST_CASE(random_rotating_scenes)
                                                                     << b.reported()->answer.t_star.to_text());
         (sem == Semantics::closed ? contacts : collisions) += 1;
         irrational += !t.is_rational();
+        // The contact point is a point of both closed objects at t* (the
+        // evaluator above, where every number is rational).
+        const auto& x = a.reported()->answer.contact;
+        if (t.is_rational() && x[0].is_rational() && x[1].is_rational() && x[2].is_rational()) {
+          Point p = {x[0].rational(), x[1].rational(), x[2].rational()};
+          for (const auto& obj : sj["objects"])
+            BOOST_TEST(object_holds(obj, p, t.rational(), false), "contact point not in " << obj["name"]);
+        }
         if (compare(t, scene.t_lo) > 0)
           BOOST_TEST(!static_collides(scene, beside(t, -1), sem), "something before t* = " << t.to_text());
         if (sem == Semantics::regularised)
@@ -410,6 +418,150 @@ BOOST_AUTO_TEST_CASE(random_rotating_scenes)
   BOOST_TEST_MESSAGE(collisions << " collisions, " << contacts << " closed contacts, " << irrational << " irrational t*");
   BOOST_TEST(collisions >= cases / 5);
   BOOST_TEST(irrational >= 1);
+}
+
+// Two blocks of a turning union touch a block along an edge at t = 0 and
+// overlap after it: at t* = 0 the vertices of the witness's cell (w at
+// t = 1/6) that sit on the planes x = 0 and z = 0 of the two objects lose
+// their third plane, so the contact point is the limit of a vertex as
+// t -> 0+ (Rotating_pair.cpp, limit_at), not Cramer's point at t*. By
+// hand: at t = 0, a's second block is [-3/2, 0] x [-3/2, 0] x [-1/2, 0]
+// (its shape plus c = (-1/2, 0, -1)) and b is [0, 1] x [-3/2, 0] x [0, 1]:
+// they meet on the edge x = z = 0, -3/2 <= y <= 0.
+BOOST_AUTO_TEST_CASE(contact_point_where_the_cell_degenerates_at_t_star)
+{
+  json sj = json::parse(R"({"format": "clash4d-scene/1", "name": "edge contact at the start", "time": [0, 3],
+    "objects": [
+      {"name": "a", "motion": {"poses": [{"t": 0, "translate": ["-1/2", "0", "-1"]},
+                                         {"t": 2, "translate": ["3/2", "-3/2", "-1"], "rotate": [1, -1, 0, -1]},
+                                         {"t": 3, "translate": ["1", "0", "1"], "rotate": [1, -1, 0, -1]}]},
+       "shape": {"union": [{"block": {"min": ["-1/2", "-1", "0"], "max": ["0", "1", "1"]}},
+                           {"block": {"min": ["-1", "-3/2", "1/2"], "max": ["1/2", "0", "1"]}}]}},
+      {"name": "b", "shape": {"block": {"min": ["0", "-3/2", "0"], "max": ["1", "0", "1"]}}}]})");
+  Scene scene = parse_scene(sj);
+  Check_options o;
+  o.earliest = true;
+  Rotating_check_answer a = check_rotating(scene, o, "exact");
+  BOOST_REQUIRE(a.collide);
+  const Rotating_answer& r = a.reported()->answer;
+  BOOST_TEST(compare(r.t_star, Rational(0)) == 0);
+  BOOST_TEST(r.at_start);
+  BOOST_TEST(compare(r.contact[0], Rational(0)) == 0);
+  BOOST_TEST(compare(r.contact[2], Rational(0)) == 0);
+  BOOST_TEST(compare(r.contact[1], q("-3/2")) >= 0);
+  BOOST_TEST(compare(r.contact[1], Rational(0)) <= 0);
+}
+
+// ---- `extrude` on rotating scenes: the polynomial half-spaces it prints,
+// read back from its JSON and evaluated at random rational points and
+// times, give the same membership as the evaluator above (written from the
+// spec's pose law, not from rotation/Moving_planes).
+namespace {
+
+Rational poly_at(const json& coefficients, const Rational& t)
+{
+  Rational v(0);
+  for (std::size_t i = coefficients.size(); i-- > 0;) v = v * t + q(coefficients[i].get<std::string>());
+  return v;
+}
+
+// Strict membership by the printed tree; false in `generic` when the point
+// is on one of its planes (no strict answer there).
+bool printed_inside(const json& node, const Point& x, const Rational& t, bool& generic)
+{
+  if (node.contains("primitive") || node.contains("time")) {
+    bool in = true;
+    for (const auto& h : node.contains("time") ? node["time"] : node["halfspaces"]) {
+      const json& c = h["coefficients"];
+      Rational v = poly_at(c[0], t) * x[0] + poly_at(c[1], t) * x[1] + poly_at(c[2], t) * x[2] + poly_at(c[3], t);
+      generic = generic && CGAL::sign(v) != CGAL::ZERO;
+      in = in && v < 0;
+    }
+    return in;
+  }
+  const std::string op = node.begin().key();
+  const json& kids = node.begin().value();
+  bool first = printed_inside(kids[0], x, t, generic), any = first, all = first, rest = false;
+  for (std::size_t i = 1; i < kids.size(); ++i) {
+    bool in = printed_inside(kids[i], x, t, generic);
+    any = any || in;
+    all = all && in;
+    rest = rest || in;
+  }
+  return op == "union" ? any : op == "intersection" ? all : first && !rest;
+}
+
+// The first block of a shape (its min and max): where to draw points.
+const json& first_block(const json& s)
+{
+  if (s.contains("block")) return s["block"];
+  return first_block(s.contains("union") ? s["union"][0] : s["difference"][0]);
+}
+
+// A point near the object's first block at time t: p drawn around the
+// block in shape coordinates, then x = R(q) p / |q|^2 + c (the spec's pose).
+Point point_near(const json& o, const Rational& t, Random_draw& draw)
+{
+  const json& b = first_block(o["shape"]);
+  Point p;
+  for (int i = 0; i < 3; ++i) {
+    Rational lo = number(b["min"][i]), hi = number(b["max"][i]);
+    p[i] = lo + (hi - lo) * Rational(2 * static_cast<int>(draw.range(-2, 9)) + 1, 16);   // odd: off the faces
+  }
+  if (!o.contains("motion")) return p;
+  Pose_at a = pose_at(o["motion"], t);
+  const auto& [w, x, y, z] = a.q;
+  Rational n = w * w + x * x + y * y + z * z;
+  Rational R[3][3] = {{w * w + x * x - y * y - z * z, 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                      {2 * (x * y + w * z), w * w - x * x + y * y - z * z, 2 * (y * z - w * x)},
+                      {2 * (x * z - w * y), 2 * (y * z + w * x), w * w - x * x - y * y + z * z}};
+  Point out;
+  for (int i = 0; i < 3; ++i) out[i] = (R[i][0] * p[0] + R[i][1] * p[1] + R[i][2] * p[2]) / n + a.c[i];
+  return out;
+}
+
+} // namespace
+
+BOOST_DATA_TEST_CASE(extrude_prints_the_pose_law, data::make(fixture_names()), name)
+{
+  std::string path = std::string(CLASH4D_FIXTURES) + "/rotation/" + name;
+  Cli_run r = run_clash4d({"extrude", path, "--json"});
+  BOOST_REQUIRE_EQUAL(r.status, 0);
+  json report = json::parse(r.out), sj = scene_json(name);
+  BOOST_TEST(report["rotation"].get<bool>());
+  Random_draw draw(6162);
+  int compared = 0, inside = 0;
+  for (const auto& span : report["spans"]) {
+    Rational lo = q(span["t"][0].get<std::string>()), hi = q(span["t"][1].get<std::string>());
+    for (const auto& o : span["objects"])
+      for (int k = 0; k < 40; ++k) {
+        Rational t = lo + (hi - lo) * Rational(static_cast<int>(draw.range(1, 15)), 16);
+        Point x = point_near(object_named(sj, o["name"].get<std::string>()), t, draw);
+        bool generic = true;
+        bool printed = printed_inside(o["tree"], x, t, generic);
+        if (!generic) continue;
+        ++compared;
+        inside += printed;
+        BOOST_TEST(printed == object_holds(object_named(sj, o["name"].get<std::string>()), x, t, true),
+                   o["name"] << " at t = " << t << ", x = " << x[0] << " " << x[1] << " " << x[2]);
+      }
+  }
+  BOOST_TEST_MESSAGE(name << ": " << compared << " points, " << inside << " inside");
+  BOOST_TEST(compared > 20);
+  BOOST_TEST(inside > compared / 10);   // not only points outside everything
+}
+
+// The square's face x <= 1 turning about z with q(t) = (1, 0, 0, t): by
+// hand, N(q) a for a = (1, 0, 0) is (1 - t^2, 2t, 0) and e = |q|^2 (-1).
+BOOST_AUTO_TEST_CASE(extrude_text_of_a_turning_face)
+{
+  Cli_run r = run_clash4d({"extrude", std::string(CLASH4D_FIXTURES) + "/rotation/square_into_slab.json"});
+  BOOST_REQUIRE_EQUAL(r.status, 0);
+  BOOST_TEST(r.out.find("q(t) = (1, 0, 0, t), c(t) = (0, 0, 0)") != std::string::npos, r.out);
+  BOOST_TEST(r.out.find("(-t^2 + 1)*x + 2*t*y - t^2 - 1 <= 0") != std::string::npos, r.out);
+  Cli_run d = run_clash4d({"extrude", std::string(CLASH4D_FIXTURES) + "/rotation/square_into_slab.json", "--number", "double"});
+  BOOST_TEST(d.status == 2);
+  BOOST_TEST(d.err.find("objects[0].motion") != std::string::npos, d.err);
 }
 
 // The command line on rotating scenes: the spec's exit statuses and JSON
