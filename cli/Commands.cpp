@@ -482,7 +482,7 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
     return with_scene(*a, err, [&](const Scene& scene) {
       if (!a->certificate.empty()) refuse_rotation(scene, "certificates for motions with rotation are not supported yet");
       if (scene_rotates(scene))   // time slices (rotation/), regularised-semantics.md facts 9-12
-        return run_rotating_check(scene, {a->file, a->number, a->options, a->stats}, out);
+        return run_rotating_check(scene, {a->file, a->number, a->options, a->stats, a->tolerance}, out);
       Check_answer answer = instantiation(a->number).check(scene, a->options, a->tolerance);
       if (!a->certificate.empty()) {
         // Before the answer is printed: a certificate that cannot be made

@@ -15,37 +15,48 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-json point_json(const Algebraic* x, int n)
+// The double instantiation's numbers are doubles: printed as their shortest
+// decimals, as the translation pipeline's double answers are (every one is
+// a double's exact value, so nothing is lost).
+struct Number_format {
+  bool decimal = false;
+  json operator()(const Algebraic& x) const { return decimal ? json(shortest_decimal(x.to_double())) : number_json(x); }
+  std::string text(const Algebraic& x) const { return decimal ? shortest_decimal(x.to_double()) : x.to_text(); }
+};
+
+json point_json(const Algebraic* x, int n, const Number_format& f)
 {
   json p = json::array();
-  for (int i = 0; i < n; ++i) p.push_back(number_json(x[i]));
+  for (int i = 0; i < n; ++i) p.push_back(f(x[i]));
   return p;
 }
 
-json contact_json(const Rotating_answer& a)
+json contact_json(const Rotating_answer& a, const Number_format& f)
 {
   std::array<Algebraic, 4> p = {a.contact[0], a.contact[1], a.contact[2], a.t_star};
-  return json{{"t", number_json(a.t_star)}, {"point", point_json(p.data(), 4)}, {"at_start", a.at_start}};
+  return json{{"t", f(a.t_star)}, {"point", point_json(p.data(), 4, f)}, {"at_start", a.at_start}};
 }
 
-json answer_json(const Rotating_check_answer& a, const Check_options& o, bool stats)
+json answer_json(const Rotating_check_answer& a, const Check_options& o, bool stats, double tolerance)
 {
   json j = {{"collide", a.collide}, {"number", a.number}, {"semantics", semantics_name(a.semantics)}};
-  auto witness_json = [](const Rotating_pair_answer& p) {
-    return json{{"objects", {p.a, p.b}}, {"point", point_json(p.answer.witness.data(), 4)},
+  Number_format f{a.number == "double"};
+  if (f.decimal) j["tolerance"] = tolerance;
+  auto witness_json = [&](const Rotating_pair_answer& p) {
+    return json{{"objects", {p.a, p.b}}, {"point", point_json(p.answer.witness.data(), 4, f)},
                 {"verified", p.answer.witness_verified}};
   };
   const Rotating_pair_answer* main = a.reported();
   if (main) j["witness"] = witness_json(*main);
   if (main && o.earliest) {
-    j["earliest"] = contact_json(main->answer);
+    j["earliest"] = contact_json(main->answer, f);
     j["earliest"]["objects"] = {main->a, main->b};
   }
   if (o.all_pairs) {
     j["pairs"] = json::array();
     for (const auto& p : a.pairs) {
       json e = {{"objects", {p.a, p.b}}, {"witness", witness_json(p)}};
-      if (o.earliest) e["earliest"] = contact_json(p.answer);
+      if (o.earliest) e["earliest"] = contact_json(p.answer, f);
       j["pairs"].push_back(e);
     }
   }
@@ -53,13 +64,14 @@ json answer_json(const Rotating_check_answer& a, const Check_options& o, bool st
   return j;
 }
 
-std::string point_text(const std::array<Algebraic, 4>& p)
+std::string point_text(const std::array<Algebraic, 4>& p, const Number_format& f)
 {
-  return "x = " + p[0].to_text() + ", y = " + p[1].to_text() + ", z = " + p[2].to_text() + ", t = " + p[3].to_text();
+  return "x = " + f.text(p[0]) + ", y = " + f.text(p[1]) + ", z = " + f.text(p[2]) + ", t = " + f.text(p[3]);
 }
 
 void print_text(const Rotating_check_answer& a, const Check_options& o, bool stats, std::ostream& out)
 {
+  Number_format f{a.number == "double"};
   bool closed = a.semantics == Semantics::closed;
   std::string how = a.number + (closed ? ", closed semantics" : "") + ", with rotation";
   const Rotating_pair_answer* main = a.reported();
@@ -68,11 +80,11 @@ void print_text(const Rotating_check_answer& a, const Check_options& o, bool sta
     if (!o.all_pairs && &p != main) continue;
     out << (closed ? "contact or collision: " : "collision: ") << printable(p.a) << " and " << printable(p.b) << " ("
         << how << ")\n";
-    out << (closed ? "  common point: " : "  witness: ") << point_text(p.answer.witness) << "\n";
+    out << (closed ? "  common point: " : "  witness: ") << point_text(p.answer.witness, f) << "\n";
     if (p.answer.earliest)
-      out << (closed ? "  first contact: t* = " : "  earliest: t* = ") << p.answer.t_star.to_text() << " at x = "
-          << p.answer.contact[0].to_text() << ", y = " << p.answer.contact[1].to_text()
-          << ", z = " << p.answer.contact[2].to_text()
+      out << (closed ? "  first contact: t* = " : "  earliest: t* = ") << f.text(p.answer.t_star) << " at x = "
+          << f.text(p.answer.contact[0]) << ", y = " << f.text(p.answer.contact[1])
+          << ", z = " << f.text(p.answer.contact[2])
           << (p.answer.at_start ? "  (already in contact at the start of the span)" : "") << "\n";
   }
   if (o.earliest && main && o.all_pairs) out << "earliest pair: " << printable(main->a) << " and " << printable(main->b) << "\n";
@@ -83,17 +95,15 @@ void print_text(const Rotating_check_answer& a, const Check_options& o, bool sta
 
 int run_rotating_check(const Scene& scene, const Rotating_check_request& r, std::ostream& out)
 {
-  if (r.number == "double")
-    refuse_rotation(scene, "--number double does not decide motions with rotation yet (use exact or rational)");
   Rotating_check_answer answer;
   try {
-    answer = check_rotating(scene, r.options, r.number);
+    answer = check_rotating(scene, r.options, r.number, r.tolerance);
   } catch (const Rotation_unsupported& e) {
     refuse_rotation(scene, std::string("not decided: ") + e.what());
   } catch (const Minor_limit& e) {
     throw Input_error("objects", e.what(), CLASH4D_EXIT_LIMIT);
   }
-  if (r.options.json) out << answer_json(answer, r.options, r.stats).dump(2) << "\n";
+  if (r.options.json) out << answer_json(answer, r.options, r.stats, r.tolerance).dump(2) << "\n";
   else print_text(answer, r.options, r.stats, out);
   return answer.collide ? 1 : 0;
 }

@@ -16,6 +16,7 @@ struct Rotating_check_request {
   std::string file, number;
   Check_options options;
   bool stats = false;
+  double tolerance = 0;   // --number double: the static double pipeline's
 };
 
 // The exit status: 0 no collision, 1 collision. A question this release

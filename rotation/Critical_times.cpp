@@ -1,5 +1,7 @@
 #include "rotation/Critical_times.h"
 
+#include "rotation/Pair_minors.h"
+
 #include "search/Work_budget.h"
 
 #include <CGAL/Interval_nt.h>
@@ -37,20 +39,6 @@ Int_row integer_row(const Moving_plane& h)
 
 using Poly_key = std::vector<mpz_class>;
 
-// Whether two rows are proportional as vectors of polynomials (every 2 x 2
-// minor identically zero): the same plane up to a factor that is a
-// function of t of one sign (a norm |q(t)|^2, or its negative).
-bool proportional(const Int_row& u, const Int_row& v)
-{
-  for (int a = 0; a < 4; ++a)
-    for (int b = a + 1; b < 4; ++b) {
-      Int_poly d = u[a] * v[b] - u[b] * v[a];
-      for (int i = 0; i < d.size(); ++i)
-        if (d[i] != 0) return false;
-    }
-  return true;
-}
-
 // The coefficients without trailing zeros, divided by their gcd, the last
 // one positive: one key per polynomial up to a non-zero factor; empty for
 // the zero polynomial.
@@ -80,32 +68,6 @@ public:
 private:
   std::map<Poly_key, std::vector<Minor_rows>> table_;
 };
-
-// The 4 x 4 determinant of rows i < j < k < l by the last column: the
-// offsets e against the minors of the normals.
-template <class Normals>
-Int_poly full_minor(const std::vector<Int_row>& r, const Minor_rows& m, Normals& D)
-{
-  auto [i, j, k, l] = m;
-  return r[j][3] * D(i, k, l) - r[i][3] * D(j, k, l) + r[l][3] * D(i, j, k) - r[k][3] * D(i, j, l);
-}
-
-// The 2 x 2 minors of rows (i, j) over each two of the four columns.
-void pair_minors(const std::vector<Int_row>& r, int i, int j, Minor_table& table)
-{
-  for (int a = 0; a < 4; ++a)
-    for (int b = a + 1; b < 4; ++b) table.add(r[i][a] * r[j][b] - r[i][b] * r[j][a], {i, j, -1, -1});
-}
-
-// The 3 x 3 minors of rows (i, j, k) over each three of the four columns.
-void low_rank_minors(const std::vector<Int_row>& r, int i, int j, int k, Minor_table& table)
-{
-  for (int drop = 0; drop < 3; ++drop) {
-    std::array<Int_row, 3> rows = {r[i], r[j], r[k]};
-    for (auto& row : rows) row[drop] = row[3];   // column `drop` replaced by e
-    table.add(normal_minor(rows[0], rows[1], rows[2]), {i, j, k, -1});
-  }
-}
 
 // A filter before any exact minor (one predicate: "this minor has no root
 // on [lo, hi]"): the rows evaluated in intervals on a few closed pieces of
@@ -170,27 +132,9 @@ private:
   std::vector<std::vector<std::array<I, 4>>> at_;   // [piece][row]
 };
 
-// The exact minors of the normals, made when a full minor needs them.
-class Normal_minors {
-public:
-  explicit Normal_minors(const std::vector<Int_row>& rows) : rows_(rows) {}
-  const Int_poly& operator()(int i, int j, int k)
-  {
-    auto [it, added] = made_.try_emplace({i, j, k});
-    if (added) it->second = normal_minor(rows_[i], rows_[j], rows_[k]);
-    return it->second;
-  }
-
-private:
-  const std::vector<Int_row>& rows_;
-  std::map<std::array<int, 3>, Int_poly> made_;
-};
-
 } // namespace
 
-namespace {
-
-void check_minor_count(int m, int split)
+void check_pair_minor_count(int m, int split)
 {
   auto choose = [](double n, int k) {
     double c = 1;
@@ -206,80 +150,15 @@ void check_minor_count(int m, int split)
                       "planes; docs/rotation.md, Cost)");
 }
 
-// Which object each row is a plane of. A plane both objects have (a face
-// of each on z = 0, both turning about z: rows equal up to a factor of one
-// sign) is one row of both, its first copy: a minor of it with one
-// object's planes keeps its sign, and a minor with another copy is a
-// multiple of one with the first.
-class Row_owners {
-public:
-  Row_owners(const std::vector<Int_row>& rows, int split) : owner_(rows.size()), first_(rows.size())
-  {
-    int m = static_cast<int>(rows.size());
-    for (int i = 0; i < m; ++i) {
-      first_[i] = true;
-      owner_[i] = i < split ? 1 : 2;
-      for (int j = 0; j < i && first_[i]; ++j)
-        if (first_[j] && proportional(rows[j], rows[i])) {
-          first_[i] = false;
-          owner_[j] |= owner_[i];
-        }
-    }
-  }
-
-  // Whether the minor of these rows is one to solve: first copies only,
-  // with a plane of the first object only and one of the second only.
-  bool mixed(std::initializer_list<int> ids) const
-  {
-    bool a = false, b = false;
-    for (int i : ids) {
-      if (!first_[i]) return false;
-      a = a || owner_[i] == 1;
-      b = b || owner_[i] == 2;
-    }
-    return a && b;
-  }
-
-private:
-  std::vector<int> owner_;    // 1: the first object's only, 2: the second's only, 3: both
-  std::vector<bool> first_;   // the first copy of its plane
-};
-
-} // namespace
-
 Critical_times::Critical_times(const std::vector<Moving_plane>& planes, std::size_t first_count, const Rational& lo,
                                const Rational& hi, bool low_rank)
 {
   std::vector<Int_row> rows;
   rows.reserve(planes.size());
   for (const Moving_plane& h : planes) rows.push_back(integer_row(h));
-  int m = static_cast<int>(rows.size());
-  check_minor_count(m, static_cast<int>(first_count));
-  Row_owners owners(rows, static_cast<int>(first_count));
-  Interval_rows filter(planes, lo, hi);
-  Normal_minors normals(rows);
+  check_pair_minor_count(static_cast<int>(rows.size()), static_cast<int>(first_count));
   Minor_table table;
-  if (low_rank)
-    for (int i = 0; i < m; ++i)
-      for (int j = i + 1; j < m; ++j)
-        if (owners.mixed({i, j})) pair_minors(rows, i, j, table);
-  for (int i = 0; i < m; ++i)
-    for (int j = i + 1; j < m; ++j)
-      for (int k = j + 1; k < m; ++k)
-        if (owners.mixed({i, j, k})) {
-          // with v_inf: parallel planes, or three meeting at infinity
-          if (!filter.settled({i, j, k, -1})) table.add(normals(i, j, k), {i, j, k, -1});
-          if (low_rank) low_rank_minors(rows, i, j, k, table);
-        }
-  std::size_t made = 0;
-  for (int i = 0; i < m; ++i)
-    for (int j = i + 1; j < m; ++j)
-      for (int k = j + 1; k < m; ++k)
-        for (int l = k + 1; l < m; ++l)
-          if (owners.mixed({i, j, k, l})) {
-            if (!filter.settled({i, j, k, l})) table.add(full_minor(rows, {i, j, k, l}, normals), {i, j, k, l});
-            if (++made % 4096 == 0) Work_budget::check();
-          }
+  enumerate_pair_minors(rows, static_cast<int>(first_count), low_rank, Interval_rows(planes, lo, hi), table);
   solve(table.table(), lo, hi);
 }
 

@@ -31,6 +31,10 @@ struct Minor_limit : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Throws Minor_limit when a pair of m planes, the first `split` of them
+// the first object's, has more mixed minors than the limit.
+void check_pair_minor_count(int m, int split);
+
 struct Critical_time {
   Algebraic t;
   std::vector<Minor_rows> vanishing;   // the minors with a root at t

@@ -1,6 +1,8 @@
 #include "rotation/Rotating_check.h"
 
 #include "exact/Exact_instantiation.h"
+#include "rotation/Double_slices.h"
+#include "rotation/Exact_slices.h"
 
 #include <algorithm>
 #include <optional>
@@ -94,17 +96,18 @@ struct Object_parts {
   }
 };
 
+template <class Slices>
 Rotating_answer decide_parts(const Object_parts& a, const Object_parts& b, const Rational& lo, const Rational& hi,
-                             const Check_options& options, Static_check check)
+                             const Check_options& options, const Slices& slices)
 {
-  if (a.pieces.empty() && b.pieces.empty()) return decide_rotating_pair(a.whole, b.whole, lo, hi, options, check);
+  if (a.pieces.empty() && b.pieces.empty()) return decide_rotating_pair(a.whole, b.whole, lo, hi, options, slices);
   auto count = [](const Object_parts& p) { return p.pieces.empty() ? std::size_t(1) : p.pieces.size(); };
   auto part = [](const Object_parts& p, std::size_t i) -> const Rotating_object& { return p.pieces.empty() ? p.whole : p.pieces[i]; };
   Rotating_answer best;
   for (std::size_t i = 0; i < count(a); ++i)
     for (std::size_t j = 0; j < count(b); ++j) {
       if (!a.pieces.empty() && !b.pieces.empty() && !may_meet(a.piece_boxes[i], b.piece_boxes[j])) continue;
-      Rotating_answer r = decide_rotating_pair(part(a, i), part(b, j), lo, hi, options, check);
+      Rotating_answer r = decide_rotating_pair(part(a, i), part(b, j), lo, hi, options, slices);
       if (!r.collide) continue;
       if (!options.earliest) return r;
       if (!best.collide || r.t_star < best.t_star) best = std::move(r);
@@ -141,9 +144,11 @@ bool scene_rotates(const Scene& scene)
   return false;
 }
 
-Rotating_check_answer check_rotating(const Scene& scene, const Check_options& options, const std::string& number)
+namespace {
+
+template <class Slices>
+Rotating_check_answer check_pairs(const Scene& scene, const Check_options& options, const Slices& slices)
 {
-  Static_check check = number == "rational" ? &check_rational : &check_exact;
   std::vector<Object_parts> objects;
   std::vector<Swept_box> boxes;
   for (const Scene_object& o : scene.objects) {
@@ -151,13 +156,12 @@ Rotating_check_answer check_rotating(const Scene& scene, const Check_options& op
     boxes.push_back(swept_box(objects.back().whole, scene.t_lo, scene.t_hi));
   }
   Rotating_check_answer out;
-  out.number = number;
   out.semantics = options.semantics;
   bool every_pair = options.all_pairs || options.earliest;
   for (auto [i, j] : candidate_pairs(boxes)) {
     if (scene.ignored(i, j)) continue;
     ++out.pairs_examined;
-    Rotating_answer a = decide_parts(objects[i], objects[j], scene.t_lo, scene.t_hi, options, check);
+    Rotating_answer a = decide_parts(objects[i], objects[j], scene.t_lo, scene.t_hi, options, slices);
     if (!a.collide) continue;
     out.collide = true;
     out.pairs.push_back({scene.objects[i].name, scene.objects[j].name, std::move(a)});
@@ -168,6 +172,18 @@ Rotating_check_answer check_rotating(const Scene& scene, const Check_options& op
     }
     if (!every_pair) return out;
   }
+  return out;
+}
+
+} // namespace
+
+Rotating_check_answer check_rotating(const Scene& scene, const Check_options& options, const std::string& number,
+                                     double tolerance)
+{
+  Rotating_check_answer out;
+  if (number == "double") out = check_pairs(scene, options, Double_slices(tolerance));
+  else out = check_pairs(scene, options, Exact_slices(number == "rational" ? &check_rational : &check_exact));
+  out.number = number;
   return out;
 }
 

@@ -18,7 +18,7 @@ struct Rotating_pair_answer {
 };
 
 struct Rotating_check_answer {
-  std::string number;                    // "exact" or "rational"
+  std::string number;                    // "exact", "rational" or "double"
   Semantics semantics = Semantics::regularised;
   bool collide = false;
   std::vector<Rotating_pair_answer> pairs;   // colliding pairs, in pair order
@@ -35,10 +35,12 @@ struct Rotating_check_answer {
 // Whether some object of the scene turns (Motion::rotates()).
 bool scene_rotates(const Scene& scene);
 
-// number: "exact" (the static questions in the filtered kernel) or
-// "rational". Throws Rotation_unsupported for a question this release
-// cannot decide exactly.
-Rotating_check_answer check_rotating(const Scene& scene, const Check_options& options, const std::string& number);
+// number: "exact" (the static questions in the filtered kernel),
+// "rational", or "double" (the float subject, Double_slices.h, with the
+// static double pipeline's tolerance). Throws Rotation_unsupported for a
+// question this release cannot decide exactly.
+Rotating_check_answer check_rotating(const Scene& scene, const Check_options& options, const std::string& number,
+                                     double tolerance = 0);
 
 } // namespace clash4d
 

@@ -49,11 +49,11 @@ struct Rotating_answer {
   bool at_start = false;
 };
 
-// The static question at a rational time: check_exact or check_rational.
-using Static_check = Check_answer (*)(const Scene&, const Check_options&);
-
+// The pair's answer on [t_lo, t_hi] by the time slices in the numbers of
+// Slices: Exact_slices (exact answers) or Double_slices (the float subject).
+template <class Slices>
 Rotating_answer decide_rotating_pair(const Rotating_object& a, const Rotating_object& b, const Rational& t_lo,
-                                     const Rational& t_hi, const Check_options& options, Static_check check);
+                                     const Rational& t_hi, const Check_options& options, const Slices& slices);
 
 // The scene of the two objects at rest, placed as they are at time t.
 Scene posed_pair(const Rotating_object& a, const Rotating_object& b, const Rational& t);

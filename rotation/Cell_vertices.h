@@ -1,0 +1,69 @@
+// The vertices of the closure of a generic point's cell in a plane
+// arrangement at one time (Rotating_pair.h: the contact point at t* is
+// where one of them goes), for any number type: the exact stage's rationals
+// and the double stage's doubles. Each is three planes, none through w,
+// whose meeting point is on w's side of every plane or on it.
+#ifndef CLASH4D_ROTATION_CELL_VERTICES_H
+#define CLASH4D_ROTATION_CELL_VERTICES_H
+
+#include <array>
+#include <vector>
+
+namespace clash4d {
+
+template <class FT>
+FT det3(const std::array<FT, 4>& a, const std::array<FT, 4>& b, const std::array<FT, 4>& c)
+{
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+// The point where rows a, b, c (n . x + e = 0) meet, by Cramer's rule;
+// d = det3(a, b, c) != 0.
+template <class FT>
+std::array<FT, 3> cramer_point(const std::array<FT, 4>& a, const std::array<FT, 4>& b, const std::array<FT, 4>& c,
+                               const FT& d)
+{
+  std::array<FT, 3> x;
+  for (int col = 0; col < 3; ++col) {
+    std::array<std::array<FT, 4>, 3> m = {a, b, c};
+    for (auto& row : m) row[col] = -row[3];
+    x[col] = det3(m[0], m[1], m[2]) / d;
+  }
+  return x;
+}
+
+// sign(x) as -1, 0, 1.
+template <class FT>
+int sign_of(const FT& x)
+{
+  return x < FT(0) ? -1 : FT(0) < x ? 1 : 0;
+}
+
+// rows: each plane's (n, e) at the time; w: a point on no plane. Calls
+// found(i, j, k) for each vertex of the closure of w's cell, i < j < k,
+// until it returns true.
+template <class FT, class Found>
+void cell_vertices(const std::vector<std::array<FT, 4>>& rows, const std::array<FT, 3>& w, Found found)
+{
+  std::size_t m = rows.size();
+  auto value = [&](std::size_t i, const std::array<FT, 3>& x) {
+    return rows[i][0] * x[0] + rows[i][1] * x[1] + rows[i][2] * x[2] + rows[i][3];
+  };
+  std::vector<int> side(m);
+  for (std::size_t i = 0; i < m; ++i) side[i] = sign_of(value(i, w));
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t j = i + 1; j < m; ++j)
+      for (std::size_t k = j + 1; k < m; ++k) {
+        if (!side[i] || !side[j] || !side[k]) continue;
+        FT d = det3(rows[i], rows[j], rows[k]);
+        if (sign_of(d) == 0) continue;
+        std::array<FT, 3> x = cramer_point(rows[i], rows[j], rows[k], d);
+        bool in_cell = true;
+        for (std::size_t l = 0; l < m && in_cell; ++l) in_cell = side[l] * sign_of(value(l, x)) >= 0;
+        if (in_cell && found(static_cast<int>(i), static_cast<int>(j), static_cast<int>(k))) return;
+      }
+}
+
+} // namespace clash4d
+
+#endif

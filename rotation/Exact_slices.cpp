@@ -1,0 +1,218 @@
+#include "rotation/Exact_slices.h"
+
+#include "rotation/Cell_vertices.h"
+#include "rotation/Rotating_pair.h"
+#include "rotation/Simplest_rational.h"
+
+namespace clash4d {
+
+namespace {
+
+bool is_zero(const Rational& x) { return CGAL::sign(x) == CGAL::ZERO; }
+
+CGAL::Sign sign_at(const Time_poly& p, const Algebraic& t)
+{
+  if (t.is_rational()) return CGAL::sign(p.at(t.rational()));
+  return t.sign_of(p.coefficients());
+}
+
+Algebraic quotient_at(const Time_poly& num, const Time_poly& den, const Algebraic& t)
+{
+  if (t.is_rational()) return Algebraic(num.at(t.rational()) / den.at(t.rational()));
+  return Algebraic::quotient_at(t, num.coefficients(), den.coefficients());
+}
+
+// Cramer's numerators of the point where rows i, j, k meet: column c of
+// the normals replaced by -e.
+std::array<Time_poly, 3> cramer_numerators(const Moving_plane& a, const Moving_plane& b, const Moving_plane& c)
+{
+  std::array<Time_poly, 3> out;
+  for (int col = 0; col < 3; ++col) {
+    std::array<Moving_plane, 3> m = {a, b, c};
+    for (auto& row : m) row[col] = -row[3];
+    out[col] = normal_minor(m[0], m[1], m[2]);
+  }
+  return out;
+}
+
+std::array<Algebraic, 3> point_at(const std::array<Time_poly, 3>& num, const Time_poly& den, const Algebraic& t)
+{
+  return {quotient_at(num[0], den, t), quotient_at(num[1], den, t), quotient_at(num[2], den, t)};
+}
+
+// t's minimal polynomial over Q (t - q for a rational q), constant first.
+std::vector<Rational> minimal_polynomial(const Algebraic& t)
+{
+  if (t.is_rational()) return {-t.rational(), Rational(1)};
+  std::vector<Rational> m;
+  for (const mpz_class& c : t.polynomial()) m.emplace_back(CGAL::Gmpz(c.get_mpz_t()));
+  return m;
+}
+
+// p / m when m divides p in Q[t] (long division, remainder zero); p = 0
+// divides as 0.
+std::optional<Time_poly> divided(const Time_poly& p, const std::vector<Rational>& m)
+{
+  std::vector<Rational> r = p.coefficients();
+  while (!r.empty() && is_zero(r.back())) r.pop_back();
+  if (r.empty()) return Time_poly(Rational(0));
+  if (r.size() < m.size()) return std::nullopt;
+  std::vector<Rational> q(r.size() - m.size() + 1);
+  for (std::size_t i = q.size(); i-- > 0;) {
+    q[i] = r[i + m.size() - 1] / m.back();
+    for (std::size_t j = 0; j < m.size(); ++j) r[i + j] -= q[i] * m[j];
+  }
+  for (const Rational& x : r)
+    if (!is_zero(x)) return std::nullopt;
+  return Time_poly(q);
+}
+
+// lim num(t) / den(t) as t -> t*, den not identically zero: with m the
+// minimal polynomial of t* and m^k the largest power dividing den, the
+// limit is (num / m^k)(t*) / (den / m^k)(t*) when m^k divides each num
+// (L'Hopital, exactly); otherwise the point runs off to infinity (none).
+std::optional<std::array<Algebraic, 3>> limit_at(std::array<Time_poly, 3> num, Time_poly den, const Algebraic& t)
+{
+  std::vector<Rational> m = minimal_polynomial(t);
+  while (sign_at(den, t) == CGAL::ZERO) {
+    std::optional<Time_poly> d = divided(den, m);
+    if (!d) return std::nullopt;   // not reached: m divides every p with p(t*) = 0
+    den = *d;
+    for (Time_poly& n : num) {
+      std::optional<Time_poly> q = divided(n, m);
+      if (!q) return std::nullopt;
+      n = *q;
+    }
+  }
+  return point_at(num, den, t);
+}
+
+// Whether the point x(r) = num / den lies in the closed object: in some
+// convex piece of it (a union of bounded convex pieces), all rows <= 0.
+bool in_closed_pieces(const std::vector<Moving_plane>& rows, std::size_t offset, const Shape_planes& shape,
+                      const std::array<Time_poly, 3>& num, const Time_poly& den, CGAL::Sign den_sign, const Algebraic& r)
+{
+  for (const auto& piece : shape.convex_pieces) {
+    bool inside = true;
+    for (auto [plane, orientation] : piece) {
+      const Moving_plane& h = rows[offset + plane];
+      // h(x(t), t) den(t) = n . num + e den.
+      Time_poly v = h[0] * num[0] + h[1] * num[1] + h[2] * num[2] + h[3] * den;
+      inside = orientation * sign_at(v, r) * den_sign <= 0;
+      if (!inside) break;
+    }
+    if (inside) return true;
+  }
+  return false;
+}
+
+// Whether x(r) = num / den is in the closed regular set of a CSG shape
+// whose planes are rows[offset ...]: some open cell next to the point is
+// inside. The planes through the point must be at most three and
+// independent there, so that every choice of their sides is a cell.
+bool in_closed_cells(const std::vector<Moving_plane>& rows, std::size_t offset, const Rotating_object& o,
+                     const std::array<Time_poly, 3>& num, const Time_poly& den, CGAL::Sign den_sign, const Algebraic& r)
+{
+  std::size_t m = o.shape.planes.size();
+  std::vector<int> side(m), zero;
+  for (std::size_t p = 0; p < m; ++p) {
+    const Moving_plane& h = rows[offset + p];
+    side[p] = sign_at(h[0] * num[0] + h[1] * num[1] + h[2] * num[2] + h[3] * den, r) * den_sign;
+    if (side[p] == 0) zero.push_back(static_cast<int>(p));
+  }
+  bool independent = zero.size() < 2;
+  if (zero.size() == 3)
+    independent = sign_at(normal_minor(rows[offset + zero[0]], rows[offset + zero[1]], rows[offset + zero[2]]), r) != CGAL::ZERO;
+  if (zero.size() == 2) {
+    const Moving_plane &u = rows[offset + zero[0]], &v = rows[offset + zero[1]];
+    for (int i = 0; i < 3 && !independent; ++i)
+      independent = sign_at(u[i] * v[(i + 1) % 3] - u[(i + 1) % 3] * v[i], r) != CGAL::ZERO;
+  }
+  if (!independent)
+    throw Rotation_unsupported("closed semantics at an irrational critical time: a contact point on more than three "
+                               "planes of '" + o.name + "', or on dependent ones (a degenerate contact this "
+                               "release does not resolve)");
+  for (unsigned mask = 0; mask < (1u << zero.size()); ++mask) {
+    for (std::size_t k = 0; k < zero.size(); ++k) side[zero[k]] = (mask >> k) & 1 ? 1 : -1;
+    if (inside_at_generic(o.shape, side)) return true;
+  }
+  return false;
+}
+
+bool in_closed_object(const std::vector<Moving_plane>& rows, std::size_t offset, const Rotating_object& o,
+                      const std::array<Time_poly, 3>& num, const Time_poly& den, CGAL::Sign den_sign, const Algebraic& r)
+{
+  if (!o.shape.convex_pieces.empty()) return in_closed_pieces(rows, offset, o.shape, num, den, den_sign, r);
+  return in_closed_cells(rows, offset, o, num, den, den_sign, r);
+}
+
+// The closed question at an irrational critical time r (fact 12): closed
+// objects that meet at r and at no time near it meet in a vertex-face or
+// edge-edge contact, a point on the four planes of a minor that vanishes
+// at r, three of them independent there (docs/rotation.md). Each such point
+// is tried against both objects, exactly in Q(r).
+std::optional<std::array<Algebraic, 3>> common_point_at(const std::vector<Moving_plane>& rows, const Rotating_object& a,
+                                                             const Rotating_object& b, const Critical_time& c)
+{
+  std::size_t offset = a.shape.planes.size();
+  for (const Minor_rows& m : c.vanishing) {
+    std::vector<int> ids;
+    for (int i : m)
+      if (i >= 0) ids.push_back(i);
+    if (ids.size() < 3) continue;   // a low-rank 2 x 2 minor: no point
+    for (std::size_t skip = 0; skip < (ids.size() == 4 ? 4u : 1u); ++skip) {
+      std::vector<int> t;
+      for (std::size_t i = 0; i < ids.size(); ++i)
+        if (i != skip || ids.size() == 3) t.push_back(ids[i]);
+      Time_poly den = normal_minor(rows[t[0]], rows[t[1]], rows[t[2]]);
+      CGAL::Sign ds = sign_at(den, c.t);
+      if (ds == CGAL::ZERO) continue;
+      auto num = cramer_numerators(rows[t[0]], rows[t[1]], rows[t[2]]);
+      if (in_closed_object(rows, 0, a, num, den, ds, c.t) && in_closed_object(rows, offset, b, num, den, ds, c.t))
+        return point_at(num, den, c.t);
+    }
+  }
+  return std::nullopt;
+}
+
+} // namespace
+
+std::optional<Rational> Exact_slices::sample(const Algebraic& left, const Algebraic& right) const
+{
+  return simplest_between(left, right);
+}
+
+// The closure of w's cell at s, P(t) = { x : h_i(x, t) is 0 or of the sign
+// of h_i(w, s) }, keeps its vertices' planes on the whole interval (fact
+// 10), so a vertex x(t) of P(s) (Cramer's quotients) is a point of the
+// closure of the collision region for every t in (t*, s], and so is its
+// limit at t*: the quotients at t*, or, where the vertex's three planes
+// become dependent at t*, the limit of the quotients when it is finite
+// (limit_at).
+std::array<Algebraic, 3> Exact_slices::contact_point(const std::vector<Moving_plane>& rows,
+                                                     const std::array<Rational, 3>& w, const Rational& s,
+                                                     const Algebraic& t_star) const
+{
+  std::vector<std::array<Rational, 4>> at(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (int c = 0; c < 4; ++c) at[i][c] = rows[i][c].at(s);
+  std::optional<std::array<Algebraic, 3>> x;
+  cell_vertices(at, w, [&](int i, int j, int k) {
+    x = limit_at(cramer_numerators(rows[i], rows[j], rows[k]), normal_minor(rows[i], rows[j], rows[k]), t_star);
+    return x.has_value();
+  });
+  if (!x)
+    throw Rotation_unsupported("the contact point at t*: every vertex of the witness's cell runs off to infinity "
+                               "at t* (a degenerate contact this release does not resolve)");
+  return *x;
+}
+
+std::optional<std::array<Algebraic, 3>> Exact_slices::closed_at_irrational(const std::vector<Moving_plane>& rows,
+                                                                         const Rotating_object& a,
+                                                                         const Rotating_object& b,
+                                                                         const Critical_time& c) const
+{
+  return common_point_at(rows, a, b, c);
+}
+
+} // namespace clash4d

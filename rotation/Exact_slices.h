@@ -1,0 +1,58 @@
+// The time slices' numbers in the exact instantiation (`--number exact` and
+// `rational`): critical times as exact real algebraic numbers, a rational
+// sample strictly inside each interval (the simplest one), the contact
+// point exact in Q(t*), and the closed question at an irrational critical
+// time decided exactly there (fact 12). Rotating_pair.h runs the slices.
+#ifndef CLASH4D_ROTATION_EXACT_SLICES_H
+#define CLASH4D_ROTATION_EXACT_SLICES_H
+
+#include "check/Check_answer.h"
+#include "numbers/Algebraic.h"
+#include "rotation/Critical_times.h"
+#include "rotation/Moving_planes.h"
+#include "scene/Scene.h"
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace clash4d {
+
+struct Rotating_object;
+
+// The static question at a rational time: a static pipeline's check.
+using Static_check = std::function<Check_answer(const Scene&, const Check_options&)>;
+
+class Exact_slices {
+public:
+  static constexpr bool is_exact = true;
+  explicit Exact_slices(Static_check check) : check_(std::move(check)) {}
+
+  Check_answer check(const Scene& s, const Check_options& o) const { return check_(s, o); }
+  // A number of check's answer: its exact text "p/q".
+  Rational read_answer_number(const std::string& text) const { return rational_from_string(text); }
+  std::vector<Critical_time> critical_times(const std::vector<Moving_plane>& rows, std::size_t first_count,
+                                            const Rational& lo, const Rational& hi, bool low_rank) const
+  {
+    return Critical_times(rows, first_count, lo, hi, low_rank).times();
+  }
+  // A rational strictly between left < right.
+  std::optional<Rational> sample(const Algebraic& left, const Algebraic& right) const;
+  // A point of the closure of the collision region at t*, the left end of
+  // the interval whose sample s has the generic witness w (Rotating_pair.cpp).
+  std::array<Algebraic, 3> contact_point(const std::vector<Moving_plane>& rows, const std::array<Rational, 3>& w,
+                                         const Rational& s, const Algebraic& t_star) const;
+  // The closed question at an irrational critical time c: a common point
+  // of both closed objects, or none.
+  std::optional<std::array<Algebraic, 3>> closed_at_irrational(const std::vector<Moving_plane>& rows,
+                                                               const Rotating_object& a, const Rotating_object& b,
+                                                               const Critical_time& c) const;
+
+private:
+  Static_check check_;
+};
+
+} // namespace clash4d
+
+#endif

@@ -1,0 +1,143 @@
+// The minors whose roots are a pair's critical times (Critical_times.h,
+// fact 10 of regularised-semantics.md), enumerated once for any polynomial
+// ring: the exact stage's integer polynomials and the double stage's. Only
+// mixed minors are made (a minor of one object's planes keeps its sign
+// under a rigid motion), and a plane both objects have is one row.
+#ifndef CLASH4D_ROTATION_PAIR_MINORS_H
+#define CLASH4D_ROTATION_PAIR_MINORS_H
+
+#include "rotation/Critical_times.h"
+#include "search/Work_budget.h"
+#include <array>
+#include <initializer_list>
+#include <map>
+#include <vector>
+
+namespace clash4d {
+
+namespace pair_minors_detail {
+
+// Whether two rows are proportional as vectors of polynomials (every 2 x 2
+// minor identically zero): the same plane up to a factor that is a
+// function of t of one sign (a norm |q(t)|^2, or its negative).
+template <class Poly>
+bool proportional(const std::array<Poly, 4>& u, const std::array<Poly, 4>& v)
+{
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b) {
+      Poly d = u[a] * v[b] - u[b] * v[a];
+      for (int i = 0; i < d.size(); ++i)
+        if (d[i] != 0) return false;
+    }
+  return true;
+}
+
+// Which object each row is a plane of. A plane both objects have (a face
+// of each on z = 0, both turning about z: rows equal up to a factor of one
+// sign) is one row of both, its first copy: a minor of it with one
+// object's planes keeps its sign, and a minor with another copy is a
+// multiple of one with the first.
+class Row_owners {
+public:
+  template <class Poly>
+  Row_owners(const std::vector<std::array<Poly, 4>>& rows, int split) : owner_(rows.size()), first_(rows.size())
+  {
+    int m = static_cast<int>(rows.size());
+    for (int i = 0; i < m; ++i) {
+      first_[i] = true;
+      owner_[i] = i < split ? 1 : 2;
+      for (int j = 0; j < i && first_[i]; ++j)
+        if (first_[j] && proportional(rows[j], rows[i])) {
+          first_[i] = false;
+          owner_[j] |= owner_[i];
+        }
+    }
+  }
+
+  // Whether the minor of these rows is one to solve: first copies only,
+  // with a plane of the first object only and one of the second only.
+  bool mixed(std::initializer_list<int> ids) const
+  {
+    bool a = false, b = false;
+    for (int i : ids) {
+      if (!first_[i]) return false;
+      a = a || owner_[i] == 1;
+      b = b || owner_[i] == 2;
+    }
+    return a && b;
+  }
+
+private:
+  std::vector<int> owner_;    // 1: the first object's only, 2: the second's only, 3: both
+  std::vector<bool> first_;   // the first copy of its plane
+};
+
+// The minors of the normals, made when a full minor needs them.
+template <class Poly>
+class Normal_minors {
+public:
+  explicit Normal_minors(const std::vector<std::array<Poly, 4>>& rows) : rows_(rows) {}
+  const Poly& operator()(int i, int j, int k)
+  {
+    auto [it, added] = made_.try_emplace({i, j, k});
+    if (added) it->second = normal_minor(rows_[i], rows_[j], rows_[k]);
+    return it->second;
+  }
+
+private:
+  const std::vector<std::array<Poly, 4>>& rows_;
+  std::map<std::array<int, 3>, Poly> made_;
+};
+
+} // namespace pair_minors_detail
+
+// Calls table.add(minor, rows) for each mixed minor that filter.settled
+// (rows) does not rule out: the 4 x 4 minors, the normals' 3 x 3 minors
+// (with v_inf: parallel planes, or three meeting at infinity), and when
+// neither object spans space (low_rank) the 2 x 2 and 3 x 3 minors over
+// every choice of columns. Looks at the work budget (--max-seconds).
+template <class Poly, class Filter, class Table>
+void enumerate_pair_minors(const std::vector<std::array<Poly, 4>>& r, int first_count, bool low_rank,
+                           const Filter& filter, Table& table)
+{
+  using namespace pair_minors_detail;
+  int m = static_cast<int>(r.size());
+  Row_owners owners(r, first_count);
+  Normal_minors<Poly> normals(r);
+  if (low_rank)
+    for (int i = 0; i < m; ++i)
+      for (int j = i + 1; j < m; ++j)
+        if (owners.mixed({i, j}))
+          for (int a = 0; a < 4; ++a)
+            for (int b = a + 1; b < 4; ++b) table.add(r[i][a] * r[j][b] - r[i][b] * r[j][a], {i, j, -1, -1});
+  for (int i = 0; i < m; ++i)
+    for (int j = i + 1; j < m; ++j)
+      for (int k = j + 1; k < m; ++k)
+        if (owners.mixed({i, j, k})) {
+          if (!filter.settled({i, j, k, -1})) table.add(normals(i, j, k), {i, j, k, -1});
+          if (!low_rank) continue;
+          for (int drop = 0; drop < 3; ++drop) {
+            std::array<std::array<Poly, 4>, 3> rows = {r[i], r[j], r[k]};
+            for (auto& row : rows) row[drop] = row[3];   // column `drop` replaced by e
+            table.add(normal_minor(rows[0], rows[1], rows[2]), {i, j, k, -1});
+          }
+        }
+  std::size_t made = 0;
+  for (int i = 0; i < m; ++i)
+    for (int j = i + 1; j < m; ++j)
+      for (int k = j + 1; k < m; ++k)
+        for (int l = k + 1; l < m; ++l)
+          if (owners.mixed({i, j, k, l})) {
+            // The 4 x 4 determinant by the last column: the offsets e
+            // against the minors of the normals.
+            if (!filter.settled({i, j, k, l}))
+              table.add(r[j][3] * normals(i, k, l) - r[i][3] * normals(j, k, l) + r[l][3] * normals(i, j, k) -
+                            r[k][3] * normals(i, j, l),
+                        {i, j, k, l});
+            if (++made % 4096 == 0) Work_budget::check();
+          }
+}
+
+} // namespace clash4d
+
+#endif
