@@ -2,6 +2,9 @@
 #include "compare/Bullet_subject.h"
 #include "compare/External_subject.h"
 #include "compare/Fcl_subject.h"
+#include "compare/Witness_judge.h"
+#include "rotation/Rotating_check.h"
+#include "scene/Number_json.h"
 #include "check/Closed_membership.h"
 #include "model/Point_classifier.h"
 #include "exact/Exact_checker.h"
@@ -20,6 +23,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <functional>
+#include <memory>
 #include <sstream>
 
 namespace clash4d {
@@ -29,7 +33,23 @@ struct Run : Subject_run {
   bool exact_numbers = true;      // witness strings are rationals (else doubles)
   bool reads_doubles = false;     // it sees the scene's numbers as doubles (input rounding applies)
   Check_answer answer;
+  // A turning scene's exact t* of the reported pair (it may be irrational,
+  // written as text in answer): the t errors are measured against it.
+  std::optional<Algebraic> t_star;
 };
+
+// What the toolkit's own subjects give (Own_checks below).
+struct Own_answer {
+  Check_answer answer;
+  std::optional<Algebraic> t_star;   // a turning scene's exact t* of the reported pair
+};
+
+void take(Run& r, Check_answer a) { r.answer = std::move(a); }
+void take(Run& r, Own_answer a)
+{
+  r.answer = std::move(a.answer);
+  r.t_star = std::move(a.t_star);
+}
 
 template <class F>
 Run timed(const std::string& subject, bool exact_numbers, F f)
@@ -40,7 +60,7 @@ Run timed(const std::string& subject, bool exact_numbers, F f)
   r.reads_doubles = !exact_numbers;
   auto start = std::chrono::steady_clock::now();
   try {
-    r.answer = f();
+    take(r, f());
   } catch (const std::exception& e) {
     r.ok = false;
     r.error = e.what();
@@ -56,6 +76,23 @@ Rational value_of(const std::string& text, bool exact_numbers)
   return Rational(std::strtod(text.c_str(), nullptr));
 }
 
+// |a - b| for display (t_error_text's three digits, never decided on):
+// both isolating intervals refined until they are narrow against the gap.
+Rational distance(const Algebraic& a, const Algebraic& b)
+{
+  if (a == b) return Rational(0);
+  auto mid = [](const Algebraic& x) { return (x.lower() + x.upper()) / 2; };
+  for (int i = 0; i < 200; ++i) {
+    Rational gap = mid(a) - mid(b), width = (a.upper() - a.lower()) + (b.upper() - b.lower());
+    if (gap < 0) gap = -gap;
+    if (width * 1000000 <= gap) break;
+    a.refine();
+    b.refine();
+  }
+  Rational gap = mid(a) - mid(b);
+  return gap < 0 ? Rational(-gap) : gap;
+}
+
 int object_index(const Scene& s, const std::string& name)
 {
   for (std::size_t i = 0; i < s.objects.size(); ++i)
@@ -64,40 +101,24 @@ int object_index(const Scene& s, const std::string& name)
 }
 
 // A witness in the subject's own terms, checked exactly against the true
-// scene: regularised, a generic point strictly inside both objects with
-// tL < t < tH; closed, a point of both closed objects with tL <= t <= tH.
-bool holds(const Scene_model<Rational_kernel>& model, int a, int b, const Vector4<Rational>& w, bool closed)
-{
-  return closed ? is_valid_contact(Rational_kernel(), model, a, b, w) : is_valid_witness(Rational_kernel(), model, a, b, w);
-}
-
-bool witness_valid(const Scene_model<Rational_kernel>& model, const Scene& scene, const Run& r)
+// scene (compare/Witness_judge.h); none when a coordinate is not a rational
+// (an exact closed contact at an irrational time of a turning scene).
+std::optional<bool> witness_valid(const Witness_judge& judge, const Scene& scene, const Run& r)
 {
   const Pair_answer& p = *r.answer.reported();
   int a = object_index(scene, p.a), b = object_index(scene, p.b);
   if (a < 0 || b < 0) return false;   // an external subject's point inside no pair
   Vector4<Rational> w;
-  for (int i = 0; i < 4; ++i) w[i] = value_of(p.witness[i], r.exact_numbers);
-  return holds(model, a, b, w, r.semantics == "closed");
-}
-
-// The pair (names) whose objects both hold the point (in the subject's
-// semantics), or none: external subjects give a point, not a pair.
-std::array<std::string, 2> pair_holding(const Scene_model<Rational_kernel>& model, const Scene& scene,
-                                        const std::array<std::string, 4>& point, bool closed)
-{
-  Vector4<Rational> w;
-  for (int i = 0; i < 4; ++i) w[i] = parse_number_text(point[i], true).value;
-  for (std::size_t a = 0; a < scene.objects.size(); ++a)
-    for (std::size_t b = a + 1; b < scene.objects.size(); ++b)
-      if (!scene.ignored(int(a), int(b)) && holds(model, int(a), int(b), w, closed))
-        return {scene.objects[a].name, scene.objects[b].name};
-  return {"", ""};
+  for (int i = 0; i < 4; ++i) {
+    if (r.exact_numbers && !parse_number_text(p.witness[i], true).ok) return std::nullopt;
+    w[i] = value_of(p.witness[i], r.exact_numbers);
+  }
+  return judge.holds(a, b, w, r.semantics == "closed");
 }
 
 // An external subject's answer as a run: unsupported is skipped, a fault
 // fails with its cause; its numbers are exact (read from its text).
-Run external_run(External_pool& pool, const Scene& scene, const Scene_model<Rational_kernel>& model, bool earliest)
+Run external_run(External_pool& pool, const Scene& scene, const Witness_judge& judge, bool earliest)
 {
   External_pool::Lease subject = pool.acquire();
   Run r;
@@ -120,7 +141,9 @@ Run external_run(External_pool& pool, const Scene& scene, const Scene_model<Rati
   Pair_answer p;
   if (a.witness) {
     p.witness = *a.witness;
-    std::array<std::string, 2> names = pair_holding(model, scene, *a.witness, r.semantics == "closed");
+    Vector4<Rational> w;
+    for (int i = 0; i < 4; ++i) w[i] = parse_number_text((*a.witness)[i], true).value;
+    std::array<std::string, 2> names = judge.pair_holding(w, r.semantics == "closed");
     p.a = names[0];
     p.b = names[1];
   }
@@ -151,6 +174,12 @@ std::optional<std::array<std::string, 4>> point_of(const std::array<std::string,
 template <class Library>
 Run library_run(const char* name, const Scene& scene, const Check_options& co)
 {
+  if (scene_rotates(scene)) {   // the libraries' own rotations are not driven from poses yet
+    Run r;
+    r.subject = name;
+    r.skipped = "a turning object: " + std::string(name) + "'s motions are not made from poses yet (translations only)";
+    return r;
+  }
   std::string reason;
   Run r = timed(name, false, [&] {
     Library library(scene);
@@ -177,12 +206,20 @@ Scene rounded_scene(const Scene& scene)
   r.t_lo = round(r.t_lo);
   r.t_hi = round(r.t_hi);
   for (auto& o : r.objects) {
+    map_numbers(o.shape, round);
+    if (o.motion.rotates()) {   // the poses as written, each number rounded
+      for (Pose& p : o.motion.poses) {
+        p.t = round(p.t);
+        for (auto& c : p.translate) c = round(c);
+        for (auto& c : p.rotate) c = round(c);
+      }
+      continue;
+    }
     // A rotation-free pose motion is read by the double instantiation as its
     // translation and its shape at c(0) (scene/Pose_motion.h): those are
     // the numbers rounded here, so the rounded scene is that ROBMOD motion
-    // and that shape, not the poses (rotating ones are refused before).
+    // and that shape, not the poses.
     o.motion.poses.clear();
-    map_numbers(o.shape, round);
     for (auto& t : o.motion.times) t = round(t);
     for (auto& v : o.motion.velocities)
       for (auto& c : v) c = round(c);
@@ -236,18 +273,23 @@ struct Reference {
 // The answer fields of a row that ran: verdict, witness (checked exactly
 // against the true scene, in the subject's semantics), t* and its error
 // against the exact t* of that semantics.
-void fill_answer(Subject_row& s, const Run& r, const Reference& ref, const Scene_model<Rational_kernel>& model)
+void fill_answer(Subject_row& s, const Run& r, const Reference& ref, const Witness_judge& judge)
 {
   const Check_answer& a = r.answer;
   if (r.ok) s.collide = a.collide;
   const Pair_answer* main = a.reported();
   if (!main) return;
   if (!main->a.empty() || !main->witness[0].empty()) s.witness = Located{{main->a, main->b}, point_of(main->witness), ""};
-  if (s.witness && s.witness->point) s.witness_valid = witness_valid(model, ref.scene, r);
+  if (s.witness && s.witness->point) s.witness_valid = witness_valid(judge, ref.scene, r);
   if (!main->earliest) return;
   s.earliest = Located{{main->a, main->b}, point_of(main->contact), main->t_star};
-  const Pair_answer* exact = ref.in(r.semantics).answer.reported();
-  if (exact && exact->earliest) {
+  const Run& exact_run = ref.in(r.semantics);
+  const Pair_answer* exact = exact_run.answer.reported();
+  if (!exact || !exact->earliest) return;
+  if (exact_run.t_star) {
+    Algebraic t = r.t_star ? *r.t_star : Algebraic(value_of(main->t_star, r.exact_numbers));
+    s.t_error = t_error_text(distance(*exact_run.t_star, t));
+  } else {
     Rational e = value_of(main->t_star, r.exact_numbers) - value_of(exact->t_star, true);
     s.t_error = t_error_text(e < 0 ? Rational(-e) : e);
   }
@@ -281,11 +323,11 @@ std::string classify(const Run& r, const Subject_row& s, Reference& ref, std::st
   return "";
 }
 
-Subject_row row_of(const Run& r, Reference& ref, const Scene_model<Rational_kernel>& model, std::vector<Disagreement>& list)
+Subject_row row_of(const Run& r, Reference& ref, const Witness_judge& judge, std::vector<Disagreement>& list)
 {
   Subject_row s = r.row(&r == &ref.regularised || &r == &ref.closed);
   if (s.skipped) return s;
-  fill_answer(s, r, ref, model);
+  fill_answer(s, r, ref, judge);
   std::string detail, cause = classify(r, s, ref, detail);
   s.agrees = r.ok && cause.empty();
   if (!cause.empty()) {
@@ -295,8 +337,73 @@ Subject_row row_of(const Run& r, Reference& ref, const Scene_model<Rational_kern
   return s;
 }
 
-// The exact references (regularised, then closed: the second on the
-// scene the first prepared, exact/Exact_checker.h) and the toolkit's own
+// How the toolkit's own subjects answer one scene: the exact references
+// and exact-rounded (exact numbers), the double subjects (tolerance 0 or
+// EPS). A scene without rotation goes through the 4D pipeline, one where
+// something turns through the time slices (rotation/), in the same roles.
+struct Own_checks {
+  std::function<Own_answer(const Check_options&)> exact;
+  std::function<Own_answer(double, const Check_options&)> in_doubles;
+  std::function<Own_answer(const Check_options&)> rounded;
+};
+
+// A turning scene's answer in the comparison's text: exact numbers as
+// "p/q" or, irrational, the algebraic number's text; doubles as their
+// shortest decimals.
+std::string answer_text(const Algebraic& x, bool exact)
+{
+  if (!exact) return shortest_decimal(x.to_double());
+  return x.is_rational() ? to_string(x.rational()) : x.to_text();
+}
+
+Check_answer as_check_answer(const Rotating_check_answer& a)
+{
+  bool exact = a.number != "double";
+  Check_answer out;
+  out.number = a.number;
+  out.semantics = a.semantics;
+  out.collide = a.collide;
+  out.earliest_pair = a.earliest_pair;
+  for (const Rotating_pair_answer& p : a.pairs) {
+    Pair_answer q;
+    q.a = p.a;
+    q.b = p.b;
+    for (int i = 0; i < 4; ++i) q.witness[i] = answer_text(p.answer.witness[i], exact);
+    q.witness_verified = p.answer.witness_verified;
+    q.earliest = p.answer.earliest;
+    if (q.earliest) {
+      q.t_star = answer_text(p.answer.t_star, exact);
+      for (int i = 0; i < 3; ++i) q.contact[i] = answer_text(p.answer.contact[i], exact);
+      q.contact[3] = q.t_star;
+      q.at_start = p.answer.at_start;
+    }
+    out.pairs.push_back(std::move(q));
+  }
+  return out;
+}
+
+Own_answer own_answer(const Rotating_check_answer& a)
+{
+  Own_answer out{as_check_answer(a), std::nullopt};
+  if (a.reported() && a.reported()->answer.earliest) out.t_star = a.reported()->answer.t_star;
+  return out;
+}
+
+Own_checks own_checks(const Scene& scene, std::shared_ptr<Exact_checker>& exact)
+{
+  if (!scene_rotates(scene)) {
+    // The exact references on the scene the first one prepared (exact/Exact_checker.h).
+    exact = std::make_shared<Exact_checker>(scene);
+    return {[exact](const Check_options& o) { return Own_answer{exact->check(o), std::nullopt}; },
+            [&scene](double tol, const Check_options& o) { return Own_answer{check_double(scene, tol, o), std::nullopt}; },
+            [&scene](const Check_options& o) { return Own_answer{check_exact(rounded_scene(scene), o), std::nullopt}; }};
+  }
+  return {[&scene](const Check_options& o) { return own_answer(check_rotating(scene, o, "exact")); },
+          [&scene](double tol, const Check_options& o) { return own_answer(check_rotating(scene, o, "double", tol)); },
+          [&scene](const Check_options& o) { return own_answer(check_rotating(rounded_scene(scene), o, "exact")); }};
+}
+
+// The exact references (regularised, then closed) and the toolkit's own
 // subjects in the semantics asked for, then the libraries (closed).
 std::vector<Run> builtin_runs(const Scene& scene, const Compare_options& options, const Check_options& co)
 {
@@ -304,18 +411,18 @@ std::vector<Run> builtin_runs(const Scene& scene, const Compare_options& options
   Check_options closed = co, own = co;
   closed.semantics = Semantics::closed;
   own.semantics = options.semantics;
-  Exact_checker exact(scene);
-  runs.push_back(timed("exact", true, [&] { return exact.check(co); }));
-  runs.push_back(timed("exact closed", true, [&] { return exact.check(closed); }));
+  std::shared_ptr<Exact_checker> kept;
+  Own_checks checks = own_checks(scene, kept);
+  runs.push_back(timed("exact", true, [&] { return checks.exact(co); }));
+  runs.push_back(timed("exact closed", true, [&] { return checks.exact(closed); }));
   runs.back().semantics = "closed";
   std::size_t own_from = runs.size();
-  runs.push_back(timed("double", false, [&] { return check_double(scene, 0, own); }));
+  runs.push_back(timed("double", false, [&] { return checks.in_doubles(0, own); }));
   for (double tol : options.tolerances) {
-    runs.push_back(timed(tolerance_subject(tol), false, [&] { return check_double(scene, tol, own); }));
+    runs.push_back(timed(tolerance_subject(tol), false, [&] { return checks.in_doubles(tol, own); }));
     runs.back().tolerance = tol;
   }
-  if (options.rounded)
-    runs.push_back(timed("exact-rounded", true, [&] { return check_exact(rounded_scene(scene), own); }));
+  if (options.rounded) runs.push_back(timed("exact-rounded", true, [&] { return checks.rounded(own); }));
   for (std::size_t i = own_from; i < runs.size(); ++i) runs[i].semantics = semantics_name(options.semantics);
   if (options.fcl) runs.push_back(library_run<Fcl_subject>("fcl", scene, closed));
   if (options.bullet) {
@@ -332,16 +439,13 @@ std::vector<Run> builtin_runs(const Scene& scene, const Compare_options& options
 Comparison compare_scene(const Scene& scene, const std::string& file, const Compare_options& options)
 {
   Work_budget::check();
-  // Its subjects decide translations only: a rotating object is refused
-  // (exit 2 naming it), never compared as if at rest.
-  refuse_rotation(scene, rotation_unsupported_by("compare (nor by report or fuzz)"));
   Check_options co;
   co.earliest = options.earliest;
   std::vector<Run> runs = builtin_runs(scene, options, co);
   for (int i : {0, 1})
     if (!runs[i].ok) throw std::runtime_error("the " + runs[i].subject + " subject failed: " + runs[i].error);
-  Scene_model<Rational_kernel> model = Scene_model<Rational_kernel>::build(Rational_kernel(), scene);
-  for (const auto& pool : options.externals) runs.push_back(external_run(*pool, scene, model, options.earliest));
+  Witness_judge judge(scene);
+  for (const auto& pool : options.externals) runs.push_back(external_run(*pool, scene, judge, options.earliest));
 
   auto rounded = std::find_if(runs.begin(), runs.end(), [](const Run& r) { return r.subject == "exact-rounded"; });
   Reference ref{scene, co, runs[0], runs[1], rounded != runs.end() ? &*rounded : nullptr, options.semantics};
@@ -349,7 +453,7 @@ Comparison compare_scene(const Scene& scene, const std::string& file, const Comp
   Comparison out;
   out.file = file;
   out.name = scene.name;
-  for (const Run& r : runs) out.subjects.push_back(row_of(r, ref, model, out.disagreements));
+  for (const Run& r : runs) out.subjects.push_back(row_of(r, ref, judge, out.disagreements));
   // Where the regularised answer is no, the closed one says whether the
   // objects touch (never null there); where it is yes, they collide.
   if (!ref.regularised.answer.collide) out.closed_touch = ref.closed.answer.collide;

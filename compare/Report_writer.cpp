@@ -1,6 +1,7 @@
 #include "compare/Report_writer.h"
 
 #include "model/Scene_model.h"
+#include "rotation/Rotating_check.h"
 #include "float/Double_kernel.h"
 #include "scene/Files.h"
 #include "scene/Number_text.h"
@@ -328,6 +329,10 @@ Drawing drawing_of(const Report_case& c)
   Drawing d;
   d.object_count = c.scene.objects.size();
   d.markers = markers_of(c.comparison);
+  if (scene_rotates(c.scene)) {
+    d.error = "the extent-over-time diagrams draw translations only; an object of this scene turns";
+    return d;
+  }
   try {
     Double_kernel k;
     Scene_model<Double_kernel> m = Scene_model<Double_kernel>::build(k, c.scene);

@@ -2,6 +2,8 @@
 #include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
 
+#include "compare/Comparer.h"
+#include "compare/Witness_judge.h"
 #include "exact/Exact_instantiation.h"
 #include "rotation/Rotating_check.h"
 #include "rotation/Simplest_rational.h"
@@ -638,4 +640,61 @@ BOOST_DATA_TEST_CASE(double_slices_on_the_fixtures, data::make(fixture_names()),
   double t = d.reported()->answer.t_star.to_double(), exact = expected_number(want["t"]).to_double();
   BOOST_TEST(std::fabs(t - exact) <= 1e-9, "double t* " << t << " against " << exact);
   BOOST_TEST(d.reported()->answer.t_star.is_rational());   // a double, exactly
+}
+
+// ---- The comparer on turning scenes (compare/Comparer.h): the toolkit's
+// own subjects in the same roles as for translations, the exact references
+// from the time slices, each subject's t* error against the exact
+// algebraic t*, and witnesses judged exactly where the poses put the
+// objects at the witness's time (compare/Witness_judge.h).
+BOOST_AUTO_TEST_CASE(witnesses_judged_where_the_poses_put_the_objects)
+{
+  Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/rotation/square_into_slab.json");
+  Witness_judge judge(scene);
+  // By hand: at t = 1/2, q = (1, 0, 0, 1/2) turns the square by 2 atan(1/2)
+  // (cos 3/5, sin 4/5); a point at distance r along x is inside it when
+  // r max(3/5, 4/5) < 1, r < 5/4. The slab is x > 6/5.
+  BOOST_TEST(judge.holds(0, 1, {q("61/50"), q("0"), q("0"), q("1/2")}, false));
+  BOOST_TEST(!judge.holds(0, 1, {q("61/50"), q("0"), q("0"), q("1/10")}, false));   // before t*
+  BOOST_TEST(!judge.holds(0, 1, {q("13/10"), q("0"), q("0"), q("1/2")}, false));    // 13/10 > 5/4
+  BOOST_TEST(!judge.holds(0, 1, {q("6/5"), q("0"), q("0"), q("1/2")}, false));      // on the slab's face
+  BOOST_TEST(judge.holds(0, 1, {q("6/5"), q("0"), q("0"), q("1/2")}, true));        // closed: touching counts
+  BOOST_TEST(!judge.holds(0, 1, {q("61/50"), q("0"), q("0"), q("2")}, true));       // after the span
+  BOOST_TEST((judge.pair_holding({q("61/50"), q("0"), q("0"), q("1/2")}, false) == std::array<std::string, 2>{"square", "slab"}));
+}
+
+BOOST_AUTO_TEST_CASE(compare_on_rotating_scenes)
+{
+  std::string dir = std::string(CLASH4D_FIXTURES) + "/rotation/";
+  Compare_options o;
+  o.earliest = true;
+  Comparison c = compare_scene(read_scene_file(dir + "square_into_slab.json"), "square_into_slab", o);
+  const Subject_row* exact = c.reference();
+  BOOST_REQUIRE(exact);
+  BOOST_TEST(*exact->collide);
+  BOOST_TEST(exact->earliest->t.rfind("root of [1, -10, 11]", 0) == 0, exact->earliest->t);
+  BOOST_TEST(*exact->witness_valid);
+  BOOST_TEST(!c.closed_touch.has_value());   // they collide
+  for (const char* name : {"double", "double tol=1e-09", "exact-rounded"}) {
+    const Subject_row* s = c.find(name);
+    BOOST_REQUIRE(s);
+    BOOST_TEST(!s->skipped.has_value(), name);
+    BOOST_TEST(*s->collide, name);
+    BOOST_REQUIRE(s->t_error.has_value());
+    BOOST_TEST(std::strtod(s->t_error->c_str(), nullptr) <= 1e-12, name << " t error " << *s->t_error);
+  }
+  BOOST_TEST(c.find("exact-rounded")->earliest->t.rfind("root of", 0) == 0);   // exact on the rounded poses
+
+  // Touching only, at an irrational instant: regularised no, closed yes, so
+  // any subject that disagrees on the verdict does so because of what
+  // touching means, never by "arithmetic".
+  o.semantics = Semantics::closed;
+  Comparison touch = compare_scene(read_scene_file(dir + "touch_at_irrational_time.json"), "touch", o);
+  BOOST_TEST(!*touch.reference()->collide);
+  BOOST_REQUIRE(touch.closed_touch.has_value());
+  BOOST_TEST(*touch.closed_touch);
+  BOOST_TEST(touch.reference_in("closed")->earliest->t.rfind("root of [-1, 2, 1]", 0) == 0);
+  for (const Disagreement& d : touch.disagreements) BOOST_TEST(d.cause != "arithmetic", d.subject << ": " << d.detail);
+  // The JSON form reads back (fuzz folders, report).
+  BOOST_TEST(Comparison::from_json(touch.to_json()).to_json() == touch.to_json());
 }

@@ -95,6 +95,8 @@ def pieces(solid):
 
 def motion(text):
     """(times, velocities) of a ROBMOD motion string."""
+    if isinstance(text, dict):  # {"poses": [...]}: this sampler follows translations only
+        raise Unsupported("pose motions (rotation) are not sampled by this subject")
     tokens = (text or "rest").split()
     times, velocities, i = [], [], 0
     while True:
