@@ -16,10 +16,13 @@
 #include "float/Double_instantiation.h"
 #include "numbers/Algebraic.h"
 #include "numbers/Rational.h"
+#include "rotation/Critical_times.h"
+#include "rotation/Rotating_check.h"
 #include "scene/Input_error.h"
 #include "scene/Json_reader.h"
 #include "scene/Number_json.h"
 #include "scene/Number_text.h"
+#include "scene/Pose_motion.h"
 #include "scene/Scene_reader.h"
 #include "scene/Scene_writer.h"
 #include "search/Work_budget.h"
@@ -399,6 +402,23 @@ Motion Motion::piecewise(const std::vector<Vec3>& velocities, const std::vector<
 
 Motion Motion::from_text(const std::string& robmod) { return Motion(robmod); }
 
+Motion Motion::poses(const std::vector<Pose>& poses)
+{
+  Motion m("");
+  m.poses_ = poses;
+  m.has_poses_ = true;
+  return m;
+}
+
+std::string Motion::json() const
+{
+  if (!has_poses_) return quoted(text_);
+  return "{\"poses\": " + list(poses_, [](const Pose& p) {
+           return "{\"t\": " + number(p.t) + ", \"translate\": " + numbers(p.translate) +
+                  ", \"rotate\": " + numbers(p.rotate) + "}";
+         }) + "}";
+}
+
 // The scene, and the exact kernel's preparation of it (in::Exact_checker:
 // model, S-bounds, sweeps, guides), made by the first exact check and kept
 // for the next ones on any copy of this scene: the same answers, without
@@ -424,9 +444,11 @@ struct Scene::Impl {
   {
     std::unique_lock<std::mutex> lock(exact_mutex, std::try_to_lock);
     // A pose motion's shape is placed for its poses (scene/Pose_motion.h):
-    // the kept preparation cannot take other motions; a fresh check can.
+    // the kept preparation cannot take other motions, nor pose motions in
+    // place of the scene's; a fresh check can.
     bool poses = std::any_of(scene.objects.begin(), scene.objects.end(),
-                             [](const in::Scene_object& x) { return !x.motion.poses.empty(); });
+                             [](const in::Scene_object& x) { return !x.motion.poses.empty(); }) ||
+                 std::any_of(motions.begin(), motions.end(), [](const in::Motion& m) { return !m.poses.empty(); });
     if (!lock || poses) return in::check_exact(in::with_motions(scene, motions), o);
     if (!exact) exact = std::make_unique<in::Exact_checker>(scene);
     return kept([&] { return exact->check(motions, o); });
@@ -480,7 +502,7 @@ Scene_builder::Scene_builder(std::string name, const Rational& t_lo, const Ratio
 Scene_builder& Scene_builder::object(const std::string& name, const Solid& shape, const Motion& motion)
 {
   objects_.push_back("{\"name\": " + quoted(name) + ", \"shape\": " + shape.json() + ", \"motion\": " +
-                     quoted(motion.text()) + "}");
+                     motion.json() + "}");
   return *this;
 }
 
@@ -567,20 +589,50 @@ std::array<Point4, 2> answer_cells(const std::array<std::array<std::string, 4>, 
   return {answer_point<4>(c[0]), answer_point<4>(c[1])};
 }
 
+// An answer's number as an Algebraic: exact text (always rational on the
+// translation path), or a double's shortest decimal.
+template <std::size_t N>
+std::array<Algebraic, N> answer_numbers(const std::array<std::string, 4>& p)
+{
+  std::array<Algebraic, N> out;
+  for (std::size_t i = 0; i < N; ++i) out[i] = Algebraic(answer_number(p[i]));
+  return out;
+}
+
 Colliding_pair answer_pair(const in::Pair_answer& p, Semantics semantics)
 {
   Colliding_pair out;
   out.a = p.a;
   out.b = p.b;
-  out.witness = answer_point<4>(p.witness);
+  out.witness = answer_numbers<4>(p.witness);
   out.witness_verified = p.witness_verified;
   if (semantics == Semantics::closed) out.witness_inside = answer_cells(p.witness_cells);
   if (p.earliest) {
     Earliest e;
-    e.t = answer_number(p.t_star);
-    e.point = answer_point<3>(p.contact);
+    e.t = Algebraic(answer_number(p.t_star));
+    e.point = answer_numbers<3>(p.contact);
     e.at_start = p.at_start;
     e.inside = answer_cells(p.contact_cells);
+    out.earliest = e;
+  }
+  return out;
+}
+
+// A pair of a scene with rotation: its numbers may be irrational, and time
+// slices give no generic inside points (Earliest::inside stays empty).
+Colliding_pair rotating_pair(const in::Rotating_pair_answer& p)
+{
+  const in::Rotating_answer& a = p.answer;
+  Colliding_pair out;
+  out.a = p.a;
+  out.b = p.b;
+  for (std::size_t i = 0; i < 4; ++i) out.witness[i] = Algebraic::Impl::make(a.witness[i]);
+  out.witness_verified = a.witness_verified;
+  if (a.earliest) {
+    Earliest e;
+    e.t = Algebraic::Impl::make(a.t_star);
+    for (std::size_t k = 0; k < 3; ++k) e.point[k] = Algebraic::Impl::make(a.contact[k]);
+    e.at_start = a.at_start;
     out.earliest = e;
   }
   return out;
@@ -620,29 +672,83 @@ Check_result result_of(const in::Check_answer& a, const Check_options& options)
   return r;
 }
 
+Check_result result_of(const in::Rotating_check_answer& a, const Check_options& options)
+{
+  Check_result r;
+  r.number = options.number;
+  r.semantics = options.semantics;
+  r.collide = a.collide;
+  for (const auto& p : a.pairs) r.pairs.push_back(rotating_pair(p));
+  if (const in::Rotating_pair_answer* main = a.reported()) r.reported_index = static_cast<int>(main - a.pairs.data());
+  return r;
+}
+
+// A scene where some object turns, by time slices, as `clash4d check`
+// decides it (cli/Rotating_check_command.cpp): what it cannot decide is
+// invalid input at the first turning object ("objects[i].motion", or
+// "motions[i]" for given motions), never an answer.
+Check_result check_turning(const in::Scene& s, bool given_motions, const Check_options& options)
+{
+  std::size_t i = 0;
+  while (i + 1 < s.objects.size() && !s.objects[i].motion.rotates()) ++i;
+  std::string place = given_motions ? "motions[" + std::to_string(i) + "]" : "objects[" + std::to_string(i) + "].motion";
+  std::string who = "object \"" + s.objects[i].name + "\": ";
+  if (options.number == Number::double_)
+    throw in::Input_error(place, who + "Number::double_ (number \"double\") does not decide motions with rotation "
+                                       "yet (use exact or rational)");
+  try {
+    return result_of(in::check_rotating(s, internal(options), name(options.number)), options);
+  } catch (const in::Rotation_unsupported& e) {
+    throw in::Input_error(place, who + "not decided: " + e.what());
+  } catch (const in::Minor_limit& e) {
+    throw in::Input_error("objects", e.what(), in::CLASH4D_EXIT_LIMIT);
+  }
+}
+
 // A check in the number options.number asks for; exact on the scene's kept
-// preparation (Scene::Impl::check_exact), given motions or the scene's.
-in::Check_answer run_check(const Scene& scene, const std::vector<in::Motion>* motions, const Check_options& options)
+// preparation (Scene::Impl::check_exact), given motions or the scene's; a
+// scene with rotation (scene_rotates) by time slices.
+Check_result run_check(const Scene& scene, const std::vector<in::Motion>* motions, const Check_options& options)
 {
   in::Check_options o = internal(options);
   const Scene::Impl& impl = scene.impl();
+  bool turning = motions ? std::any_of(motions->begin(), motions->end(), [](const in::Motion& m) { return m.rotates(); })
+                         : in::scene_rotates(impl.scene);
   return budgeted(scene.file(), options.max_seconds, options.cancel, [&] {
     return guarded(scene.file(), [&] {
-      if (options.number == Number::exact) return motions ? impl.check_exact(*motions, o) : impl.check_exact(o);
+      if (options.number == Number::exact && !turning)
+        return result_of(motions ? impl.check_exact(*motions, o) : impl.check_exact(o), options);
       std::optional<in::Scene> moved;
       if (motions) moved = in::with_motions(impl.scene, *motions);
       const in::Scene& s = moved ? *moved : impl.scene;
-      if (options.number == Number::rational) return in::check_rational(s, o);
-      return in::check_double(s, options.tolerance, o);
+      if (turning) return check_turning(s, motions != nullptr, options);
+      if (options.number == Number::rational) return result_of(in::check_rational(s, o), options);
+      return result_of(in::check_double(s, options.tolerance, o), options);
     });
   });
+}
+
+// A pose motion as the pipeline's, its poses checked as the scene reader
+// checks them (Input_error at place + ".poses[j]...").
+in::Motion pose_motion(const Motion& m, const std::string& place)
+{
+  in::Motion out;
+  for (const Pose& p : m.pose_list()) {
+    in::Pose q;
+    q.t = internal(p.t);
+    for (std::size_t k = 0; k < 3; ++k) q.translate[k] = internal(p.translate[k]);
+    for (std::size_t k = 0; k < 4; ++k) q.rotate[k] = internal(p.rotate[k]);
+    out.poses.push_back(std::move(q));
+  }
+  in::check_poses(out.poses, place);
+  return out;
 }
 
 } // namespace
 
 Check_result check(const Scene& scene, const Check_options& options)
 {
-  return result_of(run_check(scene, nullptr, options), options);
+  return run_check(scene, nullptr, options);
 }
 
 Check_result check(const Scene& scene, const std::vector<Motion>& motions, const Check_options& options)
@@ -653,11 +759,14 @@ Check_result check(const Scene& scene, const std::vector<Motion>& motions, const
                                 std::to_string(s.objects.size()) + " objects");
   std::vector<in::Motion> parsed;
   guarded(scene.file(), [&] {
-    for (std::size_t i = 0; i < motions.size(); ++i)
-      parsed.push_back(in::parse_motion(motions[i].text(), "motions[" + std::to_string(i) + "]"));
+    for (std::size_t i = 0; i < motions.size(); ++i) {
+      std::string place = "motions[" + std::to_string(i) + "]";
+      parsed.push_back(motions[i].has_poses() ? pose_motion(motions[i], place)
+                                              : in::parse_motion(motions[i].text(), place));
+    }
     return 0;
   });
-  return result_of(run_check(scene, &parsed, options), options);
+  return run_check(scene, &parsed, options);
 }
 
 // ---------------------------------------------------------------- CCD

@@ -29,8 +29,11 @@
 // max_seconds (exit code 3). One stopped through its cancel flag throws
 // clash4d::api::Cancelled. An internal error (a bug) throws std::logic_error.
 //
-// CCD queries (vertex-face, edge-edge; `clash4d ccd`) answer with exact
-// algebraic numbers (Algebraic): see "CCD" below.
+// Objects may turn (Motion::poses, the scene format's pose motions): check
+// then decides by time slices, and its t*, contact points and closed
+// witnesses are exact algebraic numbers (Algebraic), irrational where they
+// must be. CCD queries (vertex-face, edge-edge; `clash4d ccd`) answer with
+// Algebraic numbers too: see "CCD" below.
 //
 // Not here yet: certificates (clash4d check --certificate, clash4d verify).
 #ifndef CLASH4D_API_CLASH4D_H
@@ -228,8 +231,21 @@ private:
   std::string json_;
 };
 
+// One pose of a motion with rotation (the scene format's "Motion with
+// rotation (poses)"): at time t the object occupies { R(rotate) p +
+// translate : p in shape }, R the rotation of the quaternion (w, x, y, z),
+// not 0 and not necessarily unit. Between poses both are interpolated
+// linearly (the quaternion not normalised); before the first pose and after
+// the last the object rests there.
+struct Pose {
+  Rational t;
+  Vec3 translate{Rational(0), Rational(0), Rational(0)};
+  std::array<Rational, 4> rotate{Rational(1), Rational(0), Rational(0), Rational(0)};   // identity
+};
+
 // A motion: piecewise-constant velocity, D(0) = 0 (the scene format's
-// ROBMOD notation, e.g. "rest until 0 vel 1 0 0 until 5 rest").
+// ROBMOD notation, e.g. "rest until 0 vel 1 0 0 until 5 rest"), or poses
+// (Motion::poses), which may turn the object.
 class CLASH4D_API Motion {
 public:
   static Motion rest();                          // the default: never moves
@@ -238,12 +254,26 @@ public:
   // times[i], the last after the last time (velocities.size() = times.size() + 1).
   static Motion piecewise(const std::vector<Vec3>& velocities, const std::vector<Rational>& times);
   static Motion from_text(const std::string& robmod);
+  // Poses with strictly increasing times (checked when the scene is built
+  // or the motion is used, as the scene reader checks them). Poses that
+  // never rotate are the piecewise-linear translation they describe: the
+  // same answers as that ROBMOD motion.
+  static Motion poses(const std::vector<Pose>& poses);
 
+  bool has_poses() const { return has_poses_; }
+  // The ROBMOD text; empty for a pose motion.
   const std::string& text() const { return text_; }
+  // The poses of a pose motion; empty for a ROBMOD one.
+  const std::vector<Pose>& pose_list() const { return poses_; }
+  // The scene format's "motion" value: a JSON string (ROBMOD) or
+  // {"poses": [...]}, every number an exact string.
+  std::string json() const;
 
 private:
   explicit Motion(std::string text) : text_(std::move(text)) {}
   std::string text_;
+  std::vector<Pose> poses_;
+  bool has_poses_ = false;
 };
 
 // A scene read and validated: immutable, cheap to copy (shared). Its first
@@ -331,24 +361,29 @@ struct Check_options {
 
 // The earliest collision of a pair: t* (the infimum of collision times) and
 // a contact point x* with (x*, t*) in the closure of the collision region.
+// Exact numbers: with rotation (pose motions) t* and x* may be irrational
+// (roots of polynomials); without it they are always rational.
 struct Earliest {
-  Rational t;
-  Vec3 point;
+  Algebraic t;
+  std::array<Algebraic, 3> point;
   bool at_start = false;   // t* = t_lo: already colliding when the span starts
   // Generic points that make the answer checkable: one strictly inside each
   // object (the same point twice in regularised semantics), each with
-  // (x*, t*) in the closure of its cell.
-  std::array<Point4, 2> inside;
+  // (x*, t*) in the closure of its cell. None for a scene with rotation,
+  // whose answers (time slices) give no such points.
+  std::optional<std::array<Point4, 2>> inside;
 };
 
 struct Colliding_pair {
   std::string a, b;            // object names, in scene order
   // Regularised: a point (x, y, z, t), t_lo < t < t_hi, strictly inside both
-  // objects. Closed: a point of both closed objects, t_lo <= t <= t_hi.
-  Point4 witness;
+  // objects, always rational. Closed: a point of both closed objects, t_lo
+  // <= t <= t_hi, which with rotation may be irrational (a first contact at
+  // an irrational time).
+  std::array<Algebraic, 4> witness;
   bool witness_verified = false;   // checked against the scene exactly
   // Closed semantics only: a generic point strictly inside each object whose
-  // cell's closure holds the witness.
+  // cell's closure holds the witness. None for a scene with rotation.
   std::optional<std::array<Point4, 2>> witness_inside;
   std::optional<Earliest> earliest;   // with Check_options::earliest
 };
@@ -368,14 +403,23 @@ struct CLASH4D_API Check_result {
 // With Number::double_ the numbers are those of the double run's shortest
 // round-trip decimal text (so "0.1" is 1/10), not exact answers.
 
+// Scenes with rotation (some pose motion turns its object) are decided by
+// time slices (`clash4d check` does the same): Number::exact or rational,
+// not Number::double_ (Input_error, exit_invalid, at the first turning
+// object's "objects[i].motion"). A rotating question this release cannot
+// decide exactly (a named degenerate case) throws Input_error with
+// exit_invalid at that place, its message beginning "object \"NAME\": not
+// decided: "; too large a polynomial system, Input_error with exit_limit.
 CLASH4D_API Check_result check(const Scene& scene, const Check_options& options = {});
 // The scene's shapes with object i moving by motions[i] (one per object, in
 // scene order) instead of the scene's motions: the answer check gives on
 // that scene. With Number::exact the scene's preparation is kept across
 // such checks (as a peer engine keeps its shapes and takes new transforms
-// per query): only what depends on motions is made again. A motion that is
-// not valid throws Input_error at place "motions[i]"; a count that is not
-// the scene's, std::invalid_argument.
+// per query): only what depends on motions is made again (not with
+// rotation: each such check is made afresh). A motion that is not valid
+// throws Input_error at place "motions[i]" (pose motions
+// "motions[i].poses[j]..."); a count that is not the scene's,
+// std::invalid_argument. Rotation as for check, the places "motions[i]".
 CLASH4D_API Check_result check(const Scene& scene, const std::vector<Motion>& motions,
                                const Check_options& options = {});
 

@@ -46,8 +46,14 @@ are read exactly: int, fractions.Fraction (any numbers.Rational), str
 decimal.Decimal by their exact value (Fraction(0.1) is
 3602879701896397/36028797018963968, not 1/10: write "0.1" or Fraction(1, 10)
 for a tenth). Motions are strings ("vel 1 0 0", "rest until 0 vel 1/2 0 0
-until 5 rest"). Relative file paths inside a dict scene (mesh solids) are
-relative to the current directory.
+until 5 rest") or poses, which may turn the object (the scene format's
+section "Motion with rotation", poses):
+
+    {"poses": [{"t": 0}, {"t": 1, "translate": [0, 0, 1], "rotate": [1, 0, 0, 1]}]}
+
+(rotate: a quaternion w, x, y, z, not necessarily unit; defaults translate
+[0, 0, 0], rotate [1, 0, 0, 0]). Relative file paths inside a dict scene
+(mesh solids) are relative to the current directory.
 
 A dict is refused with clash4d.InputError at the place of the fault (e.g.
 "objects[0].shape") when it holds itself (a cycle: a list that contains
@@ -60,7 +66,9 @@ numbers: where the format wants a number they are refused as the reader
 refuses a boolean there.
 
 Answers are dicts in the form of `clash4d check --json` and
-`clash4d compare --json`, with every exact number a fractions.Fraction.
+`clash4d compare --json`, with every exact number a fractions.Fraction, or,
+where it is irrational (with rotation: t*, a contact point, a closed
+witness), a clash4d.Algebraic (below).
 
 CCD queries (`clash4d ccd`, docs/ccd-queries.md): a vertex and a triangle,
 or two edges, whose four vertices move linearly over t in [0, 1]:
@@ -84,14 +92,21 @@ py::object fraction(const c4::Rational& r)
   return (*type)(r.to_string());
 }
 
-py::list point(const c4::Point4& p)
+// A rational as a Fraction, an irrational number as a clash4d.Algebraic.
+py::object algebraic(const c4::Algebraic& x)
+{
+  return x.is_rational() ? fraction(x.rational()) : py::cast(x);
+}
+
+template <std::size_t N>
+py::list point(const std::array<c4::Algebraic, N>& p)
 {
   py::list out;
-  for (const auto& x : p) out.append(fraction(x));
+  for (const auto& x : p) out.append(algebraic(x));
   return out;
 }
 
-py::list point(const c4::Vec3& p)
+py::list point(const c4::Point4& p)
 {
   py::list out;
   for (const auto& x : p) out.append(fraction(x));
@@ -339,6 +354,34 @@ c4::Scene read_scene(py::handle scene, const std::vector<std::string>& mesh_fold
   return c4::Scene::read_file(file, mesh_folders);
 }
 
+const char* const ccd_file = "<query>";   // the file of a CCD query's InputError (c4::ccd's)
+
+// An exact number: a Python number as number_text reads it, or a string in
+// the scene format's forms ("1/3", "0.1", "-2.5e-3").
+c4::Rational exact_number(py::handle v, const std::string& place, const std::string& file = ccd_file)
+{
+  std::optional<std::string> text = number_text(v, file, place);
+  if (!text && py::isinstance<py::str>(v)) text = v.cast<std::string>();
+  if (!text) bad_input(file, place, "not a number: " + short_repr(v));
+  try {
+    return c4::Rational(*text);
+  } catch (const std::invalid_argument& e) {
+    bad_input(file, place, e.what());
+  }
+}
+
+// The items of a list or tuple (any sequence but a string) of n items.
+std::vector<py::handle> items(py::handle v, std::size_t n, const char* what, const std::string& place,
+                              const std::string& file = ccd_file)
+{
+  if (!py::isinstance<py::sequence>(v) || py::isinstance<py::str>(v) || py::isinstance<py::bytes>(v) ||
+      py::len(v) != n)
+    bad_input(file, place, "expected " + std::to_string(n) + " " + what + ", not " + short_repr(v));
+  std::vector<py::handle> out;
+  for (py::handle x : py::reinterpret_borrow<py::sequence>(v)) out.push_back(x);
+  return out;
+}
+
 py::dict witness_dict(const c4::Colliding_pair& p)
 {
   py::dict w;
@@ -354,16 +397,69 @@ py::dict earliest_dict(const c4::Colliding_pair& p)
   const c4::Earliest& e = *p.earliest;
   py::dict d;
   d["objects"] = py::make_tuple(p.a, p.b);
-  d["t"] = fraction(e.t);
+  d["t"] = algebraic(e.t);
   d["point"] = point(e.point);
   d["at_start"] = e.at_start;
-  d["inside"] = py::make_tuple(point(e.inside[0]), point(e.inside[1]));
+  if (e.inside) d["inside"] = py::make_tuple(point((*e.inside)[0]), point((*e.inside)[1]));   // none with rotation
   return d;
 }
 
+// A pose of check's motions=: {"t": T, "translate": [x, y, z], "rotate":
+// [w, x, y, z]}, the last two optional (the scene format's pose).
+c4::Pose pose(py::handle v, const std::string& place, const std::string& file)
+{
+  if (!py::isinstance<py::dict>(v))
+    bad_input(file, place, "expected a pose {\"t\", \"translate\", \"rotate\"}, not " + short_repr(v));
+  py::dict d = py::reinterpret_borrow<py::dict>(v);
+  for (auto item : d) {
+    std::string key = py::isinstance<py::str>(item.first) ? item.first.cast<std::string>() : "";
+    if (key != "t" && key != "translate" && key != "rotate")
+      bad_input(file, place, "unknown key " + short_repr(item.first) + " (t, translate, rotate)");
+  }
+  if (!d.contains("t")) bad_input(file, place, "missing \"t\"");
+  c4::Pose p;
+  p.t = exact_number(d["t"], place + ".t", file);
+  auto numbers = [&](const char* key, c4::Rational* out, std::size_t n) {
+    if (!d.contains(key)) return;
+    std::string at = place + "." + key;
+    std::vector<py::handle> xs = items(d[key], n, "numbers", at, file);
+    for (std::size_t k = 0; k < n; ++k) out[k] = exact_number(xs[k], at + "[" + std::to_string(k) + "]", file);
+  };
+  numbers("translate", p.translate.data(), 3);
+  numbers("rotate", p.rotate.data(), 4);
+  return p;
+}
+
+// A motion of check's motions=: a ROBMOD str, or {"poses": [pose, ...]}
+// as in a scene (its poses' values are checked by the library).
+c4::Motion motion(py::handle v, const std::string& place, const std::string& file)
+{
+  if (py::isinstance<py::str>(v)) return c4::Motion::from_text(v.cast<std::string>());
+  if (!py::isinstance<py::dict>(v) || py::len(v) != 1 || !v.contains("poses"))
+    bad_input(file, place, "expected a ROBMOD string or {\"poses\": [...]}, not " + short_repr(v));
+  py::object list = v["poses"];
+  if (!py::isinstance<py::list>(list) && !py::isinstance<py::tuple>(list))
+    bad_input(file, place + ".poses", "expected a list of poses, not " + short_repr(list));
+  std::vector<c4::Pose> poses;
+  for (py::handle x : py::tuple(list)) poses.push_back(pose(x, place + ".poses[" + std::to_string(poses.size()) + "]", file));
+  return c4::Motion::poses(poses);
+}
+
+// check's motions=: None, or one motion per object.
+std::optional<std::vector<c4::Motion>> motions_of(py::handle motions, const c4::Scene& s)
+{
+  if (motions.is_none()) return std::nullopt;
+  if (!py::isinstance<py::sequence>(motions) || py::isinstance<py::str>(motions) || py::isinstance<py::bytes>(motions))
+    throw py::type_error("clash4d.check: motions is a list of motions (str or {\"poses\": [...]}), not " +
+                         short_repr(motions));
+  std::vector<c4::Motion> out;
+  for (py::handle m : py::tuple(py::reinterpret_borrow<py::sequence>(motions)))
+    out.push_back(motion(m, "motions[" + std::to_string(out.size()) + "]", s.file()));
+  return out;
+}
+
 py::dict check(py::handle scene, const std::string& number, const std::string& semantics, bool earliest,
-               bool all_pairs, double tolerance, const std::optional<std::vector<std::string>>& motions,
-               double max_seconds)
+               bool all_pairs, double tolerance, py::handle motions, double max_seconds)
 {
   c4::Check_options o;
   o.number = c4::number_from_name(number);
@@ -373,13 +469,11 @@ py::dict check(py::handle scene, const std::string& number, const std::string& s
   o.tolerance = tolerance;
   o.max_seconds = max_seconds;
   c4::Scene s = read_scene(scene);
-  std::vector<c4::Motion> moved;
-  if (motions)
-    for (const std::string& m : *motions) moved.push_back(c4::Motion::from_text(m));
+  std::optional<std::vector<c4::Motion>> moved = motions_of(motions, s);
   c4::Check_result r = interruptible([&](const std::atomic<bool>* cancel) {
     c4::Check_options run = o;
     run.cancel = cancel;
-    return motions ? c4::check(s, moved, run) : c4::check(s, run);
+    return moved ? c4::check(s, *moved, run) : c4::check(s, run);
   });
   py::dict out;
   out["collide"] = r.collide;
@@ -484,33 +578,6 @@ py::dict validate(py::handle scene)
 
 // ---------------------------------------------------------------- CCD
 
-const char* const ccd_file = "<query>";   // the file of a CCD query's InputError (c4::ccd's)
-
-// An exact number: a Python number as number_text reads it, or a string in
-// the scene format's forms ("1/3", "0.1", "-2.5e-3").
-c4::Rational exact_number(py::handle v, const std::string& place)
-{
-  std::optional<std::string> text = number_text(v, ccd_file, place);
-  if (!text && py::isinstance<py::str>(v)) text = v.cast<std::string>();
-  if (!text) bad_input(ccd_file, place, "not a number: " + std::string(py::repr(v)));
-  try {
-    return c4::Rational(*text);
-  } catch (const std::invalid_argument& e) {
-    bad_input(ccd_file, place, e.what());
-  }
-}
-
-// The items of a list or tuple (any sequence but a string) of n items.
-std::vector<py::handle> items(py::handle v, std::size_t n, const char* what, const std::string& place)
-{
-  if (!py::isinstance<py::sequence>(v) || py::isinstance<py::str>(v) || py::isinstance<py::bytes>(v) ||
-      py::len(v) != n)
-    bad_input(ccd_file, place, "expected " + std::to_string(n) + " " + what + ", not " + std::string(py::repr(v)));
-  std::vector<py::handle> out;
-  for (py::handle x : py::reinterpret_borrow<py::sequence>(v)) out.push_back(x);
-  return out;
-}
-
 // Four vertices [[x, y, z], ...] at one time.
 std::array<c4::Vec3, 4> vertices(py::handle v, const std::string& place)
 {
@@ -557,12 +624,6 @@ c4::Ccd_options ccd_options(const std::string& number, bool earliest, py::handle
   if (!separation.is_none()) o.separation = exact_number(separation, "separation");
   o.tolerance = tolerance;
   return o;
-}
-
-// A rational as a Fraction, an irrational number as a clash4d.Algebraic.
-py::object algebraic(const c4::Algebraic& x)
-{
-  return x.is_rational() ? fraction(x.rational()) : py::cast(x);
 }
 
 // The form of a `clash4d ccd --json` line, without its index.
@@ -690,10 +751,18 @@ the shortest decimals of the doubles). semantics: "regularised" (touching is
 not a collision) or "closed" (touching counts). earliest: also the earliest
 collision (closed: first contact) time t and a contact point. all_pairs:
 every colliding pair, not only the first. tolerance: double only.
-motions: a motion string per object, in scene order, in place of the scene's
-own (the same shapes moving otherwise); with a clash4d.Scene, exact keeps
-its preparation across such checks. A bad motion raises clash4d.InputError
-at place "motions[i]"; a count that is not the scene's, ValueError.
+motions: a motion per object, in scene order, in place of the scene's own
+(the same shapes moving otherwise): a ROBMOD string or a dict {"poses":
+[...]}; with a clash4d.Scene, exact keeps its preparation across such
+checks (not with poses). A bad motion raises clash4d.InputError at place
+"motions[i]" (or "motions[i].poses[j]..."); a count that is not the
+scene's, ValueError.
+Scenes where some object turns (pose motions with rotation) are decided by
+time slices, as `clash4d check` does, with number "exact" or "rational":
+number "double" raises clash4d.InputError (EXIT_INVALID) at the first
+turning object's motion, and so does a degenerate case this release
+cannot decide (its message says "not decided: ..."); too large a system of
+polynomials, EXIT_LIMIT.
 max_seconds (keyword only): a time limit on the check, as `clash4d check
 --max-seconds` (0, the default: none; the scene's reading is not counted):
 past it the check stops with no answer and raises clash4d.InputError with
@@ -705,7 +774,9 @@ Returns {"collide": bool, "number", "semantics",
  "witness": {"objects": (a, b), "point": [x, y, z, t], "verified": bool},   # when collide
  "earliest": {"objects", "t", "point": [x, y, z], "at_start", "inside"},    # with earliest
  "pairs": [{"objects", "witness", "earliest"}, ...]}                           # pairs found
-with every number a fractions.Fraction.)");
+with every number a fractions.Fraction, or a clash4d.Algebraic where it is
+irrational (t, point and a closed witness, with rotation only). With
+rotation there are no "inside" points (the key is absent).)");
   m.def("compare", &compare, py::arg("scene"), py::arg("semantics") = "regularised",
         py::arg("tolerances") = std::vector<double>{1e-9}, py::arg("earliest") = false, py::arg("rounded") = true,
         py::arg("fcl") = false, py::arg("bullet") = false, py::kw_only(), py::arg("max_seconds") = 0.0,
@@ -723,9 +794,9 @@ max_seconds and Ctrl-C as for check.)");
         "The scene (validated) as scene-format JSON text, every number an exact string.");
 
   py::class_<c4::Algebraic>(m, "Algebraic", R"(An irrational real algebraic number, exactly: the one root of its minimal
-polynomial in an open interval. CCD answers (t, u, v) are these where they
-are not rational (rationals come as fractions.Fraction). Not made from
-Python.
+polynomial in an open interval. CCD answers (t, u, v) and, with rotation,
+check's t*, contact points and closed witnesses are these where they are
+not rational (rationals come as fractions.Fraction). Not made from Python.
 
     t.poly       # [-1, 0, 8]: the minimal polynomial 8x^2 - 1, integer coefficients, constant term first
     t.between    # (Fraction(0, 1), Fraction(1, 1)): the only root of poly in that open interval

@@ -4,10 +4,12 @@
 //   clash4d_example FIXTURES_DIR
 #include <clash4d/clash4d.h>
 
+#include <array>
 #include <atomic>
 #include <iostream>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace c4 = clash4d::api;
 
@@ -21,9 +23,169 @@ void expect(bool ok, const std::string& what)
   if (!ok) ++failures;
 }
 
-std::string text(const c4::Point4& p)
+template <std::size_t N>
+std::string text(const std::array<c4::Algebraic, N>& p)
 {
-  return "(" + p[0].to_string() + ", " + p[1].to_string() + ", " + p[2].to_string() + ", " + p[3].to_string() + ")";
+  std::string out = "(";
+  for (std::size_t i = 0; i < N; ++i) out += (i ? ", " : "") + p[i].text();
+  return out + ")";
+}
+
+// x is the root of the polynomial (coefficients from the constant term up)
+// in the open interval (lo, hi): an irrational answer, derived by hand.
+bool is_root(const c4::Algebraic& x, const std::vector<std::string>& poly, const c4::Rational& lo, const c4::Rational& hi)
+{
+  return !x.is_rational() && x.polynomial() == poly && x > lo && x < hi;
+}
+
+// The block [-1, 1]^3 turning a quarter turn about z over [0, 1] (q(t) =
+// (1, 0, 0, t)) into the slab x >= 6/5 (fixtures/rotation/square_into_slab.json).
+c4::Scene_builder square_into_slab(const c4::Rational& slab_x)
+{
+  c4::Pose start, end;
+  start.t = 0;
+  end.t = 1;
+  end.rotate = {1, 0, 0, 1};
+  c4::Scene_builder b("square into slab", 0, 1);
+  b.object("square", c4::Solid::block({-1, -1, -1}, {1, 1, 1}), c4::Motion::poses({start, end}));
+  b.object("slab", c4::Solid::block({slab_x, -1, -1}, {3, 1, 1}));
+  return b;
+}
+
+c4::Pose pose(const c4::Rational& t, const c4::Vec3& translate, const std::array<c4::Rational, 4>& rotate = {1, 0, 0, 0})
+{
+  c4::Pose p;
+  p.t = t;
+  p.translate = translate;
+  p.rotate = rotate;
+  return p;
+}
+
+// A first contact at an irrational time, and a door closing on its stop.
+void touch_and_door(const std::string& fixtures, c4::Check_options o)
+{
+  // The corner edge of a turning, sliding block passes through a static edge
+  // at the single instant t = sqrt 2 - 1 (root of t^2 + 2t - 1), at x = 1,
+  // y = 0: no collision, but a closed contact, its witness at that instant.
+  c4::Scene touch = c4::Scene::read_file(fixtures + "/rotation/touch_at_irrational_time.json");
+  o.semantics = c4::Semantics::regularised;
+  expect(!c4::check(touch, o).collide, "touch at an irrational time: no collision (regularised)");
+  o.semantics = c4::Semantics::closed;
+  c4::Check_result r = c4::check(touch, o);
+  const c4::Colliding_pair* p = r.reported();
+  if (p) std::cout << "  closed: witness " << text(p->witness) << "\n";
+  expect(r.collide && p->earliest && is_root(p->earliest->t, {"-1", "2", "1"}, {2, 5}, {1, 2}) &&
+             p->earliest->point[0] == c4::Rational(1) && p->earliest->point[1] == c4::Rational(0) &&
+             !p->witness[3].is_rational() && p->witness[3] == p->earliest->t,
+         "closed: first contact at t* = sqrt 2 - 1 at x = 1, y = 0, the witness then");
+  // The door [0, 1] x [0, 1/10] turns from a quarter turn to shut over [0, 1]
+  // onto the stop's face y = 0 and rests there: contact at t = 1 only.
+  c4::Scene door = c4::Scene::read_file(fixtures + "/rotation/door_against_stop.json");
+  o.semantics = c4::Semantics::regularised;
+  expect(!c4::check(door, o).collide, "door against its stop: no collision (regularised)");
+  o.semantics = c4::Semantics::closed;
+  c4::Check_result d = c4::check(door, o);
+  expect(d.collide && d.reported()->earliest->t == c4::Rational(1) && d.reported()->earliest->point[1] == c4::Rational(0) &&
+             d.reported()->earliest->point[0] >= c4::Rational(1, 2),
+         "closed: the door touches the stop at t = 1 on y = 0");
+}
+
+// Poses without rotation are the translation they describe; what rotation
+// cannot be asked is refused.
+void poses_and_refusals(const c4::Scene& turning, c4::Check_options o)
+{
+  // a = [0, 1]^3 moving by 1 per unit of time until t = 2, b = [5/2, 7/2] x
+  // [0, 1]^2 at rest: a's face 1 + t reaches 5/2 at t* = 3/2.
+  auto moving = [](const c4::Motion& m) {
+    c4::Scene_builder b("translation", 0, 4);
+    b.object("a", c4::Solid::block({0, 0, 0}, {1, 1, 1}), m);
+    b.object("b", c4::Solid::block({c4::Rational(5, 2), 0, 0}, {c4::Rational(7, 2), 1, 1}));
+    return b.build();
+  };
+  o.semantics = c4::Semantics::regularised;
+  c4::Check_result robmod = c4::check(moving(c4::Motion::from_text("rest until 0 vel 1 0 0 until 2 rest")), o);
+  c4::Check_result posed = c4::check(moving(c4::Motion::poses({pose(0, {0, 0, 0}), pose(2, {2, 0, 0})})), o);
+  expect(robmod.collide && posed.collide && posed.reported()->earliest->t == c4::Rational(3, 2) &&
+             robmod.reported()->earliest->t == posed.reported()->earliest->t &&
+             robmod.reported()->earliest->point == posed.reported()->earliest->point &&
+             robmod.reported()->witness == posed.reported()->witness,
+         "a pose motion without rotation answers as the same ROBMOD motion: t* = 3/2");
+  // Given motions: poses in place of the scene's. a from [1/2, 3/2] at t = 0
+  // at speed 1 meets b's face x = 5/2 at t* = 1 (x = 5/2).
+  c4::Scene at_rest = moving(c4::Motion::rest());
+  c4::Check_result given = c4::check(at_rest, {c4::Motion::poses({pose(0, {c4::Rational(1, 2), 0, 0}), pose(4, {c4::Rational(9, 2), 0, 0})}), c4::Motion::rest()}, o);
+  expect(given.collide && given.reported()->earliest->t == c4::Rational(1) && given.reported()->earliest->point[0] == c4::Rational(5, 2),
+         "given pose motions: t* = 1 at x = 5/2");
+  try {
+    c4::check(at_rest, {c4::Motion::poses({pose(1, {0, 0, 0}), pose(1, {1, 0, 0})}), c4::Motion::rest()}, o);
+    expect(false, "poses at the same time are refused");
+  } catch (const c4::Input_error& e) {
+    std::cout << "  refused: " << e.what() << "\n";
+    expect(e.place().rfind("motions[0].poses", 0) == 0 && e.exit_code() == c4::exit_invalid, "the error names motions[0].poses");
+  }
+  o.number = c4::Number::double_;
+  try {
+    c4::check(turning, o);
+    expect(false, "Number::double_ is refused with rotation");
+  } catch (const c4::Input_error& e) {
+    std::cout << "  refused: " << e.what() << "\n";
+    expect(e.place() == "objects[0].motion" && e.exit_code() == c4::exit_invalid, "Number::double_ with rotation: exit 2");
+  }
+  o.number = c4::Number::exact;
+  std::atomic<bool> cancel{true};
+  o.cancel = &cancel;
+  try {
+    c4::check(turning, o);
+    expect(false, "a cancelled rotating check stops");
+  } catch (const c4::Cancelled&) {
+    expect(true, "a cancelled rotating check throws Cancelled");
+  }
+}
+
+// Scenes whose objects turn (pose motions), against the hand-derived answers
+// of fixtures/rotation/expected.json.
+void rotation(const std::string& fixtures)
+{
+  std::cout << "rotation:\n";
+  c4::Check_options o;
+  o.earliest = true;
+  // The square's reach along x is (1 + 2t - t^2) / (1 + t^2) (its corner
+  // (1, -1)), past 6/5 first at the root of 11t^2 - 10t + 1 in (0, 1/2),
+  // (5 - sqrt 14) / 11 ~ 0.1144, where the corner edge is at x = 6/5, y =
+  // -sqrt(14) / 5 (root of 25y^2 - 14): the same in both semantics.
+  c4::Scene file = c4::Scene::read_file(fixtures + "/rotation/square_into_slab.json");
+  c4::Scene built = square_into_slab(c4::Rational(6, 5)).build();
+  for (c4::Semantics sem : {c4::Semantics::regularised, c4::Semantics::closed}) {
+    o.semantics = sem;
+    for (const c4::Scene* s : {&file, &built}) {
+      c4::Check_result r = c4::check(*s, o);
+      const c4::Colliding_pair* p = r.reported();
+      bool ok = r.collide && p && p->earliest && is_root(p->earliest->t, {"1", "-10", "11"}, {1, 10}, {1, 8}) &&
+                p->earliest->point[0] == c4::Rational(6, 5) &&
+                is_root(p->earliest->point[1], {"-14", "0", "25"}, {-4, 5}, {-7, 10}) &&
+                p->earliest->point[2] >= c4::Rational(-1) && p->earliest->point[2] <= c4::Rational(1) &&
+                !p->earliest->inside;
+      if (p && p->earliest) std::cout << "  t* = " << p->earliest->t.text() << " at " << text(p->earliest->point) << "\n";
+      expect(ok, std::string(c4::name(sem)) + (s == &file ? ", file" : ", Motion::poses") +
+                     ": square into slab, t* = root of 11t^2 - 10t + 1 in (1/10, 1/8)");
+    }
+  }
+  // Rationals give the same answer (regularised: a rational witness inside both).
+  o.semantics = c4::Semantics::regularised;
+  o.number = c4::Number::rational;
+  c4::Check_result q = c4::check(built, o);
+  expect(q.collide && q.reported()->earliest && q.reported()->earliest->t == c4::check(file, o).reported()->earliest->t &&
+             q.reported()->witness[3].is_rational() && q.reported()->witness_verified,
+         "Number::rational: the same t*, a rational verified witness");
+  // With the slab at 7/5: 6t^2 - 5t + 1 = 0, t* = 1/3 (cos 4/5, sin 3/5), the
+  // corner at (7/5, -1/5).
+  o.number = c4::Number::exact;
+  c4::Check_result c = c4::check(square_into_slab(c4::Rational(7, 5)).build(), o);
+  expect(c.collide && c.reported()->earliest->t == c4::Rational(1, 3) && c.reported()->earliest->point[0] == c4::Rational(7, 5) &&
+             c.reported()->earliest->point[1] == c4::Rational(-1, 5),
+         "slab at 7/5: t* = 1/3 at (7/5, -1/5)");
+  touch_and_door(fixtures, o);
+  poses_and_refusals(built, o);
 }
 
 } // namespace
@@ -56,8 +218,8 @@ int main(int argc, char** argv)
   expect(r.collide, "the approaching blocks collide");
   if (const c4::Colliding_pair* p = r.reported()) {
     std::cout << "  " << p->a << " and " << p->b << ", witness " << text(p->witness) << "\n";
-    const c4::Point4& w = p->witness;
-    const c4::Rational& t = w[3];
+    const std::array<c4::Algebraic, 4>& w = p->witness;
+    const c4::Rational t = w[3].rational();   // a regularised witness is rational
     expect(p->a == "a" && p->b == "b", "the pair is a and b");
     expect(p->witness_verified, "the witness is verified");
     expect(w[1] > c4::Rational(0) && w[1] < c4::Rational(1) && w[2] > c4::Rational(0) && w[2] < c4::Rational(1),
@@ -66,8 +228,7 @@ int main(int argc, char** argv)
     // At time t, a is t < x < 1 + t and b is 2 - t < x < 3 - t.
     expect(w[0] > t && w[0] < 1 + t && w[0] > 2 - t && w[0] < 3 - t, "the witness x is strictly inside a and b");
     if (p->earliest) {
-      std::cout << "  earliest: t* = " << p->earliest->t.to_string() << " at x = " << p->earliest->point[0].to_string()
-                << ", y = " << p->earliest->point[1].to_string() << ", z = " << p->earliest->point[2].to_string() << "\n";
+      std::cout << "  earliest: t* = " << p->earliest->t.text() << " at " << text(p->earliest->point) << "\n";
       expect(p->earliest->t == c4::Rational(1, 2), "t* = 1/2");
       expect(p->earliest->point[0] == c4::Rational("1.5"), "the contact point has x = 3/2");
       expect(p->earliest->point[1] >= c4::Rational(0) && p->earliest->point[1] <= c4::Rational(1), "its y is in [0, 1]");
@@ -222,6 +383,8 @@ int main(int argc, char** argv)
   } catch (const std::invalid_argument&) {
     expect(true, "a negative max_seconds is refused");
   }
+
+  rotation(fixtures);
 
   std::cout << (failures ? "FAILED\n" : "all answers as expected\n");
   return failures ? 1 : 0;

@@ -640,6 +640,150 @@ class Random_hostile_dicts(unittest.TestCase):
         self.assertGreater(outcomes.get("refused", 0), 0)
 
 
+ROTATION = FIXTURES / "rotation"
+EXPECTED = json.loads((ROTATION / "expected.json").read_text())   # hand-derived, with the derivations
+
+
+def expected_number(x, want):
+    """Whether x is the number fixtures/rotation/expected.json describes: a
+    rational "p/q" (then a Fraction), {"range": [lo, hi]} (lo <= x <= hi,
+    where contact points are not unique) or {"poly", "between"} (the
+    irrational root, then a clash4d.Algebraic)."""
+    if isinstance(want, str):
+        return isinstance(x, Fraction) and x == Fraction(want)
+    if "range" in want:
+        lo, hi = (Fraction(v) for v in want["range"])
+        return lo <= x <= hi
+    lo, hi = (Fraction(v) for v in want["between"])
+    return isinstance(x, clash4d.Algebraic) and x.poly == [int(c) for c in want["poly"]] and lo < x < hi
+
+
+def quarter_turn(translate_end=(0, 0, 0)):
+    """A motion turning a quarter turn about z over [0, 1]: q(t) = (1, 0, 0, t)."""
+    return {"poses": [{"t": 0}, {"t": 1, "translate": list(translate_end), "rotate": [1, 0, 0, 1]}]}
+
+
+# fixtures/rotation/square_into_slab.json written as a dict, numbers as Fractions.
+SQUARE_INTO_SLAB = scene(obj("square", block((-1, -1, -1), (1, 1, 1)), quarter_turn()),
+                         obj("slab", block((Fraction(6, 5), -1, -1), (3, 1, 1))), time=(0, 1))
+
+
+class Rotation(unittest.TestCase):
+    """Scenes whose objects turn (pose motions), decided by time slices, against
+    the hand-derived answers of fixtures/rotation/expected.json."""
+
+    def check_expected(self, r, want, name):
+        self.assertEqual(r["collide"], want["collide"], name)
+        if not want["collide"]:
+            self.assertNotIn("witness", r)
+            return
+        e = r["earliest"]
+        if "pair" in want:
+            self.assertEqual(e["objects"], tuple(want["pair"]), name)
+        self.assertTrue(expected_number(e["t"], want["t"]), f"{name}: t* = {e['t']!r}, expected {want['t']}")
+        for x, w in zip(e["point"], want["point"]):
+            self.assertTrue(expected_number(x, w), f"{name}: contact {e['point']!r}, expected {want['point']}")
+        self.assertNotIn("inside", e)   # time slices give no generic inside points
+        self.assertTrue(r["witness"]["verified"], name)
+
+    def test_fixtures_as_derived_by_hand(self):
+        for name, answers in EXPECTED.items():
+            for semantics in ("regularised", "closed"):
+                with self.subTest(fixture=name, semantics=semantics):
+                    r = clash4d.check(ROTATION / name, semantics=semantics, earliest=True)
+                    self.check_expected(r, answers[semantics], name)
+
+    def test_square_into_slab_t_star(self):
+        # 11t^2 - 10t + 1 = 0 at t = (5 - sqrt 14) / 11 in (0, 1/2).
+        t = clash4d.check(ROTATION / "square_into_slab.json", earliest=True)["earliest"]["t"]
+        self.assertEqual(t.poly, [1, -10, 11])
+        self.assertEqual(t.approx, "0.11439478302055078")
+        self.assertTrue(Fraction(0) < t < Fraction(1, 2))
+
+    def test_regularised_witness_is_rational_closed_may_not_be(self):
+        r = clash4d.check(ROTATION / "square_into_slab.json")
+        self.assertTrue(all(isinstance(x, Fraction) for x in r["witness"]["point"]))
+        # The closed objects meet only at t = sqrt 2 - 1: the witness is then.
+        r = clash4d.check(ROTATION / "touch_at_irrational_time.json", semantics="closed", earliest=True)
+        w = r["witness"]["point"]
+        self.assertIsInstance(w[3], clash4d.Algebraic)
+        self.assertEqual(w[3], r["earliest"]["t"])
+        self.assertTrue(r["witness"]["verified"])
+
+    def test_rational_gives_the_same_answers(self):
+        for name in ("square_into_slab.json", "corner_at_rational_time.json", "touch_at_irrational_time.json"):
+            for semantics in ("regularised", "closed"):
+                with self.subTest(fixture=name, semantics=semantics):
+                    r = clash4d.check(ROTATION / name, number="rational", semantics=semantics, earliest=True)
+                    self.assertEqual(r["number"], "rational")
+                    self.check_expected(r, EXPECTED[name][semantics], name)
+
+    def test_a_dict_with_poses_answers_as_the_file(self):
+        for semantics in ("regularised", "closed"):
+            self.assertEqual(clash4d.check(SQUARE_INTO_SLAB, semantics=semantics, earliest=True),
+                             clash4d.check(ROTATION / "square_into_slab.json", semantics=semantics, earliest=True))
+        named = dict(SQUARE_INTO_SLAB, name=json.loads((ROTATION / "square_into_slab.json").read_text())["name"])
+        self.assertEqual(clash4d.scene_json(named), clash4d.scene_json(ROTATION / "square_into_slab.json"))
+
+    def test_given_pose_motions(self):
+        at_rest = clash4d.Scene(scene(obj("square", block((-1, -1, -1), (1, 1, 1))),
+                                      obj("slab", block((Fraction(6, 5), -1, -1), (3, 1, 1))), time=(0, 1)))
+        self.assertFalse(clash4d.check(at_rest)["collide"])
+        r = clash4d.check(at_rest, earliest=True, motions=[quarter_turn(), "rest"])
+        self.check_expected(r, EXPECTED["square_into_slab.json"]["regularised"], "given motions")
+        self.assertEqual(r["earliest"]["t"], clash4d.check(SQUARE_INTO_SLAB, earliest=True)["earliest"]["t"])
+
+    def test_poses_without_rotation_are_the_robmod_motion(self):
+        # a moves by 1 per unit of time over [0, 10], written both ways: t* = 1/2 against b.
+        robmod = scene(obj("a", block((0, 0, 0), (1, 1, 1)), "rest until 0 vel 1 0 0 until 10 rest"),
+                       obj("b", block((2, 0, 0), (3, 1, 1)), "vel -1 0 0"))
+        posed = copy.deepcopy(robmod)
+        posed["objects"][0]["motion"] = {"poses": [{"t": 0}, {"t": 10, "translate": [10, 0, 0]}]}
+        for number in ("exact", "rational", "double"):
+            for semantics in ("regularised", "closed"):
+                with self.subTest(number=number, semantics=semantics):
+                    r = clash4d.check(posed, number=number, semantics=semantics, earliest=True)
+                    self.assertEqual(r, clash4d.check(robmod, number=number, semantics=semantics, earliest=True))
+                    self.assertEqual(r["earliest"]["t"], Fraction(1, 2))
+        s = clash4d.Scene(robmod)
+        self.assertEqual(clash4d.check(s, earliest=True, motions=[posed["objects"][0]["motion"], "vel -1 0 0"]),
+                         clash4d.check(robmod, earliest=True))
+
+    def test_double_is_refused(self):
+        with self.assertRaises(clash4d.InputError) as c:
+            clash4d.check(SQUARE_INTO_SLAB, number="double")
+        e = c.exception
+        self.assertEqual((e.exit_code, e.place), (clash4d.EXIT_INVALID, "objects[0].motion"))
+        self.assertIn('object "square"', e.message)
+        self.assertIn("rotation", e.message)
+
+    def test_max_seconds(self):
+        with self.assertRaises(clash4d.InputError) as c:
+            clash4d.check(ROTATION / "pocket_past_peg.json", earliest=True, max_seconds=1e-9)
+        self.assertEqual((c.exception.exit_code, c.exception.place), (clash4d.EXIT_LIMIT, "max_seconds"))
+
+    def test_bad_poses(self):
+        s = clash4d.Scene(SQUARE_INTO_SLAB)
+        for motion, place in (({"poses": [{"t": 0, "rotate": [0, 0, 0, 0]}]}, "motions[0].poses[0]"),
+                              ({"poses": [{"t": 1}, {"t": 0}]}, "motions[0].poses[1]"),
+                              ({"poses": []}, "motions[0]"),
+                              ({"poses": [{"t": 0, "turn": 1}]}, "motions[0].poses[0]"),
+                              ({"poses": [{"t": True}]}, "motions[0].poses[0].t"),
+                              ({"poses": [{"t": 0, "translate": [1, 2]}]}, "motions[0].poses[0].translate"),
+                              ({"poses": [{"t": 0}], "vel": 1}, "motions[0]"),
+                              (42, "motions[0]")):
+            with self.subTest(motion=motion):
+                with self.assertRaises(clash4d.InputError) as c:
+                    clash4d.check(s, motions=[motion, "rest"])
+                self.assertTrue(c.exception.place.startswith(place), c.exception.place)
+                self.assertEqual(c.exception.exit_code, clash4d.EXIT_INVALID)
+        bad = copy.deepcopy(SQUARE_INTO_SLAB)
+        bad["objects"][0]["motion"]["poses"][1]["rotate"] = [-1, 0, 0, 0]   # q(t) passes through 0
+        with self.assertRaises(clash4d.InputError) as c:
+            clash4d.check(bad)
+        self.assertTrue(c.exception.place.startswith("objects[0].motion.poses"), c.exception.place)
+
+
 def slow_scene(copies):
     """copies of the skewed section 6 scene's pair, 1000 apart in x: in
     rationals each pair takes seconds (papers/cameron1990/README.md)."""
