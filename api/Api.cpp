@@ -693,11 +693,8 @@ Check_result check_turning(const in::Scene& s, bool given_motions, const Check_o
   while (i + 1 < s.objects.size() && !s.objects[i].motion.rotates()) ++i;
   std::string place = given_motions ? "motions[" + std::to_string(i) + "]" : "objects[" + std::to_string(i) + "].motion";
   std::string who = "object \"" + s.objects[i].name + "\": ";
-  if (options.number == Number::double_)
-    throw in::Input_error(place, who + "Number::double_ (number \"double\") does not decide motions with rotation "
-                                       "yet (use exact or rational)");
   try {
-    return result_of(in::check_rotating(s, internal(options), name(options.number)), options);
+    return result_of(in::check_rotating(s, internal(options), name(options.number), options.tolerance), options);
   } catch (const in::Rotation_unsupported& e) {
     throw in::Input_error(place, who + "not decided: " + e.what());
   } catch (const in::Minor_limit& e) {
@@ -921,6 +918,8 @@ std::optional<Located> located(const std::optional<in::Located>& l)
   if (!l) return std::nullopt;
   Located out;
   out.objects = l->objects;
+  out.t_text = l->t;
+  if (l->point) out.point_text = *l->point;
   if (l->point) {
     Point4 p;
     bool ok = true;

@@ -404,9 +404,9 @@ struct CLASH4D_API Check_result {
 // round-trip decimal text (so "0.1" is 1/10), not exact answers.
 
 // Scenes with rotation (some pose motion turns its object) are decided by
-// time slices (`clash4d check` does the same): Number::exact or rational,
-// not Number::double_ (Input_error, exit_invalid, at the first turning
-// object's "objects[i].motion"). A rotating question this release cannot
+// time slices (`clash4d check` does the same): exactly with Number::exact
+// or rational; with Number::double_ the same stage runs in doubles (the
+// float subject: its numbers are doubles' exact values). A rotating question this release cannot
 // decide exactly (a named degenerate case) throws Input_error with
 // exit_invalid at that place, its message beginning "object \"NAME\": not
 // decided: "; too large a polynomial system, Input_error with exit_limit.
@@ -513,8 +513,14 @@ struct Compare_options {
 // A witness or an earliest contact as a subject gave it.
 struct Located {
   std::array<std::string, 2> objects;
-  std::optional<Point4> point;       // none when the subject gives no point
-  std::optional<Rational> t;         // earliest only
+  std::optional<Point4> point;       // none when the subject gives no point (or, below, an irrational one)
+  std::optional<Rational> t;         // earliest only, when rational
+  // The numbers as the comparer writes them, always present: a rational,
+  // a double's decimal, or, where a turning scene's exact answer is
+  // irrational, "root of [...] in (lo, hi) ~ approx" (point and t are then
+  // none: never a rounded stand-in).
+  std::array<std::string, 4> point_text;
+  std::string t_text;
 };
 
 // One subject's answer held against exact.

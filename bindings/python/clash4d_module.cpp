@@ -502,6 +502,8 @@ py::object located(const std::optional<c4::Located>& l)
   d["objects"] = py::make_tuple(l->objects[0], l->objects[1]);
   d["point"] = l->point ? py::object(point(*l->point)) : py::none();
   if (l->t) d["t"] = fraction(*l->t);
+  // The comparer's text: also where a turning scene's exact t* is irrational.
+  if (!l->t_text.empty()) d["t_text"] = l->t_text;
   return d;
 }
 

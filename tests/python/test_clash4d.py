@@ -749,13 +749,25 @@ class Rotation(unittest.TestCase):
         self.assertEqual(clash4d.check(s, earliest=True, motions=[posed["objects"][0]["motion"], "vel -1 0 0"]),
                          clash4d.check(robmod, earliest=True))
 
-    def test_double_is_refused(self):
-        with self.assertRaises(clash4d.InputError) as c:
-            clash4d.check(SQUARE_INTO_SLAB, number="double")
-        e = c.exception
-        self.assertEqual((e.exit_code, e.place), (clash4d.EXIT_INVALID, "objects[0].motion"))
-        self.assertIn('object "square"', e.message)
-        self.assertIn("rotation", e.message)
+    def test_compare_on_a_turning_scene(self):
+        # Every own subject answers; the exact t* is irrational, so it comes
+        # as text only (t_text), never as a rounded Fraction.
+        c = clash4d.compare(SQUARE_INTO_SLAB, earliest=True)
+        rows = {r["subject"]: r for r in c["subjects"]}
+        exact = rows["exact"]["earliest"]
+        self.assertNotIn("t", exact)
+        self.assertTrue(exact["t_text"].startswith("root of [1, -10, 11]"))
+        self.assertTrue(rows["double"]["collide"])
+        self.assertLess(abs(float(rows["double"]["earliest"]["t"]) - 0.11439478302055078), 1e-12)
+
+    def test_double_is_the_float_subject(self):
+        # The same time slices in doubles: t* is a double's exact value,
+        # near the hand-derived (5 - sqrt 14) / 11.
+        r = clash4d.check(SQUARE_INTO_SLAB, number="double", earliest=True)
+        self.assertTrue(r["collide"])
+        t = r["earliest"]["t"]
+        self.assertIsInstance(t, Fraction)
+        self.assertAlmostEqual(float(t), 0.11439478302055078, delta=1e-12)
 
     def test_max_seconds(self):
         with self.assertRaises(clash4d.InputError) as c:
