@@ -621,6 +621,9 @@ Command add_fuzz(CLI::App& app, std::ostream& out, std::ostream& err)
   cmd->add_flag("--ccd", a->ccd,
                 "a campaign of CCD queries (ccd/Ccd_families.h, every family) instead of scenes; findings are also "
                 "written in the benchmark's CSV (docs/ccd-queries.md)");
+  cmd->add_flag("--rotation", a->fuzz.rotation,
+                "a campaign of turning parts (compare/Rotation_families.h: corners and edges reaching faces at rational "
+                "and irrational instants, doors, pockets, flush faces) instead of the contact families");
   cmd->add_flag("--earliest", a->earliest, "--ccd: also compare t* (a disagreement of cause time beyond --time-bound)");
   cmd->add_option("--time-bound", a->ccd_args.time_bound,
                   "--ccd --earliest: the largest |t - t*| that is no disagreement (default 1e-9)")
@@ -635,6 +638,10 @@ Command add_fuzz(CLI::App& app, std::ostream& out, std::ostream& err)
     fuzz.compare.semantics = *semantics_from_name(a->semantics);
     if (!apply_subject_args(a->subjects, fuzz.compare, "fuzz", err)) return CLASH4D_EXIT_INVALID;
     fuzz.progress = isatty(fileno(stderr)) != 0 ? Campaign_options::Progress::terminal : Campaign_options::Progress::log;
+    if (a->ccd && fuzz.rotation) {
+      err << "clash4d fuzz: --ccd and --rotation are two kinds of campaign: choose one\n";
+      return CLASH4D_EXIT_INVALID;
+    }
     if (a->ccd) return ccd_fuzz(*a, *cmd, out, err);
     if (a->earliest || cmd->count("--time-bound")) {
       err << "clash4d fuzz: --earliest and --time-bound are for --ccd campaigns\n";

@@ -1,4 +1,5 @@
 #include "compare/Fuzz_campaign.h"
+#include "compare/Rotation_families.h"
 #include "compare/Contact_families.h"
 #include "compare/External_subject.h"
 #include "compare/Shrinker.h"
@@ -35,6 +36,7 @@ json campaign_json(const Fuzz_options& o)
   if (o.compare.semantics == Semantics::closed) c["semantics"] = "closed";
   if (o.compare.bullet) c["bullet"] = true;
   if (!o.compare.externals.empty()) c["subjects"] = subjects_json(o.compare.externals);
+  if (o.rotation) c["families"] = "rotation";   // only when on, as fcl
   return c;
 }
 
@@ -45,7 +47,7 @@ void prepare(const Campaign_options& o, const json& want)
   std::string path = (fs::path(o.out) / "campaign.json").string();
   if (fs::exists(path)) {
     if (read_json_document(path) != want)
-      throw std::runtime_error(path + ": this folder holds another campaign (seed, cases, tolerances, --semantics, --fcl, --ccd or --subject differ)");
+      throw std::runtime_error(path + ": this folder holds another campaign (seed, cases, tolerances, --semantics, --fcl, --ccd, --rotation or --subject differ)");
   } else {
     write_file_atomically(path, want.dump(2) + "\n");
   }
@@ -119,7 +121,7 @@ Scene shrink(const Fuzz_options& o, const Scene& scene, const Disagreement& firs
 // Compares one case; on disagreement saves it, shrinks it, saves the minimum.
 bool run_case(const Fuzz_options& o, std::uint64_t index)
 {
-  Fuzz_case c = make_fuzz_case(o.seed, index);
+  Fuzz_case c = o.rotation ? make_rotation_case(o.seed, index).scene : make_fuzz_case(o.seed, index);
   Scene scene = read_scene(read_json_text(c.json));
   std::string name = "case-" + std::to_string(index);
   Comparison comparison = compare_scene(scene, name, o.compare);

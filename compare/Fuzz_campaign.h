@@ -49,6 +49,9 @@ struct Campaign_options {
 
 struct Fuzz_options : Campaign_options {
   Compare_options compare;
+  // The families: the contact families (Contact_families.h), or with
+  // `rotation` the turning parts' (Rotation_families.h).
+  bool rotation = false;
 };
 
 struct Fuzz_summary {

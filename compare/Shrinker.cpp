@@ -1,4 +1,5 @@
 #include "compare/Shrinker.h"
+#include "scene/Pose_motion.h"
 #include "numbers/Rational.h"
 #include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
@@ -43,6 +44,33 @@ std::vector<Rational*> numbers(Scene& s)
       for (auto& q : v) out.push_back(&q);
   }
   return out;
+}
+
+// A turning object's numbers: its poses' (t, translate, rotate), in order.
+std::vector<Rational*> pose_numbers(Motion& m)
+{
+  std::vector<Rational*> out;
+  for (Pose& p : m.poses) {
+    out.push_back(&p.t);
+    for (auto& c : p.translate) out.push_back(&c);
+    for (auto& c : p.rotate) out.push_back(&c);
+  }
+  return out;
+}
+
+// Adds the scene with object k moving by m: through set_motion, which
+// keeps the shape as the pose motion needs it (at c(0) when m no longer
+// turns, scene/Pose_motion.h); poses it refuses (equal times, a zero
+// quaternion) are no candidate.
+void add_with_motion(std::vector<Scene>& out, const Scene& s, std::size_t k, Motion m)
+{
+  Scene c = s;
+  try {
+    set_motion(c.objects[k], std::move(m));
+  } catch (const std::exception&) {
+    return;
+  }
+  out.push_back(std::move(c));
 }
 
 // A copy of s with node m (in the order of solids()) changed by `edit`.
@@ -133,6 +161,12 @@ std::vector<Scene> shorten_motions(const Scene& s)
         Motion c = m;
         c.velocities[i] = rest.velocities[0];
         with(c);
+      }
+    if (m.rotates() && m.poses.size() > 1)   // a turning motion with one pose fewer
+      for (std::size_t i = 0; i < m.poses.size(); ++i) {
+        Motion c = m;
+        c.poses.erase(c.poses.begin() + static_cast<long>(i));
+        add_with_motion(out, s, k, std::move(c));
       }
   }
   return out;
@@ -235,6 +269,17 @@ std::vector<Scene> simplify_numbers(const Scene& s)
       *numbers(c)[j] = r;
       out.push_back(std::move(c));
     }
+  for (std::size_t k = 0; k < s.objects.size(); ++k) {
+    if (!s.objects[k].motion.rotates()) continue;
+    Motion m = s.objects[k].motion;
+    std::vector<Rational*> pose_slots = pose_numbers(m);
+    for (std::size_t j = 0; j < pose_slots.size(); ++j)
+      for (const Rational& r : simpler_values(*pose_slots[j])) {
+        Motion c = s.objects[k].motion;
+        *pose_numbers(c)[j] = r;
+        add_with_motion(out, s, k, std::move(c));
+      }
+  }
   return out;
 }
 
