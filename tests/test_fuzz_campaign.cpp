@@ -2,7 +2,11 @@
 #include <boost/test/unit_test.hpp>
 
 #include "cli/Commands.h"
+#include "compare/Comparer.h"
 #include "compare/Fuzz_campaign.h"
+#include "scene/Files.h"
+#include "scene/Scene_reader.h"
+#include <algorithm>
 #include "search/Work_budget.h"
 #include <fcntl.h>
 #include <filesystem>
@@ -110,6 +114,38 @@ BOOST_AUTO_TEST_CASE(a_folder_holds_one_campaign)
   Fuzz_options other = campaign(dir);
   other.seed = 1;
   BOOST_CHECK_THROW(run_fuzz(other, err), std::runtime_error);
+}
+
+// A campaign of turning parts (--rotation): its folder is its own (a
+// contact campaign with the same seed is another campaign), its findings
+// are scenes that turn, and each shrunk finding still shows the
+// disagreement it was shrunk for.
+BOOST_AUTO_TEST_CASE(a_rotation_campaign_finds_and_shrinks_turning_scenes)
+{
+  std::ostringstream err;
+  fs::path dir = fresh("rotation");
+  Fuzz_options o = campaign(dir);
+  o.rotation = true;
+  o.cases = 12;
+  Fuzz_summary s = run_fuzz(o, err);
+  BOOST_TEST(s.done == 12u);
+  Fuzz_options contact = campaign(dir);
+  contact.cases = 12;
+  BOOST_CHECK_THROW(run_fuzz(contact, err), std::runtime_error);
+  int shrunk = 0;
+  for (const auto& f : fs::directory_iterator(dir / "findings")) {
+    std::string name = f.path().filename().string();
+    if (name.find(".min.json") == std::string::npos) continue;
+    Scene small = read_scene_file(f.path().string());
+    nlohmann::ordered_json meta = read_json_document(f.path().string())["meta"];
+    std::string key = meta["disagreement"]["subject"].get<std::string>() + ": " + meta["disagreement"]["cause"].get<std::string>();
+    std::vector<std::string> keys = compare_scene(small, name, o.compare).disagreement_keys();
+    BOOST_TEST((std::find(keys.begin(), keys.end(), key) != keys.end()), name << " no longer shows " << key);
+    BOOST_TEST(meta["family"].get<std::string>().rfind("rotation_", 0) == 0);
+    ++shrunk;
+  }
+  BOOST_TEST_MESSAGE(shrunk << " shrunk findings in 12 rotation cases");
+  BOOST_TEST(shrunk == static_cast<int>(s.findings));
 }
 
 // Issue 59 item 17: a second run of the same shard in the same folder,
