@@ -10,7 +10,9 @@
 // turns, and keeps each one's least time (bench/Timing.h, time_in_turns):
 // for before-and-after comparisons on a shared machine.
 // --earliest times `check --earliest` (t* and the contact point) everywhere.
-// --family paper|contact|grid|random|fuzz runs one family only; fuzz is the
+// --family paper|contact|rotation|grid|random|fuzz|rotation-fuzz runs one
+// family only (rotation: fixtures/rotation and the first K cases of `clash4d
+// fuzz --rotation`, timed through the time slices); fuzz is the
 // first K cases (default 40) of `clash4d fuzz --seed N`'s contact families
 // (compare/Contact_families.h: rotations, pockets, nested CSG, decimal
 // values), the nearest public stand-in for a set of user contact scenes
@@ -24,6 +26,8 @@
 #include "bench/Option_number.h"
 #include "bench/Timing.h"
 #include "compare/Contact_families.h"
+#include "compare/Rotation_families.h"
+#include "rotation/Rotating_check.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
 #include "scene/Files.h"
@@ -63,13 +67,27 @@ struct Means {
 // How double's answer compares with exact's: a verdict that differs, or
 // the same "collide" with a witness that fails the check against the scene
 // (the ratio then compares exact with a wrong answer either way).
+// The verdict and whether every witness verified, in a number: the 4D
+// pipeline, or the time slices on a scene where something turns.
+std::pair<bool, bool> answer(const Scene& scene, const std::string& number, const Check_options& opts)
+{
+  bool verified = true;
+  if (scene_rotates(scene)) {
+    Rotating_check_answer a = check_rotating(scene, opts, number);
+    for (const auto& p : a.pairs) verified = verified && p.answer.witness_verified;
+    return {a.collide, verified};
+  }
+  Check_answer a = number == "exact" ? check_exact(scene, opts) : number == "rational" ? check_rational(scene, opts)
+                                                                                       : check_double(scene, 0, opts);
+  for (const Pair_answer& p : a.pairs) verified = verified && p.witness_verified;
+  return {a.collide, verified};
+}
+
 const char* double_note(const Scene& scene, const Check_options& opts, bool exact_collides)
 {
-  Check_answer d = check_double(scene, 0, opts);
-  if (d.collide != exact_collides) return " (double differs)";
-  for (const Pair_answer& p : d.pairs)
-    if (!p.witness_verified) return " (double unverified)";
-  return "";
+  auto [collide, verified] = answer(scene, "double", opts);
+  if (collide != exact_collides) return " (double differs)";
+  return verified ? "" : " (double unverified)";
 }
 
 void row(const std::string& name, const Scene& scene, double min_seconds, Means& means,
@@ -79,9 +97,9 @@ void row(const std::string& name, const Scene& scene, double min_seconds, Means&
   Check_options closed = opts;
   closed.semantics = Semantics::closed;
   auto [e, r, d, ce, cd] = time_in_turns(
-      repeat_count, min_seconds, [&] { return check_exact(scene, opts).collide; },
-      [&] { return check_rational(scene, opts).collide; }, [&] { return check_double(scene, 0, opts).collide; },
-      [&] { return check_exact(scene, closed).collide; }, [&] { return check_double(scene, 0, closed).collide; });
+      repeat_count, min_seconds, [&] { return answer(scene, "exact", opts).first; },
+      [&] { return answer(scene, "rational", opts).first; }, [&] { return answer(scene, "double", opts).first; },
+      [&] { return answer(scene, "exact", closed).first; }, [&] { return answer(scene, "double", closed).first; });
   double ratio = e.seconds_per_query / d.seconds_per_query, rational_ratio = r.seconds_per_query / d.seconds_per_query;
   double closed_ratio = ce.seconds_per_query / cd.seconds_per_query;
   means.log_exact += std::log(ratio);
@@ -117,7 +135,8 @@ int run_bench(int argc, char** argv)
       std::printf("usage: clash4d_bench [--seed N] [--random M] [--fuzz K] [--min-seconds S] [--family F] [--earliest]\n"
                   "                     [--scene FILE] [--dump-random DIR] [--repeat R]\n"
                   "  times check per query, exact (filtered), rational and double, in both semantics;\n"
-                  "  families: paper, contact, grid, fuzz (clash4d fuzz's contact families), random;\n"
+                  "  families: paper, contact, rotation (fixtures/rotation), grid, fuzz (clash4d fuzz's contact\n"
+                  "  families), rotation-fuzz (clash4d fuzz --rotation's families), random;\n"
                   "  --repeat R times each scene's columns R times in turn, keeping each one's least time\n");
       return 0;
     }
@@ -146,8 +165,9 @@ int run_bench(int argc, char** argv)
   if (!(min_seconds > 0)) throw std::runtime_error("--min-seconds must be positive");
   if (random_count < 0 || fuzz_count < 0) throw std::runtime_error("--random and --fuzz must not be negative");
   if (repeat_count < 1) throw std::runtime_error("--repeat must be at least 1");
-  if (!only.empty() && only != "paper" && only != "contact" && only != "grid" && only != "fuzz" && only != "random")
-    throw std::runtime_error("--family " + only + ": not paper, contact, grid, fuzz or random");
+  if (!only.empty() && only != "paper" && only != "contact" && only != "rotation" && only != "grid" && only != "fuzz" &&
+      only != "rotation-fuzz" && only != "random")
+    throw std::runtime_error("--family " + only + ": not paper, contact, rotation, grid, fuzz, rotation-fuzz or random");
   if (!dump_dir.empty() && !std::filesystem::is_directory(dump_dir))
     throw std::runtime_error("--dump-random " + dump_dir + ": not a directory");
   if (!scene_file.empty()) {
@@ -159,7 +179,7 @@ int run_bench(int argc, char** argv)
   }
   print_header();
   auto wanted = [&](const std::string& family) { return only.empty() || only == family; };
-  for (const char* family : {"paper", "contact"}) {
+  for (const char* family : {"paper", "contact", "rotation"}) {
     if (!wanted(family)) continue;
     Means means;
     for (const auto& f : fixture_files(family)) row(std::string(family) + "/" + f.filename().string(), read_bench_scene(f.string()), min_seconds, means);
@@ -186,6 +206,16 @@ int run_bench(int argc, char** argv)
       row("fuzz #" + std::to_string(i) + " " + c.family, read_scene(read_json_text(c.json)), min_seconds, means);
     }
     if (means.count > 0) means.print("fuzz");
+  }
+  if (wanted("rotation-fuzz")) {
+    Means means;
+    std::printf("rotation families (clash4d fuzz --rotation), seed %lu\n", seed);
+    for (int i = 0; i < fuzz_count; ++i) {
+      Rotation_case c = make_rotation_case(seed, static_cast<std::uint64_t>(i));
+      if (!dump_dir.empty()) write_file_atomically(dump_dir + "/rotation-" + std::to_string(i) + ".json", c.scene.json + "\n");
+      row("rotation #" + std::to_string(i) + " " + c.scene.family, read_scene(read_json_text(c.scene.json)), min_seconds, means);
+    }
+    if (means.count > 0) means.print("rotation-fuzz");
   }
   if (!wanted("random")) return 0;
   std::mt19937_64 rng(seed);

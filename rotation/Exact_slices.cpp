@@ -4,6 +4,8 @@
 #include "rotation/Rotating_pair.h"
 #include "rotation/Simplest_rational.h"
 
+#include <CGAL/Interval_nt.h>
+
 namespace clash4d {
 
 namespace {
@@ -87,18 +89,73 @@ std::optional<std::array<Algebraic, 3>> limit_at(std::array<Time_poly, 3> num, T
   return point_at(num, den, t);
 }
 
-// Whether the point x(r) = num / den lies in the closed object: in some
-// convex piece of it (a union of bounded convex pieces), all rows <= 0.
-bool in_closed_pieces(const std::vector<Moving_plane>& rows, std::size_t offset, const Shape_planes& shape,
-                      const std::array<Time_poly, 3>& num, const Time_poly& den, CGAL::Sign den_sign, const Algebraic& r)
+// The side of each row at the point x(r) = num(r) / den(r), r irrational,
+// asked row by row (one predicate, filtered): 0 for the rows the point is
+// made on (and the vanishing minor's fourth, through the same point); else
+// the sign of an interval evaluation at r's isolating interval when it is
+// sure; else the exact sign in Q(r).
+class Point_signs {
+public:
+  using I = CGAL::Interval_nt<false>;
+
+  Point_signs(const std::vector<Moving_plane>& rows, const std::array<Time_poly, 3>& num, const Time_poly& den,
+              CGAL::Sign den_sign, const Algebraic& r, const std::vector<int>& on_rows)
+    : rows_(rows), num_(num), den_(den), den_sign_(den_sign), r_(r), side_(rows.size(), unknown)
+  {
+    for (int i : on_rows) side_[i] = 0;
+    r.narrow_in_doubles();
+    CGAL::Protect_FPU_rounding<true> upward;
+    t_ = r.to_interval();
+    I d = at(den);
+    enclosed_ = d.inf() > 0 || d.sup() < 0;
+    if (enclosed_)
+      for (int c = 0; c < 3; ++c) x_[c] = at(num[c]) / d;
+  }
+
+  int operator()(std::size_t row)
+  {
+    if (side_[row] != unknown) return side_[row];
+    const Moving_plane& h = rows_[row];
+    if (enclosed_) {
+      CGAL::Protect_FPU_rounding<true> upward;
+      I v = at(h[0]) * x_[0] + at(h[1]) * x_[1] + at(h[2]) * x_[2] + at(h[3]);
+      if (v.inf() > 0) return side_[row] = 1;
+      if (v.sup() < 0) return side_[row] = -1;
+    }
+    // h(x(t), t) den(t) = n . num + e den.
+    Time_poly v = h[0] * num_[0] + h[1] * num_[1] + h[2] * num_[2] + h[3] * den_;
+    return side_[row] = sign_at(v, r_) * den_sign_;
+  }
+
+private:
+  static constexpr int unknown = 2;
+  I at(const Time_poly& p) const
+  {
+    I v(0);
+    for (int i = p.size() - 1; i >= 0; --i) v = v * t_ + I(CGAL::to_interval(p[i]));
+    return v;
+  }
+
+  const std::vector<Moving_plane>& rows_;
+  const std::array<Time_poly, 3>& num_;
+  const Time_poly& den_;
+  CGAL::Sign den_sign_;
+  const Algebraic& r_;
+  std::vector<int> side_;
+  I t_;
+  bool enclosed_ = false;
+  std::array<I, 3> x_;
+};
+
+// Whether the point lies in the closed object whose planes are rows[offset
+// ...]: in some convex piece of it (a union of bounded convex pieces), all
+// rows <= 0.
+bool in_closed_pieces(std::size_t offset, const Shape_planes& shape, Point_signs& side)
 {
   for (const auto& piece : shape.convex_pieces) {
     bool inside = true;
     for (auto [plane, orientation] : piece) {
-      const Moving_plane& h = rows[offset + plane];
-      // h(x(t), t) den(t) = n . num + e den.
-      Time_poly v = h[0] * num[0] + h[1] * num[1] + h[2] * num[2] + h[3] * den;
-      inside = orientation * sign_at(v, r) * den_sign <= 0;
+      inside = orientation * side(offset + plane) <= 0;
       if (!inside) break;
     }
     if (inside) return true;
@@ -106,18 +163,17 @@ bool in_closed_pieces(const std::vector<Moving_plane>& rows, std::size_t offset,
   return false;
 }
 
-// Whether x(r) = num / den is in the closed regular set of a CSG shape
-// whose planes are rows[offset ...]: some open cell next to the point is
-// inside. The planes through the point must be at most three and
-// independent there, so that every choice of their sides is a cell.
+// Whether the point is in the closed regular set of a CSG shape whose
+// planes are rows[offset ...]: some open cell next to the point is inside.
+// The planes through the point must be at most three and independent
+// there, so that every choice of their sides is a cell.
 bool in_closed_cells(const std::vector<Moving_plane>& rows, std::size_t offset, const Rotating_object& o,
-                     const std::array<Time_poly, 3>& num, const Time_poly& den, CGAL::Sign den_sign, const Algebraic& r)
+                     Point_signs& signs, const Algebraic& r)
 {
   std::size_t m = o.shape.planes.size();
   std::vector<int> side(m), zero;
   for (std::size_t p = 0; p < m; ++p) {
-    const Moving_plane& h = rows[offset + p];
-    side[p] = sign_at(h[0] * num[0] + h[1] * num[1] + h[2] * num[2] + h[3] * den, r) * den_sign;
+    side[p] = signs(offset + p);
     if (side[p] == 0) zero.push_back(static_cast<int>(p));
   }
   bool independent = zero.size() < 2;
@@ -140,10 +196,10 @@ bool in_closed_cells(const std::vector<Moving_plane>& rows, std::size_t offset, 
 }
 
 bool in_closed_object(const std::vector<Moving_plane>& rows, std::size_t offset, const Rotating_object& o,
-                      const std::array<Time_poly, 3>& num, const Time_poly& den, CGAL::Sign den_sign, const Algebraic& r)
+                      Point_signs& signs, const Algebraic& r)
 {
-  if (!o.shape.convex_pieces.empty()) return in_closed_pieces(rows, offset, o.shape, num, den, den_sign, r);
-  return in_closed_cells(rows, offset, o, num, den, den_sign, r);
+  if (!o.shape.convex_pieces.empty()) return in_closed_pieces(offset, o.shape, signs);
+  return in_closed_cells(rows, offset, o, signs, r);
 }
 
 // The closed question at an irrational critical time r (fact 12): closed
@@ -168,7 +224,8 @@ std::optional<std::array<Algebraic, 3>> common_point_at(const std::vector<Moving
       CGAL::Sign ds = sign_at(den, c.t);
       if (ds == CGAL::ZERO) continue;
       auto num = cramer_numerators(rows[t[0]], rows[t[1]], rows[t[2]]);
-      if (in_closed_object(rows, 0, a, num, den, ds, c.t) && in_closed_object(rows, offset, b, num, den, ds, c.t))
+      Point_signs signs(rows, num, den, ds, c.t, ids);
+      if (in_closed_object(rows, 0, a, signs, c.t) && in_closed_object(rows, offset, b, signs, c.t))
         return point_at(num, den, c.t);
     }
   }
