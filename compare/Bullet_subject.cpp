@@ -1,5 +1,6 @@
 #include "compare/Bullet_subject.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #ifdef CLASH4D_HAVE_BULLET
@@ -42,13 +43,15 @@ Bullet_subject::Bullet_subject(const Scene& scene) : impl_(std::make_unique<Impl
 std::optional<double> Bullet_subject::time_of_contact(int i, int j) const
 {
   const Convex_motion::Object &a = impl_->scene.objects[i], &b = impl_->scene.objects[j];
-  auto placed = [](const std::array<double, 3>& t) {
+  auto placed = [](const std::array<double, 3>& t, const std::array<double, 4>& q) {
     btTransform tf;
     tf.setIdentity();
+    tf.setRotation(btQuaternion(q[1], q[2], q[3], q[0]));   // Bullet's order: x, y, z, w
     tf.setOrigin(btVector3(t[0], t[1], t[2]));
     return tf;
   };
-  btTransform a0 = placed(a.begin), a1 = placed(a.end), b0 = placed(b.begin), b1 = placed(b.end);
+  btTransform a0 = placed(a.begin, a.begin_q), a1 = placed(a.end, a.end_q), b0 = placed(b.begin, b.begin_q),
+              b1 = placed(b.end, b.end_q);
   std::optional<double> first;
   for (const auto& p : impl_->pieces[i])
     for (const auto& q : impl_->pieces[j]) {
@@ -60,6 +63,13 @@ std::optional<double> Bullet_subject::time_of_contact(int i, int j) const
         first = static_cast<double>(result.m_fraction);
     }
   return first;
+}
+
+std::string Bullet_subject::motion_law() const
+{
+  // btTransformUtil::integrateTransform clamps a step's turn to a quarter
+  // of pi (ANGULAR_MOTION_THRESHOLD).
+  return impl_ ? impl_->scene.law_differs(std::atan(1.0)) : "";
 }
 
 Check_answer Bullet_subject::check(const Check_options& options) const
@@ -83,6 +93,7 @@ Bullet_subject::Bullet_subject(const Scene&)
 }
 
 std::optional<double> Bullet_subject::time_of_contact(int, int) const { throw std::logic_error(reason_); }
+std::string Bullet_subject::motion_law() const { return ""; }
 Check_answer Bullet_subject::check(const Check_options&) const { throw std::logic_error(reason_); }
 
 #endif

@@ -32,6 +32,9 @@ public:
 
   // Whether clash4d was built with Bullet (CMake option CLASH4D_WITH_BULLET).
   static bool built_in();
+  // Where Bullet's motions are not the scene's (as Fcl_subject::motion_law;
+  // Bullet also clamps a step's turn to pi/4): why, or "".
+  std::string motion_law() const;
   // The distance below which its cast reports a hit.
   static constexpr double tolerance = 1e-4;
 

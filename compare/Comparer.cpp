@@ -36,6 +36,9 @@ struct Run : Subject_run {
   // A turning scene's exact t* of the reported pair (it may be irrational,
   // written as text in answer): the t errors are measured against it.
   std::optional<Algebraic> t_star;
+  // A library whose motions are not the scene's (regularised-semantics fact
+  // 13): why; its verdicts then differ by the motion law, not arithmetic.
+  std::string motion_law;
 };
 
 // What the toolkit's own subjects give (Own_checks below).
@@ -174,22 +177,18 @@ std::optional<std::array<std::string, 4>> point_of(const std::array<std::string,
 template <class Library>
 Run library_run(const char* name, const Scene& scene, const Check_options& co)
 {
-  if (scene_rotates(scene)) {   // the libraries' own rotations are not driven from poses yet
-    Run r;
-    r.subject = name;
-    r.skipped = "a turning object: " + std::string(name) + "'s motions are not made from poses yet (translations only)";
-    return r;
-  }
-  std::string reason;
+  std::string reason, law;
   Run r = timed(name, false, [&] {
     Library library(scene);
     if (!library.expressible()) {
       reason = library.reason();
       return Check_answer();
     }
+    law = library.motion_law();
     return library.check(co);
   });
   r.skipped = reason;
+  r.motion_law = law;
   return r;
 }
 
@@ -312,6 +311,10 @@ std::string classify(const Run& r, const Subject_row& s, Reference& ref, std::st
   if (r.answer.collide != exact.answer.collide) {
     detail = r.subject + " (" + r.semantics + ") says " + (r.answer.collide ? "collision" : "no collision") +
              ", exact " + r.semantics + " says " + (exact.answer.collide ? "collision" : "no collision");
+    if (!r.motion_law.empty()) {
+      detail += " (" + r.motion_law + ")";
+      return "motion law";
+    }
     if (&r == ref.rounded || (r.reads_doubles && ref.rounding_changes(r.semantics))) return "input rounding";
     return ref.touching_only() ? "contact" : "arithmetic";
   }

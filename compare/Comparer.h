@@ -32,6 +32,11 @@
 //                    says no collision and exact closed says the closed
 //                    objects meet (regularised-semantics item 6), so the
 //                    verdict hinges on what touching means;
+//   motion law       a library (fcl, bullet) whose motion passes through
+//                    other configurations than the scene's poses (it turns
+//                    at constant angular velocity about a fixed axis:
+//                    regularised-semantics fact 13), so its verdict answers
+//                    another question;
 //   arithmetic       otherwise: the subject's own rounding or tolerance;
 //   invalid witness  verdicts agree but the subject's witness does not hold
 //                    in the true scene (checked exactly: strictly inside both

@@ -2,6 +2,7 @@
 #include "compare/Comparer.h"
 #include "model/Model_builder.h"
 #include "model/Motion_path.h"
+#include "rotation/Pose_segments.h"
 #include "exact/Rational_kernel.h"
 #include "float/Double_kernel.h"
 #include "scene/Input_error.h"
@@ -85,6 +86,11 @@ std::string inexpressible(const Scene& scene, const std::string& engine)
       if (scene.t_lo < t && t < scene.t_hi)
         return object + "changes velocity at t = " + to_string(t) + ", inside the span (" + engine +
                "'s translation motion has one constant velocity)";
+    if (o.motion.rotates())
+      for (const Pose& p : o.motion.poses)
+        if (scene.t_lo < p.t && p.t < scene.t_hi)
+          return object + "has a pose at t = " + to_string(p.t) + ", inside the span (" + engine +
+                 "'s motion turns at one constant angular velocity over the span)";
     if (auto problem = cannot_take(o.shape))
       return object + (problem->path == o.shape.path ? "is " + problem->what
                                                     : "contains " + problem->what + " at " + problem->path);
@@ -92,7 +98,102 @@ std::string inexpressible(const Scene& scene, const std::string& engine)
   return "";
 }
 
+// q / |q| in doubles (the libraries take unit quaternions).
+std::array<double, 4> unit(const std::array<Rational, 4>& q)
+{
+  std::array<double, 4> d;
+  double n = 0;
+  for (int i = 0; i < 4; ++i) {
+    d[i] = round_to_nearest(q[i]);
+    n += d[i] * d[i];
+  }
+  n = std::sqrt(n);
+  for (double& x : d) x /= n;
+  return d;
+}
+
+// A turning object's placements at tL and tH (its origin c into d0, d1) and
+// orientations, from its one pose segment over the span (exact, then
+// rounded); r = conj(q_L) q_H / |q_L|^2, the pose's turn relative to q_L.
+void place_turning(Convex_motion::Object& fo, const Motion& m, const Rational& lo, const Rational& hi,
+                   Vector3<Rational>& d0, Vector3<Rational>& d1)
+{
+  std::vector<Pose_segment> segments = pose_segments(m);
+  const Pose_segment& a = segment_at(segments, lo);
+  const Pose_segment& b = segment_at(segments, hi);
+  std::array<Rational, 4> qa, qb;
+  for (int i = 0; i < 4; ++i) {
+    qa[i] = a.q[i].at(lo);
+    qb[i] = b.q[i].at(hi);
+  }
+  for (int i = 0; i < 3; ++i) {
+    d0[i] = a.c[i].at(lo);
+    d1[i] = b.c[i].at(hi);
+  }
+  fo.begin_q = unit(qa);
+  fo.end_q = unit(qb);
+  Rational n = qa[0] * qa[0] + qa[1] * qa[1] + qa[2] * qa[2] + qa[3] * qa[3];
+  // conj(qa) qb (Hamilton product), divided by |qa|^2.
+  std::array<Rational, 4> r = {qa[0] * qb[0] + qa[1] * qb[1] + qa[2] * qb[2] + qa[3] * qb[3],
+                               qa[0] * qb[1] - qa[1] * qb[0] - qa[2] * qb[3] + qa[3] * qb[2],
+                               qa[0] * qb[2] + qa[1] * qb[3] - qa[2] * qb[0] - qa[3] * qb[1],
+                               qa[0] * qb[3] - qa[1] * qb[2] + qa[2] * qb[1] - qa[3] * qb[0]};
+  for (int i = 0; i < 4; ++i) fo.relative[i] = round_to_nearest(r[i] / n);
+  fo.turns = CGAL::sign(r[1]) != CGAL::ZERO || CGAL::sign(r[2]) != CGAL::ZERO || CGAL::sign(r[3]) != CGAL::ZERO;
+  fo.longer_arc = fo.turns && CGAL::sign(r[0]) != CGAL::POSITIVE;
+}
+
+bool rests(const Convex_motion::Object& o) { return !o.turns && o.begin == o.end; }
+
+// The pose's s in [0, 1] at which it has turned by `angle` (radians) of
+// its turn r: the relative quaternion (1 - s) + s r has half-angle a where
+// tan a = s |r_v| / ((1 - s) + s r_w).
+double pose_fraction(const Convex_motion::Object& o, double angle)
+{
+  double rv = std::sqrt(o.relative[1] * o.relative[1] + o.relative[2] * o.relative[2] + o.relative[3] * o.relative[3]);
+  double a = angle / 2;
+  return std::sin(a) / (rv * std::cos(a) - (o.relative[0] - 1) * std::sin(a));
+}
+
+// The whole turn's angle, as the libraries take it (the shorter arc).
+double turn_angle(const Convex_motion::Object& o)
+{
+  double rv = std::sqrt(o.relative[1] * o.relative[1] + o.relative[2] * o.relative[2] + o.relative[3] * o.relative[3]);
+  return 2 * std::atan2(rv, std::fabs(o.relative[0]));
+}
+
 } // namespace
+
+std::string Convex_motion::law_differs(int i, int j, double max_angle) const
+{
+  const Object &a = objects[i], &b = objects[j];
+  if (!a.turns && !b.turns) return "";
+  const Object& turning = a.turns ? a : b;
+  const Object& other = a.turns ? b : a;
+  std::string pair = "'" + a.name + "' and '" + b.name + "': ";
+  if (other.turns) return pair + "both turn (the library turns each at its own constant angular velocity)";
+  if (!rests(other)) return pair + "'" + other.name + "' moves while '" + turning.name + "' turns";
+  if (turning.begin != turning.end)
+    return pair + "'" + turning.name + "' turns while its origin moves (the library's motion is a screw or a "
+                  "rotation about the moving centre at constant speeds, not the pose's)";
+  if (turning.longer_arc) return pair + "'" + turning.name + "' turns the longer way (the library takes the shorter arc)";
+  if (turn_angle(turning) > max_angle)
+    return pair + "'" + turning.name + "' turns by more than the library's step allows (it clamps the turn)";
+  return "";
+}
+
+std::string Convex_motion::law_differs(double max_angle) const
+{
+  int n = static_cast<int>(objects.size());
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      bool ignored = false;
+      for (const auto& p : ignore) ignored = ignored || (p.first == i && p.second == j) || (p.first == j && p.second == i);
+      if (ignored) continue;
+      if (std::string why = law_differs(i, j, max_angle); !why.empty()) return why;
+    }
+  return "";
+}
 
 std::string Convex_motion::convert(const Scene& scene, const std::string& engine)
 {
@@ -119,8 +220,14 @@ std::string Convex_motion::convert(const Scene& scene, const std::string& engine
       if (!piece) return "object '" + o.name + "' has a vertex coordinate beyond the range of doubles";
       fo.pieces.push_back(*piece);
     }
-    Motion_path<Rational> path = Motion_path<Rational>::build(k, o.motion);
-    Vector3<Rational> d0 = path.displacement(rounded.t_lo), d1 = path.displacement(rounded.t_hi);
+    Vector3<Rational> d0, d1;
+    if (o.motion.rotates()) {
+      place_turning(fo, o.motion, rounded.t_lo, rounded.t_hi, d0, d1);
+    } else {
+      Motion_path<Rational> path = Motion_path<Rational>::build(k, o.motion);
+      d0 = path.displacement(rounded.t_lo);
+      d1 = path.displacement(rounded.t_hi);
+    }
     for (int i = 0; i < 3; ++i) {
       fo.begin[i] = round_to_nearest(d0[i]);
       fo.end[i] = round_to_nearest(d1[i]);
@@ -152,7 +259,12 @@ Check_answer Convex_motion::answer(const Check_options& options, const std::stri
       p.a = objects[i].name;
       p.b = objects[j].name;
       if (options.earliest) {
-        double t = t_lo + *toc * (t_hi - t_lo);
+        // The change of time (fact 13) where the library's turn is the pose's.
+        double s = *toc;
+        const Object& turning = objects[i].turns ? objects[i] : objects[j];
+        if (turning.turns && law_differs(i, j, 4 * std::atan(1.0)).empty())
+          s = pose_fraction(turning, *toc * turn_angle(turning));
+        double t = t_lo + s * (t_hi - t_lo);
         p.earliest = true;
         p.t_star = Double_kernel().to_text(t);
         p.at_start = *toc <= 0;

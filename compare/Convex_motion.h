@@ -32,6 +32,16 @@ struct Convex_motion {
     std::string name;
     std::vector<Convex_polytope> pieces;
     std::array<double, 3> begin, end;   // translations at tL and tH
+    // A turning object (a pose motion that rotates, one pose segment over
+    // the span): its orientations at tL and tH as unit quaternions (w, x, y,
+    // z), the pieces in the shape's own frame; the libraries turn it at
+    // constant angular velocity along the shorter arc between them.
+    bool turns = false;
+    std::array<double, 4> begin_q{1, 0, 0, 0}, end_q{1, 0, 0, 0};
+    // The pose's q(s) = (1 - s) q_L + s q_H relative to q_L is (1 - s) + s r
+    // up to scale: the change of time from the libraries' angle to s.
+    std::array<double, 4> relative{1, 0, 0, 0};
+    bool longer_arc = false;   // q_L . q_H <= 0: the pose turns the longer way
   };
   double t_lo = 0, t_hi = 1;
   std::vector<Object> objects;
@@ -42,10 +52,21 @@ struct Convex_motion {
   // translation motion has one constant velocity)"); "" when converted.
   std::string convert(const Scene& scene, const std::string& engine);
 
+  // Whether the library's motion of objects i and j passes through the
+  // scene's configurations in the same order (regularised-semantics fact
+  // 13): nothing turns; or one rests and the other turns about a fixed point
+  // along the shorter arc, by at most max_angle radians in one step. When
+  // not, why (for the comparer's cause "motion law").
+  std::string law_differs(int i, int j, double max_angle) const;
+  // Any non-ignored pair's law_differs, or "".
+  std::string law_differs(double max_angle) const;
+
   // The answer in the comparer's form from each pair's time of contact in
   // [0, 1] (none: no contact): every non-ignored pair in pair order,
   // stopping at the first colliding one unless all_pairs or earliest; no
-  // points; with earliest, t* = tL + toc (tH - tL) as the shortest decimal.
+  // points; with earliest, t* = tL + s (tH - tL) as the shortest decimal,
+  // s = toc, or, for a turn about a fixed point, the pose's s at the angle
+  // the library reached (the change of time of fact 13).
   Check_answer answer(const Check_options& options, const std::string& number,
                       const std::function<std::optional<double>(int, int)>& time_of_contact) const;
 };

@@ -60,12 +60,14 @@ std::optional<double> Fcl_subject::time_of_contact(int i, int j) const
 {
   if (!impl_) throw std::logic_error("fcl subject: " + reason_);
   const Convex_motion::Object &a = impl_->scene.objects[i], &b = impl_->scene.objects[j];
-  auto placed = [](const std::array<double, 3>& t) {
+  auto placed = [](const std::array<double, 3>& t, const std::array<double, 4>& q) {
     fcl::Transform3d tf = fcl::Transform3d::Identity();
+    tf.linear() = fcl::Quaterniond(q[0], q[1], q[2], q[3]).toRotationMatrix();
     tf.translation() = fcl::Vector3d(t[0], t[1], t[2]);
     return tf;
   };
-  fcl::Transform3d a0 = placed(a.begin), a1 = placed(a.end), b0 = placed(b.begin), b1 = placed(b.end);
+  fcl::Transform3d a0 = placed(a.begin, a.begin_q), a1 = placed(a.end, a.end_q), b0 = placed(b.begin, b.begin_q),
+                   b1 = placed(b.end, b.end_q);
   // Conservative advancement is FCL's solver for convex shapes under a
   // motion (the naive one only samples, the polynomial one wants meshes).
   // Its distances come from FCL's own GJK/EPA (GST_INDEP), not the default
@@ -74,7 +76,10 @@ std::optional<double> Fcl_subject::time_of_contact(int i, int j) const
   // fixtures/contact/clear_collision_head_on.json: t* = 2.25 for 2, and
   // touch_only_at_tH_overlap_1e-9.json missed).
   fcl::ContinuousCollisionRequestd request;
-  request.ccd_motion_type = fcl::CCDM_TRANS;
+  // A turn: FCL's screw motion between the two placements (constant
+  // angular velocity about a fixed axis; its InterpMotion from two
+  // transforms computes no velocities).
+  request.ccd_motion_type = a.turns || b.turns ? fcl::CCDM_SCREW : fcl::CCDM_TRANS;
   request.gjk_solver_type = fcl::GST_INDEP;
   request.ccd_solver_type = fcl::CCDC_CONSERVATIVE_ADVANCEMENT;
   std::optional<double> first;
@@ -87,6 +92,11 @@ std::optional<double> Fcl_subject::time_of_contact(int i, int j) const
       if (first && *first <= 0) return first;
     }
   return first;
+}
+
+std::string Fcl_subject::motion_law() const
+{
+  return impl_ ? impl_->scene.law_differs(4 * std::atan(1.0)) : "";
 }
 
 Check_answer Fcl_subject::check(const Check_options& options) const
@@ -108,6 +118,7 @@ Fcl_subject::Fcl_subject(const Scene&)
 }
 
 std::optional<double> Fcl_subject::time_of_contact(int, int) const { throw std::logic_error(reason_); }
+std::string Fcl_subject::motion_law() const { return ""; }
 Check_answer Fcl_subject::check(const Check_options&) const { throw std::logic_error(reason_); }
 
 #endif

@@ -7,7 +7,9 @@
 // prism, hull, convex, possibly translated or rotated) or a union of such,
 // and every object moves with one constant velocity over the whole span
 // [tL, tH] (no velocity change strictly inside it): FCL's translation motion
-// interpolates one begin and one end placement. Other scenes (half-spaces,
+// interpolates one begin and one end placement. An object that turns
+// (a pose motion with one pose segment over the span) goes to FCL's screw
+// motion between its placements at tL and tH. Other scenes (half-spaces,
 // intersections, differences, piecewise motions) are skipped with a reason.
 //
 // What FCL is asked: conservative advancement (CCDC_CONSERVATIVE_ADVANCEMENT
@@ -50,6 +52,12 @@ public:
 
   bool expressible() const { return reason_.empty(); }
   const std::string& reason() const { return reason_; }
+
+  // Where FCL's motions are not the scene's (regularised-semantics fact
+  // 13: a turn at constant angular velocity about a fixed axis matches a
+  // pose only when the other object rests and this one turns about a fixed
+  // point the shorter way): why, for the first such pair; "" otherwise.
+  std::string motion_law() const;
 
   // FCL's time of contact of objects i and j in [0, 1] (0 at tL, 1 at tH),
   // or nothing when FCL finds no contact. Requires expressible().
