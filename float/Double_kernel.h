@@ -19,6 +19,9 @@ public:
   explicit Double_kernel(double tolerance = 0) : tolerance_(tolerance) {}
   static constexpr const char* name() { return "double"; }
   static constexpr bool reads_exact_constructions = false;   // float code computes its own (model/Model_builder.h)
+  // But a rotation is its exact matrix rounded entry by entry, as a scene
+  // number is: a face two rotations share stays one plane (geometry/Kernel_concept.h).
+  static constexpr bool reads_exact_rotations = true;
   static constexpr bool is_exact = false;
   double tolerance() const { return tolerance_; }
   CGAL::Sign sign(double x) const

@@ -48,6 +48,16 @@
 // Optional:
 //   k.to_rational(x)                exact kernels and double: the value as
 //                                   a rational (answers are printed from it)
+//   K::reads_exact_rotations        a rotate's matrix is the reader's exact
+//                                   one, each entry converted, even where K
+//                                   computes its other constructions: two
+//                                   rotations sharing an exact column then
+//                                   give their faces one plane, not a plane
+//                                   and its rounded twin, nearly dependent
+//                                   with it, whose lines of three planes
+//                                   (search/Generate_and_test.h) Cramer's
+//                                   rule puts anywhere (reads_exact_rotations_v;
+//                                   absent: reads_exact_constructions)
 //   typename K::Protector           RAII guard the kernel's arithmetic needs
 //                                   (the interval kernel's rounding mode)
 //   K::encloses_here()              a filtered runner's approximate kernel:
@@ -135,6 +145,19 @@ struct reads_approximations<
 // True when K has the optional from_approximation above.
 template <class K>
 inline constexpr bool reads_approximations_v = kernel_concept_detail::reads_approximations<K>::value;
+
+namespace kernel_concept_detail {
+template <class K, class = void>
+struct reads_exact_rotations : std::bool_constant<K::reads_exact_constructions> {};
+template <class K>
+struct reads_exact_rotations<K, std::void_t<decltype(bool{K::reads_exact_rotations})>>
+  : std::bool_constant<K::reads_exact_rotations> {};
+} // namespace kernel_concept_detail
+
+// K::reads_exact_rotations above, or K::reads_exact_constructions when K
+// does not say.
+template <class K>
+inline constexpr bool reads_exact_rotations_v = kernel_concept_detail::reads_exact_rotations<K>::value;
 
 // A scene number q in K: read from a, the reader's approximation, when K
 // reads those and a was made from q itself (Approximation::of; a may be

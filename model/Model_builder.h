@@ -139,6 +139,9 @@ private:
   // exact coefficient as tightly as a number of the file, and keeps its
   // exact zeros.
   bool exact_read(const Solid& s) const { return K::reads_exact_constructions && !s.constructed.empty(); }
+  // The same for a rotate's matrix (reads_exact_rotations_v: a kernel that
+  // computes its other constructions may still read it).
+  bool exact_rotation(const Solid& s) const { return reads_exact_rotations_v<K> && !s.constructed.empty(); }
   FT made(const Solid& s, std::size_t i) const { return converted(s.constructed, s.constructed_approximated, i); }
   Vector3<FT> constructed3(const Solid& s, std::size_t i) const { return {made(s, i), made(s, i + 1), made(s, i + 2)}; }
   Plane3<FT> constructed4(const Solid& s, std::size_t i) const
@@ -185,7 +188,7 @@ public:
       return peel(s.children[0], T);
     }
     if (s.kind == Solid::Kind::Rotate) {
-      T = T.then_local(exact_read(s) ? std::array<Vector3<FT>, 3>{constructed3(s, 0), constructed3(s, 3), constructed3(s, 6)}
+      T = T.then_local(exact_rotation(s) ? std::array<Vector3<FT>, 3>{constructed3(s, 0), constructed3(s, 3), constructed3(s, 6)}
                                      : rotation_matrix(num(s, 0), num(s, 1), num(s, 2), num(s, 3)),
                        {FT(0), FT(0), FT(0)});
       return peel(s.children[0], T);
