@@ -37,7 +37,8 @@ public:
   {
     return Critical_times(rows, first_count, lo, hi, low_rank).times();
   }
-  // A rational strictly between left < right.
+  // A rational strictly between left < right: the midpoint of rational
+  // ends, else the simplest rational between.
   std::optional<Rational> sample(const Algebraic& left, const Algebraic& right) const;
   // A point of the closure of the collision region at t*, the left end of
   // the interval whose sample s has the generic witness w (Rotating_pair.cpp).
