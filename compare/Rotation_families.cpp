@@ -1,5 +1,6 @@
 #include "compare/Rotation_families.h"
 
+#include "geometry/Rotation_matrix.h"
 #include "scene/Json_reader.h"
 #include "scene/Number_text.h"
 #include "scene/Random_draw.h"
@@ -234,11 +235,7 @@ Q number(const json& v) { return parse_number_text(v.get<std::string>(), true).v
 // multiplied by u > 0: every verdict stays, t* is multiplied by u.
 json finished(json scene, const Quat& g, const Vec& d, const Q& u)
 {
-  Q n = g[0] * g[0] + g[1] * g[1] + g[2] * g[2] + g[3] * g[3];
-  const Q &w = g[0], &x = g[1], &y = g[2], &z = g[3];
-  Q R[3][3] = {{w * w + x * x - y * y - z * z, 2 * (x * y - w * z), 2 * (x * z + w * y)},
-               {2 * (x * y + w * z), w * w - x * x + y * y - z * z, 2 * (y * z - w * x)},
-               {2 * (x * z - w * y), 2 * (y * z + w * x), w * w - x * x - y * y + z * z}};
+  auto R = rotation_matrix<Q>(g[0], g[1], g[2], g[3]);   // the scene format's R(g), exact
   for (auto& t : scene["time"]) t = text(number(t) * u);
   for (auto& o : scene["objects"]) {
     if (!o.contains("motion")) {   // at rest: the shape turned, then moved
@@ -249,7 +246,7 @@ json finished(json scene, const Quat& g, const Vec& d, const Q& u)
       Vec c = {number(p["translate"][0]), number(p["translate"][1]), number(p["translate"][2])};
       Quat q = {number(p["rotate"][0]), number(p["rotate"][1]), number(p["rotate"][2]), number(p["rotate"][3])};
       Vec moved;
-      for (int i = 0; i < 3; ++i) moved[i] = (R[i][0] * c[0] + R[i][1] * c[1] + R[i][2] * c[2]) / n + d[i];
+      for (int i = 0; i < 3; ++i) moved[i] = R[i][0] * c[0] + R[i][1] * c[1] + R[i][2] * c[2] + d[i];
       p["translate"] = numbers(moved);
       p["rotate"] = numbers(product(g, q));
       p["t"] = text(number(p["t"]) * u);
