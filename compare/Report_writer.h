@@ -20,12 +20,12 @@ struct Report_case {
   Scene scene;                        // the parsed scene (exact rationals), for drawing; empty for a CCD query
   Comparison comparison;              // the rows every case has (a CCD query's: ccd->comparison)
   std::string family;                 // a fuzz finding's family (its meta), else empty
-  // A minimised fuzz finding: the scene it was shrunk from, as given (linked
-  // from the case, so a fuzz folder lists each finding once); else empty.
-  std::string original;
   // A CCD query's comparison: shown with the query's rows instead of q-t
   // diagrams, and written to report.json in its own form.
   std::optional<Ccd_comparison> ccd = std::nullopt;
+  // A minimised fuzz finding: the scene it was shrunk from, as given (linked
+  // from the case, so a fuzz folder lists each finding once); else empty.
+  std::string original = {};
 };
 
 // The case of a CCD query.
