@@ -184,8 +184,13 @@ private:
   {
     std::optional<FT> ceiling;
     if (options_.earliest && !options_.all_pairs) {
+      // An exact kernel's answer does not depend on the ceiling (ties are
+      // still found: search/Search_goal.h), so the threads share theirs. A
+      // float search cut at another point may end elsewhere (issue 60: a
+      // double t* that changed from run to run), so a float kernel takes
+      // only the earlier chunks' best, which is the same in every run.
       std::lock_guard<std::mutex> lock(best_mutex_);
-      ceiling = best_;
+      ceiling = K::is_exact ? best_ : merged_best_;
     }
     return options_.semantics == Semantics::closed && !options_.earliest
                ? closed_pair<Result>(i, check_, stats)

@@ -1,6 +1,7 @@
 #include "cli/Campaign_commands.h"
 #include "compare/Ccd_query_files.h"
 #include "compare/External_subject.h"
+#include "compare/Report_cache.h"
 #include "compare/Report_writer.h"
 #include "scene/Input_error.h"
 #include "scene/Files.h"
@@ -50,6 +51,33 @@ bool apply_subject_args(const Subject_args& args, Compare_options& o, const char
   return true;
 }
 
+void add_builtin_subject_options(CLI::App& command, Builtin_subject_args& args)
+{
+  command
+      .add_option("--tolerance", args.tolerances,
+                  "a subject 'double tol=EPS': the double pipeline with |value| <= EPS taken as zero, where value is a "
+                  "half-space's a x + b y + c z + d as written (not a distance: a plane written with coefficients of "
+                  "size N moves by about EPS/N); repeatable (default 1e-9)")
+      ->check(CLI::PositiveNumber)
+      ->allow_extra_args(false);   // one value per occurrence: the files after it stay files
+  command.add_flag("--fcl", args.fcl,
+                   "also run FCL's continuous collision (the fcl subject) where FCL can express the scene; skipped "
+                   "with the reason elsewhere (scenes only)");
+  command.add_flag("--no-rounded", args.no_rounded,
+                   "do not run the exact-rounded subject (exact on the scene rounded to doubles; often the slowest); "
+                   "input rounding is then still told apart, by exact on the rounded scene where a verdict differs "
+                   "(scenes; CCD queries always run it: it is cheap there)");
+  command.add_flag("--no-doubles", args.no_doubles, "do not run the double subjects (double, double tol=EPS)");
+}
+
+void apply_builtin_subject_args(const Builtin_subject_args& args, Compare_options& o)
+{
+  if (!args.tolerances.empty()) o.tolerances = args.tolerances;
+  o.fcl = o.fcl || args.fcl;
+  o.rounded = !args.no_rounded;
+  o.doubles = !args.no_doubles;
+}
+
 void add_ccd_options(CLI::App& command, Ccd_compare_args& args)
 {
   command.add_option("--type", args.type,
@@ -57,8 +85,8 @@ void add_ccd_options(CLI::App& command, Ccd_compare_args& args)
                      "(docs/ccd-queries.md)")
       ->check(CLI::IsMember({"vf", "ee", "vertex-face", "edge-edge"}));
   command.add_option("--time-bound", args.time_bound,
-                     "CCD queries, with earliest: the largest |t - t*| that is no disagreement (default 1e-9; beyond "
-                     "it the cause is time)")
+                     "with earliest times: the largest |t* - exact t*| that is no disagreement (default 1e-9; beyond "
+                     "it the cause is time), for scenes and CCD queries")
       ->check(CLI::NonNegativeNumber);
 }
 
@@ -192,61 +220,31 @@ int merge_command(const std::vector<std::string>& dirs, const std::string& out_d
 
 namespace {
 
-// Saved findings carry their scene (or query) and comparison: no need to
-// rerun them.
-void add_fuzz_folder(const fs::path& dir, std::vector<Report_case>& cases)
+// One input of a report: a saved fuzz finding (read back: no need to
+// rerun it), a scene file (compared, or taken from DIR/cases), or a file of
+// CCD queries (a case per query).
+struct Report_item {
+  enum class Kind { finding, scene, queries } kind;
+  fs::path file;
+  fs::path original;   // a minimised finding's unminimised scene
+};
+
+// A fuzz folder's findings, each once (issue 60): the minimised scene with
+// its original linked, or the original alone where no minimum was saved
+// (a campaign interrupted between the two).
+void add_fuzz_folder(const fs::path& dir, std::vector<Report_item>& items)
 {
   std::vector<fs::path> files;
   for (const auto& f : fs::directory_iterator(dir / "findings"))
-    if (f.path().extension() == ".json") files.push_back(f.path());
+    if (f.path().extension() == ".json" && f.path().string().find(".min.json") == std::string::npos)
+      files.push_back(f.path());
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
-    nlohmann::ordered_json document = read_json_document(f.string());
-    std::string family = document.value("meta", nlohmann::ordered_json::object()).value("family", "");
-    if (is_ccd_finding(document)) {
-      cases.push_back(ccd_report_case(f.string(), finding_ccd_comparison(document, f.string()), family));
-      continue;
-    }
-    Comparison comparison = finding_comparison(document, f.string());
-    Scene scene;
-    try {
-      scene = read_scene_file(f.string());
-    } catch (const Input_error& e) {
-      throw std::runtime_error(e.format(f.string()));
-    }
-    cases.push_back({f.string(), scene, comparison, family});
+    fs::path min = f;
+    min.replace_extension(".min.json");
+    if (fs::exists(min)) items.push_back({Report_item::Kind::finding, min, f});
+    else items.push_back({Report_item::Kind::finding, f, {}});
   }
-}
-
-void add_scene_file(const fs::path& file, const Report_inputs& inputs, std::vector<Report_case>& cases)
-{
-  const Compare_options& compare = inputs.scenes;
-  Scene scene;
-  try {
-    scene = read_scene_file(file.string(), inputs.mesh_folders);
-    cases.push_back({file.string(), scene, compare_scene(scene, file.string(), compare), ""});
-  } catch (const Input_error& e) {
-    throw std::runtime_error(e.format(file.string()));
-  }
-}
-
-// A case per query of the file.
-void add_ccd_file(const fs::path& file, const Report_inputs& inputs, std::vector<Report_case>& cases)
-{
-  std::vector<Ccd_query> queries;
-  try {
-    queries = read_ccd_queries(file.string(), inputs.type);
-  } catch (const Input_error& e) {
-    throw std::runtime_error(e.format(file.string()));
-  }
-  for (std::size_t i = 0; i < queries.size(); ++i)
-    cases.push_back(ccd_report_case(file.string(), compare_query(queries[i], file.string(), i, inputs.queries), ""));
-}
-
-void add_file(const fs::path& file, const Report_inputs& inputs, std::vector<Report_case>& cases)
-{
-  if (is_ccd_query_file(file.string())) add_ccd_file(file, inputs, cases);
-  else add_scene_file(file, inputs, cases);
 }
 
 // A folder's scene and query files, by name.
@@ -262,25 +260,107 @@ std::vector<fs::path> folder_files(const fs::path& dir)
   return files;
 }
 
+void add_file(const fs::path& file, std::vector<Report_item>& items)
+{
+  items.push_back({is_ccd_query_file(file.string()) ? Report_item::Kind::queries : Report_item::Kind::scene, file, {}});
+}
+
+std::vector<Report_item> report_items(const Report_inputs& inputs)
+{
+  std::vector<Report_item> items;
+  for (const auto& input : inputs.paths) {
+    fs::path p(input);
+    if (fs::is_directory(p / "findings")) add_fuzz_folder(p, items);
+    else if (!fs::is_directory(p)) add_file(p, items);
+    else
+      for (const auto& f : folder_files(p)) add_file(f, items);
+  }
+  return items;
+}
+
+Scene read_report_scene(const fs::path& file, const std::vector<std::string>& mesh_folders)
+{
+  try {
+    return read_scene_file(file.string(), mesh_folders);
+  } catch (const Input_error& e) {
+    throw std::runtime_error(e.format(file.string()));
+  }
+}
+
+void add_finding(const Report_item& item, std::vector<Report_case>& cases)
+{
+  std::string f = item.file.string();
+  nlohmann::ordered_json document = read_json_document(f);
+  std::string family = document.value("meta", nlohmann::ordered_json::object()).value("family", "");
+  if (is_ccd_finding(document)) {
+    cases.push_back(ccd_report_case(f, finding_ccd_comparison(document, f), family));
+  } else {
+    cases.push_back({f, read_report_scene(item.file, {}), finding_comparison(document, f), family});
+  }
+  cases.back().original = item.original.string();
+}
+
+// A scene's comparison: the one DIR/cases keeps for the same key, else
+// compared now and kept.
+void add_scene(const Report_item& item, const Report_inputs& inputs, const Report_cache& cache,
+               std::vector<Report_case>& cases)
+{
+  std::string f = item.file.string();
+  Scene scene = read_report_scene(item.file, inputs.mesh_folders);
+  std::string key = Report_cache::key(f, scene, inputs.scenes);
+  std::optional<Comparison> kept = inputs.fresh ? std::nullopt : cache.find(key);
+  if (!kept) {
+    kept = compare_scene(scene, f, inputs.scenes);
+    cache.store(key, *kept);
+  }
+  cases.push_back({f, std::move(scene), std::move(*kept), ""});
+}
+
+// A case per query of the file.
+void add_queries(const Report_item& item, const Report_inputs& inputs, std::vector<Report_case>& cases)
+{
+  std::vector<Ccd_query> queries;
+  try {
+    queries = read_ccd_queries(item.file.string(), inputs.type);
+  } catch (const Input_error& e) {
+    throw std::runtime_error(e.format(item.file.string()));
+  }
+  for (std::size_t i = 0; i < queries.size(); ++i)
+    cases.push_back(ccd_report_case(item.file.string(), compare_query(queries[i], item.file.string(), i, inputs.queries), ""));
+}
+
 } // namespace
 
 int report_command(const Report_inputs& inputs, const std::string& out_dir, std::ostream& out, std::ostream& err)
 {
+  Report_cache cache(out_dir);
   try {
+    std::vector<Report_item> items = report_items(inputs);
+    Progress_line shown(inputs.progress, err, "clash4d report");
+    Report_inputs run = inputs;
+    std::string at;   // "k/n FILE" of the item under way
+    run.scenes.on_subject = [&](const std::string& subject) { shown.show(at + ": " + subject); };
     std::vector<Report_case> cases;
-    for (const auto& input : inputs.paths) {
-      fs::path p(input);
-      if (fs::is_directory(p / "findings")) add_fuzz_folder(p, cases);
-      else if (!fs::is_directory(p)) add_file(p, inputs, cases);
-      else
-        for (const auto& f : folder_files(p)) add_file(f, inputs, cases);
+    for (std::size_t k = 0; k < items.size(); ++k) {
+      at = std::to_string(k + 1) + "/" + std::to_string(items.size()) + " " + items[k].file.string();
+      shown.show(at);
+      switch (items[k].kind) {
+        case Report_item::Kind::finding: add_finding(items[k], cases); break;
+        case Report_item::Kind::scene: add_scene(items[k], run, cache, cases); break;
+        case Report_item::Kind::queries: add_queries(items[k], run, cases); break;
+      }
     }
+    shown.show(std::to_string(items.size()) + "/" + std::to_string(items.size()) + " inputs compared", true);
     Work_budget::check();   // past --max-seconds no report is written (exit 3)
     write_report(cases, out_dir);
     std::size_t disagreeing = 0;
     for (const auto& c : cases) disagreeing += c.comparison.has_disagreement();
     out << out_dir << ": " << cases.size() << " cases, " << disagreeing << " with disagreements (index.html, report.json, junit.xml)\n";
     return disagreeing ? 1 : 0;
+  } catch (const Budget_exceeded&) {
+    err << "clash4d report: stopped; " << cache.size() << " comparisons are kept in "
+        << (fs::path(out_dir) / "cases").string() << ": the same command resumes from them\n";
+    throw;
   } catch (const std::exception& e) {
     err << "clash4d report: " << e.what() << "\n";
     return CLASH4D_EXIT_INVALID;

@@ -30,6 +30,15 @@ bool apply_subject_args(const Subject_args& args, Compare_options& o, const char
 
 // --type vf|ee (CSV files whose path names no type) and --time-bound, for
 // the CCD query files of compare and report.
+// The built-in subjects a comparison of scenes runs (compare, fuzz, report):
+// the double subjects, exact-rounded and fcl.
+struct Builtin_subject_args {
+  std::vector<double> tolerances;
+  bool fcl = false, no_rounded = false, no_doubles = false;
+};
+void add_builtin_subject_options(CLI::App& command, Builtin_subject_args& args);
+void apply_builtin_subject_args(const Builtin_subject_args& args, Compare_options& o);
+
 struct Ccd_compare_args {
   std::string type;
   double time_bound = 1e-9;
@@ -60,6 +69,8 @@ struct Report_inputs {
   Ccd_compare_options queries;
   std::optional<Ccd_type> type;   // --type
   std::vector<std::string> mesh_folders;   // --allow-mesh-path (docs/meshes.md)
+  bool fresh = false;                      // --fresh: compare again what DIR/cases keeps (compare/Report_cache.h)
+  Progress_mode progress = Progress_mode::none;
 };
 int report_command(const Report_inputs& inputs, const std::string& out_dir, std::ostream& out, std::ostream& err);
 

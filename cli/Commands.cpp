@@ -8,12 +8,14 @@
 #include "compare/Ccd_comparer.h"
 #include "compare/Ccd_query_files.h"
 #include "compare/Comparer.h"
+#include "compare/Progress_line.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
 #include "rotation/Rotating_check.h"
 #include "rotation/Rotating_extrusion.h"
 #include "scene/Files.h"
 #include "scene/Input_error.h"
+#include "scene/Number_json.h"
 #include "scene/Rotation_refusal.h"
 #include "scene/Printable.h"
 #include "scene/Grid_scene.h"
@@ -26,6 +28,8 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
+#include <tbb/global_control.h>
 #include <unistd.h>
 #include <ostream>
 
@@ -259,7 +263,7 @@ void print_comparison(const Comparison& c, const std::string& title, std::ostrea
     if (s.skipped) { out << "skipped: " << *s.skipped << "\n"; continue; }
     out << (s.collide.value_or(false) ? "collision" : "no collision");
     if (s.witness_valid) out << (*s.witness_valid ? ", witness valid" : ", witness INVALID");
-    if (s.earliest) out << ", t* = " << s.earliest->t;
+    if (s.earliest) out << ", t* = " << with_decimal(s.earliest->t);
     if (s.t_error) out << " (error " << *s.t_error << ")";
     if (s.cause) out << "  <- " << *s.cause;
     out << "\n";
@@ -267,12 +271,15 @@ void print_comparison(const Comparison& c, const std::string& title, std::ostrea
 }
 
 int compare_scene_file(const std::string& f, const Compare_options& o, bool as_json, json& all, std::ostream& out,
-                       std::ostream& err)
+                       std::ostream& err, Progress_line& shown)
 {
   Scene scene;
   if (load(f, scene, err)) return CLASH4D_EXIT_INVALID;
   return guarded(f, err, [&] {
-    Comparison c = compare_scene(scene, f, o);
+    Compare_options shown_o = o;
+    shown_o.on_subject = [&](const std::string& subject) { shown.show(f + ": " + subject); };
+    Comparison c = compare_scene(scene, f, shown_o);
+    shown.clear();
     if (as_json) all.push_back(c.to_json()); else print_comparison(c, f, out);
     return c.has_disagreement() ? 1 : 0;
   });
@@ -307,9 +314,10 @@ int compare(const std::vector<std::string>& files, const Compare_options& o, con
 {
   int status = 0;
   json all = json::array();
+  Progress_line shown(progress_mode_of_stderr(), err, "clash4d compare");
   for (const auto& f : files) {
     int s = is_ccd_query_file(f) ? compare_ccd_file(f, ccd, type, as_json, all, out, err)
-                                 : compare_scene_file(f, o, as_json, all, out, err);
+                                 : compare_scene_file(f, o, as_json, all, out, err, shown);
     if (s == 1 && status == 0) status = 1;
     if (s > 1) status = s;
   }
@@ -534,8 +542,8 @@ Command add_skeleton(CLI::App& app, std::ostream& out, std::ostream& err)
 
 struct Compare_args {
   std::vector<std::string> files;
-  std::vector<double> tolerances;
-  bool earliest = false, fcl = false, as_json = false;
+  Builtin_subject_args builtin;
+  bool earliest = false, as_json = false;
   std::string semantics = "regularised";
   Ccd_compare_args ccd;
   Subject_args subjects;
@@ -551,11 +559,8 @@ Command add_compare(CLI::App& app, std::ostream& out, std::ostream& err)
   auto a = std::make_shared<Compare_args>();
   CLI::App* cmd = app.add_subcommand("compare", "Run exact, double, double with tolerances and exact-on-rounded-input on each scene or CCD query; flag and classify every disagreement with exact (exit 1 when any).");
   cmd->add_option("FILE", a->files, "scene files, and CCD query files (.csv, or JSON lines of queries: docs/ccd-queries.md), one comparison per query")->required();
-  cmd->add_option("--tolerance", a->tolerances, "a double subject treating |value| <= EPS as zero; repeatable (default 1e-9)")
-      ->check(CLI::PositiveNumber)
-      ->allow_extra_args(false);   // one value per occurrence: the files after it stay files
+  add_builtin_subject_options(*cmd, a->builtin);
   cmd->add_flag("--earliest", a->earliest, "also compare earliest collision times t*");
-  cmd->add_flag("--fcl", a->fcl, "also run FCL's continuous collision (the fcl subject) where FCL can express the scene; skipped with the reason elsewhere (scenes only)");
   cmd->add_flag("--json", a->as_json, "print one JSON object per scene or query in a list");
   cmd->add_option("--semantics", a->semantics, own_semantics_help)->check(CLI::IsMember({"regularised", "closed"}));
   add_ccd_options(*cmd, a->ccd);
@@ -564,9 +569,9 @@ Command add_compare(CLI::App& app, std::ostream& out, std::ostream& err)
     if (!cmd->parsed()) return -1;
     Compare_options o;
     o.semantics = *semantics_from_name(a->semantics);
-    if (!a->tolerances.empty()) o.tolerances = a->tolerances;
+    apply_builtin_subject_args(a->builtin, o);
     o.earliest = a->earliest;
-    o.fcl = a->fcl;
+    o.time_bound = a->ccd.time_bound;
     if (!apply_subject_args(a->subjects, o, "compare", err)) return CLASH4D_EXIT_INVALID;
     return compare(a->files, o, ccd_options_of(o, a->ccd), ccd_type_of(a->ccd), a->as_json, out, err);
   };
@@ -577,7 +582,7 @@ struct Fuzz_args {
   std::string shard;
   std::uint64_t shard_count = 0;
   std::vector<std::string> merge_dirs;
-  std::vector<double> tolerances;
+  Builtin_subject_args builtin;
   std::string semantics = "regularised";
   bool ccd = false, earliest = false;
   Ccd_compare_args ccd_args;
@@ -612,11 +617,8 @@ Command add_fuzz(CLI::App& app, std::ostream& out, std::ostream& err)
                   "S, without --shard: this is shard K of S with K from SLURM_ARRAY_TASK_ID (minus SLURM_ARRAY_TASK_MIN, "
                   "plus 1) or JOB_COMPLETION_INDEX (plus 1); Slurm's SLURM_ARRAY_TASK_COUNT gives S when omitted");
   cmd->add_option("--out", a->fuzz.out, "output folder")->required();
-  cmd->add_option("--tolerance", a->tolerances, "double subjects with tolerance EPS (default 1e-9); repeatable")
-      ->check(CLI::PositiveNumber)
-      ->allow_extra_args(false);
+  add_builtin_subject_options(*cmd, a->builtin);
   cmd->add_option("--merge", a->merge_dirs, "join these fuzz output folders into --out instead of running");
-  cmd->add_flag("--fcl", a->fuzz.compare.fcl, "also run the fcl subject (FCL's continuous collision) on the cases FCL can express");
   cmd->add_option("--semantics", a->semantics, own_semantics_help)->check(CLI::IsMember({"regularised", "closed"}));
   cmd->add_flag("--ccd", a->ccd,
                 "a campaign of CCD queries (ccd/Ccd_families.h, every family) instead of scenes; findings are also "
@@ -634,10 +636,10 @@ Command add_fuzz(CLI::App& app, std::ostream& out, std::ostream& err)
     Fuzz_options& fuzz = a->fuzz;
     if (!a->merge_dirs.empty()) return merge_command(a->merge_dirs, fuzz.out, out, err);
     if (!resolve_shard(a->shard, a->shard_count, std::getenv, fuzz, err)) return CLASH4D_EXIT_INVALID;
-    if (!a->tolerances.empty()) fuzz.compare.tolerances = a->tolerances;
+    apply_builtin_subject_args(a->builtin, fuzz.compare);
     fuzz.compare.semantics = *semantics_from_name(a->semantics);
     if (!apply_subject_args(a->subjects, fuzz.compare, "fuzz", err)) return CLASH4D_EXIT_INVALID;
-    fuzz.progress = isatty(fileno(stderr)) != 0 ? Campaign_options::Progress::terminal : Campaign_options::Progress::log;
+    fuzz.progress = progress_mode_of_stderr();
     if (a->ccd && fuzz.rotation) {
       err << "clash4d fuzz: --ccd and --rotation are two kinds of campaign: choose one\n";
       return CLASH4D_EXIT_INVALID;
@@ -654,6 +656,8 @@ Command add_fuzz(CLI::App& app, std::ostream& out, std::ostream& err)
 struct Report_args {
   std::vector<std::string> inputs;
   std::string out;
+  Builtin_subject_args builtin;
+  bool fresh = false;
   std::string semantics = "regularised";
   Ccd_compare_args ccd;
   Subject_args subjects;
@@ -666,15 +670,23 @@ Command add_report(CLI::App& app, std::ostream& out, std::ostream& err)
   cmd->add_option("INPUT", a->inputs, "scene files, CCD query files (.csv or JSON lines), folders of them, or fuzz output folders (fuzz --ccd's too)")->required();
   cmd->add_option("--out", a->out, "output folder")->required();
   cmd->add_option("--semantics", a->semantics, own_semantics_help)->check(CLI::IsMember({"regularised", "closed"}));
+  add_builtin_subject_options(*cmd, a->builtin);
+  cmd->add_flag("--fresh", a->fresh,
+                "compare every scene again, instead of taking the comparisons DIR/cases keeps from an earlier or "
+                "interrupted run of the same report (they are reused only for the same scene and options)");
   add_ccd_options(*cmd, a->ccd);
   add_subject_options(*cmd, a->subjects);
   return [cmd, a, &out, &err] {
     if (!cmd->parsed()) return -1;
     Compare_options o;
+    apply_builtin_subject_args(a->builtin, o);
     o.earliest = true;
+    o.time_bound = a->ccd.time_bound;
     o.semantics = *semantics_from_name(a->semantics);
     if (!apply_subject_args(a->subjects, o, "report", err)) return CLASH4D_EXIT_INVALID;
     Report_inputs inputs{a->inputs, o, ccd_options_of(o, a->ccd), ccd_type_of(a->ccd), allowed_mesh_folders};
+    inputs.fresh = a->fresh;
+    inputs.progress = progress_mode_of_stderr();
     return report_command(inputs, a->out, out, err);
   };
 }
@@ -723,6 +735,13 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
                      "let the scene's mesh files be under DIR too (repeatable; by default a mesh file must be under "
                      "the scene's own folder, docs/meshes.md)")
         ->type_name("DIR")->allow_extra_args(false)->check(CLI::ExistingDirectory.description(""));
+  // The worker threads (TBB): answers do not depend on them (issue 60's
+  // determinism test runs with 1 and with all).
+  std::size_t threads = 0;
+  for (const char* name : {"check", "skeleton", "compare", "fuzz", "report", "ccd"})
+    app.get_subcommand(name)
+        ->add_option("--threads", threads, "run on at most N threads (default: every core); the answers are the same")
+        ->check(CLI::PositiveNumber);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -734,6 +753,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     return CLASH4D_EXIT_INVALID;
   }
   Work_budget::start(max_seconds);
+  std::optional<tbb::global_control> limit;
+  if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
   try {
     for (const Command& run : commands)
       if (int status = run(); status >= 0) return status;

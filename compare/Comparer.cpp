@@ -2,6 +2,7 @@
 #include "compare/Bullet_subject.h"
 #include "compare/External_subject.h"
 #include "compare/Fcl_subject.h"
+#include "compare/Tolerance_judge.h"
 #include "compare/Witness_judge.h"
 #include "rotation/Rotating_check.h"
 #include "scene/Number_json.h"
@@ -240,6 +241,8 @@ struct Reference {
   const Run& closed;
   const Run* rounded;             // the exact-rounded subject, in `rounded_in`
   Semantics rounded_in;
+  const Run* plain_double;        // the double subject (no tolerance), in `rounded_in`; none with --no-doubles
+  double time_bound;              // Compare_options::time_bound (its exact value is the bound)
   int rounding_differs[2] = {-1, -1};   // per semantics: computed on first need
 
   const Run& in(const std::string& semantics) const { return semantics == "closed" ? closed : regularised; }
@@ -294,6 +297,50 @@ void fill_answer(Subject_row& s, const Run& r, const Reference& ref, const Witne
   }
 }
 
+// |a - b| > bound, decided exactly: by comparisons where one is rational,
+// else on isolating intervals refined until they decide. Equality at the
+// bound of two irrationals (a - b rational) is left undecided: not beyond.
+bool farther_than(const Algebraic& a, const Algebraic& b, const Rational& bound)
+{
+  if (b.is_rational()) return compare(a, b.rational() - bound) < 0 || compare(a, b.rational() + bound) > 0;
+  if (a.is_rational()) return farther_than(b, a, bound);
+  for (int i = 0; i < 200; ++i) {
+    Rational lo = a.lower() - b.upper(), hi = a.upper() - b.lower();   // a - b lies in [lo, hi]
+    if (lo > bound || hi < -bound) return true;
+    if (lo >= -bound && hi <= bound) return false;
+    a.refine();
+    b.refine();
+  }
+  return false;
+}
+
+// With earliest: the subject's t* is farther from exact's (in its
+// semantics) than the bound.
+bool beyond_time_bound(const Run& r, const Reference& ref)
+{
+  const Pair_answer* main = r.answer.reported();
+  const Run& exact_run = ref.in(r.semantics);
+  const Pair_answer* exact = exact_run.answer.reported();
+  if (!main || !main->earliest || !exact || !exact->earliest) return false;
+  Algebraic t = r.t_star ? *r.t_star : Algebraic(value_of(main->t_star, r.exact_numbers));
+  Algebraic e = exact_run.t_star ? *exact_run.t_star : Algebraic(value_of(exact->t_star, true));
+  return farther_than(t, e, Rational(ref.time_bound));
+}
+
+// The disagreement is the subject's declared tolerance at work
+// (compare/Comparer.h, cause `tolerance`).
+bool tolerance_explains(const Run& r, const Reference& ref)
+{
+  if (!r.tolerance || *r.tolerance <= 0) return false;
+  if (r.subject == tolerance_subject(*r.tolerance))   // double tol=EPS: the same pipeline without EPS agrees
+    return ref.plain_double && ref.plain_double->ok && ref.plain_double->semantics == r.semantics &&
+           ref.plain_double->answer.collide == ref.in(r.semantics).answer.collide;
+  std::vector<std::string> movable;
+  if (const Pair_answer* p = r.answer.reported(); p && !p->a.empty()) movable = {p->a};
+  Semantics s = r.semantics == "closed" ? Semantics::closed : Semantics::regularised;
+  return verdict_within_tolerance(ref.scene, s, r.answer.collide, Rational(*r.tolerance), movable);
+}
+
 // The cause of a subject's disagreement with exact in its own semantics
 // (empty: none), with the detail. A verdict is "contact" exactly when the
 // scene is one of touching only (regularised no, closed yes) and "input
@@ -316,12 +363,22 @@ std::string classify(const Run& r, const Subject_row& s, Reference& ref, std::st
       return "motion law";
     }
     if (&r == ref.rounded || (r.reads_doubles && ref.rounding_changes(r.semantics))) return "input rounding";
-    return ref.touching_only() ? "contact" : "arithmetic";
+    if (ref.touching_only()) return "contact";
+    if (!tolerance_explains(r, ref)) return "arithmetic";
+    detail += ", but within its tolerance " + shortest_decimal(*r.tolerance);
+    return "tolerance";
   }
   if (s.witness_valid == false) {
     detail = r.subject + "'s witness is not " +
              (r.semantics == "closed" ? "in both closed objects" : "strictly inside both objects") + " of the true scene";
     return "invalid witness";
+  }
+  if (beyond_time_bound(r, ref)) {
+    detail = r.subject + "'s t* is " + s.t_error.value_or("?") + " from exact " + r.semantics + "'s, beyond the bound " +
+             shortest_decimal(ref.time_bound);
+    if (r.motion_law.empty()) return "time";
+    detail += " (" + r.motion_law + ")";
+    return "motion law";
   }
   return "";
 }
@@ -416,20 +473,26 @@ std::vector<Run> builtin_runs(const Scene& scene, const Compare_options& options
   own.semantics = options.semantics;
   std::shared_ptr<Exact_checker> kept;
   Own_checks checks = own_checks(scene, kept);
-  runs.push_back(timed("exact", true, [&] { return checks.exact(co); }));
-  runs.push_back(timed("exact closed", true, [&] { return checks.exact(closed); }));
+  auto announce = [&](const std::string& subject) {
+    if (options.on_subject) options.on_subject(subject);
+    return subject;
+  };
+  runs.push_back(timed(announce("exact"), true, [&] { return checks.exact(co); }));
+  runs.push_back(timed(announce("exact closed"), true, [&] { return checks.exact(closed); }));
   runs.back().semantics = "closed";
   std::size_t own_from = runs.size();
-  runs.push_back(timed("double", false, [&] { return checks.in_doubles(0, own); }));
-  for (double tol : options.tolerances) {
-    runs.push_back(timed(tolerance_subject(tol), false, [&] { return checks.in_doubles(tol, own); }));
-    runs.back().tolerance = tol;
+  if (options.doubles) {
+    runs.push_back(timed(announce("double"), false, [&] { return checks.in_doubles(0, own); }));
+    for (double tol : options.tolerances) {
+      runs.push_back(timed(announce(tolerance_subject(tol)), false, [&] { return checks.in_doubles(tol, own); }));
+      runs.back().tolerance = tol;
+    }
   }
-  if (options.rounded) runs.push_back(timed("exact-rounded", true, [&] { return checks.rounded(own); }));
+  if (options.rounded) runs.push_back(timed(announce("exact-rounded"), true, [&] { return checks.rounded(own); }));
   for (std::size_t i = own_from; i < runs.size(); ++i) runs[i].semantics = semantics_name(options.semantics);
-  if (options.fcl) runs.push_back(library_run<Fcl_subject>("fcl", scene, closed));
+  if (options.fcl) runs.push_back(library_run<Fcl_subject>(announce("fcl").c_str(), scene, closed));
   if (options.bullet) {
-    runs.push_back(library_run<Bullet_subject>("bullet", scene, closed));
+    runs.push_back(library_run<Bullet_subject>(announce("bullet").c_str(), scene, closed));
     runs.back().tolerance = Bullet_subject::tolerance;
   }
   for (Run& r : runs)
@@ -448,10 +511,16 @@ Comparison compare_scene(const Scene& scene, const std::string& file, const Comp
   for (int i : {0, 1})
     if (!runs[i].ok) throw std::runtime_error("the " + runs[i].subject + " subject failed: " + runs[i].error);
   Witness_judge judge(scene);
-  for (const auto& pool : options.externals) runs.push_back(external_run(*pool, scene, judge, options.earliest));
+  for (const auto& pool : options.externals) {
+    if (options.on_subject) options.on_subject(pool->spec().name);
+    runs.push_back(external_run(*pool, scene, judge, options.earliest));
+  }
 
-  auto rounded = std::find_if(runs.begin(), runs.end(), [](const Run& r) { return r.subject == "exact-rounded"; });
-  Reference ref{scene, co, runs[0], runs[1], rounded != runs.end() ? &*rounded : nullptr, options.semantics};
+  auto named = [&](const char* subject) {
+    auto it = std::find_if(runs.begin(), runs.end(), [&](const Run& r) { return r.subject == subject; });
+    return it != runs.end() ? &*it : nullptr;
+  };
+  Reference ref{scene, co, runs[0], runs[1], named("exact-rounded"), options.semantics, named("double"), options.time_bound};
 
   Comparison out;
   out.file = file;

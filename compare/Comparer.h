@@ -37,7 +37,17 @@
 //                    at constant angular velocity about a fixed axis:
 //                    regularised-semantics fact 13), so its verdict answers
 //                    another question;
-//   arithmetic       otherwise: the subject's own rounding or tolerance;
+//   tolerance        the subject has a tolerance and exact shows it is what
+//                    made the difference: for `double tol=EPS` (EPS bounds the
+//                    half-space values as written, not a distance) the same
+//                    pipeline without it, `double`, gives exact's verdict;
+//                    for a subject declaring a distance tolerance (bullet,
+//                    an external subject's hello), exact gives the subject's
+//                    verdict on the scene with one object of the pair moved
+//                    by a vector no longer than it (one of 26 directions);
+//   time             with earliest, the verdicts agree but |t* - exact t*|
+//                    exceeds time_bound (decided exactly);
+//   arithmetic       otherwise: the subject's own rounding;
 //   invalid witness  verdicts agree but the subject's witness does not hold
 //                    in the true scene (checked exactly: strictly inside both
 //                    objects, or, closed, in both closed objects).
@@ -47,6 +57,7 @@
 #include "compare/Comparison.h"
 #include "scene/Scene.h"
 #include "search/Semantics.h"
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -61,12 +72,19 @@ struct Compare_options {
   Semantics semantics = Semantics::regularised;
   std::vector<double> tolerances{1e-9};   // one "double tol=EPS" subject each
   bool earliest = false;                  // also compare t* (and report its error)
-  bool rounded = true;                    // run the exact-rounded subject
+  // With earliest: the largest |t* - exact t*| that is no disagreement
+  // (its exact value is the bound; beyond it the cause is `time`).
+  double time_bound = 1e-9;
+  bool rounded = true;                    // run the exact-rounded subject (--no-rounded: not)
+  bool doubles = true;                    // run the double subjects (double, double tol=EPS)
   bool fcl = false;                       // run the fcl subject (skipped where FCL cannot express the scene)
   bool bullet = false;                    // run the bullet subject (likewise)
   // External subjects (--subject NAME=COMMAND): their processes, shared by
   // every copy of these options and kept for the whole run.
   std::vector<std::shared_ptr<External_pool>> externals;
+  // Called with each subject's name before it runs (progress on long
+  // comparisons); may be empty.
+  std::function<void(const std::string& subject)> on_subject;
 };
 
 // The comparison of every subject with exact (JSON form in compare/README.md).

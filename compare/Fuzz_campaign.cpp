@@ -145,35 +145,16 @@ bool run_case(const Fuzz_options& o, std::uint64_t index)
   return true;
 }
 
-// done/total, the rate, the findings and the time left: rewritten in place
-// on a terminal, a line of its own in a log at most every ten seconds (and
-// at the end).
-class Campaign_progress {
-public:
-  Campaign_progress(const Campaign_options& o, std::ostream& err) : mode_(o.progress), err_(err) {}
-  void show(std::uint64_t done, std::uint64_t total, std::uint64_t findings, bool last)
-  {
-    using Mode = Campaign_options::Progress;
-    auto now = std::chrono::steady_clock::now();
-    if (mode_ == Mode::none || (mode_ == Mode::log && !last && now - shown_ < std::chrono::seconds(10))) return;
-    shown_ = now;
-    double seconds = std::chrono::duration<double>(now - began_).count();
-    double rate = seconds > 0 ? done / seconds : 0;
-    double eta = rate > 0 ? (total - done) / rate : 0;
-    err_ << (mode_ == Mode::terminal ? "\r" : "clash4d fuzz: ") << done << "/" << total << " cases, "
-         << static_cast<int>(rate * 10) / 10.0 << "/s, " << findings << " findings, ETA " << static_cast<long>(eta)
-         << " s" << (mode_ == Mode::terminal ? "   " : "\n") << std::flush;
-  }
-  ~Campaign_progress()
-  {
-    if (mode_ == Campaign_options::Progress::terminal) err_ << "\n";
-  }
-
-private:
-  Campaign_options::Progress mode_;
-  std::ostream& err_;
-  std::chrono::steady_clock::time_point began_ = std::chrono::steady_clock::now(), shown_ = began_;
-};
+// done/total, the rate, the findings and the time left.
+std::string campaign_progress(double seconds, std::uint64_t done, std::uint64_t total, std::uint64_t findings)
+{
+  double rate = seconds > 0 ? done / seconds : 0;
+  double eta = rate > 0 ? (total - done) / rate : 0;
+  std::ostringstream text;
+  text << done << "/" << total << " cases, " << static_cast<int>(rate * 10) / 10.0 << "/s, " << findings
+       << " findings, ETA " << static_cast<long>(eta) << " s";
+  return text.str();
+}
 
 } // namespace
 
@@ -197,7 +178,7 @@ Fuzz_summary run_campaign(const Campaign_options& o, const json& description,
   std::size_t start = 0;
   while (start < mine.size() && mine[start] < s.resumed_from) ++start;
   std::atomic<std::uint64_t> findings{count_findings(o)};
-  Campaign_progress shown(o, err);
+  Progress_line shown(o.progress, err, "clash4d fuzz");
   const std::size_t batch = 16;
   for (std::size_t b = start; b < mine.size(); b += batch) {
     std::size_t end = std::min(mine.size(), b + batch);
@@ -209,7 +190,7 @@ Fuzz_summary run_campaign(const Campaign_options& o, const json& description,
     std::uint64_t next = end < mine.size() ? mine[end] : o.cases;
     write_file_atomically(progress, json{{"next", next}}.dump() + "\n");
     s.done = end;
-    shown.show(end, mine.size(), findings, end == mine.size());
+    shown.show(campaign_progress(shown.seconds(), end, mine.size(), findings), end == mine.size());
   }
   s.done = mine.size();
   s.findings = count_findings(o);   // the folder's, whoever else wrote to it

@@ -21,6 +21,7 @@
 
 #include "compare/Ccd_comparison.h"
 #include "compare/Comparer.h"
+#include "compare/Progress_line.h"
 #include "compare/External_subject.h"
 #include <cstdint>
 #include <functional>
@@ -39,7 +40,7 @@ struct Campaign_options {
   std::string out;
   // Progress on standard error: none, a line rewritten after each batch on
   // a terminal, or a line every ten seconds in a log (a Slurm job's).
-  enum class Progress { none, terminal, log };
+  using Progress = Progress_mode;
   Progress progress = Progress::none;
   // Each shrinking step reruns the comparison: a bound on the steps (not on
   // time, so findings stay reproducible) keeps one stubborn case from

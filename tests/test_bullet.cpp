@@ -107,7 +107,9 @@ BOOST_AUTO_TEST_CASE(a_small_turn_about_a_fixed_point_compares_exactly)
   const Subject_row& b = row(k, "bullet");
   BOOST_TEST_REQUIRE(b.collide.has_value());
   BOOST_TEST(*b.collide);
-  BOOST_TEST(b.agrees.value_or(false));
+  // The verdict agrees; its t* stops short of 3/5 by more than the default
+  // time bound 1e-9 (below): the one disagreement is in time.
+  BOOST_TEST(b.cause.value_or("") == "time");
   BOOST_TEST_REQUIRE(b.earliest.has_value());
   // Bullet's advancement stops short within its tolerance (measured
   // 0.5975 here, the corner moving at about 0.35): within 1e-2, and early.

@@ -410,7 +410,13 @@ BOOST_AUTO_TEST_CASE(a_turn_about_a_fixed_point_is_fcl_s_screw_motion)
   json c = compare_with_fcl(scene, "square into slab");
   BOOST_TEST(subject(c, "fcl")["collide"] == true);
   BOOST_TEST(std::abs(fcl_t_star(c) - exact) <= 1e-3);   // t* through the change of time
-  BOOST_TEST(!fcl_disagrees(c));
+  // The verdicts agree; its t* is farther than the default bound 1e-9 from
+  // the exact one (measured about 2e-4): a disagreement in time, nothing else.
+  BOOST_TEST(std::abs(fcl_t_star(c) - exact) > 1e-9);
+  std::vector<std::string> causes;
+  for (const auto& d : c["disagreements"])
+    if (d["subject"] == "fcl") causes.push_back(d["cause"]);
+  BOOST_TEST(causes == std::vector<std::string>{"time"}, boost::test_tools::per_element());
 }
 
 // A block that turns while its centre moves: FCL's screw is another path

@@ -310,7 +310,19 @@ BOOST_AUTO_TEST_CASE(the_python_sampling_subject_tunnels_and_counts_touching)
                               .object("a", block(vec(0, 0, 0), vec(1, 1, 1)))
                               .object("b", block(vec(1, 0, 0), vec(2, 1, 1)))
                               .text();
-  json all = compare_json({tunnel, touch}, std::string(CLASH4D_PYTHON) + " " + CLASH4D_SOURCE "/examples/subjects/sampling_subject.py");
+  // Apart by 2^-34 (about 5.8e-11, exact in doubles): within its tolerance
+  // 1e-9, so a collision to it; exact closed says no, and exact with one
+  // block moved 1e-9 along x says yes: cause tolerance (compare/Tolerance_judge.h).
+  std::string near = (dir / "near.json").string();
+  std::ofstream(near) << Scene_builder("faces 2^-34 apart", 0, 1)
+                             .object("a", block(vec(0, 0, 0), vec(1, 1, 1)))
+                             .object("b", block(vec(rational_from_string("17179869185/17179869184"), 0, 0), vec(2, 1, 1)))
+                             .text();
+  json all = compare_json({tunnel, touch, near}, std::string(CLASH4D_PYTHON) + " " + CLASH4D_SOURCE "/examples/subjects/sampling_subject.py");
+  const json& n = row(all[2], "s");
+  BOOST_TEST(row(all[2], "exact closed")["collide"] == false);
+  BOOST_TEST(n["collide"] == true);
+  BOOST_TEST(n["cause"] == "tolerance");
   const json &t = row(all[0], "s"), &c = row(all[1], "s");
   BOOST_TEST(row(all[0], "exact")["collide"] == true);
   BOOST_TEST(t["collide"] == false);
