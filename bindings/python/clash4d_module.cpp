@@ -446,11 +446,11 @@ c4::Motion motion(py::handle v, const std::string& place, const std::string& fil
 }
 
 // check's motions=: None, or one motion per object.
-std::optional<std::vector<c4::Motion>> motions_of(py::handle motions, const c4::Scene& s)
+std::optional<std::vector<c4::Motion>> motions_of(py::handle motions, const c4::Scene& s, const char* function)
 {
   if (motions.is_none()) return std::nullopt;
   if (!py::isinstance<py::sequence>(motions) || py::isinstance<py::str>(motions) || py::isinstance<py::bytes>(motions))
-    throw py::type_error("clash4d.check: motions is a list of motions (str or {\"poses\": [...]}), not " +
+    throw py::type_error(std::string("clash4d.") + function + ": motions is a list of motions (str or {\"poses\": [...]}), not " +
                          short_repr(motions));
   std::vector<c4::Motion> out;
   for (py::handle m : py::tuple(py::reinterpret_borrow<py::sequence>(motions)))
@@ -469,7 +469,7 @@ py::dict check(py::handle scene, const std::string& number, const std::string& s
   o.tolerance = tolerance;
   o.max_seconds = max_seconds;
   c4::Scene s = read_scene(scene);
-  std::optional<std::vector<c4::Motion>> moved = motions_of(motions, s);
+  std::optional<std::vector<c4::Motion>> moved = motions_of(motions, s, "check");
   c4::Check_result r = interruptible([&](const std::atomic<bool>* cancel) {
     c4::Check_options run = o;
     run.cancel = cancel;
@@ -514,7 +514,7 @@ py::object optional(const std::optional<T>& x)
 }
 
 py::dict compare(py::handle scene, const std::string& semantics, const std::vector<double>& tolerances, bool earliest,
-                 bool rounded, bool fcl, bool bullet, double max_seconds)
+                 bool rounded, bool fcl, bool bullet, py::handle motions, double max_seconds)
 {
   c4::Compare_options o;
   o.semantics = c4::semantics_from_name(semantics);
@@ -525,10 +525,11 @@ py::dict compare(py::handle scene, const std::string& semantics, const std::vect
   o.bullet = bullet;
   o.max_seconds = max_seconds;
   c4::Scene s = read_scene(scene);
+  std::optional<std::vector<c4::Motion>> moved = motions_of(motions, s, "compare");
   c4::Comparison c = interruptible([&](const std::atomic<bool>* cancel) {
     c4::Compare_options run = o;
     run.cancel = cancel;
-    return c4::compare(s, run);
+    return moved ? c4::compare(s, *moved, run) : c4::compare(s, run);
   });
   py::dict out;
   out["file"] = c.file;
@@ -702,7 +703,9 @@ py::object compared(const c4::Algebraic& a, py::handle b, Op op, bool if_nan = f
 
 } // namespace
 
-PYBIND11_MODULE(clash4d, m)
+// The compiled half of the package clash4d (bindings/python/clash4d/__init__.py
+// wraps it: typed answers); its names keep the package's "clash4d." prefix.
+PYBIND11_MODULE(_core, m)
 {
   m.doc() = module_doc;
   m.attr("__version__") = c4::version();
@@ -781,14 +784,17 @@ irrational (t, point and a closed witness, with rotation only). With
 rotation there are no "inside" points (the key is absent).)");
   m.def("compare", &compare, py::arg("scene"), py::arg("semantics") = "regularised",
         py::arg("tolerances") = std::vector<double>{1e-9}, py::arg("earliest") = false, py::arg("rounded") = true,
-        py::arg("fcl") = false, py::arg("bullet") = false, py::kw_only(), py::arg("max_seconds") = 0.0,
+        py::arg("fcl") = false, py::arg("bullet") = false, py::kw_only(), py::arg("motions") = py::none(),
+        py::arg("max_seconds") = 0.0,
         R"(Runs every subject (double, double with each tolerance, exact on the rounded
 scene, optionally fcl and bullet) and holds each against the exact answer in
 its own semantics (`clash4d compare`). Returns {"file", "name", "agree",
 "closed_touch", "subjects": [{"subject", "semantics", "collide", "witness",
 "witness_valid", "earliest", "t_error", "agrees", "cause", "skipped", ...}],
 "disagreements": [{"subject", "cause", "detail", "semantics"}]}.
-max_seconds and Ctrl-C as for check.)");
+motions (keyword only): a motion per object in place of the scene's, as
+for check; every subject sees the moved scene. max_seconds and Ctrl-C as
+for check.)");
   m.def("validate", &validate, py::arg("scene"),
         "Raises clash4d.InputError when the scene is not valid; else returns {\"name\", \"time\": (t_lo, t_hi), "
         "\"objects\": [names]}.");
