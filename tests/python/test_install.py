@@ -2,14 +2,21 @@
 """The installed Python package, as a user's Python finds it.
 
     python3 tests/python/test_install.py CMAKE BUILD_DIR PYTHON_INSTALL_DIR FIXTURES
+    python3 tests/python/test_install.py --pip SOURCE_DIR BUILD_DIR FIXTURES
 
-Runs `cmake --install BUILD_DIR --component python --prefix TMP` (the
-package and libclash4d), then a fresh interpreter in isolated mode (-I: no
-PYTHONPATH, no user site, not the current folder) that adds only
+The first runs `cmake --install BUILD_DIR --component python --prefix TMP`
+(the package and libclash4d), then a fresh interpreter in isolated mode (-I:
+no PYTHONPATH, no user site, not the current folder) that adds only
 TMP/PYTHON_INSTALL_DIR as a site directory (what that prefix's Python has on
-its path), imports clash4d from there and checks a fixture. Run by ctest as
-test_python_install.
+its path), imports clash4d from there and checks a fixture (ctest:
+test_python_install). The second runs `pip install --no-build-isolation
+--no-index --target TMP SOURCE_DIR` with CLASH4D_BUILD_DIR=BUILD_DIR (setup.py
+then builds only what changed there) under the first interpreter of this
+one's version that has pip, setuptools and wheel (this one, else
+/usr/bin/python3), and the same check on TMP; exit 77 (skipped) when there is
+none (ctest: test_python_pip).
 """
+import os
 import pathlib
 import subprocess
 import sys
@@ -30,8 +37,17 @@ print("installed clash4d %s at %s: %r" % (clash4d.__version__, clash4d.__file__,
 """
 
 
-def main(argv):
-    cmake, build, pydir, fixtures = argv[1:5]
+SKIP = 77
+# Found, not imported (pip's import before setuptools' trips its distutils hack).
+HAS_PIP = ("import importlib.util as u, sys; sys.exit(sys.version_info[:2] != (%d, %d) or "
+           "not all(u.find_spec(m) for m in ('pip', 'setuptools', 'wheel')))" % sys.version_info[:2])
+
+
+def import_check(python, site_dir, fixtures, cwd):
+    return subprocess.run([python, "-I", "-c", CHILD, str(site_dir), fixtures], cwd=cwd).returncode
+
+
+def cmake_install(cmake, build, pydir, fixtures):
     with tempfile.TemporaryDirectory() as tmp:
         prefix = pathlib.Path(tmp) / "prefix"
         subprocess.run([cmake, "--install", build, "--component", "python", "--prefix", str(prefix)],
@@ -40,7 +56,28 @@ def main(argv):
         if not (site_dir / "clash4d" / "__init__.py").is_file():
             print("test_install: no clash4d/__init__.py under %s" % site_dir, file=sys.stderr)
             return 1
-        return subprocess.run([sys.executable, "-I", "-c", CHILD, str(site_dir), fixtures], cwd=tmp).returncode
+        return import_check(sys.executable, site_dir, fixtures, tmp)
+
+
+def pip_install(source, build, fixtures):
+    pythons = [p for p in (sys.executable, "/usr/bin/python3")
+               if os.path.exists(p) and subprocess.run([p, "-I", "-c", HAS_PIP], capture_output=True).returncode == 0]
+    if not pythons:
+        print("test_install: no Python %d.%d with pip, setuptools and wheel: skipped" % sys.version_info[:2])
+        return SKIP
+    env = dict(os.environ, CLASH4D_BUILD_DIR=build)
+    env.pop("PYTHONPATH", None)
+    with tempfile.TemporaryDirectory() as tmp:
+        site_dir = pathlib.Path(tmp) / "site"
+        subprocess.run([pythons[0], "-m", "pip", "install", "--no-build-isolation", "--no-index", "--no-cache-dir",
+                        "--quiet", "--target", str(site_dir), source], check=True, env=env)
+        return import_check(pythons[0], site_dir, fixtures, tmp)
+
+
+def main(argv):
+    if argv[1] == "--pip":
+        return pip_install(*argv[2:5])
+    return cmake_install(*argv[1:5])
 
 
 if __name__ == "__main__":
