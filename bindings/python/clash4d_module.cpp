@@ -1,5 +1,5 @@
-// The Python module `clash4d` (pybind11) on the public C++ API
-// (api/clash4d/clash4d.h). A scene is a dict in the scene format or a path;
+// The compiled module clash4d._core (pybind11) on the public C++ API
+// (api/clash4d/clash4d.h), under the package clash4d (clash4d/__init__.py). A scene is a dict in the scene format or a path;
 // exact numbers come back as fractions.Fraction. Documented in the module's
 // docstring below and in the README ("Use it from Python").
 #include <clash4d/clash4d.h>
@@ -25,7 +25,10 @@ namespace c4 = clash4d::api;
 
 namespace {
 
-const char* const module_doc = R"(clash4d: exact collision detection for moving polyhedral CSG solids.
+const char* const module_doc = R"(clash4d._core: the compiled part of the package clash4d (exact collision
+detection for moving polyhedral CSG solids). Use `import clash4d`: its
+check returns a typed clash4d.Answer; the check here returns the dict form
+below, which clash4d.Answer wraps.
 
     import clash4d
     from fractions import Fraction
