@@ -1,5 +1,6 @@
 // The compiled module clash4d._core (pybind11) on the public C++ API
-// (api/clash4d/clash4d.h), under the package clash4d (clash4d/__init__.py). A scene is a dict in the scene format or a path;
+// (api/clash4d/clash4d.h), under the package clash4d (clash4d/__init__.py
+// types its answers). A scene is a dict in the scene format or a path;
 // exact numbers come back as fractions.Fraction. Documented in the module's
 // docstring below and in the README ("Use it from Python").
 #include <clash4d/clash4d.h>
