@@ -1024,6 +1024,24 @@ class Compare_with_motions(unittest.TestCase):
         with self.assertRaises(TypeError):
             clash4d.compare(s, motions="rest")
 
+    def test_ctrl_c_interrupts_a_compare_with_motions(self):
+        # 24 copies of the skewed pair: the whole comparison takes about 9 s here
+        # (its exact subject, filtered, about 4 s per 12 copies); stopped after 0.3 s.
+        slow = slow_scene(24)
+        prepared = clash4d.Scene(slow)
+        own = [o["motion"] for o in slow["objects"]]
+        old = signal.signal(signal.SIGINT, signal.default_int_handler)
+        timer = threading.Timer(0.3, os.kill, (os.getpid(), signal.SIGINT))
+        start = time.monotonic()
+        try:
+            timer.start()
+            with self.assertRaises(KeyboardInterrupt):
+                clash4d.compare(prepared, motions=own)
+            self.assertLess(time.monotonic() - start, 3)
+        finally:
+            timer.cancel()
+            signal.signal(signal.SIGINT, old)
+
     def test_max_seconds_with_motions(self):
         path = FIXTURES / "paper" / "section6_weaving_vehicle_skewed.json"
         own = [o.get("motion", "rest") for o in json.loads(path.read_text())["objects"]]
