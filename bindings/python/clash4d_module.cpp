@@ -508,6 +508,7 @@ py::object located(const std::optional<c4::Located>& l)
   if (l->t) d["t"] = fraction(*l->t);
   // The comparer's text: also where a turning scene's exact t* is irrational.
   if (!l->t_text.empty()) d["t_text"] = l->t_text;
+  if (!l->point_text[0].empty()) d["point_text"] = py::make_tuple(l->point_text[0], l->point_text[1], l->point_text[2], l->point_text[3]);
   return d;
 }
 

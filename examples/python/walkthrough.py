@@ -62,14 +62,13 @@ double = show('clash4d.check(scene, number="double", earliest=True)', clash4d.ch
 expect(double.collide and Fraction(19, 10) < double.t <= 2, "double: a false collision near t = 2 (rounding)")
 
 step("4. Compare the subjects against exact")
-c = clash4d.compare(scene, earliest=True)
-print(">>> c = clash4d.compare(scene, earliest=True)")
-for row in c["subjects"]:
-    print("  %-18s %-12s collide=%-5s agrees=%-5s cause=%s" % (row["subject"], row["semantics"], row["collide"],
-                                                              row["agrees"], row["cause"]))
-show('c["agree"]', c["agree"])
-causes = {d["subject"]: d["cause"] for d in c["disagreements"]}
-expect(not c["agree"] and causes.get("double") == "input rounding",
+c = show("c = clash4d.compare(scene, earliest=True)", clash4d.compare(scene, earliest=True))
+print(">>> for row in c.subjects: print(row)")
+for row in c.subjects:
+    print(row)
+show('c.row("exact closed").earliest', c.row("exact closed").earliest)
+causes = {d.subject: d.cause for d in c.disagreements}
+expect(not c.agree and causes.get("double") == "input rounding" and c.row("exact closed").earliest.t == 2,
        "double disagrees with exact, and the cause is the rounding of the input")
 
 step("5. The same shapes under other motions (check and compare)")
@@ -77,10 +76,8 @@ moved = show('clash4d.check(head_on, earliest=True, motions=["rest", "vel -2 0 0
              clash4d.check(head_on, earliest=True, motions=["rest", "vel -2 0 0"]))
 # a at rest on x in [0, 1], b's face 5 - 2t reaches 1 at t* = 2, x = 1.
 expect(moved.t == 2 and moved.earliest.x == 1, "a at rest, b at speed 2: t* = 2 at x = 1")
-c = clash4d.compare(head_on, motions=["rest", "rest"])
-print('>>> clash4d.compare(head_on, motions=["rest", "rest"])["agree"]')
-print(c["agree"])
-expect(c["agree"] and not any(row["collide"] for row in c["subjects"]), "both at rest: no subject sees a collision")
+c = show('clash4d.compare(head_on, motions=["rest", "rest"])', clash4d.compare(head_on, motions=["rest", "rest"]))
+expect(c.agree and not any(row.collide for row in c.subjects), "both at rest: no subject sees a collision")
 
 step("6. A turning scene: t* is irrational, and exact")
 turning = show('scene = clash4d.Scene(FIXTURES / "rotation" / "square_into_slab.json")',

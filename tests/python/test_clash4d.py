@@ -984,7 +984,7 @@ class Typed_answers(unittest.TestCase):
 class Compare_with_motions(unittest.TestCase):
     """compare(..., motions=[...]): every subject sees the scene moved otherwise."""
 
-    def rows(self, c):
+    def rows(self, c):   # the dict form's rows (deprecated, still answering)
         return {r["subject"]: r for r in c["subjects"]}
 
     def test_other_motions(self):
@@ -1023,6 +1023,38 @@ class Compare_with_motions(unittest.TestCase):
             clash4d.compare(s, motions=["rest"])
         with self.assertRaises(TypeError):
             clash4d.compare(s, motions="rest")
+
+    def test_typed_comparison(self):
+        # approach_stop_decimal (contact/expected.json): exact says touching only (closed:
+        # first contact at t* = 2, x = 3/10); double, reading 0.1 + 0.1 * 2 > 0.3, collides.
+        c = clash4d.compare(FIXTURES / "contact" / "approach_stop_decimal.json", earliest=True)
+        self.assertIsInstance(c, clash4d.Comparison)
+        self.assertFalse(c.agree)
+        self.assertTrue(c.closed_touch)
+        self.assertEqual(c.row("exact").collide, False)
+        self.assertTrue(c.row("exact").reference)
+        e = c.row("exact closed").earliest
+        self.assertIsInstance(e, clash4d.Located)
+        self.assertEqual((e.objects, e.t, e.point.x, e.t_text), (("a", "b"), 2, Fraction(3, 10), "2"))
+        self.assertIsInstance(e.point, clash4d.Point)
+        double = c.row("double")
+        self.assertEqual((double.collide, double.agrees, double.cause), (True, False, "input rounding"))
+        self.assertIn(clash4d.Disagreement("double", "input rounding", c.disagreements[0].detail, "regularised"),
+                      c.disagreements)
+        self.assertTrue(repr(c).startswith("Comparison(agree=False, subjects=['exact', "), repr(c))
+        self.assertIn("double: input rounding", repr(c))
+        self.assertEqual(repr(c.row("exact")), "Row('exact', collide=False, agrees=True)")
+        with self.assertRaises(KeyError):
+            c.row("no such subject")
+        self.assertEqual(c["agree"], False)   # the dict form, deprecated
+        self.assertEqual(c["subjects"][0]["subject"], "exact")
+        # Turning: the exact t* and contact point are irrational: text only, never rounded.
+        e = clash4d.compare(SQUARE_INTO_SLAB, earliest=True).row("exact").earliest
+        self.assertIsNone(e.t)
+        self.assertIsNone(e.point)
+        self.assertTrue(e.t_text.startswith("root of [1, -10, 11]"), e.t_text)
+        self.assertEqual(e.point_text[0], "6/5")
+        self.assertTrue(e.point_text[1].startswith("root of [-14, 0, 25]"), e.point_text)
 
     def test_ctrl_c_interrupts_a_compare_with_motions(self):
         # 24 copies of the skewed pair: the whole comparison takes about 9 s here

@@ -41,8 +41,11 @@ attributes.
 
 compare(scene, ...) runs every subject (double, double with tolerances,
 exact on the rounded scene, optionally fcl and bullet) against exact and
-returns the dict of `clash4d compare --json`. validate, scene_json and the
-CCD queries (ccd_vertex_face, ccd_edge_edge, ccd_batch) return dicts too.
+returns a clash4d.Comparison: agree, its rows (clash4d.Row, one per
+subject: collide, agrees, cause, witness and earliest as clash4d.Located)
+and its disagreements; comparison["agree"], ... (the dict of `clash4d
+compare --json`) still work, deprecated. validate and the CCD queries
+(ccd_vertex_face, ccd_edge_edge, ccd_batch) return dicts.
 
 Invalid input raises clash4d.InputError (a ValueError) with the attributes
 file, place (e.g. "objects[0].shape.block.min"), message and exit_code
@@ -62,7 +65,7 @@ from . import _core
 from ._core import (EXIT_INVALID, EXIT_LIMIT, Algebraic, InputError, Scene, __version__, ccd_batch,
                     ccd_edge_edge, ccd_vertex_face, scene_json, validate)
 
-__all__ = ["Answer", "Pair", "Point", "Scene", "Algebraic", "InputError", "EXIT_INVALID", "EXIT_LIMIT",
+__all__ = ["Answer", "Pair", "Point", "Comparison", "Row", "Located", "Disagreement", "Scene", "Algebraic", "InputError", "EXIT_INVALID", "EXIT_LIMIT",
            "check", "compare", "validate", "scene_json", "ccd_vertex_face", "ccd_edge_edge", "ccd_batch",
            "__version__"]
 
@@ -98,6 +101,23 @@ def _point(coordinates, t=None):
 
 def _inside(pair):
     return None if pair is None else (_point(pair[0]), _point(pair[1]))
+
+
+class _DictForm:
+    """The dict form an answer had before it was typed (deprecated, kept for
+    code written against it): item access reads the dict self._dict."""
+
+    def __getitem__(self, key):
+        return self._dict[key]
+
+    def __contains__(self, key):
+        return key in self._dict
+
+    def get(self, key, default=None):
+        return self._dict.get(key, default)
+
+    def keys(self):
+        return self._dict.keys()
 
 
 @dataclasses.dataclass(frozen=True)
@@ -144,7 +164,7 @@ class Pair:
 
 
 @dataclasses.dataclass(frozen=True)
-class Answer:
+class Answer(_DictForm):
     """check's answer. collide: whether some pair collides. pair: the pair
     reported (the first found; with earliest=True the one with the smallest
     t*), None when nothing collides; pairs: every pair found (all of them
@@ -198,19 +218,6 @@ class Answer:
         parts += ["number=%r" % self.number, "semantics=%r" % self.semantics]
         return "Answer(%s)" % ", ".join(parts)
 
-    # The dict form (deprecated, kept for code written against it).
-    def __getitem__(self, key):
-        return self._dict[key]
-
-    def __contains__(self, key):
-        return key in self._dict
-
-    def get(self, key, default=None):
-        return self._dict.get(key, default)
-
-    def keys(self):
-        return self._dict.keys()
-
 
 def check(scene, number="exact", semantics="regularised", earliest=False, all_pairs=False, tolerance=0.0,
           motions=None, *, max_seconds=0.0):
@@ -254,21 +261,138 @@ def compare(scene, semantics="regularised", tolerances=(1e-9,), earliest=False, 
     rounded scene, optionally fcl and bullet) and holds each against the
     exact answer in its own semantics (`clash4d compare`).
 
-    Returns {"file", "name", "agree", "closed_touch", "subjects":
-    [{"subject", "semantics", "tolerance", "reference", "ok", "error",
-    "skipped", "collide", "witness", "witness_valid", "earliest", "t_error",
-    "agrees", "cause"}], "disagreements": [{"subject", "cause", "detail",
-    "semantics"}]}; a witness or earliest is {"objects", "point" (x, y, z, t
-    as Fractions, or None where a number is irrational), "t" (earliest, when
-    rational), "t_text" (the exact text, also of an irrational t*:
-    "root of [...] in (lo, hi) ~ approx")}.
+    Returns a clash4d.Comparison (agree, closed_touch, subjects: a
+    clash4d.Row each, disagreements). comparison["subjects"], ... give the
+    dict of `clash4d compare --json` (deprecated).
 
     motions (keyword only): a motion per object in place of the scene's, as
     for check: every subject sees the moved scene. tolerances are the
     double subjects' (floats: a tolerance is a float parameter, not input
     geometry). max_seconds and Ctrl-C as for check."""
-    return _core.compare(scene, semantics, list(tolerances), earliest, rounded, fcl, bullet, motions=motions,
-                         max_seconds=max_seconds)
+    return Comparison._from(_core.compare(scene, semantics, list(tolerances), earliest, rounded, fcl, bullet,
+                                          motions=motions, max_seconds=max_seconds))
+
+
+@dataclasses.dataclass(frozen=True)
+class Located:
+    """A witness or an earliest contact as a subject of compare gave it.
+    point: a Point of Fractions, None where the subject gave none or a
+    coordinate is irrational (a turning scene's exact answer); t (earliest
+    only): t* as a Fraction when rational, else None. point_text, t_text:
+    the exact text, always there when given: a rational ("3/10"), a double's
+    decimal, or "root of [...] in (lo, hi) ~ approx" (never a rounded
+    stand-in)."""
+    objects: Tuple[str, str]
+    point: Optional[Point] = None
+    t: Optional[Fraction] = None
+    point_text: Optional[Tuple[str, str, str, str]] = None
+    t_text: Optional[str] = None
+
+    @classmethod
+    def _from(cls, d):
+        if d is None:
+            return None
+        return cls(objects=tuple(d["objects"]), point=None if d["point"] is None else _point(d["point"]),
+                   t=d.get("t"), point_text=d.get("point_text"), t_text=d.get("t_text"))
+
+    def __repr__(self):
+        parts = ["objects=%r" % (self.objects,)]
+        if self.t_text is not None:
+            parts.append("t=%s" % (self.t if self.t is not None else self.t_text))
+        if self.point is not None:
+            parts.append("point=%r" % (self.point,))
+        elif self.point_text is not None:
+            parts.append("point_text=%r" % (self.point_text,))
+        return "Located(%s)" % ", ".join(parts)
+
+
+@dataclasses.dataclass(frozen=True)
+class Row:
+    """One subject of compare held against exact. subject: "exact", "exact
+    closed", "double", "double tol=1e-09", "exact-rounded", "fcl", ...;
+    reference: the exact subject. collide, witness, earliest (Located):
+    its answer (None when it did not answer: ok False with error, or
+    skipped with why). witness_valid: the witness checked exactly. t_error:
+    |t* - exact t*|, text. agrees, and cause where it does not
+    ("arithmetic", "input rounding", "contact", "invalid witness")."""
+    subject: str
+    semantics: str
+    collide: Optional[bool]
+    agrees: Optional[bool]
+    cause: Optional[str] = None
+    witness: Optional[Located] = None
+    witness_valid: Optional[bool] = None
+    earliest: Optional[Located] = None
+    t_error: Optional[str] = None
+    tolerance: Optional[float] = None
+    reference: bool = False
+    ok: bool = True
+    error: str = ""
+    skipped: Optional[str] = None
+
+    @classmethod
+    def _from(cls, d):
+        return cls(subject=d["subject"], semantics=d["semantics"], collide=d["collide"], agrees=d["agrees"],
+                   cause=d["cause"], witness=Located._from(d["witness"]), witness_valid=d["witness_valid"],
+                   earliest=Located._from(d["earliest"]), t_error=d["t_error"], tolerance=d["tolerance"],
+                   reference=d["reference"], ok=d["ok"], error=d["error"], skipped=d["skipped"])
+
+    def __repr__(self):
+        parts = [repr(self.subject), "collide=%r" % self.collide, "agrees=%r" % self.agrees]
+        if self.cause is not None:
+            parts.append("cause=%r" % self.cause)
+        if self.earliest is not None:
+            parts.append("t=%s" % (self.earliest.t if self.earliest.t is not None else self.earliest.t_text))
+        if self.skipped is not None:
+            parts.append("skipped=%r" % self.skipped)
+        if not self.ok:
+            parts.append("error=%r" % self.error)
+        return "Row(%s)" % ", ".join(parts)
+
+
+@dataclasses.dataclass(frozen=True)
+class Disagreement:
+    subject: str
+    cause: str
+    detail: str
+    semantics: str
+
+
+@dataclasses.dataclass(frozen=True)
+class Comparison(_DictForm):
+    """compare's answer. agree: no subject disagrees with exact. subjects:
+    a Row per subject, in order (row("double") finds one by name).
+    disagreements: a Disagreement (subject, cause, detail, semantics) each.
+    closed_touch: where exact (regularised) says no collision, whether the
+    closed objects meet all the same. file, name: the scene's."""
+    agree: bool
+    subjects: Tuple[Row, ...]
+    disagreements: Tuple[Disagreement, ...] = ()
+    closed_touch: Optional[bool] = None
+    file: str = ""
+    name: str = ""
+    _dict: dict = dataclasses.field(default_factory=dict, compare=False, repr=False)
+
+    def row(self, subject):
+        """The row of the subject of this name; KeyError naming the subjects there are."""
+        for r in self.subjects:
+            if r.subject == subject:
+                return r
+        raise KeyError("no subject %r (the subjects: %s)" % (subject, ", ".join(r.subject for r in self.subjects)))
+
+    @classmethod
+    def _from(cls, d):
+        return cls(agree=d["agree"], subjects=tuple(Row._from(r) for r in d["subjects"]),
+                   disagreements=tuple(Disagreement(**x) for x in d["disagreements"]),
+                   closed_touch=d["closed_touch"], file=d["file"], name=d["name"], _dict=d)
+
+    def __repr__(self):
+        parts = ["agree=%r" % self.agree, "subjects=%r" % [r.subject for r in self.subjects]]
+        if self.disagreements:
+            parts.append("disagreements=[%s]" % ", ".join("%s: %s" % (x.subject, x.cause) for x in self.disagreements))
+        if self.closed_touch is not None:
+            parts.append("closed_touch=%r" % self.closed_touch)
+        return "Comparison(%s)" % ", ".join(parts)
 
 
 # ---------------------------------------------------------------- Scene's repr
