@@ -9,6 +9,7 @@ Environment: CLASH4D_BUILD_DIR, a configured CMake build folder to reuse
 an interpreter of this Python's version); CLASH4D_JOBS, cmake --build's -j
 (default 1); CLASH4D_CMAKE_ARGS, more arguments for a fresh configure.
 """
+import importlib.util
 import os
 import pathlib
 import re
@@ -64,6 +65,13 @@ class CMakeBuild(build_ext):
         library = pathlib.Path((build / "python" / "libclash4d-path.txt").read_text().strip())
         shutil.copyfile(library, out.parent / library.name)
 
+
+# setuptools before 70 makes wheels with the package wheel; without it pip
+# fails with "invalid command 'bdist_wheel'": say what is missing first.
+if importlib.util.find_spec("wheel") is None:
+    print("setup.py: this Python (%s) has no package wheel, which pip install needs here "
+          "(Debian: apt-get install python3-wheel; offline, pip install --no-build-isolation "
+          "uses this Python's own setuptools and wheel)" % sys.executable, file=sys.stderr)
 
 setup(
     version=version(),
