@@ -65,11 +65,11 @@ from . import _core
 from ._core import (EXIT_INVALID, EXIT_LIMIT, Algebraic, InputError, Scene, __version__, ccd_batch,
                     ccd_edge_edge, ccd_vertex_face, scene_json, validate)
 
-__all__ = ["Answer", "Pair", "Point", "Comparison", "Row", "Located", "Disagreement", "Scene", "Algebraic", "InputError", "EXIT_INVALID", "EXIT_LIMIT",
-           "check", "compare", "validate", "scene_json", "ccd_vertex_face", "ccd_edge_edge", "ccd_batch",
-           "__version__"]
+__all__ = ["Answer", "Pair", "Point", "Comparison", "Row", "Located", "Disagreement", "Scene", "Algebraic",
+           "InputError", "EXIT_INVALID", "EXIT_LIMIT", "check", "compare", "validate", "scene_json",
+           "ccd_vertex_face", "ccd_edge_edge", "ccd_batch", "__version__"]
 
-# The compiled classes under the package's name (reprs, help(), pickling errors name clash4d.X).
+# The compiled classes under the package's name (reprs and help() say clash4d.X).
 for _cls in (Scene, Algebraic):
     _cls.__module__ = __name__
 
