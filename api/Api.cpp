@@ -748,12 +748,16 @@ Check_result check(const Scene& scene, const Check_options& options)
   return run_check(scene, nullptr, options);
 }
 
-Check_result check(const Scene& scene, const std::vector<Motion>& motions, const Check_options& options)
+namespace {
+
+// Given motions (check's and compare's), read and checked: Input_error at
+// "motions[i]", std::invalid_argument naming `function` for a wrong count.
+std::vector<in::Motion> parsed_motions(const Scene& scene, const std::vector<Motion>& motions, const char* function)
 {
   const in::Scene& s = scene.impl().scene;
   if (motions.size() != s.objects.size())
-    throw std::invalid_argument("clash4d::api::check: " + std::to_string(motions.size()) + " motions for a scene of " +
-                                std::to_string(s.objects.size()) + " objects");
+    throw std::invalid_argument(std::string("clash4d::api::") + function + ": " + std::to_string(motions.size()) +
+                                " motions for a scene of " + std::to_string(s.objects.size()) + " objects");
   std::vector<in::Motion> parsed;
   guarded(scene.file(), [&] {
     for (std::size_t i = 0; i < motions.size(); ++i) {
@@ -763,6 +767,14 @@ Check_result check(const Scene& scene, const std::vector<Motion>& motions, const
     }
     return 0;
   });
+  return parsed;
+}
+
+} // namespace
+
+Check_result check(const Scene& scene, const std::vector<Motion>& motions, const Check_options& options)
+{
+  std::vector<in::Motion> parsed = parsed_motions(scene, motions, "check");
   return run_check(scene, &parsed, options);
 }
 
@@ -935,7 +947,9 @@ std::optional<Located> located(const std::optional<in::Located>& l)
 
 } // namespace
 
-Comparison compare(const Scene& scene, const Compare_options& options)
+namespace {
+
+Comparison run_compare(const Scene& scene, const in::Scene& moved, const Compare_options& options)
 {
   in::Compare_options o;
   o.semantics = internal(options.semantics);
@@ -945,7 +959,7 @@ Comparison compare(const Scene& scene, const Compare_options& options)
   o.fcl = options.fcl;
   o.bullet = options.bullet;
   in::Comparison c = budgeted(scene.file(), options.max_seconds, options.cancel, [&] {
-    return guarded(scene.file(), [&] { return in::compare_scene(scene.impl().scene, scene.file(), o); });
+    return guarded(scene.file(), [&] { return in::compare_scene(moved, scene.file(), o); });
   });
   Comparison out;
   out.file = c.file;
@@ -973,6 +987,19 @@ Comparison compare(const Scene& scene, const Compare_options& options)
     out.disagreements.push_back({d.subject, d.cause, d.detail, d.semantics});
   out.json = c.to_json().dump(2);
   return out;
+}
+
+} // namespace
+
+Comparison compare(const Scene& scene, const Compare_options& options)
+{
+  return run_compare(scene, scene.impl().scene, options);
+}
+
+Comparison compare(const Scene& scene, const std::vector<Motion>& motions, const Compare_options& options)
+{
+  std::vector<in::Motion> parsed = parsed_motions(scene, motions, "compare");
+  return run_compare(scene, in::with_motions(scene.impl().scene, parsed), options);
 }
 
 } // namespace api

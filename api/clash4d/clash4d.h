@@ -559,6 +559,11 @@ struct Comparison {
 };
 
 CLASH4D_API Comparison compare(const Scene& scene, const Compare_options& options = {});
+// The scene's shapes with object i moving by motions[i] instead, as
+// check(scene, motions, options): every subject sees the moved scene. Bad
+// motions throw as check's.
+CLASH4D_API Comparison compare(const Scene& scene, const std::vector<Motion>& motions,
+                               const Compare_options& options = {});
 
 } // namespace api
 } // namespace clash4d

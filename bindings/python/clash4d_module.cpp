@@ -1,5 +1,6 @@
-// The Python module `clash4d` (pybind11) on the public C++ API
-// (api/clash4d/clash4d.h). A scene is a dict in the scene format or a path;
+// The compiled module clash4d._core (pybind11) on the public C++ API
+// (api/clash4d/clash4d.h), under the package clash4d (clash4d/__init__.py
+// types its answers). A scene is a dict in the scene format or a path;
 // exact numbers come back as fractions.Fraction. Documented in the module's
 // docstring below and in the README ("Use it from Python").
 #include <clash4d/clash4d.h>
@@ -25,7 +26,10 @@ namespace c4 = clash4d::api;
 
 namespace {
 
-const char* const module_doc = R"(clash4d: exact collision detection for moving polyhedral CSG solids.
+const char* const module_doc = R"(clash4d._core: the compiled part of the package clash4d (exact collision
+detection for moving polyhedral CSG solids). Use `import clash4d`: its
+check returns a typed clash4d.Answer; the check here returns the dict form
+below, which clash4d.Answer wraps.
 
     import clash4d
     from fractions import Fraction
@@ -446,11 +450,11 @@ c4::Motion motion(py::handle v, const std::string& place, const std::string& fil
 }
 
 // check's motions=: None, or one motion per object.
-std::optional<std::vector<c4::Motion>> motions_of(py::handle motions, const c4::Scene& s)
+std::optional<std::vector<c4::Motion>> motions_of(py::handle motions, const c4::Scene& s, const char* function)
 {
   if (motions.is_none()) return std::nullopt;
   if (!py::isinstance<py::sequence>(motions) || py::isinstance<py::str>(motions) || py::isinstance<py::bytes>(motions))
-    throw py::type_error("clash4d.check: motions is a list of motions (str or {\"poses\": [...]}), not " +
+    throw py::type_error(std::string("clash4d.") + function + ": motions is a list of motions (str or {\"poses\": [...]}), not " +
                          short_repr(motions));
   std::vector<c4::Motion> out;
   for (py::handle m : py::tuple(py::reinterpret_borrow<py::sequence>(motions)))
@@ -469,7 +473,7 @@ py::dict check(py::handle scene, const std::string& number, const std::string& s
   o.tolerance = tolerance;
   o.max_seconds = max_seconds;
   c4::Scene s = read_scene(scene);
-  std::optional<std::vector<c4::Motion>> moved = motions_of(motions, s);
+  std::optional<std::vector<c4::Motion>> moved = motions_of(motions, s, "check");
   c4::Check_result r = interruptible([&](const std::atomic<bool>* cancel) {
     c4::Check_options run = o;
     run.cancel = cancel;
@@ -504,6 +508,7 @@ py::object located(const std::optional<c4::Located>& l)
   if (l->t) d["t"] = fraction(*l->t);
   // The comparer's text: also where a turning scene's exact t* is irrational.
   if (!l->t_text.empty()) d["t_text"] = l->t_text;
+  if (!l->point_text[0].empty()) d["point_text"] = py::make_tuple(l->point_text[0], l->point_text[1], l->point_text[2], l->point_text[3]);
   return d;
 }
 
@@ -514,7 +519,7 @@ py::object optional(const std::optional<T>& x)
 }
 
 py::dict compare(py::handle scene, const std::string& semantics, const std::vector<double>& tolerances, bool earliest,
-                 bool rounded, bool fcl, bool bullet, double max_seconds)
+                 bool rounded, bool fcl, bool bullet, py::handle motions, double max_seconds)
 {
   c4::Compare_options o;
   o.semantics = c4::semantics_from_name(semantics);
@@ -525,10 +530,11 @@ py::dict compare(py::handle scene, const std::string& semantics, const std::vect
   o.bullet = bullet;
   o.max_seconds = max_seconds;
   c4::Scene s = read_scene(scene);
+  std::optional<std::vector<c4::Motion>> moved = motions_of(motions, s, "compare");
   c4::Comparison c = interruptible([&](const std::atomic<bool>* cancel) {
     c4::Compare_options run = o;
     run.cancel = cancel;
-    return c4::compare(s, run);
+    return moved ? c4::compare(s, *moved, run) : c4::compare(s, run);
   });
   py::dict out;
   out["file"] = c.file;
@@ -702,7 +708,9 @@ py::object compared(const c4::Algebraic& a, py::handle b, Op op, bool if_nan = f
 
 } // namespace
 
-PYBIND11_MODULE(clash4d, m)
+// The compiled half of the package clash4d (bindings/python/clash4d/__init__.py
+// wraps it: typed answers); its names keep the package's "clash4d." prefix.
+PYBIND11_MODULE(_core, m)
 {
   m.doc() = module_doc;
   m.attr("__version__") = c4::version();
@@ -781,14 +789,17 @@ irrational (t, point and a closed witness, with rotation only). With
 rotation there are no "inside" points (the key is absent).)");
   m.def("compare", &compare, py::arg("scene"), py::arg("semantics") = "regularised",
         py::arg("tolerances") = std::vector<double>{1e-9}, py::arg("earliest") = false, py::arg("rounded") = true,
-        py::arg("fcl") = false, py::arg("bullet") = false, py::kw_only(), py::arg("max_seconds") = 0.0,
+        py::arg("fcl") = false, py::arg("bullet") = false, py::kw_only(), py::arg("motions") = py::none(),
+        py::arg("max_seconds") = 0.0,
         R"(Runs every subject (double, double with each tolerance, exact on the rounded
 scene, optionally fcl and bullet) and holds each against the exact answer in
 its own semantics (`clash4d compare`). Returns {"file", "name", "agree",
 "closed_touch", "subjects": [{"subject", "semantics", "collide", "witness",
 "witness_valid", "earliest", "t_error", "agrees", "cause", "skipped", ...}],
 "disagreements": [{"subject", "cause", "detail", "semantics"}]}.
-max_seconds and Ctrl-C as for check.)");
+motions (keyword only): a motion per object in place of the scene's, as
+for check; every subject sees the moved scene. max_seconds and Ctrl-C as
+for check.)");
   m.def("validate", &validate, py::arg("scene"),
         "Raises clash4d.InputError when the scene is not valid; else returns {\"name\", \"time\": (t_lo, t_hi), "
         "\"objects\": [names]}.");

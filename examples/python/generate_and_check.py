@@ -76,15 +76,15 @@ def main():
                 if interval:
                     expected[("abc"[i], "abc"[j])] = interval[0]
         exact = clash4d.check(scene, earliest=True, all_pairs=True)
-        got = {p["objects"]: p["earliest"]["t"] for p in exact["pairs"]}
-        if got != expected or exact["collide"] != bool(expected):
+        got = {p.objects: p.t for p in exact.pairs}
+        if got != expected or exact.collide != bool(expected):
             wrong += 1
             print("case %d: exact %s, closed form %s\n%s" % (case, got, expected, clash4d.scene_json(scene)))
         colliding += bool(expected)
         double = clash4d.check(scene, number="double", all_pairs=True)
-        if {p["objects"] for p in double["pairs"]} != set(got):
+        if {p.objects for p in double.pairs} != set(got):
             double_disagrees += 1
-            print("case %d: double's colliding pairs %s, exact's %s" % (case, sorted(p["objects"] for p in double["pairs"]), sorted(got)))
+            print("case %d: double's colliding pairs %s, exact's %s" % (case, sorted(p.objects for p in double.pairs), sorted(got)))
     print("%d cases (%d colliding): exact disagrees with the closed form on %d, double with exact on %d"
           % (args.cases, colliding, wrong, double_disagrees))
     return 1 if wrong else 0

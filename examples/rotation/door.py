@@ -64,26 +64,26 @@ def expect(ok, what):
 print("1. the stop where the shut door lies")
 shut = door_scene(["-1/2", "1/2", 0], [0, 1, 2])
 r = clash4d.check(shut, earliest=True)
-print(f"  regularised: {'collision' if r['collide'] else 'no collision'}")
-expect(not r["collide"], "regularised: no collision (the door only touches its stop)")
+print(f"  regularised: {'collision' if r.collide else 'no collision'}")
+expect(not r.collide, "regularised: no collision (the door only touches its stop)")
 r = clash4d.check(shut, semantics="closed", earliest=True)
-e = r.get("earliest")
+e = r.earliest   # a clash4d.Point: x, y, z, t
 if e:
-    print(f"  closed: first contact at t* = {show(e['t'])}, x = {e['point'][0]}, y = {e['point'][1]}")
-expect(r["collide"] and e is not None and e["t"] == 1 and e["point"][0] == 0 and Fraction(1, 2) <= e["point"][1] <= 1,
+    print(f"  closed: first contact at t* = {show(e.t)}, x = {e.x}, y = {e.y}")
+expect(r.collide and e is not None and e.t == 1 and e.x == 0 and Fraction(1, 2) <= e.y <= 1,
        "closed: first contact at t* = 1 on the stop's face x = 0")
 
 print("2. the stop set too far into the swing")
 early = door_scene([0, "9/10", 0], [1, 2, 2])
 for semantics in ("regularised", "closed"):
     r = clash4d.check(early, semantics=semantics, earliest=True)
-    e = r.get("earliest")
+    e = r.earliest
     if e:
-        x, y, z = e["point"]
-        print(f"  {semantics}: t* = {show(e['t'])}")
+        x, y, z, t = e
+        print(f"  {semantics}: t* = {show(t)}")
         print(f"    at x = {show(x)}, y = {y}, z = {z}")
-    ok = (r["collide"] and e is not None and isinstance(e["t"], clash4d.Algebraic) and e["t"].poly == [9, -20, 9]
-          and Fraction(6, 10) < e["t"] < Fraction(63, 100)
+    ok = (r.collide and e is not None and isinstance(e.t, clash4d.Algebraic) and e.t.poly == [9, -20, 9]
+          and Fraction(6, 10) < e.t < Fraction(63, 100)
           and isinstance(x, clash4d.Algebraic) and x.poly == [-19, 0, 100] and x > 0
           and y == Fraction(9, 10) and 0 <= z <= 2)
     expect(ok, f"{semantics}: t* = (10 - sqrt 19) / 9 at x = sqrt(19) / 10, y = 9/10")
@@ -91,7 +91,7 @@ for semantics in ("regularised", "closed"):
 # The same question in plain doubles (the float subject a comparison holds
 # against exact): a double t* within rounding of the exact one.
 d = clash4d.check(early, number="double", earliest=True)
-t = d["earliest"]["t"] if d["collide"] else None
+t = d.t
 print(f"  number='double': t* = {float(t) if t is not None else None}")
 expect(t is not None and abs(float(t) - 0.6267890062732585) < 1e-12, "double: t* within 1e-12 of (10 - sqrt 19) / 9")
 

@@ -103,13 +103,13 @@ def expect(ok, what):
 
 for semantics in ("regularised", "closed"):
     r = clash4d.check(SCENE, semantics=semantics, earliest=True)
-    e = r.get("earliest")
-    print(f"{semantics}: {'collision' if r['collide'] else 'no collision'}")
+    e = r.earliest   # a clash4d.Point: x, y, z, t
+    print(f"{semantics}: {'collision' if r.collide else 'no collision'}")
     if e:
-        t, (x, y, z) = e["t"], e["point"]
-        print(f"  {e['objects'][0]} and {e['objects'][1]}: t* = {t}")   # its polynomial, interval and decimal
+        t, x, y, z = e.t, e.x, e.y, e.z
+        print(f"  {r.objects[0]} and {r.objects[1]}: t* = {t}")   # its polynomial, interval and decimal
         print(f"  contact x = {x}, y = {y}, z = {z}")
-    ok = (r["collide"] and e is not None and e["objects"] == ("fore", "obstacle")
+    ok = (r.collide and e is not None and r.objects == ("fore", "obstacle")
           and isinstance(t, clash4d.Algebraic) and t.poly == [19, -20, 5] and Fraction(3, 2) < t < Fraction(8, 5)
           and x == Fraction(-9, 10)
           and isinstance(y, clash4d.Algebraic) and y.poly == [19, -20, 5] and y > Fraction(12, 5)

@@ -6,6 +6,7 @@ CLASH4D_FIXTURES the fixtures folder:
 Every expected answer is derived by hand in the comment beside it.
 """
 import copy
+import dataclasses
 import json
 import os
 import pathlib
@@ -866,6 +867,221 @@ class Time_limit_and_interrupt(unittest.TestCase):
             signal.signal(signal.SIGINT, old)
         # the module is whole afterwards
         self.assertEqual(clash4d.check(APPROACH, earliest=True)["earliest"]["t"], Fraction(1, 2))
+
+
+class Typed_answers(unittest.TestCase):
+    """check's clash4d.Answer, Pair and Point (issue 60, item 5)."""
+
+    def test_point_has_four_named_coordinates(self):
+        self.assertEqual(clash4d.Point._fields, ("x", "y", "z", "t"))
+        r = clash4d.check(APPROACH, earliest=True)
+        self.assertIsInstance(r, clash4d.Answer)
+        self.assertIsInstance(r.pair, clash4d.Pair)
+        for p in (r.earliest, r.witness):
+            self.assertIsInstance(p, clash4d.Point)
+            self.assertEqual(len(p), 4)
+            self.assertTrue(all(isinstance(c, Fraction) for c in p), p)
+        # APPROACH: t* = 1/2 at x = 3/2 (derived above it); the contact point is on both blocks.
+        e = r.earliest
+        self.assertEqual((e.x, e.t), (Fraction(3, 2), Fraction(1, 2)))
+        self.assertTrue(0 <= e.y <= 1 and 0 <= e.z <= 1)
+        self.assertEqual(r.t, Fraction(1, 2))
+        self.assertEqual(r.objects, ("a", "b"))
+        x, y, z, t = r.witness   # strictly inside a = [t, 1 + t] and b = [2 - t, 3 - t] at its t
+        self.assertTrue(t < x < 1 + t and 2 - t < x < 3 - t and 0 < y < 1 and 0 < z < 1)
+        self.assertTrue(r.pair.verified)
+        self.assertFalse(r.pair.at_start)
+
+    def test_fixtures_hand_known_fractions(self):
+        # clear_collision_head_on: a's face x = 1 + t meets b's x = 5 - t at t* = 2, x = 3.
+        r = clash4d.check(FIXTURES / "contact" / "clear_collision_head_on.json", earliest=True)
+        self.assertEqual((r.t, r.earliest.x), (2, 3))
+        self.assertIsInstance(r.t, Fraction)
+        # approach_stop_decimal (contact/expected.json): b's face 0.1 + 0.1 t stops at t = 2
+        # on exactly 0.3 = a's face: never overlapping, first contact at t* = 2, x = 3/10;
+        # read from the decimals as decimals (in doubles 0.1 + 0.1 * 2 > 0.3).
+        path = FIXTURES / "contact" / "approach_stop_decimal.json"
+        self.assertFalse(clash4d.check(path).collide)
+        r = clash4d.check(path, semantics="closed", earliest=True)
+        self.assertEqual((r.collide, r.t, r.earliest.x), (True, 2, Fraction(3, 10)))
+        # rotation/corner_at_rational_time (rotation/expected.json): turning, yet rational:
+        # t* = 1/3 with the corner at (7/5, -1/5).
+        r = clash4d.check(ROTATION / "corner_at_rational_time.json", earliest=True)
+        self.assertEqual((r.t, r.earliest.x, r.earliest.y), (Fraction(1, 3), Fraction(7, 5), Fraction(-1, 5)))
+        self.assertTrue(-1 <= r.earliest.z <= 1)
+
+    def test_irrational_numbers_stay_algebraic(self):
+        # square_into_slab (rotation/expected.json): t* = (5 - sqrt 14) / 11, the root of
+        # 11t^2 - 10t + 1 in (1/10, 1/8), at y = -sqrt(14) / 5 (root of 25y^2 - 14), x = 6/5.
+        r = clash4d.check(ROTATION / "square_into_slab.json", earliest=True)
+        t, e = r.t, r.earliest
+        self.assertIsInstance(t, clash4d.Algebraic)
+        self.assertEqual(t.poly, [1, -10, 11])
+        self.assertTrue(Fraction(1, 10) < t < Fraction(1, 8))
+        self.assertEqual(e.t, t)
+        self.assertEqual(e.x, Fraction(6, 5))
+        self.assertEqual(e.y.poly, [-14, 0, 25])
+        self.assertTrue(e.y < 0)
+        self.assertIn("t=root of 11x^2 - 10x + 1", repr(e))
+
+    def test_all_pairs_are_pairs(self):
+        # As test_all_pairs: a/b at t* = 1/2, c/e overlapping from the start.
+        s = scene(obj("a", block((0, 0, 0), (1, 1, 1)), "vel 1 0 0"),
+                  obj("b", block((2, 0, 0), (3, 1, 1)), "vel -1 0 0"),
+                  obj("c", block((10, 10, 10), (11, 11, 11))),
+                  obj("e", block(("10.5", 10, 10), (12, 11, 11))))
+        r = clash4d.check(s, all_pairs=True, earliest=True)
+        self.assertEqual([(p.objects, p.t) for p in r.pairs], [(("a", "b"), Fraction(1, 2)), (("c", "e"), 0)])
+        self.assertEqual(r.objects, ("c", "e"))   # the reported pair: the smallest t*
+        self.assertTrue(r.pair.at_start)
+        self.assertEqual(r.pair, r.pairs[1])
+        self.assertIn("pairs=2", repr(r))
+        self.assertIsNone(clash4d.check(s).t)   # without earliest, no t*
+
+    def test_no_collision(self):
+        r = clash4d.check(TOUCH)
+        self.assertEqual((r.collide, r.pair, r.pairs, r.t, r.earliest, r.witness), (False, None, (), None, None, None))
+        self.assertEqual(repr(r), "Answer(collide=False, number='exact', semantics='regularised')")
+        # Closed: the touching counts; first contact at t = 1 on the face x = 2, and the
+        # closed witness comes with a point strictly inside each object.
+        r = clash4d.check(TOUCH, semantics="closed", earliest=True)
+        self.assertEqual((r.t, r.earliest.x, r.witness.x), (1, 2, 2))
+        self.assertEqual(len(r.pair.witness_inside), 2)
+        self.assertIsInstance(r.pair.witness_inside[0], clash4d.Point)
+
+    def test_reprs(self):
+        self.assertEqual(repr(clash4d.Point(Fraction(3, 2), 0, Fraction(-1, 3), Fraction(1, 2))),
+                         "Point(x=3/2, y=0, z=-1/3, t=1/2)")
+        r = clash4d.check(FIXTURES / "contact" / "clear_collision_head_on.json", earliest=True)
+        self.assertTrue(repr(r).startswith("Answer(collide=True, objects=('a', 'b'), earliest=Point(x=3, "), repr(r))
+        self.assertIn("t=2)", repr(r.earliest))
+        self.assertTrue(repr(r.pair).startswith("Pair(objects=('a', 'b'), earliest=Point("), repr(r.pair))
+        self.assertEqual(repr(clash4d.Scene(APPROACH)), "Scene('test', time=[0, 10], objects=[a: vel 1 0 0, b: vel -1 0 0])")
+        self.assertEqual(repr(clash4d.Scene(TOUCH)),
+                         "Scene('test', time=[0, 10], objects=[a: rest until 0 vel 1 0 0 until 1 rest, b: rest])")
+        self.assertIn("square: poses (2, turning), slab: rest", repr(clash4d.Scene(SQUARE_INTO_SLAB)))
+        moving = scene(*(obj("o%d" % i, block((3 * i, 0, 0), (3 * i + 1, 1, 1))) for i in range(12)))
+        self.assertIn("... 12 objects in all", repr(clash4d.Scene(moving)))
+
+    def test_dict_form_still_answers(self):
+        # Deprecated, kept: the values of the dict that check returned before.
+        r = clash4d.check(APPROACH, earliest=True)
+        self.assertTrue(r["collide"])
+        self.assertEqual(r["earliest"]["t"], r.t)
+        self.assertEqual(r["earliest"]["point"], [r.earliest.x, r.earliest.y, r.earliest.z])
+        self.assertEqual(r["witness"]["point"], list(r.witness))
+        self.assertIn("earliest", r)
+        self.assertNotIn("earliest", clash4d.check(APPROACH))
+        self.assertIsNone(clash4d.check(TOUCH).get("witness"))
+
+    def test_answers_compare_equal(self):
+        self.assertEqual(clash4d.check(APPROACH, earliest=True), clash4d.check(clash4d.Scene(APPROACH), earliest=True))
+        self.assertNotEqual(clash4d.check(APPROACH, earliest=True), clash4d.check(APPROACH))
+        with self.assertRaises(dataclasses.FrozenInstanceError):   # answers are values
+            clash4d.check(APPROACH).collide = False
+
+
+class Compare_with_motions(unittest.TestCase):
+    """compare(..., motions=[...]): every subject sees the scene moved otherwise."""
+
+    def rows(self, c):   # the dict form's rows (deprecated, still answering)
+        return {r["subject"]: r for r in c["subjects"]}
+
+    def test_other_motions(self):
+        # As test_prepared_scene_under_other_motions: a at rest, b at -2: t* = 1/2 at x = 1.
+        for s in (clash4d.Scene(APPROACH), APPROACH):
+            c = clash4d.compare(s, earliest=True, motions=["rest", "vel -2 0 0"])
+            self.assertTrue(c["agree"])
+            exact = self.rows(c)["exact"]["earliest"]
+            self.assertEqual((exact["t"], exact["point"][0]), (Fraction(1, 2), 1))
+        # b covers the gap of 1 and stops touching a: no collision, but the closed objects meet.
+        c = clash4d.compare(APPROACH, motions=["rest", "vel -1 0 0 until 1 rest"])
+        self.assertEqual(c["closed_touch"], True)
+        self.assertFalse(self.rows(c)["exact"]["collide"])
+        self.assertTrue(self.rows(c)["exact closed"]["collide"])
+        # Both at rest: nobody collides.
+        c = clash4d.compare(APPROACH, motions=["rest", "rest"])
+        self.assertFalse(any(r["collide"] for r in c["subjects"] if r["collide"] is not None))
+
+    def test_turning_motions(self):
+        # The square at rest beside the slab, given square_into_slab's quarter turn:
+        # its exact t* is irrational, so text only (t_text, never a rounded Fraction).
+        at_rest = scene(obj("square", block((-1, -1, -1), (1, 1, 1))),
+                        obj("slab", block((Fraction(6, 5), -1, -1), (3, 1, 1))), time=(0, 1))
+        self.assertFalse(clash4d.compare(at_rest)["subjects"][0]["collide"])
+        c = clash4d.compare(at_rest, earliest=True, motions=[quarter_turn(), "rest"])
+        exact = self.rows(c)["exact"]["earliest"]
+        self.assertNotIn("t", exact)
+        self.assertTrue(exact["t_text"].startswith("root of [1, -10, 11]"), exact["t_text"])
+
+    def test_bad_motions(self):
+        s = clash4d.Scene(APPROACH)
+        with self.assertRaises(clash4d.InputError) as c:
+            clash4d.compare(s, motions=["rest", "vel 1 0"])
+        self.assertEqual(c.exception.place, "motions[1]")
+        with self.assertRaises(ValueError):
+            clash4d.compare(s, motions=["rest"])
+        with self.assertRaises(TypeError):
+            clash4d.compare(s, motions="rest")
+
+    def test_typed_comparison(self):
+        # approach_stop_decimal (contact/expected.json): exact says touching only (closed:
+        # first contact at t* = 2, x = 3/10); double, reading 0.1 + 0.1 * 2 > 0.3, collides.
+        c = clash4d.compare(FIXTURES / "contact" / "approach_stop_decimal.json", earliest=True)
+        self.assertIsInstance(c, clash4d.Comparison)
+        self.assertFalse(c.agree)
+        self.assertTrue(c.closed_touch)
+        self.assertEqual(c.row("exact").collide, False)
+        self.assertTrue(c.row("exact").reference)
+        e = c.row("exact closed").earliest
+        self.assertIsInstance(e, clash4d.Located)
+        self.assertEqual((e.objects, e.t, e.point.x, e.t_text), (("a", "b"), 2, Fraction(3, 10), "2"))
+        self.assertIsInstance(e.point, clash4d.Point)
+        double = c.row("double")
+        self.assertEqual((double.collide, double.agrees, double.cause), (True, False, "input rounding"))
+        self.assertIn(clash4d.Disagreement("double", "input rounding", c.disagreements[0].detail, "regularised"),
+                      c.disagreements)
+        self.assertTrue(repr(c).startswith("Comparison(agree=False, subjects=['exact', "), repr(c))
+        self.assertIn("double: input rounding", repr(c))
+        self.assertEqual(repr(c.row("exact")), "Row('exact', collide=False, agrees=True)")
+        with self.assertRaises(KeyError):
+            c.row("no such subject")
+        self.assertEqual(c["agree"], False)   # the dict form, deprecated
+        self.assertEqual(c["subjects"][0]["subject"], "exact")
+        # Turning: the exact t* and contact point are irrational: text only, never rounded.
+        e = clash4d.compare(SQUARE_INTO_SLAB, earliest=True).row("exact").earliest
+        self.assertIsNone(e.t)
+        self.assertIsNone(e.point)
+        self.assertTrue(e.t_text.startswith("root of [1, -10, 11]"), e.t_text)
+        self.assertEqual(e.point_text[0], "6/5")
+        self.assertTrue(e.point_text[1].startswith("root of [-14, 0, 25]"), e.point_text)
+
+    def test_ctrl_c_interrupts_a_compare_with_motions(self):
+        # 24 copies of the skewed pair: the whole comparison takes about 9 s here
+        # (its exact subject, filtered, about 4 s per 12 copies); stopped after 0.3 s.
+        slow = slow_scene(24)
+        prepared = clash4d.Scene(slow)
+        own = [o["motion"] for o in slow["objects"]]
+        old = signal.signal(signal.SIGINT, signal.default_int_handler)
+        timer = threading.Timer(0.3, os.kill, (os.getpid(), signal.SIGINT))
+        start = time.monotonic()
+        try:
+            timer.start()
+            with self.assertRaises(KeyboardInterrupt):
+                clash4d.compare(prepared, motions=own)
+            self.assertLess(time.monotonic() - start, 3)
+        finally:
+            timer.cancel()
+            signal.signal(signal.SIGINT, old)
+
+    def test_max_seconds_with_motions(self):
+        path = FIXTURES / "paper" / "section6_weaving_vehicle_skewed.json"
+        own = [o.get("motion", "rest") for o in json.loads(path.read_text())["objects"]]
+        with self.assertRaises(clash4d.InputError) as c:
+            clash4d.compare(clash4d.Scene(path), motions=own, max_seconds=1e-9)
+        self.assertEqual((c.exception.exit_code, c.exception.place), (clash4d.EXIT_LIMIT, "max_seconds"))
+        r = clash4d.check(APPROACH, earliest=True, max_seconds=1000)
+        self.assertEqual(r.t, Fraction(1, 2))
 
 
 if __name__ == "__main__":
