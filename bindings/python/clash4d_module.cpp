@@ -43,21 +43,8 @@ below, which clash4d.Answer wraps.
     r = clash4d.check(scene, earliest=True)
     r["collide"], r["earliest"]["t"]     # True, Fraction(1, 2)
 
-A scene is a dict (or list/tuple-valued JSON-like structure) in the scene
-format, or the path of a scene file (str or os.PathLike). Numbers in a dict
-are read exactly: int, fractions.Fraction (any numbers.Rational), str
-("0.1", "-2.5e-3", "1/3": the scene format's forms), and float or
-decimal.Decimal by their exact value (Fraction(0.1) is
-3602879701896397/36028797018963968, not 1/10: write "0.1" or Fraction(1, 10)
-for a tenth). Motions are strings ("vel 1 0 0", "rest until 0 vel 1/2 0 0
-until 5 rest") or poses, which may turn the object (the scene format's
-section "Motion with rotation", poses):
-
-    {"poses": [{"t": 0}, {"t": 1, "translate": [0, 0, 1], "rotate": [1, 0, 0, 1]}]}
-
-(rotate: a quaternion w, x, y, z, not necessarily unit; defaults translate
-[0, 0, 0], rotate [1, 0, 0, 0]). Relative file paths inside a dict scene
-(mesh solids) are relative to the current directory.
+Scenes, numbers and motions are as the clash4d package's docstring says
+(help(clash4d)).
 
 A dict is refused with clash4d.InputError at the place of the fault (e.g.
 "objects[0].shape") when it holds itself (a cycle: a list that contains

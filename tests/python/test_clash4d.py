@@ -103,6 +103,9 @@ class Check(unittest.TestCase):
                   obj("e", block(("10.5", 10, 10), (12, 11, 11))))
         r = clash4d.check(s, all_pairs=True, earliest=True)
         self.assertEqual([p["objects"] for p in r["pairs"]], [("a", "b"), ("c", "e")])
+        # The typed form: Pairs with their t*, the reported pair the smallest t*.
+        self.assertEqual([(p.objects, p.t) for p in r.pairs], [(("a", "b"), Fraction(1, 2)), (("c", "e"), 0)])
+        self.assertEqual(r.objects, ("c", "e"))
         self.assertEqual([p["earliest"]["t"] for p in r["pairs"]], [Fraction(1, 2), 0])
         self.assertEqual(r["earliest"]["objects"], ("c", "e"))   # the smallest t*
         self.assertTrue(r["pairs"][1]["earliest"]["at_start"])
@@ -923,20 +926,6 @@ class Typed_answers(unittest.TestCase):
         self.assertEqual(e.y.poly, [-14, 0, 25])
         self.assertTrue(e.y < 0)
         self.assertIn("t=root of 11x^2 - 10x + 1", repr(e))
-
-    def test_all_pairs_are_pairs(self):
-        # As test_all_pairs: a/b at t* = 1/2, c/e overlapping from the start.
-        s = scene(obj("a", block((0, 0, 0), (1, 1, 1)), "vel 1 0 0"),
-                  obj("b", block((2, 0, 0), (3, 1, 1)), "vel -1 0 0"),
-                  obj("c", block((10, 10, 10), (11, 11, 11))),
-                  obj("e", block(("10.5", 10, 10), (12, 11, 11))))
-        r = clash4d.check(s, all_pairs=True, earliest=True)
-        self.assertEqual([(p.objects, p.t) for p in r.pairs], [(("a", "b"), Fraction(1, 2)), (("c", "e"), 0)])
-        self.assertEqual(r.objects, ("c", "e"))   # the reported pair: the smallest t*
-        self.assertTrue(r.pair.at_start)
-        self.assertEqual(r.pair, r.pairs[1])
-        self.assertIn("pairs=2", repr(r))
-        self.assertIsNone(clash4d.check(s).t)   # without earliest, no t*
 
     def test_no_collision(self):
         r = clash4d.check(TOUCH)
