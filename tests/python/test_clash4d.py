@@ -151,11 +151,14 @@ class Check(unittest.TestCase):
 
     def test_bad_motions(self):
         s = clash4d.Scene(APPROACH)
-        with self.assertRaises(clash4d.InputError) as e:
-            clash4d.check(s, motions=["rest", "vel 1 0"])
-        self.assertEqual(e.exception.place, "motions[1]")
-        with self.assertRaises(ValueError):
-            clash4d.check(s, motions=["rest"])
+        for run in (clash4d.check, clash4d.compare):   # compare reads motions as check does
+            with self.assertRaises(clash4d.InputError) as e:
+                run(s, motions=["rest", "vel 1 0"])
+            self.assertEqual(e.exception.place, "motions[1]")
+            with self.assertRaises(ValueError):
+                run(s, motions=["rest"])
+        with self.assertRaises(TypeError):
+            clash4d.compare(s, motions="rest")
         with self.assertRaises(clash4d.InputError):
             clash4d.Scene({"format": "clash4d-scene/1"})
 
@@ -1003,15 +1006,6 @@ class Compare_with_motions(unittest.TestCase):
         self.assertNotIn("t", exact)
         self.assertTrue(exact["t_text"].startswith("root of [1, -10, 11]"), exact["t_text"])
 
-    def test_bad_motions(self):
-        s = clash4d.Scene(APPROACH)
-        with self.assertRaises(clash4d.InputError) as c:
-            clash4d.compare(s, motions=["rest", "vel 1 0"])
-        self.assertEqual(c.exception.place, "motions[1]")
-        with self.assertRaises(ValueError):
-            clash4d.compare(s, motions=["rest"])
-        with self.assertRaises(TypeError):
-            clash4d.compare(s, motions="rest")
 
     def test_typed_comparison(self):
         # approach_stop_decimal (contact/expected.json): exact says touching only (closed:
