@@ -53,19 +53,16 @@ int find_root(std::vector<int>& parent, int i)
 
 using Exact_geometry = CGAL::Cartesian<Rational>;
 using Surface = CGAL::Surface_mesh<Exact_geometry::Point_3>;
+using Facets = std::vector<std::vector<int>>;                         // vertex ids, per facet
+using Edges = std::map<std::pair<int, int>, std::vector<Edge_use>>;  // undirected edge -> its sides
 
-} // namespace
-
-Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name)
+// Equal points are one vertex (STL writes each facet's own copies): the
+// distinct points go to out.vertices, and the facets are given by their ids.
+Facets merge_vertices(const Mesh& mesh, const Fail& fail, Checked_mesh& out)
 {
-  Fail fail{file_name};
-  if (mesh.facets.empty()) fail("", "no facets");
-  Checked_mesh out;
-
-  // Equal points are one vertex (STL writes each facet's own copies).
   std::map<P3, int> id_of;
   std::vector<int> id(mesh.vertices.size(), -1);
-  std::vector<std::vector<int>> facets(mesh.facets.size());
+  Facets facets(mesh.facets.size());
   for (std::size_t f = 0; f < mesh.facets.size(); ++f)
     for (int v : mesh.facets[f]) {
       if (v < 0 || static_cast<std::size_t>(v) >= mesh.vertices.size())
@@ -77,54 +74,67 @@ Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name)
       }
       facets[f].push_back(id[v]);
     }
-  const auto& V = out.vertices;
+  return facets;
+}
 
-  // Facets: distinct vertices, non-zero area, planar, strictly convex.
+// A polygon of more than three vertices: planar (normal N) and strictly
+// convex, every other vertex strictly left of each edge.
+void check_polygon(const std::vector<int>& F, int fi, const P3& N, const std::vector<P3>& V, const Fail& fail)
+{
+  std::size_t n = F.size();
+  for (std::size_t i = 1; i < n; ++i)
+    if (!CGAL::is_zero(dot(N, sub(V[F[i]], V[F[0]]))))
+      fail(facet_place(fi), "not planar: vertex " + std::to_string(i) + " " + text(V[F[i]]) + " is off the plane of the facet");
+  for (std::size_t i = 0; i < n; ++i) {
+    const P3 &a = V[F[i]], &b = V[F[(i + 1) % n]];
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == i || j == (i + 1) % n) continue;
+      if (CGAL::sign(dot(cross(sub(b, a), sub(V[F[j]], a)), N)) != CGAL::POSITIVE)
+        fail(facet_place(fi), "not a strictly convex polygon (vertices " + std::to_string(i) + ", " +
+                                  std::to_string((i + 1) % n) + " and " + std::to_string(j) +
+                                  "): facets must be strictly convex, with no three vertices on a line");
+    }
+  }
+}
+
+// Facets: distinct vertices, non-zero area, planar, strictly convex. Their
+// normals (Newell's, unnormalised), and their fans of triangles in out.
+std::vector<P3> check_facets(const Facets& facets, const Fail& fail, Checked_mesh& out)
+{
+  const auto& V = out.vertices;
   std::vector<P3> normal(facets.size());
   for (std::size_t f = 0; f < facets.size(); ++f) {
     const std::vector<int>& F = facets[f];
     int fi = static_cast<int>(f);
-    std::size_t n = F.size();
     std::set<int> seen;
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < F.size(); ++i)
       if (!seen.insert(F[i]).second)
         fail(facet_place(fi), "vertex " + std::to_string(i) + " " + text(V[F[i]]) + " repeats an earlier vertex of the facet");
     P3 N{Rational(0), Rational(0), Rational(0)};
-    for (std::size_t i = 0; i < n; ++i) {
-      P3 c = cross(V[F[i]], V[F[(i + 1) % n]]);
+    for (std::size_t i = 0; i < F.size(); ++i) {
+      P3 c = cross(V[F[i]], V[F[(i + 1) % F.size()]]);
       for (int k = 0; k < 3; ++k) N[k] += c[k];
     }
     if (is_zero(N)) fail(facet_place(fi), "zero area (its vertices are collinear)");
-    if (n > 3) {
-      for (std::size_t i = 1; i < n; ++i)
-        if (!CGAL::is_zero(dot(N, sub(V[F[i]], V[F[0]]))))
-          fail(facet_place(fi), "not planar: vertex " + std::to_string(i) + " " + text(V[F[i]]) + " is off the plane of the facet");
-      for (std::size_t i = 0; i < n; ++i) {
-        const P3 &a = V[F[i]], &b = V[F[(i + 1) % n]];
-        for (std::size_t j = 0; j < n; ++j) {
-          if (j == i || j == (i + 1) % n) continue;
-          if (CGAL::sign(dot(cross(sub(b, a), sub(V[F[j]], a)), N)) != CGAL::POSITIVE)
-            fail(facet_place(fi), "not a strictly convex polygon (vertices " + std::to_string(i) + ", " +
-                                      std::to_string((i + 1) % n) + " and " + std::to_string(j) +
-                                      "): facets must be strictly convex, with no three vertices on a line");
-        }
-      }
-    }
+    if (F.size() > 3) check_polygon(F, fi, N, V, fail);
     normal[f] = N;
-    for (std::size_t i = 1; i + 1 < n; ++i) {
+    for (std::size_t i = 1; i + 1 < F.size(); ++i) {
       out.triangles.push_back({F[0], F[i], F[i + 1]});
       out.facet_of.push_back(fi);
     }
   }
+  return normal;
+}
 
-  // Edges: each shared by exactly two facets, once in each direction.
-  std::map<std::pair<int, int>, std::vector<Edge_use>> edges;
-  for (std::size_t f = 0; f < facets.size(); ++f)
-    for (std::size_t i = 0; i < facets[f].size(); ++i) {
-      int a = facets[f][i], b = facets[f][(i + 1) % facets[f].size()];
-      edges[{std::min(a, b), std::max(a, b)}].push_back({static_cast<int>(f), a < b});
-    }
-  auto edge_text = [&](const std::pair<int, int>& e) { return "the edge from " + text(V[e.first]) + " to " + text(V[e.second]); };
+std::string edge_text(const std::vector<P3>& V, const std::pair<int, int>& e)
+{
+  return "the edge from " + text(V[e.first]) + " to " + text(V[e.second]);
+}
+
+// Each edge shared by exactly two facets: no more (a manifold), no fewer
+// (closed). The fault reported is the lowest facet's.
+void check_edge_counts(const Edges& edges, const std::vector<P3>& V, const Fail& fail)
+{
   int worst = -1;
   std::string why;
   auto note = [&](int facet, const std::string& message) {
@@ -135,20 +145,34 @@ Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name)
       std::string list;
       for (const auto& u : uses) list += (list.empty() ? "" : ", ") + std::to_string(u.facet);
       note(uses.front().facet, "edge shared by " + std::to_string(uses.size()) + " facets (" + list +
-                                   "): the mesh is not a manifold along " + edge_text(e));
+                                   "): the mesh is not a manifold along " + edge_text(V, e));
     }
   if (worst >= 0) fail(facet_place(worst), why);
   for (const auto& [e, uses] : edges)
     if (uses.size() == 1)
-      note(uses.front().facet, "edge not shared with any other facet: the mesh has a hole (it is not closed) along " + edge_text(e));
+      note(uses.front().facet, "edge not shared with any other facet: the mesh has a hole (it is not closed) along " + edge_text(V, e));
   if (worst >= 0) fail(facet_place(worst), why);
+}
+
+// Edges: each shared by exactly two facets, once in each direction (the
+// facets consistently oriented; the one reported is the facet with most
+// conflicts).
+Edges check_edges(const Facets& facets, const std::vector<P3>& V, const Fail& fail)
+{
+  Edges edges;
+  for (std::size_t f = 0; f < facets.size(); ++f)
+    for (std::size_t i = 0; i < facets[f].size(); ++i) {
+      int a = facets[f][i], b = facets[f][(i + 1) % facets[f].size()];
+      edges[{std::min(a, b), std::max(a, b)}].push_back({static_cast<int>(f), a < b});
+    }
+  check_edge_counts(edges, V, fail);
   std::vector<int> conflicts(facets.size(), 0);
   std::vector<std::string> example(facets.size());
   for (const auto& [e, uses] : edges)
     if (uses[0].forward == uses[1].forward)
       for (int k = 0; k < 2; ++k) {
         int f = uses[k].facet, g = uses[1 - k].facet;
-        if (conflicts[f]++ == 0) example[f] = "facet " + std::to_string(g) + " across " + edge_text(e);
+        if (conflicts[f]++ == 0) example[f] = "facet " + std::to_string(g) + " across " + edge_text(V, e);
       }
   auto most = std::max_element(conflicts.begin(), conflicts.end());
   if (*most > 0) {
@@ -156,8 +180,12 @@ Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name)
     fail(facet_place(f), "oriented against its neighbours across " + std::to_string(*most) + " of its edges (" + example[f] +
                              "): a flipped facet, or facets not consistently oriented");
   }
+  return edges;
+}
 
-  // Vertices: the facets around each form one fan (no pinched vertex).
+// Vertices: the facets around each form one fan (no pinched vertex).
+void check_fans(const Facets& facets, const std::vector<P3>& V, const Fail& fail)
+{
   std::map<std::pair<int, int>, int> facet_of_edge;   // directed edge -> facet
   std::vector<std::vector<std::pair<int, int>>> around(V.size());   // (facet, position)
   for (std::size_t f = 0; f < facets.size(); ++f)
@@ -185,41 +213,53 @@ Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name)
                                        " separate fans of facets meet at the point (facet " +
                                        std::to_string(around[v].front().first) + " is in one)");
   }
+}
 
-  // Volume: the sum of the triangles' signed tetrahedra from the origin.
+// Volume: the sum of the triangles' signed tetrahedra from the origin,
+// positive (facets counter-clockwise seen from outside).
+Rational checked_volume(const Checked_mesh& m, const Fail& fail)
+{
+  const auto& V = m.vertices;
   Rational six_volume(0);
-  for (const auto& t : out.triangles) six_volume += dot(V[t[0]], cross(V[t[1]], V[t[2]]));
-  out.volume = six_volume / Rational(6);
-  if (CGAL::is_zero(out.volume)) fail("", "the mesh bounds no volume (signed volume 0)");
-  if (out.volume < 0)
-    fail("", "the facets are oriented inward (signed volume " + to_string(out.volume) +
+  for (const auto& t : m.triangles) six_volume += dot(V[t[0]], cross(V[t[1]], V[t[2]]));
+  Rational volume = six_volume / Rational(6);
+  if (CGAL::is_zero(volume)) fail("", "the mesh bounds no volume (signed volume 0)");
+  if (volume < 0)
+    fail("", "the facets are oriented inward (signed volume " + to_string(volume) +
                  " < 0): list each facet's vertices counter-clockwise seen from outside");
+  return volume;
+}
 
-  // No two facets cross (CGAL's exact self-intersection test on the triangles).
+// No two facets cross (CGAL's exact self-intersection test on the
+// triangles); the pair reported is the one with the lowest facet.
+void check_no_crossing(const Checked_mesh& m, const Fail& fail)
+{
   Surface surface;
   std::vector<Surface::Vertex_index> handle;
-  for (const auto& p : V) handle.push_back(surface.add_vertex(Exact_geometry::Point_3(p[0], p[1], p[2])));
+  for (const auto& p : m.vertices) handle.push_back(surface.add_vertex(Exact_geometry::Point_3(p[0], p[1], p[2])));
   std::vector<int> facet_of_face;
-  for (std::size_t t = 0; t < out.triangles.size(); ++t) {
-    const auto& T = out.triangles[t];
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const auto& T = m.triangles[t];
     if (surface.add_face(handle[T[0]], handle[T[1]], handle[T[2]]) == Surface::null_face())
-      fail(facet_place(out.facet_of[t]), "the facet cannot be joined to its neighbours into one surface");
-    facet_of_face.push_back(out.facet_of[t]);
+      fail(facet_place(m.facet_of[t]), "the facet cannot be joined to its neighbours into one surface");
+    facet_of_face.push_back(m.facet_of[t]);
   }
   std::vector<std::pair<Surface::Face_index, Surface::Face_index>> crossing;
   CGAL::Polygon_mesh_processing::self_intersections(surface, std::back_inserter(crossing));
-  if (!crossing.empty()) {
-    int a = facet_of_face[crossing.front().first], b = facet_of_face[crossing.front().second];
-    for (const auto& c : crossing) {
-      int x = facet_of_face[c.first], y = facet_of_face[c.second];
-      if (std::min(x, y) < std::min(a, b)) a = x, b = y;
-    }
-    if (a > b) std::swap(a, b);
-    fail(facet_place(a), "crosses facet " + std::to_string(b) + ": the surface intersects itself");
+  if (crossing.empty()) return;
+  int a = facet_of_face[crossing.front().first], b = facet_of_face[crossing.front().second];
+  for (const auto& c : crossing) {
+    int x = facet_of_face[c.first], y = facet_of_face[c.second];
+    if (std::min(x, y) < std::min(a, b)) a = x, b = y;
   }
+  if (a > b) std::swap(a, b);
+  fail(facet_place(a), "crosses facet " + std::to_string(b) + ": the surface intersects itself");
+}
 
-  // Convex: one connected surface whose every edge is convex (the facet
-  // beyond the edge is on or below this facet's plane).
+// Convex: one connected surface whose every edge is convex (the facet
+// beyond the edge is on or below this facet's plane).
+bool is_convex(const Facets& facets, const Edges& edges, const std::vector<P3>& normal, const std::vector<P3>& V)
+{
   std::vector<int> parent(facets.size());
   std::iota(parent.begin(), parent.end(), 0);
   bool convex = true;
@@ -234,7 +274,25 @@ Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name)
   }
   int components = 0;
   for (std::size_t f = 0; f < facets.size(); ++f) components += find_root(parent, static_cast<int>(f)) == static_cast<int>(f);
-  out.convex = convex && components == 1;
+  return convex && components == 1;
+}
+
+} // namespace
+
+// The checks in order, each failing at the first fault it finds
+// (docs/meshes.md): facets, edges, vertices, volume, crossings.
+Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name)
+{
+  Fail fail{file_name};
+  if (mesh.facets.empty()) fail("", "no facets");
+  Checked_mesh out;
+  Facets facets = merge_vertices(mesh, fail, out);
+  std::vector<P3> normal = check_facets(facets, fail, out);
+  Edges edges = check_edges(facets, out.vertices, fail);
+  check_fans(facets, out.vertices, fail);
+  out.volume = checked_volume(out, fail);
+  check_no_crossing(out, fail);
+  out.convex = is_convex(facets, edges, normal, out.vertices);
   return out;
 }
 
