@@ -515,135 +515,176 @@ private:
   std::size_t pos_ = 0;
 };
 
-Mesh read_ply(std::string_view bytes, const Place& place, const Mesh_limits& limits)
+// A PLY header: the body's encoding (0 ascii, 1 little endian, 2 big
+// endian), its elements, and where the body starts.
+struct Ply_header {
+  int encoding = -1;
+  std::vector<Ply_element> elements;
+  std::size_t body_line = 0, body_pos = 0;
+};
+
+// "element NAME COUNT", its count within the limits.
+Ply_element ply_element(const std::vector<std::string>& words, std::size_t line, const Place& place, const Mesh_limits& limits)
+{
+  long long n;
+  if (words.size() != 3 || !integer_of(words[2], n) || n < 0) place.at_line(line, "expected \"element NAME COUNT\"");
+  std::size_t limit = words[1] == "vertex" ? limits.vertices : words[1] == "face" ? limits.facets : limits.facets + limits.vertices;
+  check_count(place, "line " + std::to_string(line), static_cast<std::size_t>(n), limit,
+              words[1] == "vertex" ? "vertices" : words[1] == "face" ? "facets" : "items");
+  return {words[1], static_cast<std::size_t>(n), line, {}};
+}
+
+// "property TYPE NAME" or "property list TYPE TYPE NAME".
+Ply_property ply_property(const std::vector<std::string>& words, std::size_t line, const Place& place)
+{
+  Ply_property p;
+  bool ok;
+  p.name = words.back();
+  if (words.size() == 5 && words[1] == "list") {
+    p.list = true;
+    ok = ply_type_of(words[2], p.count_type) && ply_type_of(words[3], p.type);
+  } else {
+    ok = words.size() == 3 && ply_type_of(words[1], p.type);
+  }
+  if (!ok) place.at_line(line, "expected \"property TYPE NAME\" or \"property list TYPE TYPE NAME\"");
+  return p;
+}
+
+int ply_encoding(const std::vector<std::string>& words, std::size_t line, const Place& place)
+{
+  if (words.size() != 3 || words[2] != "1.0") place.at_line(line, "expected \"format ENCODING 1.0\"");
+  if (words[1] == "ascii") return 0;
+  if (words[1] == "binary_little_endian") return 1;
+  if (words[1] == "binary_big_endian") return 2;
+  place.at_line(line, "unknown format '" + shown(words[1]) + "'");
+}
+
+Ply_header read_ply_header(std::string_view bytes, const Place& place, const Mesh_limits& limits)
 {
   if (bytes.empty()) place.fail("", "empty file");
   Text_cursor header(bytes, false);
   std::string_view tok;
   if (!header.on_line(tok) || tok != "ply") place.at_line(1, "expected \"ply\"");
-  int encoding = -1;
-  std::vector<Ply_element> elements;
+  Ply_header h;
   bool ended = false;
   while (!ended && header.next_line()) {
     std::size_t line = header.line();
-    if (!header.on_line(tok)) continue;
-    if (tok == "comment" || tok == "obj_info") continue;
+    if (!header.on_line(tok) || tok == "comment" || tok == "obj_info") continue;
     std::vector<std::string> words{std::string(tok)};
     while (header.on_line(tok)) words.emplace_back(tok);
     if (words[0] == "end_header") {
       ended = true;
     } else if (words[0] == "format") {
-      if (words.size() != 3 || words[2] != "1.0") place.at_line(line, "expected \"format ENCODING 1.0\"");
-      if (words[1] == "ascii") encoding = 0;
-      else if (words[1] == "binary_little_endian") encoding = 1;
-      else if (words[1] == "binary_big_endian") encoding = 2;
-      else place.at_line(line, "unknown format '" + shown(words[1]) + "'");
+      h.encoding = ply_encoding(words, line, place);
     } else if (words[0] == "element") {
-      long long n;
-      if (words.size() != 3 || !integer_of(words[2], n) || n < 0) place.at_line(line, "expected \"element NAME COUNT\"");
-      std::size_t limit = words[1] == "vertex" ? limits.vertices : words[1] == "face" ? limits.facets : limits.facets + limits.vertices;
-      check_count(place, "line " + std::to_string(line), static_cast<std::size_t>(n), limit,
-                  words[1] == "vertex" ? "vertices" : words[1] == "face" ? "facets" : "items");
-      elements.push_back({words[1], static_cast<std::size_t>(n), line, {}});
+      h.elements.push_back(ply_element(words, line, place, limits));
     } else if (words[0] == "property") {
-      if (elements.empty()) place.at_line(line, "a property before any element");
-      Ply_property p;
-      bool ok;
-      p.name = words.back();
-      if (words.size() == 5 && words[1] == "list") {
-        p.list = true;
-        ok = ply_type_of(words[2], p.count_type) && ply_type_of(words[3], p.type);
-      } else {
-        ok = words.size() == 3 && ply_type_of(words[1], p.type);
-      }
-      if (!ok) place.at_line(line, "expected \"property TYPE NAME\" or \"property list TYPE TYPE NAME\"");
-      elements.back().properties.push_back(p);
+      if (h.elements.empty()) place.at_line(line, "a property before any element");
+      h.elements.back().properties.push_back(ply_property(words, line, place));
     } else {
       place.at_line(line, "unknown header line '" + shown(words[0]) + "'");
     }
   }
   if (!ended) place.fail("", "the header has no \"end_header\"");
-  if (encoding < 0) place.fail("", "the header has no \"format\" line");
-  std::size_t first_line = header.line() + 1;
+  if (h.encoding < 0) place.fail("", "the header has no \"format\" line");
+  h.body_line = header.line() + 1;
   header.next_line();
-  Ply_body body(bytes.substr(header.pos()), first_line, encoding, place);
+  h.body_pos = header.pos();
+  return h;
+}
 
+// A list of n values read past, n within the facet limit.
+void skip_ply_list(Ply_body& body, long long n, Ply_type type, const Place& place, const Mesh_limits& limits)
+{
+  if (n < 0 || static_cast<std::size_t>(n) > limits.facet_vertices)
+    place.fail(body.where, "list of " + std::to_string(n) + " values");
+  for (long long i = 0; i < n; ++i) body.skip(type);
+}
+
+// The vertex element: x, y and z read exactly, other properties skipped.
+void read_ply_vertices(const Ply_element& e, Ply_body& body, const Place& place, const Mesh_limits& limits, Mesh& m)
+{
+  check_count(place, "line " + std::to_string(e.line), e.count, limits.vertices, "vertices");
+  int axis_of[3] = {-1, -1, -1};   // the property index of x, y, z
+  for (std::size_t k = 0; k < e.properties.size(); ++k)
+    for (int a = 0; a < 3; ++a)
+      if (e.properties[k].name == std::string(1, "xyz"[a])) {
+        if (e.properties[k].list) place.at_line(e.line, "vertex property " + e.properties[k].name + " is a list");
+        axis_of[a] = static_cast<int>(k);
+      }
+  for (int a = 0; a < 3; ++a)
+    if (axis_of[a] < 0) place.at_line(e.line, std::string("the vertex element has no property ") + "xyz"[a]);
+  m.vertices.reserve(e.count);
+  for (std::size_t v = 0; v < e.count; ++v) {
+    body.where = "vertex " + std::to_string(v);
+    Point p;
+    for (std::size_t k = 0; k < e.properties.size(); ++k) {
+      const Ply_property& prop = e.properties[k];
+      int a = std::find(axis_of, axis_of + 3, static_cast<int>(k)) - axis_of;
+      if (a < 3) p[a] = body.number(prop.type);
+      else if (prop.list) skip_ply_list(body, body.integer(prop.count_type), prop.type, place, limits);
+      else body.skip(prop.type);
+    }
+    m.vertices.push_back(p);
+  }
+}
+
+// The face element: each facet's vertex_indices, other properties skipped.
+void read_ply_faces(const Ply_element& e, Ply_body& body, const Place& place, const Mesh_limits& limits, Mesh& m)
+{
+  check_count(place, "line " + std::to_string(e.line), e.count, limits.facets, "facets");
+  int indices = -1;
+  for (std::size_t k = 0; k < e.properties.size(); ++k)
+    if (e.properties[k].list && (e.properties[k].name == "vertex_indices" || e.properties[k].name == "vertex_index"))
+      indices = static_cast<int>(k);
+  if (indices < 0) place.at_line(e.line, "the face element has no list property vertex_indices");
+  m.facets.reserve(e.count);
+  for (std::size_t f = 0; f < e.count; ++f) {
+    body.where = "facet " + std::to_string(f);
+    for (std::size_t k = 0; k < e.properties.size(); ++k) {
+      const Ply_property& prop = e.properties[k];
+      if (!prop.list) { body.skip(prop.type); continue; }
+      long long n = body.integer(prop.count_type);
+      if (static_cast<int>(k) != indices) { skip_ply_list(body, n, prop.type, place, limits); continue; }
+      if (n < 3) place.fail(body.where, "has " + std::to_string(n) + " vertices (at least 3)");
+      check_count(place, body.where, static_cast<std::size_t>(n), limits.facet_vertices, "vertices in one facet");
+      std::vector<int> facet;
+      for (long long i = 0; i < n; ++i) facet.push_back(vertex_index(body.integer(prop.type), m.vertices.size(), place, body.where));
+      m.facets.push_back(std::move(facet));
+    }
+  }
+}
+
+// Any other element: read past.
+void skip_ply_element(const Ply_element& e, Ply_body& body, const Place& place, const Mesh_limits& limits)
+{
+  check_count(place, "line " + std::to_string(e.line), e.count, limits.facets + limits.vertices,
+              ("items of element " + e.name).c_str());
+  for (std::size_t i = 0; i < e.count; ++i) {
+    body.where = e.name + " " + std::to_string(i);
+    for (const Ply_property& prop : e.properties)
+      skip_ply_list(body, prop.list ? body.integer(prop.count_type) : 1, prop.type, place, limits);
+  }
+}
+
+Mesh read_ply(std::string_view bytes, const Place& place, const Mesh_limits& limits)
+{
+  Ply_header h = read_ply_header(bytes, place, limits);
+  Ply_body body(bytes.substr(h.body_pos), h.body_line, h.encoding, place);
   Mesh m;
   bool have_vertices = false, have_faces = false;
-  for (const Ply_element& e : elements) {
-    std::string at_line = "line " + std::to_string(e.line);
+  for (const Ply_element& e : h.elements) {
     if (e.name == "vertex") {
       if (have_vertices) place.at_line(e.line, "a second vertex element");
       have_vertices = true;
-      check_count(place, at_line, e.count, limits.vertices, "vertices");
-      int axis[3] = {-1, -1, -1};
-      for (std::size_t k = 0; k < e.properties.size(); ++k)
-        for (int a = 0; a < 3; ++a)
-          if (e.properties[k].name == std::string(1, "xyz"[a])) {
-            if (e.properties[k].list) place.at_line(e.line, "vertex property " + e.properties[k].name + " is a list");
-            axis[a] = static_cast<int>(k);
-          }
-      for (int a = 0; a < 3; ++a)
-        if (axis[a] < 0) place.at_line(e.line, std::string("the vertex element has no property ") + "xyz"[a]);
-      m.vertices.reserve(e.count);
-      for (std::size_t v = 0; v < e.count; ++v) {
-        body.where = "vertex " + std::to_string(v);
-        Point p;
-        for (std::size_t k = 0; k < e.properties.size(); ++k) {
-          const Ply_property& prop = e.properties[k];
-          int a = static_cast<int>(k) == axis[0] ? 0 : static_cast<int>(k) == axis[1] ? 1 : static_cast<int>(k) == axis[2] ? 2 : -1;
-          if (a >= 0) p[a] = body.number(prop.type);
-          else if (prop.list) {
-            long long n = body.integer(prop.count_type);
-            if (n < 0 || static_cast<std::size_t>(n) > limits.facet_vertices)
-              place.fail(body.where, "list of " + std::to_string(n) + " values");
-            for (long long i = 0; i < n; ++i) body.skip(prop.type);
-          } else body.skip(prop.type);
-        }
-        m.vertices.push_back(p);
-      }
+      read_ply_vertices(e, body, place, limits, m);
     } else if (e.name == "face") {
       if (have_faces) place.at_line(e.line, "a second face element");
       if (!have_vertices) place.at_line(e.line, "the face element comes before the vertex element");
       have_faces = true;
-      check_count(place, at_line, e.count, limits.facets, "facets");
-      int indices = -1;
-      for (std::size_t k = 0; k < e.properties.size(); ++k)
-        if (e.properties[k].list && (e.properties[k].name == "vertex_indices" || e.properties[k].name == "vertex_index"))
-          indices = static_cast<int>(k);
-      if (indices < 0) place.at_line(e.line, "the face element has no list property vertex_indices");
-      m.facets.reserve(e.count);
-      for (std::size_t f = 0; f < e.count; ++f) {
-        body.where = "facet " + std::to_string(f);
-        for (std::size_t k = 0; k < e.properties.size(); ++k) {
-          const Ply_property& prop = e.properties[k];
-          if (!prop.list) { body.skip(prop.type); continue; }
-          long long n = body.integer(prop.count_type);
-          if (static_cast<int>(k) == indices) {
-            if (n < 3) place.fail(body.where, "has " + std::to_string(n) + " vertices (at least 3)");
-            check_count(place, body.where, static_cast<std::size_t>(n), limits.facet_vertices, "vertices in one facet");
-            std::vector<int> facet;
-            for (long long i = 0; i < n; ++i)
-              facet.push_back(vertex_index(body.integer(prop.type), m.vertices.size(), place, body.where));
-            m.facets.push_back(std::move(facet));
-          } else {
-            if (n < 0 || static_cast<std::size_t>(n) > limits.facet_vertices)
-              place.fail(body.where, "list of " + std::to_string(n) + " values");
-            for (long long i = 0; i < n; ++i) body.skip(prop.type);
-          }
-        }
-      }
+      read_ply_faces(e, body, place, limits, m);
     } else {
-      check_count(place, at_line, e.count, limits.facets + limits.vertices, ("items of element " + e.name).c_str());
-      for (std::size_t i = 0; i < e.count; ++i) {
-        body.where = e.name + " " + std::to_string(i);
-        for (const Ply_property& prop : e.properties) {
-          long long n = prop.list ? body.integer(prop.count_type) : 1;
-          if (n < 0 || static_cast<std::size_t>(n) > limits.facet_vertices)
-            place.fail(body.where, "list of " + std::to_string(n) + " values");
-          for (long long j = 0; j < n; ++j) body.skip(prop.type);
-        }
-      }
+      skip_ply_element(e, body, place, limits);
     }
   }
   if (!have_faces || m.facets.empty()) place.fail("", "no facets (element face)");
