@@ -362,6 +362,29 @@ Vec3 edge_direction(Rng& rng)
 }
 
 // Face, edge or vertex contact across x = 0: a in x <= 0, b in x >= 0.
+// Two edges crossing: directions whose cross product has a non-zero x.
+void crossing_edges(Rng& rng, Contact& c)
+{
+  c.what = "crossing edges (";
+  Vec3 d1 = edge_direction(rng), d2 = edge_direction(rng);
+  while (CGAL::is_zero(d1[1] * d2[2] - d1[2] * d2[1])) d2 = edge_direction(rng);
+  c.a = edge_solid(rng, -1, d1, c.what);
+  c.what += "/";
+  c.b = edge_solid(rng, 1, d2, c.what);
+}
+
+// Two blocks meeting at the origin: along an edge (normal (1, 1, 0)), or
+// corner on corner (normal (1, 1, 1)).
+void block_contact(Rng& rng, Contact& c, bool parallel_edges)
+{
+  c.what = parallel_edges ? "parallel edges (blocks" : "corner on corner (blocks";
+  c.n = parallel_edges ? vec(1, 1, 0) : vec(1, 1, 1);
+  c.a = block(Vec3{-rng.range(1, 3), -rng.range(1, 3), -rng.range(1, 3)}, zero3());
+  if (parallel_edges) c.a.numbers[5] = rng.range(1, 3);
+  c.b = block(zero3(), Vec3{rng.range(1, 3), rng.range(1, 3), rng.range(1, 3)});
+  if (parallel_edges) c.b.numbers[2] = -rng.range(1, 3);
+}
+
 Contact basic_contact(Rng& rng, const Offset& off, bool allow_halfspace)
 {
   Contact c;
@@ -392,34 +415,15 @@ Contact basic_contact(Rng& rng, const Offset& off, bool allow_halfspace)
       w += "/";
       c.b = face_solid(rng, 1, false, w);
       break;
-    case 5: {
-      w = "crossing edges (";
-      Vec3 d1 = edge_direction(rng), d2 = edge_direction(rng);
-      while (CGAL::is_zero(d1[1] * d2[2] - d1[2] * d2[1])) d2 = edge_direction(rng);
-      c.a = edge_solid(rng, -1, d1, w);
-      w += "/";
-      c.b = edge_solid(rng, 1, d2, w);
-      break;
-    }
+    case 5: crossing_edges(rng, c); break;
     case 6:
       w = "face on edge (";
       c.a = edge_solid(rng, -1, edge_direction(rng), w);
       w += "/";
       c.b = face_solid(rng, 1, false, w);
       break;
-    case 7:
-      w = "parallel edges (blocks";
-      c.n = vec(1, 1, 0);
-      c.a = block(Vec3{-rng.range(1, 3), -rng.range(1, 3), -rng.range(1, 3)}, zero3());
-      c.a.numbers[5] = rng.range(1, 3);
-      c.b = block(zero3(), Vec3{rng.range(1, 3), rng.range(1, 3), rng.range(1, 3)});
-      c.b.numbers[2] = -rng.range(1, 3);
-      break;
-    default:
-      w = "corner on corner (blocks";
-      c.n = vec(1, 1, 1);
-      c.a = block(Vec3{-rng.range(1, 3), -rng.range(1, 3), -rng.range(1, 3)}, zero3());
-      c.b = block(zero3(), Vec3{rng.range(1, 3), rng.range(1, 3), rng.range(1, 3)});
+    case 7: block_contact(rng, c, true); break;
+    default: block_contact(rng, c, false);
   }
   w += "), " + off.what;
   c.b = mapped(c.b, shift_frame(times(off.g, c.n)));
@@ -678,6 +682,48 @@ Solid shifted(Rng& rng, const Solid& s, const Vec3& d, bool sums)
   return rng.percent(60) ? mapped(s, shift_frame(d)) : translate(d, s);
 }
 
+// How b moves relative to a (rel), what both share (common), and the
+// contact time tc, which a span-end contact moves to an end.
+struct Relative_motion {
+  Motion rel, common;
+  Rational tc;
+};
+
+Relative_motion relative_motion(Rng& rng, const Contact& c, Move move, const Scene& s, const Rational& span,
+                                Relative_motion m, bool decimals)
+{
+  switch (move) {
+    case Move::Static: break;
+    case Move::Instant:
+      m.rel = piecewise({along(rng, c, -1, decimals), along(rng, c, 1, decimals)}, {m.tc});
+      break;
+    case Move::Sliding:
+      m.rel = steady(tangent_velocity(rng, c, decimals));
+      if (rng.percent(30)) m.rel = piecewise({m.rel.velocities[0], tangent_velocity(rng, c, decimals)}, {m.tc});
+      break;
+    case Move::Approach: {
+      Vec3 v = along(rng, c, -1, decimals);
+      Rational t0 = m.tc - (decimals ? decimal(rng.range(1, 30), 1) : span * frac(rng.range(1, 4), 8));
+      m.rel = rng.percent(50) ? piecewise({v, zero3()}, {m.tc}) : piecewise({zero3(), v, zero3()}, {t0, m.tc});
+      break;
+    }
+    case Move::Co_moving:
+      m.common = steady(random_velocity(rng, decimals));
+      for (long k = rng.range(0, 2); k > 0; --k) {
+        Rational t = s.t_lo + span * frac(rng.range(0, 8), 8);
+        m.common = combined(m.common, 1, piecewise({zero3(), random_velocity(rng, decimals)}, {t}), 1);
+      }
+      break;
+    case Move::Span_end: {
+      bool start = rng.percent(50);
+      m.tc = start ? s.t_lo : s.t_hi;
+      m.rel = steady(along(rng, c, start ? 1 : -1, decimals));
+      break;
+    }
+  }
+  return m;
+}
+
 // The contact as a scene: b relative to a moves as `move` prescribes and is
 // in its contact pose at the time tc.
 Scene contact_scene(Rng& rng, const Contact& c, Move move, bool decimals)
@@ -694,47 +740,19 @@ Scene contact_scene(Rng& rng, const Contact& c, Move move, bool decimals)
   s.t_hi = s.t_lo + span;
   Rational tc = s.t_lo + span * frac(rng.range(1, 7), 8);
   if (decimals) tc = s.t_lo + span * decimal(rng.range(1, 9), 1);
-  Motion rel = rest(), common = rng.percent(60) ? rest() : steady(random_velocity(rng, decimals));
-  switch (move) {
-    case Move::Static: break;
-    case Move::Instant:
-      rel = piecewise({along(rng, c, -1, decimals), along(rng, c, 1, decimals)}, {tc});
-      break;
-    case Move::Sliding:
-      rel = steady(tangent_velocity(rng, c, decimals));
-      if (rng.percent(30)) rel = piecewise({rel.velocities[0], tangent_velocity(rng, c, decimals)}, {tc});
-      break;
-    case Move::Approach: {
-      Vec3 v = along(rng, c, -1, decimals);
-      Rational t0 = tc - (decimals ? decimal(rng.range(1, 30), 1) : span * frac(rng.range(1, 4), 8));
-      rel = rng.percent(50) ? piecewise({v, zero3()}, {tc}) : piecewise({zero3(), v, zero3()}, {t0, tc});
-      break;
-    }
-    case Move::Co_moving:
-      common = steady(random_velocity(rng, decimals));
-      for (long k = rng.range(0, 2); k > 0; --k) {
-        Rational t = s.t_lo + span * frac(rng.range(0, 8), 8);
-        common = combined(common, 1, piecewise({zero3(), random_velocity(rng, decimals)}, {t}), 1);
-      }
-      break;
-    case Move::Span_end: {
-      bool start = rng.percent(50);
-      tc = start ? s.t_lo : s.t_hi;
-      rel = steady(along(rng, c, start ? 1 : -1, decimals));
-      break;
-    }
-  }
+  Motion common = rng.percent(60) ? rest() : steady(random_velocity(rng, decimals));
+  Relative_motion m = relative_motion(rng, c, move, s, span, {rest(), common, tc}, decimals);
   // Who moves: b, a, or both (toward each other); `common` is added to both.
   long who = static_cast<long>(rng.below(10));
   Rational share_a = who < 5 ? Rational(0) : who < 8 ? Rational(-1) : frac(-1, 2);
-  auto with_share = [&](const Rational& share) { return CGAL::is_zero(share) ? common : combined(common, 1, rel, share); };
+  auto with_share = [&](const Rational& share) { return CGAL::is_zero(share) ? m.common : combined(m.common, 1, m.rel, share); };
   Motion da = with_share(share_a), db = with_share(share_a + 1);
   if (move == Move::Co_moving || rng.percent(15)) db = split(db, s.t_lo + span * frac(rng.range(1, 7), 8));
   // With decimals, both are moved by a decimal vector, one of them by a sum that misses.
   Vec3 base = decimals ? decimal_vector(rng) : zero3();
   bool split_a = rng.percent(50);
-  s.objects.push_back({"a", shifted(rng, c.a, minus(base, displacement(da, tc)), decimals && split_a), da});
-  s.objects.push_back({"b", shifted(rng, c.b, minus(base, displacement(db, tc)), decimals && !split_a), db});
+  s.objects.push_back({"a", shifted(rng, c.a, minus(base, displacement(da, m.tc)), decimals && split_a), da});
+  s.objects.push_back({"b", shifted(rng, c.b, minus(base, displacement(db, m.tc)), decimals && !split_a), db});
   if (rng.percent(15)) {   // an ignored copy of a: it meets b exactly as a does
     s.objects.push_back({"c", s.objects[0].shape, da});
     s.ignore.emplace_back(0, 2);
