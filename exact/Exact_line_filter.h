@@ -40,7 +40,7 @@ struct Exact_line_filter : No_filter {
       return hood.find_inside(enclose(l), near, inside).has_value();
     });
   }
-  // The same around a closed touch point (Generate_and_test::test_touch).
+  // The same around a closed touch point (Null_object_test::test_touch).
   template <class FT, class Inside>
   std::optional<bool> verdict_around(const std::vector<Vector4<FT>>& normals, Inside inside, std::size_t& tested)
   {

@@ -8,7 +8,7 @@
 
 #include "exact/Exact_line_filter.h"
 #include "model/Extrusion.h"
-#include "search/Generate_and_test.h"
+#include "search/Null_object_test.h"
 #include "exact/Exact_stage.h"
 #include <map>
 #include <memory>
@@ -30,8 +30,8 @@ public:
   public:
     Lines(const EK& k, const std::vector<Hyperplane4<EFT>>& table, const Motion_groups<EFT>& groups, bool exact)
       : lines_(k, table, stats_, &groups, &policy_), exact_(exact) {}
-    Generate_and_test<EK, Exact_line_filter>& conquer() { return lines_; }
-    const Generate_and_test<EK, Exact_line_filter>& conquer() const { return lines_; }
+    Null_object_test<EK, Exact_line_filter>& conquer() { return lines_; }
+    const Null_object_test<EK, Exact_line_filter>& conquer() const { return lines_; }
     // Whether line i, j, m holds a point inside; `known`: it is the line the
     // rational run itself will find (the region was exact).
     bool has_inside(const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Semantics semantics,
@@ -55,7 +55,7 @@ public:
   private:
     Check_stats stats_;                   // the interval run counted the lines
     Exact_line_filter policy_;
-    Generate_and_test<EK, Exact_line_filter> lines_;
+    Null_object_test<EK, Exact_line_filter> lines_;
     bool exact_;
   };
 
@@ -77,7 +77,7 @@ public:
       if (!v) throw CGAL::Uncertain_conversion_exception("a region face the intervals only enclose");
       Box<EFT, 4> exact;
       exact.set(f / 2, runner_.ek_.from_rational(*v), runner_.ek_.from_rational(*v));
-      return Generate_and_test<EK>::face(exact, f);
+      return Null_object_test<EK>::face(exact, f);
     };
     if (eh < 0 || eg < 0) {
       ++runner_.exact_planes_;
@@ -120,7 +120,7 @@ public:
       exact = true;
     }
     for (long e : layout.entry)
-      if (e >= 0) entry(static_cast<std::size_t>(e));   // all the lines read (Generate_and_test::adopt)
+      if (e >= 0) entry(static_cast<std::size_t>(e));   // all the lines read (Null_object_test::adopt)
     auto conquer = std::make_shared<Lines>(runner_.ek_, as_is ? table_ : lowest_terms(layout), groups_, exact);
     conquer->conquer().adopt(layout, outer);
     return conquer;

@@ -574,7 +574,7 @@ public:
     return &plane_keys_;
   }
 
-  // A keyed line's neighbourhoods on the keys (Generate_and_test::classify
+  // A keyed line's neighbourhoods on the keys (Null_object_test::classify
   // and, closed, test_touch): whether some cell is inside, or nothing when
   // even the keys leave a sign open.
   template <class V, class Inside>
@@ -591,7 +591,7 @@ public:
   }
 
 private:
-  static constexpr std::size_t npos = static_cast<std::size_t>(-1);   // no plane (Generate_and_test's)
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);   // no plane (Null_object_test's)
   Runner* runner_ = nullptr;
   // A convex pair's stage in rationals on one sub-span, for the signs the
   // intervals leave open: EK's motions of the two objects, and their planes
@@ -883,7 +883,7 @@ private:
   // there are the rational run's: table planes always, region faces only
   // on the rational run's region; nothing otherwise.
   template <class G>
-  const Generate_and_test<EK, Exact_line_filter>* exact_planes(const G& g, const std::array<std::size_t, 3>& line,
+  const Null_object_test<EK, Exact_line_filter>* exact_planes(const G& g, const std::array<std::size_t, 3>& line,
                                                                std::size_t p, std::size_t q)
   {
     typename Exact_span<Runner>::Lines& lines = conquer_lines(g);

@@ -55,7 +55,7 @@
 //                                   give their faces one plane, not a plane
 //                                   and its rounded twin, nearly dependent
 //                                   with it, whose lines of three planes
-//                                   (search/Generate_and_test.h) Cramer's
+//                                   (search/Null_object_test.h) Cramer's
 //                                   rule puts anywhere (reads_exact_rotations_v;
 //                                   absent: reads_exact_constructions)
 //   typename K::Protector           RAII guard the kernel's arithmetic needs

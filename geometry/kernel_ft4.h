@@ -88,7 +88,7 @@ FT minor2(const Vector4<FT>& a, const Vector4<FT>& b, int i, int j)
 
 // The six 2x2 minors of rows a and b, over the column pairs (0,1) (0,2)
 // (0,3) (1,2) (1,3) (2,3): all that generalised_cross(a, b, c) and the base
-// point of the line of planes a, b, c (search/Generate_and_test.h) take
+// point of the line of planes a, b, c (search/Null_object_test.h) take
 // from a and b together, so a search that fixes a and b over many c makes
 // them once. The same expressions as made per line, so the same numbers in
 // every kernel. In rationals a and b are kept instead: generalised_cross
@@ -139,7 +139,7 @@ public:
   }
 
   // cross(c) for c = +-e_a (positive: +e_a), a region face's normal
-  // (search/Generate_and_test.h): of each M_k only the term c_a * minor is
+  // (search/Null_object_test.h): of each M_k only the term c_a * minor is
   // left, so the same numbers as cross(c) (a product by +-1 or 0 is exact
   // in every kernel) without the twelve products.
   Vector4<FT> cross_axis(int a, bool positive) const

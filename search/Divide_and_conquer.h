@@ -9,7 +9,7 @@
 #ifndef CLASH4D_SEARCH_DIVIDE_AND_CONQUER_H
 #define CLASH4D_SEARCH_DIVIDE_AND_CONQUER_H
 
-#include "search/Generate_and_test.h"
+#include "search/Null_object_test.h"
 #include "search/No_filter.h"
 #include <CGAL/Uncertain.h>
 #include <optional>
@@ -192,7 +192,7 @@ private:
   Check_stats& stats_;
   std::optional<Policy> own_policy_;   // made only when no policy is given
   Policy& policy_;
-  Generate_and_test<K, Policy> conquer_;
+  Null_object_test<K, Policy> conquer_;
   std::vector<int> path_;                 // child indices from the root region to here
 
   static bool decided(CGAL::Uncertain<bool> u, bool& doubt)

@@ -1,6 +1,6 @@
 // The search policy: the one interface between the generic stages and a
 // filter. The stages (check/Collision_checker.h, search/Divide_and_conquer.h,
-// search/Generate_and_test.h) run on a kernel and call these members at the
+// search/Null_object_test.h) run on a kernel and call these members at the
 // few places where a filtered run differs from a plain one; they catch no
 // exception, keep no trail and call no callback of their own. No_filter is
 // the policy of every run that decides its own signs (rational, double): it
@@ -81,7 +81,7 @@
 //                                      the region that decides is known
 //                                      (with its formula, whether it
 //                                      conquers, its path): go there directly
-//   Generate_and_test:
+//   Null_object_test:
 //     const std::array<std::size_t, 3>* replay_line()  go straight to it
 //     void replayed(found)             what going straight there gave
 //     template <class G> void test_line(G& g, f, i, j, m, goal)
@@ -120,7 +120,7 @@
 //                                      its normal in numbers this kernel
 //                                      computes with exactly (small integers),
 //                                      or nothing: zeros certified on them are
-//                                      written (Generate_and_test)
+//                                      written (Null_object_test)
 //     template <class FT> const std::vector<Hyperplane4<FT>>* plane_keys()
 //                                      the same for whole planes (normal and
 //                                      offset): a plane parallel to a line

@@ -34,7 +34,7 @@ struct Search_goal {
   Vector4<FT> contact = shared_zeros<FT, 4>();
   // Earliest mode: the four planes (the current conquer's layout) that meet
   // at the contact point, when a line of this conquer recorded it
-  // (Generate_and_test). An edge of the conquer ending where the same four
+  // (Null_object_test). An edge of the conquer ending where the same four
   // planes meet ends at that very point, whose time is t* exactly: it
   // cannot improve, and no comparison is asked (a tie, which intervals
   // could not certify). Cleared by every other record.

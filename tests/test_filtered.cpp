@@ -25,7 +25,7 @@
 #include "scene/Scene_reader.h"
 #include "support/Random_scene.h"
 
-#include "search/Generate_and_test.h"
+#include "search/Null_object_test.h"
 #include "search/Witness.h"
 #include "search/Work_budget.h"
 #include "exact/Certified_sides.h"
@@ -1126,7 +1126,7 @@ bool cubes_meet(const std::array<Rational, 3>& shift, Policy* policy)
   for (int q = 0; q < 3; ++q) region.set(q, k.from_rational(Rational(-13, 4)), k.from_rational(Rational(11, 2)));
   region.set(3, FT(0), FT(1));
   Check_stats stats;
-  Generate_and_test<K, Policy> g(k, table, stats, nullptr, policy);
+  Null_object_test<K, Policy> g(k, table, stats, nullptr, policy);
   Search_goal<FT> goal;
   g.run(f, region, goal);
   return goal.found;

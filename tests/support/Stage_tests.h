@@ -1,5 +1,5 @@
 // Shared by the per-stage unit tests (test_s_bounds, test_formula,
-// test_neighbourhood, test_generate_and_test): the two kernels every case runs
+// test_neighbourhood, test_null_object_test): the two kernels every case runs
 // on, exact small numbers in either, and the seed convention of the campaign
 // tests (CLASH4D_SEED overrides; one splitmix64 seed per case).
 #ifndef CLASH4D_TESTS_SUPPORT_STAGE_TESTS_H

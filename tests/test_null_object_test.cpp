@@ -1,5 +1,5 @@
-#define BOOST_TEST_MODULE generate_and_test
-// Generate-and-test (search/Generate_and_test.h, §4.2) through its public
+#define BOOST_TEST_MODULE null_object_test
+// Generate-and-test (search/Null_object_test.h, §4.2) through its public
 // run(formula, region, goal), on plane tables and formulas built by hand:
 // the 4D extrusions (equation (4)) of unit blocks that overlap, that only
 // touch (regularised: no collision), single slabs and differences. A point
@@ -10,7 +10,7 @@
 // number of cases (a quarter of them here: each runs a whole conquer).
 #include <boost/test/unit_test.hpp>
 
-#include "search/Generate_and_test.h"
+#include "search/Null_object_test.h"
 #include "support/Stage_tests.h"
 
 #include <algorithm>
@@ -86,7 +86,7 @@ struct Conquer {
   {
     goal = Search_goal<FT>();
     goal.earliest = earliest;
-    Generate_and_test<K> gt(k, table, stats);
+    Null_object_test<K> gt(k, table, stats);
     gt.run(f, r, goal);
     return goal.found;
   }
@@ -442,7 +442,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(vertex_times_cut_orders_and_zeros_on_a_line, K, Ke
                            plane(0, 0, 0, 1, -4), plane(0, 0, 0, 2, -10), plane(1, 1, 0, 0, -3),
                            plane(1, 0, 0, 0, -2)};
   Check_stats stats;
-  Generate_and_test<K> g(k, table, stats);
+  Null_object_test<K> g(k, table, stats);
   Plane_layout layout;
   for (long e = 0; e < 7; ++e) {
     layout.entry.push_back(e);

@@ -1,4 +1,5 @@
-// Generate-and-test (§4.2): every line shared by three hyperplanes with
+// Null-object detection by generate-and-test (§4.2, §7: "null object
+// detection tests"): every line shared by three hyperplanes with
 // independent normals, cut at every other hyperplane, and the midpoint of each
 // resulting edge inside the region classified with the regularised
 // neighbourhood test of Appendix A. Every open cell of the arrangement inside
@@ -7,8 +8,8 @@
 // Closed semantics (search/Semantics.h) tests the ends and cuts of every
 // segment instead, each for a cell inside A and a cell inside B around it
 // (on_line_closed).
-#ifndef CLASH4D_SEARCH_GENERATE_AND_TEST_H
-#define CLASH4D_SEARCH_GENERATE_AND_TEST_H
+#ifndef CLASH4D_SEARCH_NULL_OBJECT_TEST_H
+#define CLASH4D_SEARCH_NULL_OBJECT_TEST_H
 
 #include "geometry/Box.h"
 #include "search/Check_stats.h"
@@ -41,19 +42,19 @@ struct Plane_layout {
 };
 
 template <class K, class Policy = No_filter>
-class Generate_and_test {
+class Null_object_test {
 public:
   using FT = typename K::FT;
   using H = Hyperplane4<FT>;
   using V = Vector4<FT>;
 
   // Holds a reference into itself (its own policy when none is given).
-  Generate_and_test(const Generate_and_test&) = delete;
-  Generate_and_test& operator=(const Generate_and_test&) = delete;
+  Null_object_test(const Null_object_test&) = delete;
+  Null_object_test& operator=(const Null_object_test&) = delete;
 
   // groups: which table planes move together (model/Motion_groups.h), if
   // known. policy: search/No_filter.h.
-  Generate_and_test(const K& k, const std::vector<H>& table, Check_stats& stats,
+  Null_object_test(const K& k, const std::vector<H>& table, Check_stats& stats,
                     const Motion_groups<FT>* groups = nullptr, Policy* policy = nullptr)
     : k_(k), table_(table), stats_(stats), groups_(groups), policy_(policy ? *policy : own_policy_.emplace()) {}
 
