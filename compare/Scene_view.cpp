@@ -1,0 +1,417 @@
+#include "compare/Scene_view.h"
+
+#include "compare/Decimal_text.h"
+#include "compare/Display_mesh.h"
+#include "float/Double_kernel.h"
+#include "model/Model_builder.h"
+#include "model/Motion_path.h"
+#include "scene/Pose_motion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+
+namespace clash4d {
+namespace {
+
+using json = nlohmann::ordered_json;
+using P3 = std::array<double, 3>;
+
+const char* const palette[] = {"#4e79a7", "#f28e2b", "#59a14f", "#b07aa1", "#76b7b2",
+                               "#edc948", "#9c755f", "#ff9da7", "#e15759", "#bab0ac"};
+// Subjects' points, apart from the objects' colours.
+const char* const subject_palette[] = {"#d62728", "#17becf", "#8c564b", "#e377c2", "#1f77b4", "#bcbd22", "#7f7f7f"};
+const char* const exact_witness_colour = "#111111";
+const char* const exact_contact_colour = "#ffb000";
+
+// Where the shape is at time t: R(q) p + c.
+struct Placement {
+  double t;
+  P3 c;
+  std::array<double, 4> q;   // w x y z, not normalised (R divides by |q|^2)
+};
+
+struct View_object {
+  std::string name, colour;
+  Csg_model<double> csg;
+  std::vector<Placement> keys;   // the page interpolates c and q linearly between keys
+};
+
+double to_double(const Rational& r) { return round_to_nearest(r); }
+
+// Rotating motions: the poses themselves, since the scene format's law
+// (q(t), c(t) linear, R(q) / |q|^2) is what the page evaluates, exactly the
+// law and simpler than sampling. Translations: D(t) at tL, every breakpoint
+// inside and tH (linear between, so no other key is needed).
+std::vector<Placement> placements_of(const Scene_object& o, const Rational& t_lo, const Rational& t_hi)
+{
+  std::vector<Placement> keys;
+  if (o.motion.rotates()) {
+    for (const Pose& p : o.motion.poses)
+      keys.push_back({to_double(p.t), {to_double(p.translate[0]), to_double(p.translate[1]), to_double(p.translate[2])},
+                      {to_double(p.rotate[0]), to_double(p.rotate[1]), to_double(p.rotate[2]), to_double(p.rotate[3])}});
+    return keys;
+  }
+  Double_kernel k;
+  Motion_path<double> m = Motion_path<double>::build(k, o.motion);
+  double lo = to_double(t_lo), hi = to_double(t_hi);
+  std::vector<double> ts{lo};
+  for (double t : m.times)
+    if (lo < t && t < hi) ts.push_back(t);
+  if (hi > lo) ts.push_back(hi);
+  for (double t : ts) keys.push_back({t, m.displacement(t), {1, 0, 0, 0}});
+  return keys;
+}
+
+P3 placed(const Placement& k, const P3& p)
+{
+  double w = k.q[0], x = k.q[1], y = k.q[2], z = k.q[3], n = w * w + x * x + y * y + z * z;
+  double r[3][3] = {{w * w + x * x - y * y - z * z, 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                    {2 * (x * y + w * z), w * w - x * x + y * y - z * z, 2 * (y * z - w * x)},
+                    {2 * (x * z - w * y), 2 * (y * z + w * x), w * w - x * x - y * y + z * z}};
+  P3 out;
+  for (int i = 0; i < 3; ++i) out[i] = (r[i][0] * p[0] + r[i][1] * p[1] + r[i][2] * p[2]) / n + k.c[i];
+  return out;
+}
+
+// A bound of the solid of a CSG node: join for union, meet for intersection,
+// the first child for difference.
+Box<double, 3> node_box(const Csg_model<double>& m, int i)
+{
+  const Csg_node& n = m.nodes[i];
+  if (n.op == Csg_node::Op::Primitive) return m.primitives[n.primitive].box;
+  Box<double, 3> b = node_box(m, n.children[0]);
+  if (n.op == Csg_node::Op::Difference) return b;
+  for (std::size_t k = 1; k < n.children.size(); ++k)
+    b = n.op == Csg_node::Op::Union ? join(b, node_box(m, n.children[k])) : meet(b, node_box(m, n.children[k]));
+  return b;
+}
+
+// ---------------------------------------------------------------- marks and times
+
+std::optional<P3> point_of(const std::optional<Located>& l, double& t)
+{
+  if (!l || !l->point) return std::nullopt;
+  P3 p;
+  for (int i = 0; i < 3; ++i) {
+    std::optional<double> d = decimal_value((*l->point)[i]);
+    if (!d) return std::nullopt;
+    p[i] = *d;
+  }
+  std::optional<double> time = decimal_value((*l->point)[3]);
+  if (!time) return std::nullopt;
+  t = *time;
+  return p;
+}
+
+void add_mark(json& marks, const std::string& label, const std::string& colour, const std::optional<Located>& l)
+{
+  double t = 0;
+  std::optional<P3> p = point_of(l, t);
+  if (p) marks.push_back({{"label", label}, {"colour", colour}, {"point", *p}, {"t", t}});
+}
+
+void add_time(json& times, const std::string& label, const std::string& text)
+{
+  if (std::optional<double> t = decimal_value(text)) times.push_back({{"label", label}, {"t", *t}, {"exact", text}});
+}
+
+// The exact witness and first contact (regularised, else closed), then each
+// other subject's, in its colour.
+void marks_and_times(const Comparison& c, json& marks, json& times)
+{
+  const Subject_row* ref = c.reference();
+  const Subject_row* closed = c.reference_in("closed");
+  if (ref && ref->witness && ref->witness->point) add_time(times, "witness time", (*ref->witness->point)[3]);
+  if (ref) add_mark(marks, "exact witness", exact_witness_colour, ref->witness);
+  const Subject_row* contact = ref && ref->earliest ? ref : closed && closed->earliest ? closed : nullptr;
+  if (contact) {
+    add_time(times, "exact t*", contact->earliest->t);
+    add_mark(marks, contact == ref ? "exact contact (t*)" : "exact contact, closed (t*)", exact_contact_colour,
+             contact->earliest);
+  }
+  std::size_t k = 0;
+  for (const Subject_row& s : c.subjects) {
+    if (s.reference) continue;
+    std::string colour = subject_palette[k++ % std::size(subject_palette)];
+    if (s.earliest) add_time(times, s.subject + " t*", s.earliest->t);
+    add_mark(marks, s.subject + " witness", colour, s.witness);
+    add_mark(marks, s.subject + " contact", colour, s.earliest);
+  }
+}
+
+// ---------------------------------------------------------------- box and meshes
+
+// The bounded objects at every key and the marked points, enlarged by a
+// quarter of the largest extent: unbounded cells are cut by it.
+std::pair<P3, P3> drawing_box(const std::vector<View_object>& objects, const json& marks)
+{
+  P3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  auto take = [&](const P3& p) {
+    for (int a = 0; a < 3; ++a) { lo[a] = std::min(lo[a], p[a]); hi[a] = std::max(hi[a], p[a]); }
+  };
+  for (const View_object& o : objects) {
+    Box<double, 3> b = node_box(o.csg, 0);
+    if (b.empty || !b.bounded()) continue;
+    for (const Placement& k : o.keys)
+      for (int corner = 0; corner < 8; ++corner)
+        take(placed(k, {corner & 1 ? b.hi[0] : b.lo[0], corner & 2 ? b.hi[1] : b.lo[1], corner & 4 ? b.hi[2] : b.lo[2]}));
+  }
+  for (const json& m : marks) take(m["point"].get<P3>());
+  if (!(lo[0] <= hi[0])) { lo = {-1, -1, -1}; hi = {1, 1, 1}; }
+  double size = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  double pad = size > 0 ? 0.25 * size : std::max(1.0, std::abs(lo[0]) + std::abs(lo[1]) + std::abs(lo[2]));
+  for (int a = 0; a < 3; ++a) { lo[a] -= pad; hi[a] += pad; }
+  return {lo, hi};
+}
+
+json object_json(const View_object& o, const P3& lo, const P3& hi)
+{
+  Display_mesh mesh = display_mesh(o.csg, lo, hi);
+  json vertices = json::array(), triangles = json::array(), keys = json::array();
+  for (const auto& v : mesh.vertices)
+    for (double x : v) vertices.push_back(x);
+  for (const auto& t : mesh.triangles)
+    for (int i : t) triangles.push_back(i);
+  for (const Placement& k : o.keys) keys.push_back({{"t", k.t}, {"c", k.c}, {"q", k.q}});
+  return {{"name", o.name}, {"colour", o.colour}, {"vertices", vertices}, {"triangles", triangles},
+          {"keys", keys}, {"clipped", mesh.clipped}, {"truncated", mesh.truncated}};
+}
+
+std::vector<View_object> view_objects(const Report_case& rc, const std::vector<std::size_t>& drawn, json& notes)
+{
+  std::vector<View_object> out;
+  Double_kernel k;
+  for (std::size_t n = 0; n < drawn.size(); ++n) {
+    const Scene_object& o = rc.scene.objects[drawn[n]];
+    try {
+      // A rotating object's shape as written: the poses place it.
+      const Solid& shape = o.motion.rotates() ? written_shape(o) : o.shape;
+      Model_builder<Double_kernel> builder(k);
+      out.push_back({o.name, object_colour(n), builder.build(shape), placements_of(o, rc.scene.t_lo, rc.scene.t_hi)});
+    } catch (const std::exception& e) {
+      notes.push_back("cannot draw " + o.name + ": " + e.what());
+    }
+  }
+  return out;
+}
+
+std::string escape_html(const std::string& s)
+{
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string number(double x)
+{
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  return buffer;
+}
+
+std::string legend_html(const json& data)
+{
+  std::string out = "<div class=\"legend\">";
+  for (const json& o : data["objects"])
+    out += "<span class=\"item\"><span class=\"swatch\" style=\"background:" + o["colour"].get<std::string>() +
+           "\"></span>" + escape_html(o["name"].get<std::string>()) + (o["clipped"].get<bool>() ? " (cut by the drawing box)" : "") +
+           "</span>";
+  for (const json& m : data["marks"])
+    out += "<span class=\"item\"><span class=\"dot\" style=\"background:" + m["colour"].get<std::string>() +
+           "\"></span>" + escape_html(m["label"].get<std::string>()) + "</span>";
+  return out + "</div>\n";
+}
+
+} // namespace
+
+std::string object_colour(std::size_t k) { return palette[k % std::size(palette)]; }
+
+json scene_view_data(const Report_case& rc, const std::vector<std::size_t>& drawn)
+{
+  json notes = json::array(), marks = json::array(), times = json::array(), objects = json::array();
+  marks_and_times(rc.comparison, marks, times);
+  std::vector<View_object> view = view_objects(rc, drawn, notes);
+  auto [lo, hi] = drawing_box(view, marks);
+  bool clipped = false;
+  for (const View_object& o : view) {
+    objects.push_back(object_json(o, lo, hi));
+    clipped = clipped || objects.back()["clipped"].get<bool>();
+    if (objects.back()["truncated"].get<bool>()) notes.push_back(o.name + ": only the first cells of its DNF are drawn");
+  }
+  if (clipped) notes.push_back("unbounded solids are cut by the drawing box (the bounded objects over the span and the marked points, enlarged by a quarter)");
+  return {{"t", {to_double(rc.scene.t_lo), to_double(rc.scene.t_hi)}}, {"box", {lo, hi}}, {"objects", objects},
+          {"marks", marks}, {"times", times}, {"notes", notes}};
+}
+
+std::string scene_view_html(const Report_case& rc, std::size_t index, const std::vector<std::size_t>& drawn)
+{
+  json data = scene_view_data(rc, drawn);
+  std::string text = data.dump(-1, ' ', false, json::error_handler_t::replace), safe;
+  // Inside <script>, "</" could end the element early.
+  for (std::size_t i = 0; i < text.size(); ++i) safe += text[i] == '/' && i > 0 && text[i - 1] == '<' ? "\\/" : std::string(1, text[i]);
+  std::string out = "<div class=\"view3d\" id=\"view3d-" + std::to_string(index) + "\">\n<div class=\"view-row\">" +
+                    "<canvas class=\"view-canvas\" width=\"560\" height=\"420\"></canvas>\n<div class=\"view-side\">" +
+                    legend_html(data) + "<div class=\"view-controls\"><label>t <input type=\"range\" class=\"view-time\" min=\"0\" max=\"1000\" value=\"0\"></label> " +
+                    "<span class=\"view-t mono\"></span><br>";
+  for (const json& t : data["times"])
+    out += "<button type=\"button\" data-t=\"" + number(t["t"].get<double>()) + "\" title=\"t = " +
+           escape_html(t["exact"].get<std::string>()) + "\">" + escape_html(t["label"].get<std::string>()) + "</button> ";
+  out += "<button type=\"button\" class=\"view-fit\">fit view</button></div>\n<p class=\"view-note\">Drag to turn, wheel to "
+         "zoom, \"fit view\" to frame the objects where they are. Drawn in doubles, for display only.";
+  for (const json& n : data["notes"]) out += " " + escape_html(n.get<std::string>()) + ".";
+  out += "</p><p class=\"view-msg\"></p></div></div>\n<script type=\"application/json\" class=\"view-data\">" + safe +
+         "</script>\n</div>\n";
+  return out;
+}
+
+} // namespace clash4d
+
+namespace clash4d {
+
+// The page's side: each .view3d's data drawn with three.js (r111, the global
+// THREE), objects placed at the chosen time by the same law as the scene
+// format's (c and q linear between keys, R(q) / |q|^2; at rest outside).
+// With ?shot=1 the first view is moved to the top of the page (the
+// screenshot test).
+const char* scene_view_script()
+{
+  return R"JS(
+(function () {
+  function rotation(q) {
+    var w = q[0], x = q[1], y = q[2], z = q[3], n = w * w + x * x + y * y + z * z;
+    return [[(w*w + x*x - y*y - z*z) / n, 2 * (x*y - w*z) / n, 2 * (x*z + w*y) / n],
+            [2 * (x*y + w*z) / n, (w*w - x*x + y*y - z*z) / n, 2 * (y*z - w*x) / n],
+            [2 * (x*z - w*y) / n, 2 * (y*z + w*x) / n, (w*w - x*x - y*y + z*z) / n]];
+  }
+  function placement(keys, t) {
+    if (t <= keys[0].t) return keys[0];
+    var last = keys[keys.length - 1];
+    if (t >= last.t) return last;
+    var i = 0;
+    while (t > keys[i + 1].t) ++i;
+    var a = keys[i], b = keys[i + 1], s = (t - a.t) / (b.t - a.t), c = [], q = [];
+    for (var k = 0; k < 3; ++k) c.push((1 - s) * a.c[k] + s * b.c[k]);
+    for (k = 0; k < 4; ++k) q.push((1 - s) * a.q[k] + s * b.q[k]);
+    return {c: c, q: q};
+  }
+  function geometry(o) {
+    var positions = new Float32Array(o.triangles.length * 3);
+    for (var i = 0; i < o.triangles.length; ++i)
+      for (var k = 0; k < 3; ++k) positions[3 * i + k] = o.vertices[3 * o.triangles[i] + k];
+    var g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+    g.computeVertexNormals();
+    return g;
+  }
+  function view(root) {
+    var data = JSON.parse(root.querySelector('.view-data').textContent);
+    var msg = root.querySelector('.view-msg');
+    if (typeof THREE === 'undefined') { msg.textContent = 'The 3D view needs three.js (three.min.js beside this page).'; return; }
+    var canvas = root.querySelector('canvas'), renderer;
+    try { renderer = new THREE.WebGLRenderer({canvas: canvas, antialias: true, preserveDrawingBuffer: true}); }
+    catch (e) { msg.textContent = 'The 3D view needs WebGL: ' + e; return; }
+    var scene = new THREE.Scene();
+    scene.background = new THREE.Color(0xffffff);
+    var lo = data.box[0], hi = data.box[1];
+    var centre = new THREE.Vector3((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
+    var size = Math.max(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    var camera = new THREE.PerspectiveCamera(40, canvas.width / canvas.height, size / 1000, size * 100);
+    camera.up.set(0, 0, 1);
+    scene.add(new THREE.AmbientLight(0xffffff, 0.55));
+    var light = new THREE.DirectionalLight(0xffffff, 0.55);
+    camera.add(light);
+    scene.add(camera);
+    var drawingBox = new THREE.Box3(new THREE.Vector3(lo[0], lo[1], lo[2]), new THREE.Vector3(hi[0], hi[1], hi[2]));
+    scene.add(new THREE.Box3Helper(drawingBox, 0xdddddd));
+    var meshes = data.objects.map(function (o) {
+      var g = geometry(o);
+      var m = new THREE.Mesh(g, new THREE.MeshLambertMaterial({color: o.colour, side: THREE.DoubleSide, transparent: true, opacity: 0.8}));
+      m.add(new THREE.LineSegments(new THREE.EdgesGeometry(g, 20), new THREE.LineBasicMaterial({color: 0x333333})));
+      m.matrixAutoUpdate = false;
+      scene.add(m);
+      return m;
+    });
+    var spheres = data.marks.map(function (k) {
+      var s = new THREE.Mesh(new THREE.SphereGeometry(1, 16, 12), new THREE.MeshBasicMaterial({color: k.colour, depthTest: false}));
+      s.renderOrder = 10;   // seen through the solids: the points are what the case is about
+      s.position.set(k.point[0], k.point[1], k.point[2]);
+      scene.add(s);
+      return s;
+    });
+    var orbit = {theta: -0.9, phi: 1.05, radius: size * 1.5};
+    function render() {
+      var r = orbit.radius, p = orbit.phi, th = orbit.theta;
+      camera.position.set(centre.x + r * Math.sin(p) * Math.cos(th), centre.y + r * Math.sin(p) * Math.sin(th), centre.z + r * Math.cos(p));
+      camera.lookAt(centre);
+      renderer.render(scene, camera);
+    }
+    // The camera on the bounded objects where they are now (the drawing box
+    // when every object is unbounded); the marks sized to match.
+    function fit() {
+      scene.updateMatrixWorld(true);
+      var b = new THREE.Box3();
+      meshes.forEach(function (m, i) { if (!data.objects[i].clipped) b.expandByObject(m); });
+      if (b.isEmpty()) b.copy(drawingBox);
+      var extent = b.getSize(new THREE.Vector3()), reach = Math.max(extent.x, extent.y, extent.z, size * 1e-6);
+      b.getCenter(centre);
+      orbit.radius = reach * 2.4;
+      spheres.forEach(function (s) { s.scale.setScalar(reach / 60); });
+      render();
+    }
+    var label = root.querySelector('.view-t'), slider = root.querySelector('.view-time');
+    var t0 = data.t[0], t1 = data.t[1];
+    function setTime(t) {
+      data.objects.forEach(function (o, i) {
+        var p = placement(o.keys, t), r = rotation(p.q);
+        meshes[i].matrix.set(r[0][0], r[0][1], r[0][2], p.c[0], r[1][0], r[1][1], r[1][2], p.c[1],
+                             r[2][0], r[2][1], r[2][2], p.c[2], 0, 0, 0, 1);
+        meshes[i].matrixWorldNeedsUpdate = true;
+      });
+      label.textContent = 't \u2248 ' + Number(t.toPrecision(6));
+      if (t1 > t0) slider.value = Math.round((t - t0) / (t1 - t0) * 1000);
+      render();
+    }
+    slider.addEventListener('input', function () { setTime(t0 + (t1 - t0) * slider.value / 1000); });
+    root.querySelector('.view-fit').addEventListener('click', fit);
+    root.querySelectorAll('button[data-t]').forEach(function (b) {
+      b.addEventListener('click', function () { setTime(Number(b.getAttribute('data-t'))); });
+    });
+    var drag = null;
+    canvas.addEventListener('mousedown', function (e) { drag = [e.clientX, e.clientY]; e.preventDefault(); });
+    window.addEventListener('mouseup', function () { drag = null; });
+    window.addEventListener('mousemove', function (e) {
+      if (!drag) return;
+      orbit.theta -= (e.clientX - drag[0]) * 0.01;
+      orbit.phi = Math.min(3.1, Math.max(0.04, orbit.phi - (e.clientY - drag[1]) * 0.01));
+      drag = [e.clientX, e.clientY];
+      render();
+    });
+    canvas.addEventListener('wheel', function (e) {
+      orbit.radius *= Math.exp(e.deltaY * 0.001);
+      e.preventDefault();
+      render();
+    }, {passive: false});
+    // At the exact t* when there is one, else at the first time offered.
+    var start = data.times.length ? data.times[0].t : t0;
+    data.times.forEach(function (x) { if (x.label === 'exact t*') start = x.t; });
+    setTime(start);
+    fit();
+  }
+  var views = document.querySelectorAll('.view3d');
+  if (/[?&]shot=1/.test(location.search) && views.length) document.body.insertBefore(views[0], document.body.firstChild);
+  views.forEach(view);
+})();
+)JS";
+}
+
+} // namespace clash4d
