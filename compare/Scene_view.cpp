@@ -248,7 +248,7 @@ json scene_view_data(const Report_case& rc, const std::vector<std::size_t>& draw
     clipped = clipped || objects.back()["clipped"].get<bool>();
     if (objects.back()["truncated"].get<bool>()) notes.push_back(o.name + ": only the first cells of its DNF are drawn");
   }
-  if (clipped) notes.push_back("unbounded solids are cut by the drawing box (the bounded objects over the span and the marked points, enlarged by a quarter)");
+  if (clipped) notes.push_back("Unbounded solids are cut by the drawing box (the bounded objects over the span and the marked points, enlarged by a quarter)");
   return {{"t", {to_double(rc.scene.t_lo), to_double(rc.scene.t_hi)}}, {"box", {lo, hi}}, {"objects", objects},
           {"marks", marks}, {"times", times}, {"notes", notes}};
 }
@@ -281,7 +281,7 @@ namespace clash4d {
 // The page's side: each .view3d's data drawn with three.js (r111, the global
 // THREE), objects placed at the chosen time by the same law as the scene
 // format's (c and q linear between keys, R(q) / |q|^2; at rest outside).
-// With ?shot=1 the first view is moved to the top of the page (the
+// With ?shot=N the N-th view is moved to the top of the page (?shot=1: the
 // screenshot test).
 const char* scene_view_script()
 {
@@ -335,7 +335,10 @@ const char* scene_view_script()
     scene.add(new THREE.Box3Helper(drawingBox, 0xdddddd));
     var meshes = data.objects.map(function (o) {
       var g = geometry(o);
-      var m = new THREE.Mesh(g, new THREE.MeshLambertMaterial({color: o.colour, side: THREE.DoubleSide, transparent: true, opacity: 0.8}));
+      // An unbounded (cut) solid shows its outside only, fainter: the camera
+      // is often inside it, and then sees through it.
+      var m = new THREE.Mesh(g, new THREE.MeshLambertMaterial({color: o.colour, transparent: true,
+        side: o.clipped ? THREE.FrontSide : THREE.DoubleSide, opacity: o.clipped ? 0.45 : 0.8}));
       m.add(new THREE.LineSegments(new THREE.EdgesGeometry(g, 20), new THREE.LineBasicMaterial({color: 0x333333})));
       m.matrixAutoUpdate = false;
       scene.add(m);
@@ -361,10 +364,11 @@ const char* scene_view_script()
       scene.updateMatrixWorld(true);
       var b = new THREE.Box3();
       meshes.forEach(function (m, i) { if (!data.objects[i].clipped) b.expandByObject(m); });
+      spheres.forEach(function (s) { b.expandByPoint(s.position); });
       if (b.isEmpty()) b.copy(drawingBox);
       var extent = b.getSize(new THREE.Vector3()), reach = Math.max(extent.x, extent.y, extent.z, size * 1e-6);
       b.getCenter(centre);
-      orbit.radius = reach * 2.4;
+      orbit.radius = reach * 3;
       spheres.forEach(function (s) { s.scale.setScalar(reach / 60); });
       render();
     }
@@ -408,7 +412,8 @@ const char* scene_view_script()
     fit();
   }
   var views = document.querySelectorAll('.view3d');
-  if (/[?&]shot=1/.test(location.search) && views.length) document.body.insertBefore(views[0], document.body.firstChild);
+  var shot = /[?&]shot=(\d+)/.exec(location.search);
+  if (shot && views[shot[1] - 1]) document.body.insertBefore(views[shot[1] - 1], document.body.firstChild);
   views.forEach(view);
 })();
 )JS";
