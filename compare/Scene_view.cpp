@@ -313,27 +313,20 @@ const char* scene_view_script()
     g.computeVertexNormals();
     return g;
   }
-  function view(root) {
-    var data = JSON.parse(root.querySelector('.view-data').textContent);
-    var msg = root.querySelector('.view-msg');
-    if (typeof THREE === 'undefined') { msg.textContent = 'The 3D view needs three.js (three.min.js beside this page).'; return; }
-    var canvas = root.querySelector('canvas'), renderer;
-    try { renderer = new THREE.WebGLRenderer({canvas: canvas, antialias: true, preserveDrawingBuffer: true}); }
-    catch (e) { msg.textContent = 'The 3D view needs WebGL: ' + e; return; }
-    var scene = new THREE.Scene();
-    scene.background = new THREE.Color(0xffffff);
+  // The scene of a view: lights on the camera, the drawing box, the solids
+  // (placed by their matrices) and the marks.
+  function build(data, canvas) {
+    var v = {scene: new THREE.Scene(), data: data};
+    v.scene.background = new THREE.Color(0xffffff);
     var lo = data.box[0], hi = data.box[1];
-    var centre = new THREE.Vector3((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2);
-    var size = Math.max(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
-    var camera = new THREE.PerspectiveCamera(40, canvas.width / canvas.height, size / 1000, size * 100);
-    camera.up.set(0, 0, 1);
-    scene.add(new THREE.AmbientLight(0xffffff, 0.55));
-    var light = new THREE.DirectionalLight(0xffffff, 0.55);
-    camera.add(light);
-    scene.add(camera);
-    var drawingBox = new THREE.Box3(new THREE.Vector3(lo[0], lo[1], lo[2]), new THREE.Vector3(hi[0], hi[1], hi[2]));
-    scene.add(new THREE.Box3Helper(drawingBox, 0xdddddd));
-    var meshes = data.objects.map(function (o) {
+    v.box = new THREE.Box3(new THREE.Vector3(lo[0], lo[1], lo[2]), new THREE.Vector3(hi[0], hi[1], hi[2]));
+    v.size = Math.max(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    v.centre = v.box.getCenter(new THREE.Vector3());
+    v.camera = new THREE.PerspectiveCamera(40, canvas.width / canvas.height, v.size / 1000, v.size * 100);
+    v.camera.up.set(0, 0, 1);
+    v.camera.add(new THREE.DirectionalLight(0xffffff, 0.55));
+    v.scene.add(v.camera, new THREE.AmbientLight(0xffffff, 0.55), new THREE.Box3Helper(v.box, 0xdddddd));
+    v.meshes = data.objects.map(function (o) {
       var g = geometry(o);
       // An unbounded (cut) solid shows its outside only, fainter: the camera
       // is often inside it, and then sees through it.
@@ -341,75 +334,93 @@ const char* scene_view_script()
         side: o.clipped ? THREE.FrontSide : THREE.DoubleSide, opacity: o.clipped ? 0.45 : 0.8}));
       m.add(new THREE.LineSegments(new THREE.EdgesGeometry(g, 20), new THREE.LineBasicMaterial({color: 0x333333})));
       m.matrixAutoUpdate = false;
-      scene.add(m);
+      v.scene.add(m);
       return m;
     });
-    var spheres = data.marks.map(function (k) {
-      var s = new THREE.Mesh(new THREE.SphereGeometry(1, 16, 12), new THREE.MeshBasicMaterial({color: k.colour, depthTest: false}));
-      s.renderOrder = 10;   // seen through the solids: the points are what the case is about
+    v.spheres = data.marks.map(function (k, i) {
+      var s = new THREE.Mesh(new THREE.SphereGeometry(1, 16, 12), new THREE.MeshBasicMaterial({color: k.colour, depthTest: false, transparent: true}));
+      // Seen through the solids (the points are what the case is about):
+      // drawn after them (transparent pass, high order), the exact ones
+      // (listed first) over the subjects'.
+      s.renderOrder = 1000 - i;
       s.position.set(k.point[0], k.point[1], k.point[2]);
-      scene.add(s);
+      v.scene.add(s);
       return s;
     });
-    var orbit = {theta: -0.9, phi: 1.05, radius: size * 1.5};
-    function render() {
-      var r = orbit.radius, p = orbit.phi, th = orbit.theta;
-      camera.position.set(centre.x + r * Math.sin(p) * Math.cos(th), centre.y + r * Math.sin(p) * Math.sin(th), centre.z + r * Math.cos(p));
-      camera.lookAt(centre);
-      renderer.render(scene, camera);
-    }
-    // The camera on the bounded objects where they are now (the drawing box
-    // when every object is unbounded); the marks sized to match.
-    function fit() {
-      scene.updateMatrixWorld(true);
-      var b = new THREE.Box3();
-      meshes.forEach(function (m, i) { if (!data.objects[i].clipped) b.expandByObject(m); });
-      spheres.forEach(function (s) { b.expandByPoint(s.position); });
-      if (b.isEmpty()) b.copy(drawingBox);
-      var extent = b.getSize(new THREE.Vector3()), reach = Math.max(extent.x, extent.y, extent.z, size * 1e-6);
-      b.getCenter(centre);
-      orbit.radius = reach * 3;
-      spheres.forEach(function (s) { s.scale.setScalar(reach / 60); });
-      render();
-    }
-    var label = root.querySelector('.view-t'), slider = root.querySelector('.view-time');
-    var t0 = data.t[0], t1 = data.t[1];
-    function setTime(t) {
-      data.objects.forEach(function (o, i) {
-        var p = placement(o.keys, t), r = rotation(p.q);
-        meshes[i].matrix.set(r[0][0], r[0][1], r[0][2], p.c[0], r[1][0], r[1][1], r[1][2], p.c[1],
+    v.orbit = {theta: -0.9, phi: 1.05, radius: v.size * 1.5};
+    return v;
+  }
+  function render(v) {
+    var r = v.orbit.radius, p = v.orbit.phi, th = v.orbit.theta, c = v.centre;
+    v.camera.position.set(c.x + r * Math.sin(p) * Math.cos(th), c.y + r * Math.sin(p) * Math.sin(th), c.z + r * Math.cos(p));
+    v.camera.lookAt(c);
+    v.renderer.render(v.scene, v.camera);
+  }
+  // The camera on the bounded objects where they are now and the marks (the
+  // drawing box when there are none); the marks sized to match.
+  function fit(v) {
+    v.scene.updateMatrixWorld(true);
+    var b = new THREE.Box3();
+    v.meshes.forEach(function (m, i) { if (!v.data.objects[i].clipped) b.expandByObject(m); });
+    v.spheres.forEach(function (s) { b.expandByPoint(s.position); });
+    if (b.isEmpty()) b.copy(v.box);
+    var extent = b.getSize(new THREE.Vector3()), reach = Math.max(extent.x, extent.y, extent.z, v.size * 1e-6);
+    b.getCenter(v.centre);
+    v.orbit.radius = reach * 3;
+    v.spheres.forEach(function (s) { s.scale.setScalar(reach / 30); });
+    render(v);
+  }
+  function setTime(v, t) {
+    var t0 = v.data.t[0], t1 = v.data.t[1];
+    v.data.objects.forEach(function (o, i) {
+      var p = placement(o.keys, t), r = rotation(p.q);
+      v.meshes[i].matrix.set(r[0][0], r[0][1], r[0][2], p.c[0], r[1][0], r[1][1], r[1][2], p.c[1],
                              r[2][0], r[2][1], r[2][2], p.c[2], 0, 0, 0, 1);
-        meshes[i].matrixWorldNeedsUpdate = true;
-      });
-      label.textContent = 't \u2248 ' + Number(t.toPrecision(6));
-      if (t1 > t0) slider.value = Math.round((t - t0) / (t1 - t0) * 1000);
-      render();
-    }
-    slider.addEventListener('input', function () { setTime(t0 + (t1 - t0) * slider.value / 1000); });
-    root.querySelector('.view-fit').addEventListener('click', fit);
-    root.querySelectorAll('button[data-t]').forEach(function (b) {
-      b.addEventListener('click', function () { setTime(Number(b.getAttribute('data-t'))); });
+      v.meshes[i].matrixWorldNeedsUpdate = true;
     });
-    var drag = null;
+    v.label.textContent = 't \u2248 ' + Number(t.toPrecision(6));
+    if (t1 > t0) v.slider.value = Math.round((t - t0) / (t1 - t0) * 1000);
+    render(v);
+  }
+  // The slider, the time buttons, "fit view"; drag turns about the centre, the wheel zooms.
+  function controls(v, root, canvas) {
+    var t0 = v.data.t[0], t1 = v.data.t[1], drag = null;
+    v.slider.addEventListener('input', function () { setTime(v, t0 + (t1 - t0) * v.slider.value / 1000); });
+    root.querySelector('.view-fit').addEventListener('click', function () { fit(v); });
+    root.querySelectorAll('button[data-t]').forEach(function (b) {
+      b.addEventListener('click', function () { setTime(v, Number(b.getAttribute('data-t'))); });
+    });
     canvas.addEventListener('mousedown', function (e) { drag = [e.clientX, e.clientY]; e.preventDefault(); });
     window.addEventListener('mouseup', function () { drag = null; });
     window.addEventListener('mousemove', function (e) {
       if (!drag) return;
-      orbit.theta -= (e.clientX - drag[0]) * 0.01;
-      orbit.phi = Math.min(3.1, Math.max(0.04, orbit.phi - (e.clientY - drag[1]) * 0.01));
+      v.orbit.theta -= (e.clientX - drag[0]) * 0.01;
+      v.orbit.phi = Math.min(3.1, Math.max(0.04, v.orbit.phi - (e.clientY - drag[1]) * 0.01));
       drag = [e.clientX, e.clientY];
-      render();
+      render(v);
     });
     canvas.addEventListener('wheel', function (e) {
-      orbit.radius *= Math.exp(e.deltaY * 0.001);
+      v.orbit.radius *= Math.exp(e.deltaY * 0.001);
       e.preventDefault();
-      render();
+      render(v);
     }, {passive: false});
+  }
+  function view(root) {
+    var data = JSON.parse(root.querySelector('.view-data').textContent);
+    var msg = root.querySelector('.view-msg'), canvas = root.querySelector('canvas'), renderer;
+    if (typeof THREE === 'undefined') { msg.textContent = 'The 3D view needs three.js (three.min.js beside this page).'; return; }
+    try { renderer = new THREE.WebGLRenderer({canvas: canvas, antialias: true, preserveDrawingBuffer: true}); }
+    catch (e) { msg.textContent = 'The 3D view needs WebGL: ' + e; return; }
+    var v = build(data, canvas);
+    v.renderer = renderer;
+    v.label = root.querySelector('.view-t');
+    v.slider = root.querySelector('.view-time');
+    controls(v, root, canvas);
     // At the exact t* when there is one, else at the first time offered.
-    var start = data.times.length ? data.times[0].t : t0;
+    var start = data.times.length ? data.times[0].t : data.t[0];
     data.times.forEach(function (x) { if (x.label === 'exact t*') start = x.t; });
-    setTime(start);
-    fit();
+    setTime(v, start);
+    fit(v);
   }
   var views = document.querySelectorAll('.view3d');
   var shot = /[?&]shot=(\d+)/.exec(location.search);
