@@ -249,8 +249,12 @@ json scene_view_data(const Report_case& rc, const std::vector<std::size_t>& draw
     if (objects.back()["truncated"].get<bool>()) notes.push_back(o.name + ": only the first cells of its DNF are drawn");
   }
   if (clipped) notes.push_back("Unbounded solids are cut by the drawing box (the bounded objects over the span and the marked points, enlarged by a quarter)");
+  // Where exact says no collision, the page shows how far apart the objects
+  // are at the chosen time (doubles, on the drawn triangles).
+  const Subject_row* ref = rc.comparison.reference();
+  bool gap = ref && ref->collide == false && view.size() >= 2;
   return {{"t", {to_double(rc.scene.t_lo), to_double(rc.scene.t_hi)}}, {"box", {lo, hi}}, {"objects", objects},
-          {"marks", marks}, {"times", times}, {"notes", notes}};
+          {"marks", marks}, {"times", times}, {"notes", notes}, {"gap", gap}};
 }
 
 std::string scene_view_html(const Report_case& rc, std::size_t index, const std::vector<std::size_t>& drawn)
@@ -269,7 +273,7 @@ std::string scene_view_html(const Report_case& rc, std::size_t index, const std:
   out += "<button type=\"button\" class=\"view-fit\">fit view</button></div>\n<p class=\"view-note\">Drag to turn, wheel to "
          "zoom, \"fit view\" to frame the objects where they are. Drawn in doubles, for display only.";
   for (const json& n : data["notes"]) out += " " + escape_html(n.get<std::string>()) + ".";
-  out += "</p><p class=\"view-msg\"></p></div></div>\n<script type=\"application/json\" class=\"view-data\">" + safe +
+  out += "</p><p class=\"view-gap\"></p><p class=\"view-msg\"></p></div></div>\n<script type=\"application/json\" class=\"view-data\">" + safe +
          "</script>\n</div>\n";
   return out;
 }
@@ -370,6 +374,56 @@ const char* scene_view_script()
     v.spheres.forEach(function (s) { s.scale.setScalar(reach / 30); });
     render(v);
   }
+  // Ericson's closest points of two segments: their distance.
+  function segmentDistance(p1, q1, p2, q2) {
+    var d1 = q1.clone().sub(p1), d2 = q2.clone().sub(p2), r = p1.clone().sub(p2);
+    var a = d1.dot(d1), e = d2.dot(d2), f = d2.dot(r), s = 0, t = 0;
+    function clamp(x) { return Math.min(1, Math.max(0, x)); }
+    if (a > 0 && e > 0) {
+      var b = d1.dot(d2), c = d1.dot(r), denom = a * e - b * b;
+      s = denom > 0 ? clamp((b * f - c * e) / denom) : 0;
+      t = (b * s + f) / e;
+      if (t < 0) { t = 0; s = clamp(-c / a); } else if (t > 1) { t = 1; s = clamp((b - c) / a); }
+    } else if (a > 0) s = clamp(-d1.dot(r) / a);
+    else if (e > 0) t = clamp(f / e);
+    return p1.clone().addScaledVector(d1, s).distanceTo(p2.clone().addScaledVector(d2, t));
+  }
+  function placedTriangles(mesh) {
+    var pos = mesh.geometry.attributes.position, out = [];
+    function at(k) { return new THREE.Vector3().fromBufferAttribute(pos, k).applyMatrix4(mesh.matrix); }
+    for (var k = 0; k < pos.count; k += 3) out.push(new THREE.Triangle(at(k), at(k + 1), at(k + 2)));
+    return out;
+  }
+  // The distance of two closed surfaces that do not overlap: the least over
+  // vertex-triangle and edge-edge pairs.
+  function surfaceDistance(A, B) {
+    var best = Infinity, q = new THREE.Vector3();
+    A.forEach(function (ta) {
+      B.forEach(function (tb) {
+        [ta.a, ta.b, ta.c].forEach(function (p) { best = Math.min(best, p.distanceTo(tb.closestPointToPoint(p, q))); });
+        [tb.a, tb.b, tb.c].forEach(function (p) { best = Math.min(best, p.distanceTo(ta.closestPointToPoint(p, q))); });
+        [[ta.a, ta.b], [ta.b, ta.c], [ta.c, ta.a]].forEach(function (x) {
+          [[tb.a, tb.b], [tb.b, tb.c], [tb.c, tb.a]].forEach(function (y) { best = Math.min(best, segmentDistance(x[0], x[1], y[0], y[1])); });
+        });
+      });
+    });
+    return best;
+  }
+  // The closest pair of objects now, when exact says they never collide
+  // (small meshes only: every pair of triangles is tried).
+  function showGap(v, t) {
+    var out = v.root.querySelector('.view-gap');
+    if (!v.data.gap) return;
+    var tris = v.meshes.map(placedTriangles), best = null;
+    for (var i = 0; i < tris.length; ++i)
+      for (var j = i + 1; j < tris.length; ++j) {
+        if (tris[i].length * tris[j].length > 40000) { out.textContent = 'Gap not computed: the meshes are too large.'; return; }
+        var d = surfaceDistance(tris[i], tris[j]);
+        if (!best || d < best.d) best = {d: d, a: v.data.objects[i].name, b: v.data.objects[j].name};
+      }
+    out.textContent = 'At t \u2248 ' + Number(t.toPrecision(6)) + ' the closest objects, ' + best.a + ' and ' + best.b +
+      ', are \u2248 ' + Number(best.d.toPrecision(3)) + ' apart (doubles, drawn triangles: 0 means touching up to rounding).';
+  }
   function setTime(v, t) {
     var t0 = v.data.t[0], t1 = v.data.t[1];
     v.data.objects.forEach(function (o, i) {
@@ -380,6 +434,7 @@ const char* scene_view_script()
     });
     v.label.textContent = 't \u2248 ' + Number(t.toPrecision(6));
     if (t1 > t0) v.slider.value = Math.round((t - t0) / (t1 - t0) * 1000);
+    showGap(v, t);
     render(v);
   }
   // The slider, the time buttons, "fit view"; drag turns about the centre, the wheel zooms.
@@ -413,6 +468,7 @@ const char* scene_view_script()
     catch (e) { msg.textContent = 'The 3D view needs WebGL: ' + e; return; }
     var v = build(data, canvas);
     v.renderer = renderer;
+    v.root = root;
     v.label = root.querySelector('.view-t');
     v.slider = root.querySelector('.view-time');
     controls(v, root, canvas);

@@ -69,6 +69,26 @@ def hue(rgb):
     return h * 360, s
 
 
+def browse(browser, url, *args):
+    # SwiftShader gives headless chromium WebGL without a GPU.
+    return subprocess.run([browser, "--headless", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
+                           "--enable-unsafe-swiftshader", "--hide-scrollbars", *args, url],
+                          check=True, timeout=60, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL).stdout.decode()
+
+
+def check_gap(clash4d, browser, work, fixtures):
+    """Where exact says no collision, the view's gap line: blocks a [0, 1]^3
+    and b [-3, -2] x [2, 3] x [0, 1] at t = 0 (the exact t* is none, so the
+    view starts at tL = 0) are sqrt(2^2 + 1^2) = 2.236 apart."""
+    out = os.path.join(work, "gap")
+    subprocess.run([clash4d, "report", os.path.join(fixtures, "clear_miss_parallel.json"), "--out", out],
+                   check=True, timeout=60, stdout=subprocess.DEVNULL)
+    dom = browse(browser, "file://" + os.path.abspath(os.path.join(out, "index.html")), "--dump-dom")
+    want = "the closest objects, a and b, are \u2248 2.24 apart"
+    print("gap line:", "found" if want in dom else "missing")
+    return want in dom
+
+
 def main():
     if len(sys.argv) < 4:
         print(__doc__)
@@ -87,11 +107,8 @@ def main():
         print("FAIL: three.min.js was not copied into the report")
         return 1
     png = os.path.join(work, "shot.png")
-    # SwiftShader gives headless chromium WebGL without a GPU.
-    subprocess.run([browser, "--headless", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
-                    "--enable-unsafe-swiftshader", "--hide-scrollbars", "--screenshot=" + png, "--window-size=1200,900",
-                    "file://" + os.path.abspath(os.path.join(out, "index.html")) + "?shot=1"],
-                   check=True, timeout=60, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    browse(browser, "file://" + os.path.abspath(os.path.join(out, "index.html")) + "?shot=1",
+           "--screenshot=" + png, "--window-size=1200,900")
     if keep:
         shutil.copyfile(png, keep)
     width, height, rows = read_png(png)
@@ -114,6 +131,9 @@ def main():
         if seen < 300:
             print("FAIL: object %s is not drawn in its colour" % name)
             return 1
+    if not check_gap(clash4d, browser, work, os.path.dirname(os.path.abspath(scene))):
+        print("FAIL: no gap line for two blocks that never meet")
+        return 1
     print("ok")
     return 0
 
