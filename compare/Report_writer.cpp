@@ -821,6 +821,11 @@ std::string case_html(const Report_case& rc, std::size_t index)
   out << "</table>\n" << details_html(c);
   if (!rc.scene.objects.empty()) out << scene_view_html(rc, index, objects_to_draw(rc));
   Drawing d = drawing_of(rc);
+  // Nothing to draw (a turning scene): one line, not three empty diagrams.
+  if (!d.error.empty()) {
+    out << "<p class=\"view-note\">No q-t diagrams: " << escape(d.error) << ".</p>\n</section>\n";
+    return out.str();
+  }
   out << "<div class=\"diagrams\">\n";
   for (int axis = 0; axis < 3; ++axis) out << svg_diagram(d, axis, "clip-" + std::to_string(index) + "-" + "xyz"[axis]);
   out << "</div>\n" << zoom_html(d, index) << legend(d) << "</section>\n";
