@@ -12,6 +12,7 @@
 #include "scene/Scene_reader.h"
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <unistd.h>
 
@@ -379,5 +380,36 @@ BOOST_AUTO_TEST_CASE(decimals_and_the_original_in_the_page)
 #ifdef CLASH4D_THREE_JS
   BOOST_TEST(slurp(dir / "out" / "three.min.js") == slurp(CLASH4D_THREE_JS));
 #endif
+  fs::remove_all(dir);
+}
+
+// Coordinates near 1.2e8: the x axis' tick labels are decimals (no
+// exponent) and far enough apart for their text (11px type: at least 6px a
+// character between the centres of neighbours).
+BOOST_AUTO_TEST_CASE(tick_labels_are_decimals_that_do_not_overlap)
+{
+  Report_case c = make_case("far.json", R"({"format": "clash4d-scene/1", "time": [0, 1], "objects": [
+      {"name": "a", "shape": {"block": {"min": [123456789,0,0], "max": [123456790,1,1]}}},
+      {"name": "b", "shape": {"block": {"min": [123456791,0,0], "max": [123456792,1,1]}}, "motion": "vel -1 0 0"}]})",
+    R"({"file": "far.json", "name": "", "closed_touch": true, "subjects": [
+      {"subject": "exact", "reference": true, "ok": true, "error": "", "collide": false, "witness": null,
+       "witness_valid": null, "earliest": null, "t_error": null, "seconds": 0.003, "agrees": true, "cause": null}],
+     "disagreements": []})");
+  fs::path dir = fs::temp_directory_path() / ("clash4d_test_report_ticks_" + std::to_string(::getpid()));
+  write_report({c}, (dir / "out").string());
+  std::string h = slurp(dir / "out" / "index.html");
+  std::string x_svg = h.substr(h.find("<svg class=\"qt\""));
+  x_svg = x_svg.substr(0, x_svg.find("</svg>"));
+  std::regex label("<text x=\"([0-9.]+)\" y=\"302.00\" text-anchor=\"middle\" class=\"\">([^<]*)</text>");
+  std::vector<std::pair<double, std::string>> labels;
+  for (std::sregex_iterator it(x_svg.begin(), x_svg.end(), label), end; it != end; ++it)
+    labels.emplace_back(std::stod((*it)[1]), (*it)[2]);
+  BOOST_TEST_REQUIRE(labels.size() >= 2u);
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    BOOST_TEST(labels[i].second.find('e') == std::string::npos);
+    double value = std::stod(labels[i].second);   // the padded span of [123456789, 123456792]
+    BOOST_TEST((123456788 <= value && value <= 123456793));
+    if (i) BOOST_TEST(labels[i].first - labels[i - 1].first >= 6.0 * labels[i].second.size());
+  }
   fs::remove_all(dir);
 }
