@@ -22,6 +22,8 @@ std::optional<double> decimal_value(const std::string& text)
 
 std::string decimal_text(const std::string& text)
 {
+  // An integer reads as itself, however long.
+  if (!text.empty() && text.find_first_not_of("-0123456789") == std::string::npos) return "";
   std::optional<double> d = decimal_value(text);
   if (!d) return "";
   char buffer[64];

@@ -14,8 +14,8 @@ namespace clash4d {
 // any other text.
 std::optional<double> decimal_value(const std::string& text);
 
-// "≈ 1.18302" for text, or empty when text has no value or already reads
-// as that decimal (an integer, a short decimal).
+// "≈ 1.18302" for text, or empty when text has no value, is an integer or
+// already reads as that decimal (a short decimal).
 std::string decimal_text(const std::string& text);
 
 } // namespace clash4d

@@ -261,8 +261,9 @@ std::string scene_view_html(const Report_case& rc, std::size_t index, const std:
 {
   json data = scene_view_data(rc, drawn);
   std::string text = data.dump(-1, ' ', false, json::error_handler_t::replace), safe;
-  // Inside <script>, "</" could end the element early.
-  for (std::size_t i = 0; i < text.size(); ++i) safe += text[i] == '/' && i > 0 && text[i - 1] == '<' ? "\\/" : std::string(1, text[i]);
+  // Inside <script>, "</script" or "<!--" would end or confuse the element:
+  // <, > and & (only ever inside JSON strings) as JSON escapes.
+  for (char ch : text) safe += ch == '<' ? "\\u003c" : ch == '>' ? "\\u003e" : ch == '&' ? "\\u0026" : std::string(1, ch);
   std::string out = "<div class=\"view3d\" id=\"view3d-" + std::to_string(index) + "\">\n<div class=\"view-row\">" +
                     "<canvas class=\"view-canvas\" width=\"560\" height=\"420\"></canvas>\n<div class=\"view-side\">" +
                     legend_html(data) + "<div class=\"view-controls\"><label>t <input type=\"range\" class=\"view-time\" min=\"0\" max=\"1000\" value=\"0\"></label> " +

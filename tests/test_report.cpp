@@ -191,6 +191,9 @@ BOOST_AUTO_TEST_CASE(html_is_self_contained_and_escaped)
   BOOST_TEST(count(h, "<canvas") == 3u);
   BOOST_TEST(count(h, "<script src=\"three.min.js\"></script>") == 1u);
   BOOST_TEST(count(h, "<script") == 5u);
+  BOOST_TEST(count(h, "</script>") == 5u);
+  // In the views' JSON, names keep no markup: a<b&"c" as JSON escapes.
+  BOOST_TEST(h.find("\"a\\u003cb\\u0026\\\"c\\\"\"") != std::string::npos);
   BOOST_TEST(h.find("a&lt;b&amp;&quot;c&quot;") != std::string::npos);
   BOOST_TEST(h.find("a<b&\"c\"") == std::string::npos);
   BOOST_TEST(h.find("dir/&lt;touch&gt;.json") != std::string::npos);
@@ -352,6 +355,8 @@ BOOST_AUTO_TEST_CASE(decimals_of_exact_numbers)
   BOOST_TEST(!decimal_value("hello"));
   BOOST_TEST(decimal_text("2784582518619477629369/2353783867871269486592") == "\xE2\x89\x88 1.18302");
   BOOST_TEST(decimal_text("2").empty());   // already a decimal
+  BOOST_TEST(decimal_text("-123456789012").empty());   // an integer reads as itself
+  BOOST_TEST(decimal_text("0.1000000000000000055511151231257827") == "\xE2\x89\x88 0.1");
 }
 
 // A minimised finding whose t* is a long fraction and a subject whose t* is
