@@ -1,5 +1,8 @@
 #include "compare/Report_writer.h"
 
+#include "compare/Decimal_text.h"
+#include "compare/Scene_view.h"
+
 #include "model/Scene_model.h"
 #include "rotation/Rotating_check.h"
 #include "float/Double_kernel.h"
@@ -13,6 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <iterator>
 #include <optional>
 #include <sstream>
@@ -28,8 +32,6 @@ namespace fs = std::filesystem;
 // Disagreements (scenes and CCD queries), then faults of external subjects.
 const char* const all_causes[] = {"contact",         "input rounding", "tolerance", "arithmetic", "time",
                                   "invalid witness", "crash",          "timeout",   "protocol"};
-const char* const palette[] = {"#4e79a7", "#f28e2b", "#59a14f", "#b07aa1", "#76b7b2",
-                               "#edc948", "#9c755f", "#ff9da7", "#e15759", "#bab0ac"};
 constexpr std::size_t max_drawn_objects = 24;
 
 // ---------------------------------------------------------------- text
@@ -99,6 +101,26 @@ std::string joined(const Strings& a)
   std::string out;
   for (const auto& e : a) out += (out.empty() ? "" : ", ") + e;
   return out;
+}
+
+// A number kept on one line unless long (a break in "31/4" would read "3 1/4"),
+// with its decimal beside it (display only).
+std::string number_html(const std::string& s)
+{
+  std::string approx = decimal_text(s);
+  return std::string(s.size() <= 24 ? "<code class=\"whole\">" : "<code>") + escape(s) + "</code>" +
+         (approx.empty() ? "" : " <span class=\"approx\">(" + approx + ")</span>");
+}
+
+// located_text as HTML, each coordinate with its decimal.
+std::string located_html(const std::optional<Located>& w)
+{
+  if (!w) return dash;
+  std::string out = escape(joined(w->objects));
+  if (!w->point) return out;
+  out += " at (";
+  for (std::size_t i = 0; i < 4; ++i) out += (i ? ", " : "") + number_html((*w->point)[i]);
+  return out + ")";
 }
 
 // "a, b at (x, y, z, t)" for a witness or earliest contact; "a, b" when the
@@ -273,21 +295,12 @@ Box<double, 3> node_box(const Csg_model<double>& m, int i)
   return b;
 }
 
-std::optional<double> number_of(const std::string& text)
-{
-  Number_parse p = parse_number_text(text, true);
-  if (!p.ok) return std::nullopt;
-  double d = round_to_nearest(p.value);
-  if (!std::isfinite(d)) return std::nullopt;
-  return d;
-}
-
 void add_marker(std::vector<Marker>& out, Marker::Kind kind, const std::optional<Located>& located, const std::string& title)
 {
   if (!located || !located->point) return;
   Marker m{kind, {}, title + ": " + located_text(located)};
   for (std::size_t i = 0; i < 4; ++i) {
-    std::optional<double> d = number_of((*located->point)[i]);
+    std::optional<double> d = decimal_value((*located->point)[i]);
     if (!d) return;
     m.point[i] = *d;
   }
@@ -340,7 +353,7 @@ Drawing drawing_of(const Report_case& c)
     d.t_hi = m.t_hi;
     for (std::size_t i : objects_to_draw(c)) {
       const Object_model<double>& o = m.objects[i];
-      d.objects.push_back({o.name, palette[d.objects.size() % std::size(palette)], node_box(o.csg, 0), o.motion});
+      d.objects.push_back({o.name, object_colour(d.objects.size()), node_box(o.csg, 0), o.motion});
     }
   } catch (const std::exception& e) {
     d.error = e.what();
@@ -415,20 +428,42 @@ std::string band_polygon(const Drawn_object& o, int axis, const Frame& f, double
          "</title></polygon>\n";
 }
 
-double nice_step(double span)
+double nice_step(double span, int wanted)
 {
-  double raw = span / 5, p = std::pow(10.0, std::floor(std::log10(raw))), m = raw / p;
+  double raw = span / wanted, p = std::pow(10.0, std::floor(std::log10(raw))), m = raw / p;
   return p * (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10);
 }
 
-// The tick values of [lo, hi] (the near-zero one printed as 0).
-std::vector<double> ticks(double lo, double hi)
+// A tick's label in decimal, with as many decimals as the step needs (never
+// an exponent: coordinates read as numbers, however large).
+std::string tick_text(double v, double step)
 {
-  double step = nice_step(hi - lo);
-  std::vector<double> out;
-  for (double k = std::ceil(lo / step); k * step <= hi && out.size() < 20; ++k)
-    out.push_back(std::abs(k) < 0.5 ? 0.0 : k * step);
-  return out;
+  int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(step) - 1e-9)), 0, 12);
+  char buffer[400];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, v);
+  return std::string(buffer) == "-0" ? "0" : buffer;
+}
+
+struct Ticks {
+  std::vector<double> values;
+  double step;
+};
+
+// The ticks of [lo, hi] (the near-zero one at 0): as many as fit along
+// `pixels` with labels `across` (their text width) or not (a line each).
+Ticks ticks(double lo, double hi, double pixels, bool across)
+{
+  Ticks t{{}, 1};
+  for (int wanted = 6; wanted >= 1; --wanted) {
+    t = {{}, nice_step(hi - lo, wanted)};
+    for (double k = std::ceil(lo / t.step); k * t.step <= hi && t.values.size() < 20; ++k)
+      t.values.push_back(std::abs(k) < 0.5 ? 0.0 : k * t.step);
+    std::size_t widest = 0;
+    for (double v : t.values) widest = std::max(widest, tick_text(v, t.step).size());
+    double each = across ? 6.2 * widest + 10 : 16;   // 11px text: about 6.2px a character
+    if (t.values.size() * each <= pixels) return t;
+  }
+  return t;
 }
 
 std::string svg_text(double x, double y, const std::string& anchor, const std::string& s, const char* cls = "")
@@ -443,23 +478,25 @@ std::string svg_line(double x1, double y1, double x2, double y2, const char* cls
          "\" y2=\"" + coordinate(y2) + "\" class=\"" + cls + "\"/>\n";
 }
 
-std::string svg_axes(const Frame& f, const std::string& q_name)
+std::string svg_axes(const Frame& f, const std::string& q_name, bool zoom)
 {
   std::string out;
   double x0 = Frame::left, x1 = Frame::width - Frame::right, y0 = Frame::top, y1 = Frame::height - Frame::bottom;
-  for (double q : ticks(f.q_lo, f.q_hi)) {
+  Ticks q_ticks = ticks(f.q_lo, f.q_hi, x1 - x0, true), t_ticks = ticks(f.t_lo, f.t_hi, y1 - y0, false);
+  for (double q : q_ticks.values) {
     out += svg_line(f.x(q), y0, f.x(q), y1, "grid");
-    out += svg_text(f.x(q), y1 + 14, "middle", format("%g", q));
+    out += svg_text(f.x(q), y1 + 14, "middle", tick_text(q, q_ticks.step));
   }
-  for (double t : ticks(f.t_lo, f.t_hi)) {
+  for (double t : t_ticks.values) {
     out += svg_line(x0, f.y(t), x1, f.y(t), "grid");
-    out += svg_text(x0 - 5, f.y(t) + 4, "end", format("%g", t));
+    out += svg_text(x0 - 5, f.y(t) + 4, "end", tick_text(t, t_ticks.step));
   }
   out += "<rect x=\"" + coordinate(x0) + "\" y=\"" + coordinate(y0) + "\" width=\"" + coordinate(x1 - x0) +
          "\" height=\"" + coordinate(y1 - y0) + "\" class=\"frame\"/>\n";
   out += svg_text((x0 + x1) / 2, Frame::height - 6, "middle", q_name, "axis");
   out += svg_text(14, (y0 + y1) / 2, "middle", "t", "axis");
-  out += svg_text(x0, 15, "start", q_name + "\xE2\x80\x93t: extent along " + q_name + " over time", "heading");
+  out += svg_text(x0, 15, "start", q_name + "\xE2\x80\x93t: extent along " + q_name + " over time" + (zoom ? ", near the contact" : ""),
+                  "heading");
   return out;
 }
 
@@ -492,7 +529,9 @@ std::string svg_marker(const Marker& m, int axis, const Frame& f)
   }
 }
 
-std::string svg_diagram(const Drawing& d, int axis, const std::string& id)
+// The diagram of one axis; zoom: in that frame (about the contact), the
+// markers clipped to it too.
+std::string svg_diagram(const Drawing& d, int axis, const std::string& id, const std::optional<Frame>& zoom = std::nullopt)
 {
   const std::string q_name(1, "xyz"[axis]);
   std::ostringstream out;
@@ -502,20 +541,39 @@ std::string svg_diagram(const Drawing& d, int axis, const std::string& id)
     out << svg_text(Frame::width / 2, Frame::height / 2, "middle", "cannot draw: " + d.error) << "</svg>\n";
     return out.str();
   }
-  Frame f = frame_of(d, axis);
+  Frame f = zoom ? *zoom : frame_of(d, axis);
   double x0 = Frame::left, y0 = Frame::top;
   out << "<clipPath id=\"" << id << "\"><rect x=\"" << x0 << "\" y=\"" << y0 << "\" width=\""
       << Frame::width - Frame::left - Frame::right << "\" height=\"" << Frame::height - Frame::top - Frame::bottom
-      << "\"/></clipPath>\n" << svg_axes(f, q_name) << "<g clip-path=\"url(#" << id << ")\">\n";
+      << "\"/></clipPath>\n" << svg_axes(f, q_name, zoom.has_value()) << "<g clip-path=\"url(#" << id << ")\">\n";
   for (const Drawn_object& o : d.objects)
     if (drawable(o.box, axis)) out << band_polygon(o, axis, f, d.t_lo, d.t_hi);
-  out << "</g>\n" << svg_span(f, d.t_lo, d.t_hi);
-  // Markers unclipped, the exact witness last so nothing hides it.
+  out << "</g>\n";
+  if (!zoom) out << svg_span(f, d.t_lo, d.t_hi);
+  // Markers unclipped (clipped in a zoom), the exact witness last so nothing hides it.
+  out << (zoom ? "<g clip-path=\"url(#" + id + ")\">\n" : "");
   for (Marker::Kind kind : {Marker::Kind::Other, Marker::Kind::Earliest, Marker::Kind::Witness})
     for (const Marker& m : d.markers)
       if (m.kind == kind) out << svg_marker(m, axis, f);
-  out << "</svg>\n";
+  out << (zoom ? "</g>\n" : "") << "</svg>\n";
   return out.str();
+}
+
+// The diagrams again about the exact earliest contact (t*, its coordinate):
+// a window a tenth of the full frame's on each axis. None without a t*.
+std::string zoom_html(const Drawing& d, std::size_t index)
+{
+  if (!d.error.empty()) return "";
+  auto m = std::find_if(d.markers.begin(), d.markers.end(), [](const Marker& k) { return k.kind == Marker::Kind::Earliest; });
+  if (m == d.markers.end()) return "";
+  std::string out = "<div class=\"diagrams zoom\">\n";
+  for (int axis = 0; axis < 3; ++axis) {
+    Frame full = frame_of(d, axis);
+    double wq = 0.05 * (full.q_hi - full.q_lo), wt = 0.05 * (full.t_hi - full.t_lo);
+    Frame z{m->point[axis] - wq, m->point[axis] + wq, m->point[3] - wt, m->point[3] + wt};
+    out += svg_diagram(d, axis, "zoom-" + std::to_string(index) + "-" + "xyz"[axis], z);
+  }
+  return out + "</div>\n";
 }
 
 std::string legend(const Drawing& d)
@@ -558,6 +616,12 @@ svg .earliest-line{stroke:#111;stroke-dasharray:1 3;stroke-width:1.2}svg .other{
 .mark-witness{color:#111;margin-right:4px}.mark-earliest{color:#d4a800;margin-right:4px}.mark-other{color:#d62728;margin-right:4px;font-weight:bold}.mark-span{margin-right:4px}
 ul.details{margin:4px 0;padding-left:20px}
 code.whole,.whole{white-space:nowrap;word-break:normal}
+.approx{color:#666;white-space:nowrap}.original{font-size:13px;font-weight:normal;color:#555}
+.view3d{margin:8px 0}.view-row{display:flex;flex-wrap:wrap;gap:12px;align-items:flex-start}
+canvas.view-canvas{border:1px solid #ccc;cursor:grab;width:560px;height:420px}.view-side{max-width:600px}
+.view-controls{margin:8px 0}.view-controls input{width:320px;vertical-align:middle}.view-controls button{margin:4px 4px 0 0}
+.dot{display:inline-block;width:10px;height:10px;border-radius:50%;margin-right:5px;vertical-align:middle}
+.view-note{color:#555;font-size:12px}.view-msg{color:#a94442}.diagrams.zoom svg.qt{background:#fcfcf4}
 )";
 
 std::string cell(const std::string& content, const char* cls = "")
@@ -652,11 +716,6 @@ std::string result_cell(const Subject_row& s)
   return cell(s.agrees == false ? "disagrees" : "agrees", s.agrees == false ? "bad-cell" : "good-cell");
 }
 
-// A number kept on one line unless long (a break in "31/4" would read "3 1/4").
-std::string number_html(const std::string& s)
-{
-  return std::string(s.size() <= 24 ? "<code class=\"whole\">" : "<code>") + escape(s) + "</code>";
-}
 
 // A subject's row: a scene's has its semantics and witness, a CCD query's not
 // (one semantics, no witness).
@@ -667,7 +726,7 @@ std::string subject_row(const Subject_row& s, bool scene)
   if (scene) row += cell(escape(s.semantics));
   row += cell(verdict_text(&s));
   if (scene)
-    row += cell("<span class=\"mono\">" + escape(located_text(s.witness)) + "</span>") + cell(yes_no(s.witness_valid));
+    row += cell("<span class=\"mono\">" + located_html(s.witness) + "</span>") + cell(yes_no(s.witness_valid));
   return row + cell(t_star) + cell(s.t_error ? number_html(*s.t_error) : dash) +
          cell(s.seconds ? seconds_text(*s.seconds) : dash, "n whole") + result_cell(s) + "</tr>\n";
 }
@@ -692,20 +751,31 @@ std::string facts_html(const Report_case& rc)
   std::string out = "<dl>\n<dt>exact verdict (regularised)</dt><dd><b>" + verdict_text(ref) + "</b></dd>\n";
   out += "<dt>exact verdict (closed: touching counts)</dt><dd><b>" + verdict_text(closed) + "</b>" +
          (c.closed_touch == true ? " (touching only: the interiors do not meet)" : "") + "</dd>\n";
-  out += "<dt>exact witness</dt><dd class=\"mono\">" + escape(located_text(ref ? ref->witness : none)) + "</dd>\n";
+  out += "<dt>exact witness</dt><dd class=\"mono\">" + located_html(ref ? ref->witness : none) + "</dd>\n";
   out += "<dt>exact earliest</dt><dd class=\"mono\">" +
-         (earliest ? "t* = " + escape(earliest->t) + ", " + escape(located_text(earliest)) : std::string(dash)) + "</dd>\n";
-  out += "<dt>time span</dt><dd class=\"mono\">[" + to_string(rc.scene.t_lo) + ", " + to_string(rc.scene.t_hi) + "]</dd>\n";
+         (earliest ? "t* = " + number_html(earliest->t) + ", " + located_html(earliest) : std::string(dash)) + "</dd>\n";
+  out += "<dt>time span</dt><dd class=\"mono\">[" + number_html(to_string(rc.scene.t_lo)) + ", " +
+         number_html(to_string(rc.scene.t_hi)) + "]</dd>\n";
   if (closed && closed->earliest)
-    out += "<dt>exact first contact (closed)</dt><dd class=\"mono\">t* = " + escape(closed->earliest->t) + ", " +
-           escape(located_text(closed->earliest)) + "</dd>\n";
+    out += "<dt>exact first contact (closed)</dt><dd class=\"mono\">t* = " + number_html(closed->earliest->t) + ", " +
+           located_html(closed->earliest) + "</dd>\n";
   return out + "</dl>\n";
+}
+
+// A relative link from the report folder would break when the folder moves;
+// the file as given is what the user ran the report with.
+std::string original_link(const Report_case& rc)
+{
+  if (rc.original.empty()) return "";
+  return " <span class=\"original\">minimised from <a href=\"" + escape(rc.original) + "\"><code>" +
+         escape(rc.original) + "</code></a></span>";
 }
 
 std::string section_head(const Report_case& rc, std::size_t index)
 {
   return std::string("<section class=\"case ") + case_class(rc.comparison) + "\" id=\"case-" + std::to_string(index) +
-         "\">\n<h2><code>" + escape(rc.file) + "</code></h2>\n<p class=\"name\">" + escape(rc.comparison.name) + "</p>\n";
+         "\">\n<h2><code>" + escape(rc.file) + "</code>" + original_link(rc) + "</h2>\n<p class=\"name\">" +
+         escape(rc.comparison.name) + "</p>\n";
 }
 
 // A CCD query's vertices, exact, at t = 0 and t = 1 (in place of diagrams).
@@ -715,7 +785,8 @@ std::string query_html(const Ccd_query& q)
   static const char* const edge_edge[] = {"ea0", "ea1", "eb0", "eb1"};
   const char* const* names = q.type() == Ccd_type::vertex_face ? vertex_face : edge_edge;
   auto point = [](const Ccd_query::Point& p) {
-    return "<span class=\"mono\">(" + escape(to_string(p[0]) + ", " + to_string(p[1]) + ", " + to_string(p[2])) + ")</span>";
+    return "<span class=\"mono\">(" + number_html(to_string(p[0])) + ", " + number_html(to_string(p[1])) + ", " +
+           number_html(to_string(p[2])) + ")</span>";
   };
   std::string out = "<table>\n<tr><th>vertex</th><th>at t = 0</th><th>at t = 1</th></tr>\n";
   for (int i = 0; i < 4; ++i) out += "<tr>" + cell(names[i]) + cell(point(q.row(i))) + cell(point(q.row(i + 4))) + "</tr>\n";
@@ -730,7 +801,7 @@ std::string ccd_case_html(const Report_case& rc, std::size_t index)
   out << section_head(rc, index) << "<dl>\n<dt>query</dt><dd>" << ccd_type_name(rc.ccd->query.type()) << "</dd>\n";
   if (!rc.family.empty()) out << "<dt>family</dt><dd>" << escape(rc.family) << "</dd>\n";
   out << "<dt>exact verdict (closed: touching counts)</dt><dd><b>" << verdict_text(exact) << "</b></dd>\n"
-      << "<dt>exact t*</dt><dd class=\"mono\">" << (exact && exact->earliest ? escape(exact->earliest->t) : dash)
+      << "<dt>exact t*</dt><dd class=\"mono\">" << (exact && exact->earliest ? number_html(exact->earliest->t) : dash)
       << "</dd>\n</dl>\n<table>\n<tr><th>subject</th><th>verdict</th><th>t*</th><th>t error</th><th>time</th>"
       << "<th>result</th></tr>\n";
   for (const Subject_row& s : c.subjects) out << subject_row(s, false);
@@ -748,14 +819,20 @@ std::string case_html(const Report_case& rc, std::size_t index)
       << "<th>t error</th><th>time</th><th>result</th></tr>\n";
   for (const Subject_row& s : c.subjects) out << subject_row(s, true);
   out << "</table>\n" << details_html(c);
+  if (!rc.scene.objects.empty()) out << scene_view_html(rc, index, objects_to_draw(rc));
   Drawing d = drawing_of(rc);
+  // Nothing to draw (a turning scene): one line, not three empty diagrams.
+  if (!d.error.empty()) {
+    out << "<p class=\"view-note\">No q-t diagrams: " << escape(d.error) << ".</p>\n</section>\n";
+    return out.str();
+  }
   out << "<div class=\"diagrams\">\n";
   for (int axis = 0; axis < 3; ++axis) out << svg_diagram(d, axis, "clip-" + std::to_string(index) + "-" + "xyz"[axis]);
-  out << "</div>\n" << legend(d) << "</section>\n";
+  out << "</div>\n" << zoom_html(d, index) << legend(d) << "</section>\n";
   return out.str();
 }
 
-std::string page_html(const std::vector<Report_case>& cases, const json& summary)
+std::string page_html(const std::vector<Report_case>& cases, const json& summary, bool three)
 {
   std::vector<std::size_t> order(cases.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -768,14 +845,40 @@ std::string page_html(const std::vector<Report_case>& cases, const json& summary
       << "<style>" << page_style << "</style>\n</head>\n<body>\n<h1>clash4d verification report</h1>\n"
       << "<p>Every subject's answer held against the exact one in the subject's own semantics (regularised: touching "
       << "is not a collision; closed: touching counts; a CCD query is always closed). "
-      << "Diagrams: each object's extent along one axis over time; doubles, for presentation only.</p>\n"
-      << summary_html(summary) << index_html(cases, order);
+      << "Diagrams: each object's extent along one axis over time. 3D views: each object as the union of the "
+      << "convex cells of its CSG formula, placed by its motion at the chosen time. Both in doubles, for "
+      << "presentation only: no answer is read from them.</p>\n";
+  if (!three) out << "<p class=\"view-msg\">The 3D views need three.js (three.min.js beside this page), which was not found when "
+                  << "the report was written.</p>\n";
+  out << summary_html(summary) << index_html(cases, order);
   for (std::size_t i : order) out << case_html(cases[i], i);
-  out << "</body>\n</html>\n";
+  out << "<script src=\"three.min.js\"></script>\n<script>" << scene_view_script() << "</script>\n</body>\n</html>\n";
   return out.str();
 }
 
 // ---------------------------------------------------------------- files
+
+// three.js as CMake found it (CLASH4D_THREE_JS), copied beside the page so
+// the report opens offline; none when absent (the page says so).
+std::string three_js_path()
+{
+#ifdef CLASH4D_THREE_JS
+  return CLASH4D_THREE_JS;
+#else
+  return "not configured";
+#endif
+}
+
+std::optional<std::string> three_js()
+{
+#ifdef CLASH4D_THREE_JS
+  std::ifstream in(CLASH4D_THREE_JS, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.is_open() && !text.str().empty()) return text.str();
+#endif
+  return std::nullopt;
+}
 
 } // namespace
 
@@ -787,13 +890,18 @@ Report_case ccd_report_case(const std::string& file, const Ccd_comparison& c, co
 void write_report(const std::vector<Report_case>& cases, const std::string& dir)
 {
   json summary = summary_of(cases);
-  std::string report = report_json(cases, summary), junit = junit_xml(cases), page = page_html(cases, summary);
+  std::optional<std::string> three = three_js();
+  if (!three)
+    std::cerr << "clash4d report: warning: three.js not found (" << three_js_path()
+              << "): the report's 3D views will not draw (install libjs-three)\n";
+  std::string report = report_json(cases, summary), junit = junit_xml(cases), page = page_html(cases, summary, three.has_value());
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))
     throw std::runtime_error(dir + ": cannot create the report directory" + (ec ? ": " + ec.message() : ""));
   write_file_atomically((fs::path(dir) / "report.json").string(), report);
   write_file_atomically((fs::path(dir) / "junit.xml").string(), junit);
+  if (three) write_file_atomically((fs::path(dir) / "three.min.js").string(), *three);
   write_file_atomically((fs::path(dir) / "index.html").string(), page);
 }
 

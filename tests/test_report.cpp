@@ -2,11 +2,17 @@
 #include <boost/test/unit_test.hpp>
 
 #include "compare/Ccd_comparer.h"
+#include "compare/Decimal_text.h"
+#include "compare/Display_mesh.h"
 #include "compare/Report_writer.h"
+#include "compare/Scene_view.h"
+#include "float/Double_kernel.h"
+#include "model/Model_builder.h"
 #include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <unistd.h>
 
@@ -119,7 +125,11 @@ BOOST_AUTO_TEST_CASE(three_files_and_no_temporaries)
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(dir / "out")) names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
-  BOOST_TEST(names == (std::vector<std::string>{"index.html", "junit.xml", "report.json"}), boost::test_tools::per_element());
+  std::vector<std::string> expected{"index.html", "junit.xml", "report.json"};
+#ifdef CLASH4D_THREE_JS
+  expected.push_back("three.min.js");   // the 3D views' library, beside the page
+#endif
+  BOOST_TEST(names == expected, boost::test_tools::per_element());
 }
 
 BOOST_AUTO_TEST_CASE(report_json_counts)
@@ -173,10 +183,17 @@ BOOST_AUTO_TEST_CASE(junit_counts_and_escaping)
 BOOST_AUTO_TEST_CASE(html_is_self_contained_and_escaped)
 {
   std::string h = read("index.html");
-  BOOST_TEST(count(h, "<svg") == 9u);
+  // Three diagrams per scene, and three zoomed on the ram's contact (the one t*).
+  BOOST_TEST(count(h, "<svg") == 12u);
   BOOST_TEST(count(h, "http://") == 0u);
   BOOST_TEST(count(h, "https://") == 0u);
-  BOOST_TEST(count(h, "<script") == 0u);
+  // One 3D view per scene; three.js from the report folder, then the views' script.
+  BOOST_TEST(count(h, "<canvas") == 3u);
+  BOOST_TEST(count(h, "<script src=\"three.min.js\"></script>") == 1u);
+  BOOST_TEST(count(h, "<script") == 5u);
+  BOOST_TEST(count(h, "</script>") == 5u);
+  // In the views' JSON, names keep no markup: a<b&"c" as JSON escapes.
+  BOOST_TEST(h.find("\"a\\u003cb\\u0026\\\"c\\\"\"") != std::string::npos);
   BOOST_TEST(h.find("a&lt;b&amp;&quot;c&quot;") != std::string::npos);
   BOOST_TEST(h.find("a<b&\"c\"") == std::string::npos);
   BOOST_TEST(h.find("dir/&lt;touch&gt;.json") != std::string::npos);
@@ -233,8 +250,171 @@ BOOST_AUTO_TEST_CASE(ccd_queries_have_rows_beside_scenes)
   BOOST_TEST(!c["subjects"][0].contains("witness"));
   std::string x = slurp(dir / "out" / "junit.xml"), h = slurp(dir / "out" / "index.html");
   BOOST_TEST(count(x, "classname=\"q.jsonl: query 2 (line 9)\"") == 4u);   // exact, double, double tol, exact-rounded
-  BOOST_TEST(h.find("<td>v</td><td><span class=\"mono\">(1/4, 1/4, 1)</span></td>") != std::string::npos);
+  BOOST_TEST(h.find("<td>v</td><td><span class=\"mono\">(<code class=\"whole\">1/4</code> <span class=\"approx\">(\xE2\x89\x88 0.25)</span>, "
+                    "<code class=\"whole\">1/4</code> <span class=\"approx\">(\xE2\x89\x88 0.25)</span>, <code class=\"whole\">1</code>)</span></td>") != std::string::npos);
   BOOST_TEST(h.find("<dt>family</dt><dd>vf-face</dd>") != std::string::npos);
-  BOOST_TEST(count(h, "<svg") == 3u);   // the scene's diagrams only
+  BOOST_TEST(count(h, "<svg") == 6u);   // the scene's diagrams only (and their zoom on its t*)
+  fs::remove_all(dir);
+}
+
+// ---------------------------------------------------------------- 3D view
+
+namespace {
+
+Csg_model<double> model_of(const std::string& shape)
+{
+  Scene s = read_scene(read_json_text(R"({"format": "clash4d-scene/1", "time": [0, 1], "objects": [{"name": "o", "shape": )" +
+                                      shape +
+                                      R"(}, {"name": "far", "shape": {"block": {"min": [9,9,9], "max": [10,10,10]}}}]})"));
+  Double_kernel k;
+  return Model_builder<Double_kernel>(k).build(s.objects[0].shape);
+}
+
+// The mesh's extent along each axis: {min x, max x, min y, ...}.
+std::array<double, 6> extent(const Display_mesh& m)
+{
+  std::array<double, 6> e{INFINITY, -INFINITY, INFINITY, -INFINITY, INFINITY, -INFINITY};
+  for (const auto& v : m.vertices)
+    for (int a = 0; a < 3; ++a) { e[2 * a] = std::min(e[2 * a], v[a]); e[2 * a + 1] = std::max(e[2 * a + 1], v[a]); }
+  return e;
+}
+
+const std::array<double, 3> lo{-1, -1, -1}, hi{2, 2, 2};
+
+} // namespace
+
+// The unit cube: 8 corners, 6 square faces of 2 triangles each.
+BOOST_AUTO_TEST_CASE(display_mesh_of_the_unit_cube)
+{
+  Display_mesh m = display_mesh(model_of(R"({"block": {"min": [0,0,0], "max": [1,1,1]}})"), lo, hi);
+  BOOST_TEST(m.vertices.size() == 8u);
+  BOOST_TEST(m.triangles.size() == 12u);
+  BOOST_TEST(m.cells == 1u);
+  BOOST_TEST(!m.clipped);
+  BOOST_TEST(extent(m) == (std::array<double, 6>{0, 1, 0, 1, 0, 1}), boost::test_tools::per_element());
+  // Each triangle faces outward: its normal points away from the centre (1/2, 1/2, 1/2).
+  for (const auto& t : m.triangles) {
+    const auto &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
+    std::array<double, 3> u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    std::array<double, 3> n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    BOOST_TEST(n[0] * (a[0] - 0.5) + n[1] * (a[1] - 0.5) + n[2] * (a[2] - 0.5) > 0);
+  }
+}
+
+// The cube minus the half-space x >= 1/2 (-x + 1/2 <= 0): one cell, the box
+// [0, 1/2] x [0, 1]^2, again 8 corners and 12 triangles.
+BOOST_AUTO_TEST_CASE(display_mesh_of_a_difference)
+{
+  Display_mesh m = display_mesh(
+      model_of(R"({"difference": [{"block": {"min": [0,0,0], "max": [1,1,1]}}, {"halfspace": [-1, 0, 0, 0.5]}]})"), lo, hi);
+  BOOST_TEST(m.vertices.size() == 8u);
+  BOOST_TEST(m.triangles.size() == 12u);
+  BOOST_TEST(extent(m) == (std::array<double, 6>{0, 0.5, 0, 1, 0, 1}), boost::test_tools::per_element());
+}
+
+// The floor z <= 0, unbounded: cut by the drawing box to [-1, 2]^2 x [-1, 0].
+BOOST_AUTO_TEST_CASE(display_mesh_of_a_halfspace_is_clipped)
+{
+  Display_mesh m = display_mesh(model_of(R"({"halfspace": [0, 0, 1, 0]})"), lo, hi);
+  BOOST_TEST(m.clipped);
+  BOOST_TEST(m.vertices.size() == 8u);
+  BOOST_TEST(m.triangles.size() == 12u);
+  BOOST_TEST(extent(m) == (std::array<double, 6>{-1, 2, -1, 2, -1, 0}), boost::test_tools::per_element());
+}
+
+// The ram case's view: two cubes of 8 corners; the ram's keys at tL = 0, its
+// breakpoint 5 and tH = 10 (displacements 0, (-5, 0, 0), (-5, 0, 0)); the
+// buttons at the witness time 5/2 and t* = 2; the exact points marked.
+BOOST_AUTO_TEST_CASE(view_data_of_the_ram)
+{
+  json d = scene_view_data(colliding_case(), {0, 1});
+  BOOST_TEST(d["objects"].size() == 2u);
+  BOOST_TEST(d["objects"][0]["vertices"].size() == 24u);
+  BOOST_TEST(d["objects"][0]["triangles"].size() == 36u);
+  const json& keys = d["objects"][1]["keys"];
+  BOOST_TEST(keys.size() == 3u);
+  BOOST_TEST(keys[1]["t"] == 5.0);
+  BOOST_TEST(keys[1]["c"] == json({-5.0, 0.0, 0.0}));
+  BOOST_TEST(keys[2]["c"] == json({-5.0, 0.0, 0.0}));
+  BOOST_TEST(d["times"][0]["label"] == "witness time");
+  BOOST_TEST(d["times"][0]["t"] == 2.5);
+  BOOST_TEST(d["times"][1]["label"] == "exact t*");
+  BOOST_TEST(d["times"][1]["t"] == 2.0);
+  BOOST_TEST(d["marks"][0]["label"] == "exact witness");
+  BOOST_TEST(d["marks"][0]["point"] == json({0.75, 0.5, 0.5}));
+  BOOST_TEST(d["marks"][1]["point"] == json({1.0, 0.5, 0.5}));
+}
+
+// ---------------------------------------------------------------- numbers, findings
+
+BOOST_AUTO_TEST_CASE(decimals_of_exact_numbers)
+{
+  BOOST_TEST(*decimal_value("3/4") == 0.75);
+  BOOST_TEST(*decimal_value("-2.5e3") == -2500.0);
+  BOOST_TEST(*decimal_value("root of [-1, 0, 8] in (0, 1) ~ 0.3535533905932738") == 0.3535533905932738);
+  BOOST_TEST(!decimal_value("hello"));
+  BOOST_TEST(decimal_text("2784582518619477629369/2353783867871269486592") == "\xE2\x89\x88 1.18302");
+  BOOST_TEST(decimal_text("2").empty());   // already a decimal
+  BOOST_TEST(decimal_text("-123456789012").empty());   // an integer reads as itself
+  BOOST_TEST(decimal_text("0.1000000000000000055511151231257827") == "\xE2\x89\x88 0.1");
+}
+
+// A minimised finding whose t* is a long fraction and a subject whose t* is
+// algebraic: each shown with its decimal; report.json keeps the exact text;
+// the heading links the scene it was minimised from.
+BOOST_AUTO_TEST_CASE(decimals_and_the_original_in_the_page)
+{
+  const std::string t_star = "2784582518619477629369/2353783867871269486592";
+  const std::string root = "root of [-1, 0, 8] in (0, 1) ~ 0.3535533905932738";
+  Report_case c = colliding_case();
+  c.comparison.subjects[0].earliest->t = t_star;
+  c.comparison.subjects[1].earliest = Located{{"box", "ram"}, std::nullopt, root};
+  c.original = "fuzz/found/big <1>.json";
+  fs::path dir = fs::temp_directory_path() / ("clash4d_test_report_numbers_" + std::to_string(::getpid()));
+  write_report({c}, (dir / "out").string());
+  std::string h = slurp(dir / "out" / "index.html");
+  json r = json::parse(slurp(dir / "out" / "report.json"));
+  BOOST_TEST(h.find(t_star + "</code> <span class=\"approx\">(\xE2\x89\x88 1.18302)</span>") != std::string::npos);
+  BOOST_TEST(h.find("0.3535533905932738</code> <span class=\"approx\">(\xE2\x89\x88 0.353553)</span>") != std::string::npos);
+  BOOST_TEST(h.find("3/4</code> <span class=\"approx\">(\xE2\x89\x88 0.75)</span>") != std::string::npos);
+  BOOST_TEST(r["cases"][0]["subjects"][0]["earliest"]["t"] == t_star);
+  BOOST_TEST(r["cases"][0]["subjects"][1]["earliest"]["t"] == root);
+  BOOST_TEST(h.find("minimised from <a href=\"fuzz/found/big &lt;1&gt;.json\">") != std::string::npos);
+  // The subject's t* (no point) is a button of the 3D view.
+  BOOST_TEST(h.find(">double t*</button>") != std::string::npos);
+#ifdef CLASH4D_THREE_JS
+  BOOST_TEST(slurp(dir / "out" / "three.min.js") == slurp(CLASH4D_THREE_JS));
+#endif
+  fs::remove_all(dir);
+}
+
+// Coordinates near 1.2e8: the x axis' tick labels are decimals (no
+// exponent) and far enough apart for their text (11px type: at least 6px a
+// character between the centres of neighbours).
+BOOST_AUTO_TEST_CASE(tick_labels_are_decimals_that_do_not_overlap)
+{
+  Report_case c = make_case("far.json", R"({"format": "clash4d-scene/1", "time": [0, 1], "objects": [
+      {"name": "a", "shape": {"block": {"min": [123456789,0,0], "max": [123456790,1,1]}}},
+      {"name": "b", "shape": {"block": {"min": [123456791,0,0], "max": [123456792,1,1]}}, "motion": "vel -1 0 0"}]})",
+    R"({"file": "far.json", "name": "", "closed_touch": true, "subjects": [
+      {"subject": "exact", "reference": true, "ok": true, "error": "", "collide": false, "witness": null,
+       "witness_valid": null, "earliest": null, "t_error": null, "seconds": 0.003, "agrees": true, "cause": null}],
+     "disagreements": []})");
+  fs::path dir = fs::temp_directory_path() / ("clash4d_test_report_ticks_" + std::to_string(::getpid()));
+  write_report({c}, (dir / "out").string());
+  std::string h = slurp(dir / "out" / "index.html");
+  std::string x_svg = h.substr(h.find("<svg class=\"qt\""));
+  x_svg = x_svg.substr(0, x_svg.find("</svg>"));
+  std::regex label("<text x=\"([0-9.]+)\" y=\"302.00\" text-anchor=\"middle\" class=\"\">([^<]*)</text>");
+  std::vector<std::pair<double, std::string>> labels;
+  for (std::sregex_iterator it(x_svg.begin(), x_svg.end(), label), end; it != end; ++it)
+    labels.emplace_back(std::stod((*it)[1]), (*it)[2]);
+  BOOST_TEST_REQUIRE(labels.size() >= 2u);
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    BOOST_TEST(labels[i].second.find('e') == std::string::npos);
+    double value = std::stod(labels[i].second);   // the padded span of [123456789, 123456792]
+    BOOST_TEST((123456788 <= value && value <= 123456793));
+    if (i) BOOST_TEST(labels[i].first - labels[i - 1].first >= 6.0 * labels[i].second.size());
+  }
   fs::remove_all(dir);
 }
