@@ -32,4 +32,11 @@ std::string decimal_text(const std::string& text)
   return std::string("\xE2\x89\x88 ") + buffer;
 }
 
+std::string with_decimal(const std::string& text)
+{
+  if (text.rfind("root of", 0) == 0) return text;
+  std::string d = decimal_text(text);
+  return d.empty() ? text : text + " (" + d + ")";
+}
+
 } // namespace clash4d

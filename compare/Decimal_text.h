@@ -18,6 +18,11 @@ std::optional<double> decimal_value(const std::string& text);
 // already reads as that decimal (a short decimal).
 std::string decimal_text(const std::string& text);
 
+// The text for people, with its decimal beside it: "p/q (≈ 1.18302)"; an
+// integer, a short decimal or an algebraic number's text (which carries
+// its own "~ d") as it is. compare's text output and the report use it.
+std::string with_decimal(const std::string& text);
+
 } // namespace clash4d
 
 #endif

@@ -1,5 +1,4 @@
 #include "scene/Number_json.h"
-#include "scene/Number_text.h"
 
 #include <charconv>
 #include <cstdio>
@@ -20,16 +19,6 @@ std::string shortest_decimal(double x)
   char buffer[64];
   auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
   return std::string(buffer, result.ptr);
-}
-
-std::string with_decimal(const std::string& text)
-{
-  if (text.find('/') == std::string::npos) return text;
-  Number_parse n = parse_number_text(text, true);
-  if (!n.ok) return text;
-  char decimal[32];
-  std::snprintf(decimal, sizeof decimal, "%.6g", round_to_nearest(n.value));
-  return text + " (~" + decimal + ")";
 }
 
 } // namespace clash4d

@@ -14,11 +14,6 @@ namespace clash4d {
 nlohmann::ordered_json number_json(const Algebraic& x);
 // The shortest decimal that reads back to the same double.
 std::string shortest_decimal(double x);
-// An exact number's text for people (issue 60): a fraction with its decimal
-// beside it, "p/q (~1.18302)" (six significant digits, display only); any
-// other text (an integer, a decimal, an algebraic number's text, which
-// carries its own "~ approx") as it is.
-std::string with_decimal(const std::string& text);
 
 } // namespace clash4d
 
