@@ -207,4 +207,15 @@ Display_mesh display_mesh(const Csg_model<double>& m, const std::array<double, 3
   return mesh;
 }
 
+Box<double, 3> node_box(const Csg_model<double>& m, int i)
+{
+  const Csg_node& n = m.nodes[i];
+  if (n.op == Csg_node::Op::Primitive) return m.primitives[n.primitive].box;
+  Box<double, 3> b = node_box(m, n.children[0]);
+  if (n.op == Csg_node::Op::Difference) return b;
+  for (std::size_t k = 1; k < n.children.size(); ++k)
+    b = n.op == Csg_node::Op::Union ? join(b, node_box(m, n.children[k])) : meet(b, node_box(m, n.children[k]));
+  return b;
+}
+
 } // namespace clash4d

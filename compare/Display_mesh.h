@@ -19,6 +19,10 @@ struct Display_mesh {
   bool truncated = false;     // more cells than drawn (the DNF grew past the cap)
 };
 
+// A bound of the solid of CSG node i: join for union, meet for intersection,
+// the first child for difference.
+Box<double, 3> node_box(const Csg_model<double>& m, int i);
+
 // The solid as the union of the convex cells of its DNF (a difference's
 // subtrahend complemented plane by plane), each cell cut by the box
 // [lo, hi]; cells may overlap (drawn twice, which looks the same). Vertices

@@ -1,6 +1,7 @@
 #include "compare/Report_writer.h"
 
 #include "compare/Decimal_text.h"
+#include "compare/Display_mesh.h"
 #include "compare/Scene_view.h"
 
 #include "model/Scene_model.h"
@@ -281,19 +282,6 @@ struct Drawing {
   std::vector<Marker> markers;
   std::string error;                // why nothing can be drawn
 };
-
-// A bound of the solid of a CSG node: join for union, meet for intersection,
-// the first child for difference.
-Box<double, 3> node_box(const Csg_model<double>& m, int i)
-{
-  const Csg_node& n = m.nodes[i];
-  if (n.op == Csg_node::Op::Primitive) return m.primitives[n.primitive].box;
-  Box<double, 3> b = node_box(m, n.children[0]);
-  if (n.op == Csg_node::Op::Difference) return b;
-  for (std::size_t k = 1; k < n.children.size(); ++k)
-    b = n.op == Csg_node::Op::Union ? join(b, node_box(m, n.children[k])) : meet(b, node_box(m, n.children[k]));
-  return b;
-}
 
 void add_marker(std::vector<Marker>& out, Marker::Kind kind, const std::optional<Located>& located, const std::string& title)
 {

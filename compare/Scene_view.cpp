@@ -3,6 +3,7 @@
 #include "compare/Decimal_text.h"
 #include "compare/Display_mesh.h"
 #include "float/Double_kernel.h"
+#include "geometry/Rotation_matrix.h"
 #include "model/Model_builder.h"
 #include "model/Motion_path.h"
 #include "scene/Pose_motion.h"
@@ -66,26 +67,10 @@ std::vector<Placement> placements_of(const Scene_object& o, const Rational& t_lo
 
 P3 placed(const Placement& k, const P3& p)
 {
-  double w = k.q[0], x = k.q[1], y = k.q[2], z = k.q[3], n = w * w + x * x + y * y + z * z;
-  double r[3][3] = {{w * w + x * x - y * y - z * z, 2 * (x * y - w * z), 2 * (x * z + w * y)},
-                    {2 * (x * y + w * z), w * w - x * x + y * y - z * z, 2 * (y * z - w * x)},
-                    {2 * (x * z - w * y), 2 * (y * z + w * x), w * w - x * x - y * y + z * z}};
+  auto r = rotation_matrix(k.q[0], k.q[1], k.q[2], k.q[3]);   // the scene format's R(q), here in doubles (display)
   P3 out;
-  for (int i = 0; i < 3; ++i) out[i] = (r[i][0] * p[0] + r[i][1] * p[1] + r[i][2] * p[2]) / n + k.c[i];
+  for (int i = 0; i < 3; ++i) out[i] = r[i][0] * p[0] + r[i][1] * p[1] + r[i][2] * p[2] + k.c[i];
   return out;
-}
-
-// A bound of the solid of a CSG node: join for union, meet for intersection,
-// the first child for difference.
-Box<double, 3> node_box(const Csg_model<double>& m, int i)
-{
-  const Csg_node& n = m.nodes[i];
-  if (n.op == Csg_node::Op::Primitive) return m.primitives[n.primitive].box;
-  Box<double, 3> b = node_box(m, n.children[0]);
-  if (n.op == Csg_node::Op::Difference) return b;
-  for (std::size_t k = 1; k < n.children.size(); ++k)
-    b = n.op == Csg_node::Op::Union ? join(b, node_box(m, n.children[k])) : meet(b, node_box(m, n.children[k]));
-  return b;
 }
 
 // ---------------------------------------------------------------- marks and times
