@@ -25,21 +25,10 @@
 #include <unistd.h>
 
 namespace clash4d {
-namespace {
-
-using json = nlohmann::ordered_json;
-namespace fs = std::filesystem;
-
-// Disagreements (scenes and CCD queries), then faults of external subjects.
-const char* const all_causes[] = {"contact",         "input rounding", "tolerance", "arithmetic", "time",
-                                  "invalid witness", "crash",          "timeout",   "protocol"};
-constexpr std::size_t max_drawn_objects = 24;
-
-// ---------------------------------------------------------------- text
 
 // Escapes for HTML text and attributes and for XML; control characters that
 // XML 1.0 forbids become U+FFFD.
-std::string escape(const std::string& s)
+std::string escape_markup(const std::string& s)
 {
   std::string out;
   for (char c : s) {
@@ -56,6 +45,20 @@ std::string escape(const std::string& s)
   }
   return out;
 }
+
+namespace {
+
+using json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+
+// Disagreements (scenes and CCD queries), then faults of external subjects.
+const char* const all_causes[] = {"contact",         "input rounding", "tolerance", "arithmetic", "time",
+                                  "invalid witness", "crash",          "timeout",   "protocol"};
+constexpr std::size_t max_drawn_objects = 24;
+
+// ---------------------------------------------------------------- text
+
+std::string escape(const std::string& s) { return escape_markup(s); }
 
 std::string format(const char* spec, double x)
 {

@@ -31,6 +31,10 @@ struct Report_case {
 // The case of a CCD query.
 Report_case ccd_report_case(const std::string& file, const Ccd_comparison& c, const std::string& family);
 
+// Escapes for HTML text and attributes and for XML; control characters that
+// XML 1.0 forbids become U+FFFD.
+std::string escape_markup(const std::string& s);
+
 // Writes DIR/index.html, DIR/report.json, DIR/junit.xml. Each file is written to
 // a temporary name in DIR and renamed, so no half-written file is ever left.
 // Creates DIR if missing. Throws std::runtime_error with a clear message on I/O failure.

@@ -182,21 +182,6 @@ std::vector<View_object> view_objects(const Report_case& rc, const std::vector<s
   return out;
 }
 
-std::string escape_html(const std::string& s)
-{
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 std::string number(double x)
 {
   char buffer[64];
@@ -209,11 +194,11 @@ std::string legend_html(const json& data)
   std::string out = "<div class=\"legend\">";
   for (const json& o : data["objects"])
     out += "<span class=\"item\"><span class=\"swatch\" style=\"background:" + o["colour"].get<std::string>() +
-           "\"></span>" + escape_html(o["name"].get<std::string>()) + (o["clipped"].get<bool>() ? " (cut by the drawing box)" : "") +
+           "\"></span>" + escape_markup(o["name"].get<std::string>()) + (o["clipped"].get<bool>() ? " (cut by the drawing box)" : "") +
            "</span>";
   for (const json& m : data["marks"])
     out += "<span class=\"item\"><span class=\"dot\" style=\"background:" + m["colour"].get<std::string>() +
-           "\"></span>" + escape_html(m["label"].get<std::string>()) + "</span>";
+           "\"></span>" + escape_markup(m["label"].get<std::string>()) + "</span>";
   return out + "</div>\n";
 }
 
@@ -255,10 +240,10 @@ std::string scene_view_html(const Report_case& rc, std::size_t index, const std:
                     "<span class=\"view-t mono\"></span><br>";
   for (const json& t : data["times"])
     out += "<button type=\"button\" data-t=\"" + number(t["t"].get<double>()) + "\" title=\"t = " +
-           escape_html(t["exact"].get<std::string>()) + "\">" + escape_html(t["label"].get<std::string>()) + "</button> ";
+           escape_markup(t["exact"].get<std::string>()) + "\">" + escape_markup(t["label"].get<std::string>()) + "</button> ";
   out += "<button type=\"button\" class=\"view-fit\">fit view</button></div>\n<p class=\"view-note\">Drag to turn, wheel to "
          "zoom, \"fit view\" to frame the objects where they are. Drawn in doubles, for display only.";
-  for (const json& n : data["notes"]) out += " " + escape_html(n.get<std::string>()) + ".";
+  for (const json& n : data["notes"]) out += " " + escape_markup(n.get<std::string>()) + ".";
   out += "</p><p class=\"view-gap\"></p><p class=\"view-msg\"></p></div></div>\n<script type=\"application/json\" class=\"view-data\">" + safe +
          "</script>\n</div>\n";
   return out;
