@@ -182,10 +182,10 @@ Json_value read_json_text(const std::string& text)
   return std::move(builder.result);
 }
 
-std::string read_file_text(const std::string& path, std::size_t max_bytes)
+std::string read_file_text(const std::string& path, std::size_t max_bytes, const std::string& noun)
 {
   int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) throw Input_error("", "cannot open the file");
+  if (fd < 0) throw Input_error("", "cannot open the " + noun);
   ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
   std::string text;
   char chunk[1 << 16];
@@ -194,13 +194,16 @@ std::string read_file_text(const std::string& path, std::size_t max_bytes)
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
       ::close(fd);
-      if (n < 0) throw Input_error("", "cannot read the file");
+      if (n < 0) throw Input_error("", "cannot read the " + noun);
       return text;
     }
     text.append(chunk, static_cast<std::size_t>(n));
     if (text.size() > max_bytes) {
       ::close(fd);
-      throw Input_error("", "file larger than the limit of " + std::to_string(max_bytes >> 20) + " MiB",
+      // Whole MiB as MiB (the scene's 64 MiB, a certificate's --certificate-max-mb), else bytes: never "0 MiB".
+      bool mib = max_bytes >= (1u << 20) && max_bytes % (1u << 20) == 0;
+      throw Input_error("", noun + " larger than the limit of " +
+                                (mib ? std::to_string(max_bytes >> 20) + " MiB" : std::to_string(max_bytes) + " bytes"),
                         CLASH4D_EXIT_LIMIT);
     }
   }

@@ -17,8 +17,9 @@ Json_value read_json_text(const std::string& text);
 // A file's bytes, or a pipe's (`check <(cat scene.json)`), read as a stream
 // up to max_bytes. Opened without blocking, so that a named pipe nobody
 // writes to reads as empty instead of hanging. Throws Input_error (no place:
-// the caller names the file), exit 3 beyond max_bytes.
-std::string read_file_text(const std::string& path, std::size_t max_bytes);
+// the caller names the file), exit 3 beyond max_bytes; `noun` names the
+// file in the messages ("cannot open the mesh file").
+std::string read_file_text(const std::string& path, std::size_t max_bytes, const std::string& noun = "file");
 
 // Reads a file (within CLASH4D_MAX_FILE_BYTES) and parses it; a folder is
 // named as such.

@@ -1,4 +1,5 @@
 #include "scene/Mesh_reader.h"
+#include "scene/Json_reader.h"
 #include "scene/Input_error.h"
 #include "scene/Number_text.h"
 
@@ -751,17 +752,12 @@ Mesh read_mesh_file(const std::string& path, const std::string& file_name, const
   // A pipe or a device would block or never end: a mesh is a regular file.
   if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
     throw Input_error(file_name, "is not a regular file (a pipe, a device or a socket), not a mesh file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Input_error(file_name, "cannot open the mesh file");
-  in.seekg(0, std::ios::end);
-  std::streamoff size = in.tellg();
-  if (size < 0) throw Input_error(file_name, "cannot read the mesh file");
-  if (static_cast<std::size_t>(size) > limits.file_bytes)
-    throw Input_error(file_name, "file of " + std::to_string(size) + " bytes is larger than the limit of " +
-                                     std::to_string(limits.file_bytes) + " bytes", CLASH4D_EXIT_LIMIT);
-  in.seekg(0);
-  std::string bytes(static_cast<std::size_t>(size), '\0');
-  if (size > 0 && !in.read(&bytes[0], size)) throw Input_error(file_name, "cannot read the mesh file");
+  std::string bytes;
+  try {
+    bytes = read_file_text(path, limits.file_bytes, "mesh file");   // the limit holds while reading, even if the file grows
+  } catch (const Input_error& e) {
+    throw Input_error(file_name, e.what(), e.exit_code());
+  }
   return read_mesh(bytes, format, file_name, limits);
 }
 

@@ -416,7 +416,7 @@ BOOST_AUTO_TEST_CASE(limits_give_exit_3)
   small.file_bytes = 100;
   r = mesh_refusal("l_part_ascii.stl", small);
   BOOST_TEST(r.second == CLASH4D_EXIT_LIMIT);
-  BOOST_TEST(contains(r.first, "is larger than the limit of 100 bytes"), r.first);
+  BOOST_TEST(contains(r.first, "l_part_ascii.stl: mesh file larger than the limit of 100 bytes"), r.first);
   small = Mesh_limits();
   small.pieces = 1;
   r = mesh_refusal("l_part.off", small);
