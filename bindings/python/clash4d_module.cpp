@@ -31,17 +31,7 @@ detection for moving polyhedral CSG solids). Use `import clash4d`: its
 check returns a typed clash4d.Answer; the check here returns the dict form
 below, which clash4d.Answer wraps.
 
-    import clash4d
-    from fractions import Fraction
-    scene = {
-        "format": "clash4d-scene/1", "time": [0, 10],
-        "objects": [
-            {"name": "a", "shape": {"block": {"min": [0, 0, 0], "max": [1, 1, 1]}}, "motion": "vel 1 0 0"},
-            {"name": "b", "shape": {"block": {"min": [2, 0, 0], "max": [3, 1, 1]}}, "motion": "vel -1 0 0"},
-        ],
-    }
-    r = clash4d.check(scene, earliest=True)
-    r["collide"], r["earliest"]["t"]     # True, Fraction(1, 2)
+    clash4d._core.check(scene, earliest=True)["earliest"]["t"]   # a Fraction; scene as in help(clash4d)
 
 Scenes, numbers and motions are as the clash4d package's docstring says
 (help(clash4d)).
