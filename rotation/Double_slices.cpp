@@ -2,6 +2,7 @@
 
 #include "float/Double_instantiation.h"
 #include "rotation/Cell_vertices.h"
+#include "rotation/Rotating_pair.h"
 #include "rotation/Pair_minors.h"
 
 #include <unsupported/Eigen/Polynomials>
@@ -92,9 +93,16 @@ Check_answer Double_slices::check(const Scene& s, const Check_options& o) const
   return check_double(s, tolerance_, o);
 }
 
+// The static double pipeline can answer with a witness that is not a
+// finite double (an overflow or 0/0 in a float subject): that is no point,
+// and no Rational holds it (GMP would abort); the answer is refused.
 Rational Double_slices::read_answer_number(const std::string& text) const
 {
-  return Rational(std::strtod(text.c_str(), nullptr));
+  double x = std::strtod(text.c_str(), nullptr);
+  if (!std::isfinite(x))
+    throw Rotation_unsupported("the double pipeline answered with a witness coordinate that is not a finite number (" +
+                               text + ")");
+  return Rational(x);
 }
 
 std::vector<Critical_time> Double_slices::critical_times(const std::vector<Moving_plane>& planes,
