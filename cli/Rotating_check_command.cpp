@@ -103,6 +103,7 @@ int run_rotating_check(const Scene& scene, const Rotating_check_request& r, std:
   } catch (const Minor_limit& e) {
     throw Input_error("objects", e.what(), CLASH4D_EXIT_LIMIT);
   }
+  if (r.before_print) r.before_print(answer);
   if (r.options.json) out << answer_json(answer, r.options, r.stats, r.tolerance).dump(2) << "\n";
   else print_text(answer, r.options, r.stats, out);
   return answer.collide ? 1 : 0;

@@ -7,6 +7,8 @@
 
 #include "check/Check_answer.h"
 #include "scene/Scene.h"
+#include "rotation/Rotating_check.h"
+#include <functional>
 #include <iosfwd>
 #include <string>
 
@@ -17,6 +19,9 @@ struct Rotating_check_request {
   Check_options options;
   bool stats = false;
   double tolerance = 0;   // --number double: the static double pipeline's
+  // Run on the answer before it is printed (the certificate): it may throw
+  // an Input_error, and then no answer is printed.
+  std::function<void(const Rotating_check_answer&)> before_print;
 };
 
 // The exit status: 0 no collision, 1 collision. A question this release

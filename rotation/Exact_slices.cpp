@@ -207,8 +207,8 @@ bool in_closed_object(const std::vector<Moving_plane>& rows, std::size_t offset,
 // edge-edge contact, a point on the four planes of a minor that vanishes
 // at r, three of them independent there (docs/rotation.md). Each such point
 // is tried against both objects, exactly in Q(r).
-std::optional<std::array<Algebraic, 3>> common_point_at(const std::vector<Moving_plane>& rows, const Rotating_object& a,
-                                                             const Rotating_object& b, const Critical_time& c)
+std::optional<Quotient_point> common_point_at(const std::vector<Moving_plane>& rows, const Rotating_object& a,
+                                              const Rotating_object& b, const Critical_time& c)
 {
   std::size_t offset = a.shape.planes.size();
   for (const Minor_rows& m : c.vanishing) {
@@ -226,7 +226,7 @@ std::optional<std::array<Algebraic, 3>> common_point_at(const std::vector<Moving
       auto num = cramer_numerators(rows[t[0]], rows[t[1]], rows[t[2]]);
       Point_signs signs(rows, num, den, ds, c.t, ids);
       if (in_closed_object(rows, 0, a, signs, c.t) && in_closed_object(rows, offset, b, signs, c.t))
-        return point_at(num, den, c.t);
+        return Quotient_point{num, den};
     }
   }
   return std::nullopt;
@@ -274,6 +274,14 @@ std::optional<std::array<Algebraic, 3>> Exact_slices::closed_at_irrational(const
                                                                          const Rotating_object& a,
                                                                          const Rotating_object& b,
                                                                          const Critical_time& c) const
+{
+  std::optional<Quotient_point> x = common_point_at(rows, a, b, c);
+  if (!x) return std::nullopt;
+  return point_at(x->num, x->den, c.t);
+}
+
+std::optional<Quotient_point> closed_point_at(const std::vector<Moving_plane>& rows, const Rotating_object& a,
+                                              const Rotating_object& b, const Critical_time& c)
 {
   return common_point_at(rows, a, b, c);
 }

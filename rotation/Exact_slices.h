@@ -24,6 +24,18 @@ struct Rotating_object;
 // The static question at a rational time: a static pipeline's check.
 using Static_check = std::function<Check_answer(const Scene&, const Check_options&)>;
 
+// A point as Cramer's quotients num(t) / den(t), den(r) != 0 at the time r
+// it is asked at.
+struct Quotient_point {
+  std::array<Time_poly, 3> num;
+  Time_poly den;
+};
+
+// The common point closed_at_irrational finds, as quotients in t (what a
+// certificate writes in Q(r)); none when there is none.
+std::optional<Quotient_point> closed_point_at(const std::vector<Moving_plane>& rows, const Rotating_object& a,
+                                              const Rotating_object& b, const Critical_time& c);
+
 class Exact_slices {
 public:
   static constexpr bool is_exact = true;

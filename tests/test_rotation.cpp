@@ -12,6 +12,7 @@
 #include "scene/Random_draw.h"
 #include "scene/Scene_reader.h"
 #include "support/Cli_run.h"
+#include "support/Random_rotating_scene.h"
 #include "support/Random_scene.h"
 #include <nlohmann/json.hpp>
 #include <cfenv>
@@ -268,53 +269,7 @@ BOOST_AUTO_TEST_CASE(simplest_rational_between)
 //    R(g) c): the same verdict and exactly the same t*.
 namespace {
 
-std::string num(long n, long d = 1) { return d == 1 ? std::to_string(n) : std::to_string(n) + "/" + std::to_string(d); }
-
-json random_block(Random_draw& r)
-{
-  long x = r.range(-3, 1), y = r.range(-3, 1), z = r.range(-3, 1);
-  json min = {num(x, 2), num(y, 2), num(z, 2)};
-  json max = {num(x + r.range(1, 4), 2), num(y + r.range(1, 4), 2), num(z + r.range(1, 4), 2)};
-  json block = {{"min", min}, {"max", max}};
-  return {{"block", block}};
-}
-
-json random_poses(Random_draw& r, bool turns)
-{
-  json poses = json::array();
-  std::array<long, 4> q = {1, 0, 0, 0};
-  long t = 0;
-  int n = static_cast<int>(r.range(2, 3));
-  for (int i = 0; i < n; ++i) {
-    json p = {{"t", t}, {"translate", {num(r.range(-4, 4), 2), num(r.range(-4, 4), 2), num(r.range(-2, 2), 2)}}};
-    if (turns) {
-      if (i > 0)
-        for (int k = 1; k < 4; ++k) q[k] += r.range(-1, 1);   // q_{i+1} never a negative multiple: w stays 1
-      p["rotate"] = {q[0], q[1], q[2], q[3]};
-    }
-    poses.push_back(p);
-    t += r.range(1, 2);
-  }
-  return {{"poses", poses}};
-}
-
-// A block, or a union of two (decided piece by piece: Rotating_check.cpp).
-json random_shape(Random_draw& r)
-{
-  if (r.percent(60)) return random_block(r);
-  json u = json::array({random_block(r), random_block(r)});
-  return {{"union", u}};
-}
-
-json random_rotating_scene(Random_draw& r)
-{
-  json objects = json::array();
-  objects.push_back({{"name", "a"}, {"shape", random_shape(r)}, {"motion", random_poses(r, true)}});
-  json b = {{"name", "b"}, {"shape", random_shape(r)}};
-  if (r.percent(50)) b["motion"] = random_poses(r, r.percent(50));
-  objects.push_back(b);
-  return {{"format", "clash4d-scene/1"}, {"name", "random rotating"}, {"time", {0, 3}}, {"objects", objects}};
-}
+using namespace random_rotating;
 
 // The scene turned by g = (1, gx, gy, gz) about the origin.
 json turned(json scene, const std::array<long, 4>& g)

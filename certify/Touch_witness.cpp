@@ -1,0 +1,194 @@
+#include "certify/Touch_witness.h"
+
+#include "certify/Turning_prover.h"
+#include "rotation/Critical_times.h"
+#include "rotation/Exact_slices.h"
+#include "rotation/Simplest_rational.h"
+#include "scene/Number_json.h"
+#include <algorithm>
+#include <cmath>
+
+namespace clash4d {
+namespace {
+
+using json = nlohmann::ordered_json;
+using Poly = std::vector<Rational>;   // constant term first
+using Field_point = std::array<Poly, 3>;
+
+Poly add(Poly a, const Poly& b)
+{
+  if (a.size() < b.size()) a.resize(b.size(), Rational(0));
+  for (std::size_t i = 0; i < b.size(); ++i) a[i] += b[i];
+  return a;
+}
+
+Poly mul(const Poly& a, const Poly& b)
+{
+  if (a.empty() || b.empty()) return {};
+  Poly out(a.size() + b.size() - 1, Rational(0));
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j) out[i + j] += a[i] * b[j];
+  return out;
+}
+
+Poly scaled(const Poly& a, const Rational& s)
+{
+  Poly out = a;
+  for (Rational& c : out) c *= s;
+  return out;
+}
+
+// l(x) = n . x + e for a row and a point in Q(r), as a polynomial in r.
+Poly value(const Moving_plane& h, const Field_point& x)
+{
+  Poly v = h[3].coefficients();
+  for (int k = 0; k < 3; ++k) v = add(v, mul(h[k].coefficients(), x[k]));
+  return v;
+}
+
+// n(r) . d for a rational direction d.
+Poly slope(const Moving_plane& h, const std::array<Rational, 3>& d)
+{
+  Poly v;
+  for (int k = 0; k < 3; ++k) v = add(v, scaled(h[k].coefficients(), d[k]));
+  return v;
+}
+
+double at_double(const Time_poly& p, double t)
+{
+  double v = 0;
+  for (int i = p.size() - 1; i >= 0; --i) v = v * t + CGAL::to_double(p[i]);
+  return v;
+}
+
+// A direction with sigma_p n_p . d > 0 for the rows listed, guessed by the
+// perceptron in doubles at r and then checked exactly; none when the guess
+// fails.
+std::optional<std::array<Rational, 3>> direction(const std::vector<const Moving_plane*>& rows,
+                                                 const std::vector<int>& sigma, const Algebraic& r)
+{
+  double t = r.to_double();
+  std::vector<std::array<double, 3>> n;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    std::array<double, 3> v;
+    double len = 0;
+    for (int k = 0; k < 3; ++k) len += (v[k] = sigma[i] * at_double((*rows[i])[k], t)) * v[k];
+    for (double& x : v) x /= std::sqrt(len);
+    n.push_back(v);
+  }
+  std::array<double, 3> d = {0, 0, 0};
+  for (int round = 0; round < 2000; ++round) {
+    std::size_t worst = n.size();
+    for (std::size_t i = 0; i < n.size() && worst == n.size(); ++i)
+      if (n[i][0] * d[0] + n[i][1] * d[1] + n[i][2] * d[2] <= 1e-6) worst = i;
+    if (worst == n.size()) break;
+    for (int k = 0; k < 3; ++k) d[k] += n[worst][k];
+  }
+  std::array<Rational, 3> exact;
+  for (int k = 0; k < 3; ++k) exact[k] = Rational(std::round(d[k] * 1024) / 1024);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (r.sign_of(slope(*rows[i], exact)) != (sigma[i] > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE)) return std::nullopt;
+  return exact;
+}
+
+// C + delta d with delta halved until every row not through C keeps C's
+// sign (signs: each row's at C).
+std::optional<Field_point> nearby(const std::vector<Moving_plane>& rows, const std::vector<CGAL::Sign>& signs,
+                                  const Field_point& c, const std::array<Rational, 3>& d, const Algebraic& r)
+{
+  Rational delta(1);
+  for (int halving = 0; halving < 200; ++halving, delta /= 2) {
+    Field_point w;
+    for (int k = 0; k < 3; ++k) w[k] = add(c[k], Poly{delta * d[k]});
+    bool kept = true;
+    for (std::size_t p = 0; p < rows.size() && kept; ++p)
+      kept = signs[p] == CGAL::ZERO || r.sign_of(value(rows[p], w)) == signs[p];
+    if (kept) return w;
+  }
+  return std::nullopt;
+}
+
+// A generic witness of c for the object whose rows these are (8.4).
+std::optional<Field_point> generic_witness(const std::vector<Moving_plane>& rows, const Shape_planes& shape,
+                                           const Field_point& c, const Algebraic& r)
+{
+  std::vector<CGAL::Sign> signs;
+  std::vector<int> side(rows.size()), through;
+  for (std::size_t p = 0; p < rows.size(); ++p) {
+    signs.push_back(r.sign_of(value(rows[p], c)));
+    side[p] = signs.back() == CGAL::POSITIVE ? 1 : -1;
+    if (signs.back() == CGAL::ZERO) through.push_back(static_cast<int>(p));
+  }
+  if (through.size() > 12) return std::nullopt;
+  for (unsigned mask = 0; mask < (1u << through.size()); ++mask) {
+    std::vector<const Moving_plane*> on;
+    std::vector<int> sigma;
+    for (std::size_t k = 0; k < through.size(); ++k) {
+      side[through[k]] = (mask >> k) & 1 ? 1 : -1;
+      on.push_back(&rows[through[k]]);
+      sigma.push_back(side[through[k]]);
+    }
+    if (!inside_at_generic(shape, side)) continue;
+    std::optional<std::array<Rational, 3>> d = on.empty() ? std::array<Rational, 3>{} : direction(on, sigma, r);
+    if (!d) continue;
+    if (auto w = nearby(rows, signs, c, *d, r)) return w;
+  }
+  return std::nullopt;
+}
+
+json field_json(const Poly& p)
+{
+  Poly c = p;
+  while (c.size() > 1 && CGAL::sign(c.back()) == CGAL::ZERO) c.pop_back();
+  if (c.size() <= 1) return to_string(c.empty() ? Rational(0) : c[0]);
+  json out = json::array();
+  for (const Rational& x : c) out.push_back(to_string(x));
+  return json{{"at_t", out}};
+}
+
+json point_json(const Field_point& x, const json& t)
+{
+  return json::array({field_json(x[0]), field_json(x[1]), field_json(x[2]), t});
+}
+
+// The piece between breakpoints (or the span's ends) that holds r.
+std::pair<Rational, Rational> piece_around(const Rotating_object& a, const Rotating_object& b, const Algebraic& r,
+                                           const Rational& t_lo, const Rational& t_hi)
+{
+  Rational lo = t_lo, hi = t_hi;
+  for (const auto* o : {&a, &b})
+    for (const Pose_segment& s : o->segments)
+      for (const Rational& t : {s.lo, s.hi}) {
+        if (Algebraic(t) < r && lo < t) lo = t;
+        if (r < Algebraic(t) && t < hi) hi = t;
+      }
+  return {lo, hi};
+}
+
+} // namespace
+
+json touch_at_irrational(const Rotating_object& a, const Rotating_object& b, const Algebraic& r, const Rational& t_lo,
+                         const Rational& t_hi)
+{
+  std::string where = "objects '" + a.name + "' and '" + b.name + "' touching at t = " + r.to_text();
+  auto [lo, hi] = piece_around(a, b, r, t_lo, t_hi);
+  Rational mid = simplest_between(Algebraic(lo), Algebraic(hi));
+  std::vector<Moving_plane> rows_a = moving_planes(a.shape.planes, segment_at(a.segments, mid));
+  std::vector<Moving_plane> rows_b = moving_planes(b.shape.planes, segment_at(b.segments, mid));
+  std::vector<Moving_plane> rows = rows_a;
+  rows.insert(rows.end(), rows_b.begin(), rows_b.end());
+  Critical_times critical(rows, rows_a.size(), lo, hi, !a.shape.spans_space && !b.shape.spans_space);
+  std::optional<Quotient_point> q;
+  for (const Critical_time& c : critical.times())
+    if (c.t == r) q = closed_point_at(rows, a, b, c);
+  if (!q) throw Turning_proof_missing(where + ": no common point was found at that critical time");
+  Field_point c;
+  for (int k = 0; k < 3; ++k) c[k] = Algebraic::field_element(r, q->num[k].coefficients(), q->den.coefficients());
+  std::optional<Field_point> wa = generic_witness(rows_a, a.shape, c, r);
+  std::optional<Field_point> wb = generic_witness(rows_b, b.shape, c, r);
+  if (!wa || !wb) throw Turning_proof_missing(where + ": no generic witness was found near the common point");
+  json t = number_json(r);
+  return json{{"point", point_json(c, t)}, {"inside", json::array({point_json(*wa, t), point_json(*wb, t)})}};
+}
+
+} // namespace clash4d

@@ -1,0 +1,199 @@
+#include "certify/Turning_prover.h"
+
+#include "certify/Apart_prover.h"
+#include "rotation/Critical_times.h"
+#include "rotation/Simplest_rational.h"
+#include "scene/Number_json.h"
+#include <algorithm>
+#include <map>
+
+namespace clash4d {
+namespace {
+
+using json = nlohmann::ordered_json;
+using Vec4 = std::array<Rational, 4>;
+
+bool is_zero(const Rational& x) { return CGAL::sign(x) == CGAL::ZERO; }
+
+// v divided by its first non-zero entry's absolute value: equal keys are
+// positive multiples of each other.
+std::vector<std::string> direction_key(const Vec4& v)
+{
+  Rational scale(0);
+  for (const Rational& x : v)
+    if (!is_zero(x)) {
+      scale = CGAL::abs(x);
+      break;
+    }
+  std::vector<std::string> key;
+  for (const Rational& x : v) key.push_back(to_string(is_zero(scale) ? x : x / scale));
+  return key;
+}
+
+Vec4 at(const Moving_plane& h, const Rational& s) { return {h[0].at(s), h[1].at(s), h[2].at(s), h[3].at(s)}; }
+
+Moving_plane negated(const Moving_plane& h) { return {-h[0], -h[1], -h[2], -h[3]}; }
+
+json poly_json(const Time_poly& p)
+{
+  std::vector<Rational> c = p.coefficients();
+  while (c.size() > 1 && is_zero(c.back())) c.pop_back();
+  json out = json::array();
+  for (const Rational& x : c) out.push_back(to_string(x));
+  if (out.empty()) out.push_back("0");
+  return out;
+}
+
+json conflict_json(const Polynomial_conflict& c, bool closed)
+{
+  json literals = json::array(), lambda = json::array();
+  for (std::size_t i = 0; i < c.literals.size(); ++i) {
+    json lit = json::array();
+    for (const Time_poly& p : c.literals[i]) lit.push_back(poly_json(p));
+    literals.push_back(lit);
+    lambda.push_back(poly_json(c.lambda[i]));
+  }
+  json out{{"literals", literals}, {"lambda", lambda}};
+  if (closed) out["of"] = c.of == Conflict::Of::A ? "A" : c.of == Conflict::Of::B ? "B" : "both";
+  return out;
+}
+
+// The motions' breakpoints strictly inside (lo, hi), with lo and hi.
+std::vector<Rational> breakpoints(const Rotating_object& a, const Rotating_object& b, const Rational& lo,
+                                  const Rational& hi)
+{
+  std::vector<Rational> t = {lo, hi};
+  for (const auto* o : {&a, &b})
+    for (const Pose_segment& s : o->segments) {
+      if (!s.from_minus_infinity && lo < s.lo && s.lo < hi) t.push_back(s.lo);
+      if (!s.to_plus_infinity && lo < s.hi && s.hi < hi) t.push_back(s.hi);
+    }
+  std::sort(t.begin(), t.end());
+  t.erase(std::unique(t.begin(), t.end()), t.end());
+  return t;
+}
+
+Conflict::Of of_from(const json& c)
+{
+  if (!c.contains("of") || c["of"] == "both") return Conflict::Of::Both;
+  return c["of"] == "A" ? Conflict::Of::A : Conflict::Of::B;
+}
+
+} // namespace
+
+Turning_prover::Turning_prover(const Scene& scene, Semantics semantics, std::uint64_t step_limit)
+    : scene_(scene), semantics_(semantics), limit_(step_limit)
+{
+}
+
+bool Turning_prover::valid(const Proof& p, const Algebraic& lo, const Algebraic& hi, bool open_end) const
+{
+  bool closed = semantics_ == Semantics::closed;
+  for (const Polynomial_conflict& c : p)
+    if (!c.valid_on(lo, hi, !closed || c.of != Conflict::Of::Both, open_end)) return false;
+  return true;
+}
+
+// The static apart proof of the pair posed at s, each conflict's literals
+// found among the rows (or their negations) by their direction at s, and
+// lifted to polynomial multipliers.
+Turning_prover::Proof Turning_prover::proof_at(const std::vector<Moving_plane>& rows, const Rational& s)
+{
+  std::map<std::vector<std::string>, Moving_plane> by_direction;
+  for (const Moving_plane& h : rows) {
+    by_direction.emplace(direction_key(at(h, s)), h);
+    by_direction.emplace(direction_key(at(negated(h), s)), negated(h));
+  }
+  Scene posed = posed_pair(*a_, *b_, s);
+  Apart_prover prover(posed, semantics_, limit_ - std::min(limit_, steps_));
+  json apart = prover.prove(0, 1, Rational(1), false);
+  steps_ += prover.steps();
+  bool closed = semantics_ == Semantics::closed;
+  Proof out;
+  for (const json& piece : apart["pieces"])
+    for (const json& c : piece["proof"]["conflicts"]) {
+      std::vector<Moving_plane> literals;
+      std::vector<Rational> lambda;
+      for (std::size_t i = 0; i < c["literals"].size(); ++i) {
+        const json& l = c["literals"][i];
+        Vec4 v = {rational_from_string(l[0]), rational_from_string(l[1]), rational_from_string(l[2]),
+                  rational_from_string(l[4])};
+        auto it = by_direction.find(direction_key(v));
+        if (!is_zero(rational_from_string(l[3])) || it == by_direction.end())
+          throw Turning_proof_missing(where_ + ": a static conflict at t = " + to_string(s) +
+                                      " uses a literal that is not one of the pair's planes");
+        literals.push_back(it->second);
+        // The static literal is k times the row at s: its multiplier
+        // applies to k row(s).
+        Vec4 row = at(it->second, s);
+        std::size_t nz = 0;
+        while (is_zero(row[nz])) ++nz;
+        lambda.push_back(rational_from_string(c["lambda"][i]) * v[nz] / row[nz]);
+      }
+      Conflict::Of of = of_from(c);
+      auto lifted = lift_conflict(literals, lambda, s, closed && of == Conflict::Of::Both);
+      if (!lifted)
+        throw Turning_proof_missing(where_ + ": a conflict at t = " + to_string(s) +
+                                    " has no multipliers polynomial in t");
+      lifted->of = of;
+      out.push_back(std::move(*lifted));
+    }
+  return out;
+}
+
+// The leaves of one piece between breakpoints, [lo, hi] (hi <= piece_hi,
+// the breakpoint that ends the piece).
+std::vector<Turning_prover::Leaf> Turning_prover::pose_piece(const Rational& lo, const Rational& piece_hi,
+                                                             const Algebraic& hi, bool open_end)
+{
+  Rational mid = simplest_between(Algebraic(lo), hi);
+  std::vector<Moving_plane> rows = moving_planes(a_->shape.planes, segment_at(a_->segments, mid));
+  std::vector<Moving_plane> more = moving_planes(b_->shape.planes, segment_at(b_->segments, mid));
+  rows.insert(rows.end(), more.begin(), more.end());
+  bool low_rank = !a_->shape.spans_space && !b_->shape.spans_space;
+  std::vector<Algebraic> cuts{Algebraic(lo)};
+  Critical_times critical(rows, a_->shape.planes.size(), lo, piece_hi, low_rank);
+  for (const Critical_time& c : critical.times())
+    if (c.t < hi) cuts.push_back(c.t);
+  cuts.push_back(hi);
+  std::vector<Leaf> leaves;
+  std::size_t k = 0;   // the proof of interval k covers [cuts[k], ...]
+  while (k + 1 < cuts.size()) {
+    Leaf leaf{cuts[k], cuts[k + 1], proof_at(rows, simplest_between(cuts[k], cuts[k + 1]))};
+    bool last = k + 2 == cuts.size();
+    if (!valid(leaf.conflicts, leaf.lo, leaf.hi, open_end && last))
+      throw Turning_proof_missing(where_ + ": the proof at t = " + to_string(simplest_between(cuts[k], cuts[k + 1])) +
+                                  " does not hold on its whole critical interval");
+    ++k;
+    while (k + 1 < cuts.size() && valid(leaf.conflicts, leaf.lo, cuts[k + 1], open_end && k + 2 == cuts.size()))
+      leaf.hi = cuts[++k];
+    leaves.push_back(std::move(leaf));
+  }
+  return leaves;
+}
+
+json Turning_prover::prove(int a, int b, const Algebraic& until, bool open_end)
+{
+  a_ = Rotating_object::make(scene_.objects[a]);
+  b_ = Rotating_object::make(scene_.objects[b]);
+  where_ = "objects '" + scene_.objects[a].name + "' and '" + scene_.objects[b].name + "'";
+  json pieces = json::array();
+  Rational end = until.is_rational() ? until.rational() : until.upper();
+  std::vector<Rational> ends = breakpoints(*a_, *b_, scene_.t_lo, end);
+  for (std::size_t p = 0; p + 1 < ends.size() && Algebraic(ends[p]) < until; ++p) {
+    Algebraic hi = Algebraic(ends[p + 1]) < until ? Algebraic(ends[p + 1]) : until;
+    for (const Leaf& leaf : pose_piece(ends[p], ends[p + 1], hi, open_end && hi == until)) {
+      json conflicts = json::array();
+      for (const Polynomial_conflict& c : leaf.conflicts) conflicts.push_back(conflict_json(c, semantics_ == Semantics::closed));
+      conflicts_ += leaf.conflicts.size();
+      pieces.push_back(json{{"t", json::array({number_json(leaf.lo), number_json(leaf.hi)})},
+                            {"proof", json{{"conflicts", conflicts}}}});
+    }
+  }
+  json out{{"until", number_json(until)}};
+  if (open_end) out["open_end"] = true;
+  out["pieces"] = pieces;
+  return out;
+}
+
+} // namespace clash4d

@@ -1,0 +1,57 @@
+// The proof that a pair of which some object turns does not collide (or
+// touch) on [tL, until] (docs/certificate-format.md, 8.3): the span cut at
+// the motions' breakpoints and at the pair's critical times (regularised-
+// semantics.md, fact 10); on each critical interval the static apart proof
+// at its sample time (certify/Apart_prover.h on the posed pair), its
+// conflicts lifted to polynomial multipliers (Polynomial_conflict.h); and
+// consecutive intervals merged into one piece for as long as one proof
+// stays valid, so that a piece ends only where a proof's basis changes.
+#ifndef CLASH4D_CERTIFY_TURNING_PROVER_H
+#define CLASH4D_CERTIFY_TURNING_PROVER_H
+
+#include "certify/Polynomial_conflict.h"
+#include "rotation/Rotating_pair.h"
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace clash4d {
+
+// A proof this release cannot make (the reason names where): the command
+// refuses the certificate, never writes a wrong one.
+struct Turning_proof_missing : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class Turning_prover {
+public:
+  Turning_prover(const Scene& scene, Semantics semantics, std::uint64_t step_limit);
+
+  // APART for objects a and b until `until`; open_end: closed semantics
+  // leaves t = until out. Throws Turning_proof_missing, Term_limit.
+  nlohmann::ordered_json prove(int a, int b, const Algebraic& until, bool open_end);
+
+  std::uint64_t steps() const { return steps_; }
+  std::size_t conflicts() const { return conflicts_; }
+
+private:
+  struct Leaf {
+    Algebraic lo, hi;
+    std::vector<Polynomial_conflict> conflicts;
+  };
+  using Proof = std::vector<Polynomial_conflict>;
+
+  std::vector<Leaf> pose_piece(const Rational& lo, const Rational& piece_hi, const Algebraic& hi, bool open_end);
+  Proof proof_at(const std::vector<Moving_plane>& rows, const Rational& s);
+  bool valid(const Proof& p, const Algebraic& lo, const Algebraic& hi, bool open_end) const;
+
+  const Scene& scene_;
+  Semantics semantics_;
+  std::uint64_t limit_, steps_ = 0;
+  std::size_t conflicts_ = 0;
+  std::optional<Rotating_object> a_, b_;   // the pair being proved
+  std::string where_;                      // names it in a refusal
+};
+
+} // namespace clash4d
+
+#endif
