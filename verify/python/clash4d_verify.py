@@ -711,16 +711,18 @@ class Motion:
     """D(t) = v_k t + o_k on segment k, between the listed times (scene-format.md, Motion).
 
     A pose motion (scene-format.md, "Motion with rotation (poses)") also keeps its poses
-    (t, c, q): its times are the pose times, and without rotation its translation is the
-    piecewise-linear D(t) = c(t), the offsets given (s8.2)."""
+    (t, c, q): its breakpoints (s8.2) are the pose times; without rotation it is the
+    piecewise-linear translation D(t) = c(t) (the offsets given), whose velocity changes are
+    the pose times where the velocity changes, as the same motion written in ROBMOD."""
 
     def __init__(self, times, vels, offs=None, poses=None):
         self.times, self.vels, self.poses = times, vels, poses
         # s8: an object turns when some pose's rotate has a non-zero x, y or z
         self.turning = any(any(q[1:]) for _, _, q in poses or ())
-        # A velocity change is every time the motion lists (s3), even between equal velocities;
-        # they are the breakpoints of s8.2 too.
+        # A velocity change is every time the motion lists (s2.2), even between equal velocities.
         self.changes = list(times)
+        # s8.2: the breakpoints, the pose times or a ROBMOD motion's until times
+        self.breakpoints = [t for t, _, _ in poses] if poses is not None else self.changes
         if offs is not None:
             self.offs = offs
             return
@@ -738,22 +740,27 @@ class Motion:
     @staticmethod
     def from_poses(poses):
         """Poses (t_i, c_i, q_i): at rest at c_0 before t_0 and at c_m after t_m, c linear
-        between (the translation of a motion without rotation)."""
-        times = [t for t, _, _ in poses]
+        between (the translation of a motion without rotation). As the scene reader does, a
+        pose time where the velocity does not change is no velocity change: the same motion
+        written in ROBMOD has none there."""
         zero = (Fraction(0),) * 3
-        vels, offs = [zero], [poses[0][1]]
-        for (t0, c0, _), (t1, c1, _) in zip(poses, poses[1:]):
-            v = tuple((c1[i] - c0[i]) / (t1 - t0) for i in range(3))
-            vels.append(v)
-            offs.append(tuple(c0[i] - v[i] * t0 for i in range(3)))
-        vels.append(zero)
-        offs.append(poses[-1][1])
+        times, vels, offs = [], [zero], [poses[0][1]]
+        for i, (t0, c0, _) in enumerate(poses):
+            if i + 1 < len(poses):
+                t1, c1, _ = poses[i + 1]
+                v = tuple((c1[k] - c0[k]) / (t1 - t0) for k in range(3))
+            else:
+                v = zero
+            if v != vels[-1]:
+                times.append(t0)
+                vels.append(v)
+                offs.append(tuple(c0[k] - v[k] * t0 for k in range(3)))
         return Motion(times, vels, offs, poses)
 
     def piece_qc(self, k):
         """q(t) and c(t) as polynomials on motion piece k (s8.2): the k-th open interval
         between breakpoints. ROBMOD: q = (1, 0, 0, 0), c(t) = D(t) = v_k t + o_k."""
-        if self.poses is None:
+        if self.poses is None:                      # the pieces are the segments
             v, o = self.vels[k], self.offs[k]
             return ([1], [], [], []), tuple(p_trim([o[i], v[i]]) for i in range(3))
         P = self.poses
@@ -768,10 +775,10 @@ class Motion:
     def piece_at(self, T, after):
         """The motion piece holding the TIME T (k: the number of breakpoints below T); with
         `after`, the piece just after T (the breakpoints at most T)."""
-        lo, hi = 0, len(self.times)
+        lo, hi = 0, len(self.breakpoints)
         while lo < hi:
             mid = (lo + hi) // 2
-            c = cmp_time(self.times[mid], T)
+            c = cmp_time(self.breakpoints[mid], T)
             if c < 0 or (c == 0 and after):
                 lo = mid + 1
             else:
@@ -782,6 +789,10 @@ class Motion:
     # segments costs a logarithm per piece, not a scan.
     def segment(self, t):
         return bisect.bisect_left(self.times, t)
+
+    def is_breakpoint(self, t):
+        i = bisect.bisect_left(self.breakpoints, t)
+        return i < len(self.breakpoints) and self.breakpoints[i] == t
 
     def is_change(self, t):
         i = bisect.bisect_left(self.times, t)
@@ -1680,7 +1691,7 @@ class Checker:
         if not tL < T < tH:
             raise Failed(path + "[3]", f"t = {T} is not strictly inside ({tL}, {tH})")
         for O in (A, B):
-            if O.motion.is_change(T):
+            if O.motion.is_breakpoint(T):
                 raise Failed(path + "[3]", f"t = {T} is a breakpoint of {O.name}")
             f = O.turning_formula(O.motion.piece_at(T, False))
             at_w = lambda k: sign(sum(p_eval(k[i], T) * w[i] for i in range(3)) + p_eval(k[3], T))
@@ -1728,9 +1739,9 @@ class Checker:
             ks = []
             for O in (A, B):
                 k = O.motion.piece_at(lo, True)              # the piece just after lo
-                if k < len(O.motion.times) and cmp_time(O.motion.times[k], hi) < 0:
-                    raise Failed(pp + ".t", f"a breakpoint of {O.name} at t = {O.motion.times[k]} "
-                                            "lies inside")
+                bps = O.motion.breakpoints
+                if k < len(bps) and cmp_time(bps[k], hi) < 0:
+                    raise Failed(pp + ".t", f"a breakpoint of {O.name} at t = {bps[k]} lies inside")
                 ks.append(k)
             open_last = open_end and i == len(pieces) - 1
             self.turning_leaf(pc["proof"], pp + ".proof", A, B, ks, lo, hi, open_last)
