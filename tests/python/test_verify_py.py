@@ -585,6 +585,35 @@ class TurningCertificates(unittest.TestCase):
                                                                  lams=(["1"], ["1"])))])
         self.refused(flat, "conflicts[0].literals[1]: n_x, n_y and n_z are all the zero polynomial")
 
+    def test_a_literal_and_its_negation_close_a_term_in_regularised_semantics(self):
+        # a twin block [1, 3] x [-1, 1]^2 turning with the square: its 1 - x is the negation of
+        # the square's x - 1 at every t, so the pair only touches; the slab overlaps the twin
+        scene = square_scene(1)
+        twin = {"name": "twin", "shape": {"block": {"min": [1, -1, -1], "max": [3, 1, 1]}},
+                "motion": scene["objects"][0]["motion"]}
+        scene["objects"].append(twin)
+        apart = {"objects": ["square", "twin"], "collide": False,
+                 "apart": {"until": "1", "pieces": [{"t": ["0", "1"], "proof": {"conflicts": []}}]}}
+        cert = turning_certificate([], until="1")
+        cert["pairs"] = [apart]
+        cert["claim"]["all_pairs"] = False
+        two = dict(scene, objects=scene["objects"][0::2])
+        self.accepted(cert, "verified: no collision in [0, 1] (regularised): 1 pair apart\n", two)
+        closed = dict(cert, semantics="closed")
+        self.refused(closed, "pairs[0].apart.pieces[0].proof: no conflict closes off the term", two)
+        # all pairs: the colliding ones listed in the certificate's order
+        cert["claim"].update(collide=True, all_pairs=True)
+        cert["pairs"] = [
+            {"objects": ["square", "slab"], "collide": True, "witness": ["5/4", "1/5", "0", "1/2"]},
+            apart,
+            {"objects": ["slab", "twin"], "collide": True, "witness": ["2", "0", "0", "1/10"]}]
+        self.accepted(cert, "verified: colliding pairs (regularised): square/slab, slab/twin; "
+                            "1 other pair apart\n", scene)
+        del cert["pairs"][2]
+        self.refused(cert, "pairs: no PAIR for slab/twin", scene)
+        cert["pairs"].append({"objects": ["twin", "slab"], "collide": True, "witness": ["2", "0", "0", "0"]})
+        self.refused(cert, "pairs[2].witness[3]: t = 0 is not strictly inside (0, 1)", scene)
+
     def test_a_robmod_motion_in_a_turning_scene(self):
         # the slab comes towards the square at speed 1 until t = 1/20: 6/5 - x becomes
         # 6/5 - t - x, then 23/20 - x (c(t) = D(t), q = (1, 0, 0, 0), s8.2)

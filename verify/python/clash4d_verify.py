@@ -9,6 +9,12 @@ with clash4d (not even the scene reader). Exits as `clash4d verify`: 0 and the
 proved claim (s5), 1 and the first reason the certificate fails with its JSON
 path, 2 when the scene or the certificate cannot be read, 3 beyond a limit
 (nesting, memory), 4 on a flaw of this checker (never a traceback).
+
+Two formats: clash4d-certificate/1, and clash4d-certificate/turning-1 for
+scenes where some object turns (s8: literals whose coefficients are
+polynomials in t, polynomial multipliers, TIMEs that are algebraic numbers),
+each on its kind of scene only. The s8 part is exact polynomial arithmetic over
+Fraction: Sturm sequences count roots, Yun's factorisation gives odd parts.
 """
 import bisect
 import itertools
@@ -1449,13 +1455,7 @@ class Checker:
         for j, cf in enumerate(self.array(v, path + ".conflicts")):
             cp = f"{path}.conflicts[{j}]"
             cf = self.keys(cf, cp, {"literals", "lambda"}, {"of"})
-            of = cf.get("of", "both")
-            if not isinstance(of, str):
-                self.bad(cp + ".of", "expected a string")
-            if of not in ("both", "A", "B"):
-                raise Failed(cp + ".of", "expected \"both\", \"A\" or \"B\"")
-            if not self.closed:
-                of = "both"                       # regularised ignores `of`
+            of = self.conflict_of(cf, cp)
             raw_lits = self.array(cf["literals"], cp + ".literals")
             raw_lams = self.array(cf["lambda"], cp + ".lambda")
             if not raw_lits:
