@@ -454,6 +454,23 @@ class TurningCertificates(unittest.TestCase):
         zero = turning_certificate([dict(t=["0", "1/10"], **conflict(lams=[["0"], ["0"], ["0"]]))])
         self.refused(zero, "conflicts[0].lambda: every multiplier is the zero polynomial")
 
+    def test_open_end_asks_positivity_on_lo_hi_open_only(self):
+        # every multiplier times (1/10 - t): sum lambda_i e_i > 0 on [0, 1/10) and 0 at 1/10
+        times_end = [[str(c) for c in clash4d_verify.p_mul([Fraction(x) for x in p], [Fraction(1, 10), -1])]
+                     for p in LAMBDA]
+        for sem, open_end, where in (
+                ("regularised", False, None), ("regularised", True, None),
+                ("closed", False, "pairs[0].apart.pieces[0].proof.conflicts[0]: sum lambda_i e_i = "),
+                # the leaf holds on [0, 1/10), but no collision needs the touch at tH counted (rule 5)
+                ("closed", True, "pairs[0].apart.open_end: must be false")):
+            with self.subTest(semantics=sem, open_end=open_end):
+                cert = turning_certificate([dict(t=["0", "1/10"], **conflict(lams=times_end))], semantics=sem)
+                cert["pairs"][0]["apart"]["open_end"] = open_end
+                if where is None:
+                    self.accepted(cert, NO_COLLISION.format(sem))
+                else:
+                    self.refused(cert, where)
+
     def test_a_piece_dropped_or_its_end_moved_fails(self):
         self.refused(turning_certificate([]), "pairs[0].apart.until: the pieces end at 0, not at until = 1/10")
         cert = turning_certificate([dict(t=["0", "1/11"], **conflict())])
