@@ -508,7 +508,8 @@ class TurningCertificates(unittest.TestCase):
                                (["1", "3"], "t[1].between[0]: 1 is a root of poly")):
             with self.subTest(between=between):
                 hi = {"poly": ["-1", "1"] if between[0] == "1" else ["1", "-10", "11"], "between": between}
-                self.refused(turning_certificate([dict(t=["0", hi], **conflict())]), "pairs[0].apart.pieces[0]." + where)
+                self.refused(turning_certificate([dict(t=["0", hi], **conflict())]),
+                             "pairs[0].apart.pieces[0]." + where)
         zero = {"poly": ["0", "0"], "between": ["0", "1"]}
         self.refused(turning_certificate([dict(t=["0", zero], **conflict())]), "t[1].poly: the zero polynomial")
         # a TIME's poly holds integers (unreadable otherwise), its approx is a string never read
@@ -664,11 +665,23 @@ class TurningCertificates(unittest.TestCase):
             with self.subTest(motion=str(motion)[:60]):
                 self.refused(example_86(), where + ":", scene=scene_with(motion), code=2)
         # 10,000 poses are fine (every pose time a breakpoint: one piece between two of them)
-        many = scene_with({"poses": [{"t": Fraction(k, 100000).__str__(), "rotate": [1, 0, 0, Fraction(k, 100000).__str__()]}
+        many = scene_with({"poses": [{"t": str(Fraction(k, 100000)), "rotate": [1, 0, 0, str(Fraction(k, 100000))]}
                                      for k in range(10000)]})
         cert = turning_certificate([dict(t=["0", "1/100000"], **conflict())], until="1/100000", tH="1/100000")
         many["time"] = [0, "1/100000"]
         self.accepted(cert, "verified: no collision in [0, 1/100000] (regularised): 1 pair apart\n", many)
+        many["time"] = [0, "1/50000"]
+        cert = turning_certificate([dict(t=["0", "1/50000"], **conflict())], until="1/50000")
+        self.refused(cert, "pieces[0].t: a breakpoint of square at t = 1/100000 lies inside", scene=many)
+
+    def test_every_pose_time_is_a_breakpoint_in_a_turning_scene(self):
+        # s8.2: the slab at rest by two equal poses still has breakpoints at their times
+        scene = square_scene("1/10")
+        scene["objects"][1]["motion"] = {"poses": [{"t": "1/20"}, {"t": "1/16", "translate": [0, 0, 0]}]}
+        self.refused(example_86(), "pieces[0].t: a breakpoint of slab at t = 1/20 lies inside", scene=scene)
+        cuts = ["0", "1/20", "1/16", "1/10"]
+        cert = turning_certificate([dict(t=[cuts[k], cuts[k + 1]], **conflict()) for k in range(3)])
+        self.accepted(cert, NO_COLLISION.format("regularised"), scene=scene)
 
 
 @unittest.skipUnless(BINARY, "CLASH4D_BINARY is not set")

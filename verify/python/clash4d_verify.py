@@ -850,11 +850,6 @@ def lit_key(polys):
     return tuple(tuple(c // g for c in p_trim(p)) for p in ints)
 
 
-def lit_polys(key):
-    """A literal's four polynomials from its key."""
-    return [list(p) for p in key]
-
-
 class Object:
     def __init__(self, name, formula, motion):
         self.name, self.formula, self.motion = name, formula, motion
