@@ -18,6 +18,7 @@ import sys
 import tempfile
 import time
 import unittest
+from fractions import Fraction
 
 SOURCE = pathlib.Path(__file__).resolve().parents[2]
 CHECKER = SOURCE / "verify" / "python" / "clash4d_verify.py"
@@ -343,6 +344,455 @@ class Costs(unittest.TestCase):
         pieces = [{"t": [cuts[k], cuts[k + 1]], "proof": leaf} for k in range(n + 1)]
         rc, out, err = self.run_pair(scene, certificate(pieces))
         self.assertEqual(rc, 0, err)
+
+
+# ------------------------------------------------------------------------------------------
+# Section 8: scenes where objects turn (clash4d-certificate/turning-1). The certificates are
+# written by hand from the doc's worked example (8.6): the block [-1, 1]^3 turning about z
+# with q(t) = (1, 0, 0, t), the slab [6/5, 3] x [-1, 1]^2 waiting.
+
+TURNING = SOURCE / "tests" / "data" / "turning"
+SQUARE_TENTH = TURNING / "square_slab_tenth.json"            # span [0, 1/10]
+SQUARE_SCENE = FIXTURES / "rotation" / "square_into_slab.json"  # span [0, 1]
+L1 = [["1", "0", "-1"], ["0", "2"], ["0"], ["-1", "0", "-1"]]       # x - 1 of the square
+L2 = [["0", "2"], ["-1", "0", "1"], ["0"], ["-1", "0", "-1"]]       # -y - 1 of the square
+L3 = [["-5"], ["0"], ["0"], ["6"]]                                   # 6/5 - x of the slab
+LAMBDA = [["5", "0", "-5"], ["0", "10"], ["1", "0", "2", "0", "1"]]
+TSTAR = {"poly": ["1", "-10", "11"], "between": ["1/10", "1/8"], "approx": "0.114394783"}
+NO_COLLISION = "verified: no collision in [0, 1/10] ({}): 1 pair apart\n"
+
+
+def conflict(lits=(L1, L2, L3), lams=LAMBDA):
+    return {"proof": {"conflicts": [{"literals": [list(x) for x in lits], "lambda": [list(x) for x in lams]}]}}
+
+
+def turning_certificate(pieces, until="1/10", semantics="regularised", tH=None):
+    """A no-collision certificate of the square and the slab over the given pieces."""
+    return {"format": "clash4d-certificate/turning-1", "semantics": semantics,
+            "time": ["0", tH or until], "claim": {"collide": False, "earliest": False, "all_pairs": False},
+            "pairs": [{"objects": ["square", "slab"], "collide": False,
+                       "apart": {"until": until, "pieces": pieces}}]}
+
+
+def example_86(semantics="regularised"):
+    """The doc's 8.6 certificate, as printed there: one piece [0, 1/10], one conflict."""
+    return turning_certificate([dict(t=["0", "1/10"], **conflict())], semantics=semantics)
+
+
+def square_scene(tH, slab_motion=None):
+    scene = json.loads(SQUARE_SCENE.read_text())
+    scene["time"] = [0, tH]
+    if slab_motion:
+        scene["objects"][1]["motion"] = slab_motion
+    return scene
+
+
+class TurningCertificates(unittest.TestCase):
+    """s8: the worked example accepted, and each kind of tampering refused (exit 1)."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = pathlib.Path(self.tmp.name)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def run_cert(self, cert, scene=SQUARE_TENTH):
+        if isinstance(scene, dict):
+            (self.dir / "scene.json").write_text(json.dumps(scene))
+            scene = self.dir / "scene.json"
+        (self.dir / "cert.json").write_text(json.dumps(cert))
+        rc, out, err = run_inprocess(scene, self.dir / "cert.json")
+        self.assertNotIn("Traceback", err)
+        return rc, out, err
+
+    def accepted(self, cert, line, scene=SQUARE_TENTH):
+        rc, out, err = self.run_cert(cert, scene)
+        self.assertEqual((rc, err), (0, ""))
+        self.assertEqual(out, line)
+
+    def refused(self, cert, where, scene=SQUARE_TENTH, code=1):
+        rc, out, err = self.run_cert(cert, scene)
+        self.assertEqual(rc, code, err)
+        self.assertEqual(out, "")
+        self.assertIn(where, err)
+        return err
+
+    def test_the_worked_example_is_accepted_in_both_semantics(self):
+        for sem in ("regularised", "closed"):
+            with self.subTest(semantics=sem):
+                self.accepted(example_86(sem), NO_COLLISION.format(sem))
+        # the same certificate through the command line
+        (self.dir / "cert.json").write_text(json.dumps(example_86()))
+        rc, out, err = run_cli(SQUARE_TENTH, self.dir / "cert.json")
+        self.assertEqual((rc, out), (0, NO_COLLISION.format("regularised")), err)
+
+    def test_a_lambda_coefficient_changed_fails_the_identity(self):
+        cert = example_86()
+        cert["pairs"][0]["apart"]["pieces"][0]["proof"]["conflicts"][0]["lambda"][0] = ["5", "0", "-4"]
+        err = self.refused(cert, "pairs[0].apart.pieces[0].proof.conflicts[0]: sum lambda_i n_x,i")
+        self.assertIn("not the zero polynomial", err)
+
+    def test_a_lambda_negative_on_the_piece_fails_its_sign(self):
+        # every multiplier times (t - 1/20): the identity still holds, lambda_0 < 0 on [0, 1/20)
+        t_minus = lambda p: [str(c) for c in clash4d_verify.p_mul(
+            [Fraction(x) for x in p], [Fraction(-1, 20), 1])]
+        cert = turning_certificate([dict(t=["0", "1/10"], **conflict(lams=[t_minus(p) for p in LAMBDA]))])
+        self.refused(cert, "conflicts[0].lambda[0]: ")
+
+    def test_a_multiplier_zero_at_an_end_is_strict_only(self):
+        # every multiplier times t: sum lambda_i e_i = t (1 + t^2)(11 t^2 - 10 t + 1) >= 0 on
+        # [0, 1/10] (regularised: strict literals), but not > 0 at t = 0 (closed, of both)
+        times_t = [["0"] + p for p in LAMBDA]
+        for sem in ("regularised", "closed"):
+            cert = turning_certificate([dict(t=["0", "1/10"], **conflict(lams=times_t))], semantics=sem)
+            if sem == "regularised":
+                self.accepted(cert, NO_COLLISION.format(sem))
+            else:
+                self.refused(cert, "conflicts[0]: sum lambda_i e_i = [0, 1, -10, 12, -10, 11] is not > 0")
+        # multipliers that are all zero make no conflict
+        zero = turning_certificate([dict(t=["0", "1/10"], **conflict(lams=[["0"], ["0"], ["0"]]))])
+        self.refused(zero, "conflicts[0].lambda: every multiplier is the zero polynomial")
+
+    def test_open_end_asks_positivity_on_lo_hi_open_only(self):
+        # every multiplier times (1/10 - t): sum lambda_i e_i > 0 on [0, 1/10) and 0 at 1/10
+        times_end = [[str(c) for c in clash4d_verify.p_mul([Fraction(x) for x in p], [Fraction(1, 10), -1])]
+                     for p in LAMBDA]
+        for sem, open_end, where in (
+                ("regularised", False, None), ("regularised", True, None),
+                ("closed", False, "pairs[0].apart.pieces[0].proof.conflicts[0]: sum lambda_i e_i = "),
+                # the leaf holds on [0, 1/10), but no collision needs the touch at tH counted (rule 5)
+                ("closed", True, "pairs[0].apart.open_end: must be false")):
+            with self.subTest(semantics=sem, open_end=open_end):
+                cert = turning_certificate([dict(t=["0", "1/10"], **conflict(lams=times_end))], semantics=sem)
+                cert["pairs"][0]["apart"]["open_end"] = open_end
+                if where is None:
+                    self.accepted(cert, NO_COLLISION.format(sem))
+                else:
+                    self.refused(cert, where)
+
+    def test_a_piece_dropped_or_its_end_moved_fails(self):
+        self.refused(turning_certificate([]), "pairs[0].apart.until: the pieces end at 0, not at until = 1/10")
+        cert = turning_certificate([dict(t=["0", "1/11"], **conflict())])
+        self.refused(cert, "pairs[0].apart.until: the pieces end at 1/11, not at until = 1/10")
+        cert = turning_certificate([dict(t=["1/100", "1/10"], **conflict())])
+        self.refused(cert, "pairs[0].apart.pieces[0].t[0]: 1/100 is not 0 (tL)")
+
+    def test_pieces_cut_at_an_algebraic_time(self):
+        # 1/sqrt(200) ~ 0.0707, as the root of 200 t^2 - 1 and as one of (200 t^2 - 1)(t + 5)
+        cut = {"poly": ["-1", "0", "200"], "between": ["0", "1/10"]}
+        same = {"poly": ["-5", "-1", "1000", "200"], "between": ["1/20", "1/10"]}
+        other = {"poly": ["-1", "0", "199"], "between": ["0", "1/10"]}
+        pieces = lambda hi, lo: [dict(t=["0", hi], **conflict()), dict(t=[lo, "1/10"], **conflict())]
+        self.accepted(turning_certificate(pieces(cut, cut)), NO_COLLISION.format("regularised"))
+        self.accepted(turning_certificate(pieces(cut, same)), NO_COLLISION.format("regularised"))
+        self.refused(turning_certificate(pieces(cut, other)),
+                     "pairs[0].apart.pieces[1].t[0]: root of [-1, 0, 199] in (0, 1/10) is not "
+                     "root of [-1, 0, 200] in (0, 1/10) (the previous hi)")
+        # a piece whose ends are equal, and pieces in the wrong order
+        self.refused(turning_certificate([dict(t=["0", cut], **conflict()), dict(t=[same, same], **conflict()),
+                                          dict(t=[same, "1/10"], **conflict())]), "pieces[1].t[1]: lo = ")
+
+    def test_the_span_past_t_star_fails_the_e_sum(self):
+        # t* = (5 - sqrt 14)/11 ~ 0.1144 < 1/8: 11 t^2 - 10 t + 1 changes sign inside [0, 1/8]
+        for sem in ("regularised", "closed"):
+            cert = turning_certificate([dict(t=["0", "1/8"], **conflict())], until="1/8", semantics=sem)
+            err = self.refused(cert, "pairs[0].apart.pieces[0].proof.conflicts[0]: sum lambda_i e_i = "
+                                     "[1, -10, 12, -10, 11] is not", scene=square_scene("1/8"))
+            self.assertIn("the literals are not in conflict", err)
+
+    def test_a_time_with_two_roots_or_a_root_at_an_end_fails(self):
+        for between, where in ((["1/10", "1"], "t[1]: poly [1, -10, 11] has 2 distinct real roots in (1/10, 1)"),
+                               (["0", "1/10"], "t[1]: poly [1, -10, 11] has 0 distinct real roots"),
+                               (["1/10", "1/20"], "t[1].between: lo = 1/10 is not below hi = 1/20"),
+                               (["1", "3"], "t[1].between[0]: 1 is a root of poly")):
+            with self.subTest(between=between):
+                hi = {"poly": ["-1", "1"] if between[0] == "1" else ["1", "-10", "11"], "between": between}
+                self.refused(turning_certificate([dict(t=["0", hi], **conflict())]),
+                             "pairs[0].apart.pieces[0]." + where)
+        zero = {"poly": ["0", "0"], "between": ["0", "1"]}
+        self.refused(turning_certificate([dict(t=["0", zero], **conflict())]), "t[1].poly: the zero polynomial")
+        # a TIME's poly holds integers (unreadable otherwise), its approx is a string never read
+        half = {"poly": ["1/2", "-5", "11/2"], "between": ["1/10", "1/8"]}
+        self.refused(turning_certificate([dict(t=["0", half], **conflict())]), "t[1].poly[0]", code=2)
+        odd = dict(TSTAR, approx="not a number")
+        self.refused(turning_certificate([dict(t=["0", odd], **conflict())]),
+                     "pairs[0].apart.until: the pieces end at root of [1, -10, 11] in (1/10, 1/8), not at until = 1/10")
+
+    def test_a_touch_at_the_irrational_time(self):
+        # closed: the corner (1, -1) reaches x = 6/5 at t*, at y = (11 t* - 5)/5
+        def touch(point_time, inside_time):
+            return {"format": "clash4d-certificate/turning-1", "semantics": "closed", "time": ["0", "1/2"],
+                    "claim": {"collide": True, "earliest": False, "all_pairs": False},
+                    "pairs": [{"objects": ["square", "slab"], "collide": True, "touch": {
+                        "point": ["6/5", {"at_t": ["-1", "11/5"]}, "0", point_time],
+                        "inside": [["0", "0", "0", inside_time], ["2", "0", "0", inside_time]]}}]}
+        half = square_scene("1/2")
+        self.accepted(touch(TSTAR, TSTAR), "verified: collision (closed): square and slab at "
+                      "(6/5, [-1, 11/5](t), 0, root of [1, -10, 11] in (1/10, 1/8))\n", half)
+        # the same number, another interval and an unreduced spelling: printed as read, in lowest terms
+        other_spelling = {"poly": ["2", "-20", "22", "0"], "between": ["2/20", "0012/100"]}
+        self.accepted(touch(other_spelling, TSTAR), "verified: collision (closed): square and slab at "
+                      "(6/5, [-1, 11/5](t), 0, root of [2, -20, 22, 0] in (1/10, 3/25))\n", half)
+        # the interval moved onto the other root (5 + sqrt 14)/11 ~ 0.795: outside [0, 1/2]
+        far = {"poly": ["1", "-10", "11"], "between": ["3/4", "1"]}
+        self.refused(touch(far, far), "pairs[0].touch.point[3]: root of [1, -10, 11] in (3/4, 1) is outside [0, 1/2]",
+                     scene=half)
+        self.refused(touch(TSTAR, far), "pairs[0].touch.inside[0][3]: root of [1, -10, 11] in (3/4, 1) is not",
+                     scene=half)
+        # the contact moved off the slab's face: not a generic witness for the slab
+        moved = touch(TSTAR, TSTAR)
+        moved["pairs"][0]["touch"]["point"][0] = "11/10"
+        self.refused(moved, "pairs[0].touch.inside[1]: the literal [[-5], [0], [0], [6]] of slab", scene=half)
+        # a witness outside the square
+        outside = touch(TSTAR, TSTAR)
+        outside["pairs"][0]["touch"]["inside"][0][:3] = ["2", "0", "0"]
+        self.refused(outside, "pairs[0].touch.inside[0]: (2, 0, 0, root of", scene=half)
+
+    def test_a_regularised_witness(self):
+        cert = {"format": "clash4d-certificate/turning-1", "semantics": "regularised", "time": ["0", "1"],
+                "claim": {"collide": True, "earliest": False, "all_pairs": False},
+                "pairs": [{"objects": ["square", "slab"], "collide": True, "witness": ["5/4", "0", "0", "1/2"]}]}
+        # at t = 1/2 (a turn by 2 atan(1/2): cos 3/5, sin 4/5) the corner (1, -1) is at (7/5, 1/5)
+        cert["pairs"][0]["witness"][1] = "1/5"
+        self.accepted(cert, "verified: collision (regularised): square and slab at (5/4, 1/5, 0, 1/2)\n",
+                      SQUARE_SCENE)
+        cert["pairs"][0]["witness"][3] = "1"
+        self.refused(cert, "pairs[0].witness[3]: t = 1 is not strictly inside (0, 1)", SQUARE_SCENE)
+        cert["pairs"][0]["witness"][3] = "1/20"
+        self.refused(cert, "pairs[0].witness: (5/4, 1/5, 0, 1/20) is not inside square", SQUARE_SCENE)
+
+    def test_each_format_on_its_kind_of_scene_only(self):
+        # a /1 certificate on a turning scene, shaped right (its literal would hold for a square at rest)
+        one = {"format": "clash4d-certificate/1", "semantics": "regularised", "time": ["0", "1/10"],
+               "claim": {"collide": False, "earliest": False, "all_pairs": False},
+               "pairs": [{"objects": ["square", "slab"], "collide": False, "apart": {"until": "1/10", "pieces": [
+                   {"t": ["0", "1/10"], "proof": {"conflicts": [{"literals": [
+                       ["1", "0", "0", "0", "-1"], ["-5", "0", "0", "0", "6"]], "lambda": ["5", "1"]}]}}]}}]}
+        self.refused(one, 'format: the scene needs the format "clash4d-certificate/turning-1"')
+        # the turning format on a scene where nothing turns (the square at rest)
+        rest = square_scene("1/10")
+        del rest["objects"][0]["motion"]
+        self.refused(example_86(), 'format: the scene needs the format "clash4d-certificate/1"', scene=rest)
+        self.accepted(one, NO_COLLISION.format("regularised"), scene=rest)
+        # a scale-only pose (x = y = z = 0) does not turn
+        rest["objects"][0]["motion"] = {"poses": [{"t": 0, "rotate": [2, 0, 0, 0]}, {"t": 1, "rotate": [3, 0, 0, 0]}]}
+        self.accepted(one, NO_COLLISION.format("regularised"), scene=rest)
+
+    def test_earliest_and_splits_are_not_in_this_version(self):
+        cert = example_86()
+        cert["claim"]["earliest"] = True
+        self.refused(cert, "claim.earliest: earliest times of turning scenes are not certified")
+        cert = example_86()
+        cert["pairs"][0]["apart"]["pieces"][0]["proof"]["split"] = ["1", "0", "0", "0", "0"]
+        self.refused(cert, "pairs[0].apart.pieces[0].proof.split: unknown key")
+        cert = example_86()
+        cert["pairs"][0].update(collide=True, earliest={"t": "0", "point": ["0", "0", "0", "0"], "inside": []})
+        self.refused(cert, "pairs[0].earliest: earliest times of turning scenes are not certified")
+
+    def test_a_literal_not_of_the_term_does_not_close_it(self):
+        # the slab's literal in another scale is the same literal; another literal is not
+        scaled = turning_certificate([dict(t=["0", "1/10"], **conflict(
+            lits=(L1, L2, [["-10"], ["0"], ["0"], ["12"]]), lams=LAMBDA[:2] + [["1/2", "0", "1", "0", "1/2"]]))])
+        self.accepted(scaled, NO_COLLISION.format("regularised"))
+        foreign = turning_certificate([dict(t=["0", "1/10"], **conflict(
+            lits=(L1, L2, [["-5"], ["0"], ["0"], ["6", "0", "0", "0", "0"]], [["1"], ["0"], ["0"], ["0"]]),
+            lams=LAMBDA + [["0"]]))])
+        self.refused(foreign, "pairs[0].apart.pieces[0].proof: no conflict closes off the term [")
+        flat = turning_certificate([dict(t=["0", "1/10"], **conflict(lits=(L1, [["0"], ["0", "0"], ["0"], ["1"]]),
+                                                                 lams=(["1"], ["1"])))])
+        self.refused(flat, "conflicts[0].literals[1]: n_x, n_y and n_z are all the zero polynomial")
+
+    def test_a_literal_and_its_negation_close_a_term_in_regularised_semantics(self):
+        # a twin block [1, 3] x [-1, 1]^2 turning with the square: its 1 - x is the negation of
+        # the square's x - 1 at every t, so the pair only touches; the slab overlaps the twin
+        scene = square_scene(1)
+        twin = {"name": "twin", "shape": {"block": {"min": [1, -1, -1], "max": [3, 1, 1]}},
+                "motion": scene["objects"][0]["motion"]}
+        scene["objects"].append(twin)
+        apart = {"objects": ["square", "twin"], "collide": False,
+                 "apart": {"until": "1", "pieces": [{"t": ["0", "1"], "proof": {"conflicts": []}}]}}
+        cert = turning_certificate([], until="1")
+        cert["pairs"] = [apart]
+        cert["claim"]["all_pairs"] = False
+        two = dict(scene, objects=scene["objects"][0::2])
+        self.accepted(cert, "verified: no collision in [0, 1] (regularised): 1 pair apart\n", two)
+        closed = dict(cert, semantics="closed")
+        self.refused(closed, "pairs[0].apart.pieces[0].proof: no conflict closes off the term", two)
+        # all pairs: the colliding ones listed in the certificate's order
+        cert["claim"].update(collide=True, all_pairs=True)
+        cert["pairs"] = [
+            {"objects": ["square", "slab"], "collide": True, "witness": ["5/4", "1/5", "0", "1/2"]},
+            apart,
+            {"objects": ["slab", "twin"], "collide": True, "witness": ["2", "0", "0", "1/10"]}]
+        self.accepted(cert, "verified: colliding pairs (regularised): square/slab, slab/twin; "
+                            "1 other pair apart\n", scene)
+        del cert["pairs"][2]
+        self.refused(cert, "pairs: no PAIR for slab/twin", scene)
+        cert["pairs"].append({"objects": ["twin", "slab"], "collide": True, "witness": ["2", "0", "0", "0"]})
+        self.refused(cert, "pairs[2].witness[3]: t = 0 is not strictly inside (0, 1)", scene)
+
+    def test_a_robmod_motion_in_a_turning_scene(self):
+        # the slab comes towards the square at speed 1 until t = 1/20: 6/5 - x becomes
+        # 6/5 - t - x, then 23/20 - x (c(t) = D(t), q = (1, 0, 0, 0), s8.2)
+        scene = square_scene("1/16", "vel -1 0 0 until 1/20 rest")
+        first = dict(t=["0", "1/20"], **conflict(lits=(L1, L2, [["-5"], ["0"], ["0"], ["6", "-5"]])))
+        second = dict(t=["1/20", "1/16"], **conflict(
+            lits=(L1, L2, [["-20"], ["0"], ["0"], ["23"]]), lams=LAMBDA[:2] + [["1/4", "0", "1/2", "0", "1/4"]]))
+        for sem in ("regularised", "closed"):
+            self.accepted(turning_certificate([first, second], until="1/16", semantics=sem),
+                          "verified: no collision in [0, 1/16] ({}): 1 pair apart\n".format(sem), scene)
+        whole = dict(first, t=["0", "1/16"])
+        self.refused(turning_certificate([whole], until="1/16"),
+                     "pairs[0].apart.pieces[0].t: a breakpoint of slab at t = 1/20 lies inside", scene)
+
+    def test_invalid_pose_motions_make_the_scene_unreadable(self):
+        def scene_with(motion):
+            scene = square_scene("1/10")
+            scene["objects"][0]["motion"] = motion
+            return scene
+        for motion, where in (
+                ({"poses": []}, "objects[0].motion.poses"),
+                ({"poses": [{"t": 0}], "speed": 1}, "objects[0].motion"),
+                ({"poses": [{"translate": [0, 0, 0]}]}, "objects[0].motion.poses[0]"),
+                ({"poses": [{"t": 0}, {"t": 0}]}, "objects[0].motion.poses[1].t"),
+                ({"poses": [{"t": 0, "rotate": [0, 0, 0, 0]}]}, "objects[0].motion.poses[0].rotate"),
+                ({"poses": [{"t": 0, "rotate": [1, 0, 0, 1]}, {"t": 1, "rotate": [-2, 0, 0, -2]}]},
+                 "objects[0].motion.poses[1].rotate"),
+                ({"poses": [{"t": 0, "spin": 1}]}, "objects[0].motion.poses[0]"),
+                ({"poses": [{"t": k} for k in range(10001)]}, "objects[0].motion.poses"),
+                (7, "objects[0].motion")):
+            with self.subTest(motion=str(motion)[:60]):
+                self.refused(example_86(), where + ":", scene=scene_with(motion), code=2)
+        # 10,000 poses are fine (every pose time a breakpoint: one piece between two of them)
+        many = scene_with({"poses": [{"t": str(Fraction(k, 100000)), "rotate": [1, 0, 0, str(Fraction(k, 100000))]}
+                                     for k in range(10000)]})
+        cert = turning_certificate([dict(t=["0", "1/100000"], **conflict())], until="1/100000", tH="1/100000")
+        many["time"] = [0, "1/100000"]
+        self.accepted(cert, "verified: no collision in [0, 1/100000] (regularised): 1 pair apart\n", many)
+        many["time"] = [0, "1/50000"]
+        cert = turning_certificate([dict(t=["0", "1/50000"], **conflict())], until="1/50000")
+        self.refused(cert, "pieces[0].t: a breakpoint of square at t = 1/100000 lies inside", scene=many)
+
+    def test_every_pose_time_is_a_breakpoint_in_a_turning_scene(self):
+        # s8.2: the slab at rest by two equal poses still has breakpoints at their times
+        scene = square_scene("1/10")
+        scene["objects"][1]["motion"] = {"poses": [{"t": "1/20"}, {"t": "1/16", "translate": [0, 0, 0]}]}
+        self.refused(example_86(), "pieces[0].t: a breakpoint of slab at t = 1/20 lies inside", scene=scene)
+        cuts = ["0", "1/20", "1/16", "1/10"]
+        cert = turning_certificate([dict(t=[cuts[k], cuts[k + 1]], **conflict()) for k in range(3)])
+        self.accepted(cert, NO_COLLISION.format("regularised"), scene=scene)
+
+
+@unittest.skipUnless(BINARY, "CLASH4D_BINARY is not set")
+class PosesWithoutRotation(unittest.TestCase):
+    """A pose motion without rotation is a piecewise-linear translation: /1 certificates
+    written by `clash4d check --certificate` verify with the same claim line."""
+
+    SCENE = {"format": "clash4d-scene/1", "time": [0, 4], "objects": [
+        {"name": "a", "shape": {"block": {"min": [0, 0, 0], "max": [1, 1, 1]}},
+         "motion": {"poses": [{"t": 1, "translate": [0, 0, 0]},
+                              {"t": 2, "translate": ["3/2", 0, 0], "rotate": [2, 0, 0, 0]},
+                              {"t": 3, "translate": ["3/2", 2, 0]}]}},
+        {"name": "b", "shape": {"block": {"min": [2, 0, 0], "max": [3, 1, 1]}}},
+        {"name": "c", "shape": {"block": {"min": [5, 0, 0], "max": [6, 1, 1]}},
+         "motion": {"poses": [{"t": "1/2", "translate": [-1, 0, 0]}]}}]}
+
+    def test_a_translation_by_poses_verifies_as_clash4d_verify_does(self):
+        with tempfile.TemporaryDirectory() as d:
+            scene, cert = pathlib.Path(d) / "scene.json", pathlib.Path(d) / "cert.json"
+            scene.write_text(json.dumps(self.SCENE))
+            for mode in MODES + [["--semantics", "closed", "--all-pairs"]]:
+                with self.subTest(mode=" ".join(mode)):
+                    p = subprocess.run([BINARY, "check", str(scene), *mode, "--certificate", str(cert)],
+                                       capture_output=True, text=True, timeout=600)
+                    self.assertIn(p.returncode, (0, 1), p.stderr)
+                    self.assertEqual(json.loads(cert.read_text())["format"], "clash4d-certificate/1")
+                    cpp = subprocess.run([BINARY, "verify", str(scene), str(cert)],
+                                         capture_output=True, text=True, timeout=600)
+                    self.assertEqual(cpp.returncode, 0, cpp.stderr)
+                    rc, out, err = run_inprocess(scene, cert)
+                    self.assertEqual((rc, err), (0, ""))
+                    self.assertEqual(out, cpp.stdout)
+
+
+class Polynomials(unittest.TestCase):
+    """The exact polynomial layer of s8.1 (coefficients constant term first)."""
+
+    def setUp(self):
+        self.v = clash4d_verify
+
+    def test_sturm_counts_distinct_roots_in_open_intervals(self):
+        v, F = self.v, Fraction
+        q = [1, -10, 11]                                  # roots (5 -+ sqrt 14)/11 ~ 0.114, 0.795
+        self.assertEqual(v.roots_open(q, 0, 1), 2)
+        self.assertEqual(v.roots_open(q, F(1, 10), F(1, 8)), 1)
+        self.assertEqual(v.roots_open(q, 0, F(1, 10)), 0)
+        self.assertEqual(v.roots_open(v.p_mul(q, q), 0, 1), 2)           # distinct roots
+        cubic = [0, -1, 0, 1]                             # t^3 - t: roots -1, 0, 1 at and inside ends
+        self.assertEqual(v.roots_open(cubic, -1, 1), 1)
+        self.assertEqual(v.roots_open(cubic, 0, 1), 0)
+        self.assertEqual(v.roots_open(cubic, F(-3, 2), 2), 3)
+        self.assertEqual(v.roots_open([1, 0, 1], -10, 10), 0)
+
+    def test_yun_and_the_odd_part(self):
+        v, F = self.v, Fraction
+        q = [1, -10, 11]
+        p = v.p_mul(v.p_mul(q, q), [F(-1, 2), 1])          # (11t^2 - 10t + 1)^2 (t - 1/2)
+        self.assertEqual(v.p_yun(p), [[F(-1, 2), 1], v.p_monic(q)])
+        self.assertEqual(v.p_odd_part(p), [F(-1, 2), 1])
+        self.assertEqual(v.p_odd_part(v.p_mul(q, q)), [1])
+
+    def test_positivity_with_a_double_root(self):
+        v, F = self.v, Fraction
+        q = [1, -10, 11]
+        q2 = v.p_mul(q, q)
+        self.assertTrue(v.nonneg_on(q2, 0, 1))
+        self.assertFalse(v.nonneg_on(v.p_mul(q2, [F(-1, 2), 1]), 0, 1))
+        self.assertFalse(v.positive_on(q2, 0, 1))                         # zero inside
+        self.assertTrue(v.nonneg_on([], 0, 1))                            # the zero polynomial
+        self.assertFalse(v.nonneg_on([-1], 0, 1))
+        tstar = v.Algebraic([1, -10, 11], F(1, 10), F(1, 8))
+        self.assertTrue(v.positive_on(q, 0, tstar, open_end=True))        # [0, t*)
+        self.assertFalse(v.positive_on(q, 0, tstar))                      # q(t*) = 0
+        self.assertTrue(v.nonneg_on(q, 0, tstar))
+        self.assertFalse(v.nonneg_on(q, 0, F(1, 8)))
+        # a TIME given with a double root: (11t^2 - 10t + 1)^2 in (1/10, 1/8)
+        double = v.Algebraic(v.p_mul(q, q), F(1, 10), F(1, 8))
+        self.assertEqual(v.cmp_time(double, tstar), 0)
+        self.assertEqual(v.roots_between(q, 0, double), 0)
+        self.assertEqual(v.roots_between(q, double, 1), 1)
+        self.assertEqual(v.roots_between(q, F(1, 20), 1), 2)
+
+    def test_signs_at_algebraic_numbers(self):
+        v, F = self.v, Fraction
+        r2 = v.Algebraic([-2, 0, 1], 1, 2)                # sqrt 2
+        self.assertEqual(v.sign_at([-2, 0, 1], r2), 0)
+        self.assertEqual(v.sign_at(v.p_mul([-2, 0, 1], [3, 1]), r2), 0)
+        self.assertEqual(v.sign_at([F(-141, 100), 1], r2), 1)
+        self.assertEqual(v.sign_at([F(-142, 100), 1], r2), -1)
+        self.assertEqual(v.sign_at([-3, 0, 0, 0, 1], r2), 1)                # 4 - 3
+        self.assertEqual(v.sign_at([-5, 0, 0, 0, 0, 0, 1], r2), 1)          # 8 - 5
+        self.assertEqual(v.sign_at([-9, 0, 0, 0, 0, 0, 1], r2), -1)         # 8 - 9
+        self.assertEqual(v.sign_at([], r2), 0)
+        self.assertEqual(v.sign_at([1, -10, 11], v.Algebraic([1, -10, 11], F(3, 4), 1)), 0)
+        self.assertEqual(v.sign_at([-1, 11], v.Algebraic([1, -10, 11], F(1, 10), F(1, 8))), 1)
+
+    def test_one_number_given_by_two_polynomials(self):
+        v, F = self.v, Fraction
+        a = v.Algebraic([-2, 0, 1], 1, 2)
+        b = v.Algebraic(v.p_mul([-2, 0, 1], [5, 1]), F(7, 5), F(3, 2))     # (t^2 - 2)(t + 5)
+        self.assertEqual(v.cmp_time(a, b), 0)
+        self.assertEqual(v.cmp_time(b, a), 0)
+        c = v.Algebraic([-3, 0, 1], 1, 2)                  # sqrt 3
+        self.assertEqual(v.cmp_time(a, c), -1)
+        self.assertEqual(v.cmp_time(c, b), 1)
+        self.assertEqual(v.cmp_time(a, F(141, 100)), 1)
+        self.assertEqual(v.cmp_time(F(3, 2), a), 1)
+        # a degree-one poly is a rational: the refinement meets it at a midpoint
+        half = v.Algebraic([-1, 2], 0, 1)
+        self.assertEqual(v.cmp_time(half, F(1, 2)), 0)
+        self.assertEqual(v.cmp_time(v.Algebraic([-1, 2], 0, 1), v.Algebraic([-1, 0, 4], 0, 1)), 0)
 
 
 if __name__ == "__main__":

@@ -9,6 +9,12 @@ with clash4d (not even the scene reader). Exits as `clash4d verify`: 0 and the
 proved claim (s5), 1 and the first reason the certificate fails with its JSON
 path, 2 when the scene or the certificate cannot be read, 3 beyond a limit
 (nesting, memory), 4 on a flaw of this checker (never a traceback).
+
+Two formats: clash4d-certificate/1, and clash4d-certificate/turning-1 for
+scenes where some object turns (s8: literals whose coefficients are
+polynomials in t, polynomial multipliers, TIMEs that are algebraic numbers),
+each on its kind of scene only. The s8 part is exact polynomial arithmetic over
+Fraction: Sturm sequences count roots, Yun's factorisation gives odd parts.
 """
 import bisect
 import itertools
@@ -26,6 +32,9 @@ SEMANTICS = ("regularised", "closed")
 MAX_EXPONENT = 1000          # the scene reader's limit on a decimal exponent
 MAX_NUMBER_CHARS = 1000      # and on the characters of one number
 MAX_NESTING = 5000           # s6: JSON nested deeper is refused (exit 3)
+MAX_POSES = 10_000           # scene-format.md: poses of one motion (more: the scene is refused)
+FORMAT_1 = "clash4d-certificate/1"
+FORMAT_TURNING = "clash4d-certificate/turning-1"     # s8
 
 # s1: integers of any length, as the C++ checker (GMP) reads them; Python
 # 3.11 refuses to convert more than 4,300 digits by default.
@@ -196,7 +205,16 @@ def primitive(v):
 
 
 def negate(k):
+    """The negation of a literal key: a /1 5-tuple, or a LIT's four coefficient tuples (s8.2)."""
+    if k and type(k[0]) is tuple:
+        return tuple(tuple(-x for x in p) for p in k)
     return tuple(-x for x in k)
+
+
+def fmt_lit(k):
+    if k and type(k[0]) is tuple:
+        return "[" + ", ".join("[" + ", ".join(map(str, p or (0,))) + "]" for p in k) + "]"
+    return str(list(k))
 
 
 def value(k, p):
@@ -209,7 +227,351 @@ def sign(x):
 
 
 def fmt_point(p):
+    """s5 and s8.5: rationals in lowest terms, TIMEs and FIELDs by their own str."""
     return "(" + ", ".join(str(x) for x in p) + ")"
+
+
+# ---------------------------------------------- polynomials over Q (s8.1)
+# A polynomial is a list of rationals (int or Fraction), constant term first,
+# without trailing zeros: [] is the zero polynomial, [c] a constant.
+
+def p_trim(p):
+    p = list(p)
+    while p and p[-1] == 0:
+        p.pop()
+    return p
+
+
+def p_const(c):
+    return p_trim([c])
+
+
+def p_add(p, q):
+    if len(p) < len(q):
+        p, q = q, p
+    return p_trim([a + (q[i] if i < len(q) else 0) for i, a in enumerate(p)])
+
+
+def p_neg(p):
+    return [-c for c in p]
+
+
+def p_sub(p, q):
+    return p_add(p, p_neg(q))
+
+
+def p_scale(p, c):
+    return p_trim([c * a for a in p])
+
+
+def p_mul(p, q):
+    if not p or not q:
+        return []
+    r = [0] * (len(p) + len(q) - 1)
+    for i, a in enumerate(p):
+        if a:
+            for j, b in enumerate(q):
+                r[i + j] += a * b
+    return p_trim(r)
+
+
+def p_sum(polys):
+    total = []
+    for p in polys:
+        total = p_add(total, p)
+    return total
+
+
+def p_divmod(p, q):
+    """Quotient and remainder of p by q != 0 (exact, over Fraction)."""
+    if not q:
+        raise ZeroDivisionError("polynomial division by zero")
+    r = [Fraction(c) for c in p]
+    dq, lead = len(q) - 1, Fraction(q[-1])
+    quot = [Fraction(0)] * max(len(p) - dq, 0)
+    for k in range(len(p) - 1 - dq, -1, -1):
+        c = r[k + dq] / lead
+        quot[k] = c
+        if c:
+            for j in range(dq + 1):
+                r[k + j] -= c * q[j]
+    return p_trim(quot), p_trim(r[:dq])
+
+
+def p_div(p, q):
+    return p_divmod(p, q)[0]
+
+
+def p_monic(p):
+    return [Fraction(c) / p[-1] for c in p] if p else []
+
+
+def p_gcd(p, q):
+    """The monic greatest common divisor (zero when both are zero)."""
+    while q:
+        p, q = q, p_monic(p_divmod(p, q)[1])
+    return p_monic(p)
+
+
+def p_deriv(p):
+    return p_trim([i * p[i] for i in range(1, len(p))])
+
+
+def p_eval(p, x):
+    v = 0
+    for c in reversed(p):
+        v = v * x + c
+    return v
+
+
+def p_squarefree(p):
+    """p divided by gcd(p, p'): the same roots, each simple."""
+    return p_monic(p_div(p, p_gcd(p, p_deriv(p)))) if len(p) > 1 else p_monic(p)
+
+
+def p_yun(p):
+    """Yun's square-free factorisation of a non-constant p: [a_1, a_2, ...], monic, square-free
+    and pairwise coprime, with p = c a_1 a_2^2 a_3^3 ... (s8.1)."""
+    d0 = p_deriv(p)
+    a0 = p_gcd(p, d0)
+    b, c = p_div(p, a0), p_div(d0, a0)
+    d = p_sub(c, p_deriv(b))
+    factors = []
+    while len(b) > 1:
+        a = p_gcd(b, d)
+        factors.append(a)
+        b = p_div(b, a)
+        d = p_sub(p_div(d, a), p_deriv(b))
+    return factors
+
+
+def p_odd_part(p):
+    """g = p / s^2 where p = c s^2 g, g square-free: the factors of odd multiplicity (s8.1)."""
+    g = [1]
+    if len(p) > 1:
+        for i, a in enumerate(p_yun(p)):
+            if i % 2 == 0:                      # multiplicity i + 1 odd
+                g = p_mul(g, a)
+    return g
+
+
+_STURM = {}
+
+
+def p_sturm(p):
+    """Sturm sequence p, p', -rem, ... (each scaled by a positive number only)."""
+    key = tuple(p)
+    seq = _STURM.get(key)
+    if seq is None:
+        seq = [p, p_deriv(p)]
+        while seq[-1]:
+            r = p_neg(p_divmod(seq[-2], seq[-1])[1])
+            seq.append(p_scale(r, 1 / abs(Fraction(r[-1]))) if r else r)
+        seq.pop()
+        if len(_STURM) > 4096:
+            _STURM.clear()
+        _STURM[key] = seq
+    return seq
+
+
+def sign_changes(seq, x):
+    n, last = 0, 0
+    for p in seq:
+        s = sign(p_eval(p, x))
+        if s:
+            n += last * s < 0
+            last = s
+    return n
+
+
+def roots_open(p, x, y):
+    """Distinct real roots of p != 0 in the open interval (x, y), x < y rational: Sturm's count
+    after dividing out the roots at the ends (s8.1)."""
+    for e in (x, y):
+        while len(p) > 1 and p_eval(p, e) == 0:
+            p = p_div(p, [-e, 1])
+    if len(p) <= 1:
+        return 0
+    seq = p_sturm(p)
+    return sign_changes(seq, x) - sign_changes(seq, y)
+
+
+# ---------------------------------------------------- TIMEs (s8.1)
+# A TIME is a rational (int or Fraction) or an Algebraic: the one root of poly in (lo, hi).
+
+class Algebraic:
+    """The one real root of `poly` in the open interval `between` (s8.1), already validated.
+    Its interval is refined in place (halving); `exact` holds the value once a midpoint is it."""
+
+    def __init__(self, read, lo, hi):
+        self.poly, self.between = read, (lo, hi)     # as read: what s8.5 prints
+        self.sq = p_squarefree(p_trim(read))         # simple roots: a sign change at each
+        self.lo, self.hi = Fraction(lo), Fraction(hi)
+        self.sign_lo = sign(p_eval(self.sq, self.lo))
+        self.exact = None
+
+    def refine(self):
+        """Halve the interval, keeping the half whose ends the square-free poly has opposite
+        signs at, or stop at a midpoint that is the root."""
+        m = (self.lo + self.hi) / 2
+        s = sign(p_eval(self.sq, m))
+        if s == 0:
+            self.exact = m
+        elif s == self.sign_lo:
+            self.lo = m
+        else:
+            self.hi = m
+
+    def __str__(self):
+        """s8.5: `root of [c0, c1, ...] in (lo, hi)`, as read, in lowest terms."""
+        return (f"root of [{', '.join(map(str, self.poly))}] in "
+                f"({self.between[0]}, {self.between[1]})")
+
+
+class AtT:
+    """A FIELD {"at_t": POLY} (s8.1): POLY at the point's TIME."""
+
+    def __init__(self, read):
+        self.read, self.poly = read, p_trim(read)
+
+    def __str__(self):
+        """s8.5: `[c0, c1, ...](t)`, as read, in lowest terms."""
+        return "[" + ", ".join(map(str, self.read)) + "](t)"
+
+
+def field_poly(x):
+    """A FIELD as a polynomial in t: a rational is a constant."""
+    return x.poly if isinstance(x, AtT) else p_const(x)
+
+
+def fmt_poly(p):
+    return "[" + ", ".join(map(str, p or [0])) + "]"
+
+
+def rat(x):
+    """The rational value of a TIME, or None while it is known by an interval only."""
+    if isinstance(x, Algebraic):
+        return x.exact
+    return x
+
+
+def refine(x):
+    if rat(x) is None:
+        x.refine()
+
+
+def sign_at(p, r):
+    """The exact sign of the polynomial p at the TIME r (s8.1)."""
+    q = rat(r)
+    if q is not None:
+        return sign(p_eval(p, q))
+    if not p:
+        return 0
+    g = p_gcd(p, r.sq)                       # p(r) = 0 exactly when g has a root in (lo, hi)
+    if len(g) > 1 and roots_open(g, r.lo, r.hi) > 0:
+        return 0
+    while roots_open(p, r.lo, r.hi) > 0:     # refine until p has no root in the interval
+        r.refine()
+        if r.exact is not None:
+            return sign(p_eval(p, r.exact))
+    return sign(p_eval(p, (r.lo + r.hi) / 2))
+
+
+def cmp_time(a, b):
+    """-1, 0 or 1 as the TIME a is below, equal to or above the TIME b, exactly (s8.1)."""
+    qa, qb = rat(a), rat(b)
+    if qa is not None and qb is not None:
+        return sign(qa - qb)
+    if qa is not None:
+        return -cmp_time(b, a)
+    if qb is not None:                       # a by its interval, b rational
+        while True:
+            if qb <= a.lo:
+                return 1
+            if qb >= a.hi:
+                return -1
+            if p_eval(a.sq, qb) == 0:        # the one root in (lo, hi)
+                return 0
+            a.refine()
+            if a.exact is not None:
+                return sign(a.exact - qb)
+    g = p_gcd(a.sq, b.sq)                    # equal when g has a root in the overlap
+    lo, hi = max(a.lo, b.lo), min(a.hi, b.hi)
+    if len(g) > 1 and lo < hi and roots_open(g, lo, hi) > 0:
+        return 0
+    while True:                              # otherwise refine both until disjoint
+        if a.hi <= b.lo:
+            return -1
+        if b.hi <= a.lo:
+            return 1
+        a.refine()
+        b.refine()
+        if a.exact is not None or b.exact is not None:
+            return cmp_time(a, b)
+
+
+def isolate(f, x):
+    """Refine the TIME x until its interval holds no root of f but possibly x itself (s8.1)."""
+    if rat(x) is None:
+        own = 1 if sign_at(f, x) == 0 else 0
+        while rat(x) is None and roots_open(f, x.lo, x.hi) != own:
+            x.refine()
+
+
+def rational_ends(a, b, strict):
+    """Rationals a <= L <= U <= b (L < U when strict) with no point of (a, L) or (U, b) but
+    what the TIMEs' intervals hold: a itself or its interval's upper end, b or its lower end."""
+    while True:
+        L = rat(a) if rat(a) is not None else a.hi
+        U = rat(b) if rat(b) is not None else b.lo
+        if L < U or (L == U and not strict):
+            return L, U
+        refine(a)
+        refine(b)
+
+
+def roots_between(f, a, b):
+    """Distinct real roots of f != 0 in the open interval (a, b) of TIMEs a < b (s8.1): each
+    algebraic end refined until its interval holds no root of f but the end itself, then
+    Sturm's count between the rational ends, plus one for each such end that is a root."""
+    if len(f) <= 1:
+        return 0
+    isolate(f, a)
+    isolate(f, b)
+    L, U = rational_ends(a, b, False)
+    n = roots_open(f, L, U) if L < U else 0
+    inner = {x for x in (L, U) if x != rat(a) and x != rat(b)}
+    return n + sum(1 for x in inner if p_eval(f, x) == 0)
+
+
+def point_inside(p, a, b):
+    """A rational point of (a, b), TIMEs a < b, where p != 0 (p not the zero polynomial)."""
+    L, U = rational_ends(a, b, True)
+    k = 1
+    while True:
+        m = L + (U - L) / (1 << k)
+        if p_eval(p, m) != 0:
+            return m
+        k += 1
+
+
+def nonneg_on(p, a, b):
+    """p >= 0 on [a, b] (s8.1): p is zero, or its odd part has no root in (a, b) and p is
+    positive at some point of (a, b)."""
+    if not p:
+        return True
+    if roots_between(p_odd_part(p), a, b) > 0:
+        return False
+    return p_eval(p, point_inside(p, a, b)) > 0
+
+
+def positive_on(p, a, b, open_end=False):
+    """p > 0 on [a, b] (s8.1), or on [a, b) when open_end."""
+    if not p or sign_at(p, a) <= 0:
+        return False
+    if not open_end and sign_at(p, b) <= 0:
+        return False
+    return roots_between(p, a, b) == 0
 
 
 # ------------------------------------------------------------------ scene
@@ -352,10 +714,24 @@ def rotation(q):
 
 
 class Motion:
-    """D(t) = v_k t + o_k on segment k, between the listed times (scene-format.md, Motion)."""
+    """D(t) = v_k t + o_k on segment k, between the listed times (scene-format.md, Motion).
 
-    def __init__(self, times, vels):
-        self.times, self.vels = times, vels
+    A pose motion (scene-format.md, "Motion with rotation (poses)") also keeps its poses
+    (t, c, q): its breakpoints (s8.2) are the pose times; without rotation it is the
+    piecewise-linear translation D(t) = c(t) (the offsets given), whose velocity changes are
+    the pose times where the velocity changes, as the same motion written in ROBMOD."""
+
+    def __init__(self, times, vels, offs=None, poses=None):
+        self.times, self.vels, self.poses = times, vels, poses
+        # s8: an object turns when some pose's rotate has a non-zero x, y or z
+        self.turning = any(any(q[1:]) for _, _, q in poses or ())
+        # A velocity change is every time the motion lists (s2.2), even between equal velocities.
+        self.changes = list(times)
+        # s8.2: the breakpoints, the pose times or a ROBMOD motion's until times
+        self.breakpoints = [t for t, _, _ in poses] if poses is not None else self.changes
+        if offs is not None:
+            self.offs = offs
+            return
         k0 = sum(1 for T in times if T < 0)        # the segment whose closure holds t = 0
         offs = [None] * len(vels)
         offs[k0] = (Fraction(0),) * 3               # D(0) = 0
@@ -366,13 +742,63 @@ class Motion:
             T = times[k]
             offs[k] = tuple(offs[k + 1][i] + (vels[k + 1][i] - vels[k][i]) * T for i in range(3))
         self.offs = offs
-        # A velocity change is every time the motion lists (s3), even between equal velocities.
-        self.changes = list(times)
+
+    @staticmethod
+    def from_poses(poses):
+        """Poses (t_i, c_i, q_i): at rest at c_0 before t_0 and at c_m after t_m, c linear
+        between (the translation of a motion without rotation). As the scene reader does, a
+        pose time where the velocity does not change is no velocity change: the same motion
+        written in ROBMOD has none there."""
+        zero = (Fraction(0),) * 3
+        times, vels, offs = [], [zero], [poses[0][1]]
+        for i, (t0, c0, _) in enumerate(poses):
+            if i + 1 < len(poses):
+                t1, c1, _ = poses[i + 1]
+                v = tuple((c1[k] - c0[k]) / (t1 - t0) for k in range(3))
+            else:
+                v = zero
+            if v != vels[-1]:
+                times.append(t0)
+                vels.append(v)
+                offs.append(tuple(c0[k] - v[k] * t0 for k in range(3)))
+        return Motion(times, vels, offs, poses)
+
+    def piece_qc(self, k):
+        """q(t) and c(t) as polynomials on motion piece k (s8.2): the k-th open interval
+        between breakpoints. ROBMOD: q = (1, 0, 0, 0), c(t) = D(t) = v_k t + o_k."""
+        if self.poses is None:                      # the pieces are the segments
+            v, o = self.vels[k], self.offs[k]
+            return ([1], [], [], []), tuple(p_trim([o[i], v[i]]) for i in range(3))
+        P = self.poses
+        if k == 0 or k == len(P):                   # before the first pose, after the last
+            _, c, q = P[0] if k == 0 else P[-1]
+            return tuple(map(p_const, q)), tuple(map(p_const, c))
+        (t0, c0, q0), (t1, c1, q1) = P[k - 1], P[k]
+        s = [-t0 / (t1 - t0), 1 / (t1 - t0)]        # s = (t - t_i) / (t_{i+1} - t_i)
+        return (tuple(p_add(p_const(q0[i]), p_scale(s, q1[i] - q0[i])) for i in range(4)),
+                tuple(p_add(p_const(c0[i]), p_scale(s, c1[i] - c0[i])) for i in range(3)))
+
+    def piece_at(self, T, after):
+        """The motion piece holding the TIME T (k: the number of breakpoints below T); with
+        `after`, the piece just after T (the breakpoints at most T)."""
+        lo, hi = 0, len(self.breakpoints)
+        while lo < hi:
+            mid = (lo + hi) // 2
+            c = cmp_time(self.breakpoints[mid], T)
+            if c < 0 or (c == 0 and after):
+                lo = mid + 1
+            else:
+                hi = mid
+        return lo
 
     # The times increase strictly: binary searches, so a motion of many
     # segments costs a logarithm per piece, not a scan.
     def segment(self, t):
         return bisect.bisect_left(self.times, t)
+
+    def is_breakpoint(self, t):
+        i = bisect.bisect_left(self.breakpoints, t)
+        return i < len(self.breakpoints) and self.breakpoints[i] == t
 
     def is_change(self, t):
         i = bisect.bisect_left(self.times, t)
@@ -384,10 +810,51 @@ class Motion:
         return self.times[i] if i < len(self.times) and self.times[i] < hi else None
 
 
+def extrude(node, literal):
+    """The formula with each atom (a, b, c, d) replaced by ("lit", literal(atom))."""
+    tag, arg = node
+    if tag == "atom":
+        return ("lit", literal(arg))
+    kids = []
+    for c in (extrude(c, literal) for c in arg):      # flatten AND of AND, OR of OR
+        kids.extend(c[1] if c[0] == tag else [c])
+    return kids[0] if len(kids) == 1 else (tag, kids)
+
+
+def rotation_polys(q):
+    """N(q) = |q|^2 R(q), the un-normalised rotation matrix, and |q|^2, of a quaternion of
+    polynomials (s8.2)."""
+    w, x, y, z = q
+    sq = lambda a: p_mul(a, a)
+    two = lambda a, b: p_scale(p_mul(a, b), 2)
+    w2, x2, y2, z2 = sq(w), sq(x), sq(y), sq(z)
+    N = [[p_sub(p_add(w2, x2), p_add(y2, z2)), p_sub(two(x, y), two(w, z)), p_add(two(x, z), two(w, y))],
+         [p_add(two(x, y), two(w, z)), p_sub(p_add(w2, y2), p_add(x2, z2)), p_sub(two(y, z), two(w, x))],
+         [p_sub(two(x, z), two(w, y)), p_add(two(y, z), two(w, x)), p_sub(p_add(w2, z2), p_add(x2, y2))]]
+    return N, p_sum((w2, x2, y2, z2))
+
+
+def lit_key(polys):
+    """The coprime form of a LIT (s8.2): the four polynomials times the one positive rational
+    making all coefficients coprime integers, trailing zeros dropped; None when all are zero."""
+    den, g = 1, 0
+    for p in polys:
+        for c in p:
+            den = math.lcm(den, Fraction(c).denominator)
+    ints = [[int(c * den) for c in p] for p in polys]
+    for p in ints:
+        for c in p:
+            g = math.gcd(g, c)
+    if g == 0:
+        return None
+    return tuple(tuple(c // g for c in p_trim(p)) for p in ints)
+
+
 class Object:
     def __init__(self, name, formula, motion):
         self.name, self.formula, self.motion = name, formula, motion
         self.cache = {}
+        self.turning_cache = {}
 
     def formula_at(self, t):
         """The object's formula over literals on the motion segment holding t (s2.2)."""
@@ -395,19 +862,28 @@ class Object:
         if k not in self.cache:
             v, o = self.motion.vels[k], self.motion.offs[k]
 
-            def extrude(node):
-                tag, arg = node
-                if tag == "atom":
-                    n, d = arg[:3], arg[3]
-                    nv = sum(n[i] * v[i] for i in range(3))
-                    no = sum(n[i] * o[i] for i in range(3))
-                    return ("lit", primitive((*n, -nv, d - no)))
-                kids = []
-                for c in map(extrude, arg):          # flatten AND of AND, OR of OR
-                    kids.extend(c[1] if c[0] == tag else [c])
-                return kids[0] if len(kids) == 1 else (tag, kids)
-            self.cache[k] = extrude(self.formula)
+            def literal(atom):
+                n, d = atom[:3], atom[3]
+                nv = sum(n[i] * v[i] for i in range(3))
+                no = sum(n[i] * o[i] for i in range(3))
+                return primitive((*n, -nv, d - no))
+            self.cache[k] = extrude(self.formula, literal)
         return self.cache[k]
+
+    def turning_formula(self, k):
+        """The object's formula over LITs (coprime keys) on motion piece k (s8.2):
+        atom (n, d) -> N(q(t)) n . x + |q(t)|^2 d - (N(q(t)) n) . c(t)."""
+        if k not in self.turning_cache:
+            q, c = self.motion.piece_qc(k)
+            N, norm = rotation_polys(q)
+
+            def literal(atom):
+                n, d = atom[:3], atom[3]
+                nt = [p_sum(p_scale(N[i][j], n[j]) for j in range(3)) for i in range(3)]
+                e = p_sub(p_scale(norm, d), p_sum(p_mul(nt[i], c[i]) for i in range(3)))
+                return lit_key(nt + [e])
+            self.turning_cache[k] = extrude(self.formula, literal)
+        return self.turning_cache[k]
 
 
 def literals_of(node, out):
@@ -426,6 +902,21 @@ def strictly_true(node, p):
     if tag == "and":
         return all(strictly_true(c, p) for c in arg)
     return any(strictly_true(c, p) for c in arg)
+
+
+def strictly_true_by(node, sgn):
+    """The formula with strict signs, each literal's sign given by sgn(key)."""
+    tag, arg = node
+    if tag == "lit":
+        return sgn(arg) < 0
+    if tag == "and":
+        return all(strictly_true_by(c, sgn) for c in arg)
+    return any(strictly_true_by(c, sgn) for c in arg)
+
+
+def lit_value_poly(key, point):
+    """A LIT at a point of FIELDs: n_x(t) X(t) + n_y(t) Y(t) + n_z(t) Z(t) + e(t) (s8.4)."""
+    return p_add(p_sum(p_mul(list(key[i]), field_poly(point[i])) for i in range(3)), list(key[3]))
 
 
 def check_keys(obj, path, required, optional, bad, unknown):
@@ -470,6 +961,8 @@ class SceneReader:
             motion = self.motion(o.get("motion", "rest"), p + ".motion")
             self.objects[name] = Object(name, self.solid(o["shape"], p + ".shape"), motion)
             self.order.append(name)
+        # s8: the scene needs the turning format when some object turns
+        self.turning = any(o.motion.turning for o in self.objects.values())
         self.ignored = set()
         ign = doc.get("ignore", [])
         if not isinstance(ign, list):
@@ -600,9 +1093,12 @@ class SceneReader:
         self.bad(path, f"unknown solid \"{kind}\"")
 
     def motion(self, text, path):
-        """ROBMOD notation: segment ("until" T segment)*, segment = rest | vel vx vy vz."""
+        """ROBMOD notation: segment ("until" T segment)*, segment = rest | vel vx vy vz;
+        or an object of poses."""
+        if isinstance(text, dict):
+            return self.pose_motion(text, path)
         if not isinstance(text, str):
-            self.bad(path, "expected a string")
+            self.bad(path, "expected a ROBMOD string or {\"poses\": [...]}")
         toks, times, vels, i = text.split(), [], [], 0
         while True:
             if i < len(toks) and toks[i] == "rest":
@@ -622,6 +1118,36 @@ class SceneReader:
                 self.bad(path, "the times must increase strictly")
             i += 2
         return Motion(times, vels)
+
+    def pose_motion(self, v, path):
+        """scene-format.md, "Motion with rotation (poses)": {"poses": [{"t", "translate",
+        "rotate"}, ...]}, t strictly increasing, rotate != 0, consecutive quaternions not
+        negative multiples of each other, at most MAX_POSES poses."""
+        self.keys(v, path, {"poses"})
+        poses = v["poses"]
+        if not isinstance(poses, list) or not poses:
+            self.bad(path + ".poses", "expected a non-empty list of poses")
+        if len(poses) > MAX_POSES:
+            self.bad(path + ".poses", f"more than the limit of {MAX_POSES} poses")
+        out = []
+        for i, pose in enumerate(poses):
+            p = f"{path}.poses[{i}]"
+            self.keys(pose, p, {"t"}, {"translate", "rotate"})
+            t = self.number(pose["t"], p + ".t")
+            c = self.numbers(pose.get("translate", ["0", "0", "0"]), p + ".translate", 3)
+            q = self.numbers(pose.get("rotate", ["1", "0", "0", "0"]), p + ".rotate", 4)
+            if not any(q):
+                self.bad(p + ".rotate", "the quaternion must not be zero")
+            if out:
+                t0, _, q0 = out[-1]
+                if not t0 < t:
+                    self.bad(p + ".t", f"times must be strictly increasing ({t} after {t0})")
+                parallel = all(q0[a] * q[b] == q0[b] * q[a] for a in range(4) for b in range(a))
+                if parallel and sum(q0[a] * q[a] for a in range(4)) < 0:
+                    self.bad(p + ".rotate", f"a negative multiple of the quaternion of poses[{i - 1}]: "
+                                            "the interpolated quaternion would pass through 0")
+            out.append((t, c, q))
+        return Motion.from_poses(out)
 
     def motion_number(self, tok, path):
         try:
@@ -684,8 +1210,14 @@ class Checker:
         if not isinstance(doc, dict):
             self.bad("$", "expected an object")
         self.keys(doc, "$", {"format", "semantics", "time", "claim", "pairs"}, {"scene"})
-        if not isinstance(doc["format"], str) or doc["format"] != "clash4d-certificate/1":
-            self.bad("format", "expected \"clash4d-certificate/1\"")
+        if not isinstance(doc["format"], str) or doc["format"] not in (FORMAT_1, FORMAT_TURNING):
+            self.bad("format", f"expected \"{FORMAT_1}\" or \"{FORMAT_TURNING}\"")
+        # s8: each format on its kind of scene only; a turning object is never read as resting
+        self.turning = doc["format"] == FORMAT_TURNING
+        if self.turning != self.scene.turning:
+            needed = FORMAT_TURNING if self.scene.turning else FORMAT_1
+            raise Failed("format", f"the scene needs the format \"{needed}\" (section 8): "
+                         + ("some object turns" if self.scene.turning else "no object turns"))
         if not isinstance(doc["semantics"], str) or doc["semantics"] not in SEMANTICS:
             self.bad("semantics", "expected \"regularised\" or \"closed\"")
         if "scene" in doc and not isinstance(doc["scene"], str):
@@ -712,7 +1244,8 @@ class Checker:
                 raise Failed(path + ".objects", "the two objects are the same")
             if key in self.scene.ignored:
                 raise Failed(path + ".objects", f"the pair {names[0]}/{names[1]} is ignored")
-            records.append(self.pair(pair, path, *(self.scene.objects[n] for n in names)))
+            prove = self.turning_pair if self.turning else self.pair
+            records.append(prove(pair, path, *(self.scene.objects[n] for n in names)))
             if key in seen:
                 raise Failed(path + ".objects", f"the pair {names[0]}/{names[1]} appears twice")
             seen.add(key)
@@ -725,6 +1258,9 @@ class Checker:
         tL, tH = self.scene.time
         sem = "closed" if self.closed else "regularised"
         hits = [r for r in records if r["collide"]]
+        if self.turning and earliest:                               # s8: not in this version
+            raise Failed("claim.earliest", "earliest times of turning scenes are not certified "
+                                           "by this version (section 8)")
         if collide != bool(hits):                                   # rule 2
             raise Failed("claim.collide", f"is {str(collide).lower()}, but "
                          + ("a PAIR collides" if hits else "no PAIR collides"))
@@ -749,7 +1285,7 @@ class Checker:
             if tstar is not None:
                 if r["until"] < tstar:
                     raise Failed(r["path"] + ".apart.until", f"{r['until']} is before t* = {tstar}")
-            elif r["until"] != tH:
+            elif cmp_time(r["until"], tH) != 0:
                 raise Failed(r["path"] + ".apart.until", f"{r['until']} is not tH = {tH}")
             elif self.closed and r["open_end"]:
                 raise Failed(r["path"] + ".apart.open_end", "must be false: a touch at tH counts")
@@ -768,13 +1304,8 @@ class Checker:
                     f"contact {fmt_point(r['point'])}")
         return f"verified: collision ({sem}): {who} at {fmt_point(r['point'])}"
 
-    def pair(self, pair, path, A, B):
-        """One PAIR (s3): its proof, and what rule 5 needs of it."""
-        tL, tH = self.scene.time
-        rec = {"path": path, "names": (A.name, B.name), "tstar": None, "point": None,
-               "until": None, "open_end": False}
-        rec["collide"] = collide = self.boolean(pair["collide"], path + ".collide")
-        # The proofs a PAIR holds: a wrong combination is a failure (1), as an unknown key.
+    def proofs_present(self, pair, path, collide):
+        """The proofs a PAIR holds (s3): a wrong combination is a failure (1), as an unknown key."""
         present = {k for k in ("apart", "witness", "touch", "earliest") if k in pair}
         if not collide and present != {"apart"}:
             raise Failed(path, "a PAIR with collide false holds apart and nothing else")
@@ -784,6 +1315,15 @@ class Checker:
             raise Failed(path + ".witness", "a witness is for regularised semantics (closed: touch)")
         if present == {"touch"} and not self.closed:
             raise Failed(path + ".touch", "a touch is for closed semantics (regularised: witness)")
+        return present
+
+    def pair(self, pair, path, A, B):
+        """One PAIR (s3): its proof, and what rule 5 needs of it."""
+        tL, tH = self.scene.time
+        rec = {"path": path, "names": (A.name, B.name), "tstar": None, "point": None,
+               "until": None, "open_end": False}
+        rec["collide"] = collide = self.boolean(pair["collide"], path + ".collide")
+        self.proofs_present(pair, path, collide)
         if not collide:
             rec["until"], rec["open_end"] = self.apart(pair["apart"], path + ".apart", A, B)
         elif "witness" in pair:
@@ -910,13 +1450,7 @@ class Checker:
         for j, cf in enumerate(self.array(v, path + ".conflicts")):
             cp = f"{path}.conflicts[{j}]"
             cf = self.keys(cf, cp, {"literals", "lambda"}, {"of"})
-            of = cf.get("of", "both")
-            if not isinstance(of, str):
-                self.bad(cp + ".of", "expected a string")
-            if of not in ("both", "A", "B"):
-                raise Failed(cp + ".of", "expected \"both\", \"A\" or \"B\"")
-            if not self.closed:
-                of = "both"                       # regularised ignores `of`
+            of = self.conflict_of(cf, cp)
             raw_lits = self.array(cf["literals"], cp + ".literals")
             raw_lams = self.array(cf["lambda"], cp + ".lambda")
             if not raw_lits:
@@ -1047,14 +1581,221 @@ class Checker:
                         return all(dfs(((c, side), pending)) for c in arg)
                 # a whole term that no conflict closes off: the first failure
                 shown = "; ".join(("A " if closed and s == 0 else "B " if closed else "")
-                                  + str(list(k)) for k, s in term)
+                                  + fmt_lit(k) for k, s in term)
                 raise Failed(path, "no conflict closes off the term "
-                             + ("" if closed else "(with the path and slab) ") + f"[{shown}]")
+                             + ("" if closed or self.turning else "(with the path and slab) ")
+                             + f"[{shown}]")
             finally:
                 for k, side in reversed(added):
                     remove(k, side)
 
         dfs(((fa, 0), ((fb, 1), None)))
+
+    # -- s8: scenes where objects turn (format clash4d-certificate/turning-1)
+    def poly_read(self, v, path, integers=False):
+        """A POLY (s8.1) as read: an array of at least one number, constant term first."""
+        if not isinstance(v, list) or not v:
+            self.bad(path, "expected a polynomial: an array of at least one number")
+        out = []
+        for i, x in enumerate(v):
+            out.append(self.num(x, f"{path}[{i}]"))
+            if integers and "/" in x:
+                self.bad(f"{path}[{i}]", "a TIME's poly holds integers only")
+        return out
+
+    def poly(self, v, path):
+        return p_trim(self.poly_read(v, path))
+
+    def time(self, v, path):
+        """A TIME (s8.1): a rational, or the one root of poly in (lo, hi); each failed
+        requirement a failure (1) at its place."""
+        if isinstance(v, str):
+            return self.num(v, path)
+        t = self.keys(v, path, {"poly", "between"}, {"approx"})
+        if "approx" in t and not isinstance(t["approx"], str):
+            self.bad(path + ".approx", "expected a string (never read as a number)")
+        read = self.poly_read(t["poly"], path + ".poly", integers=True)
+        lo, hi = (self.num(x, f"{path}.between[{j}]")
+                  for j, x in enumerate(self.array(t["between"], path + ".between", 2)))
+        P = p_trim(read)
+        if not lo < hi:
+            raise Failed(path + ".between", f"lo = {lo} is not below hi = {hi}")
+        if not P:
+            raise Failed(path + ".poly", "the zero polynomial has no isolated root")
+        for j, e in enumerate((lo, hi)):
+            if p_eval(P, e) == 0:
+                raise Failed(f"{path}.between[{j}]", f"{e} is a root of poly")
+        n = roots_open(P, lo, hi)
+        if n != 1:
+            raise Failed(path, f"poly {fmt_poly(P)} has {n} distinct real roots in ({lo}, {hi}), "
+                               "not exactly one")
+        return Algebraic(read, lo, hi)
+
+    def field(self, v, path):
+        """A FIELD (s8.1): a rational, or {"at_t": POLY}, POLY at the point's TIME."""
+        if isinstance(v, str):
+            return self.num(v, path)
+        f = self.keys(v, path, {"at_t"})
+        return AtT(self.poly_read(f["at_t"], path + ".at_t"))
+
+    def turning_point(self, v, path):
+        """[X, Y, Z, T]: three FIELDs and a TIME (s8.4)."""
+        v = self.array(v, path, 4)
+        return tuple(self.field(v[i], f"{path}[{i}]") for i in range(3)) + (self.time(v[3], path + "[3]"),)
+
+    def lit(self, v, path):
+        """A LIT (s8.2): [POLY_x, POLY_y, POLY_z, POLY_e], its normal not all zero."""
+        polys = [self.poly(x, f"{path}[{i}]") for i, x in enumerate(self.array(v, path, 4))]
+        if not any(polys[:3]):
+            raise Failed(path, "n_x, n_y and n_z are all the zero polynomial")
+        return polys
+
+    def turning_pair(self, pair, path, A, B):
+        """One PAIR of a turning scene (s8.4)."""
+        tL, tH = self.scene.time
+        rec = {"path": path, "names": (A.name, B.name), "tstar": None, "point": None,
+               "until": None, "open_end": False}
+        rec["collide"] = collide = self.boolean(pair["collide"], path + ".collide")
+        present = self.proofs_present(pair, path, collide)
+        if "earliest" in present:
+            raise Failed(path + ".earliest", "earliest times of turning scenes are not certified "
+                                             "by this version (section 8)")
+        if not collide:
+            rec["until"], rec["open_end"] = self.turning_apart(pair["apart"], path + ".apart", A, B)
+        elif "witness" in pair:
+            rec["point"] = w = self.point(pair["witness"], path + ".witness")
+            self.turning_witness(w, path + ".witness", A, B)
+        else:
+            t = self.keys(pair["touch"], path + ".touch", {"point", "inside"})
+            rec["point"] = c = self.turning_point(t["point"], path + ".touch.point")
+            if cmp_time(c[3], tL) < 0 or cmp_time(c[3], tH) > 0:
+                raise Failed(path + ".touch.point[3]", f"{c[3]} is outside [{tL}, {tH}]")
+            ins = self.array(t["inside"], path + ".touch.inside", 2)
+            for j, O in enumerate((A, B)):
+                wp = f"{path}.touch.inside[{j}]"
+                w = self.turning_point(ins[j], wp)
+                if cmp_time(w[3], c[3]) != 0:
+                    raise Failed(wp + "[3]", f"{w[3]} is not the point's time {c[3]}")
+                self.turning_generic(c, w, wp, O)
+        return rec
+
+    def turning_witness(self, w, path, A, B):
+        """s8.4: a rational point strictly inside both objects, at a time that is no breakpoint."""
+        tL, tH = self.scene.time
+        T = w[3]
+        if not tL < T < tH:
+            raise Failed(path + "[3]", f"t = {T} is not strictly inside ({tL}, {tH})")
+        for O in (A, B):
+            if O.motion.is_breakpoint(T):
+                raise Failed(path + "[3]", f"t = {T} is a breakpoint of {O.name}")
+            f = O.turning_formula(O.motion.piece_at(T, False))
+            at_w = lambda k: sign(sum(p_eval(k[i], T) * w[i] for i in range(3)) + p_eval(k[3], T))
+            if not strictly_true_by(f, at_w):
+                raise Failed(path, f"{fmt_point(w)} is not inside {O.name} with strict signs")
+
+    def turning_generic(self, c, w, path, O):
+        """s8.4: w is a generic witness of c for O at time T: O's formula true at w with strict
+        signs, and every literal zero at c or of the sign it has at w (signs exact at T)."""
+        T = c[3]
+        f = O.turning_formula(O.motion.piece_at(T, False))   # at a breakpoint either piece's
+        signs = {}
+
+        def at(point, k):
+            key = (point is w, k)
+            if key not in signs:
+                signs[key] = sign_at(lit_value_poly(k, point), T)
+            return signs[key]
+        if not strictly_true_by(f, lambda k: at(w, k)):
+            raise Failed(path, f"{fmt_point(w)} is not inside {O.name} with strict signs")
+        for k in sorted(literals_of(f, set())):
+            sc = at(c, k)
+            if sc != 0 and sc != at(w, k):
+                raise Failed(path, f"the literal {fmt_lit(k)} of {O.name} has sign {sc} at "
+                                   f"{fmt_point(c)} and {at(w, k)} at the witness")
+
+    def turning_apart(self, v, path, A, B):
+        """s8.3: pieces covering [tL, until] between TIMEs, no breakpoint strictly inside one."""
+        tL, tH = self.scene.time
+        ap = self.keys(v, path, {"until", "pieces"}, {"open_end"})
+        until = self.time(ap["until"], path + ".until")
+        open_end = self.boolean(ap.get("open_end", False), path + ".open_end")
+        if cmp_time(until, tH) > 0:
+            raise Failed(path + ".until", f"{until} is after tH = {tH}")
+        pieces = self.array(ap["pieces"], path + ".pieces")
+        at = tL
+        for i, pc in enumerate(pieces):
+            pp = f"{path}.pieces[{i}]"
+            pc = self.keys(pc, pp, {"t", "proof"})
+            lo, hi = (self.time(x, f"{pp}.t[{j}]") for j, x in enumerate(self.array(pc["t"], pp + ".t", 2)))
+            if cmp_time(lo, at) != 0:
+                raise Failed(pp + ".t[0]", f"{lo} is not {at}" + (" (tL)" if i == 0 else " (the previous hi)"))
+            if cmp_time(lo, hi) >= 0:
+                raise Failed(pp + ".t[1]", f"lo = {lo} is not below hi = {hi}")
+            ks = []
+            for O in (A, B):
+                k = O.motion.piece_at(lo, True)              # the piece just after lo
+                bps = O.motion.breakpoints
+                if k < len(bps) and cmp_time(bps[k], hi) < 0:
+                    raise Failed(pp + ".t", f"a breakpoint of {O.name} at t = {bps[k]} lies inside")
+                ks.append(k)
+            open_last = open_end and i == len(pieces) - 1
+            self.turning_leaf(pc["proof"], pp + ".proof", A, B, ks, lo, hi, open_last)
+            at = hi
+        if cmp_time(at, until) != 0:
+            raise Failed(path + ".until", f"the pieces end at {at}, not at until = {until}")
+        return until, open_end
+
+    def conflict_of(self, cf, cp):
+        """A CONFLICT's `of` (s3): closed semantics only, default "both"."""
+        of = cf.get("of", "both")
+        if not isinstance(of, str):
+            self.bad(cp + ".of", "expected a string")
+        if of not in ("both", "A", "B"):
+            raise Failed(cp + ".of", "expected \"both\", \"A\" or \"B\"")
+        return of if self.closed else "both"          # regularised ignores `of`
+
+    def turning_leaf(self, v, path, A, B, ks, lo, hi, open_last):
+        """s8.3: a leaf (split is an unknown key); every conflict's arithmetic, then every term
+        closed off (s4's enumeration, without slab or path literals)."""
+        node = self.keys(v, path, {"conflicts"})
+        conflicts = []
+        for j, cf in enumerate(self.array(node["conflicts"], path + ".conflicts")):
+            cp = f"{path}.conflicts[{j}]"
+            cf = self.keys(cf, cp, {"literals", "lambda"}, {"of"})
+            of = self.conflict_of(cf, cp)
+            raw_lits = self.array(cf["literals"], cp + ".literals")
+            raw_lams = self.array(cf["lambda"], cp + ".lambda")
+            if not raw_lits:
+                raise Failed(cp + ".literals", "a conflict needs at least one literal")
+            if len(raw_lams) != len(raw_lits):
+                raise Failed(cp + ".lambda", f"{len(raw_lams)} multipliers for {len(raw_lits)} literals")
+            lits = [self.lit(x, f"{cp}.literals[{i}]") for i, x in enumerate(raw_lits)]
+            lams = [self.poly(x, f"{cp}.lambda[{i}]") for i, x in enumerate(raw_lams)]
+            strict = not self.closed or of != "both"
+            self.turning_conflict(cp, lits, lams, lo, hi, strict, open_last)
+            conflicts.append((of, frozenset(lit_key(lit) for lit in lits)))
+        fa, fb = A.turning_formula(ks[0]), B.turning_formula(ks[1])
+        self.terms(path, fa, fb, [], [], conflicts)
+
+    def turning_conflict(self, cp, lits, lams, lo, hi, strict, open_last):
+        """s8.3's arithmetic of one conflict on the piece [lo, hi]."""
+        for m, axis in enumerate("xyz"):                      # identity
+            s = p_sum(p_mul(lam, lit[m]) for lam, lit in zip(lams, lits))
+            if s:
+                raise Failed(cp, f"sum lambda_i n_{axis},i = {fmt_poly(s)}, not the zero polynomial")
+        for i, lam in enumerate(lams):                        # signs
+            if not nonneg_on(lam, lo, hi):
+                raise Failed(f"{cp}.lambda[{i}]", f"{fmt_poly(lam)} is not >= 0 on [{lo}, {hi}]")
+        esum = p_sum(p_mul(lam, lit[3]) for lam, lit in zip(lams, lits))
+        if strict:
+            if not any(lams):
+                raise Failed(cp + ".lambda", "every multiplier is the zero polynomial")
+            if not nonneg_on(esum, lo, hi):
+                raise Failed(cp, f"sum lambda_i e_i = {fmt_poly(esum)} is not >= 0 on [{lo}, {hi}]: "
+                                 "the literals are not in conflict")
+        elif not positive_on(esum, lo, hi, open_last):
+            raise Failed(cp, f"sum lambda_i e_i = {fmt_poly(esum)} is not > 0 on [{lo}, {hi}"
+                             + (")" if open_last else "]") + ": the literals are not in conflict")
 
 
 def main(argv):
