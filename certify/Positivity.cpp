@@ -56,3 +56,13 @@ bool positive_on(const std::vector<Rational>& p, const Algebraic& a, const Algeb
 }
 
 } // namespace clash4d
+
+namespace clash4d {
+
+bool positive_after(const std::vector<Rational>& p, const Algebraic& a, const Algebraic& b)
+{
+  if (is_zero_polynomial(p) || sign_at(p, b) != CGAL::POSITIVE) return false;
+  return cuts(p, a, b).size() == 2;
+}
+
+} // namespace clash4d

@@ -17,6 +17,8 @@ namespace clash4d {
 bool nonnegative_on(const std::vector<Rational>& p, const Algebraic& a, const Algebraic& b);
 // p > 0 on [a, b] (closed_end) or on [a, b).
 bool positive_on(const std::vector<Rational>& p, const Algebraic& a, const Algebraic& b, bool closed_end);
+// p > 0 on (a, b]: p(b) > 0 and no root of p in (a, b).
+bool positive_after(const std::vector<Rational>& p, const Algebraic& a, const Algebraic& b);
 bool is_zero_polynomial(const std::vector<Rational>& p);
 
 } // namespace clash4d
