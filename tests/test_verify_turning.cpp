@@ -1,3 +1,401 @@
+// The checker of certificates of turning scenes (verify/, format
+// clash4d-certificate/turning-1, docs/certificate-format.md, section 8), on
+// certificates written by hand from the worked example of 8.6: the block
+// [-1, 1]^3 turning about z with q(t) = (1, 0, 0, t) into the slab x >= 6/5.
+// Its three literals and multipliers give sum lambda e = (1 + t^2)(11 t^2 -
+// 10 t + 1), positive before t* = (5 - sqrt 14)/11 ~ 0.1144, zero at t* and
+// at (5 + sqrt 14)/11 ~ 0.795, negative between.
 #define BOOST_TEST_MODULE verify_turning
 #include <boost/test/unit_test.hpp>
-BOOST_AUTO_TEST_CASE(placeholder) {}
+
+#include "scene/Json_reader.h"
+#include "scene/Scene_reader.h"
+#include "verify/Certificate_checker.h"
+#include "verify/Real_time.h"
+#include <fstream>
+#include <sstream>
+
+using namespace clash4d;
+using namespace clash4d::verifier;
+
+namespace {
+
+Rational_poly poly(std::initializer_list<const char*> c)
+{
+  std::vector<mpq_class> v;
+  for (const char* s : c) v.emplace_back(s);
+  for (mpq_class& q : v) q.canonicalize();
+  return Rational_poly(v);
+}
+
+// t* = (5 - sqrt 14)/11 and the other root (5 + sqrt 14)/11.
+const Rational_poly quad = poly({"1", "-10", "11"});
+Real_time t_star() { return Real_time(quad, mpq_class(1, 10), mpq_class(1, 8)); }
+Real_time t_other() { return Real_time(quad, mpq_class(3, 4), mpq_class(4, 5)); }
+Real_time at(const char* q) { mpq_class v(q); v.canonicalize(); return Real_time(v); }
+
+std::string file_text(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+const std::string fixtures = CLASH4D_FIXTURES;
+const std::string full_scene = file_text(fixtures + "/rotation/square_into_slab.json");
+const std::string short_scene = file_text(fixtures + "/../tests/data/turning/square_into_slab_short.json");
+
+// The scene with the slab 1e-9 closer: its min x is 6/5 - 10^-9.
+std::string slab_closer(const std::string& scene)
+{
+  std::string s = scene;
+  s.replace(s.find("\"6/5\""), 5, "\"1199999999/1000000000\"");
+  return s;
+}
+
+// The one conflict of 8.6: the square's x - 1 and -y - 1, the slab's 6/5 - x.
+const char* conflict_86 = R"({"literals": [
+     [["1","0","-1"], ["0","2"], ["0"], ["-1","0","-1"]],
+     [["0","2"], ["-1","0","1"], ["0"], ["-1","0","-1"]],
+     [["-5"], ["0"], ["0"], ["6"]]],
+   "lambda": [["5","0","-5"], ["0","10"], ["1","0","2","0","1"]]})";
+
+Json cert(const char* semantics, bool collide, const std::string& time, const Json& pair)
+{
+  Json c = {{"format", "clash4d-certificate/turning-1"}, {"scene", "test"}, {"semantics", semantics}};
+  c["time"] = Json::array({"0", time});
+  c["claim"] = {{"collide", collide}, {"earliest", false}, {"all_pairs", false}};
+  c["pairs"] = Json::array({pair});
+  return c;
+}
+
+// "no collision" until `until`, one piece [0, until] with the conflict of 8.6.
+Json apart(const Json& until)
+{
+  Json piece = {{"t", Json::array({"0", until})}, {"proof", {{"conflicts", Json::array({Json::parse(conflict_86)})}}}};
+  Json a = {{"until", until}, {"pieces", Json::array({piece})}};
+  return {{"objects", {"square", "slab"}}, {"collide", false}, {"apart", a}};
+}
+
+Json time_json(const char* lo, const char* hi, std::vector<const char*> p = {"1", "-10", "11"})
+{
+  return {{"poly", p}, {"between", {lo, hi}}, {"approx", "0.114394783"}};
+}
+
+Verify_result verify(const std::string& scene_text, const Json& c)
+{
+  return verify_certificate(read_scene(read_json_text(scene_text)), c);
+}
+
+void expect_ok(const Verify_result& r, const std::string& claim)
+{
+  BOOST_TEST(r.ok, r.where + ": " + r.reason);
+  BOOST_TEST(r.claim == claim);
+}
+
+void expect_rejected(const Verify_result& r, const std::string& where, const std::string& reason, int exit_code = 1)
+{
+  BOOST_TEST(!r.ok);
+  BOOST_TEST(r.exit_code == exit_code, r.exit_code << " " << r.where << ": " << r.reason);
+  BOOST_TEST(r.where == where, r.where << ": " << r.reason);
+  BOOST_TEST(r.reason.find(reason) != std::string::npos, r.reason);
+}
+
+const std::string piece0 = "pairs[0].apart.pieces[0]";
+const std::string conflict0 = piece0 + ".proof.conflicts[0]";
+
+} // namespace
+
+// ---------------------------------------------------------------- Rational_poly
+
+BOOST_AUTO_TEST_CASE(sturm_counts_distinct_roots)
+{
+  Rational_poly two = poly({"-2", "0", "1"});   // t^2 - 2
+  BOOST_TEST(count_roots(two, mpq_class(0), mpq_class(2)) == 1);
+  BOOST_TEST(count_roots(two, mpq_class(-2), mpq_class(2)) == 2);
+  BOOST_TEST(count_roots(two * two, mpq_class(-2), mpq_class(2)) == 2);   // a double root counts once
+  BOOST_TEST(count_roots(two, mpq_class(3, 2), mpq_class(2)) == 0);
+  // Roots at the ends are divided out: t (t - 1)(t - 2) in (0, 2) has only 1.
+  Rational_poly cubic = poly({"0", "1"}) * poly({"-1", "1"}) * poly({"-2", "1"});
+  BOOST_TEST(count_roots(cubic, mpq_class(0), mpq_class(2)) == 1);
+  BOOST_TEST(count_roots(cubic * cubic, mpq_class(0), mpq_class(2)) == 1);
+  BOOST_TEST(count_roots(quad, mpq_class(0), mpq_class(1, 10)) == 0);
+  BOOST_TEST(count_roots(quad, mpq_class(1, 10), mpq_class(1, 8)) == 1);
+  BOOST_TEST(count_roots(quad, mpq_class(0), mpq_class(1)) == 2);
+  BOOST_TEST(count_roots(poly({"1", "0", "1"}), mpq_class(-100), mpq_class(100)) == 0);
+}
+
+BOOST_AUTO_TEST_CASE(polynomial_arithmetic)
+{
+  Rational_poly a = poly({"-2", "0", "1"}), b = poly({"5", "1"});
+  Rational_poly q, r;
+  divmod(a * b + poly({"3"}), b, q, r);
+  BOOST_TEST((q == a));
+  BOOST_TEST((r == poly({"3"})));
+  BOOST_TEST((exact_div(a * b, a) == b));
+  BOOST_TEST((gcd(a * b, a * poly({"1", "1"})) == a));   // monic
+  BOOST_TEST((a.derivative() == poly({"0", "2"})));
+  BOOST_TEST(a(mpq_class(3)) == 7);
+  // Yun: (t^2 - 2) (t + 5)^2 (t - 1)^3: factors of multiplicity 1, 2, 3.
+  Rational_poly l = poly({"-1", "1"});
+  std::vector<Rational_poly> f = square_free_factors(mpq_class(3) * a * b * b * l * l * l);
+  BOOST_TEST(f.size() == 3u);
+  BOOST_TEST((f[0] == a && f[1] == b && f[2] == l));
+  BOOST_TEST((odd_part(mpq_class(3) * a * b * b * l * l * l) == mpq_class(3) * a * l));
+}
+
+BOOST_AUTO_TEST_CASE(odd_part_positivity_with_a_double_root)
+{
+  Rational_poly p = quad * quad;   // (11 t^2 - 10 t + 1)^2: double roots in [0, 1]
+  BOOST_TEST(nonnegative_on(p, at("0"), at("1")));
+  BOOST_TEST(!nonnegative_on(p * poly({"-1/2", "1"}), at("0"), at("1")));   // changes sign at 1/2
+  BOOST_TEST(!nonnegative_on(-p, at("0"), at("1")));                          // only <= 0
+  BOOST_TEST(nonnegative_on(Rational_poly(), at("0"), at("1")));              // zero: >= 0
+  BOOST_TEST(!positive_on(p, at("0"), at("1")));                               // its roots
+  BOOST_TEST(positive_on(p, at("0"), at("1/10")));
+}
+
+// ---------------------------------------------------------------- Real_time
+
+BOOST_AUTO_TEST_CASE(signs_at_algebraic_numbers)
+{
+  Real_time sqrt2(poly({"-2", "0", "1"}), mpq_class(1), mpq_class(2));
+  BOOST_TEST(sign_at(poly({"-141421356237/100000000000", "1"}), sqrt2) > 0);   // sqrt 2 > 1.41421356237
+  BOOST_TEST(sign_at(poly({"-1414213562374/1000000000000", "1"}), sqrt2) < 0); // < 1.414213562374
+  BOOST_TEST(sign_at(poly({"-2", "0", "1"}), sqrt2) == 0);
+  BOOST_TEST(sign_at(poly({"-2", "0", "1"}) * poly({"7", "1"}), sqrt2) == 0);
+  BOOST_TEST(sign_at(poly({"-3", "0", "1"}), sqrt2) < 0);
+  BOOST_TEST(sign_at(Rational_poly(), sqrt2) == 0);
+  // The same number by another polynomial and interval.
+  Real_time again(poly({"-2", "0", "1"}) * poly({"5", "1"}), mpq_class(0), mpq_class(3));
+  BOOST_TEST(equal(sqrt2, again));
+  BOOST_TEST(!less(sqrt2, again));
+  BOOST_TEST(!less(again, sqrt2));
+  Real_time sqrt3(poly({"-3", "0", "1"}), mpq_class(1), mpq_class(2));
+  BOOST_TEST(!equal(sqrt2, sqrt3));
+  BOOST_TEST(less(sqrt2, sqrt3));
+  BOOST_TEST(!less(sqrt3, sqrt2));
+  BOOST_TEST(less(at("141421356237/100000000000"), sqrt2));
+  BOOST_TEST(less(sqrt2, at("3/2")));
+  // A rational given as a root is that rational.
+  Real_time half(poly({"-3", "2"}), mpq_class(1), mpq_class(2));
+  BOOST_TEST(equal(half, at("3/2")));
+  BOOST_TEST(equal(at("3/2"), half));
+  BOOST_TEST(!equal(half, at("7/5")));
+  BOOST_TEST(less(at("7/5"), half));
+  // A root of even multiplicity: P = (t^2 - 2)^2 has no sign change.
+  Real_time twice(poly({"-2", "0", "1"}) * poly({"-2", "0", "1"}), mpq_class(1), mpq_class(2));
+  BOOST_TEST(equal(twice, sqrt2));
+  BOOST_TEST(sign_at(poly({"-141421356237/100000000000", "1"}), twice) > 0);
+  BOOST_TEST((valid_root(poly({"-2", "0", "1"}), mpq_class(1), mpq_class(2)) == Root_check::ok));
+  BOOST_TEST((valid_root(poly({"-2", "0", "1"}), mpq_class(-2), mpq_class(2)) == Root_check::not_one_root));
+  BOOST_TEST((valid_root(poly({"-1", "0", "1"}), mpq_class(1), mpq_class(2)) == Root_check::root_at_lo));
+}
+
+BOOST_AUTO_TEST_CASE(positivity_up_to_an_algebraic_time)
+{
+  Rational_poly sum = poly({"1", "0", "1"}) * quad;   // sum lambda e of 8.6
+  BOOST_TEST(nonnegative_on(sum, at("0"), t_star()));
+  BOOST_TEST(positive_on_half_open(sum, at("0"), t_star()));
+  BOOST_TEST(!positive_on(sum, at("0"), t_star()));   // zero at t*
+  BOOST_TEST(!nonnegative_on(sum, at("0"), at("1/8")));
+  BOOST_TEST(!nonnegative_on(sum, at("0"), t_other()));
+  BOOST_TEST(nonnegative_on(sum, t_other(), at("1")));
+  BOOST_TEST(!nonnegative_on(sum, t_star(), t_other()));
+  BOOST_TEST(nonnegative_on(-sum, t_star(), t_other()));
+  BOOST_TEST(count_roots(quad, at("0"), t_star()) == 0);
+  BOOST_TEST(count_roots(quad, at("0"), t_other()) == 1);
+  BOOST_TEST(count_roots(quad, t_star(), t_other()) == 0);
+  BOOST_TEST(count_roots(quad, t_star(), at("1")) == 1);
+  BOOST_TEST(count_roots(quad * poly({"-1/2", "1"}), t_star(), t_other()) == 1);
+  BOOST_TEST(less(t_star(), t_other()));
+  BOOST_TEST(equal(t_star(), Real_time(quad * poly({"5", "1"}), mpq_class(0), mpq_class(1, 8))));
+  BOOST_TEST(rational_between(t_star(), t_other()) > mpq_class(1, 8));
+}
+
+// ---------------------------------------------------------------- certificates
+
+// 8.6: on the scene cut to [0, 1/10] the one conflict is the whole proof.
+BOOST_AUTO_TEST_CASE(turning_square_no_collision)
+{
+  expect_ok(verify(short_scene, cert("regularised", false, "1/10", apart("1/10"))),
+            "verified: no collision in [0, 1/10] (regularised): 1 pair apart");
+  expect_ok(verify(short_scene, cert("closed", false, "1/10", apart("1/10"))),
+            "verified: no collision in [0, 1/10] (closed): 1 pair apart");
+  // Through the text reader too (numbers are strings).
+  Json c = cert("regularised", false, "1/10", apart("1/10"));
+  expect_ok(verify(short_scene, parse_certificate(c.dump())), "verified: no collision in [0, 1/10] (regularised): 1 pair apart");
+  // Two pieces, [0, 1/20] and [1/20, 1/10], the second piece's end written
+  // as an algebraic TIME that is 1/10: 10 t - 1 in (0, 1).
+  Json two = cert("regularised", false, "1/10", apart("1/10"));
+  Json& pieces = two["pairs"][0]["apart"]["pieces"];
+  pieces.push_back(pieces[0]);
+  pieces[0]["t"][1] = "1/20";
+  pieces[1]["t"] = {"1/20", {{"poly", {"-1", "10"}}, {"between", {"0", "1"}}}};
+  expect_ok(verify(short_scene, two), "verified: no collision in [0, 1/10] (regularised): 1 pair apart");
+  // A piece dropped: the pieces end at 1/20, not at until.
+  Json dropped = two;
+  dropped["pairs"][0]["apart"]["pieces"].erase(1);
+  expect_rejected(verify(short_scene, dropped), "pairs[0].apart.until", "the pieces end at 1/20");
+  // A piece's end moved: a gap between 1/20 and 1/30.
+  Json moved = two;
+  moved["pairs"][0]["apart"]["pieces"][1]["t"][0] = "1/30";
+  expect_rejected(verify(short_scene, moved), "pairs[0].apart.pieces[1].t[0]", "not at 1/20");
+}
+
+// The piece [0, t*] with t* algebraic is proved; the claim rules then ask
+// for apart until tH = 1 (rule 5; earliest is not in this version).
+BOOST_AUTO_TEST_CASE(apart_until_the_algebraic_contact_time)
+{
+  Json c = cert("regularised", false, "1", apart(time_json("1/10", "1/8")));
+  expect_rejected(verify(full_scene, c), "pairs[0].apart.until", "not until tH = 1");
+  // Closed: sum lambda e > 0 only on [0, t*): with open_end the piece holds,
+  // then rule 5 (apart until tH); without it, the piece fails at t*.
+  Json closed = cert("closed", false, "1", apart(time_json("1/10", "1/8")));
+  expect_rejected(verify(full_scene, closed), conflict0, "is not > 0 on the piece");
+  closed["pairs"][0]["apart"]["open_end"] = true;
+  expect_rejected(verify(full_scene, closed), "pairs[0].apart.until", "not until tH = 1");
+  // until moved past t*: sum lambda e < 0 on (t*, 1/8].
+  expect_rejected(verify(full_scene, cert("regularised", false, "1", apart("1/8"))), conflict0, "is not >= 0 on the piece");
+  // The TIME's interval moved onto the other root (5 + sqrt 14)/11: the
+  // sum is negative between the roots.
+  expect_rejected(verify(full_scene, cert("regularised", false, "1", apart(time_json("3/4", "4/5")))), conflict0,
+                  "is not >= 0 on the piece");
+  // A poly with two roots in the interval is no TIME.
+  expect_rejected(verify(full_scene, cert("regularised", false, "1", apart(time_json("0", "1")))), "pairs[0].apart.until",
+                  "2 distinct roots in (0, 1)");
+  Json two_roots = cert("regularised", false, "1", apart(time_json("1/10", "1/8")));
+  two_roots["pairs"][0]["apart"]["pieces"][0]["t"][1] = time_json("0", "1");
+  expect_rejected(verify(full_scene, two_roots), piece0 + ".t[1]", "not exactly one");
+  // Other failures of a TIME at their place.
+  Json at_end = cert("regularised", false, "1", apart(time_json("1/10", "1/8")));
+  at_end["pairs"][0]["apart"]["until"]["between"][0] = "0";
+  at_end["pairs"][0]["apart"]["until"]["poly"] = {"0", "-1", "11"};   // t (11 t - 1): a root at 0
+  expect_rejected(verify(full_scene, at_end), "pairs[0].apart.until.between[0]", "zero at 0");
+  Json zero = cert("regularised", false, "1", apart(time_json("1/10", "1/8", {"0", "0"})));
+  expect_rejected(verify(full_scene, zero), "pairs[0].apart.until.poly", "zero polynomial");
+  Json backwards = cert("regularised", false, "1", apart(time_json("1/8", "1/10")));
+  expect_rejected(verify(full_scene, backwards), "pairs[0].apart.until.between", "lo < hi");
+  Json fraction = cert("regularised", false, "1", apart(time_json("1/10", "1/8", {"1", "-10", "11/2"})));
+  expect_rejected(verify(full_scene, fraction), "pairs[0].apart.until.poly[2]", "integer", 2);
+}
+
+BOOST_AUTO_TEST_CASE(tampered_conflicts_are_rejected)
+{
+  auto tampered = [](const std::function<void(Json&)>& change) {
+    Json c = cert("regularised", false, "1/10", apart("1/10"));
+    change(c["pairs"][0]["apart"]["pieces"][0]["proof"]["conflicts"][0]);
+    return verify(short_scene, c);
+  };
+  // A lambda coefficient changed: the identity fails.
+  expect_rejected(tampered([](Json& c) { c["lambda"][0][2] = "-4"; }), conflict0, "the sum of lambda times the x polynomials is [0, 0, 1, 0, -1]");
+  expect_rejected(tampered([](Json& c) { c["lambda"][1] = {"0", "9"}; }), conflict0, "x polynomials is [0, 0, -2]");
+  // A lambda negative on the piece.
+  expect_rejected(tampered([](Json& c) { c["lambda"][1] = {"-1", "10"}; }), conflict0 + ".lambda[1]", ">= 0 on the piece");
+  // All lambdas zero: the identity holds, but nothing is proved.
+  expect_rejected(tampered([](Json& c) { c["lambda"] = {{"0"}, {"0"}, {"0"}}; }), conflict0 + ".lambda", "zero polynomial");
+  // A literal the term does not hold: the slab's atom moved.
+  expect_rejected(tampered([](Json& c) { c["literals"][2] = {{"-5"}, {"0"}, {"0"}, {"7"}}; }), piece0 + ".proof", "no conflict closes off");
+  // Literals are matched in coprime form, multipliers apply as written.
+  expect_ok(tampered([](Json& c) {
+              c["literals"][2] = {{"-10"}, {"0"}, {"0"}, {"12"}};
+              c["lambda"][2] = {"1/2", "0", "1", "0", "1/2"};
+            }),
+            "verified: no collision in [0, 1/10] (regularised): 1 pair apart");
+  // A LIT with no x, y or z, and shapes that are unreadable (2).
+  expect_rejected(tampered([](Json& c) { c["literals"][0] = {{"0"}, {"0"}, {"0"}, {"1"}}; }), conflict0 + ".literals[0]", "non-zero polynomial");
+  expect_rejected(tampered([](Json& c) { c["lambda"][0] = {5, 0, -5}; }), conflict0 + ".lambda[0][0]", "as a string", 2);
+  expect_rejected(tampered([](Json& c) { c["lambda"][0] = Json::array(); }), conflict0 + ".lambda[0]", "at least one", 2);
+  expect_rejected(tampered([](Json& c) { c["literals"][0].erase(3); }), conflict0 + ".literals[0]", "4 elements", 2);
+  expect_rejected(tampered([](Json& c) { c["lambda"].erase(2); }), conflict0 + ".lambda", "one polynomial per literal");
+  // A split is an unknown key of a turning-1 proof.
+  Json split = cert("regularised", false, "1/10", apart("1/10"));
+  split["pairs"][0]["apart"]["pieces"][0]["proof"]["split"] = {"1", "0", "0", "0", "0"};
+  expect_rejected(verify(short_scene, split), piece0 + ".proof.split", "unknown key");
+}
+
+// The same proof on the scene with the slab 1e-9 closer proves nothing:
+// its literal is another one. With that literal (and lambda scaled to it),
+// the sum lambda e is negative at t*: the contact comes earlier.
+BOOST_AUTO_TEST_CASE(slab_moved_closer)
+{
+  expect_rejected(verify(slab_closer(short_scene), cert("regularised", false, "1/10", apart("1/10"))), piece0 + ".proof",
+                  "no conflict closes off");
+  Json c = cert("regularised", false, "1", apart(time_json("1/10", "1/8")));
+  Json& conflict = c["pairs"][0]["apart"]["pieces"][0]["proof"]["conflicts"][0];
+  conflict["literals"][2] = {{"-1000000000"}, {"0"}, {"0"}, {"1199999999"}};   // 2e8 (-5 x + 6 - 5e-9)
+  conflict["lambda"][2] = {"1/200000000", "0", "1/100000000", "0", "1/200000000"};
+  expect_rejected(verify(slab_closer(full_scene), c), conflict0, "is not >= 0 on the piece");
+  // On the scene as it was, every conflict's arithmetic is checked first.
+  expect_rejected(verify(full_scene, c), conflict0, "is not >= 0 on the piece");
+}
+
+// A collision: a witness at t = 1/2, and a touch at t* with FIELD
+// coordinates. At t*, the square's corner (1, -1) is at x = 6/5 and
+// y = (t^2 + 2t - 1)/(1 + t^2), which is -1 + 11/5 t modulo 11 t^2 - 10 t + 1.
+BOOST_AUTO_TEST_CASE(turning_square_collides)
+{
+  Json witness = {{"objects", {"square", "slab"}}, {"collide", true}, {"witness", {"13/10", "1/5", "0", "1/2"}}};
+  expect_ok(verify(full_scene, cert("regularised", true, "1", witness)),
+            "verified: collision (regularised): square and slab at (13/10, 1/5, 0, 1/2)");
+  witness["witness"][1] = "1/2";   // outside the square: l1 = 3/4 (13/10) + 1/2 - 5/4 > 0
+  expect_rejected(verify(full_scene, cert("regularised", true, "1", witness)), "pairs[0].witness", "not strictly inside square");
+  witness["witness"] = {"13/10", "1/5", "0", "1"};   // t = 1 is a breakpoint (and tH)
+  expect_rejected(verify(full_scene, cert("regularised", true, "1", witness)), "pairs[0].witness[3]", "strictly inside (tL, tH)");
+
+  Json y = {{"at_t", {"-1", "11/5"}}};
+  Json c_point = {"6/5", y, "0", time_json("1/10", "1/8")};
+  Json wa = {"0", "0", "0", time_json("0", "1/8", {"5", "-49", "45", "11"})};   // t* as a root of (11t^2 - 10t + 1)(t + 5)
+  Json wb = {"2", "0", "0", time_json("1/10", "1/8")};
+  Json touch = {{"objects", {"square", "slab"}}, {"collide", true}, {"touch", {{"point", c_point}, {"inside", {wa, wb}}}}};
+  expect_ok(verify(full_scene, cert("closed", true, "1", touch)),
+            "verified: collision (closed): square and slab at (6/5, [-1, 11/5](t), 0, root of [1, -10, 11] in (1/10, 1/8))");
+  // The contact's y moved: the square's face -y - 1 is positive there.
+  Json off = touch;
+  off["touch"]["point"][1]["at_t"][1] = "2";
+  expect_rejected(verify(full_scene, cert("closed", true, "1", off)), "pairs[0].touch.inside[0]", "sign other than here");
+  // A witness at another time.
+  Json late = touch;
+  late["touch"]["inside"][1][3] = "1/8";
+  expect_rejected(verify(full_scene, cert("closed", true, "1", late)), "pairs[0].touch.inside[1][3]", "equal the contact's time");
+  // The same point at the other root (5 + sqrt 14)/11 ~ 0.795 is a touch
+  // too: the corner leaves the slab's face there (y = -1 + 11/5 t holds at
+  // both roots).
+  Json other = touch;
+  other["touch"]["point"][3]["between"] = {"3/4", "4/5"};
+  for (int k : {0, 1}) other["touch"]["inside"][k][3] = time_json("3/4", "4/5");
+  expect_ok(verify(full_scene, cert("closed", true, "1", other)),
+            "verified: collision (closed): square and slab at (6/5, [-1, 11/5](t), 0, root of [1, -10, 11] in (3/4, 4/5))");
+  // Between the roots, at t = 1/2, (6/5, 1/10, 0) is inside the square
+  // (l1 = -1/4, l2 = -1/8) and on the slab's face: a touch as well. At
+  // x = 11/10 it is outside the slab (6/5 - x > 0 there, < 0 at WB).
+  Json mid = touch;
+  mid["touch"]["point"][3] = "1/2";
+  for (int k : {0, 1}) mid["touch"]["inside"][k][3] = "1/2";
+  expect_ok(verify(full_scene, cert("closed", true, "1", mid)),
+            "verified: collision (closed): square and slab at (6/5, [-1, 11/5](t), 0, 1/2)");
+  mid["touch"]["point"][0] = "11/10";
+  expect_rejected(verify(full_scene, cert("closed", true, "1", mid)), "pairs[0].touch.inside[1]", "sign other than here");
+}
+
+// Section 8: each format on its kind of scene only; no earliest.
+BOOST_AUTO_TEST_CASE(formats_and_kinds_of_scene)
+{
+  Json c = cert("regularised", false, "1/10", apart("1/10"));
+  c["format"] = "clash4d-certificate/1";
+  expect_rejected(verify(short_scene, c), "format", "clash4d-certificate/turning-1");
+  Json piece = {{"t", {"0", "1/10"}}, {"proof", {{"conflicts", Json::array()}}}};
+  Json still = R"({"format":"clash4d-scene/1","time":[0,"1/10"],"objects":[
+    {"name":"square","shape":{"block":{"min":[-1,-1,-1],"max":[1,1,1]}},"motion":{"poses":[{"t":0},{"t":1,"rotate":[2,0,0,0]}]}},
+    {"name":"slab","shape":{"block":{"min":["6/5",-1,-1],"max":[3,1,1]}}}]})"_json;
+  expect_rejected(verify(still.dump(), cert("regularised", false, "1/10", apart("1/10"))), "format", "no object of the scene turns");
+  c["format"] = "clash4d-certificate/2";
+  expect_rejected(verify(short_scene, c), "format", "expected", 2);
+  Json early = cert("regularised", false, "1/10", apart("1/10"));
+  early["claim"]["earliest"] = true;
+  expect_rejected(verify(short_scene, early), "claim.earliest", "not certified by this version");
+  Json with_earliest = cert("regularised", false, "1/10", apart("1/10"));
+  with_earliest["pairs"][0]["earliest"] = Json::object();
+  expect_rejected(verify(short_scene, with_earliest), "pairs[0].earliest", "not in this version");
+}
