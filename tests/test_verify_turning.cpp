@@ -8,11 +8,13 @@
 #define BOOST_TEST_MODULE verify_turning
 #include <boost/test/unit_test.hpp>
 
+#include "support/Cli_run.h"
 #include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
 #include "verify/Certificate_checker.h"
 #include "verify/Real_time.h"
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 using namespace clash4d;
@@ -398,4 +400,59 @@ BOOST_AUTO_TEST_CASE(formats_and_kinds_of_scene)
   Json with_earliest = cert("regularised", false, "1/10", apart("1/10"));
   with_earliest["pairs"][0]["earliest"] = Json::object();
   expect_rejected(verify(short_scene, with_earliest), "pairs[0].earliest", "not in this version");
+}
+
+// A ROBMOD object in a turning scene: q = (1, 0, 0, 0), c(t) = D(t), its
+// `until` times its breakpoints (8.2). The ram [5, 6] x [-1, 1]^2 moves
+// with velocity -10 in x until t = 1/2, so it spans x in [2, 3] at t = 3/10.
+BOOST_AUTO_TEST_CASE(a_robmod_object_in_a_turning_scene)
+{
+  Json scene = Json::parse(full_scene);
+  scene["objects"].push_back(R"({"name":"ram","shape":{"block":{"min":[5,-1,-1],"max":[6,1,1]}},"motion":"vel -10 0 0 until 1/2 vel 0 0 0"})"_json);
+  std::string text = scene.dump();
+  Json pair = {{"objects", {"ram", "slab"}}, {"collide", true}, {"witness", {"5/2", "0", "0", "3/10"}}};
+  expect_ok(verify(text, cert("regularised", true, "1", pair)), "verified: collision (regularised): ram and slab at (5/2, 0, 0, 3/10)");
+  pair["witness"][3] = "1/10";   // the ram spans [4, 5] then
+  expect_rejected(verify(text, cert("regularised", true, "1", pair)), "pairs[0].witness", "not strictly inside ram");
+  pair["witness"] = {"-1", "0", "0", "1/2"};
+  expect_rejected(verify(text, cert("regularised", true, "1", pair)), "pairs[0].witness[3]", "breakpoint of ram");
+  // Apart on [0, 1/5]: the slab's x - 3 and the ram's 5 - 10 t - x (its
+  // literal [[-1], [0], [0], [5, -10]]), lambda 1, 1: x cancels, e = 2 - 10 t
+  // >= 0 on [0, 1/5] only. The piece holds; the claim then needs every pair
+  // (rule 3) and apart until tH (rule 5).
+  Json conflict = R"({"literals": [[["1"], ["0"], ["0"], ["-3"]], [["-1"], ["0"], ["0"], ["5", "-10"]]], "lambda": [["1"], ["1"]]})"_json;
+  Json piece = {{"t", {"0", "1/5"}}, {"proof", {{"conflicts", {conflict}}}}};
+  Json a = {{"until", "1/5"}, {"pieces", {piece}}};
+  Json apart_pair = {{"objects", {"slab", "ram"}}, {"collide", false}, {"apart", a}};
+  expect_rejected(verify(text, cert("regularised", false, "1", apart_pair)), "pairs", "no PAIR for square/slab");
+  apart_pair["apart"]["until"] = "1/4";
+  apart_pair["apart"]["pieces"][0]["t"][1] = "1/4";
+  expect_rejected(verify(text, cert("regularised", false, "1", apart_pair)), conflict0, "is not >= 0 on the piece");
+  apart_pair["apart"]["until"] = "1";
+  apart_pair["apart"]["pieces"][0]["t"][1] = "1";
+  expect_rejected(verify(text, cert("regularised", false, "1", apart_pair)), piece0 + ".t", "a breakpoint of ram lies inside the piece");
+}
+
+std::string temp_file(const std::string& name, const std::string& text)
+{
+  std::string path = "/tmp/clash4d_test_verify_turning_" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+BOOST_AUTO_TEST_CASE(cli_exit_codes)
+{
+  std::string s = fixtures + "/../tests/data/turning/square_into_slab_short.json";
+  Cli_run r = run_clash4d({"verify", s, temp_file("good.json", cert("regularised", false, "1/10", apart("1/10")).dump())});
+  BOOST_TEST(r.status == 0, r.err);
+  BOOST_TEST(r.out == "verified: no collision in [0, 1/10] (regularised): 1 pair apart\n");
+  Json old = cert("regularised", false, "1/10", apart("1/10"));
+  old["format"] = "clash4d-certificate/1";
+  r = run_clash4d({"verify", s, temp_file("old.json", old.dump())});
+  BOOST_TEST(r.status == 1);
+  BOOST_TEST(r.err.find("format: object square turns") != std::string::npos, r.err);
+  std::string number = cert("regularised", false, "1/10", apart("1/10")).dump();
+  number.replace(number.find("[\"5\",\"0\",\"-5\"]"), 13, "[5,\"0\",\"-5\"]");
+  r = run_clash4d({"verify", s, temp_file("number.json", number)});
+  BOOST_TEST(r.status == 2, r.err);
 }
