@@ -456,3 +456,43 @@ BOOST_AUTO_TEST_CASE(cli_exit_codes)
   r = run_clash4d({"verify", s, temp_file("number.json", number)});
   BOOST_TEST(r.status == 2, r.err);
 }
+
+// Formulas of more than one term (8.3's leaves as section 4's): the slab
+// joined with a far block [10, 11] x [-1, 1]^2 needs a second conflict, the
+// square's l1, l2 and the far block's 10 - x with lambda (1 - t^2, 2 t,
+// (1 + t^2)^2): x and y cancel, e = (1 + t^2)(11 t^2 - 2 t + 9) > 0.
+BOOST_AUTO_TEST_CASE(terms_of_a_union_and_a_literal_with_its_negation)
+{
+  Json scene = Json::parse(short_scene);
+  scene["objects"][1]["shape"] = R"({"union": [{"block": {"min": ["6/5", -1, -1], "max": [3, 1, 1]}},
+                                              {"block": {"min": [10, -1, -1], "max": [11, 1, 1]}}]})"_json;
+  std::string text = scene.dump();
+  Json c = cert("regularised", false, "1/10", apart("1/10"));
+  expect_rejected(verify(text, c), piece0 + ".proof", "no conflict closes off the term");
+  Json far = R"({"literals": [
+     [["1","0","-1"], ["0","2"], ["0"], ["-1","0","-1"]],
+     [["0","2"], ["-1","0","1"], ["0"], ["-1","0","-1"]],
+     [["-1"], ["0"], ["0"], ["10"]]],
+   "lambda": [["1","0","-1"], ["0","2"], ["1","0","2","0","1"]]})"_json;
+  c["pairs"][0]["apart"]["pieces"][0]["proof"]["conflicts"].push_back(far);
+  expect_ok(verify(text, c), "verified: no collision in [0, 1/10] (regularised): 1 pair apart");
+  c["semantics"] = "closed";
+  expect_ok(verify(text, c), "verified: no collision in [0, 1/10] (closed): 1 pair apart");
+
+  // x - 2 <= 0 and 2 - x <= 0: the one term holds a literal and its
+  // negation. Regularised, that closes it off with no conflict; closed, a
+  // conflict "of": "B" (lambda 1, 1, e = 0 >= 0) shows its open set empty.
+  scene["objects"][1]["shape"] = R"({"intersection": [{"halfspace": [1, 0, 0, -2]}, {"halfspace": [-1, 0, 0, 2]}]})"_json;
+  text = scene.dump();
+  Json flat = cert("regularised", false, "1/10", apart("1/10"));
+  flat["pairs"][0]["apart"]["pieces"][0]["proof"]["conflicts"] = Json::array();
+  expect_ok(verify(text, flat), "verified: no collision in [0, 1/10] (regularised): 1 pair apart");
+  flat["semantics"] = "closed";
+  expect_rejected(verify(text, flat), piece0 + ".proof", "no conflict closes off the term");
+  flat["pairs"][0]["apart"]["pieces"][0]["proof"]["conflicts"] =
+      R"([{"literals": [[["1"], ["0"], ["0"], ["-2"]], [["-2"], ["0"], ["0"], ["4"]]], "lambda": [["2"], ["1"]], "of": "B"}])"_json;
+  expect_ok(verify(text, flat), "verified: no collision in [0, 1/10] (closed): 1 pair apart");
+  // "of": "A" ranges over the square's term only, which is not empty.
+  flat["pairs"][0]["apart"]["pieces"][0]["proof"]["conflicts"][0]["of"] = "A";
+  expect_rejected(verify(text, flat), piece0 + ".proof", "no conflict closes off the term");
+}
