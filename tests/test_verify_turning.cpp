@@ -14,7 +14,9 @@
 #include "verify/Certificate_checker.h"
 #include "verify/Real_time.h"
 #include <fstream>
+#include <algorithm>
 #include <functional>
+#include <random>
 #include <sstream>
 
 using namespace clash4d;
@@ -495,4 +497,46 @@ BOOST_AUTO_TEST_CASE(terms_of_a_union_and_a_literal_with_its_negation)
   // "of": "A" ranges over the square's term only, which is not empty.
   flat["pairs"][0]["apart"]["pieces"][0]["proof"]["conflicts"][0]["of"] = "A";
   expect_rejected(verify(text, flat), piece0 + ".proof", "no conflict closes off the term");
+}
+
+// Random polynomials with known rational roots (and multiplicities), and
+// TIMEs given as roots of products: Sturm counts, signs and comparisons
+// against the answers known by construction.
+BOOST_AUTO_TEST_CASE(random_roots_against_construction)
+{
+  std::mt19937 rng(20261203);
+  auto rational = [&](int range) { mpq_class q(long(rng() % (2 * range + 1)) - range, long(rng() % 4 + 1)); q.canonicalize(); return q; };
+  for (int round = 0; round < 200; ++round) {
+    std::vector<mpq_class> roots;
+    mpq_class lead(long(rng() % 5) + 1, 3);
+    lead.canonicalize();
+    Rational_poly p = Rational_poly::constant(rng() % 2 ? lead : mpq_class(-lead));
+    for (int k = 0, n = int(rng() % 4) + 1; k < n; ++k) {
+      mpq_class r = rational(6);
+      roots.push_back(r);
+      for (int m = 0, mult = int(rng() % 3) + 1; m < mult; ++m) p = p * Rational_poly::linear(-r, 1);
+    }
+    std::sort(roots.begin(), roots.end());
+    roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
+    mpq_class x = rational(7), y = rational(7);
+    if (x == y) continue;
+    if (y < x) std::swap(x, y);
+    long expected = std::count_if(roots.begin(), roots.end(), [&](const mpq_class& r) { return x < r && r < y; });
+    BOOST_TEST(count_roots(p, x, y) == expected);
+    BOOST_TEST(count_roots(p, Real_time(x), Real_time(y)) == expected);
+    // Each root r as a TIME: a root of p * (t^2 - 2) isolated around r.
+    Rational_poly q = p * poly({"-2", "0", "1"});
+    for (const mpq_class& r : roots) {
+      mpq_class lo = r - mpq_class(1, 1000), hi = r + mpq_class(1, 1000);
+      if (valid_root(q, lo, hi) != Root_check::ok) continue;
+      Real_time t(q, lo, hi);
+      BOOST_TEST(equal(t, Real_time(r)));
+      BOOST_TEST(sign_at(p, t) == 0);
+      BOOST_TEST(sign_at(Rational_poly::linear(-x, 1), t) == sgn(r - x));
+      BOOST_TEST(less(t, Real_time(r + mpq_class(1, 1000000))));
+      BOOST_TEST(!less(t, Real_time(r)));
+      long between = std::count_if(roots.begin(), roots.end(), [&](const mpq_class& s) { return r < s && s < y; });
+      if (r < y) BOOST_TEST(count_roots(p, t, Real_time(y)) == between);
+    }
+  }
 }

@@ -4,7 +4,11 @@
 
 namespace clash4d::verifier {
 
-Rational_poly::Rational_poly(std::vector<mpq_class> coefficients) : c_(std::move(coefficients)) { trim(); }
+Rational_poly::Rational_poly(std::vector<mpq_class> coefficients) : c_(std::move(coefficients))
+{
+  for (mpq_class& c : c_) c.canonicalize();   // GMP's rationals compute right only in lowest terms
+  trim();
+}
 
 void Rational_poly::trim()
 {
