@@ -540,3 +540,43 @@ BOOST_AUTO_TEST_CASE(random_roots_against_construction)
     }
   }
 }
+
+// Shapes and places of the remaining rules of 8.1, 8.3 and 8.4.
+BOOST_AUTO_TEST_CASE(more_places_of_failure)
+{
+  Json late = cert("regularised", false, "1/10", apart("1/10"));
+  late["pairs"][0]["apart"]["until"] = time_json("1/10", "1/8");   // t* > tH = 1/10
+  expect_rejected(verify(short_scene, late), "pairs[0].apart.until", "after tH");
+  Json approx = cert("regularised", false, "1", apart(time_json("1/10", "1/8")));
+  approx["pairs"][0]["apart"]["until"]["approx"] = 0.114;
+  expect_rejected(verify(full_scene, approx), "pairs[0].apart.until.approx", "string", 2);
+  Json unknown = cert("regularised", false, "1", apart(time_json("1/10", "1/8")));
+  unknown["pairs"][0]["apart"]["until"]["degree"] = "2";
+  expect_rejected(verify(full_scene, unknown), "pairs[0].apart.until.degree", "unknown key");
+  Json no_between = cert("regularised", false, "1", apart(time_json("1/10", "1/8")));
+  no_between["pairs"][0]["apart"]["until"].erase("between");
+  expect_rejected(verify(full_scene, no_between), "pairs[0].apart.until", "missing key 'between'", 2);
+  // A witness is rational: a TIME object there is not a number (2).
+  Json witness = {{"objects", {"square", "slab"}}, {"collide", true}, {"witness", {"13/10", "1/5", "0", time_json("1/10", "1/8")}}};
+  expect_rejected(verify(full_scene, cert("regularised", true, "1", witness)), "pairs[0].witness[3]", "as a string", 2);
+  // A FIELD's object holds at_t only.
+  Json c_point = {"6/5", {{"at_t", {"-1", "11/5"}}, {"t", "0"}}, "0", time_json("1/10", "1/8")};
+  Json touch = {{"objects", {"square", "slab"}}, {"collide", true},
+                {"touch", {{"point", c_point}, {"inside", {{"0", "0", "0", "1/2"}, {"2", "0", "0", "1/2"}}}}}};
+  expect_rejected(verify(full_scene, cert("closed", true, "1", touch)), "pairs[0].touch.point[1].t", "unknown key");
+  // A touch in regularised semantics, a witness in closed.
+  touch["touch"]["point"][1].erase("t");
+  expect_rejected(verify(full_scene, cert("regularised", true, "1", touch)), "pairs[0].touch", "closed semantics");
+  witness["witness"][3] = "1/2";
+  expect_rejected(verify(full_scene, cert("closed", true, "1", witness)), "pairs[0].witness", "regularised semantics");
+  // A pair named twice, an object the scene does not have.
+  Json twice = cert("regularised", false, "1/10", apart("1/10"));
+  twice["pairs"].push_back(twice["pairs"][0]);
+  twice["pairs"][1]["objects"] = {"slab", "square"};
+  expect_rejected(verify(short_scene, twice), "pairs[1].objects", "appears twice");
+  Json nobody = cert("regularised", false, "1/10", apart("1/10"));
+  nobody["pairs"][0]["objects"][1] = "ram";
+  expect_rejected(verify(short_scene, nobody), "pairs[0].objects[1]", "no object named 'ram'");
+  // Claims: a collision with no colliding PAIR.
+  expect_rejected(verify(short_scene, cert("regularised", true, "1/10", apart("1/10"))), "claim.collide", "no PAIR collides");
+}
