@@ -62,7 +62,7 @@ std::string Certificate_checker::check(const Json& cert)
   if (format == CLASH4D_TURNING_FORMAT) {
     if (turning == objects_.end())
       reject("format", std::string("no object of the scene turns: its certificates are \"clash4d-certificate/1\", not \"") + CLASH4D_TURNING_FORMAT + "\" (section 8)");
-    return Turning_checker(scene_).check(cert);
+    return Turning_checker(scene_, objects_).check(cert);
   }
   if (format != "clash4d-certificate/1")
     throw Cert_failure(CLASH4D_VERIFY_UNREADABLE, "format", "expected \"clash4d-certificate/1\" or \"" + std::string(CLASH4D_TURNING_FORMAT) + "\"");

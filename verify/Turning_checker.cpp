@@ -93,10 +93,10 @@ Time_point read_time_point(const Json& j, const std::string& at)
   return p;
 }
 
-Turning_checker::Turning_checker(const Scene& scene) : scene_(scene), t_lo_(scene.t_lo.mpq()), t_hi_(scene.t_hi.mpq())
+Turning_checker::Turning_checker(const Scene& scene, const std::vector<Object_model>& models)
+  : scene_(scene), t_lo_(scene.t_lo.mpq()), t_hi_(scene.t_hi.mpq())
 {
-  for (const Scene_object& o : scene.objects) models_.push_back(std::make_unique<Object_model>(o));
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) objects_.emplace_back(scene.objects[i], *models_[i]);
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) objects_.emplace_back(scene.objects[i], models[i]);
 }
 
 // Section 8.2: the four polynomials times the one positive rational making

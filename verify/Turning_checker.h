@@ -8,7 +8,6 @@
 #include "verify/Term_enumerator.h"
 #include "verify/Turning_model.h"
 #include <map>
-#include <memory>
 
 namespace clash4d::verifier {
 
@@ -29,7 +28,9 @@ Time_point read_time_point(const Json& j, const std::string& at);
 
 class Turning_checker {
 public:
-  explicit Turning_checker(const Scene& scene);
+  // models: the scene's objects in order, as Certificate_checker built them
+  // (their formulas and ROBMOD displacements; hulls are wrapped once).
+  Turning_checker(const Scene& scene, const std::vector<Object_model>& models);
   // The claim proved; throws Cert_failure on the first failure.
   std::string check(const Json& cert);
 
@@ -63,7 +64,6 @@ private:
   std::string describe(const std::vector<std::pair<int, Side>>& term, const Piece& piece) const;
 
   const Scene& scene_;
-  std::vector<std::unique_ptr<Object_model>> models_;
   std::vector<Turning_model> objects_;
   mpq_class t_lo_, t_hi_;
   bool regularised_ = true;
