@@ -580,3 +580,23 @@ BOOST_AUTO_TEST_CASE(more_places_of_failure)
   // Claims: a collision with no colliding PAIR.
   expect_rejected(verify(short_scene, cert("regularised", true, "1/10", apart("1/10"))), "claim.collide", "no PAIR collides");
 }
+
+// An object with a pose motion that does not turn, in a turning scene: its
+// pose times are its breakpoints, c(t) interpolates its translations (8.2).
+// The slab moves by -1/2 in x over [0, 1], so at t = 1/2 it spans
+// [19/20, 11/4]: (11/10, 1/5, 0) is inside it and inside the square
+// (l1 = 33/40 + 1/5 - 5/4 < 0, l2 = 11/10 - 3/20 - 5/4 < 0).
+BOOST_AUTO_TEST_CASE(a_translating_pose_motion_in_a_turning_scene)
+{
+  Json scene = Json::parse(full_scene);
+  Json witness = {{"objects", {"square", "slab"}}, {"collide", true}, {"witness", {"11/10", "1/5", "0", "1/2"}}};
+  expect_rejected(verify(scene.dump(), cert("regularised", true, "1", witness)), "pairs[0].witness", "not strictly inside slab");
+  scene["objects"][1]["motion"] = R"({"poses": [{"t": 0}, {"t": 1, "translate": ["-1/2", 0, 0]}]})"_json;
+  expect_ok(verify(scene.dump(), cert("regularised", true, "1", witness)),
+            "verified: collision (regularised): square and slab at (11/10, 1/5, 0, 1/2)");
+  scene["objects"][1]["motion"] = R"({"poses": [{"t": 0}, {"t": "1/2", "translate": ["-1/4", 0, 0]}, {"t": 1, "translate": ["-1/2", 0, 0]}]})"_json;
+  expect_rejected(verify(scene.dump(), cert("regularised", true, "1", witness)), "pairs[0].witness[3]", "breakpoint of slab");
+  witness["witness"][3] = "49/100";   // the slab spans [0.955, 2.755] then
+  expect_ok(verify(scene.dump(), cert("regularised", true, "1", witness)),
+            "verified: collision (regularised): square and slab at (11/10, 1/5, 0, 49/100)");
+}
