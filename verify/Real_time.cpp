@@ -65,6 +65,7 @@ bool less(const Real_time& a0, const Real_time& b0)
 
 mpq_class rational_between(Real_time a, Real_time b)
 {
+  if (!less(a, b)) throw std::logic_error("no rational between a TIME and one not after it");
   while (!(a.upper() < b.lower())) a.refine(), b.refine();
   return (a.upper() + b.lower()) / 2;
 }
@@ -85,6 +86,7 @@ void isolate_from(const Rational_poly& f, Real_time& r)
 // plus those inner ends that are roots and lie strictly inside (a, b).
 long count_roots(const Rational_poly& f, Real_time a, Real_time b)
 {
+  if (!less(a, b)) throw std::logic_error("counting roots in an empty interval of TIMEs");   // the loops below need a < b
   isolate_from(f, a), isolate_from(f, b);
   while (!(a.upper() <= b.lower())) a.refine(), b.refine();
   mpq_class x = a.upper(), y = b.lower();
