@@ -177,6 +177,7 @@ std::string read_text(const Json& j, const std::string& at)
 }
 
 mpq_class read_number(const Json& j, const std::string& at) { return parse(j, at, false); }
+mpz_class read_integer(const Json& j, const std::string& at) { return parse(j, at, true).get_num(); }
 
 Point4 read_point(const Json& j, const std::string& at)
 {

@@ -54,6 +54,7 @@ const Json& read_array(const Json& j, const std::string& at, long size = -1);
 bool read_bool(const Json& j, const std::string& at);
 std::string read_text(const Json& j, const std::string& at);
 mpq_class read_number(const Json& j, const std::string& at);   // "p/q" or "p"
+mpz_class read_integer(const Json& j, const std::string& at);  // "p"
 Point4 read_point(const Json& j, const std::string& at);
 // A literal as written: five integer strings, not all zero.
 std::array<mpz_class, 5> read_literal(const Json& j, const std::string& at);

@@ -1,4 +1,5 @@
 #include "verify/Certificate_checker.h"
+#include "verify/Turning_checker.h"
 #include <algorithm>
 #include <functional>
 
@@ -54,8 +55,19 @@ const Lit_tree& Certificate_checker::tree(int object, int segment)
 std::string Certificate_checker::check(const Json& cert)
 {
   expect_keys(cert, "", {"format", "semantics", "time", "claim", "pairs"}, {"scene"});
-  if (read_text(cert["format"], "format") != "clash4d-certificate/1")
-    throw Cert_failure(CLASH4D_VERIFY_UNREADABLE, "format", "expected \"clash4d-certificate/1\"");
+  // Section 8: a scene where some object turns needs turning-1, and only it;
+  // a turning object is never read as one that rests.
+  std::string format = read_text(cert["format"], "format");
+  auto turning = std::find_if(objects_.begin(), objects_.end(), [](const Object_model& m) { return m.turns(); });
+  if (format == CLASH4D_TURNING_FORMAT) {
+    if (turning == objects_.end())
+      reject("format", std::string("no object of the scene turns: its certificates are \"clash4d-certificate/1\", not \"") + CLASH4D_TURNING_FORMAT + "\" (section 8)");
+    return Turning_checker(scene_, objects_).check(cert);
+  }
+  if (format != "clash4d-certificate/1")
+    throw Cert_failure(CLASH4D_VERIFY_UNREADABLE, "format", "expected \"clash4d-certificate/1\" or \"" + std::string(CLASH4D_TURNING_FORMAT) + "\"");
+  if (turning != objects_.end())
+    reject("format", "object " + turning->name() + " turns: the scene's certificates are \"" + CLASH4D_TURNING_FORMAT + "\", not \"clash4d-certificate/1\" (section 8)");
   semantics_ = read_text(cert["semantics"], "semantics");
   if (semantics_ != "regularised" && semantics_ != "closed")
     throw Cert_failure(CLASH4D_VERIFY_UNREADABLE, "semantics", "expected \"regularised\" or \"closed\"");

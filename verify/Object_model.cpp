@@ -1,5 +1,6 @@
 #include "verify/Object_model.h"
 #include <algorithm>
+#include <stdexcept>
 
 namespace clash4d::verifier {
 
@@ -17,7 +18,7 @@ Literal coprime(const std::array<mpq_class, 5>& v)
   return out;
 }
 
-Object_model::Object_model(const Scene_object& o) : name_(o.name), formula_(solid_formula(o.shape))
+Object_model::Object_model(const Scene_object& o) : name_(o.name), turns_(o.motion.rotates()), formula_(solid_formula(o.shape))
 {
   collect_atoms(formula_, atoms_);
   for (const auto& t : o.motion.times) times_.emplace_back(t.mpq());
@@ -58,6 +59,8 @@ bool Object_model::change_between(const mpq_class& a, const mpq_class& b) const
 // n.(x - v t - o) + d <= 0 (section 2.2).
 std::array<mpq_class, 5> Object_model::extrude(const Atom& h, int k) const
 {
+  // A turning object has no times or velocities: never read it as resting.
+  if (turns_) throw std::logic_error("the literals of turning object " + name_ + " are not linear (section 8)");
   const auto& v = v_[k];
   const auto& o = o_[k];
   return {h[0], h[1], h[2], -(h[0] * v[0] + h[1] * v[1] + h[2] * v[2]), h[3] - (h[0] * o[0] + h[1] * o[1] + h[2] * o[2])};

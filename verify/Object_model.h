@@ -19,6 +19,13 @@ public:
   explicit Object_model(const Scene_object& o);
   const std::string& name() const { return name_; }
   const Formula& formula() const { return formula_; }
+  const std::vector<Atom>& atoms() const { return atoms_; }
+  // Whether a pose of its motion turns it (section 8): then its literals are
+  // polynomials in t (Turning_model), never the resting ones of this class.
+  bool turns() const { return turns_; }
+  const std::vector<mpq_class>& times() const { return times_; }
+  const std::array<mpq_class, 3>& velocity(int k) const { return v_[k]; }
+  const std::array<mpq_class, 3>& offset(int k) const { return o_[k]; }
   // Motion segment k lies between times[k-1] and times[k] (scene format).
   int segment_at(const mpq_class& t) const;   // for a t that is no velocity change
   bool is_change(const mpq_class& t) const;
@@ -34,6 +41,7 @@ public:
 private:
   bool eval(const Formula& f, int k, const Point4& p) const;
   std::string name_;
+  bool turns_ = false;
   Formula formula_;
   std::vector<Atom> atoms_;
   std::vector<mpq_class> times_;
