@@ -13,8 +13,10 @@ path, 2 when the scene or the certificate cannot be read, 3 beyond a limit
 Two formats: clash4d-certificate/1, and clash4d-certificate/turning-1 for
 scenes where some object turns (s8: literals whose coefficients are
 polynomials in t, polynomial multipliers, TIMEs that are algebraic numbers),
-each on its kind of scene only. The s8 part is exact polynomial arithmetic over
-Fraction: Sturm sequences count roots, Yun's factorisation gives odd parts.
+each on its kind of scene only; verdicts and earliest times (s8.4: a witness
+path on (t*, T1] in regularised semantics, the touch at t* in closed) in both.
+The s8 part is exact polynomial arithmetic over Fraction: Sturm sequences count
+roots, Yun's factorisation gives odd parts.
 """
 import bisect
 import itertools
