@@ -387,8 +387,8 @@ def square_scene(tH, slab_motion=None):
     return scene
 
 
-class TurningCertificates(unittest.TestCase):
-    """s8: the worked example accepted, and each kind of tampering refused (exit 1)."""
+class TurningCase(unittest.TestCase):
+    """Runs hand-written certificates of turning scenes in this process."""
 
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory()
@@ -417,6 +417,10 @@ class TurningCertificates(unittest.TestCase):
         self.assertEqual(out, "")
         self.assertIn(where, err)
         return err
+
+
+class TurningCertificates(TurningCase):
+    """s8: the worked example accepted, and each kind of tampering refused (exit 1)."""
 
     def test_the_worked_example_is_accepted_in_both_semantics(self):
         for sem in ("regularised", "closed"):
@@ -579,16 +583,14 @@ class TurningCertificates(unittest.TestCase):
         rest["objects"][0]["motion"] = {"poses": [{"t": 0, "rotate": [2, 0, 0, 0]}, {"t": 1, "rotate": [3, 0, 0, 0]}]}
         self.accepted(one, NO_COLLISION.format("regularised"), scene=rest)
 
-    def test_earliest_and_splits_are_not_in_this_version(self):
-        cert = example_86()
-        cert["claim"]["earliest"] = True
-        self.refused(cert, "claim.earliest: earliest times of turning scenes are not certified")
+    def test_splits_are_not_in_this_version(self):
         cert = example_86()
         cert["pairs"][0]["apart"]["pieces"][0]["proof"]["split"] = ["1", "0", "0", "0", "0"]
         self.refused(cert, "pairs[0].apart.pieces[0].proof.split: unknown key")
+        # an earliest claim without a collision needs no earliest proof (rule 4)
         cert = example_86()
-        cert["pairs"][0].update(collide=True, earliest={"t": "0", "point": ["0", "0", "0", "0"], "inside": []})
-        self.refused(cert, "pairs[0].earliest: earliest times of turning scenes are not certified")
+        cert["claim"]["earliest"] = True
+        self.accepted(cert, NO_COLLISION.format("regularised"))
 
     def test_a_literal_not_of_the_term_does_not_close_it(self):
         # the slab's literal in another scale is the same literal; another literal is not
@@ -682,6 +684,292 @@ class TurningCertificates(unittest.TestCase):
         cuts = ["0", "1/20", "1/16", "1/10"]
         cert = turning_certificate([dict(t=[cuts[k], cuts[k + 1]], **conflict()) for k in range(3)])
         self.accepted(cert, NO_COLLISION.format("regularised"), scene=scene)
+
+
+# Earliest times of turning scenes (s8.4). In the worked example the square's corner (1, -1)
+# is at N(q(t)) (1, -1, 0) / |q(t)|^2 = (1 + 2t - t^2, t^2 + 2t - 1, 0) / (1 + t^2) and crosses
+# x = 6/5 where 11 t^2 - 10 t + 1 = g(t) = 0, at t* ~ 0.1144. The witness path is the corner pulled
+# in by the factor 1 - a(t), a = -g/10 > 0 on (t*, 1/8] and 0 at t*: W(t) = (1 + g/10) corner(t),
+# written over w = 10 (1 + t^2):
+#   x = (11 - 10t + 11t^2)(1 + 2t - t^2),  y = (11 - 10t + 11t^2)(t^2 + 2t - 1),  z = 0.
+# W(t) = R(q(t)) p(t) with p = (1 - a)(1, -1, 0) strictly inside the block for 0 < a < 2, so each of
+# the square's literals at W(t) is L = 10 |q|^4 (its atom at p), up to the coprime form's positive
+# factor: x - 1 and -y - 1 give -10 a (1 + t^2)^2 = g (1 + t^2)^2 < 0, the others a - 2 or -1 times
+# 10 (1 + t^2)^2. The
+# slab's 6/5 - x gives L = -5x + 6w = 5 g (1 - t)^2 < 0 on (t*, 1/8]; its other literals stay
+# negative (x < 3 w, |y| < w, z = 0). Every L is zero at t* or of one sign: none has a root in (t*, 1/8).
+PATH = {"x": ["11", "12", "-20", "32", "-11"], "y": ["-11", "32", "-20", "12", "11"], "z": ["0"],
+        "w": ["10", "0", "10"], "to": "1/8"}
+T_LATE = {"poly": ["100000000000000000100000000000000000011", "-1000000000000000000220000000000000000000",
+                   "1100000000000000000000000000000000000000"], "between": ["1/10", "1/8"]}    # t* + 1e-19
+T_EARLY = {"poly": ["99999999999999999900000000000000000011", "-999999999999999999780000000000000000000",
+                    "1100000000000000000000000000000000000000"], "between": ["1/10", "1/8"]}   # t* - 1e-19
+T_OTHER = {"poly": ["1", "-10", "11"], "between": ["3/4", "1"]}                                   # (5 + sqrt 14)/11
+CONTACT = ["6/5", {"at_t": ["-1", "11/5"]}, "0"]     # the corner at t*: y = (32 t* - 12)/(10 t* + 10) = 11 t*/5 - 1
+T_TEXT = "root of [1, -10, 11] in (1/10, 1/8)"
+EARLIEST = "verified: earliest collision ({}): square and slab at t* = " + T_TEXT
+SLAB_ABOVE = [["0"], ["0"], ["1"], ["-1"]]            # z - 1 of the slab
+SQUARE_ABOVE = [["0"], ["0"], ["1", "0", "1"], ["-1", "0", "-1"]]   # z - 1 of the square
+POST_BELOW = [["0"], ["0"], ["-1"], ["2"]]            # 2 - z of a post [2, 3]^3 above both
+
+
+def earliest_pair(tstar=TSTAR, path=None, semantics="regularised", point_time=None, inside_time=None,
+                  open_end=None):
+    """The square/slab PAIR proved by an earliest time: the 8.6 conflict on [0, t*] and the
+    witness path (regularised) or the touch at t* (closed)."""
+    if semantics == "regularised":
+        e = {"t": tstar, "path": dict(PATH, **(path or {}))}
+    else:
+        pt, it = point_time or tstar, inside_time or tstar
+        e = {"t": tstar, "point": CONTACT + [pt], "inside": [["0", "0", "0", it], ["2", "0", "0", it]]}
+    apart = {"until": tstar, "pieces": [dict(t=["0", tstar], **conflict())]}
+    if open_end is not None:
+        apart["open_end"] = open_end
+    return {"objects": ["square", "slab"], "collide": True, "earliest": e, "apart": apart}
+
+
+def earliest_certificate(pairs=None, semantics="regularised", all_pairs=False, earliest=True, **kw):
+    return {"format": "clash4d-certificate/turning-1", "semantics": semantics, "time": ["0", "1"],
+            "claim": {"collide": True, "earliest": earliest, "all_pairs": all_pairs},
+            "pairs": pairs or [earliest_pair(semantics=semantics, **kw)]}
+
+
+def exact(p):
+    return [Fraction(c) for c in p]
+
+
+class TurningEarliest(TurningCase):
+    """s8.4: earliest times of turning scenes, written by hand from the worked example (8.6)."""
+
+    def path_polys(self, path=PATH):
+        return [exact(path[k]) for k in "xyzw"]
+
+    def test_the_path_by_hand_numerically_and_exactly(self):
+        # numerically first: W(t) is right of x = 6/5, and about the corner, just after t*
+        x, y, z, w = self.path_polys()
+        ev = lambda p, t: sum(float(c) * t ** i for i, c in enumerate(p))
+        tstar = (5 - 14 ** 0.5) / 11
+        for t in (tstar + 1e-6, 0.115, 0.12, 0.125):
+            X, Y = ev(x, t) / ev(w, t), ev(y, t) / ev(w, t)
+            self.assertTrue(6 / 5 < X < 3 and -1 < Y < 1, (t, X, Y))
+            c, s = (1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)            # the turn by 2 atan t
+            u, v = c * X + s * Y, -s * X + c * Y                              # W in the block's frame
+            self.assertTrue(-1 < u < 1 and -1 < v < 1, (t, u, v))
+        # exactly: the literals at W(t) are the polynomials of the comment above
+        g = [1, -10, 11]
+        P = clash4d_verify
+        l1 = P.p_add(P.p_add(P.p_mul(exact(L1[0]), x), P.p_mul(exact(L1[1]), y)), P.p_mul(exact(L1[3]), w))
+        self.assertEqual(l1, P.p_mul(g, [1, 0, 2, 0, 1]))                    # g (1 + t^2)^2
+        l3 = P.p_add(P.p_scale(x, -5), P.p_scale(w, 6))
+        self.assertEqual(l3, P.p_mul(g, [5, -10, 5]))                        # 5 g (1 - t)^2
+
+    def test_the_regularised_earliest_is_accepted(self):
+        self.accepted(earliest_certificate(), EARLIEST.format("regularised") + "\n", SQUARE_SCENE)
+        (self.dir / "cert.json").write_text(json.dumps(earliest_certificate()))
+        rc, out, err = run_cli(SQUARE_SCENE, self.dir / "cert.json")
+        self.assertEqual((rc, out), (0, EARLIEST.format("regularised") + "\n"), err)
+        # the same PAIR under a claim that is not earliest: the collision shown at W(T1)
+        self.accepted(earliest_certificate(earliest=False), "verified: collision (regularised): square and "
+                      "slab at (10033/8320, -5969/8320, 0, 1/8)\n", SQUARE_SCENE)
+        # open_end changes nothing in regularised semantics
+        self.accepted(earliest_certificate(open_end=True), EARLIEST.format("regularised") + "\n", SQUARE_SCENE)
+
+    def test_t_star_moved_fails(self):
+        # to the other root (~0.795): the path's T1 = 1/8 is before it
+        self.refused(earliest_certificate(tstar=T_OTHER), "pairs[0].earliest.path.to: T1 = 1/8 is not after "
+                     "t* = root of [1, -10, 11] in (3/4, 1)", SQUARE_SCENE)
+        # by 1e-19 later: the path holds, the apart's e sum is negative on (t*, t* + 1e-19]
+        err = self.refused(earliest_certificate(tstar=T_LATE), "pairs[0].apart.pieces[0].proof.conflicts[0]: "
+                           "sum lambda_i e_i = [1, -10, 12, -10, 11] is not >= 0", SQUARE_SCENE)
+        self.assertIn("the literals are not in conflict", err)
+        # by 1e-19 earlier: the apart holds, the square's literals at W(t) vanish at t* inside (t*, T1)
+        err = self.refused(earliest_certificate(tstar=T_EARLY), "pairs[0].earliest.path: the literal "
+                           "[[0, 2], [-1, 0, 1], [0], [-1, 0, -1]] of square at W(t), [1, -10, 13, -20, 23, -10, 11], "
+                           "has a root in (t*, T1) = (root of [99999999999999999900000000000000000011, ", SQUARE_SCENE)
+        # the apart's until not t*
+        cert = earliest_certificate()
+        cert["pairs"][0]["apart"] = {"until": "1/10", "pieces": [dict(t=["0", "1/10"], **conflict())]}
+        self.refused(cert, "pairs[0].apart.until: 1/10 is not t* = " + T_TEXT, SQUARE_SCENE)
+        # t* at tH, and past it
+        scene = square_scene("1/10")
+        cert = earliest_certificate(tstar="1/10")
+        cert["time"] = ["0", "1/10"]
+        self.refused(cert, "pairs[0].earliest.t: 1/10 is outside [0, 1/10)", scene)
+
+    def test_the_path_end_fails_before_t_star_at_t_h_or_algebraic(self):
+        for to, where in (("1/10", "T1 = 1/10 is not after t* = " + T_TEXT),
+                          ("0", "T1 = 0 is not after t*"),
+                          ("1", "T1 = 1 is not before tH = 1"),
+                          (TSTAR, "T1 must be a rational number (a string), not a TIME object")):
+            with self.subTest(to=to):
+                self.refused(earliest_certificate(path={"to": to}), "pairs[0].earliest.path.to: " + where,
+                             SQUARE_SCENE)
+        # past the second root the corner is back inside x < 6/5: a literal crosses zero
+        err = self.refused(earliest_certificate(path={"to": "9/10"}), "pairs[0].earliest.path: the literal ",
+                           SQUARE_SCENE)
+        self.assertIn("has a root in (t*, T1)", err)
+
+    def test_a_path_coefficient_changed_fails(self):
+        # x - 1/20: the slab's 6/5 - x at W(t) becomes L + 1/4, positive at t*, -1225/4096 + 1/4 at 1/8
+        err = self.refused(earliest_certificate(path={"x": ["219/20", "12", "-20", "32", "-11"]}),
+                           "pairs[0].earliest.path: the literal [[-5], [0], [0], [6]] of slab at W(t)", SQUARE_SCENE)
+        self.assertIn("has a root in (t*, T1) = (" + T_TEXT + ", 1/8)", err)
+        # a point inside the square but not the slab: no literal changes sign, W(T1) is outside
+        still = {"x": ["0"], "y": ["0"], "z": ["0"], "w": ["1"]}
+        self.refused(earliest_certificate(path=still),
+                     "pairs[0].earliest.path: W(T1) at T1 = 1/8 is not inside slab with strict signs", SQUARE_SCENE)
+        # x - 245/4096: the slab's 6/5 - x at W(t) is L + 1225/4096, zero at T1 (W(T1) on the face x = 6/5)
+        face = {"x": ["44811/4096", "12", "-20", "32", "-11"]}
+        self.refused(earliest_certificate(path=face), "pairs[0].earliest.path: the literal [[-5], [0], [0], [6]] "
+                     "of slab is zero at W(T1), T1 = 1/8", SQUARE_SCENE)
+
+    def test_w_not_positive_fails(self):
+        # the same points with every polynomial negated: w < 0
+        neg = {k: [str(-Fraction(c)) for c in PATH[k]] for k in "xyzw"}
+        self.refused(earliest_certificate(path=neg), "pairs[0].earliest.path.w: [-10, 0, -10] is not > 0 on [",
+                     SQUARE_SCENE)
+        # the same points with every polynomial times (t - 3/25): w changes sign at 3/25 in (t*, 1/8)
+        P = clash4d_verify
+        times = {k: [str(c) for c in P.p_mul(exact(PATH[k]), [Fraction(-3, 25), 1]) or [0]] for k in "xyzw"}
+        self.refused(earliest_certificate(path=times), "pairs[0].earliest.path.w: [-6/5, 10, -6/5, 10] is not > 0",
+                     SQUARE_SCENE)
+        # times (t + 1) instead: still positive, the same points
+        plus = {k: [str(c) for c in P.p_mul(exact(PATH[k]), [1, 1]) or [0]] for k in "xyzw"}
+        self.accepted(earliest_certificate(path=plus), EARLIEST.format("regularised") + "\n", SQUARE_SCENE)
+
+    def test_a_breakpoint_inside_the_path_fails(self):
+        # the slab at rest by one pose at 3/25 in (t*, 1/8), then at T1 = 1/8 itself
+        for at, where in (("3/25", "a breakpoint of slab at t = 3/25 lies between t* = " + T_TEXT + " and T1 = 1/8"),
+                          ("1/8", "a breakpoint of slab at t = 1/8 is T1")):
+            with self.subTest(at=at):
+                scene = square_scene(1, {"poses": [{"t": at}]})
+                self.refused(earliest_certificate(), "pairs[0].earliest.path.to: " + where, scene)
+        # a breakpoint before t* cuts the apart, not the path
+        scene = square_scene(1, {"poses": [{"t": "1/9"}]})
+        self.refused(earliest_certificate(), "pairs[0].apart.pieces[0].t: a breakpoint of slab at t = 1/9 lies inside",
+                     scene)
+        cert = earliest_certificate()
+        cert["pairs"][0]["apart"]["pieces"] = [dict(t=["0", "1/9"], **conflict()), dict(t=["1/9", TSTAR], **conflict())]
+        self.accepted(cert, EARLIEST.format("regularised") + "\n", scene)
+        # a breakpoint of the square after T1 does not matter
+        scene = square_scene(1)
+        scene["objects"][0]["motion"]["poses"].insert(1, {"t": "1/2", "rotate": [1, 0, 0, "1/2"]})
+        self.accepted(earliest_certificate(), EARLIEST.format("regularised") + "\n", scene)
+
+    def test_keys_and_types_of_the_earliest_forms(self):
+        cert = earliest_certificate(path={"v": ["0"]})
+        self.refused(cert, "pairs[0].earliest.path.v: unknown key", SQUARE_SCENE)
+        cert = earliest_certificate()
+        cert["pairs"][0]["earliest"]["point"] = CONTACT + [TSTAR]
+        self.refused(cert, "pairs[0].earliest.point: unknown key", SQUARE_SCENE)
+        cert = earliest_certificate()
+        del cert["pairs"][0]["earliest"]["path"]["w"]
+        self.refused(cert, 'pairs[0].earliest.path: missing key "w"', SQUARE_SCENE, code=2)
+        self.refused(earliest_certificate(path={"x": "11"}), "pairs[0].earliest.path.x: expected a polynomial",
+                     SQUARE_SCENE, code=2)
+        self.refused(earliest_certificate(path={"to": ["1/8"]}), "pairs[0].earliest.path.to: expected a number",
+                     SQUARE_SCENE, code=2)
+        self.refused(earliest_certificate(path={"z": []}), "pairs[0].earliest.path.z: expected a polynomial",
+                     SQUARE_SCENE, code=2)
+        cert = earliest_certificate()
+        del cert["pairs"][0]["apart"]
+        self.refused(cert, "pairs[0]: a colliding PAIR holds one of witness, touch, or earliest with apart",
+                     SQUARE_SCENE)
+        # the closed form in regularised semantics and the regularised one in closed
+        cert = earliest_certificate(semantics="closed")
+        cert["semantics"] = "regularised"
+        self.refused(cert, 'pairs[0].earliest: missing key "path"', SQUARE_SCENE, code=2)
+        cert = earliest_certificate()
+        cert["semantics"] = "closed"
+        self.refused(cert, 'pairs[0].earliest: missing key "inside"', SQUARE_SCENE, code=2)
+
+    def test_the_closed_earliest_is_accepted(self):
+        line = EARLIEST.format("closed") + ", contact (6/5, [-1, 11/5](t), 0, " + T_TEXT + ")\n"
+        self.accepted(earliest_certificate(semantics="closed", open_end=True), line, SQUARE_SCENE)
+        # the same touch at t* in another spelling of the time
+        spelled = {"poly": ["2", "-20", "22"], "between": ["1/10", "3/25"]}
+        cert = earliest_certificate(semantics="closed", open_end=True, point_time=spelled, inside_time=spelled)
+        self.accepted(cert, line.replace(T_TEXT + ")\n", "root of [2, -20, 22] in (1/10, 3/25))\n"), SQUARE_SCENE)
+        # open_end false would be stronger: the e sum is 0 at t*, not > 0 on [0, t*]
+        err = self.refused(earliest_certificate(semantics="closed", open_end=False),
+                           "pairs[0].apart.pieces[0].proof.conflicts[0]: sum lambda_i e_i = [1, -10, 12, -10, 11] "
+                           "is not > 0 on [0, " + T_TEXT + "]", SQUARE_SCENE)
+
+    def test_the_closed_earliest_tampered_fails(self):
+        closed = lambda **kw: earliest_certificate(semantics="closed", open_end=True, **kw)
+        # the contact's time not t*, a witness at another time
+        self.refused(closed(point_time="1/8"), "pairs[0].earliest.point[3]: 1/8 is not t = " + T_TEXT, SQUARE_SCENE)
+        self.refused(closed(inside_time=T_OTHER), "pairs[0].earliest.inside[0][3]: root of [1, -10, 11] in (3/4, 1) "
+                     "is not the point's time", SQUARE_SCENE)
+        # t* 1e-19 early (the contact with it): the corner is not yet at x = 6/5, the point is outside the square
+        err = self.refused(closed(tstar=T_EARLY), "pairs[0].earliest.inside[0]: the literal ", SQUARE_SCENE)
+        self.assertIn("of square has sign 1", err)
+        # 1e-19 late: the touch holds there, the apart fails
+        self.refused(closed(tstar=T_LATE), "pairs[0].apart.pieces[0].proof.conflicts[0]: sum lambda_i e_i = ",
+                     SQUARE_SCENE)
+        # at the other root, past tH of a scene over [0, 1/2]
+        cert = closed(tstar=T_OTHER)
+        cert["time"] = ["0", "1/2"]
+        self.refused(cert, "pairs[0].earliest.t: root of [1, -10, 11] in (3/4, 1) is outside [0, 1/2]",
+                     square_scene("1/2"))
+        # the contact moved off the slab's face
+        cert = closed()
+        cert["pairs"][0]["earliest"]["point"][0] = "11/10"
+        self.refused(cert, "pairs[0].earliest.inside[1]: the literal [[-5], [0], [0], [6]] of slab", SQUARE_SCENE)
+
+    def post_scene(self, z):
+        """The square, the slab and a static post [2, 3] x [-1, 1] x z."""
+        scene = square_scene(1)
+        scene["objects"].append({"name": "post", "shape": {"block": {"min": [2, -1, z[0]], "max": [3, 1, z[1]]}}})
+        return scene
+
+    def test_rule_4_other_pairs_apart_until_t_star_or_later(self):
+        scene = self.post_scene([2, 3])                   # above both: apart by z
+        def others(until_sq, until_sl="1"):
+            return [{"objects": ["square", "post"], "collide": False, "apart": {"until": until_sq, "pieces": [
+                        dict(t=["0", until_sq], **conflict(lits=(SQUARE_ABOVE, POST_BELOW),
+                                                           lams=(["1"], ["1", "0", "1"])))]}},
+                    {"objects": ["slab", "post"], "collide": False, "apart": {"until": until_sl, "pieces": [
+                        dict(t=["0", until_sl], **conflict(lits=(SLAB_ABOVE, POST_BELOW), lams=(["1"], ["1"])))]}}]
+        line = EARLIEST.format("regularised") + "\n"
+        for until in ("1", TSTAR, "143/1250"):            # tH, t* itself, 0.1144 > t*
+            with self.subTest(until=until):
+                self.accepted(earliest_certificate([earliest_pair()] + others(until)), line, scene)
+        self.accepted(earliest_certificate([earliest_pair()] + others(TSTAR, T_LATE)), line, scene)
+        self.refused(earliest_certificate([earliest_pair()] + others("1143/10000")),   # 0.1143 < t*
+                     "pairs[1].apart.until: 1143/10000 is before t* = " + T_TEXT, scene)
+        self.refused(earliest_certificate([earliest_pair()] + others("1", T_EARLY)),
+                     "pairs[2].apart.until: root of [99999999999999999900000000000000000011, ", scene)
+        self.refused(earliest_certificate([earliest_pair()] + others("1")[:1]), "pairs: no PAIR for slab/post", scene)
+        # with all_pairs every other pair is apart until tH
+        self.refused(earliest_certificate([earliest_pair()] + others(TSTAR), all_pairs=True),
+                     "pairs[1].apart.until: " + T_TEXT + " is not tH = 1", scene)
+        self.accepted(earliest_certificate([earliest_pair()] + others("1"), all_pairs=True),
+                      "verified: colliding pairs (regularised): square/slab at t* = " + T_TEXT +
+                      "; 2 other pairs apart\n", scene)
+
+    def test_two_colliding_pairs(self):
+        scene = self.post_scene([-1, 1])                  # overlapping the slab from the start
+        # square/post apart: the 8.6 conflict with 2 - x, e sum (1 + t^2)(3 t^2 - 2 t + 1) > 0
+        apart = {"objects": ["square", "post"], "collide": False, "apart": {"until": "1", "pieces": [
+            dict(t=["0", "1"], **conflict(lits=(L1, L2, [["-1"], ["0"], ["0"], ["2"]]),
+                                          lams=(["1", "0", "-1"], ["0", "2"], ["1", "0", "2", "0", "1"])))]}}
+        # slab/post collide from t* = tL = 0: a still point, the apart of no pieces
+        still = {"objects": ["slab", "post"], "collide": True, "apart": {"until": "0", "pieces": []},
+                 "earliest": {"t": "0", "path": {"x": ["5"], "y": ["0"], "z": ["0"], "w": ["2"], "to": "1/2"}}}
+        cert = earliest_certificate([earliest_pair(), apart, still], all_pairs=True)
+        self.accepted(cert, "verified: colliding pairs (regularised): square/slab at t* = " + T_TEXT +
+                      ", slab/post at t* = 0; 1 other pair apart\n", scene)
+        self.refused(earliest_certificate([earliest_pair(), apart, still]),
+                     "pairs: 2 PAIRs collide; an earliest claim names one", scene)
+        # under all_pairs without earliest: the pairs named only
+        cert = earliest_certificate([earliest_pair(), apart, still], all_pairs=True, earliest=False)
+        self.accepted(cert, "verified: colliding pairs (regularised): square/slab, slab/post; 1 other pair apart\n",
+                      scene)
+        # an earliest claim needs an earliest proof of every colliding pair
+        witness = {"objects": ["slab", "post"], "collide": True, "witness": ["5/2", "0", "0", "1/2"]}
+        self.refused(earliest_certificate([earliest_pair(), apart, witness], all_pairs=True),
+                     "pairs[2]: the claim is earliest, but this pair has no earliest proof", scene)
 
 
 @unittest.skipUnless(BINARY, "CLASH4D_BINARY is not set")

@@ -13,8 +13,10 @@ path, 2 when the scene or the certificate cannot be read, 3 beyond a limit
 Two formats: clash4d-certificate/1, and clash4d-certificate/turning-1 for
 scenes where some object turns (s8: literals whose coefficients are
 polynomials in t, polynomial multipliers, TIMEs that are algebraic numbers),
-each on its kind of scene only. The s8 part is exact polynomial arithmetic over
-Fraction: Sturm sequences count roots, Yun's factorisation gives odd parts.
+each on its kind of scene only; verdicts and earliest times (s8.4: a witness
+path on (t*, T1] in regularised semantics, the touch at t* in closed) in both.
+The s8 part is exact polynomial arithmetic over Fraction: Sturm sequences count
+roots, Yun's factorisation gives odd parts.
 """
 import bisect
 import itertools
@@ -1258,9 +1260,6 @@ class Checker:
         tL, tH = self.scene.time
         sem = "closed" if self.closed else "regularised"
         hits = [r for r in records if r["collide"]]
-        if self.turning and earliest:                               # s8: not in this version
-            raise Failed("claim.earliest", "earliest times of turning scenes are not certified "
-                                           "by this version (section 8)")
         if collide != bool(hits):                                   # rule 2
             raise Failed("claim.collide", f"is {str(collide).lower()}, but "
                          + ("a PAIR collides" if hits else "no PAIR collides"))
@@ -1282,8 +1281,8 @@ class Checker:
         for r in records:                                           # rule 5
             if r["collide"]:
                 continue
-            if tstar is not None:
-                if r["until"] < tstar:
+            if tstar is not None:                                   # compared exactly (s8.4)
+                if cmp_time(r["until"], tstar) < 0:
                     raise Failed(r["path"] + ".apart.until", f"{r['until']} is before t* = {tstar}")
             elif cmp_time(r["until"], tH) != 0:
                 raise Failed(r["path"] + ".apart.until", f"{r['until']} is not tH = {tH}")
@@ -1300,9 +1299,11 @@ class Checker:
         r = hits[0]
         who = f"{r['names'][0]} and {r['names'][1]}"
         if earliest:
+            if r["point"] is None:          # s8.5: a turning pair's regularised earliest is a path
+                return f"verified: earliest collision ({sem}): {who} at t* = {r['tstar']}"
             return (f"verified: earliest collision ({sem}): {who} at t* = {r['tstar']}, "
                     f"contact {fmt_point(r['point'])}")
-        return f"verified: collision ({sem}): {who} at {fmt_point(r['point'])}"
+        return f"verified: collision ({sem}): {who} at {fmt_point(r.get('shown') or r['point'])}"
 
     def proofs_present(self, pair, path, collide):
         """The proofs a PAIR holds (s3): a wrong combination is a failure (1), as an unknown key."""
@@ -1656,28 +1657,92 @@ class Checker:
         rec = {"path": path, "names": (A.name, B.name), "tstar": None, "point": None,
                "until": None, "open_end": False}
         rec["collide"] = collide = self.boolean(pair["collide"], path + ".collide")
-        present = self.proofs_present(pair, path, collide)
-        if "earliest" in present:
-            raise Failed(path + ".earliest", "earliest times of turning scenes are not certified "
-                                             "by this version (section 8)")
+        self.proofs_present(pair, path, collide)
         if not collide:
             rec["until"], rec["open_end"] = self.turning_apart(pair["apart"], path + ".apart", A, B)
         elif "witness" in pair:
             rec["point"] = w = self.point(pair["witness"], path + ".witness")
             self.turning_witness(w, path + ".witness", A, B)
-        else:
+        elif "touch" in pair:
             t = self.keys(pair["touch"], path + ".touch", {"point", "inside"})
             rec["point"] = c = self.turning_point(t["point"], path + ".touch.point")
             if cmp_time(c[3], tL) < 0 or cmp_time(c[3], tH) > 0:
                 raise Failed(path + ".touch.point[3]", f"{c[3]} is outside [{tL}, {tH}]")
-            ins = self.array(t["inside"], path + ".touch.inside", 2)
-            for j, O in enumerate((A, B)):
-                wp = f"{path}.touch.inside[{j}]"
-                w = self.turning_point(ins[j], wp)
-                if cmp_time(w[3], c[3]) != 0:
-                    raise Failed(wp + "[3]", f"{w[3]} is not the point's time {c[3]}")
-                self.turning_generic(c, w, wp, O)
+            self.turning_inside(t["inside"], path + ".touch.inside", c, A, B)
+        else:
+            p = path + ".earliest"
+            if self.closed:
+                e = self.keys(pair["earliest"], p, {"t", "point", "inside"})
+            else:
+                e = self.keys(pair["earliest"], p, {"t", "path"})
+            rec["tstar"] = ts = self.time(e["t"], p + ".t")
+            if self.closed:                                  # the touch at t* (s8.4)
+                rec["point"] = c = self.turning_point(e["point"], p + ".point")
+                if cmp_time(c[3], ts) != 0:
+                    raise Failed(p + ".point[3]", f"{c[3]} is not t = {ts}")
+            if cmp_time(ts, tL) < 0 or cmp_time(ts, tH) > (-1 if not self.closed else 0):
+                raise Failed(p + ".t", f"{ts} is outside [{tL}, {tH}" + (")" if not self.closed else "]"))
+            if self.closed:
+                self.turning_inside(e["inside"], p + ".inside", c, A, B)
+            else:
+                rec["shown"] = self.turning_path(e["path"], p + ".path", ts, A, B)
+            # the APART until t*: closed, open_end true or false (false is stronger)
+            until, _ = self.turning_apart(pair["apart"], path + ".apart", A, B)
+            if cmp_time(until, ts) != 0:
+                raise Failed(path + ".apart.until", f"{until} is not t* = {ts}")
         return rec
+
+    def turning_inside(self, v, path, c, A, B):
+        """A touch's [WA, WB] (s8.4): generic witnesses of c for A and for B at c's time."""
+        ins = self.array(v, path, 2)
+        for j, O in enumerate((A, B)):
+            wp = f"{path}[{j}]"
+            w = self.turning_point(ins[j], wp)
+            if cmp_time(w[3], c[3]) != 0:
+                raise Failed(wp + "[3]", f"{w[3]} is not the point's time {c[3]}")
+            self.turning_generic(c, w, wp, O)
+
+    def turning_path(self, v, path, ts, A, B):
+        """s8.4, regularised earliest: the witness path W(t) = (x, y, z)(t) / w(t) on (t*, T1].
+        Every literal of A and B keeps on (t*, T1] the sign it has at W(T1) (L = n.(x, y, z) + e w
+        has no root there, w > 0), and both formulas are true there with strict signs: the
+        objects collide at every time of (t*, T1]. Returns W(T1), a rational collision point."""
+        tH = self.scene.time[1]
+        pt = self.keys(v, path, {"x", "y", "z", "w", "to"})
+        xyz = [self.poly(pt[a], f"{path}.{a}") for a in "xyz"]
+        w = self.poly(pt["w"], path + ".w")
+        if isinstance(pt["to"], dict):                       # a TIME object: T1 is rational (s8.4)
+            raise Failed(path + ".to", "T1 must be a rational number (a string), not a TIME object")
+        T1 = self.num(pt["to"], path + ".to")
+        if cmp_time(ts, T1) >= 0:
+            raise Failed(path + ".to", f"T1 = {T1} is not after t* = {ts}")
+        if not T1 < tH:
+            raise Failed(path + ".to", f"T1 = {T1} is not before tH = {tH}")
+        ks = []
+        for O in (A, B):
+            k = O.motion.piece_at(ts, True)                   # the piece just after t*
+            bps = O.motion.breakpoints
+            if k < len(bps) and cmp_time(bps[k], T1) <= 0:
+                where = "is T1" if bps[k] == T1 else f"lies between t* = {ts} and T1 = {T1}"
+                raise Failed(path + ".to", f"a breakpoint of {O.name} at t = {bps[k]} {where}")
+            ks.append(k)
+        if not positive_on(w, ts, T1):
+            raise Failed(path + ".w", f"{fmt_poly(w)} is not > 0 on [{ts}, {T1}]")
+        for O, k in zip((A, B), ks):
+            f = O.turning_formula(k)
+            signs = {}
+            for key in sorted(literals_of(f, set())):
+                L = p_add(p_sum(p_mul(list(key[i]), xyz[i]) for i in range(3)), p_mul(list(key[3]), w))
+                s = signs[key] = sign(p_eval(L, T1))
+                if s == 0:
+                    raise Failed(path, f"the literal {fmt_lit(key)} of {O.name} is zero at W(T1), T1 = {T1}")
+                if roots_between(L, ts, T1) > 0:
+                    raise Failed(path, f"the literal {fmt_lit(key)} of {O.name} at W(t), {fmt_poly(L)}, "
+                                       f"has a root in (t*, T1) = ({ts}, {T1})")
+            if not strictly_true_by(f, signs.__getitem__):
+                raise Failed(path, f"W(T1) at T1 = {T1} is not inside {O.name} with strict signs")
+        wT = p_eval(w, T1)
+        return tuple(p_eval(c, T1) / Fraction(wT) for c in xyz) + (T1,)
 
     def turning_witness(self, w, path, A, B):
         """s8.4: a rational point strictly inside both objects, at a time that is no breakpoint."""
