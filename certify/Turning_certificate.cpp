@@ -2,6 +2,7 @@
 
 #include "certify/Touch_witness.h"
 #include "certify/Turning_prover.h"
+#include "certify/Witness_path.h"
 #include "exact/Exact_instantiation.h"
 #include "scene/Number_json.h"
 #include <map>
@@ -43,7 +44,9 @@ public:
       for (const auto& p : answer_.pairs) colliding[key(p)] = &p;
     else if (answer_.reported())
       colliding[key(*answer_.reported())] = answer_.reported();
-    bool every_pair = !answer_.collide || options_.all_pairs;
+    // The earliest claim without all pairs: nothing collides before t*.
+    first_ = options_.earliest && !options_.all_pairs ? answer_.reported() : nullptr;
+    bool every_pair = !answer_.collide || options_.all_pairs || first_;
     json pairs = json::array();
     for (int i = 0; i < static_cast<int>(scene_.objects.size()); ++i)
       for (int j = i + 1; j < static_cast<int>(scene_.objects.size()); ++j) {
@@ -57,7 +60,7 @@ public:
                 {"scene", scene_.name},
                 {"semantics", semantics_name(answer_.semantics)},
                 {"time", json::array({to_string(scene_.t_lo), to_string(scene_.t_hi)})},
-                {"claim", json{{"collide", answer_.collide}, {"earliest", false}, {"all_pairs", options_.all_pairs}}},
+                {"claim", json{{"collide", answer_.collide}, {"earliest", options_.earliest}, {"all_pairs", options_.all_pairs}}},
                 {"pairs", pairs}};
   }
 
@@ -69,6 +72,7 @@ private:
   Turning_prover prover_;
   std::map<std::string, int> index_;
   std::size_t apart_ = 0;
+  const Rotating_pair_answer* first_ = nullptr;
 
   std::pair<int, int> key(const Rotating_pair_answer& p) const
   {
@@ -79,9 +83,29 @@ private:
   json colliding_entry(const Rotating_pair_answer& p)
   {
     json e{{"objects", json::array({p.a, p.b})}, {"collide", true}};
-    if (!closed_) e["witness"] = rational_point(p.answer.witness);
-    else e["touch"] = touch(p);
+    if (options_.earliest) {
+      json earliest{{"t", number_json(p.answer.t_star)}};
+      json proof = closed_ ? touch(p) : earliest_path(p);
+      for (auto& [key, value] : proof.items()) earliest[key] = value;
+      e["earliest"] = earliest;
+      e["apart"] = prover_.prove(index_.at(p.a), index_.at(p.b), p.answer.t_star, closed_);
+    } else if (!closed_) {
+      e["witness"] = rational_point(p.answer.witness);
+    } else {
+      e["touch"] = touch(p);
+    }
     return e;
+  }
+
+  // Regularised: the path inside both after t*, from the witness at the
+  // sample of t*'s critical interval (8.4).
+  json earliest_path(const Rotating_pair_answer& p)
+  {
+    Rotating_object a = Rotating_object::make(scene_.objects[index_.at(p.a)]);
+    Rotating_object b = Rotating_object::make(scene_.objects[index_.at(p.b)]);
+    std::array<Rational, 3> w;
+    for (int k = 0; k < 3; ++k) w[k] = p.answer.witness[k].rational();
+    return json{{"path", witness_path(a, b, p.answer.t_star, w, p.answer.witness[3].rational())}};
   }
 
   // The closed pair at the touch's time, rational: the static closed
@@ -107,7 +131,8 @@ private:
     ++apart_;
     return json{{"objects", json::array({scene_.objects[i].name, scene_.objects[j].name})},
                 {"collide", false},
-                {"apart", prover_.prove(i, j, Algebraic(scene_.t_hi), false)}};
+                {"apart", first_ ? prover_.prove(i, j, first_->answer.t_star, closed_)
+                                 : prover_.prove(i, j, Algebraic(scene_.t_hi), false)}};
   }
 };
 

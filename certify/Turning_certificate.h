@@ -1,9 +1,9 @@
 // The certificate of exactly the answer `check` printed on a scene where
 // some object turns (docs/certificate-format.md, section 8): the regularised
-// witness or the closed touch of each colliding pair the claim names, and
-// an apart proof (certify/Turning_prover.h) for every pair it says does not
-// collide. Earliest times are not certified by this version: the command
-// refuses them before it answers.
+// witness or the closed touch of each colliding pair the claim names (with
+// --earliest: the witness path after t*, certify/Witness_path.h, or the
+// touch at t*), and an apart proof (certify/Turning_prover.h) for every pair
+// it says does not collide, or not before t*.
 #ifndef CLASH4D_CERTIFY_TURNING_CERTIFICATE_H
 #define CLASH4D_CERTIFY_TURNING_CERTIFICATE_H
 

@@ -44,14 +44,14 @@ Rational at(const Poly& p, const Rational& t)
   return v;
 }
 
-// t*'s minimal polynomial (t - t* when rational), positive at s.
+// t*'s minimal polynomial (t - t* when rational), scaled to 1 at s.
 Poly vanishing_at(const Algebraic& t_star, const Rational& s)
 {
   Poly p;
   if (t_star.is_rational()) p = {-t_star.rational(), Rational(1)};
   else
     for (const mpz_class& c : t_star.polynomial()) p.emplace_back(CGAL::Gmpz(c.get_mpz_t()));
-  return CGAL::sign(at(p, s)) == CGAL::NEGATIVE ? scaled(p, Rational(-1)) : p;
+  return scaled(p, 1 / at(p, s));   // P(s) = 1: c is then the step at s
 }
 
 struct Path {
@@ -142,7 +142,7 @@ json witness_path(const Rotating_object& a, const Rotating_object& b, const Alge
     Rational t1 = s;
     for (int shorter = 0; shorter < 4 && !found; ++shorter, t1 = simplest_between(t_star, Algebraic(t1))) {
       Rational c(1);
-      for (int halving = 0; halving < 40 && !found; ++halving, c /= 2) {
+      for (int halving = 0; halving < 100 && !found; ++halving, c /= 2) {
         Path p = vertex_path(rows, i, j, k, s, sigma, P, c);
         if (holds(p, rows, split, a, b, t_star, t1))
           found = json{{"x", poly_json(p.num[0])}, {"y", poly_json(p.num[1])}, {"z", poly_json(p.num[2])},

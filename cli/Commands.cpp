@@ -448,13 +448,9 @@ const char* const semantics_help =
     "sets (closure of the interior) meet within the closed span, touching counts (scene-format.md, Closed semantics)";
 
 // The certificate of a turning scene's answer (certify/Turning_certificate.h),
-// written before the answer is printed. Earliest times are refused before
-// any work: this version does not certify them.
+// written before the answer is printed.
 std::function<void(const Rotating_check_answer&)> turning_certificate_writer(const Scene& scene, const Check_args& a)
 {
-  if (a.options.earliest)
-    refuse_rotation(scene, "certificates of earliest times on turning scenes are not supported yet "
-                           "(docs/certificate-format.md, section 8); without --earliest the verdict is certified");
   return [&scene, &a](const Rotating_check_answer& answer) {
     auto max = static_cast<std::size_t>(a.certificate_max_mb * 1024 * 1024);
     try {

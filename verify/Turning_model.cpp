@@ -1,4 +1,6 @@
 #include "verify/Turning_model.h"
+
+#include "scene/Pose_motion.h"
 #include <algorithm>
 
 namespace clash4d::verifier {
@@ -55,6 +57,15 @@ Turning_model::Turning_model(const Scene_object& o, const Object_model& m) : mod
     q_.push_back(q), c_.push_back(c);
   }
   q_.push_back(constant_q(poses.back().rotate)), c_.push_back(constant_c(poses.back().translate));
+  // The scene reader gives a pose motion that does not rotate its shape
+  // already placed at c(0) (scene/Pose_motion.h, written_shape), which the
+  // atoms here are read from: its origin then moves by c(t) - c(0), and the
+  // literals are those of the shape as written under c(t).
+  if (!o.motion.rotates()) {
+    std::array<Rational, 3> c0 = pose_origin_at_zero(poses);
+    for (auto& c : c_)
+      for (int k = 0; k < 3; ++k) c[k] = c[k] - Rational_poly::constant(rat(c0[k]));
+  }
 }
 
 int Turning_model::piece_of(const Real_time& lo) const
