@@ -708,6 +708,14 @@ BOOST_AUTO_TEST_CASE(earliest_regularised_by_a_witness_path)
   crossing["pairs"][0]["earliest"]["path"]["x"][0] = "21/2";
   expect_rejected(verify(full_scene, crossing), path_at, "is not strictly inside slab");
 
+  // z = 8t w: the point reaches the top face z = 1 at T1 = 1/8 (and stays
+  // below it before): the literals z - 1 are zero there.
+  Json top = good;
+  top["pairs"][0]["earliest"]["path"]["z"] = {"0", "80", "0", "80"};
+  expect_rejected(verify(full_scene, top), path_at, "is zero on the path at T1 = 1/8");
+  top["pairs"][0]["earliest"]["path"]["z"] = {"0", "70", "0", "70"};   // z = 7t: below the top at 1/8
+  expect_ok(verify(full_scene, top), line);
+
   // w not positive: the same point W(t) with x, y, w negated.
   Json negative = good;
   Json& p = negative["pairs"][0]["earliest"]["path"];
@@ -735,6 +743,18 @@ BOOST_AUTO_TEST_CASE(earliest_regularised_by_a_witness_path)
   expect_rejected(verify(posed, at_break), path_at + ".to", "is a breakpoint of square");
   at_break["pairs"][0]["earliest"]["path"]["to"] = "23/200";   // 0.115, before the pose
   expect_ok(verify(posed, at_break), line);
+
+  // t* = tL: the slab from x = 1/2 overlaps the square from the start; the
+  // apart has no pieces, the path is the constant point (3/4, 0, 0).
+  Json overlap_scene = Json::parse(full_scene);
+  overlap_scene["objects"][1]["shape"]["block"]["min"][0] = "1/2";
+  Json from_start = good;
+  from_start["pairs"][0]["earliest"] = regularised_earliest(Json("0"), {{"x", {"3/4"}}, {"y", {"0"}}, {"z", {"0"}}, {"w", {"1"}}, {"to", "1/10"}});
+  from_start["pairs"][0]["apart"] = {{"until", "0"}, {"pieces", Json::array()}};
+  expect_ok(verify(overlap_scene.dump(), from_start), "verified: earliest collision (regularised): square and slab at t* = 0");
+  from_start["pairs"][0]["earliest"]["t"] = "-1";
+  from_start["pairs"][0]["apart"]["until"] = "-1";
+  expect_rejected(verify(overlap_scene.dump(), from_start), "pairs[0].earliest.t", "[tL, tH)");
 
   // Shapes: the regularised earliest holds t and path; closed keys are unknown.
   Json shape = good;

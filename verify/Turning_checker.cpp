@@ -306,7 +306,7 @@ std::string Turning_checker::check_earliest(const Json& j, const std::string& at
   std::string ta = key_at(at, "t");
   t_star = read_time(j["t"], ta, &t_text);
   if (less(t_star, Real_time(t_lo_)) || (regularised_ ? !less(t_star, Real_time(t_hi_)) : less(Real_time(t_hi_), t_star)))
-    reject(ta, std::string("t* must lie in [tL, tH") + (regularised_ ? ")" : "]") + " = [" + text(t_lo_) + ", " + text(t_hi_) + "]");
+    reject(ta, std::string("t* must lie in [tL, tH") + (regularised_ ? ")" : "]") + " = [" + text(t_lo_) + ", " + text(t_hi_) + (regularised_ ? ")" : "]"));
   if (regularised_) {
     check_path(j["path"], key_at(at, "path"), a, b, t_star);
     return "";
