@@ -249,7 +249,7 @@ BOOST_AUTO_TEST_CASE(turning_square_no_collision)
 }
 
 // The piece [0, t*] with t* algebraic is proved; the claim rules then ask
-// for apart until tH = 1 (rule 5; earliest is not in this version).
+// for apart until tH = 1 (rule 5: without an earliest claim).
 BOOST_AUTO_TEST_CASE(apart_until_the_algebraic_contact_time)
 {
   Json c = cert("regularised", false, "1", apart(time_json("1/10", "1/8")));
@@ -383,7 +383,7 @@ BOOST_AUTO_TEST_CASE(turning_square_collides)
   expect_rejected(verify(full_scene, cert("closed", true, "1", mid)), "pairs[0].touch.inside[1]", "sign other than here");
 }
 
-// Section 8: each format on its kind of scene only; no earliest.
+// Section 8: each format on its kind of scene only.
 BOOST_AUTO_TEST_CASE(formats_and_kinds_of_scene)
 {
   Json c = cert("regularised", false, "1/10", apart("1/10"));
@@ -396,12 +396,13 @@ BOOST_AUTO_TEST_CASE(formats_and_kinds_of_scene)
   expect_rejected(verify(still.dump(), cert("regularised", false, "1/10", apart("1/10"))), "format", "no object of the scene turns");
   c["format"] = "clash4d-certificate/2";
   expect_rejected(verify(short_scene, c), "format", "expected", 2);
+  // An earliest claim of no collision: rule 4 asks nothing more.
   Json early = cert("regularised", false, "1/10", apart("1/10"));
   early["claim"]["earliest"] = true;
-  expect_rejected(verify(short_scene, early), "claim.earliest", "not certified by this version");
+  expect_ok(verify(short_scene, early), "verified: no collision in [0, 1/10] (regularised): 1 pair apart");
   Json with_earliest = cert("regularised", false, "1/10", apart("1/10"));
   with_earliest["pairs"][0]["earliest"] = Json::object();
-  expect_rejected(verify(short_scene, with_earliest), "pairs[0].earliest", "not in this version");
+  expect_rejected(verify(short_scene, with_earliest), "pairs[0]", "holds apart and nothing else");
 }
 
 // A ROBMOD object in a turning scene: q = (1, 0, 0, 0), c(t) = D(t), its
@@ -599,4 +600,283 @@ BOOST_AUTO_TEST_CASE(a_translating_pose_motion_in_a_turning_scene)
   witness["witness"][3] = "49/100";   // the slab spans [0.955, 2.755] then
   expect_ok(verify(scene.dump(), cert("regularised", true, "1", witness)),
             "verified: collision (regularised): square and slab at (11/10, 1/5, 0, 49/100)");
+}
+
+// ---------------------------------------------------------------- earliest (8.4)
+
+namespace {
+
+const char* t_star_line = "root of [1, -10, 11] in (1/10, 1/8)";
+
+// The witness path of 8.4 on (t*, 1/8]. The square's corner (1, -1) is at
+// P(t) = (1 - t^2 + 2t, t^2 + 2t - 1, 0) / (1 + t^2); W(t) = (1 - s) P(t)
+// steps towards the centre by s = -(11 t^2 - 10 t + 1)/10, zero at t* and
+// positive on (t*, (5 + sqrt 14)/11): the square's literals x - 1 and
+// -y - 1 are -(1 + t^2) s there (times w), the slab's 6/5 - x is
+// (11 t^2 - 10 t + 1)(1 - t)^2 / (10 (1 + t^2)): all negative on (t*, 1/8].
+// (1 - s) = (11 t^2 - 10 t + 11)/10, so with w = 10 (1 + t^2):
+// x = (11 t^2 - 10 t + 11)(1 + 2t - t^2), y = (11 t^2 - 10 t + 11)(t^2 + 2t - 1).
+Json path_json(const char* to = "1/8")
+{
+  return {{"x", {"11", "12", "-20", "32", "-11"}}, {"y", {"-11", "32", "-20", "12", "11"}}, {"z", {"0"}}, {"w", {"10", "0", "10"}}, {"to", to}};
+}
+
+// The square/slab PAIR colliding at t*: apart until `until` (8.6's proof on
+// [0, until]) and the earliest proof.
+Json earliest_pair(const Json& earliest, const Json& until)
+{
+  Json p = apart(until);
+  p["collide"] = true;
+  p["earliest"] = earliest;
+  return p;
+}
+
+Json regularised_earliest(const Json& t = time_json("1/10", "1/8"), const Json& path = path_json())
+{
+  return {{"t", t}, {"path", path}};
+}
+
+Json earliest_cert(const char* semantics, const Json& pair, bool all_pairs = false)
+{
+  Json c = cert(semantics, true, "1", pair);
+  c["claim"]["earliest"] = true;
+  c["claim"]["all_pairs"] = all_pairs;
+  return c;
+}
+
+// t* moved by 10^-19 (later for sign +1): the root of 11 (t - d)^2 - 10 (t - d) + 1, d = sign 10^-19, times 10^38.
+Json shifted_t_star(int sign)
+{
+  mpz_class D = mpz_class("10000000000000000000") * sign;   // 1/d
+  mpz_class c0 = 11 + 10 * D + D * D, c1 = -(22 * D + 10 * D * D), c2 = 11 * D * D;
+  return {{"poly", {c0.get_str(), c1.get_str(), c2.get_str()}}, {"between", {"1/10", "1/8"}}};
+}
+
+const std::string path_at = "pairs[0].earliest.path";
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(earliest_regularised_by_a_witness_path)
+{
+  Json good = earliest_cert("regularised", earliest_pair(regularised_earliest(), time_json("1/10", "1/8")));
+  const std::string line = std::string("verified: earliest collision (regularised): square and slab at t* = ") + t_star_line;
+  expect_ok(verify(full_scene, good), line);
+  expect_ok(verify(full_scene, parse_certificate(good.dump())), line);
+
+  // t* on the other root (5 + sqrt 14)/11 ~ 0.795: the path ends before it;
+  // ending at 9/10, the step s is negative after that root: W(t) is outside
+  // the square (the corner has left the slab: no path exists there).
+  Json other = good;
+  other["pairs"][0]["earliest"]["t"] = time_json("3/4", "4/5");
+  expect_rejected(verify(full_scene, other), path_at + ".to", "must be after t*");
+  other["pairs"][0]["earliest"]["path"]["to"] = "9/10";
+  expect_rejected(verify(full_scene, other), path_at, "is not strictly inside square");
+
+  // t* 10^-19 later, the apart's last piece end with it: the path holds,
+  // the apart's sum lambda e is negative on (t*, t* + 10^-19].
+  Json later = good;
+  later["pairs"][0]["earliest"]["t"] = shifted_t_star(1);
+  later["pairs"][0]["apart"]["until"] = shifted_t_star(1);
+  later["pairs"][0]["apart"]["pieces"][0]["t"][1] = shifted_t_star(1);
+  expect_rejected(verify(full_scene, later), conflict0, "is not >= 0 on the piece");
+  // 10^-19 earlier: the apart holds, the path's literals are zero at t*.
+  Json earlier = good;
+  earlier["pairs"][0]["earliest"]["t"] = shifted_t_star(-1);
+  earlier["pairs"][0]["apart"]["until"] = shifted_t_star(-1);
+  earlier["pairs"][0]["apart"]["pieces"][0]["t"][1] = shifted_t_star(-1);
+  expect_rejected(verify(full_scene, earlier), path_at, "has a root between t* and T1");
+  // t* moved later without the apart (the path holds): the apart must end at t*.
+  Json alone = good;
+  alone["pairs"][0]["earliest"]["t"] = shifted_t_star(1);
+  expect_rejected(verify(full_scene, alone), "pairs[0].apart.until", "must end at t*");
+
+  // T1 before t*, at or after tH, a TIME object.
+  Json before = good;
+  before["pairs"][0]["earliest"]["path"]["to"] = "1/10";
+  expect_rejected(verify(full_scene, before), path_at + ".to", "must be after t*");
+  before["pairs"][0]["earliest"]["path"]["to"] = "1";
+  expect_rejected(verify(full_scene, before), path_at + ".to", "before tH");
+  before["pairs"][0]["earliest"]["path"]["to"] = time_json("1/10", "1/8");
+  expect_rejected(verify(full_scene, before), path_at + ".to", "rational");
+
+  // x moved by -3/100 (W by -3/(1000 (1 + t^2))): the slab's literal is
+  // positive at t* and still negative at T1, so it crosses zero between.
+  Json crossing = good;
+  crossing["pairs"][0]["earliest"]["path"]["x"][0] = "1097/100";
+  expect_rejected(verify(full_scene, crossing), path_at, "has a root between t* and T1");
+  // Moved by -1/2: the slab's literal is positive on the whole path.
+  crossing["pairs"][0]["earliest"]["path"]["x"][0] = "21/2";
+  expect_rejected(verify(full_scene, crossing), path_at, "is not strictly inside slab");
+
+  // z = 8t w: the point reaches the top face z = 1 at T1 = 1/8 (and stays
+  // below it before): the literals z - 1 are zero there.
+  Json top = good;
+  top["pairs"][0]["earliest"]["path"]["z"] = {"0", "80", "0", "80"};
+  expect_rejected(verify(full_scene, top), path_at, "is zero on the path at T1 = 1/8");
+  top["pairs"][0]["earliest"]["path"]["z"] = {"0", "70", "0", "70"};   // z = 7t: below the top at 1/8
+  expect_ok(verify(full_scene, top), line);
+
+  // w not positive: the same point W(t) with x, y, w negated.
+  Json negative = good;
+  Json& p = negative["pairs"][0]["earliest"]["path"];
+  for (const char* k : {"x", "y", "w"})
+    for (Json& c : p[k]) {
+      mpq_class n = -mpq_class(c.get<std::string>());
+      c = n.get_str();
+    }
+  expect_rejected(verify(full_scene, negative), path_at + ".w", "must be > 0");
+  // w with a root at 3/25 in (t*, 1/8): 10 (1 + t^2)(25 t - 3)^2 scaled
+  // into x, y too would keep W, but w = 0 at 3/25 is refused.
+  Json root = good;
+  root["pairs"][0]["earliest"]["path"]["w"] = {"90", "-1500", "6340", "-1500", "6250"};
+  expect_rejected(verify(full_scene, root), path_at + ".w", "must be > 0");
+
+  // A breakpoint inside (t*, 1/8): the square's motion with a pose at 3/25
+  // on its line (q(t) = (1, 0, 0, t) unchanged).
+  Json scene = Json::parse(full_scene);
+  scene["objects"][0]["motion"]["poses"].insert(scene["objects"][0]["motion"]["poses"].begin() + 1,
+                                                R"({"t": "3/25", "rotate": [1, 0, 0, "3/25"]})"_json);
+  std::string posed = scene.dump();
+  expect_rejected(verify(posed, good), path_at + ".to", "a breakpoint of square lies between t* and T1");
+  Json at_break = good;
+  at_break["pairs"][0]["earliest"]["path"]["to"] = "3/25";
+  expect_rejected(verify(posed, at_break), path_at + ".to", "is a breakpoint of square");
+  at_break["pairs"][0]["earliest"]["path"]["to"] = "23/200";   // 0.115, before the pose
+  expect_ok(verify(posed, at_break), line);
+
+  // t* = tL: the slab from x = 1/2 overlaps the square from the start; the
+  // apart has no pieces, the path is the constant point (3/4, 0, 0).
+  Json overlap_scene = Json::parse(full_scene);
+  overlap_scene["objects"][1]["shape"]["block"]["min"][0] = "1/2";
+  Json from_start = good;
+  from_start["pairs"][0]["earliest"] = regularised_earliest(Json("0"), {{"x", {"3/4"}}, {"y", {"0"}}, {"z", {"0"}}, {"w", {"1"}}, {"to", "1/10"}});
+  from_start["pairs"][0]["apart"] = {{"until", "0"}, {"pieces", Json::array()}};
+  expect_ok(verify(overlap_scene.dump(), from_start), "verified: earliest collision (regularised): square and slab at t* = 0");
+  from_start["pairs"][0]["earliest"]["t"] = "-1";
+  from_start["pairs"][0]["apart"]["until"] = "-1";
+  expect_rejected(verify(overlap_scene.dump(), from_start), "pairs[0].earliest.t", "[tL, tH)");
+
+  // Shapes: the regularised earliest holds t and path; closed keys are unknown.
+  Json shape = good;
+  shape["pairs"][0]["earliest"]["point"] = {"0", "0", "0", "0"};
+  expect_rejected(verify(full_scene, shape), "pairs[0].earliest.point", "unknown key");
+  shape = good;
+  shape["pairs"][0]["earliest"]["path"].erase("w");
+  expect_rejected(verify(full_scene, shape), path_at, "missing key 'w'", 2);
+  // t* at tH is refused in regularised semantics.
+  shape = good;
+  shape["pairs"][0]["earliest"]["t"] = "1";
+  expect_rejected(verify(full_scene, shape), "pairs[0].earliest.t", "[tL, tH)");
+  // An earliest proof without its apart.
+  shape = good;
+  shape["pairs"][0].erase("apart");
+  expect_rejected(verify(full_scene, shape), "pairs[0]", "earliest with apart");
+}
+
+// Closed: the touch at t* (the corner on the slab's face), WA and WB beside
+// it at t*, and the apart on [0, t*) with open_end: the sum lambda e of 8.6
+// is zero at t*, so without open_end the non-strict conflict fails there.
+BOOST_AUTO_TEST_CASE(earliest_closed_by_the_touch_at_t_star)
+{
+  Json y = {{"at_t", {"-1", "11/5"}}};
+  Json c_point = {"6/5", y, "0", time_json("1/10", "1/8")};
+  Json wa = {"0", "0", "0", time_json("1/10", "1/8")};
+  Json wb = {"2", "0", "0", time_json("1/10", "1/8")};
+  Json e = {{"t", time_json("1/10", "1/8")}, {"point", c_point}, {"inside", {wa, wb}}};
+  Json good = earliest_cert("closed", earliest_pair(e, time_json("1/10", "1/8")));
+  good["pairs"][0]["apart"]["open_end"] = true;
+  const std::string line = std::string("verified: earliest collision (closed): square and slab at t* = ") + t_star_line +
+                           ", contact (6/5, [-1, 11/5](t), 0, " + t_star_line + ")";
+  expect_ok(verify(full_scene, good), line);
+  Json closed_end = good;
+  closed_end["pairs"][0]["apart"]["open_end"] = false;
+  expect_rejected(verify(full_scene, closed_end), conflict0, "is not > 0 on the piece");
+  // The contact at another time than t*.
+  Json other = good;
+  other["pairs"][0]["earliest"]["point"][3] = time_json("3/4", "4/5");
+  expect_rejected(verify(full_scene, other), "pairs[0].earliest.point[3]", "equal t*");
+  // t* and the touch on the other root: a touch, but the apart fails between the roots.
+  other["pairs"][0]["earliest"]["t"] = time_json("3/4", "4/5");
+  for (int k : {0, 1}) other["pairs"][0]["earliest"]["inside"][k][3] = time_json("3/4", "4/5");
+  other["pairs"][0]["apart"]["until"] = time_json("3/4", "4/5");
+  other["pairs"][0]["apart"]["pieces"][0]["t"][1] = time_json("3/4", "4/5");
+  expect_rejected(verify(full_scene, other), conflict0, "is not > 0 on the piece [lo, hi)");
+  // The contact moved off the square.
+  Json off = good;
+  off["pairs"][0]["earliest"]["point"][1]["at_t"][1] = "2";
+  expect_rejected(verify(full_scene, off), "pairs[0].earliest.inside[0]", "sign other than here");
+  // t* after tH.
+  Json at_end = good;
+  at_end["pairs"][0]["earliest"]["t"] = "2";
+  expect_rejected(verify(full_scene, at_end), "pairs[0].earliest.t", "[tL, tH]");
+  // A path is a regularised proof: unknown in closed semantics.
+  Json path = good;
+  path["pairs"][0]["earliest"]["path"] = path_json();
+  expect_rejected(verify(full_scene, path), "pairs[0].earliest.path", "unknown key");
+}
+
+// Claim rules 4 and 5 with TIMEs: a third object "far" [10, 11] x [-1, 1]^2.
+// square/far: the square's l1, l2 and far's 10 - x with lambda (1 - t^2,
+// 2t, (1 + t^2)^2), e = (1 + t^2)(11 t^2 - 2 t + 9) > 0; slab/far: x - 3
+// and 10 - x, e = 7.
+BOOST_AUTO_TEST_CASE(earliest_claims_with_other_pairs)
+{
+  Json scene = Json::parse(full_scene);
+  scene["objects"].push_back(R"({"name": "far", "shape": {"block": {"min": [10, -1, -1], "max": [11, 1, 1]}}})"_json);
+  std::string text = scene.dump();
+  auto far_pair = [](const char* other, const Json& until) {
+    Json conflict = std::string(other) == "square"
+                        ? R"({"literals": [[["1","0","-1"], ["0","2"], ["0"], ["-1","0","-1"]], [["0","2"], ["-1","0","1"], ["0"], ["-1","0","-1"]],
+                               [["-1"], ["0"], ["0"], ["10"]]], "lambda": [["1","0","-1"], ["0","2"], ["1","0","2","0","1"]]})"_json
+                        : R"({"literals": [[["1"], ["0"], ["0"], ["-3"]], [["-1"], ["0"], ["0"], ["10"]]], "lambda": [["1"], ["1"]]})"_json;
+    Json piece = {{"t", {"0", until}}, {"proof", {{"conflicts", {conflict}}}}};
+    return Json{{"objects", {other, "far"}}, {"collide", false}, {"apart", {{"until", until}, {"pieces", {piece}}}}};
+  };
+  Json hit = earliest_pair(regularised_earliest(), time_json("1/10", "1/8"));
+  Json c = earliest_cert("regularised", hit);
+  c["pairs"].push_back(far_pair("square", "1/8"));
+  c["pairs"].push_back(far_pair("slab", time_json("1/10", "1/8")));   // until t* exactly: enough
+  const std::string line = std::string("verified: earliest collision (regularised): square and slab at t* = ") + t_star_line;
+  expect_ok(verify(text, c), line);
+  // Apart until 1/10 < t* only.
+  Json short_apart = c;
+  short_apart["pairs"][1] = far_pair("square", "1/10");
+  expect_rejected(verify(text, short_apart), "pairs[1].apart.until", "before t*");
+  // Until 10^-19 before t*.
+  short_apart["pairs"][1] = far_pair("square", shifted_t_star(-1));
+  expect_rejected(verify(text, short_apart), "pairs[1].apart.until", "before t*");
+  // Rule 4: every pair not ignored has a PAIR.
+  Json missing = c;
+  missing["pairs"].erase(2);
+  expect_rejected(verify(text, missing), "pairs", "no PAIR for slab/far");
+  // all_pairs: the others apart until tH.
+  Json all = c;
+  all["claim"]["all_pairs"] = true;
+  expect_rejected(verify(text, all), "pairs[1].apart.until", "not until tH = 1");
+  all["pairs"][1] = far_pair("square", "1");
+  all["pairs"][2] = far_pair("slab", "1");
+  expect_ok(verify(text, all), std::string("verified: colliding pairs (regularised): square/slab at t* = ") + t_star_line + "; 2 other pairs apart");
+  // An earliest claim needs an earliest proof of each colliding PAIR.
+  Json witness = c;
+  witness["pairs"][0] = {{"objects", {"square", "slab"}}, {"collide", true}, {"witness", {"13/10", "1/5", "0", "1/2"}}};
+  expect_rejected(verify(text, witness), "pairs[0]", "needs an earliest proof");
+  // Without the earliest claim, an earliest PAIR proves a collision; a path
+  // names no point, so the line names t*.
+  Json plain = all;
+  plain["claim"]["earliest"] = false;
+  expect_ok(verify(text, plain), "verified: colliding pairs (regularised): square/slab; 2 other pairs apart");
+  plain["claim"]["all_pairs"] = false;
+  expect_ok(verify(text, plain), std::string("verified: collision (regularised): square and slab at t* = ") + t_star_line);
+}
+
+BOOST_AUTO_TEST_CASE(earliest_cli)
+{
+  Json good = earliest_cert("regularised", earliest_pair(regularised_earliest(), time_json("1/10", "1/8")));
+  Cli_run r = run_clash4d({"verify", fixtures + "/rotation/square_into_slab.json", temp_file("earliest.json", good.dump())});
+  BOOST_TEST(r.status == 0, r.err);
+  BOOST_TEST(r.out == std::string("verified: earliest collision (regularised): square and slab at t* = ") + t_star_line + "\n");
+  good["pairs"][0]["earliest"]["path"]["to"] = "1/10";
+  r = run_clash4d({"verify", fixtures + "/rotation/square_into_slab.json", temp_file("earliest_bad.json", good.dump())});
+  BOOST_TEST(r.status == 1, r.err);
+  BOOST_TEST(r.err.find("pairs[0].earliest.path.to") != std::string::npos, r.err);
 }

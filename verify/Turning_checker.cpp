@@ -151,8 +151,6 @@ std::string Turning_checker::check(const Json& cert)
   if (read_number(cert["time"][0], "time[0]") != t_lo_) reject("time[0]", "the scene's span starts at " + text(t_lo_));
   if (read_number(cert["time"][1], "time[1]") != t_hi_) reject("time[1]", "the scene's span ends at " + text(t_hi_));
   expect_keys(cert["claim"], "claim", {"collide", "earliest", "all_pairs"});
-  if (read_bool(cert["claim"]["earliest"], "claim.earliest"))
-    reject("claim.earliest", "earliest times of turning scenes are not certified by this version (section 8)");
   std::vector<Pair_result> pairs;
   std::map<std::pair<int, int>, std::size_t> seen;
   const Json& list = read_array(cert["pairs"], "pairs");
@@ -166,26 +164,36 @@ std::string Turning_checker::check(const Json& cert)
   return check_claim(cert["claim"], pairs);
 }
 
-// Rules 2, 3 and 5 of section 3 (rule 4 does not arise: no earliest, 8.4).
+// Rules 2 to 5 of section 3, with TIMEs compared exactly (8.4).
 std::string Turning_checker::check_claim(const Json& claim, const std::vector<Pair_result>& pairs)
 {
-  bool collide = read_bool(claim["collide"], "claim.collide"), all = read_bool(claim["all_pairs"], "claim.all_pairs");
+  bool collide = read_bool(claim["collide"], "claim.collide"), earliest = read_bool(claim["earliest"], "claim.earliest");
+  bool all = read_bool(claim["all_pairs"], "claim.all_pairs");
   std::vector<std::size_t> hits;
   for (std::size_t i = 0; i < pairs.size(); ++i)
     if (pairs[i].collide) hits.push_back(i);
   if (collide && hits.empty()) reject("claim.collide", "the claim is a collision but no PAIR collides");
   if (!collide && !hits.empty()) reject("claim.collide", "the claim is no collision but " + index_at("pairs", hits[0]) + " collides");
-  if (!collide || all)   // rule 3
+  for (std::size_t i : hits)
+    if (earliest && !pairs[i].earliest) reject(index_at("pairs", i), "the claim is earliest: a colliding PAIR needs an earliest proof");
+  bool single = collide && earliest && !all;   // rule 4, second sentence
+  if (single && hits.size() != 1) reject(index_at("pairs", hits[1]), "the claim is earliest without all_pairs: exactly one PAIR may collide");
+  if (!collide || all || single)   // rules 3 and 4: every pair not ignored has a PAIR
     for (std::size_t i = 0; i < objects_.size(); ++i)
       for (std::size_t j = i + 1; j < objects_.size(); ++j) {
         bool found = scene_.ignored(int(i), int(j));
         for (const Pair_result& p : pairs) found = found || pair_key(p.a, p.b) == std::make_pair(int(i), int(j));
         if (!found) reject("pairs", "no PAIR for " + objects_[i].name() + "/" + objects_[j].name());
       }
-  for (std::size_t i = 0; i < pairs.size(); ++i) {   // rule 5
+  for (std::size_t i = 0; i < pairs.size(); ++i) {   // rule 5, and rule 4's ">= t*"
     if (pairs[i].collide) continue;
-    if (!equal(pairs[i].until, Real_time(t_hi_)))
-      reject(key_at(index_at("pairs", i), "apart.until"), "apart until " + pairs[i].until_text + ", not until tH = " + text(t_hi_));
+    std::string at = key_at(index_at("pairs", i), "apart.until");
+    if (single) {
+      const Pair_result& hit = pairs[hits[0]];
+      if (less(pairs[i].until, hit.t_star)) reject(at, "apart until " + pairs[i].until_text + " only, before t* = " + hit.t_star_text);
+      continue;
+    }
+    if (!equal(pairs[i].until, Real_time(t_hi_))) reject(at, "apart until " + pairs[i].until_text + ", not until tH = " + text(t_hi_));
     if (!regularised_ && pairs[i].open_end)
       reject(key_at(index_at("pairs", i), "apart.open_end"), "closed semantics: apart until tH must include t = tH (open_end false)");
   }
@@ -195,10 +203,14 @@ std::string Turning_checker::check_claim(const Json& claim, const std::vector<Pa
   if (!collide) return "verified: no collision in [" + text(t_lo_) + ", " + text(t_hi_) + "]" + sem + plural(apart, "pair") + " apart";
   if (all) {
     std::string s = "verified: colliding pairs" + sem;
-    for (std::size_t k = 0; k < hits.size(); ++k) s += (k ? ", " : "") + names(pairs[hits[k]], "/");
+    for (std::size_t k = 0; k < hits.size(); ++k)
+      s += (k ? ", " : "") + names(pairs[hits[k]], "/") + (earliest ? " at t* = " + pairs[hits[k]].t_star_text : "");
     return s + "; " + std::to_string(apart) + " other " + (apart == 1 ? "pair" : "pairs") + " apart";
   }
   const Pair_result& p = pairs[hits[0]];
+  // 8.5: a regularised earliest proof is a path, and names no contact.
+  if (earliest) return "verified: earliest collision" + sem + names(p, " and ") + " at t* = " + p.t_star_text + (p.shown.empty() ? "" : ", contact " + p.shown);
+  if (p.shown.empty()) return "verified: collision" + sem + names(p, " and ") + " at t* = " + p.t_star_text;
   return "verified: collision" + sem + names(p, " and ") + " at " + p.shown;
 }
 
@@ -210,7 +222,8 @@ int Turning_checker::object_named(const Json& j, const std::string& at)
   reject(at, "the scene has no object named '" + name + "'");
 }
 
-// A PAIR (8.4): rule 1 for its objects, then apart, witness or touch.
+// A PAIR (8.4): rule 1 for its objects, then apart, witness, touch, or
+// earliest with apart.
 Turning_checker::Pair_result Turning_checker::check_pair(const Json& p, const std::string& at)
 {
   expect_keys(p, at, {"objects", "collide"}, {"apart", "witness", "touch", "earliest"});
@@ -222,13 +235,18 @@ Turning_checker::Pair_result Turning_checker::check_pair(const Json& p, const st
   if (r.a == r.b) reject(objects, "a PAIR names two distinct objects");
   if (scene_.ignored(r.a, r.b)) reject(objects, "the scene ignores this pair");
   r.collide = read_bool(p["collide"], key_at(at, "collide"));
-  if (p.contains("earliest")) reject(key_at(at, "earliest"), "earliest proofs of turning scenes are not in this version (section 8.4)");
-  int proofs = int(p.contains("witness")) + int(p.contains("touch"));
+  int proofs = int(p.contains("witness")) + int(p.contains("touch")) + int(p.contains("earliest"));
   if (!r.collide) {
     if (proofs != 0 || !p.contains("apart")) reject(at, "a PAIR with collide false holds apart and nothing else");
     r.until = check_apart(p["apart"], key_at(at, "apart"), r.a, r.b, r.open_end, r.until_text);
-  } else if (proofs != 1 || p.contains("apart")) {
-    reject(at, "a colliding PAIR holds one of witness or touch (section 8.4)");
+  } else if (proofs != 1 || p.contains("apart") != p.contains("earliest")) {
+    reject(at, "a colliding PAIR holds one of witness, touch, or earliest with apart");
+  } else if (p.contains("earliest")) {
+    r.earliest = true;
+    r.shown = check_earliest(p["earliest"], key_at(at, "earliest"), r.a, r.b, r.t_star, r.t_star_text);
+    r.until = check_apart(p["apart"], key_at(at, "apart"), r.a, r.b, r.open_end, r.until_text);
+    if (!equal(r.until, r.t_star))
+      reject(key_at(at, "apart.until"), "an earliest proof's apart must end at t* = " + r.t_star_text + ", not at " + r.until_text);
   } else if (p.contains("witness")) {
     if (!regularised_) reject(key_at(at, "witness"), "a witness is for regularised semantics (closed: touch)");
     r.shown = check_witness(p["witness"], key_at(at, "witness"), r.a, r.b);
@@ -276,6 +294,74 @@ void Turning_checker::check_generic(const Time_point& c, const Json& j, const st
   int k = m.piece_at(c.t);
   if (!m.strict_true(k, w.xyz, c.t)) reject(at, "the point " + w.text + " is not strictly inside " + m.name());
   if (!m.signs_follow(k, c.xyz, w.xyz, c.t)) reject(at, "a literal of " + m.name() + " is non-zero at the contact with a sign other than here");
+}
+
+// 8.4's earliest: t* in [tL, tH) with a witness path after it (regularised),
+// in [tL, tH] with the touch at t* (closed). Returns the contact's text
+// for the verified line, empty for a path (8.5).
+std::string Turning_checker::check_earliest(const Json& j, const std::string& at, int a, int b, Real_time& t_star, std::string& t_text)
+{
+  if (regularised_) expect_keys(j, at, {"t", "path"});
+  else expect_keys(j, at, {"t", "point", "inside"});
+  std::string ta = key_at(at, "t");
+  t_star = read_time(j["t"], ta, &t_text);
+  if (less(t_star, Real_time(t_lo_)) || (regularised_ ? !less(t_star, Real_time(t_hi_)) : less(Real_time(t_hi_), t_star)))
+    reject(ta, std::string("t* must lie in [tL, tH") + (regularised_ ? ")" : "]") + " = [" + text(t_lo_) + ", " + text(t_hi_) + (regularised_ ? ")" : "]"));
+  if (regularised_) {
+    check_path(j["path"], key_at(at, "path"), a, b, t_star);
+    return "";
+  }
+  std::string pa = key_at(at, "point"), in = key_at(at, "inside");
+  Time_point c = read_time_point(j["point"], pa);
+  if (!equal(c.t, t_star)) reject(index_at(pa, 3), "the contact's time must equal t*");
+  const Json& w = read_array(j["inside"], in, 2);
+  check_generic(c, w[0], index_at(in, 0), a);
+  check_generic(c, w[1], index_at(in, 1), b);
+  return c.text;
+}
+
+// 8.4: W(t) = (x, y, z)(t) / w(t) on (t*, T1] is inside both objects: T1
+// rational in (t*, tH), no breakpoint in (t*, T1], w > 0 on [t*, T1], every
+// literal's L = n . (x, y, z) + e w non-zero at T1 and without a root in
+// (t*, T1), both formulas strictly true at W(T1).
+void Turning_checker::check_path(const Json& j, const std::string& at, int a, int b, const Real_time& t_star)
+{
+  expect_keys(j, at, {"x", "y", "z", "w", "to"});
+  Field_point xyz;
+  const char* name[3] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) xyz[i] = read_poly(j[name[i]], key_at(at, name[i]));
+  std::string wa = key_at(at, "w"), to = key_at(at, "to");
+  Rational_poly w = read_poly(j["w"], wa);
+  if (j["to"].is_object()) {
+    read_time(j["to"], to);   // its own failures first, at their place
+    reject(to, "T1 must be a rational number, not a TIME object (section 8.4)");
+  }
+  mpq_class t1 = read_number(j["to"], to);
+  Real_time end(t1);
+  if (!less(t_star, end)) reject(to, "T1 = " + text(t1) + " must be after t*");
+  if (!(t1 < t_hi_)) reject(to, "T1 = " + text(t1) + " must be before tH = " + text(t_hi_));
+  for (int o : {a, b}) {
+    if (objects_[o].is_break(t1)) reject(to, "T1 = " + text(t1) + " is a breakpoint of " + objects_[o].name());
+    if (objects_[o].break_between(t_star, end)) reject(to, "a breakpoint of " + objects_[o].name() + " lies between t* and T1");
+  }
+  if (!positive_on(w, t_star, end)) reject(wa, "w must be > 0 on [t*, T1]");
+  Field_point at_end;
+  Point4 shown{xyz[0](t1) / w(t1), xyz[1](t1) / w(t1), xyz[2](t1) / w(t1), t1};
+  for (int i = 0; i < 3; ++i) at_end[i] = Rational_poly::constant(shown[i]);
+  for (int o : {a, b}) {
+    const Turning_model& m = objects_[o];
+    int k = m.piece_of(t_star);   // the piece holding (t*, T1)
+    for (const Atom& h : m.atoms()) {
+      Lit l = m.literal(h, k);
+      Rational_poly big_l = l[0] * xyz[0] + l[1] * xyz[1] + l[2] * xyz[2] + l[3] * w;   // n . (x, y, z) + e w
+      auto lit_text = [&] { return "[" + poly_text(l[0]) + ", " + poly_text(l[1]) + ", " + poly_text(l[2]) + ", " + poly_text(l[3]) + "]"; };
+      if (big_l(t1) == 0) reject(at, "the literal " + lit_text() + " of " + m.name() + " is zero on the path at T1 = " + text(t1));
+      if (count_roots(big_l, t_star, end) != 0)
+        reject(at, "the literal " + lit_text() + " of " + m.name() + " on the path, " + poly_text(big_l) + ", has a root between t* and T1");
+    }
+    if (!m.strict_true(k, at_end, end))
+      reject(at, "the path's point at T1, " + text(shown) + ", is not strictly inside " + m.name());
+  }
 }
 
 // 8.3: pieces cover [tL, until] exactly, no breakpoint inside one.

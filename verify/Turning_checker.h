@@ -35,11 +35,13 @@ public:
   std::string check(const Json& cert);
 
 private:
+  // shown: the point the verified line names (empty for a regularised
+  // earliest proof, a path); t_star and its text as read when earliest.
   struct Pair_result {
     int a = 0, b = 0;
-    bool collide = false, open_end = false;
-    Real_time until;
-    std::string until_text, shown;
+    bool collide = false, open_end = false, earliest = false;
+    Real_time until, t_star;
+    std::string until_text, shown, t_star_text;
   };
   // An APART piece [lo, hi]: the objects' motion pieces, and whether the
   // non-strict sums need only be positive on [lo, hi) (open_end, 8.3).
@@ -54,6 +56,8 @@ private:
   std::string check_witness(const Json& j, const std::string& at, int a, int b);
   std::string check_touch(const Json& j, const std::string& at, int a, int b);
   void check_generic(const Time_point& c, const Json& w, const std::string& at, int o);
+  std::string check_earliest(const Json& j, const std::string& at, int a, int b, Real_time& t_star, std::string& t_text);
+  void check_path(const Json& j, const std::string& at, int a, int b, const Real_time& t_star);
   Real_time check_apart(const Json& j, const std::string& at, int a, int b, bool& open_end, std::string& until_text);
   void check_leaf(const Json& j, const std::string& at, const Piece& piece);
   Leaf_conflict check_conflict(const Json& j, const std::string& at, const Piece& piece);

@@ -20,6 +20,7 @@ public:
   Turning_model(const Scene_object& o, const Object_model& m);
   const std::string& name() const { return model_.name(); }
   const Formula& formula() const { return model_.formula(); }
+  const std::vector<Atom>& atoms() const { return model_.atoms(); }
   // Piece k lies between breakpoints k-1 and k.
   int piece_of(const Real_time& lo) const;   // the piece holding (lo, hi) when no breakpoint is inside
   int piece_at(const Real_time& t) const;    // a piece whose closure holds t
