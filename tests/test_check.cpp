@@ -354,7 +354,6 @@ BOOST_AUTO_TEST_CASE(commands_refuse_rotation_naming_the_object)
     std::string words;
   };
   for (const Case& c : std::vector<Case>{
-           {{"check", f, "--certificate", "/tmp/clash4d_test_check_rotating.cert"}, "certificates for motions with rotation are not supported yet"},
            {{"skeleton", f}, "not supported by skeleton yet"},
            {{"extrude", f, "--number", "double", "--json"}, "extrude prints its polynomials exactly only"}}) {
     Run r = run(c.args);

@@ -768,9 +768,9 @@ class TurningEarliest(TurningCase):
         (self.dir / "cert.json").write_text(json.dumps(earliest_certificate()))
         rc, out, err = run_cli(SQUARE_SCENE, self.dir / "cert.json")
         self.assertEqual((rc, out), (0, EARLIEST.format("regularised") + "\n"), err)
-        # the same PAIR under a claim that is not earliest: the collision shown at W(T1)
+        # the same PAIR under a claim that is not earliest: a collision just after t* (s8.5)
         self.accepted(earliest_certificate(earliest=False), "verified: collision (regularised): square and "
-                      "slab at (10033/8320, -5969/8320, 0, 1/8)\n", SQUARE_SCENE)
+                      "slab at t* = root of [1, -10, 11] in (1/10, 1/8)\n", SQUARE_SCENE)
         # open_end changes nothing in regularised semantics
         self.accepted(earliest_certificate(open_end=True), EARLIEST.format("regularised") + "\n", SQUARE_SCENE)
 

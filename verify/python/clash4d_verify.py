@@ -1303,7 +1303,9 @@ class Checker:
                 return f"verified: earliest collision ({sem}): {who} at t* = {r['tstar']}"
             return (f"verified: earliest collision ({sem}): {who} at t* = {r['tstar']}, "
                     f"contact {fmt_point(r['point'])}")
-        return f"verified: collision ({sem}): {who} at {fmt_point(r.get('shown') or r['point'])}"
+        if r["point"] is None:              # s8.5: a path proves a collision just after t*, no point
+            return f"verified: collision ({sem}): {who} at t* = {r['tstar']}"
+        return f"verified: collision ({sem}): {who} at {fmt_point(r['point'])}"
 
     def proofs_present(self, pair, path, collide):
         """The proofs a PAIR holds (s3): a wrong combination is a failure (1), as an unknown key."""
@@ -1685,7 +1687,7 @@ class Checker:
             if self.closed:
                 self.turning_inside(e["inside"], p + ".inside", c, A, B)
             else:
-                rec["shown"] = self.turning_path(e["path"], p + ".path", ts, A, B)
+                self.turning_path(e["path"], p + ".path", ts, A, B)
             # the APART until t*: closed, open_end true or false (false is stronger)
             until, _ = self.turning_apart(pair["apart"], path + ".apart", A, B)
             if cmp_time(until, ts) != 0:
@@ -1706,7 +1708,7 @@ class Checker:
         """s8.4, regularised earliest: the witness path W(t) = (x, y, z)(t) / w(t) on (t*, T1].
         Every literal of A and B keeps on (t*, T1] the sign it has at W(T1) (L = n.(x, y, z) + e w
         has no root there, w > 0), and both formulas are true there with strict signs: the
-        objects collide at every time of (t*, T1]. Returns W(T1), a rational collision point."""
+        objects collide at every time of (t*, T1]."""
         tH = self.scene.time[1]
         pt = self.keys(v, path, {"x", "y", "z", "w", "to"})
         xyz = [self.poly(pt[a], f"{path}.{a}") for a in "xyz"]
