@@ -1,5 +1,6 @@
 #include "certify/Touch_witness.h"
 
+#include "certify/Coefficients.h"
 #include "certify/Turning_prover.h"
 #include "rotation/Critical_times.h"
 #include "rotation/Exact_slices.h"
@@ -12,31 +13,11 @@ namespace clash4d {
 namespace {
 
 using json = nlohmann::ordered_json;
-using Poly = std::vector<Rational>;   // constant term first
-using Field_point = std::array<Poly, 3>;
-
-Poly add(Poly a, const Poly& b)
-{
-  if (a.size() < b.size()) a.resize(b.size(), Rational(0));
-  for (std::size_t i = 0; i < b.size(); ++i) a[i] += b[i];
-  return a;
-}
-
-Poly mul(const Poly& a, const Poly& b)
-{
-  if (a.empty() || b.empty()) return {};
-  Poly out(a.size() + b.size() - 1, Rational(0));
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = 0; j < b.size(); ++j) out[i + j] += a[i] * b[j];
-  return out;
-}
-
-Poly scaled(const Poly& a, const Rational& s)
-{
-  Poly out = a;
-  for (Rational& c : out) c *= s;
-  return out;
-}
+using coefficients::Poly;
+using coefficients::add;
+using coefficients::mul;
+using coefficients::scaled;
+using Field_point = std::array<Poly, 3>;   // coordinates in Q(r), as polynomials in r
 
 // l(x) = n . x + e for a row and a point in Q(r), as a polynomial in r.
 Poly value(const Moving_plane& h, const Field_point& x)

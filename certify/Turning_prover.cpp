@@ -58,21 +58,6 @@ json conflict_json(const Polynomial_conflict& c, bool closed)
   return out;
 }
 
-// The motions' breakpoints strictly inside (lo, hi), with lo and hi.
-std::vector<Rational> breakpoints(const Rotating_object& a, const Rotating_object& b, const Rational& lo,
-                                  const Rational& hi)
-{
-  std::vector<Rational> t = {lo, hi};
-  for (const auto* o : {&a, &b})
-    for (const Pose_segment& s : o->segments) {
-      if (!s.from_minus_infinity && lo < s.lo && s.lo < hi) t.push_back(s.lo);
-      if (!s.to_plus_infinity && lo < s.hi && s.hi < hi) t.push_back(s.hi);
-    }
-  std::sort(t.begin(), t.end());
-  t.erase(std::unique(t.begin(), t.end()), t.end());
-  return t;
-}
-
 Conflict::Of of_from(const json& c)
 {
   if (!c.contains("of") || c["of"] == "both") return Conflict::Of::Both;
@@ -179,7 +164,7 @@ json Turning_prover::prove(int a, int b, const Algebraic& until, bool open_end)
   where_ = "objects '" + scene_.objects[a].name + "' and '" + scene_.objects[b].name + "'";
   json pieces = json::array();
   Rational end = until.is_rational() ? until.rational() : until.upper();
-  std::vector<Rational> ends = breakpoints(*a_, *b_, scene_.t_lo, end);
+  std::vector<Rational> ends = piece_ends(*a_, *b_, scene_.t_lo, end);
   for (std::size_t p = 0; p + 1 < ends.size() && Algebraic(ends[p]) < until; ++p) {
     Algebraic hi = Algebraic(ends[p + 1]) < until ? Algebraic(ends[p + 1]) : until;
     for (const Leaf& leaf : pose_piece(ends[p], ends[p + 1], hi, open_end && hi == until)) {

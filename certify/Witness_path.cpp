@@ -1,5 +1,6 @@
 #include "certify/Witness_path.h"
 
+#include "certify/Coefficients.h"
 #include "certify/Positivity.h"
 #include "certify/Turning_prover.h"
 #include "rotation/Cell_vertices.h"
@@ -11,38 +12,14 @@ namespace clash4d {
 namespace {
 
 using json = nlohmann::ordered_json;
-using Poly = std::vector<Rational>;
+using coefficients::Poly;
+using coefficients::add;
+using coefficients::mul;
+using coefficients::scaled;
+using coefficients::at;
 
-Poly coefficients(const Time_poly& p) { return p.coefficients(); }
+Poly of(const Time_poly& p) { return p.coefficients(); }
 
-Poly add(Poly a, const Poly& b)
-{
-  if (a.size() < b.size()) a.resize(b.size(), Rational(0));
-  for (std::size_t i = 0; i < b.size(); ++i) a[i] += b[i];
-  return a;
-}
-
-Poly mul(const Poly& a, const Poly& b)
-{
-  if (a.empty() || b.empty()) return {};
-  Poly out(a.size() + b.size() - 1, Rational(0));
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = 0; j < b.size(); ++j) out[i + j] += a[i] * b[j];
-  return out;
-}
-
-Poly scaled(Poly a, const Rational& s)
-{
-  for (Rational& c : a) c *= s;
-  return a;
-}
-
-Rational at(const Poly& p, const Rational& t)
-{
-  Rational v(0);
-  for (std::size_t i = p.size(); i-- > 0;) v = v * t + p[i];
-  return v;
-}
 
 // t*'s minimal polynomial (t - t* when rational), scaled to 1 at s.
 Poly vanishing_at(const Algebraic& t_star, const Rational& s)
@@ -62,8 +39,8 @@ struct Path {
 // The row's value along the path, times w(t).
 Poly along(const Moving_plane& h, const Path& p)
 {
-  Poly v = mul(coefficients(h[3]), p.den);
-  for (int k = 0; k < 3; ++k) v = add(v, mul(coefficients(h[k]), p.num[k]));
+  Poly v = mul(of(h[3]), p.den);
+  for (int k = 0; k < 3; ++k) v = add(v, mul(of(h[k]), p.num[k]));
   return v;
 }
 
@@ -89,11 +66,11 @@ Path vertex_path(const std::vector<Moving_plane>& rows, int i, int j, int k, con
                  const std::array<int, 3>& sigma, const Poly& P, const Rational& c)
 {
   Path p;
-  p.den = coefficients(normal_minor(rows[i], rows[j], rows[k]));
+  p.den = of(normal_minor(rows[i], rows[j], rows[k]));
   for (int col = 0; col < 3; ++col) {
     std::array<Moving_plane, 3> m = {rows[i], rows[j], rows[k]};
     for (auto& row : m) row[col] = -row[3];
-    p.num[col] = coefficients(normal_minor(m[0], m[1], m[2]));
+    p.num[col] = of(normal_minor(m[0], m[1], m[2]));
   }
   Rational d = at(p.den, s);
   if (CGAL::sign(d) == CGAL::NEGATIVE) {

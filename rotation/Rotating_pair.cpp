@@ -61,22 +61,6 @@ Static_hit probe(const Rotating_object& a, const Rotating_object& b, const Ratio
   return hit;
 }
 
-// The time boundaries of the pair inside the span: where either motion
-// changes its polynomials, with the span's ends.
-std::vector<Rational> piece_ends(const Rotating_object& a, const Rotating_object& b, const Rational& lo,
-                                 const Rational& hi)
-{
-  std::vector<Rational> t = {lo, hi};
-  for (const auto* o : {&a, &b})
-    for (const Pose_segment& s : o->segments) {
-      if (!s.from_minus_infinity && lo < s.lo && s.lo < hi) t.push_back(s.lo);
-      if (!s.to_plus_infinity && lo < s.hi && s.hi < hi) t.push_back(s.hi);
-    }
-  std::sort(t.begin(), t.end());
-  t.erase(std::unique(t.begin(), t.end()), t.end());
-  return t;
-}
-
 std::vector<Moving_plane> pair_rows(const Rotating_object& a, const Rotating_object& b, const Rational& at)
 {
   std::vector<Moving_plane> rows = moving_planes(a.shape.planes, segment_at(a.segments, at));
@@ -100,6 +84,20 @@ Rotating_object Rotating_object::make(const Scene_object& o)
 Rotating_object Rotating_object::piece(const Scene_object& o, const Solid& piece)
 {
   return {o.name, &piece, shape_planes(piece), pose_segments(o.motion)};
+}
+
+std::vector<Rational> piece_ends(const Rotating_object& a, const Rotating_object& b, const Rational& lo,
+                                 const Rational& hi)
+{
+  std::vector<Rational> t = {lo, hi};
+  for (const auto* o : {&a, &b})
+    for (const Pose_segment& s : o->segments) {
+      if (!s.from_minus_infinity && lo < s.lo && s.lo < hi) t.push_back(s.lo);
+      if (!s.to_plus_infinity && lo < s.hi && s.hi < hi) t.push_back(s.hi);
+    }
+  std::sort(t.begin(), t.end());
+  t.erase(std::unique(t.begin(), t.end()), t.end());
+  return t;
 }
 
 Scene posed_pair(const Rotating_object& a, const Rotating_object& b, const Rational& t)

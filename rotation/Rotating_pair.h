@@ -55,6 +55,11 @@ template <class Slices>
 Rotating_answer decide_rotating_pair(const Rotating_object& a, const Rotating_object& b, const Rational& t_lo,
                                      const Rational& t_hi, const Check_options& options, const Slices& slices);
 
+// lo, the times strictly inside (lo, hi) where either motion changes its
+// polynomials (pose times, velocity changes), and hi, ascending.
+std::vector<Rational> piece_ends(const Rotating_object& a, const Rotating_object& b, const Rational& lo,
+                                 const Rational& hi);
+
 // The scene of the two objects at rest, placed as they are at time t.
 Scene posed_pair(const Rotating_object& a, const Rotating_object& b, const Rational& t);
 

@@ -1,0 +1,47 @@
+// Polynomials in t as their rational coefficients, constant term first, of
+// any degree (numbers/Polynomial.h holds a fixed capacity): what the
+// turning certificate's writer builds its paths, witnesses and multipliers
+// from before it checks their signs (certify/Positivity.h).
+#ifndef CLASH4D_CERTIFY_COEFFICIENTS_H
+#define CLASH4D_CERTIFY_COEFFICIENTS_H
+
+#include "numbers/Rational.h"
+#include <vector>
+
+namespace clash4d::coefficients {
+
+using Poly = std::vector<Rational>;
+
+inline Poly add(Poly a, const Poly& b)
+{
+  if (a.size() < b.size()) a.resize(b.size(), Rational(0));
+  for (std::size_t i = 0; i < b.size(); ++i) a[i] += b[i];
+  return a;
+}
+
+inline Poly mul(const Poly& a, const Poly& b)
+{
+  if (a.empty() || b.empty()) return {};
+  Poly out(a.size() + b.size() - 1, Rational(0));
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j) out[i + j] += a[i] * b[j];
+  return out;
+}
+
+inline Poly scaled(Poly a, const Rational& s)
+{
+  for (Rational& c : a) c *= s;
+  return a;
+}
+
+// The value at t, by Horner's rule.
+inline Rational at(const Poly& p, const Rational& t)
+{
+  Rational v(0);
+  for (std::size_t i = p.size(); i-- > 0;) v = v * t + p[i];
+  return v;
+}
+
+} // namespace clash4d::coefficients
+
+#endif
