@@ -3,13 +3,18 @@
 // the independent checker's time on it (verify/), all in process and exact
 // (the filtered kernel), in regularised and closed semantics, plain and
 // --earliest. Targets: writing at most 3x check; verifying faster than
-// deciding.
-//   clash4d_certificate_bench [--seed N] [--random M] [--min-seconds S] [--family paper|contact|random]
+// deciding; on turning scenes (rotation: fixtures/rotation; rotation-fuzz:
+// the first M cases of `clash4d fuzz --rotation`'s families, issue 56)
+// writing at most 5x check.
+//   clash4d_certificate_bench [--seed N] [--random M] [--min-seconds S]
+//                             [--family paper|contact|random|rotation|rotation-fuzz]
 #include "bench/Bench_main.h"
 #include "bench/Fixtures.h"
 #include "bench/Option_number.h"
 #include "bench/Timing.h"
 #include "certify/Certificate_writer.h"
+#include "certify/Turning_certificate.h"
+#include "compare/Rotation_families.h"
 #include "exact/Exact_instantiation.h"
 #include "scene/Hull_scene.h"
 #include "scene/Json_reader.h"
@@ -38,17 +43,34 @@ struct Means {
   }
 };
 
+// check's verdict, and its certificate: the 4D pipeline's, or the time
+// slices' on a scene where something turns (certify/Turning_certificate.h).
+bool decide(const Scene& scene, const Check_options& opts)
+{
+  return scene_rotates(scene) ? check_rotating(scene, opts, "exact").collide : check_exact(scene, opts).collide;
+}
+
+std::pair<bool, nlohmann::ordered_json> certified(const Scene& scene, const Check_options& opts)
+{
+  if (scene_rotates(scene)) {
+    Rotating_check_answer a = check_rotating(scene, opts, "exact");
+    return {a.collide, make_turning_certificate(scene, a, opts)};
+  }
+  Check_answer a = check_exact(scene, opts);
+  return {a.collide, make_certificate(scene, a, opts)};
+}
+
 void row(const std::string& name, const Scene& scene, const Check_options& opts, double min_seconds, Means& means)
 {
-  Timing check = time_it([&] { return check_exact(scene, opts).collide; }, min_seconds);
+  Timing check = time_it([&] { return decide(scene, opts); }, min_seconds);
   std::size_t bytes = 0;
   Timing write = time_it([&] {
-    Check_answer a = check_exact(scene, opts);
-    bytes = make_certificate(scene, a, opts).dump(1).size();
-    return a.collide;
+    auto [collide, c] = certified(scene, opts);
+    bytes = c.dump(1).size();
+    return collide;
   }, min_seconds);
-  Check_answer a = check_exact(scene, opts);
-  nlohmann::json cert = nlohmann::json::parse(make_certificate(scene, a, opts).dump());
+  auto [collide, made] = certified(scene, opts);
+  nlohmann::json cert = nlohmann::json::parse(made.dump());
   bool ok = false;
   Timing verify = time_it([&] { return ok = verifier::verify_certificate(scene, cert).ok; }, min_seconds);
   double w = write.seconds_per_query / check.seconds_per_query, v = verify.seconds_per_query / check.seconds_per_query;
@@ -58,7 +80,7 @@ void row(const std::string& name, const Scene& scene, const Check_options& opts,
   means.rejected += !ok;
   ++means.count;
   std::printf("%-66s %10.1f %10.1f %10.1f %7.2f %7.2f %9zu  %s%s\n", name.c_str(), check.seconds_per_query * 1e6,
-              write.seconds_per_query * 1e6, verify.seconds_per_query * 1e6, w, v, bytes, a.collide ? "collide" : "apart",
+              write.seconds_per_query * 1e6, verify.seconds_per_query * 1e6, w, v, bytes, collide ? "collide" : "apart",
               ok ? "" : " REJECTED");
 }
 
@@ -75,8 +97,8 @@ std::vector<std::pair<std::string, Check_options>> modes()
   return out;
 }
 
-const char* usage =
-    "usage: clash4d_certificate_bench [--seed N] [--random M] [--min-seconds S] [--family paper|contact|random]\n";
+const char* usage = "usage: clash4d_certificate_bench [--seed N] [--random M] [--min-seconds S]\n"
+                    "                                 [--family paper|contact|random|rotation|rotation-fuzz]\n";
 
 int run_bench(int argc, char** argv)
 {
@@ -100,18 +122,28 @@ int run_bench(int argc, char** argv)
   }
   if (!(min_seconds > 0)) throw std::invalid_argument("--min-seconds must be positive");
   if (random_count < 0) throw std::invalid_argument("--random must not be negative");
-  if (!only.empty() && only != "paper" && only != "contact" && only != "random")
-    throw std::invalid_argument("--family " + only + ": not paper, contact or random");
+  if (!only.empty() && only != "paper" && only != "contact" && only != "random" && only != "rotation" &&
+      only != "rotation-fuzz")
+    throw std::invalid_argument("--family " + only + ": not paper, contact, random, rotation or rotation-fuzz");
   std::printf("%-66s %10s %10s %10s %7s %7s %9s  %s\n", "scene (mode)", "check us", "+cert us", "verify us", "write", "verify",
               "bytes", "verdict");
   for (const auto& [mode, opts] : modes()) {
-    for (const char* family : {"paper", "contact"}) {
+    for (const char* family : {"paper", "contact", "rotation"}) {
       if (!only.empty() && only != family) continue;
       Means means;
       for (const auto& f : fixture_files(family))
         row(std::string(family) + "/" + f.filename().string() + " (" + mode + ")", read_bench_scene(f.string()), opts,
             min_seconds, means);
       means.print(std::string(family) + ", " + mode);
+    }
+    if (only.empty() || only == "rotation-fuzz") {
+      Means turning;
+      for (int i = 0; i < random_count; ++i) {
+        Rotation_case c = make_rotation_case(seed, static_cast<std::uint64_t>(i));
+        row("rotation #" + std::to_string(i) + " " + c.scene.family + " (" + mode + ")",
+            read_scene(read_json_text(c.scene.json)), opts, min_seconds, turning);
+      }
+      if (turning.count) turning.print("rotation families (seed " + std::to_string(seed) + "), " + mode);
     }
     if (!only.empty() && only != "random") continue;
     std::mt19937_64 rng(seed);
