@@ -45,11 +45,11 @@ Poly along(const Moving_plane& h, const Path& p)
 }
 
 // Every row keeps a side on (t*, t1] and both formulas hold strictly at
-// W(t1) (8.4), with w > 0 on [t*, t1].
+// W(t1) (8.4), with w > 0 on (t*, t1].
 bool holds(const Path& p, const std::vector<Moving_plane>& rows, std::size_t split, const Rotating_object& a,
            const Rotating_object& b, const Algebraic& t_star, const Rational& t1)
 {
-  if (!positive_on(p.den, t_star, Algebraic(t1), true)) return false;
+  if (!positive_after(p.den, t_star, Algebraic(t1))) return false;
   std::vector<int> side_a, side_b;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     Poly v = along(rows[i], p);
@@ -116,14 +116,19 @@ json witness_path(const Rotating_object& a, const Rotating_object& b, const Alge
       const auto& h = now[r == 0 ? i : r == 1 ? j : k];
       sigma[r] = sign_of(h[0] * w[0] + h[1] * w[1] + h[2] * w[2] + h[3]);
     }
-    Rational t1 = s;
-    for (int shorter = 0; shorter < 4 && !found; ++shorter, t1 = simplest_between(t_star, Algebraic(t1))) {
-      Rational c(1);
-      for (int halving = 0; halving < 100 && !found; ++halving, c /= 2) {
-        Path p = vertex_path(rows, i, j, k, s, sigma, P, c);
-        if (holds(p, rows, split, a, b, t_star, t1))
-          found = json{{"x", poly_json(p.num[0])}, {"y", poly_json(p.num[1])}, {"z", poly_json(p.num[2])},
-                       {"w", poly_json(p.den)}, {"to", to_string(t1)}};
+    // The step c P^power D: a plane the vertex leaves to second order as
+    // the cell is born needs the step to vanish faster than it.
+    Poly step = P;
+    for (int power = 1; power <= 3 && !found; ++power, step = mul(step, P)) {
+      Rational t1 = s;
+      for (int shorter = 0; shorter < 4 && !found; ++shorter, t1 = simplest_between(t_star, Algebraic(t1))) {
+        Rational c(1);
+        for (int halving = 0; halving < 100 && !found; ++halving, c /= 2) {
+          Path p = vertex_path(rows, i, j, k, s, sigma, step, c);
+          if (holds(p, rows, split, a, b, t_star, t1))
+            found = json{{"x", poly_json(p.num[0])}, {"y", poly_json(p.num[1])}, {"z", poly_json(p.num[2])},
+                         {"w", poly_json(p.den)}, {"to", to_string(t1)}};
+        }
       }
     }
     return found.has_value();

@@ -4,10 +4,11 @@
 // of the closure of the witness's cell (Cramer's quotients of three
 // planes; the cell keeps its vertices on the critical interval after t*,
 // regularised-semantics.md fact 10) and steps into the cell by
-// c P(t) D, where P is t*'s minimal polynomial (zero at t*, so the step
-// vanishes where the cell is born) and D points into the cell at the
-// vertex. c is halved, and T1 moved towards t*, until every plane keeps
-// its side along the path, checked exactly.
+// c P(t)^k D, where P is t*'s minimal polynomial (zero at t*, so the step
+// vanishes where the cell is born; k = 2 or 3 where the cell is born
+// tangent to a plane) and D points into the cell at the vertex. c is
+// halved, and T1 moved towards t*, until every plane keeps its side along
+// the path, checked exactly.
 #ifndef CLASH4D_CERTIFY_WITNESS_PATH_H
 #define CLASH4D_CERTIFY_WITNESS_PATH_H
 

@@ -321,7 +321,7 @@ std::string Turning_checker::check_earliest(const Json& j, const std::string& at
 }
 
 // 8.4: W(t) = (x, y, z)(t) / w(t) on (t*, T1] is inside both objects: T1
-// rational in (t*, tH), no breakpoint in (t*, T1], w > 0 on [t*, T1], every
+// rational in (t*, tH), no breakpoint in (t*, T1], w > 0 on (t*, T1], every
 // literal's L = n . (x, y, z) + e w non-zero at T1 and without a root in
 // (t*, T1), both formulas strictly true at W(T1).
 void Turning_checker::check_path(const Json& j, const std::string& at, int a, int b, const Real_time& t_star)
@@ -344,7 +344,9 @@ void Turning_checker::check_path(const Json& j, const std::string& at, int a, in
     if (objects_[o].is_break(t1)) reject(to, "T1 = " + text(t1) + " is a breakpoint of " + objects_[o].name());
     if (objects_[o].break_between(t_star, end)) reject(to, "a breakpoint of " + objects_[o].name() + " lies between t* and T1");
   }
-  if (!positive_on(w, t_star, end)) reject(wa, "w must be > 0 on [t*, T1]");
+  // W(t) is needed on (t*, T1] only: w may vanish at t* (a vertex whose
+  // planes meet in a line there).
+  if (!(w(t1) > 0) || count_roots(w, t_star, end) != 0) reject(wa, "w must be > 0 on (t*, T1]");
   Field_point at_end;
   Point4 shown{xyz[0](t1) / w(t1), xyz[1](t1) / w(t1), xyz[2](t1) / w(t1), t1};
   for (int i = 0; i < 3; ++i) at_end[i] = Rational_poly::constant(shown[i]);

@@ -826,7 +826,7 @@ class TurningEarliest(TurningCase):
     def test_w_not_positive_fails(self):
         # the same points with every polynomial negated: w < 0
         neg = {k: [str(-Fraction(c)) for c in PATH[k]] for k in "xyzw"}
-        self.refused(earliest_certificate(path=neg), "pairs[0].earliest.path.w: [-10, 0, -10] is not > 0 on [",
+        self.refused(earliest_certificate(path=neg), "pairs[0].earliest.path.w: [-10, 0, -10] is not > 0 on (",
                      SQUARE_SCENE)
         # the same points with every polynomial times (t - 3/25): w changes sign at 3/25 in (t*, 1/8)
         P = clash4d_verify

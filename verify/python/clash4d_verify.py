@@ -1728,8 +1728,8 @@ class Checker:
                 where = "is T1" if bps[k] == T1 else f"lies between t* = {ts} and T1 = {T1}"
                 raise Failed(path + ".to", f"a breakpoint of {O.name} at t = {bps[k]} {where}")
             ks.append(k)
-        if not positive_on(w, ts, T1):
-            raise Failed(path + ".w", f"{fmt_poly(w)} is not > 0 on [{ts}, {T1}]")
+        if not (p_eval(w, T1) > 0 and roots_between(w, ts, T1) == 0):   # W is needed on (t*, T1] only
+            raise Failed(path + ".w", f"{fmt_poly(w)} is not > 0 on ({ts}, {T1}]")
         for O, k in zip((A, B), ks):
             f = O.turning_formula(k)
             signs = {}
