@@ -15,6 +15,7 @@
 #include "rotation/Rotating_check.h"
 #include "certify/Turning_certificate.h"
 #include "certify/Turning_prover.h"
+#include "rotation/Critical_times.h"
 #include "rotation/Rotating_extrusion.h"
 #include "scene/Files.h"
 #include "scene/Input_error.h"
@@ -459,6 +460,8 @@ std::function<void(const Rotating_check_answer&)> turning_certificate_writer(con
       throw Input_error("certificate", e.what(), CLASH4D_EXIT_LIMIT);
     } catch (const Turning_proof_missing& e) {
       refuse_rotation(scene, std::string("no certificate was written: ") + e.what());
+    } catch (const Minor_limit& e) {   // the proofs' critical times are over whole objects
+      throw Input_error("certificate", std::string("no certificate was written: ") + e.what(), CLASH4D_EXIT_LIMIT);
     }
   };
 }
