@@ -6,6 +6,7 @@
 #define CLASH4D_CERTIFY_COEFFICIENTS_H
 
 #include "numbers/Rational.h"
+#include <utility>
 #include <vector>
 
 namespace clash4d::coefficients {
@@ -40,6 +41,38 @@ inline Rational at(const Poly& p, const Rational& t)
   Rational v(0);
   for (std::size_t i = p.size(); i-- > 0;) v = v * t + p[i];
   return v;
+}
+
+inline Poly trimmed(Poly p)
+{
+  while (!p.empty() && CGAL::sign(p.back()) == CGAL::ZERO) p.pop_back();
+  return p;
+}
+
+// a = q b + r; returns q, leaves r in a (b not zero).
+inline Poly divide(Poly& a, const Poly& b)
+{
+  a = trimmed(a);
+  Poly q(a.size() >= b.size() ? a.size() - b.size() + 1 : 0, Rational(0));
+  while (a.size() >= b.size() && !a.empty()) {
+    std::size_t shift = a.size() - b.size();
+    Rational f = a.back() / b.back();
+    q[shift] = f;
+    for (std::size_t i = 0; i < b.size(); ++i) a[shift + i] -= f * b[i];
+    a = trimmed(a);
+  }
+  return q;
+}
+
+// The greatest common divisor, by Euclid over Q (not made monic).
+inline Poly gcd(Poly a, Poly b)
+{
+  a = trimmed(a), b = trimmed(b);
+  while (!b.empty()) {
+    divide(a, b);
+    std::swap(a, b);
+  }
+  return a;
 }
 
 } // namespace clash4d::coefficients

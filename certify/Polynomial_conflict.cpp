@@ -1,5 +1,6 @@
 #include "certify/Polynomial_conflict.h"
 
+#include "certify/Coefficients.h"
 #include "certify/Positivity.h"
 
 namespace clash4d {
@@ -143,38 +144,10 @@ std::vector<std::vector<int>> row_choices(std::size_t size)
   return out;
 }
 
-using Poly = std::vector<Rational>;
-
-Poly trimmed(Poly p)
-{
-  while (!p.empty() && is_zero(p.back())) p.pop_back();
-  return p;
-}
-
-// a = q b + r; returns q, leaves r in a (b not zero).
-Poly divide(Poly& a, const Poly& b)
-{
-  a = trimmed(a);
-  Poly q(a.size() >= b.size() ? a.size() - b.size() + 1 : 0, Rational(0));
-  while (a.size() >= b.size() && !a.empty()) {
-    std::size_t shift = a.size() - b.size();
-    Rational f = a.back() / b.back();
-    q[shift] = f;
-    for (std::size_t i = 0; i < b.size(); ++i) a[shift + i] -= f * b[i];
-    a = trimmed(a);
-  }
-  return q;
-}
-
-Poly gcd(Poly a, Poly b)
-{
-  a = trimmed(a), b = trimmed(b);
-  while (!b.empty()) {
-    divide(a, b);
-    std::swap(a, b);
-  }
-  return a;
-}
+using coefficients::Poly;
+using coefficients::divide;
+using coefficients::gcd;
+using coefficients::trimmed;
 
 // The multipliers divided by their common factor, signed to keep their
 // signs at s: cofactors can share a factor that vanishes at a piece's end

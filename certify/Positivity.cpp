@@ -55,10 +55,6 @@ bool positive_on(const std::vector<Rational>& p, const Algebraic& a, const Algeb
   return c.size() == 2 && positive_between(p, c);
 }
 
-} // namespace clash4d
-
-namespace clash4d {
-
 bool positive_after(const std::vector<Rational>& p, const Algebraic& a, const Algebraic& b)
 {
   if (is_zero_polynomial(p) || sign_at(p, b) != CGAL::POSITIVE) return false;
