@@ -53,7 +53,11 @@ Rational six_volume(const Piece& p)
 Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits)
 {
   if (mesh.convex) return hull_of(mesh.vertices, file_name);
+  return decomposed_solid(mesh, file_name, limits);
+}
 
+Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits)
+{
   // Each shell (connected surface) encloses a volume, whatever its
   // orientation: CGAL's Nef from a polygon mesh reads it so. The shells do
   // not cross (check_mesh), so they nest, and the solid is the points inside

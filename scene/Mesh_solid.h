@@ -14,6 +14,10 @@ namespace clash4d {
 // file_name: exit 3 beyond limits.pieces convex pieces.
 Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits = Mesh_limits());
 
+// A non-convex checked mesh as the union of CGAL's convex pieces, each the
+// hull of its vertices (what mesh_solid does for a mesh that is not convex).
+Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits = Mesh_limits());
+
 // read_mesh_file, check_mesh and mesh_solid in turn.
 Solid read_mesh_solid(const std::string& path, const std::string& file_name, const Mesh_limits& limits = Mesh_limits());
 

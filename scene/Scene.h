@@ -4,6 +4,7 @@
 
 #include "numbers/Approximation.h"
 #include "numbers/Rational.h"
+#include "scene/Mesh_record.h"
 #include <array>
 #include <memory>
 #include <string>
@@ -100,6 +101,7 @@ struct Scene {
   Rational t_lo, t_hi;
   std::vector<Scene_object> objects;
   std::vector<std::pair<int, int>> ignore;        // object indices, i < j
+  std::vector<Mesh_record> meshes;                // each mesh file read, once (docs/meshes.md)
 
   bool ignored(int i, int j) const
   {

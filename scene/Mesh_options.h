@@ -1,0 +1,34 @@
+// How a mesh file becomes a solid (docs/meshes.md, "Repairs, scale and
+// units"): chosen by the user in the scene, next to "mesh". Each option
+// left unset keeps the strict reading: a mesh the checks refuse is refused.
+#ifndef CLASH4D_SCENE_MESH_OPTIONS_H
+#define CLASH4D_SCENE_MESH_OPTIONS_H
+
+#include "numbers/Rational.h"
+#include <string>
+
+namespace clash4d {
+
+struct Mesh_options {
+  enum class Solid_rule {
+    Odd_shells,       // the points inside an odd number of shells; shells must not cross
+    Union_of_shells,  // the union of its shells, each a solid by itself; shells may cross
+    Hull              // the convex hull of the vertices the facets use
+  };
+  Rational scale = Rational(1);   // exact, > 0: "scale" times the unit's factor
+  bool triangulate = false;       // a facet not exactly planar or not strictly convex is cut into triangles
+  bool drop_zero_area = false;    // zero-area triangles dropped, their middle vertex spliced into the neighbour
+  Solid_rule rule = Solid_rule::Odd_shells;
+
+  // Text that tells options apart: part of the key of a mesh read once per
+  // scene, and of the decomposition cache's key.
+  std::string key() const
+  {
+    return to_string(scale) + (triangulate ? " triangulate" : "") + (drop_zero_area ? " drop-zero-area" : "") +
+           " rule " + std::to_string(static_cast<int>(rule));
+  }
+};
+
+} // namespace clash4d
+
+#endif
