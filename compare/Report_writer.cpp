@@ -742,7 +742,6 @@ canvas.view-canvas{border:1px solid #ccc;cursor:grab;width:560px;height:420px}.v
 .view-controls{margin:8px 0}.view-controls input{width:320px;vertical-align:middle}.view-controls button{margin:4px 4px 0 0}
 .dot{display:inline-block;width:10px;height:10px;border-radius:50%;margin-right:5px;vertical-align:middle}
 svg.time-axis{background:#fff;font-family:inherit;font-size:11px;display:block}svg .t-star-label{font-size:11px;fill:#333}
-table.turns caption{text-align:left;color:#555;font-size:12px;caption-side:top}
 .view-note{color:#555;font-size:12px}.view-msg{color:#a94442}.diagrams.zoom svg.qt{background:#fcfcf4}
 )";
 
@@ -892,8 +891,8 @@ std::string turns_html(const Report_case& rc, const Drawing& d)
   for (const Drawn_object& o : d.objects)
     if (o.turns()) rows += turn_rows(o, rc.scene.objects[o.index].motion.poses);
   if (rows.empty()) return "";
-  return "<table class=\"turns\">\n<caption>What turns where: the turn over each pose segment (degrees, about the "
-         "world axis through the centre c(t); doubles, display only)</caption>\n<tr><th>object</th><th>time</th>"
+  return "<p class=\"view-note\">What turns where: the turn over each pose segment (degrees, about the world axis "
+         "through the centre c(t); doubles, display only).</p>\n<table class=\"turns\">\n<tr><th>object</th><th>time</th>"
          "<th>turn</th><th>axis</th><th>centre c(t)</th></tr>\n" + rows + "</table>\n";
 }
 
