@@ -4,8 +4,10 @@
 #include "compare/Display_mesh.h"
 #include "compare/Scene_view.h"
 
-#include "model/Scene_model.h"
-#include "rotation/Rotating_check.h"
+#include "geometry/Rotation_matrix.h"
+#include "model/Model_builder.h"
+#include "model/Motion_path.h"
+#include "scene/Pose_motion.h"
 #include "float/Double_kernel.h"
 #include "scene/Files.h"
 #include "scene/Number_text.h"
@@ -272,10 +274,21 @@ struct Marker {
   std::string title;
 };
 
+// A pose in doubles (display only): R(q) p + c.
+struct Drawn_pose {
+  double t;
+  std::array<double, 3> c;
+  std::array<double, 4> q;   // w x y z, not normalised (R divides by |q|^2)
+};
+
 struct Drawn_object {
   std::string name, colour;
-  Box<double, 3> box;
-  Motion_path<double> motion;
+  std::size_t index;                // in the scene
+  Box<double, 3> box;               // of the shape (a turning object's as written)
+  Motion_path<double> motion;       // a translation's
+  std::vector<Drawn_pose> poses;    // a turning object's (its motion then at rest)
+  std::vector<std::array<double, 3>> vertices;   // a turning object's cells' vertices
+  bool turns() const { return !poses.empty(); }
 };
 
 struct Drawing {
@@ -328,29 +341,153 @@ std::vector<std::size_t> objects_to_draw(const Report_case& c)
   return chosen;
 }
 
+std::array<double, 3> doubles(const std::array<Rational, 3>& v)
+{
+  return {round_to_nearest(v[0]), round_to_nearest(v[1]), round_to_nearest(v[2])};
+}
+
+std::vector<Drawn_pose> drawn_poses(const Motion& m)
+{
+  std::vector<Drawn_pose> out;
+  for (const Pose& p : m.poses)
+    out.push_back({round_to_nearest(p.t), doubles(p.translate),
+                   {round_to_nearest(p.rotate[0]), round_to_nearest(p.rotate[1]), round_to_nearest(p.rotate[2]),
+                    round_to_nearest(p.rotate[3])}});
+  return out;
+}
+
+// The size of the drawn scene (boxes and pose centres), at least 1: an
+// unbounded turning object's cells are cut a thousand times further out.
+double drawing_scale(const Drawing& d)
+{
+  double s = 1;
+  auto take = [&](double v) { if (std::isfinite(v)) s = std::max(s, std::abs(v)); };
+  for (const Drawn_object& o : d.objects) {
+    for (int a = 0; a < 3; ++a) {
+      if (o.box.has_lo[a]) take(o.box.lo[a]);
+      if (o.box.has_hi[a]) take(o.box.hi[a]);
+    }
+    for (const Drawn_pose& p : o.poses) for (double v : p.c) take(v);
+  }
+  return s;
+}
+
+// The vertices of a turning object's convex cells (the shape as written):
+// the poses place them, and their extremes are its extent.
+std::vector<std::array<double, 3>> shape_vertices(const Csg_model<double>& csg, const Box<double, 3>& b, double far)
+{
+  std::array<double, 3> lo, hi;
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = b.has_lo[a] ? b.lo[a] - 1 : -far;
+    hi[a] = b.has_hi[a] ? b.hi[a] + 1 : far;
+  }
+  return display_mesh(csg, lo, hi).vertices;
+}
+
+// Each drawn object in doubles; a turning object's shape as written, which
+// its poses place (a translation's shape is where its D(t) moves it from).
 Drawing drawing_of(const Report_case& c)
 {
   Drawing d;
   d.object_count = c.scene.objects.size();
   d.markers = markers_of(c.comparison);
-  if (scene_rotates(c.scene)) {
-    d.error = "the extent-over-time diagrams draw translations only; an object of this scene turns";
-    return d;
-  }
   try {
     Double_kernel k;
-    Scene_model<Double_kernel> m = Scene_model<Double_kernel>::build(k, c.scene);
-    d.t_lo = m.t_lo;
-    d.t_hi = m.t_hi;
+    Model_builder<Double_kernel> builder(k);
+    d.t_lo = round_to_nearest(c.scene.t_lo);
+    d.t_hi = round_to_nearest(c.scene.t_hi);
+    std::vector<Csg_model<double>> shapes;
     for (std::size_t i : objects_to_draw(c)) {
-      const Object_model<double>& o = m.objects[i];
-      d.objects.push_back({o.name, object_colour(d.objects.size()), node_box(o.csg, 0), o.motion});
+      const Scene_object& o = c.scene.objects[i];
+      bool turns = o.motion.rotates();
+      shapes.push_back(builder.build(turns ? written_shape(o) : o.shape));
+      d.objects.push_back({o.name, object_colour(d.objects.size()), i, node_box(shapes.back(), 0),
+                           Motion_path<double>::build(k, o.motion), turns ? drawn_poses(o.motion) : std::vector<Drawn_pose>(), {}});
     }
+    double far = 1000 * drawing_scale(d);
+    for (std::size_t n = 0; n < shapes.size(); ++n)
+      if (d.objects[n].turns()) d.objects[n].vertices = shape_vertices(shapes[n], d.objects[n].box, far);
   } catch (const std::exception& e) {
     d.error = e.what();
     d.objects.clear();
   }
   return d;
+}
+
+// ---------------------------------------------------------------- extents
+
+// The pose law (spec): c and q linear between poses, held outside them.
+Drawn_pose pose_at(const std::vector<Drawn_pose>& poses, double t)
+{
+  if (t <= poses.front().t) return poses.front();
+  if (t >= poses.back().t) return poses.back();
+  auto b = std::upper_bound(poses.begin(), poses.end(), t, [](double u, const Drawn_pose& p) { return u < p.t; });
+  auto a = b - 1;
+  double s = (t - a->t) / (b->t - a->t);
+  Drawn_pose p{t, {}, {}};
+  for (int i = 0; i < 3; ++i) p.c[i] = (1 - s) * a->c[i] + s * b->c[i];
+  for (int i = 0; i < 4; ++i) p.q[i] = (1 - s) * a->q[i] + s * b->q[i];
+  return p;
+}
+
+// An object's extent along the axis at time t: infinite on a translated
+// box's unbounded side; a turning object's over its placed vertices, which
+// sets the frame only when the object is bounded (else its cells were cut
+// far out and the diagram clips them).
+struct Extent {
+  double lo, hi;
+  bool framed;
+};
+
+Extent extent_at(const Drawn_object& o, int axis, double t)
+{
+  if (!o.turns()) {
+    double shift = o.motion.displacement(t)[axis];
+    return {o.box.has_lo[axis] ? o.box.lo[axis] + shift : -INFINITY,
+            o.box.has_hi[axis] ? o.box.hi[axis] + shift : INFINITY, true};
+  }
+  Drawn_pose p = pose_at(o.poses, t);
+  auto r = rotation_matrix(p.q[0], p.q[1], p.q[2], p.q[3]);   // display only: doubles
+  Extent e{INFINITY, -INFINITY, o.box.bounded()};
+  for (const auto& v : o.vertices) {
+    double q = r[axis][0] * v[0] + r[axis][1] * v[1] + r[axis][2] * v[2] + p.c[axis];
+    e.lo = std::min(e.lo, q);
+    e.hi = std::max(e.hi, q);
+  }
+  return e;
+}
+
+// A turning object's extent is sampled this many times per piece between
+// pose times: fewer when there are many poses, so a page stays small.
+int samples_per_piece(std::size_t poses)
+{
+  return static_cast<int>(std::clamp<std::size_t>(8192 / std::max<std::size_t>(poses, 1), 8, 128));
+}
+
+// tL, the motion's breakpoints (or pose times) inside (tL, tH), tH; for a
+// turning object each piece sampled too (its extent is not linear there).
+std::vector<double> band_times(const Drawn_object& o, double t_lo, double t_hi)
+{
+  std::vector<double> ts{t_lo};
+  for (double t : o.motion.times)
+    if (t_lo < t && t < t_hi) ts.push_back(t);
+  for (const Drawn_pose& p : o.poses)
+    if (t_lo < p.t && p.t < t_hi) ts.push_back(p.t);
+  ts.push_back(t_hi);
+  if (!o.turns()) return ts;
+  int n = samples_per_piece(o.poses.size());
+  std::vector<double> dense;
+  for (std::size_t i = 0; i + 1 < ts.size(); ++i)
+    for (int k = 0; k < n; ++k) dense.push_back(ts[i] + (ts[i + 1] - ts[i]) * k / n);
+  dense.push_back(t_hi);
+  return dense;
+}
+
+bool drawable(const Drawn_object& o, int axis)
+{
+  if (o.turns()) return !o.vertices.empty();
+  const Box<double, 3>& b = o.box;
+  return !b.empty && !(b.has_lo[axis] && b.has_hi[axis] && b.hi[axis] < b.lo[axis]);
 }
 
 // ---------------------------------------------------------------- q-t diagrams
@@ -363,32 +500,16 @@ struct Frame {
   double y(double t) const { return top + (t_hi - t) / (t_hi - t_lo) * (height - top - bottom); }
 };
 
-// tL, the motion's breakpoints inside (tL, tH), tH.
-std::vector<double> band_times(const Motion_path<double>& m, double t_lo, double t_hi)
-{
-  std::vector<double> ts{t_lo};
-  for (double t : m.times)
-    if (t_lo < t && t < t_hi) ts.push_back(t);
-  ts.push_back(t_hi);
-  return ts;
-}
-
-bool drawable(const Box<double, 3>& b, int axis)
-{
-  return !b.empty && !(b.has_lo[axis] && b.has_hi[axis] && b.hi[axis] < b.lo[axis]);
-}
-
 // The range of q over every bounded band edge and marker, padded.
 Frame frame_of(const Drawing& d, int axis)
 {
   double lo = INFINITY, hi = -INFINITY;
   auto take = [&](double q) { if (std::isfinite(q)) { lo = std::min(lo, q); hi = std::max(hi, q); } };
   for (const Drawn_object& o : d.objects) {
-    if (!drawable(o.box, axis)) continue;
-    for (double t : band_times(o.motion, d.t_lo, d.t_hi)) {
-      double shift = o.motion.displacement(t)[axis];
-      if (o.box.has_lo[axis]) take(o.box.lo[axis] + shift);
-      if (o.box.has_hi[axis]) take(o.box.hi[axis] + shift);
+    if (!drawable(o, axis)) continue;
+    for (double t : band_times(o, d.t_lo, d.t_hi)) {
+      Extent e = extent_at(o, axis, t);
+      if (e.framed) { take(e.lo); take(e.hi); }
     }
   }
   for (const Marker& m : d.markers) take(m.point[axis]);
@@ -401,22 +522,26 @@ Frame frame_of(const Drawing& d, int axis)
 std::string coordinate(double v) { return format("%.2f", v); }
 
 // An object's space-time extent along the axis: a polygon through tL, every
-// breakpoint and tH, lower edge upwards then upper edge downwards.
+// breakpoint (a turning object's samples) and tH, lower edge upwards then
+// upper edge downwards; an unbounded side at the frame's edge.
 std::string band_polygon(const Drawn_object& o, int axis, const Frame& f, double t_lo, double t_hi)
 {
-  std::vector<double> ts = band_times(o.motion, t_lo, t_hi);
+  std::vector<double> ts = band_times(o, t_lo, t_hi);
+  std::vector<Extent> es;
+  for (double t : ts) es.push_back(extent_at(o, axis, t));
   std::string points;
-  auto edge = [&](double t, bool upper) {
-    bool bounded = upper ? o.box.has_hi[axis] : o.box.has_lo[axis];
-    double q = bounded ? (upper ? o.box.hi[axis] : o.box.lo[axis]) + o.motion.displacement(t)[axis]
-                       : (upper ? f.q_hi : f.q_lo);
-    points += coordinate(f.x(q)) + "," + coordinate(f.y(t)) + " ";
+  auto edge = [&](std::size_t i, bool upper) {
+    double q = upper ? es[i].hi : es[i].lo;
+    if (!std::isfinite(q)) q = upper ? f.q_hi : f.q_lo;
+    points += coordinate(f.x(q)) + "," + coordinate(f.y(ts[i])) + " ";
   };
-  for (double t : ts) edge(t, false);
-  for (auto it = ts.rbegin(); it != ts.rend(); ++it) edge(*it, true);
+  for (std::size_t i = 0; i < ts.size(); ++i) edge(i, false);
+  for (std::size_t i = ts.size(); i-- > 0;) edge(i, true);
+  std::string note = std::string(o.box.bounded() ? "" : " (unbounded, clipped)") +
+                     (o.turns() ? " (turns: extent of its vertices under the poses, sampled)" : "");
   return "<polygon points=\"" + points + "\" fill=\"" + o.colour + "\" fill-opacity=\"0.35\" stroke=\"" +
-         o.colour + "\" stroke-width=\"1.5\"><title>" + escape(o.name) + (o.box.bounded() ? "" : " (unbounded, clipped)") +
-         "</title></polygon>\n";
+         o.colour + "\" stroke-width=\"1.5\"" + (o.turns() ? " class=\"turning\"" : "") + "><title>" +
+         escape(o.name + note) + "</title></polygon>\n";
 }
 
 double nice_step(double span, int wanted)
@@ -537,8 +662,12 @@ std::string svg_diagram(const Drawing& d, int axis, const std::string& id, const
   out << "<clipPath id=\"" << id << "\"><rect x=\"" << x0 << "\" y=\"" << y0 << "\" width=\""
       << Frame::width - Frame::left - Frame::right << "\" height=\"" << Frame::height - Frame::top - Frame::bottom
       << "\"/></clipPath>\n" << svg_axes(f, q_name, zoom.has_value()) << "<g clip-path=\"url(#" << id << ")\">\n";
+  // A zoom's bands over its window and as much again each side (clipped):
+  // a turning object's samples then fall where they show.
+  double wt = f.t_hi - f.t_lo;
+  double t_lo = zoom ? std::max(d.t_lo, f.t_lo - wt) : d.t_lo, t_hi = zoom ? std::min(d.t_hi, f.t_hi + wt) : d.t_hi;
   for (const Drawn_object& o : d.objects)
-    if (drawable(o.box, axis)) out << band_polygon(o, axis, f, d.t_lo, d.t_hi);
+    if (drawable(o, axis) && t_lo <= t_hi) out << band_polygon(o, axis, f, t_lo, t_hi);
   out << "</g>\n";
   if (!zoom) out << svg_span(f, d.t_lo, d.t_hi);
   // Markers unclipped (clipped in a zoom), the exact witness last so nothing hides it.
@@ -572,7 +701,7 @@ std::string legend(const Drawing& d)
   std::string out = "<div class=\"legend\">";
   for (const Drawn_object& o : d.objects)
     out += "<span class=\"item\"><span class=\"swatch\" style=\"background:" + o.colour + "\"></span>" +
-           escape(o.name) + (o.box.bounded() ? "" : " (unbounded, clipped)") + "</span>";
+           escape(o.name) + (o.box.bounded() ? "" : " (unbounded, clipped)") + (o.turns() ? " (turns)" : "") + "</span>";
   bool kinds[3] = {false, false, false};
   for (const Marker& m : d.markers) kinds[static_cast<int>(m.kind)] = true;
   if (kinds[0]) out += "<span class=\"item\"><span class=\"mark-witness\">\xE2\x97\x8F</span>exact witness</span>";
@@ -612,6 +741,7 @@ code.whole,.whole{white-space:nowrap;word-break:normal}
 canvas.view-canvas{border:1px solid #ccc;cursor:grab;width:560px;height:420px}.view-side{max-width:600px}
 .view-controls{margin:8px 0}.view-controls input{width:320px;vertical-align:middle}.view-controls button{margin:4px 4px 0 0}
 .dot{display:inline-block;width:10px;height:10px;border-radius:50%;margin-right:5px;vertical-align:middle}
+svg.time-axis{background:#fff;font-family:inherit;font-size:11px;display:block}svg .t-star-label{font-size:11px;fill:#333}
 .view-note{color:#555;font-size:12px}.view-msg{color:#a94442}.diagrams.zoom svg.qt{background:#fcfcf4}
 )";
 
@@ -621,6 +751,151 @@ std::string cell(const std::string& content, const char* cls = "")
 }
 
 std::string number_cell(long n) { return cell(std::to_string(n), "n"); }
+
+// ---------------------------------------------------------------- time axis
+
+// The exact t* the page marks, with its name: regularised, else the closed
+// first contact (as the 3D view's "exact t*"); none without one.
+std::optional<std::pair<std::string, std::string>> t_star_of(const Comparison& c)
+{
+  const Subject_row* ref = c.reference();
+  const Subject_row* closed = c.reference_in("closed");
+  if (ref && ref->earliest) return std::make_pair(std::string("t*"), ref->earliest->t);
+  if (closed && closed->earliest) return std::make_pair(std::string("t* (closed)"), closed->earliest->t);
+  return std::nullopt;
+}
+
+struct Time_frame {
+  double t_lo, t_hi;
+  static constexpr double width = 1092, height = 56, left = 56, right = 28, y = 30;
+  double x(double t) const { return left + (t - t_lo) / (t_hi - t_lo) * (width - left - right); }
+};
+
+// A turning object's pose times on the axis, in its colour.
+std::string svg_pose_ticks(const Report_case& rc, const Drawing& d, const Time_frame& f)
+{
+  std::string out;
+  for (const Drawn_object& o : d.objects)
+    for (const Pose& p : rc.scene.objects[o.index].motion.poses) {
+      if (!o.turns()) break;
+      double t = round_to_nearest(p.t), x = f.x(t), y = Time_frame::y;
+      if (t < d.t_lo || t > d.t_hi) continue;
+      out += "<polygon points=\"" + coordinate(x - 5) + "," + coordinate(y - 9) + " " + coordinate(x + 5) + "," +
+             coordinate(y - 9) + " " + coordinate(x) + "," + coordinate(y - 1) + "\" fill=\"" + o.colour +
+             "\" class=\"pose-time\"><title>" + escape(o.name + ": pose at t = " + to_string(p.t)) + "</title></polygon>\n";
+    }
+  return out;
+}
+
+// t* at its double (drawing only); its exact text in the title and data-exact.
+std::string svg_t_star(const std::string& name, const std::string& text, const Time_frame& f)
+{
+  std::optional<double> t = decimal_value(text);
+  if (!t) return "";
+  double x = f.x(*t), y = Time_frame::y;
+  const char* anchor = x > Time_frame::width - 110 ? "end" : x < Time_frame::left + 50 ? "start" : "middle";
+  return "<g class=\"t-star\" data-t=\"" + format("%.17g", *t) + "\" data-exact=\"" + escape(text) + "\"><title>" +
+         escape("exact " + name + " = " + text) + "</title>" + svg_line(x, 4, x, y + 8, "earliest-line") +
+         "<polygon points=\"" + coordinate(x) + "," + coordinate(y - 6) + " " + coordinate(x + 6) + "," + coordinate(y) +
+         " " + coordinate(x) + "," + coordinate(y + 6) + " " + coordinate(x - 6) + "," + coordinate(y) +
+         "\" class=\"earliest\"/>" + svg_text(x, 12, anchor, name + " \xE2\x89\x88 " + format("%.6g", *t), "t-star-label") +
+         "</g>\n";
+}
+
+// The scene's time axis [tL, tH]: ticks, each turning object's pose times
+// and the exact t*, with a line giving t*'s exact text.
+std::string time_axis_html(const Report_case& rc, const Drawing& d)
+{
+  if (!(d.t_lo < d.t_hi)) return "";
+  Time_frame f{d.t_lo, d.t_hi};
+  double x0 = Time_frame::left, x1 = Time_frame::width - Time_frame::right, y = Time_frame::y;
+  std::ostringstream out;
+  out << "<svg class=\"time-axis\" width=\"" << Time_frame::width << "\" height=\"" << Time_frame::height
+      << "\" viewBox=\"0 0 " << Time_frame::width << " " << Time_frame::height << "\" role=\"img\" aria-label=\"time axis\">\n"
+      << svg_line(x0, y, x1, y, "frame") << svg_text(x0 - 10, y + 4, "end", "t", "axis");
+  Ticks tk = ticks(d.t_lo, d.t_hi, x1 - x0, true);
+  for (double t : tk.values) out << svg_line(f.x(t), y, f.x(t), y + 5, "frame") << svg_text(f.x(t), y + 18, "middle", tick_text(t, tk.step));
+  out << svg_pose_ticks(rc, d, f);
+  auto t_star = t_star_of(rc.comparison);
+  if (t_star) out << svg_t_star(t_star->first, t_star->second, f);
+  out << "</svg>\n<p class=\"view-note\">Time axis over [tL, tH]";
+  if (t_star) out << "; \xE2\x97\x86 exact " << escape(t_star->first) << " = " << number_html(t_star->second);
+  if (std::any_of(d.objects.begin(), d.objects.end(), [](const Drawn_object& o) { return o.turns(); }))
+    out << "; \xE2\x96\xBE a turning object's pose times";
+  out << ".</p>\n";
+  return out.str();
+}
+
+// ---------------------------------------------------------------- what turns where
+
+// The turn from pose a to pose b as q goes linearly between them: q_b q_a*
+// is (cos h, sin h u) up to scale, so the world axis is u and the angle 2h,
+// past 180 degrees when q_a . q_b < 0 (the longer way round).
+std::pair<std::array<double, 3>, double> turn_between(const std::array<double, 4>& a, const std::array<double, 4>& b)
+{
+  double w = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+  std::array<double, 3> v{a[0] * b[1] - b[0] * a[1] - (b[2] * a[3] - b[3] * a[2]),
+                          a[0] * b[2] - b[0] * a[2] - (b[3] * a[1] - b[1] * a[3]),
+                          a[0] * b[3] - b[0] * a[3] - (b[1] * a[2] - b[2] * a[1])};
+  double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if (n > 0) for (double& e : v) e /= n;
+  return {v, 2 * std::atan2(n, w) * 180 / M_PI};
+}
+
+std::string short_number(double x)
+{
+  std::string s = format("%.4g", x);
+  return s == "-0" ? "0" : s;
+}
+
+std::string exact_point(const std::array<Rational, 3>& c)
+{
+  return "(" + to_string(c[0]) + ", " + to_string(c[1]) + ", " + to_string(c[2]) + ")";
+}
+
+// A row: the object, when, the angle turned, its axis, the centre c(t).
+std::string turn_row(const std::string& name, const std::string& when, const std::array<double, 4>& a,
+                     const std::array<double, 4>& b, const std::string& centre)
+{
+  auto [axis, degrees] = turn_between(a, b);
+  bool turns = degrees > 0;
+  std::string axis_text = turns ? "(" + short_number(axis[0]) + ", " + short_number(axis[1]) + ", " + short_number(axis[2]) + ")" : dash;
+  return "<tr>" + cell(escape(name)) + cell(when) + cell(short_number(degrees) + "\xC2\xB0", "n whole") +
+         cell(axis_text, "whole") + cell("<span class=\"mono\">" + escape(centre) + "</span>") + "</tr>\n";
+}
+
+// One turning object's rows: its orientation at the first pose (from the
+// shape as written), then each pose segment (at most 40 shown).
+std::string turn_rows(const Drawn_object& o, const std::vector<Pose>& poses)
+{
+  const std::vector<Drawn_pose>& p = o.poses;
+  std::string out = turn_row(o.name, "at t = " + number_html(to_string(poses[0].t)) + " (first pose)", {1, 0, 0, 0},
+                             p[0].q, "c = " + exact_point(poses[0].translate));
+  std::size_t shown = std::min<std::size_t>(poses.size() - 1, 40);
+  for (std::size_t i = 0; i < shown; ++i) {
+    const Pose &a = poses[i], &b = poses[i + 1];
+    std::string centre = a.translate == b.translate ? exact_point(a.translate) + ", fixed"
+                                                    : exact_point(a.translate) + " \xE2\x86\x92 " + exact_point(b.translate);
+    out += turn_row(o.name, "[" + number_html(to_string(a.t)) + ", " + number_html(to_string(b.t)) + "]", p[i].q, p[i + 1].q, centre);
+  }
+  if (shown + 1 < poses.size())
+    out += "<tr><td colspan=\"5\">" + escape(o.name) + ": " + std::to_string(poses.size() - 1 - shown) + " more pose segments</td></tr>\n";
+  return out;
+}
+
+// "What turns where": per turning object and pose segment, the angle turned
+// (q linear between poses), the world axis and the path of the centre.
+std::string turns_html(const Report_case& rc, const Drawing& d)
+{
+  std::string rows;
+  for (const Drawn_object& o : d.objects)
+    if (o.turns()) rows += turn_rows(o, rc.scene.objects[o.index].motion.poses);
+  if (rows.empty()) return "";
+  return "<p class=\"view-note\">What turns where: the turn over each pose segment (degrees, about the world axis "
+         "through the centre c(t); doubles, display only).</p>\n<table class=\"turns\">\n<tr><th>object</th><th>time</th>"
+         "<th>turn</th><th>axis</th><th>centre c(t)</th></tr>\n" + rows + "</table>\n";
+}
+
 
 // Fuzz findings: per subject, its disagreements and faults by family.
 std::string family_html(const json& s)
@@ -812,14 +1087,14 @@ std::string case_html(const Report_case& rc, std::size_t index)
   out << "</table>\n" << details_html(c);
   if (!rc.scene.objects.empty()) out << scene_view_html(rc, index, objects_to_draw(rc));
   Drawing d = drawing_of(rc);
-  // Nothing to draw (a turning scene): one line, not three empty diagrams.
+  // Nothing to draw: one line, not three empty diagrams.
   if (!d.error.empty()) {
     out << "<p class=\"view-note\">No q-t diagrams: " << escape(d.error) << ".</p>\n</section>\n";
     return out.str();
   }
-  out << "<div class=\"diagrams\">\n";
+  out << time_axis_html(rc, d) << "<div class=\"diagrams\">\n";
   for (int axis = 0; axis < 3; ++axis) out << svg_diagram(d, axis, "clip-" + std::to_string(index) + "-" + "xyz"[axis]);
-  out << "</div>\n" << zoom_html(d, index) << legend(d) << "</section>\n";
+  out << "</div>\n" << zoom_html(d, index) << legend(d) << turns_html(rc, d) << "</section>\n";
   return out.str();
 }
 
@@ -836,7 +1111,8 @@ std::string page_html(const std::vector<Report_case>& cases, const json& summary
       << "<style>" << page_style << "</style>\n</head>\n<body>\n<h1>clash4d verification report</h1>\n"
       << "<p>Every subject's answer held against the exact one in the subject's own semantics (regularised: touching "
       << "is not a collision; closed: touching counts; a CCD query is always closed). "
-      << "Diagrams: each object's extent along one axis over time. 3D views: each object as the union of the "
+      << "Diagrams: each object's extent along one axis over time (a turning object's over its vertices as its "
+      << "poses place them, sampled), above them the time axis with the exact t*. 3D views: each object as the union of the "
       << "convex cells of its CSG formula, placed by its motion at the chosen time. Both in doubles, for "
       << "presentation only: no answer is read from them.</p>\n";
   if (!three) out << "<p class=\"view-msg\">The 3D views need three.js (three.min.js beside this page), which was not found when "

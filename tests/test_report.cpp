@@ -2,6 +2,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "compare/Ccd_comparer.h"
+#include "compare/Comparer.h"
 #include "compare/Decimal_text.h"
 #include "compare/Display_mesh.h"
 #include "compare/Report_writer.h"
@@ -183,8 +184,11 @@ BOOST_AUTO_TEST_CASE(junit_counts_and_escaping)
 BOOST_AUTO_TEST_CASE(html_is_self_contained_and_escaped)
 {
   std::string h = read("index.html");
-  // Three diagrams per scene, and three zoomed on the ram's contact (the one t*).
-  BOOST_TEST(count(h, "<svg") == 12u);
+  // Three diagrams per scene, and three zoomed on the ram's contact (the one
+  // t*); a time axis per scene, t* marked on the ram's.
+  BOOST_TEST(count(h, "<svg class=\"qt\"") == 12u);
+  BOOST_TEST(count(h, "<svg class=\"time-axis\"") == 3u);
+  BOOST_TEST(count(h, "<g class=\"t-star\" data-t=\"2\" data-exact=\"2\">") == 1u);
   BOOST_TEST(count(h, "http://") == 0u);
   BOOST_TEST(count(h, "https://") == 0u);
   // One 3D view per scene; three.js from the report folder, then the views' script.
@@ -253,7 +257,8 @@ BOOST_AUTO_TEST_CASE(ccd_queries_have_rows_beside_scenes)
   BOOST_TEST(h.find("<td>v</td><td><span class=\"mono\">(<code class=\"whole\">1/4</code> <span class=\"approx\">(\xE2\x89\x88 0.25)</span>, "
                     "<code class=\"whole\">1/4</code> <span class=\"approx\">(\xE2\x89\x88 0.25)</span>, <code class=\"whole\">1</code>)</span></td>") != std::string::npos);
   BOOST_TEST(h.find("<dt>family</dt><dd>vf-face</dd>") != std::string::npos);
-  BOOST_TEST(count(h, "<svg") == 6u);   // the scene's diagrams only (and their zoom on its t*)
+  BOOST_TEST(count(h, "<svg class=\"qt\"") == 6u);   // the scene's diagrams only (and their zoom on its t*)
+  BOOST_TEST(count(h, "<svg class=\"time-axis\"") == 1u);   // the scene's, none for the query
   fs::remove_all(dir);
 }
 
@@ -416,5 +421,81 @@ BOOST_AUTO_TEST_CASE(tick_labels_are_decimals_that_do_not_overlap)
     BOOST_TEST((123456788 <= value && value <= 123456793));
     if (i) BOOST_TEST(labels[i].first - labels[i - 1].first >= 6.0 * labels[i].second.size());
   }
+  fs::remove_all(dir);
+}
+
+// ---------------------------------------------------------------- a turning scene
+
+namespace {
+
+// The root of the fixture's expected t* polynomial (ascending coefficients,
+// degree 2) in its interval, by the quadratic formula: known apart from the
+// report's own reading of the comparison.
+double expected_t_star(const json& t)
+{
+  double c = std::stod(t["poly"][0].get<std::string>()), b = std::stod(t["poly"][1].get<std::string>()),
+         a = std::stod(t["poly"][2].get<std::string>());
+  double lo = decimal_value(t["between"][0].get<std::string>()).value(),
+         hi = decimal_value(t["between"][1].get<std::string>()).value();
+  for (double s : {-1.0, 1.0}) {
+    double r = (-b + s * std::sqrt(b * b - 4 * a * c)) / (2 * a);
+    if (lo < r && r < hi) return r;
+  }
+  return NAN;
+}
+
+std::string polygon_points(const std::string& h, const std::string& title)
+{
+  std::size_t at = h.rfind("<polygon points=\"", h.find("<title>" + title));
+  std::size_t from = at + std::string("<polygon points=\"").size();
+  return h.substr(from, h.find('"', from) - from);
+}
+
+} // namespace
+
+// square_into_slab (q from (1,0,0,0) to (1,0,0,1) over [0, 1]): the time
+// axis marks t* = (5 - sqrt 14)/11 at its double with its exact text, the
+// square's extent is drawn sampled under its poses, and the table says it
+// turns 90 degrees about z, its centre fixed; the 3D view places it by its poses.
+BOOST_AUTO_TEST_CASE(a_turning_scene_is_plotted)
+{
+  const std::string fixtures = std::string(CLASH4D_FIXTURES) + "/rotation/";
+  Scene scene = read_scene_file(fixtures + "square_into_slab.json");
+  Compare_options o;
+  o.earliest = true;   // as clash4d report asks
+  Report_case c{"square_into_slab.json", scene, compare_scene(scene, "square_into_slab.json", o), ""};
+  fs::path dir = fs::temp_directory_path() / ("clash4d_test_report_turning_" + std::to_string(::getpid()));
+  write_report({c}, (dir / "out").string());
+  std::string h = slurp(dir / "out" / "index.html");
+
+  json expected = json::parse(slurp(fixtures + "expected.json"))["square_into_slab.json"]["regularised"]["t"];
+  double t_star = expected_t_star(expected);
+  BOOST_TEST(std::abs(t_star - 0.11439478302055078) < 1e-15);
+  std::smatch m;
+  BOOST_TEST_REQUIRE(std::regex_search(h, m, std::regex("<g class=\"t-star\" data-t=\"([^\"]+)\" data-exact=\"([^\"]+)\">")));
+  BOOST_TEST(std::abs(std::stod(m[1]) - t_star) < 1e-15);
+  BOOST_TEST(m[2].str().rfind("root of", 0) == 0u);   // irrational: the algebraic number's text
+  BOOST_TEST(h.find("t* \xE2\x89\x88 0.114395</text>") != std::string::npos);
+  BOOST_TEST(count(h, "class=\"pose-time\"") == 2u);   // the square's poses at t = 0 and 1
+
+  // The square's band in each diagram and its zoom, sampled densely (more
+  // than 64 times along each edge); the slab's as a translation's (4 points).
+  const std::string turning = "square (turns: extent of its vertices under the poses, sampled)";
+  BOOST_TEST(count(h, "class=\"turning\"><title>" + turning + "</title>") == 6u);
+  BOOST_TEST(count(polygon_points(h, turning), ",") > 2 * 64u);
+  BOOST_TEST(count(polygon_points(h, "slab"), ",") == 4u);
+  BOOST_TEST(h.find("No q-t diagrams") == std::string::npos);
+
+  // What turns where: 90 degrees about z over [0, 1], the centre fixed.
+  std::string turns = h.substr(h.find("<table class=\"turns\">"));
+  turns = turns.substr(0, turns.find("</table>"));
+  BOOST_TEST(turns.find("<tr><td>square</td><td>[<code class=\"whole\">0</code>, <code class=\"whole\">1</code>]</td>"
+                        "<td class=\"n whole\">90\xC2\xB0</td><td class=\"whole\">(0, 0, 1)</td>"
+                        "<td><span class=\"mono\">(0, 0, 0), fixed</span></td></tr>") != std::string::npos);
+  BOOST_TEST(turns.find("<td>slab</td>") == std::string::npos);
+
+  // The 3D view's keys are the poses (the page evaluates their law).
+  json view = scene_view_data(c, {0, 1});
+  BOOST_TEST(view["objects"][0]["keys"][1]["q"] == json::parse("[1.0, 0.0, 0.0, 1.0]"));
   fs::remove_all(dir);
 }
