@@ -30,13 +30,17 @@ std::string text(const P3& p)
 
 struct Fail {
   const std::string& file;
+  const std::vector<int>& file_facet;   // the file's facet of each facet checked (empty: the same)
+  std::string facet(int f) const
+  {
+    return "facet " + std::to_string(file_facet.empty() ? f : file_facet[f]);
+  }
+  int file_index(int f) const { return file_facet.empty() ? f : file_facet[f]; }
   [[noreturn]] void operator()(const std::string& where, const std::string& what) const
   {
     throw Input_error(where.empty() ? file : file + ": " + where, what);
   }
 };
-
-std::string facet_place(int f) { return "facet " + std::to_string(f); }
 
 // One side of an edge: the facet and whether it runs from the smaller
 // vertex id to the larger.
@@ -56,47 +60,6 @@ using Surface = CGAL::Surface_mesh<Exact_geometry::Point_3>;
 using Facets = std::vector<std::vector<int>>;                         // vertex ids, per facet
 using Edges = std::map<std::pair<int, int>, std::vector<Edge_use>>;  // undirected edge -> its sides
 
-// Equal points are one vertex (STL writes each facet's own copies): the
-// distinct points go to out.vertices, and the facets are given by their ids.
-Facets merge_vertices(const Mesh& mesh, const Fail& fail, Checked_mesh& out)
-{
-  std::map<P3, int> id_of;
-  std::vector<int> id(mesh.vertices.size(), -1);
-  Facets facets(mesh.facets.size());
-  for (std::size_t f = 0; f < mesh.facets.size(); ++f)
-    for (int v : mesh.facets[f]) {
-      if (v < 0 || static_cast<std::size_t>(v) >= mesh.vertices.size())
-        fail(facet_place(static_cast<int>(f)), "vertex index " + std::to_string(v) + " out of range");
-      if (id[v] < 0) {
-        auto it = id_of.emplace(mesh.vertices[v], static_cast<int>(out.vertices.size())).first;
-        if (it->second == static_cast<int>(out.vertices.size())) out.vertices.push_back(mesh.vertices[v]);
-        id[v] = it->second;
-      }
-      facets[f].push_back(id[v]);
-    }
-  return facets;
-}
-
-// A polygon of more than three vertices: planar (normal N) and strictly
-// convex, every other vertex strictly left of each edge.
-void check_polygon(const std::vector<int>& F, int fi, const P3& N, const std::vector<P3>& V, const Fail& fail)
-{
-  std::size_t n = F.size();
-  for (std::size_t i = 1; i < n; ++i)
-    if (!CGAL::is_zero(dot(N, sub(V[F[i]], V[F[0]]))))
-      fail(facet_place(fi), "not planar: vertex " + std::to_string(i) + " " + text(V[F[i]]) + " is off the plane of the facet");
-  for (std::size_t i = 0; i < n; ++i) {
-    const P3 &a = V[F[i]], &b = V[F[(i + 1) % n]];
-    for (std::size_t j = 0; j < n; ++j) {
-      if (j == i || j == (i + 1) % n) continue;
-      if (CGAL::sign(dot(cross(sub(b, a), sub(V[F[j]], a)), N)) != CGAL::POSITIVE)
-        fail(facet_place(fi), "not a strictly convex polygon (vertices " + std::to_string(i) + ", " +
-                                  std::to_string((i + 1) % n) + " and " + std::to_string(j) +
-                                  "): facets must be strictly convex, with no three vertices on a line");
-    }
-  }
-}
-
 // Facets: distinct vertices, non-zero area, planar, strictly convex. Their
 // normals (Newell's, unnormalised), and their fans of triangles in out.
 std::vector<P3> check_facets(const Facets& facets, const Fail& fail, Checked_mesh& out)
@@ -109,18 +72,21 @@ std::vector<P3> check_facets(const Facets& facets, const Fail& fail, Checked_mes
     std::set<int> seen;
     for (std::size_t i = 0; i < F.size(); ++i)
       if (!seen.insert(F[i]).second)
-        fail(facet_place(fi), "vertex " + std::to_string(i) + " " + text(V[F[i]]) + " repeats an earlier vertex of the facet");
+        fail(fail.facet(fi), "vertex " + std::to_string(i) + " " + text(V[F[i]]) + " repeats an earlier vertex of the facet");
     P3 N{Rational(0), Rational(0), Rational(0)};
     for (std::size_t i = 0; i < F.size(); ++i) {
       P3 c = cross(V[F[i]], V[F[(i + 1) % F.size()]]);
       for (int k = 0; k < 3; ++k) N[k] += c[k];
     }
-    if (is_zero(N)) fail(facet_place(fi), "zero area (its vertices are collinear)");
-    if (F.size() > 3) check_polygon(F, fi, N, V, fail);
+    if (is_zero(N)) fail(fail.facet(fi), "zero area (its vertices are collinear; \"repair\": [\"drop-zero-area\"] drops it)");
+    if (F.size() > 3) {
+      std::string fault = polygon_fault(F, N, V);
+      if (!fault.empty()) fail(fail.facet(fi), fault);
+    }
     normal[f] = N;
     for (std::size_t i = 1; i + 1 < F.size(); ++i) {
       out.triangles.push_back({F[0], F[i], F[i + 1]});
-      out.facet_of.push_back(fi);
+      out.facet_of.push_back(fail.file_index(fi));
     }
   }
   return normal;
@@ -143,15 +109,15 @@ void check_edge_counts(const Edges& edges, const std::vector<P3>& V, const Fail&
   for (const auto& [e, uses] : edges)
     if (uses.size() > 2) {
       std::string list;
-      for (const auto& u : uses) list += (list.empty() ? "" : ", ") + std::to_string(u.facet);
+      for (const auto& u : uses) list += (list.empty() ? "" : ", ") + std::to_string(fail.file_index(u.facet));
       note(uses.front().facet, "edge shared by " + std::to_string(uses.size()) + " facets (" + list +
-                                   "): the mesh is not a manifold along " + edge_text(V, e));
+                                   "): the mesh is not a manifold along " + edge_text(V, e) + " (\"as\": \"hull\" takes the convex hull)");
     }
-  if (worst >= 0) fail(facet_place(worst), why);
+  if (worst >= 0) fail(fail.facet(worst), why);
   for (const auto& [e, uses] : edges)
     if (uses.size() == 1)
-      note(uses.front().facet, "edge not shared with any other facet: the mesh has a hole (it is not closed) along " + edge_text(V, e));
-  if (worst >= 0) fail(facet_place(worst), why);
+      note(uses.front().facet, "edge not shared with any other facet: the mesh has a hole (it is not closed) along " + edge_text(V, e) + " (\"as\": \"hull\" takes the convex hull)");
+  if (worst >= 0) fail(fail.facet(worst), why);
 }
 
 // Edges: each shared by exactly two facets, once in each direction (the
@@ -172,12 +138,12 @@ Edges check_edges(const Facets& facets, const std::vector<P3>& V, const Fail& fa
     if (uses[0].forward == uses[1].forward)
       for (int k = 0; k < 2; ++k) {
         int f = uses[k].facet, g = uses[1 - k].facet;
-        if (conflicts[f]++ == 0) example[f] = "facet " + std::to_string(g) + " across " + edge_text(V, e);
+        if (conflicts[f]++ == 0) example[f] = fail.facet(g) + " across " + edge_text(V, e);
       }
   auto most = std::max_element(conflicts.begin(), conflicts.end());
   if (*most > 0) {
     int f = static_cast<int>(most - conflicts.begin());
-    fail(facet_place(f), "oriented against its neighbours across " + std::to_string(*most) + " of its edges (" + example[f] +
+    fail(fail.facet(f), "oriented against its neighbours across " + std::to_string(*most) + " of its edges (" + example[f] +
                              "): a flipped facet, or facets not consistently oriented");
   }
   return edges;
@@ -210,8 +176,8 @@ void check_fans(const Facets& facets, const std::vector<P3>& V, const Fail& fail
     }
     if (fans > 1)
       fail("vertex " + text(V[v]), "the surface is pinched there: " + std::to_string(fans) +
-                                       " separate fans of facets meet at the point (facet " +
-                                       std::to_string(around[v].front().first) + " is in one)");
+                                       " separate fans of facets meet at the point (" +
+                                       fail.facet(around[v].front().first) + " is in one; \"shells\": \"union\" reads each fan's shell as a solid)");
   }
 }
 
@@ -241,7 +207,7 @@ void check_no_crossing(const Checked_mesh& m, const Fail& fail)
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {
     const auto& T = m.triangles[t];
     if (surface.add_face(handle[T[0]], handle[T[1]], handle[T[2]]) == Surface::null_face())
-      fail(facet_place(m.facet_of[t]), "the facet cannot be joined to its neighbours into one surface");
+      fail("facet " + std::to_string(m.facet_of[t]), "the facet cannot be joined to its neighbours into one surface");
     facet_of_face.push_back(m.facet_of[t]);
   }
   std::vector<std::pair<Surface::Face_index, Surface::Face_index>> crossing;
@@ -253,7 +219,7 @@ void check_no_crossing(const Checked_mesh& m, const Fail& fail)
     if (std::min(x, y) < std::min(a, b)) a = x, b = y;
   }
   if (a > b) std::swap(a, b);
-  fail(facet_place(a), "crosses facet " + std::to_string(b) + ": the surface intersects itself");
+  fail("facet " + std::to_string(a), "crosses facet " + std::to_string(b) + ": the surface intersects itself (\"shells\": \"union\" reads crossing shells as their union; \"as\": \"hull\" takes the convex hull)");
 }
 
 // Convex: one connected surface whose every edge is convex (the facet
@@ -279,14 +245,61 @@ bool is_convex(const Facets& facets, const Edges& edges, const std::vector<P3>& 
 
 } // namespace
 
+// Equal points are one vertex (STL writes each facet's own copies): the
+// distinct points a facet uses, in the order of first use.
+Mesh merged_points(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet)
+{
+  Fail fail{file_name, file_facet};
+  Mesh out;
+  std::map<P3, int> id_of;
+  std::vector<int> id(mesh.vertices.size(), -1);
+  out.facets.resize(mesh.facets.size());
+  for (std::size_t f = 0; f < mesh.facets.size(); ++f)
+    for (int v : mesh.facets[f]) {
+      if (v < 0 || static_cast<std::size_t>(v) >= mesh.vertices.size())
+        fail(fail.facet(static_cast<int>(f)), "vertex index " + std::to_string(v) + " out of range");
+      if (id[v] < 0) {
+        auto it = id_of.emplace(mesh.vertices[v], static_cast<int>(out.vertices.size())).first;
+        if (it->second == static_cast<int>(out.vertices.size())) out.vertices.push_back(mesh.vertices[v]);
+        id[v] = it->second;
+      }
+      out.facets[f].push_back(id[v]);
+    }
+  return out;
+}
+
+// Planar (normal N) and strictly convex: every other vertex strictly left of
+// each edge.
+std::string polygon_fault(const std::vector<int>& F, const P3& N, const std::vector<P3>& V)
+{
+  std::size_t n = F.size();
+  for (std::size_t i = 1; i < n; ++i)
+    if (!CGAL::is_zero(dot(N, sub(V[F[i]], V[F[0]]))))
+      return "not planar: vertex " + std::to_string(i) + " " + text(V[F[i]]) + " is off the plane of the facet" +
+             " (\"repair\": [\"triangulate\"] cuts it into triangles)";
+  for (std::size_t i = 0; i < n; ++i) {
+    const P3 &a = V[F[i]], &b = V[F[(i + 1) % n]];
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == i || j == (i + 1) % n) continue;
+      if (CGAL::sign(dot(cross(sub(b, a), sub(V[F[j]], a)), N)) != CGAL::POSITIVE)
+        return "not a strictly convex polygon (vertices " + std::to_string(i) + ", " + std::to_string((i + 1) % n) +
+               " and " + std::to_string(j) + "): facets must be strictly convex, with no three vertices on a line" +
+               " (\"repair\": [\"triangulate\"] cuts it into triangles)";
+    }
+  }
+  return {};
+}
+
 // The checks in order, each failing at the first fault it finds
 // (docs/meshes.md): facets, edges, vertices, volume, crossings.
-Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name)
+Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet)
 {
-  Fail fail{file_name};
+  Fail fail{file_name, file_facet};
   if (mesh.facets.empty()) fail("", "no facets");
   Checked_mesh out;
-  Facets facets = merge_vertices(mesh, fail, out);
+  Mesh merged = merged_points(mesh, file_name, file_facet);
+  out.vertices = std::move(merged.vertices);
+  const Facets& facets = merged.facets;
   std::vector<P3> normal = check_facets(facets, fail, out);
   Edges edges = check_edges(facets, out.vertices, fail);
   check_fans(facets, out.vertices, fail);

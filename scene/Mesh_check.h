@@ -22,7 +22,18 @@ struct Checked_mesh {
 
 // Throws Input_error (exit 2) with place "FILE_NAME: facet F" (or "vertex
 // ..." or "FILE_NAME") and what is wrong, e.g. "edge shared by 3 facets".
-Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name);
+// F is file_facet[f] for the mesh's facet f when given (a repaired mesh or
+// one shell of it, scene/Mesh_repair.h), so messages name the file's facet.
+Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet = {});
+
+// The mesh with equal points as one vertex and the points no facet uses
+// dropped; throws Input_error for a vertex index out of range.
+Mesh merged_points(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet = {});
+
+// Why a polygon of more than three vertices with Newell normal N is not a
+// facet the check accepts (not planar, or not strictly convex), or empty.
+std::string polygon_fault(const std::vector<int>& polygon, const std::array<Rational, 3>& N,
+                          const std::vector<std::array<Rational, 3>>& V);
 
 } // namespace clash4d
 

@@ -29,6 +29,13 @@ struct Mesh_options {
   }
 };
 
+struct Json_value;
+
+// The options written beside "mesh" in the solid object at path; throws
+// Input_error naming the member for an unknown key, unit, repair or word,
+// or a scale that is not positive.
+Mesh_options read_mesh_options(const Json_value& solid, const std::string& path);
+
 } // namespace clash4d
 
 #endif

@@ -1,6 +1,7 @@
 #include "scene/Mesh_solid.h"
 #include "scene/Hull_solid.h"
 #include "scene/Input_error.h"
+#include "scene/Mesh_repair.h"
 
 #include <CGAL/Cartesian.h>
 #include <CGAL/Nef_polyhedron_3.h>
@@ -119,7 +120,78 @@ Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, c
 
 Solid read_mesh_solid(const std::string& path, const std::string& file_name, const Mesh_limits& limits)
 {
-  return mesh_solid(check_mesh(read_mesh_file(path, file_name, limits), file_name), file_name, limits);
+  Mesh_record record;
+  return read_mesh_solid(path, file_name, Mesh_options(), record, limits);
+}
+
+namespace {
+
+int piece_count(const Solid& s) { return s.kind == Solid::Kind::Union ? static_cast<int>(s.children.size()) : 1; }
+
+// The solid of one checked surface, its pieces added to u.
+void add_pieces(const Repaired_mesh& m, const std::string& name, const Mesh_limits& limits, Mesh_record& record,
+                Solid& u)
+{
+  Checked_mesh checked = check_mesh(m.mesh, name, m.file_facet);
+  record.triangles += static_cast<int>(checked.triangles.size());
+  Solid s = mesh_solid(checked, name, limits);
+  if (s.kind == Solid::Kind::Union)
+    for (Solid& c : s.children) u.children.push_back(std::move(c));
+  else
+    u.children.push_back(std::move(s));
+  if (u.children.size() > limits.pieces)
+    throw Input_error(name, "the solid has more than the limit of " + std::to_string(limits.pieces) + " convex pieces",
+                      CLASH4D_EXIT_LIMIT);
+}
+
+// "shells": "union": each shell a solid by itself (checked alone, so shells
+// may cross one another), the solid their union.
+Solid union_of_shells(const Repaired_mesh& m, const std::string& file_name, const Mesh_limits& limits,
+                      Mesh_record& record)
+{
+  std::vector<Repaired_mesh> shells = shells_of(m);
+  Solid u;
+  u.kind = Solid::Kind::Union;
+  for (std::size_t k = 0; k < shells.size(); ++k)
+    add_pieces(shells[k], file_name + ": shell " + std::to_string(k) + " (with facet " +
+                              std::to_string(shells[k].file_facet.front()) + ")", limits, record, u);
+  return u.children.size() == 1 ? u.children.front() : u;
+}
+
+} // namespace
+
+Solid read_mesh_solid(const std::string& path, const std::string& file_name, const Mesh_options& options,
+                      Mesh_record& record, const Mesh_limits& limits)
+{
+  return repaired_solid(read_mesh_file(path, file_name, limits), file_name, options, record, limits);
+}
+
+Solid repaired_solid(const Mesh& file, const std::string& file_name, const Mesh_options& options, Mesh_record& record,
+                     const Mesh_limits& limits)
+{
+  record.facets = static_cast<int>(file.facets.size());
+  record.scale = to_string(options.scale);
+  Repaired_mesh m = repaired_mesh(file, options, file_name);
+  record.repairs = m.repairs;
+  Solid s;
+  switch (options.rule) {
+    case Mesh_options::Solid_rule::Hull:
+      record.solid_rule = "hull of the vertices";
+      s = hull_of(m.mesh.vertices, file_name);
+      break;
+    case Mesh_options::Solid_rule::Union_of_shells:
+      record.solid_rule = "union of shells";
+      s = union_of_shells(m, file_name, limits, record);
+      break;
+    case Mesh_options::Solid_rule::Odd_shells:
+      record.solid_rule = "odd shells";
+      Checked_mesh checked = check_mesh(m.mesh, file_name, m.file_facet);
+      record.triangles = static_cast<int>(checked.triangles.size());
+      s = mesh_solid(checked, file_name, limits);
+      break;
+  }
+  record.pieces = piece_count(s);
+  return s;
 }
 
 } // namespace clash4d

@@ -6,6 +6,8 @@
 #define CLASH4D_SCENE_MESH_SOLID_H
 
 #include "scene/Mesh_check.h"
+#include "scene/Mesh_options.h"
+#include "scene/Mesh_record.h"
 #include "scene/Scene.h"
 
 namespace clash4d {
@@ -20,6 +22,16 @@ Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, c
 
 // read_mesh_file, check_mesh and mesh_solid in turn.
 Solid read_mesh_solid(const std::string& path, const std::string& file_name, const Mesh_limits& limits = Mesh_limits());
+
+// A mesh as read, scaled and repaired as the options say
+// (scene/Mesh_repair.h), then the solid by the options' rule; what happened
+// is written to record.
+Solid repaired_solid(const Mesh& file, const std::string& file_name, const Mesh_options& options, Mesh_record& record,
+                     const Mesh_limits& limits = Mesh_limits());
+
+// read_mesh_file and repaired_solid.
+Solid read_mesh_solid(const std::string& path, const std::string& file_name, const Mesh_options& options,
+                      Mesh_record& record, const Mesh_limits& limits = Mesh_limits());
 
 } // namespace clash4d
 

@@ -47,7 +47,8 @@ using namespace json_field;
 struct Reader_context {
   std::filesystem::path base;
   std::vector<std::filesystem::path> allowed;
-  std::map<std::string, Solid> meshes;   // by canonical path
+  std::map<std::string, Solid> meshes;   // by canonical path and options
+  std::vector<Mesh_record> records;      // one per entry of meshes, in reading order
 };
 
 // The path with its links resolved as far as it exists, absolute.
@@ -176,8 +177,9 @@ void set_paths(Solid& s, const std::string& path)
   for (std::size_t i = 0; i < s.children.size(); ++i) set_paths(s.children[i], at(path, i));
 }
 
-// {"mesh": "FILE"}: a hull or a union of hulls (scene/Mesh_solid.h).
-Solid read_mesh_body(const Json_value& v, const std::string& path, Reader_context& ctx)
+// {"mesh": "FILE", options...}: a hull or a union of hulls
+// (scene/Mesh_solid.h), scaled and repaired as the options say.
+Solid read_mesh_body(const Json_value& v, const Mesh_options& options, const std::string& path, Reader_context& ctx)
 {
   expect_kind(v, Kind::String, path);
   if (v.text.empty()) throw Input_error(path, "the mesh file name must not be empty");
@@ -185,11 +187,15 @@ Solid read_mesh_body(const Json_value& v, const std::string& path, Reader_contex
   fs::path file = fs::path(v.text).is_absolute() ? fs::path(v.text) : ctx.base / v.text;
   fs::path canonical = resolved(file);
   check_mesh_place(canonical, v.text, path, ctx);
-  std::string key = canonical.string();
+  std::string key = canonical.string() + "\n" + options.key();
   auto found = ctx.meshes.find(key);
   if (found == ctx.meshes.end()) {
     try {
-      found = ctx.meshes.emplace(key, read_mesh_solid(file.string(), v.text)).first;
+      Mesh_record record;
+      record.file = v.text;
+      record.place = path;
+      found = ctx.meshes.emplace(key, read_mesh_solid(file.string(), v.text, options, record)).first;
+      ctx.records.push_back(std::move(record));
     } catch (const Input_error& e) {
       throw Input_error(path, e.place() + ": " + e.what(), e.exit_code());
     } catch (const std::bad_alloc&) {
@@ -231,10 +237,7 @@ Solid read_solid(const Json_value& v, const std::string& path, Reader_context& c
     throw Input_error(path, "unknown solid \"" + v.members.front().first + "\" (expected halfspace, block, convex, prism, hull, mesh, union, intersection, difference, translate or rotate)");
   }
   std::string body_path = dot(path, key);
-  if (key == "mesh") {
-    expect_keys(v, {"mesh"}, path);
-    return read_mesh_body(*body, body_path, ctx);
-  }
+  if (key == "mesh") return read_mesh_body(*body, read_mesh_options(v, path), body_path, ctx);
   bool transform = s.kind == Solid::Kind::Translate || s.kind == Solid::Kind::Rotate;
   if (transform) expect_keys(v, {key.c_str(), "solid"}, path);
   else expect_keys(v, {key.c_str()}, path);
@@ -428,6 +431,7 @@ Scene read_scene(const Json_value& root, const std::string& base_directory,
   for (std::size_t i = 0; i < objects.items.size(); ++i)
     scene.objects.push_back(read_object(objects.items[i], at("objects", i), names, ctx));
   if (const Json_value* ignore = root.find("ignore")) read_ignore(*ignore, scene);
+  scene.meshes = std::move(ctx.records);
   for (Scene_object& o : scene.objects) {
     approximate_numbers(o.shape);
     approximate_numbers(o.motion);

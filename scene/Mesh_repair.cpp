@@ -1,0 +1,228 @@
+#include "scene/Mesh_repair.h"
+#include "geometry/kernel_ft4.h"
+#include "scene/Mesh_check.h"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <set>
+
+namespace clash4d {
+namespace {
+
+using P3 = std::array<Rational, 3>;
+
+P3 minus(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+
+// Newell's normal of a polygon: zero exactly when its area is zero.
+P3 newell_normal(const std::vector<int>& F, const std::vector<P3>& V)
+{
+  P3 N{Rational(0), Rational(0), Rational(0)};
+  for (std::size_t i = 0; i < F.size(); ++i) {
+    P3 c = cross(V[F[i]], V[F[(i + 1) % F.size()]]);
+    for (int k = 0; k < 3; ++k) N[k] += c[k];
+  }
+  return N;
+}
+
+bool is_zero(const P3& a) { return CGAL::is_zero(a[0]) && CGAL::is_zero(a[1]) && CGAL::is_zero(a[2]); }
+
+// A polygon cut into triangles by ears, in its projection along the largest
+// component of N, oriented by N: an ear's tip turns strictly left and its
+// closed triangle holds no other vertex, so no triangle has zero area and
+// none leaves a vertex on another's edge. The first ear tried is the second
+// vertex, so a strictly convex polygon is the fan from its first vertex.
+// Empty when no ear is left (a polygon whose projection is not simple).
+std::vector<std::array<int, 3>> ear_triangles(std::vector<int> F, const P3& N, const std::vector<P3>& V)
+{
+  int k = 0;
+  for (int i = 1; i < 3; ++i)
+    if (CGAL::abs(N[i]) > CGAL::abs(N[k])) k = i;
+  int u = (k + 1) % 3, v = (k + 2) % 3, s = CGAL::sign(N[k]);
+  auto left = [&](int a, int b, int c) {   // s * orient2d(a, b, c)
+    const P3 &A = V[a], &B = V[b], &C = V[c];
+    return s * CGAL::sign((B[u] - A[u]) * (C[v] - A[v]) - (B[v] - A[v]) * (C[u] - A[u]));
+  };
+  std::vector<std::array<int, 3>> out;
+  while (F.size() > 3) {
+    std::size_t n = F.size(), tip = n;
+    for (std::size_t step = 0; step < n && tip == n; ++step) {
+      std::size_t i = (1 + step) % n;
+      int p = F[(i + n - 1) % n], c = F[i], q = F[(i + 1) % n];
+      if (left(p, c, q) <= 0) continue;
+      bool empty = std::none_of(F.begin(), F.end(), [&](int w) {
+        return w != p && w != c && w != q && left(p, c, w) >= 0 && left(c, q, w) >= 0 && left(q, p, w) >= 0;
+      });
+      if (empty) tip = i;
+    }
+    if (tip == n) return {};
+    out.push_back({F[(tip + n - 1) % n], F[tip], F[(tip + 1) % n]});
+    F.erase(F.begin() + static_cast<std::ptrdiff_t>(tip));
+  }
+  if (left(F[0], F[1], F[2]) <= 0) return {};
+  out.push_back({F[0], F[1], F[2]});
+  return out;
+}
+
+bool distinct(const std::vector<int>& F) { return std::set<int>(F.begin(), F.end()).size() == F.size(); }
+
+// "triangulate": each facet of more than three vertices that the check
+// would refuse as not planar or not strictly convex, cut into ears.
+void triangulate(Repaired_mesh& m)
+{
+  const auto& V = m.mesh.vertices;
+  std::vector<std::vector<int>> facets;
+  std::vector<int> origin;
+  int cut = 0, first = -1;
+  for (std::size_t f = 0; f < m.mesh.facets.size(); ++f) {
+    const std::vector<int>& F = m.mesh.facets[f];
+    P3 N = F.size() > 3 && distinct(F) ? newell_normal(F, V) : P3{};
+    std::vector<std::array<int, 3>> ears;
+    if (F.size() > 3 && distinct(F) && !is_zero(N) && !polygon_fault(F, N, V).empty()) ears = ear_triangles(F, N, V);
+    if (ears.empty()) {
+      facets.push_back(F);
+      origin.push_back(m.file_facet[f]);
+      continue;
+    }
+    if (cut++ == 0) first = m.file_facet[f];
+    for (const auto& t : ears) {
+      facets.push_back({t[0], t[1], t[2]});
+      origin.push_back(m.file_facet[f]);
+    }
+  }
+  if (cut)
+    m.repairs.push_back("triangulate: " + std::to_string(cut) + " facet(s) not exactly planar or not strictly convex "
+                        "cut into triangles on their own vertices (the first: facet " + std::to_string(first) + ")");
+  m.mesh.facets = std::move(facets);
+  m.file_facet = std::move(origin);
+}
+
+// The points of D strictly inside the segment from a to b, from a to b.
+std::vector<int> points_on(int a, int b, const std::set<int>& D, const std::vector<P3>& V)
+{
+  P3 d = minus(V[b], V[a]);
+  Rational length = dot(d, d);
+  std::vector<std::pair<Rational, int>> on;
+  for (int m : D) {
+    if (m == a || m == b) continue;
+    P3 w = minus(V[m], V[a]);
+    Rational along = dot(w, d);
+    if (is_zero(cross(d, w)) && along > 0 && along < length) on.push_back({along, m});
+  }
+  std::sort(on.begin(), on.end());
+  std::vector<int> out;
+  for (const auto& p : on) out.push_back(p.second);
+  return out;
+}
+
+// The facet with the points of D that lie inside its unmatched edges put
+// into them: a zero-area facet's middle vertex, where its neighbour across
+// the long edge now meets two facets (a T-junction).
+std::vector<int> spliced(const std::vector<int>& F, const std::set<std::pair<int, int>>& used, const std::set<int>& D,
+                         const std::vector<P3>& V)
+{
+  std::vector<int> out;
+  for (std::size_t i = 0; i < F.size(); ++i) {
+    int a = F[i], b = F[(i + 1) % F.size()];
+    out.push_back(a);
+    if (used.count({b, a})) continue;
+    std::vector<int> on = points_on(a, b, D, V);
+    out.insert(out.end(), on.begin(), on.end());
+  }
+  return out;
+}
+
+// "drop-zero-area": facets of zero area dropped (they bound nothing, so the
+// solid is the same), and their vertices spliced into the edges they lie in,
+// each facet so changed cut into ears again.
+void drop_zero_area(Repaired_mesh& m)
+{
+  const auto& V = m.mesh.vertices;
+  std::vector<std::vector<int>> kept;
+  std::vector<int> origin;
+  std::set<int> D;
+  std::string dropped;
+  for (std::size_t f = 0; f < m.mesh.facets.size(); ++f) {
+    const std::vector<int>& F = m.mesh.facets[f];
+    if (!is_zero(newell_normal(F, V))) {
+      kept.push_back(F);
+      origin.push_back(m.file_facet[f]);
+      continue;
+    }
+    D.insert(F.begin(), F.end());
+    dropped += (dropped.empty() ? "" : ", ") + std::to_string(m.file_facet[f]);
+  }
+  if (D.empty()) return;
+  std::set<std::pair<int, int>> used;
+  for (const auto& F : kept)
+    for (std::size_t i = 0; i < F.size(); ++i) used.insert({F[i], F[(i + 1) % F.size()]});
+  std::vector<std::vector<int>> facets;
+  std::vector<int> file_facet;
+  int recut = 0;
+  for (std::size_t f = 0; f < kept.size(); ++f) {
+    std::vector<int> G = spliced(kept[f], used, D, V);
+    std::vector<std::array<int, 3>> ears;
+    if (G.size() > kept[f].size()) ears = ear_triangles(G, newell_normal(kept[f], V), V);
+    recut += !ears.empty();
+    if (ears.empty()) facets.push_back(G.size() > kept[f].size() ? G : kept[f]);
+    for (const auto& t : ears) facets.push_back({t[0], t[1], t[2]});
+    file_facet.insert(file_facet.end(), ears.empty() ? 1 : ears.size(), origin[f]);
+  }
+  m.repairs.push_back("drop-zero-area: " + std::to_string(m.mesh.facets.size() - kept.size()) +
+                      " zero-area facet(s) dropped (facet " + dropped + "), " + std::to_string(recut) +
+                      " neighbour(s) cut at their vertices");
+  m.mesh.facets = std::move(facets);
+  m.file_facet = std::move(file_facet);
+}
+
+} // namespace
+
+Repaired_mesh repaired_mesh(const Mesh& file, const Mesh_options& options, const std::string& file_name)
+{
+  Repaired_mesh m;
+  m.mesh = file;
+  if (options.scale != 1)
+    for (auto& p : m.mesh.vertices)
+      for (Rational& x : p) x *= options.scale;
+  m.mesh = merged_points(m.mesh, file_name);
+  m.file_facet.resize(m.mesh.facets.size());
+  std::iota(m.file_facet.begin(), m.file_facet.end(), 0);
+  if (options.triangulate) triangulate(m);
+  if (options.drop_zero_area) drop_zero_area(m);
+  return m;
+}
+
+std::vector<Repaired_mesh> shells_of(const Repaired_mesh& m)
+{
+  const auto& facets = m.mesh.facets;
+  std::vector<int> parent(facets.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  // Joined only across an edge of exactly two facets: shells that meet at a
+  // vertex, or along an edge of four facets, stay apart.
+  std::map<std::pair<int, int>, std::vector<int>> edges;
+  for (std::size_t f = 0; f < facets.size(); ++f)
+    for (std::size_t i = 0; i < facets[f].size(); ++i) {
+      int a = facets[f][i], b = facets[f][(i + 1) % facets[f].size()];
+      edges[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(f));
+    }
+  for (const auto& [e, users] : edges)
+    if (users.size() == 2) parent[root(users[0])] = root(users[1]);
+  std::map<int, std::size_t> shell_of_root;
+  std::vector<Repaired_mesh> shells;
+  for (std::size_t f = 0; f < facets.size(); ++f) {
+    auto [it, added] = shell_of_root.emplace(root(static_cast<int>(f)), shells.size());
+    if (added) {
+      shells.emplace_back();
+      shells.back().mesh.vertices = m.mesh.vertices;
+    }
+    shells[it->second].mesh.facets.push_back(facets[f]);
+    shells[it->second].file_facet.push_back(m.file_facet[f]);
+  }
+  return shells;
+}
+
+} // namespace clash4d
