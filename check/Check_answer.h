@@ -63,6 +63,10 @@ struct Pair_answer {
   //    inside both objects, in the same constant-velocity sub-span as t*.
   std::array<std::array<std::string, 4>, 2> witness_cells;
   std::array<std::array<std::string, 4>, 2> contact_cells;
+  // Regularised, exact, --json: the half-width of the largest axis-aligned
+  // cube inside both objects' witness cells at the witness's time
+  // (exact/Witness_depth.h); empty when not asked or unbounded.
+  std::string depth;
 };
 
 struct Check_answer {

@@ -11,6 +11,7 @@
 #include "compare/Decimal_text.h"
 #include "compare/Progress_line.h"
 #include "exact/Exact_instantiation.h"
+#include "exact/Witness_depth.h"
 #include "float/Double_instantiation.h"
 #include "rotation/Rotating_check.h"
 #include "certify/Turning_certificate.h"
@@ -169,6 +170,7 @@ json check_json(const Check_answer& a, const Check_options& o, bool stats, doubl
   auto witness_json = [&](const Pair_answer& p) {
     json w{{"objects", {p.a, p.b}}, {"point", p.witness}, {"verified", p.witness_verified}};
     if (closed) w["inside"] = cells_json(p.witness_cells);
+    if (!p.depth.empty()) w["depth"] = p.depth;
     return w;
   };
   auto earliest_json = [](const Pair_answer& p) {
@@ -191,6 +193,25 @@ json check_json(const Check_answer& a, const Check_options& o, bool stats, doubl
   if (!certificate.empty()) j["certificate"] = certificate;
   if (stats) j["stats"] = stats_json(a.stats);
   return j;
+}
+
+// How deep each regularised exact collision is at its witness
+// (exact/Witness_depth.h): a user reads a 2.4 um overlap as one.
+void add_depths(const Scene& scene, Check_answer& answer)
+{
+  if (answer.number == "double" || answer.semantics != Semantics::regularised || answer.pairs.empty()) return;
+  Witness_depth depth(scene);
+  auto index = [&](const std::string& name) {
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+      if (scene.objects[i].name == name) return static_cast<int>(i);
+    return -1;
+  };
+  for (Pair_answer& p : answer.pairs) {
+    std::array<Rational, 4> w;
+    for (int c = 0; c < 4; ++c) w[c] = rational_from_string(p.witness[c]);
+    std::optional<Rational> d = depth(index(p.a), index(p.b), w);
+    if (d) p.depth = to_string(*d);
+  }
 }
 
 std::string point_text(const std::array<std::string, 4>& p)
@@ -515,6 +536,7 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
         return run_rotating_check(scene, r, out);
       }
       Check_answer answer = instantiation(a->number).check(scene, a->options, a->tolerance);
+      if (a->as_json) add_depths(scene, answer);
       if (!a->certificate.empty()) {
         // Before the answer is printed: a certificate that cannot be made
         // leaves no answer behind it (exit 3 names the limit).

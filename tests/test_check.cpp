@@ -507,3 +507,48 @@ BOOST_AUTO_TEST_CASE(rotation_free_poses_answer_as_robmod)
   BOOST_TEST(wrapped > 0);   // the c(0) wrapper was exercised
   BOOST_TEST(collided > 0);
 }
+
+// Issue 58 item 6 (docs/semantics.md, "Depth"): with --json a regularised
+// exact collision says how deep it is at its witness, the half-width of the
+// largest axis-aligned cube inside both objects' witness cells there. Each
+// figure below is derived by hand from the overlap's extents; none is given
+// when the cube can grow without bound, in closed semantics or in doubles.
+BOOST_AUTO_TEST_CASE(check_json_gives_the_depth_of_a_collision)
+{
+  auto block = [](const std::string& lo, const std::string& hi) {
+    return R"({"block":{"min":[)" + lo + R"(],"max":[)" + hi + "]}}";
+  };
+  auto scene = [](const std::string& a, const std::string& b, const std::string& motion) {
+    return R"({"format":"clash4d-scene/1","time":[0,1],"objects":[{"name":"a","shape":)" + a +
+           R"(},{"name":"b","shape":)" + b + R"(,"motion":")" + motion + R"("}]})";
+  };
+  struct Case {
+    std::string name, a, b, motion, depth, why;
+  };
+  const std::vector<Case> cases = {
+      {"table", block("0,0,-0.0000024", "1,1,1"), block("-5,-5,-1", "5,5,0"), "rest", "3/2500000",
+       "a base whose float32 bottom is 2.4 um below the table top: the overlap is 1 x 1 x 2.4e-6, half of 2.4e-6"},
+      {"boxes", block("0,0,0", "2,2,2"), block("1,0.5,0", "3,1,2"), "rest", "1/4",
+       "the overlap [1,2] x [1/2,1] x [0,2] is 1/2 thin along y"},
+      {"sliding", block("0,0,0", "10,1,1"), block("0,0.75,0", "1,1.75,1"), "vel 1 0 0", "1/8",
+       "at every t the overlap is [t,1+t] x [3/4,1] x [0,1], 1/4 thin along y"},
+      {"slab", R"({"halfspace":[0,0,1,0]})", R"({"halfspace":[0,0,-1,-1]})", "rest", "1/2",
+       "the half-spaces z <= 0 and z >= -1 overlap in a slab 1 thick, unbounded along x and y"},
+      {"unbounded", R"({"halfspace":[1,0,0,0]})", R"({"halfspace":[1,0,0,-1]})", "rest", "",
+       "x <= 0 and x <= 1 overlap in x <= 0, where a cube of any size fits"},
+  };
+  for (const Case& c : cases) {
+    std::string file = scene_file("depth_" + c.name, scene(c.a, c.b, c.motion));
+    Run r = run({"check", file, "--json"});
+    BOOST_TEST_REQUIRE(r.status == 1, c.name << ": " << r.err);
+    nlohmann::json j = nlohmann::json::parse(r.out);
+    BOOST_TEST(j["witness"].value("depth", "") == c.depth, c.name << ": " << c.why);
+    for (const auto& other : std::vector<std::vector<std::string>>{{"--semantics", "closed"}, {"--number", "double"}}) {
+      std::vector<std::string> args = {"check", file, "--json"};
+      args.insert(args.end(), other.begin(), other.end());
+      Run o = run(args);
+      BOOST_TEST(!nlohmann::json::parse(o.out)["witness"].contains("depth"), c.name << " " << other[1]);
+    }
+    std::remove(file.c_str());
+  }
+}
