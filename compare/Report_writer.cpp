@@ -896,6 +896,22 @@ std::string turns_html(const Report_case& rc, const Drawing& d)
          "<th>turn</th><th>axis</th><th>centre c(t)</th></tr>\n" + rows + "</table>\n";
 }
 
+// The mesh files the scene read and what was done to them (scene/Mesh_record.h):
+// an answer about a repaired, scaled or hull solid says so (issue 58 item 1).
+std::string meshes_html(const Report_case& rc)
+{
+  std::string rows;
+  for (const Mesh_record& m : rc.scene.meshes) {
+    std::string repairs;
+    for (const std::string& r : m.repairs) repairs += (repairs.empty() ? "" : "<br>") + escape(r);
+    rows += "<tr>" + cell(escape(m.file)) + number_cell(m.facets) + number_cell(m.pieces) + cell(escape(m.scale)) +
+            cell(escape(m.solid_rule)) + cell(repairs.empty() ? "none" : repairs) + "</tr>\n";
+  }
+  if (rows.empty()) return "";
+  return "<p class=\"view-note\">Mesh files: the answers are about these solids, scaled and repaired as the scene "
+         "asks (docs/meshes.md).</p>\n<table class=\"meshes\">\n<tr><th>file</th><th>facets</th><th>convex pieces</th>"
+         "<th>scale</th><th>solid</th><th>repairs</th></tr>\n" + rows + "</table>\n";
+}
 
 // Fuzz findings: per subject, its disagreements and faults by family.
 std::string family_html(const json& s)
@@ -1084,7 +1100,7 @@ std::string case_html(const Report_case& rc, std::size_t index)
       << "<table>\n<tr><th>subject</th><th>semantics</th><th>verdict</th><th>witness</th><th>witness valid</th><th>t*</th>"
       << "<th>t error</th><th>time</th><th>result</th></tr>\n";
   for (const Subject_row& s : c.subjects) out << subject_row(s, true);
-  out << "</table>\n" << details_html(c);
+  out << "</table>\n" << details_html(c) << meshes_html(rc);
   if (!rc.scene.objects.empty()) out << scene_view_html(rc, index, objects_to_draw(rc));
   Drawing d = drawing_of(rc);
   // Nothing to draw: one line, not three empty diagrams.

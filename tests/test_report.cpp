@@ -499,3 +499,29 @@ BOOST_AUTO_TEST_CASE(a_turning_scene_is_plotted)
   BOOST_TEST(view["objects"][0]["keys"][1]["q"] == json::parse("[1.0, 0.0, 0.0, 1.0]"));
   fs::remove_all(dir);
 }
+
+// A scene with a repaired mesh says so on its page (issue 58 item 1): the
+// file, its facets, the scale, the rule and what the repair did, naming the
+// file's facet (fixtures/meshes/repair/zero_area.off: facet 8 is the
+// zero-area triangle; in millimetres the scale is 1/1000).
+BOOST_AUTO_TEST_CASE(a_repaired_mesh_is_named_on_the_page)
+{
+  const std::string folder = std::string(CLASH4D_FIXTURES) + "/meshes/repair";
+  json s = {{"format", "clash4d-scene/1"},
+            {"time", {0, 1}},
+            {"objects",
+             {{{"name", "part"}, {"shape", {{"mesh", "zero_area.off"}, {"repair", {"drop-zero-area"}}, {"units", "mm"}}}},
+              {{"name", "probe"}, {"shape", {{"block", {{"min", {0, 0, 0}}, {"max", {1, 1, 1}}}}}}}}}};
+  Scene scene = read_scene(read_json_text(s.dump()), folder);
+  Report_case c{"mesh.json", scene, compare_scene(scene, "mesh.json", Compare_options()), ""};
+  fs::path dir = fs::temp_directory_path() / ("clash4d_test_report_mesh_" + std::to_string(::getpid()));
+  write_report({c}, (dir / "out").string());
+  std::string h = slurp(dir / "out" / "index.html");
+  std::string::size_type at = h.find("<table class=\"meshes\">");
+  BOOST_TEST_REQUIRE(at != std::string::npos);
+  std::string table = h.substr(at, h.find("</table>", at) - at);
+  BOOST_TEST(table.find("<td>zero_area.off</td><td class=\"n\">9</td><td class=\"n\">1</td><td>1/1000</td>"
+                        "<td>odd shells</td>") != std::string::npos, table);
+  BOOST_TEST(table.find("zero-area facet(s) dropped (facet 8)") != std::string::npos, table);
+  fs::remove_all(dir);
+}
