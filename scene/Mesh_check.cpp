@@ -144,7 +144,7 @@ Edges check_edges(const Facets& facets, const std::vector<P3>& V, const Fail& fa
   if (*most > 0) {
     int f = static_cast<int>(most - conflicts.begin());
     fail(fail.facet(f), "oriented against its neighbours across " + std::to_string(*most) + " of its edges (" + example[f] +
-                             "): a flipped facet, or facets not consistently oriented");
+                             "): a flipped facet, or facets not consistently oriented (\"repair\": [\"orient\"] turns them)");
   }
   return edges;
 }
@@ -192,7 +192,7 @@ Rational checked_volume(const Checked_mesh& m, const Fail& fail)
   if (CGAL::is_zero(volume)) fail("", "the mesh bounds no volume (signed volume 0)");
   if (volume < 0)
     fail("", "the facets are oriented inward (signed volume " + to_string(volume) +
-                 " < 0): list each facet's vertices counter-clockwise seen from outside");
+                 " < 0): list each facet's vertices counter-clockwise seen from outside (\"repair\": [\"orient\"] turns them)");
   return volume;
 }
 

@@ -33,7 +33,8 @@ void read_repairs(const Json_value& v, const std::string& path, Mesh_options& o)
     if (!seen.insert(r.text).second) throw Input_error(at(path, i), "\"" + r.text + "\" is listed twice");
     if (r.text == "triangulate") o.triangulate = true;
     else if (r.text == "drop-zero-area") o.drop_zero_area = true;
-    else throw Input_error(at(path, i), "unknown repair \"" + r.text + "\" (expected triangulate or drop-zero-area)");
+    else if (r.text == "orient") o.orient = true;
+    else throw Input_error(at(path, i), "unknown repair \"" + r.text + "\" (expected triangulate, drop-zero-area or orient)");
   }
 }
 

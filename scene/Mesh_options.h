@@ -18,13 +18,14 @@ struct Mesh_options {
   Rational scale = Rational(1);   // exact, > 0: "scale" times the unit's factor
   bool triangulate = false;       // a facet not exactly planar or not strictly convex is cut into triangles
   bool drop_zero_area = false;    // zero-area triangles dropped, their middle vertex spliced into the neighbour
+  bool orient = false;            // each shell's facets turned to agree, and the shell outward
   Solid_rule rule = Solid_rule::Odd_shells;
 
   // Text that tells options apart: part of the key of a mesh read once per
   // scene, and of the decomposition cache's key.
   std::string key() const
   {
-    return to_string(scale) + (triangulate ? " triangulate" : "") + (drop_zero_area ? " drop-zero-area" : "") +
+    return to_string(scale) + (triangulate ? " triangulate" : "") + (drop_zero_area ? " drop-zero-area" : "") + (orient ? " orient" : "") +
            " rule " + std::to_string(static_cast<int>(rule));
   }
 };

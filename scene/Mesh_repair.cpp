@@ -175,6 +175,89 @@ void drop_zero_area(Repaired_mesh& m)
   m.file_facet = std::move(file_facet);
 }
 
+// The facets of each shell (joined across edges of exactly two facets),
+// in order of their lowest facet.
+std::vector<std::vector<int>> shell_facets(const std::vector<std::vector<int>>& facets)
+{
+  std::vector<int> parent(facets.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  std::map<std::pair<int, int>, std::vector<int>> edges;
+  for (std::size_t f = 0; f < facets.size(); ++f)
+    for (std::size_t i = 0; i < facets[f].size(); ++i) {
+      int a = facets[f][i], b = facets[f][(i + 1) % facets[f].size()];
+      edges[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(f));
+    }
+  for (const auto& [e, users] : edges)
+    if (users.size() == 2) parent[root(users[0])] = root(users[1]);
+  std::map<int, std::size_t> shell_of_root;
+  std::vector<std::vector<int>> shells;
+  for (std::size_t f = 0; f < facets.size(); ++f) {
+    auto [it, added] = shell_of_root.emplace(root(static_cast<int>(f)), shells.size());
+    if (added) shells.emplace_back();
+    shells[it->second].push_back(static_cast<int>(f));
+  }
+  return shells;
+}
+
+bool runs(const std::vector<int>& F, int a, int b)
+{
+  for (std::size_t i = 0; i < F.size(); ++i)
+    if (F[i] == a && F[(i + 1) % F.size()] == b) return true;
+  return false;
+}
+
+// One shell's facets turned to agree with its first facet across each edge
+// of two facets (breadth first), then all turned if the shell's signed
+// volume is negative; the count of facets reversed.
+int orient_shell(const std::vector<int>& shell, std::vector<std::vector<int>>& facets, const std::vector<P3>& V)
+{
+  std::map<std::pair<int, int>, std::vector<int>> edges;
+  for (int f : shell)
+    for (std::size_t i = 0; i < facets[f].size(); ++i) {
+      int a = facets[f][i], b = facets[f][(i + 1) % facets[f].size()];
+      edges[{std::min(a, b), std::max(a, b)}].push_back(f);
+    }
+  std::set<int> done{shell.front()}, reversed;
+  std::vector<int> queue{shell.front()};
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    const std::vector<int>& F = facets[queue[q]];
+    for (std::size_t i = 0; i < F.size(); ++i) {
+      int a = F[i], b = F[(i + 1) % F.size()];
+      const std::vector<int>& users = edges[{std::min(a, b), std::max(a, b)}];
+      if (users.size() != 2) continue;
+      int g = users[0] == queue[q] ? users[1] : users[0];
+      if (!done.insert(g).second) continue;
+      if (runs(facets[g], a, b)) std::reverse(facets[g].begin(), facets[g].end()), reversed.insert(g);
+      queue.push_back(g);
+    }
+  }
+  Rational six_volume(0);
+  for (int f : shell)
+    for (std::size_t i = 1; i + 1 < facets[f].size(); ++i)
+      six_volume += dot(V[facets[f][0]], cross(V[facets[f][i]], V[facets[f][i + 1]]));
+  if (six_volume >= 0) return static_cast<int>(reversed.size());
+  for (int f : shell) std::reverse(facets[f].begin(), facets[f].end());
+  return static_cast<int>(shell.size() - reversed.size());
+}
+
+// "orient": each shell's facets consistently oriented and outward.
+void orient(Repaired_mesh& m)
+{
+  int turned = 0, shells = 0;
+  for (const std::vector<int>& shell : shell_facets(m.mesh.facets)) {
+    int n = orient_shell(shell, m.mesh.facets, m.mesh.vertices);
+    turned += n;
+    shells += n > 0;
+  }
+  if (turned)
+    m.repairs.push_back("orient: " + std::to_string(turned) + " facet(s) reversed in " + std::to_string(shells) +
+                        " shell(s), each shell outward");
+}
+
 } // namespace
 
 Repaired_mesh repaired_mesh(const Mesh& file, const Mesh_options& options, const std::string& file_name)
@@ -189,38 +272,20 @@ Repaired_mesh repaired_mesh(const Mesh& file, const Mesh_options& options, const
   std::iota(m.file_facet.begin(), m.file_facet.end(), 0);
   if (options.triangulate) triangulate(m);
   if (options.drop_zero_area) drop_zero_area(m);
+  if (options.orient) orient(m);
   return m;
 }
 
 std::vector<Repaired_mesh> shells_of(const Repaired_mesh& m)
 {
-  const auto& facets = m.mesh.facets;
-  std::vector<int> parent(facets.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  // Joined only across an edge of exactly two facets: shells that meet at a
-  // vertex, or along an edge of four facets, stay apart.
-  std::map<std::pair<int, int>, std::vector<int>> edges;
-  for (std::size_t f = 0; f < facets.size(); ++f)
-    for (std::size_t i = 0; i < facets[f].size(); ++i) {
-      int a = facets[f][i], b = facets[f][(i + 1) % facets[f].size()];
-      edges[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(f));
-    }
-  for (const auto& [e, users] : edges)
-    if (users.size() == 2) parent[root(users[0])] = root(users[1]);
-  std::map<int, std::size_t> shell_of_root;
   std::vector<Repaired_mesh> shells;
-  for (std::size_t f = 0; f < facets.size(); ++f) {
-    auto [it, added] = shell_of_root.emplace(root(static_cast<int>(f)), shells.size());
-    if (added) {
-      shells.emplace_back();
-      shells.back().mesh.vertices = m.mesh.vertices;
+  for (const std::vector<int>& facets : shell_facets(m.mesh.facets)) {
+    shells.emplace_back();
+    shells.back().mesh.vertices = m.mesh.vertices;
+    for (int f : facets) {
+      shells.back().mesh.facets.push_back(m.mesh.facets[f]);
+      shells.back().file_facet.push_back(m.file_facet[f]);
     }
-    shells[it->second].mesh.facets.push_back(facets[f]);
-    shells[it->second].file_facet.push_back(m.file_facet[f]);
   }
   return shells;
 }
