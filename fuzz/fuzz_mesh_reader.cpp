@@ -28,6 +28,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   Mesh_options options;
   options.triangulate = data[0] & 4;
   options.drop_zero_area = data[0] & 8;
+  options.orient = data[0] & 64;
   static const Mesh_options::Solid_rule rules[] = {Mesh_options::Solid_rule::Odd_shells,
                                                    Mesh_options::Solid_rule::Union_of_shells,
                                                    Mesh_options::Solid_rule::Hull, Mesh_options::Solid_rule::Odd_shells};
