@@ -53,8 +53,10 @@ bool decide(const Scene& scene, const Check_options& opts)
 std::pair<bool, nlohmann::ordered_json> certified(const Scene& scene, const Check_options& opts)
 {
   if (scene_rotates(scene)) {
-    Rotating_check_answer a = check_rotating(scene, opts, "exact");
-    return {a.collide, make_turning_certificate(scene, a, opts)};
+    Check_options full = opts;
+    full.feature_events = false;   // as check --certificate: every mixed minor's critical times
+    Rotating_check_answer a = check_rotating(scene, full, "exact");
+    return {a.collide, make_turning_certificate(scene, a, full)};
   }
   Check_answer a = check_exact(scene, opts);
   return {a.collide, make_certificate(scene, a, opts)};

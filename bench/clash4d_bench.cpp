@@ -10,6 +10,9 @@
 // turns, and keeps each one's least time (bench/Timing.h, time_in_turns):
 // for before-and-after comparisons on a shared machine.
 // --earliest times `check --earliest` (t* and the contact point) everywhere.
+// --every-minor: turning pairs of convex pieces take every mixed minor's
+// critical times, not only their vertex-face and edge-edge minors' (the
+// cost before that restriction; Check_options::feature_events off).
 // --family paper|contact|rotation|grid|random|fuzz|rotation-fuzz runs one
 // family only (rotation: fixtures/rotation and the first K cases of `clash4d
 // fuzz --rotation`, timed through the time slices); fuzz is the
@@ -50,6 +53,7 @@ using namespace clash4d;
 namespace {
 
 bool earliest_mode = false;   // --earliest: every query asks for t* (§5)
+bool every_minor = false;     // --every-minor: Check_options::feature_events off
 int repeat_count = 1;         // --repeat
 
 // Geometric means of the ratios over one family of scenes: regularised
@@ -94,6 +98,7 @@ void row(const std::string& name, const Scene& scene, double min_seconds, Means&
          Check_options opts = Check_options())
 {
   opts.earliest = opts.earliest || earliest_mode;
+  opts.feature_events = !every_minor;
   Check_options closed = opts;
   closed.semantics = Semantics::closed;
   auto [e, r, d, ce, cd] = time_in_turns(
@@ -133,7 +138,7 @@ int run_bench(int argc, char** argv)
     std::string a = argv[i];
     if (a == "--help" || a == "-h") {
       std::printf("usage: clash4d_bench [--seed N] [--random M] [--fuzz K] [--min-seconds S] [--family F] [--earliest]\n"
-                  "                     [--scene FILE] [--dump-random DIR] [--repeat R]\n"
+                  "                     [--every-minor] [--scene FILE] [--dump-random DIR] [--repeat R]\n"
                   "  times check per query, exact (filtered), rational and double, in both semantics;\n"
                   "  families: paper, contact, rotation (fixtures/rotation), grid, fuzz (clash4d fuzz's contact\n"
                   "  families), rotation-fuzz (clash4d fuzz --rotation's families), random;\n"
@@ -142,6 +147,11 @@ int run_bench(int argc, char** argv)
     }
     if (a == "--earliest") {
       earliest_mode = true;
+      --i;
+      continue;
+    }
+    if (a == "--every-minor") {
+      every_minor = true;
       --i;
       continue;
     }

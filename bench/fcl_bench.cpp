@@ -4,13 +4,16 @@
 // translation: box-box and hull-hull (12-point random hulls), each touching,
 // separated and penetrating. Issue 6: FCL measured beside exact for speed.
 //   clash4d_fcl_bench [--family translation|rotation|all] [--seed N] [--min-seconds S]
-//                     [--repeat R] [--dump-scenes DIR]
+//                     [--repeat R] [--dump-scenes DIR] [--every-minor]
 // --family (default all) picks the translation table, the rotation table
 // (below) or both, translation first.
 // --repeat R (default 3) times every column R times, the columns taking
 // turns, and keeps each one's least time (bench/Timing.h, time_in_turns).
 // --dump-scenes writes each case's scene to DIR (box-box-touching.json, ...)
 // to rerun or profile one with `clash4d check` or `clash4d_bench --scene`.
+// --every-minor: the rotation table with the critical times of every mixed
+// minor of a convex pair, not only its vertex-face and edge-edge minors
+// (Check_options::feature_events off): the cost before that restriction.
 //
 // What each column times: exact and double run `check` on the scene (their
 // model is built from the scene's numbers on every query, as `check` does);
@@ -106,11 +109,12 @@ void row(const Case& c, double min_seconds, int repeat)
 // The rotation section's row (see the top): the exact answer is held to
 // the case's construction (verdict, and t* exactly when rational), the moved
 // query's to the whole check's.
-void rotation_row(const Turning_case& rc, double min_seconds, int repeat)
+void rotation_row(const Turning_case& rc, double min_seconds, int repeat, bool every_minor)
 {
   const Case& c = rc.c;
   Check_options opts;
   opts.earliest = true;
+  opts.feature_events = !every_minor;
   Fcl_subject fcl(c.scene);
   if (!fcl.expressible()) {
     std::printf("%-26s %s\n", c.name.c_str(), fcl.reason().c_str());
@@ -181,7 +185,7 @@ void rotation_row(const Turning_case& rc, double min_seconds, int repeat)
 }
 
 const char* usage = "usage: clash4d_fcl_bench [--family translation|rotation|all] [--seed N] [--min-seconds S] [--repeat R]\n"
-                    "                         [--dump-scenes DIR]\n";
+                    "                         [--dump-scenes DIR] [--every-minor]\n";
 
 void dump(const std::string& dir, const Case& c)
 {
@@ -198,6 +202,7 @@ int run_bench(int argc, char** argv)
   double min_seconds = 0.05;
   int repeat = 3;
   std::string dump_dir, family = "all";
+  bool every_minor = false;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     if (a == "--help" || a == "-h") {
@@ -214,6 +219,7 @@ int run_bench(int argc, char** argv)
     else if (a == "--repeat" && i + 1 < argc) repeat = value(0);
     else if (a == "--dump-scenes" && i + 1 < argc) dump_dir = argv[++i];
     else if (a == "--family" && i + 1 < argc) family = argv[++i];
+    else if (a == "--every-minor") every_minor = true;
     else {
       std::fprintf(stderr, "clash4d_fcl_bench: unknown option or missing value: %s\n%s", a.c_str(), usage);
       return 2;
@@ -238,13 +244,14 @@ int run_bench(int argc, char** argv)
   }
   if (family != "translation") {
     if (family == "all") std::printf("\n");
-    std::printf("rotation: one object turns 90 degrees about a fixed point, the other rests; --earliest\n");
+    std::printf("rotation: one object turns 90 degrees about a fixed point, the other rests; --earliest%s\n",
+                every_minor ? "; every mixed minor (--every-minor)" : "");
     std::printf("%-26s %10s %10s %8s %12s %10s %10s   %-7s %-7s %-7s %-22s %-12s %-9s %s\n", "case", "exact us",
                 "moved us", "fcl us", "fcl+build us", "exact/fcl", "moved/fcl", "exact", "fcl", "verdict", "t* exact",
                 "t* fcl", "fcl-exact", "within tol");
     for (const Turning_case& rc : all_rotation_cases(seed)) {
       dump(dump_dir, rc.c);
-      rotation_row(rc, min_seconds, repeat);
+      rotation_row(rc, min_seconds, repeat, every_minor);
     }
   }
   return 0;

@@ -37,6 +37,11 @@ struct Check_options {
   // memory kept per pair is the chunk's. Any size gives the same answer;
   // tests make it small to cross chunk boundaries.
   std::size_t pair_chunk = 4096;
+  // false: a turning pair of two bounded convex pieces takes its critical
+  // times from every mixed minor of their planes, not only from their
+  // vertex-face and edge-edge minors (rotation/Rotating_pair.cpp): tests
+  // of the restriction against the full enumeration.
+  bool feature_events = true;
   bool json = false;          // output form (used by the command line only)
   Semantics semantics = Semantics::regularised;
 };

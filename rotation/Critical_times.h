@@ -47,11 +47,20 @@ public:
   // CLASH4D_MAX_PAIR_MINORS; looks at the work budget (--max-seconds).
   Critical_times(const std::vector<Moving_plane>& rows, std::size_t first_count, const Rational& lo,
                  const Rational& hi, bool low_rank);
+  // Only the roots of these minors (4 x 4, rows of both objects: two convex
+  // pieces' vertex-face and edge-edge minors, Rotating_pair.cpp); when one
+  // of them is identically zero on (lo, hi) (a vertex that stays on a plane
+  // of the other piece), every mixed minor as above. Throws Minor_limit
+  // past CLASH4D_MAX_PAIR_MINORS of them.
+  Critical_times(const std::vector<Moving_plane>& rows, std::size_t first_count, const Rational& lo,
+                 const Rational& hi, bool low_rank, const std::vector<Minor_rows>& features);
 
   // Ascending, distinct, each strictly inside (lo, hi).
   const std::vector<Critical_time>& times() const { return times_; }
   // The minors solved (those the intervals did not settle).
   std::size_t minor_count() const { return minor_count_; }
+  // Whether the times are the given features' only (not every mixed minor's).
+  bool restricted() const { return restricted_; }
 
 private:
   // The real roots in (lo, hi) of each distinct minor, merged in order.
@@ -60,6 +69,7 @@ private:
 
   std::vector<Critical_time> times_;
   std::size_t minor_count_ = 0;
+  bool restricted_ = false;
 };
 
 // det [n_i; n_j; n_k], the normals' minor, for rows of any polynomial type.

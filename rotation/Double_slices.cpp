@@ -107,7 +107,8 @@ Rational Double_slices::read_answer_number(const std::string& text) const
 
 std::vector<Critical_time> Double_slices::critical_times(const std::vector<Moving_plane>& planes,
                                                          std::size_t first_count, const Rational& lo,
-                                                         const Rational& hi, bool low_rank) const
+                                                         const Rational& hi, bool low_rank,
+                                                         const std::vector<Minor_rows>*) const
 {
   std::vector<Double_row> rows;
   for (const Moving_plane& h : planes) rows.push_back(double_row(h));

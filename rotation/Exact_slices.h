@@ -44,9 +44,13 @@ public:
   Check_answer check(const Scene& s, const Check_options& o) const { return check_(s, o); }
   // A number of check's answer: its exact text "p/q".
   Rational read_answer_number(const std::string& text) const { return rational_from_string(text); }
+  // features: the only minors to solve (two convex pieces' vertex-face and
+  // edge-edge minors), or null for every mixed minor.
   std::vector<Critical_time> critical_times(const std::vector<Moving_plane>& rows, std::size_t first_count,
-                                            const Rational& lo, const Rational& hi, bool low_rank) const
+                                            const Rational& lo, const Rational& hi, bool low_rank,
+                                            const std::vector<Minor_rows>* features = nullptr) const
   {
+    if (features) return Critical_times(rows, first_count, lo, hi, low_rank, *features).times();
     return Critical_times(rows, first_count, lo, hi, low_rank).times();
   }
   // A rational strictly between left < right: the midpoint of rational

@@ -74,6 +74,57 @@ std::array<Algebraic, 4> with_time(const Point3& x, const Rational& t)
   return {Algebraic(x[0]), Algebraic(x[1]), Algebraic(x[2]), Algebraic(t)};
 }
 
+// The events of two bounded, full-dimensional convex pieces (their rows: a's
+// planes, then b's): the minors of a vertex's three planes (one independent
+// triple through it) against each plane of the other piece, both ways, and
+// of an edge's two planes against an edge's two of the other piece. None
+// when either shape is not one such piece.
+//
+// Why these suffice. Whether two convex polytopes meet (closed), or meet
+// with interior (regularised), changes at a time tau only where they touch:
+// both conditions are closed or open in t, so at tau the closed sets meet
+// and the interiors do not, and a plane H separates them. A = a(tau) and
+// B = b(tau) meet H in faces F_A, F_B with a common point; let x be a
+// vertex of the polygon F_A and F_B meet in, and G_A, G_B the faces of A
+// and B with x in their relative interiors. Their affine hulls, both in H,
+// meet in x alone (else a segment through x would lie in F_A and F_B), so
+// G_A or G_B is a vertex, or both are edges on lines that cross at x. A
+// vertex v of A on a facet of B: v's triple of planes and that facet's
+// plane meet in v, and their minor vanishes (the triple's normals stay
+// independent under a rigid motion and meet in v alone, so any independent
+// triple through v, as at a vertex where four planes meet, gives a minor
+// that vanishes exactly when v is on the plane: it is det of the triple's
+// normals, never 0, times the plane's value at v). Two edges crossing at
+// x: the four planes of the two edges meet at x and their minor vanishes.
+// So the status can change only at a root of a feature minor; where such a
+// minor is identically zero on the interval (a vertex that stays on a plane
+// of the other piece), Critical_times takes every mixed minor instead. At a
+// closed touch at an irrational time the point x is on the four planes of a
+// vanishing feature minor, three of them independent (an edge's line is not
+// parallel to both planes of a crossing edge), which is what
+// Exact_slices.cpp's common_point_at tries. The contact point
+// (Exact_slices::contact_point) needs the vertices of the witness's cell to
+// keep their index triples on the slice: the cell is the meet of the two
+// pieces, P(t) = a(t) and b(t), and a vertex triple of P enters or leaves
+// only at a point of P on four of the planes (or three that become
+// dependent there), which is, by the same faces argument, a vertex of one
+// piece on a plane of the other or two edges' planes through one point: a
+// root of a feature minor again.
+std::optional<std::vector<Minor_rows>> feature_minors(const Shape_planes& a, const Shape_planes& b)
+{
+  if (!a.convex_features || !b.convex_features) return std::nullopt;
+  int n = static_cast<int>(a.planes.size()), m = static_cast<int>(b.planes.size());
+  std::vector<Minor_rows> out;
+  out.reserve(a.vertex_triples.size() * m + b.vertex_triples.size() * n + a.edges.size() * b.edges.size());
+  for (const auto& t : a.vertex_triples)
+    for (int q = 0; q < m; ++q) out.push_back({t[0], t[1], t[2], n + q});
+  for (const auto& t : b.vertex_triples)
+    for (int p = 0; p < n; ++p) out.push_back({p, n + t[0], n + t[1], n + t[2]});
+  for (auto [p1, p2] : a.edges)
+    for (auto [q1, q2] : b.edges) out.push_back({p1, p2, n + q1, n + q2});
+  return out;
+}
+
 } // namespace
 
 Rotating_object Rotating_object::make(const Scene_object& o)
@@ -133,6 +184,7 @@ public:
   Slice_search(const Rotating_object& a, const Rotating_object& b, const Check_options& o, const Slices& slices)
     : a_(a), b_(b), options_(o), slices_(slices), closed_(o.semantics == Semantics::closed)
   {
+    if (o.feature_events) features_ = feature_minors(a.shape, b.shape);
   }
 
   Rotating_answer run(const Rational& t_lo, const Rational& t_hi)
@@ -155,7 +207,8 @@ private:
     if (!options_.earliest && in_interval({}, Algebraic(lo), Algebraic(hi))) return true;
     std::vector<Moving_plane> rows = pair_rows(a_, b_, mid);
     bool low_rank = !a_.shape.spans_space && !b_.shape.spans_space;
-    std::vector<Critical_time> c = slices_.critical_times(rows, a_.shape.planes.size(), lo, hi, low_rank);
+    std::vector<Critical_time> c = slices_.critical_times(rows, a_.shape.planes.size(), lo, hi, low_rank,
+                                                            features_ ? &*features_ : nullptr);
     if (closed_ && at_rational(lo)) return true;
     for (std::size_t k = 0; k <= c.size(); ++k) {
       Algebraic left = k == 0 ? Algebraic(lo) : c[k - 1].t;
@@ -228,6 +281,7 @@ private:
   bool closed_;
   Rational t_lo_;
   Rotating_answer answer_;
+  std::optional<std::vector<Minor_rows>> features_;   // two convex pieces' event minors
 };
 
 } // namespace

@@ -3,7 +3,9 @@
 #include "model/Far_bound.h"
 #include "model/Model_builder.h"
 
+#include <algorithm>
 #include <map>
+#include <set>
 
 namespace clash4d {
 
@@ -60,6 +62,72 @@ struct Plane_less {
   }
 };
 
+Rational det3(const Plane3<Rational>& a, const Plane3<Rational>& b, const Plane3<Rational>& c)
+{
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+// The features of one bounded convex primitive (its exact vertices and its
+// planes, as indices into out.planes): the planes through each vertex
+// (exact incidences), one independent triple of them per vertex, and the
+// pairs of planes sharing two distinct vertices. A point of the list on no
+// independent triple of the planes is not a vertex (a hull's points may lie
+// inside it) and is skipped: a point of the polytope on three independent
+// planes of it is a vertex (the least face holding it lies in their meet).
+// Left unset unless the polytope is full-dimensional (four affinely
+// independent points).
+void convex_features(const std::vector<Vector3<Rational>>& vertices, const std::vector<int>& planes, Shape_planes& out)
+{
+  if (vertices.size() < 4) return;
+  // Full-dimensional: some vertex off the plane of three others.
+  bool full = false;
+  {
+    const auto& o = vertices[0];
+    auto diff = [&](const Vector3<Rational>& v) { return Plane3<Rational>{v[0] - o[0], v[1] - o[1], v[2] - o[2], Rational(0)}; };
+    for (std::size_t i = 1; i < vertices.size() && !full; ++i)
+      for (std::size_t j = i + 1; j < vertices.size() && !full; ++j)
+        for (std::size_t k = j + 1; k < vertices.size() && !full; ++k)
+          full = CGAL::sign(det3(diff(vertices[i]), diff(vertices[j]), diff(vertices[k]))) != CGAL::ZERO;
+  }
+  if (!full) return;
+  std::vector<int> distinct = planes;
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  std::vector<std::vector<int>> through;   // [vertex]: the planes through it
+  std::vector<std::array<int, 3>> triples;
+  std::set<std::array<Rational, 3>> seen;   // each point once (a hull may repeat one)
+  for (const auto& v : vertices) {
+    if (!seen.insert({v[0], v[1], v[2]}).second) continue;
+    std::vector<int> on;
+    for (int p : distinct) {
+      const Plane3<Rational>& h = out.planes[p];
+      if (CGAL::sign(h[0] * v[0] + h[1] * v[1] + h[2] * v[2] + h[3]) == CGAL::ZERO) on.push_back(p);
+    }
+    bool found = false;
+    for (std::size_t i = 0; i < on.size() && !found; ++i)
+      for (std::size_t j = i + 1; j < on.size() && !found; ++j)
+        for (std::size_t k = j + 1; k < on.size() && !found; ++k)
+          if (CGAL::sign(det3(out.planes[on[i]], out.planes[on[j]], out.planes[on[k]])) != CGAL::ZERO) {
+            triples.push_back({on[i], on[j], on[k]});
+            found = true;
+          }
+    // A point of the polytope on no independent triple is no vertex (a
+    // hull's point inside it, or inside a face or an edge): it has none.
+    if (found) through.push_back(std::move(on));
+  }
+  if (triples.size() < 4) return;
+  std::map<std::pair<int, int>, int> shared;   // vertices on both planes
+  for (const auto& on : through)
+    for (std::size_t i = 0; i < on.size(); ++i)
+      for (std::size_t j = i + 1; j < on.size(); ++j) ++shared[{on[i], on[j]}];
+  for (const auto& [pq, n] : shared)
+    if (n >= 2) out.edges.push_back(pq);
+  std::sort(triples.begin(), triples.end());
+  triples.erase(std::unique(triples.begin(), triples.end()), triples.end());
+  out.vertex_triples = std::move(triples);
+  out.convex_features = true;
+}
+
 } // namespace
 
 Shape_planes shape_planes(const Solid& shape)
@@ -84,6 +152,11 @@ Shape_planes shape_planes(const Solid& shape)
   }
   out.nodes = csg.nodes;
   if (bounded && convex_union) out.convex_pieces = out.primitives;
+  if (bounded && convex_union && csg.primitives.size() == 1) {
+    std::vector<int> piece;
+    for (auto [plane, orientation] : out.primitives.front()) piece.push_back(plane);
+    convex_features(csg.primitives.front().vertices, piece, out);
+  }
   if (bounded) out.reach = root_above(reach);
   // The normals span R^3 when some three are independent.
   const auto& P = out.planes;

@@ -8,7 +8,9 @@
 #include "geometry/kernel_ft4.h"
 #include "model/Csg_model.h"
 #include "scene/Scene.h"
+#include <array>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace clash4d {
@@ -31,6 +33,17 @@ struct Shape_planes {
   // when some primitive is unbounded.
   std::optional<Rational> reach;
   bool spans_space = false;   // the normals span R^3 (rank four with v_inf)
+  // When the shape is one bounded, full-dimensional convex polytope: its
+  // features, found once at rest (a rigid motion keeps them), as indices
+  // into planes. For each vertex, one triple of the planes through it whose
+  // normals are independent (any such triple meets in the vertex alone);
+  // each pair of planes that share two distinct vertices (their line holds
+  // an edge). Rotating_pair.cpp restricts the events of a pair of such
+  // shapes to these features' minors (docs/rotation.md, Convex pieces'
+  // events). convex_features is false otherwise.
+  bool convex_features = false;
+  std::vector<std::array<int, 3>> vertex_triples;
+  std::vector<std::pair<int, int>> edges;
 };
 
 Shape_planes shape_planes(const Solid& shape);

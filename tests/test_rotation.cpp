@@ -7,6 +7,7 @@
 #include "compare/Witness_judge.h"
 #include "exact/Exact_instantiation.h"
 #include "rotation/Rotating_check.h"
+#include "rotation/Shape_planes.h"
 #include "rotation/Simplest_rational.h"
 #include "scene/Json_reader.h"
 #include "scene/Random_draw.h"
@@ -20,6 +21,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <unistd.h>
 
 using namespace clash4d;
@@ -718,4 +720,151 @@ BOOST_AUTO_TEST_CASE(a_double_witness_that_is_not_finite_is_refused_not_a_crash)
       }
     }
   BOOST_TEST_MESSAGE("modes refused: " << refused);
+}
+
+// The features of a bounded convex piece (rotation/Shape_planes.h): one
+// independent triple per vertex, also where four planes meet (the apex of a
+// square pyramid, every vertex of an octahedron), and the plane pairs of
+// its edges.
+BOOST_AUTO_TEST_CASE(convex_features_of_simple_and_non_simple_vertices)
+{
+  auto features = [](const std::string& shape) {
+    json other = {{"name", "b"}, {"shape", {{"block", {{"min", {5, 5, 5}}, {"max", {6, 6, 6}}}}}}};
+    json sj = {{"format", "clash4d-scene/1"}, {"time", {0, 1}},
+               {"objects", json::array({{{"name", "a"}, {"shape", json::parse(shape)}}, other})}};
+    return shape_planes(parse_scene(sj).objects.front().shape);
+  };
+  Shape_planes cube = features(R"({"block": {"min": [0, 0, 0], "max": [1, 1, 1]}})");
+  BOOST_TEST(cube.convex_features);
+  BOOST_TEST(cube.vertex_triples.size() == 8u);
+  BOOST_TEST(cube.edges.size() == 12u);
+  Shape_planes pyramid = features(R"({"hull": [[0, 0, 0], [2, 0, 0], [2, 2, 0], [0, 2, 0], [1, 1, 1]]})");
+  BOOST_TEST(pyramid.convex_features);
+  BOOST_TEST(pyramid.vertex_triples.size() == 5u);
+  BOOST_TEST(pyramid.edges.size() == 8u);
+  Shape_planes octahedron =
+      features(R"({"hull": [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]})");
+  BOOST_TEST(octahedron.convex_features);
+  BOOST_TEST(octahedron.vertex_triples.size() == 6u);
+  BOOST_TEST(octahedron.edges.size() == 12u);
+  // A hull's points inside it, inside a face and inside an edge are no vertices.
+  Shape_planes filled = features(
+      R"({"hull": [[0, 0, 0], [2, 0, 0], [2, 2, 0], [0, 2, 0], [0, 0, 2], [2, 0, 2], [2, 2, 2], [0, 2, 2],
+                   [1, 1, 1], [1, 1, 0], [1, 0, 0], [0, 0, 0]]})");
+  BOOST_TEST(filled.convex_features);
+  BOOST_TEST(filled.vertex_triples.size() == 8u);
+  BOOST_TEST(filled.edges.size() == 12u);
+  Shape_planes two = features(R"({"union": [{"block": {"min": [0, 0, 0], "max": [1, 1, 1]}},
+                                            {"block": {"min": [2, 0, 0], "max": [3, 1, 1]}}]})");
+  BOOST_TEST(!two.convex_features);   // decided piece by piece, each piece with its features
+}
+
+namespace {
+
+// A hull of 5 to 9 random points (halves in [-2, 2], not all in one plane).
+json random_hull(Random_draw& r)
+{
+  using random_rotating::num;
+  for (;;) {
+    std::vector<std::array<long, 3>> p;
+    int n = static_cast<int>(r.range(5, 9));
+    long ox = r.range(-3, 1), oy = r.range(-3, 1), oz = r.range(-3, 1);
+    for (int i = 0; i < n; ++i) p.push_back({ox + r.range(0, 4), oy + r.range(0, 4), oz + r.range(0, 4)});
+    bool solid = false;
+    for (std::size_t i = 1; i < p.size() && !solid; ++i)
+      for (std::size_t j = i + 1; j < p.size() && !solid; ++j)
+        for (std::size_t k = j + 1; k < p.size() && !solid; ++k) {
+          std::array<long, 3> a, b, c;
+          for (int d = 0; d < 3; ++d) {
+            a[d] = p[i][d] - p[0][d];
+            b[d] = p[j][d] - p[0][d];
+            c[d] = p[k][d] - p[0][d];
+          }
+          solid = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]) != 0;
+        }
+    if (!solid) continue;
+    json pts = json::array();
+    for (const auto& x : p) pts.push_back({num(x[0], 2), num(x[1], 2), num(x[2], 2)});
+    return {{"hull", pts}};
+  }
+}
+
+json random_convex_shape(Random_draw& r)
+{
+  int k = static_cast<int>(r.range(0, 9));
+  if (k < 4) return random_rotating::random_block(r);
+  if (k < 9) return random_hull(r);
+  return {{"union", json::array({random_hull(r), random_rotating::random_block(r)})}};   // piece by piece
+}
+
+json random_turning_convex_pair(Random_draw& r)
+{
+  using namespace random_rotating;
+  json objects = json::array();
+  objects.push_back({{"name", "a"}, {"shape", random_convex_shape(r)}, {"motion", random_poses(r, true)}});
+  json b = {{"name", "b"}, {"shape", random_convex_shape(r)}};
+  if (r.percent(60)) b["motion"] = random_poses(r, r.percent(60));
+  objects.push_back(b);
+  return {{"format", "clash4d-scene/1"}, {"name", "random turning convex pair"}, {"time", {0, 3}}, {"objects", objects}};
+}
+
+} // namespace
+
+// Two turning convex pieces take their critical times from their vertex-
+// face and edge-edge minors only (Rotating_pair.cpp, feature_minors; docs/
+// rotation.md, Convex pieces' events): on random turning pairs of hulls and
+// blocks (and a union of a hull and a block, decided piece by piece) the
+// answers are those of every mixed minor's critical times, exactly: the
+// verdict in both semantics, with and without --earliest, and t*.
+BOOST_AUTO_TEST_CASE(feature_events_answer_as_every_minor)
+{
+  std::uint64_t seed = 7171;
+  if (const char* s = std::getenv("CLASH4D_SEED")) seed = std::strtoull(s, nullptr, 10);
+  int cases = 60;
+  if (const char* s = std::getenv("CLASH4D_ROTATION_CASES")) cases = std::max(1, std::atoi(s) / 2);
+  BOOST_TEST_MESSAGE("feature events: seed " << seed << " (CLASH4D_SEED), " << cases << " scenes");
+  Random_draw r(seed);
+  int collisions = 0, contacts = 0, irrational = 0, unsupported = 0;
+  for (int i = 0; i < cases; ++i) {
+    json sj = random_turning_convex_pair(r);
+    Scene scene = parse_scene(sj);
+    for (Semantics sem : {Semantics::regularised, Semantics::closed})
+      for (bool earliest : {true, false}) {
+        Check_options features, every;
+        features.semantics = every.semantics = sem;
+        features.earliest = every.earliest = earliest;
+        every.feature_events = false;
+        BOOST_TEST_CONTEXT("seed " << seed << " case " << i << ", " << semantics_name(sem)
+                                   << (earliest ? " --earliest" : "") << ": " << sj.dump())
+        {
+          std::optional<Rotating_check_answer> a, b;
+          std::string a_refused, b_refused;
+          try {
+            a = check_rotating(scene, features, "exact");
+          } catch (const Rotation_unsupported& e) {
+            a_refused = e.what();
+          }
+          try {
+            b = check_rotating(scene, every, "exact");
+          } catch (const Rotation_unsupported& e) {
+            b_refused = e.what();
+          }
+          BOOST_TEST(a.has_value() == b.has_value(), "features: " << a_refused << " every minor: " << b_refused);
+          if (!a || !b) {
+            ++unsupported;
+            continue;
+          }
+          BOOST_TEST(a->collide == b->collide);
+          if (!a->collide || !b->collide || !earliest) continue;
+          const Algebraic& t = a->reported()->answer.t_star;
+          BOOST_TEST(compare(t, b->reported()->answer.t_star) == 0,
+                     "t* " << t.to_text() << " against " << b->reported()->answer.t_star.to_text());
+          (sem == Semantics::closed ? contacts : collisions) += 1;
+          irrational += !t.is_rational();
+        }
+      }
+  }
+  BOOST_TEST_MESSAGE("feature events: " << collisions << " collisions, " << contacts << " contacts, " << irrational
+                                        << " irrational t*, " << unsupported << " unsupported");
+  BOOST_TEST(collisions + contacts > 0);
 }
