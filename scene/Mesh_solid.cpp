@@ -1,6 +1,8 @@
 #include "scene/Mesh_solid.h"
 #include "scene/Hull_solid.h"
 #include "scene/Input_error.h"
+#include "scene/Mesh_cache.h"
+#include "scene/Mesh_options.h"
 
 #include <CGAL/Cartesian.h>
 #include <CGAL/Nef_polyhedron_3.h>
@@ -50,10 +52,16 @@ Rational six_volume(const Piece& p)
 
 } // namespace
 
-Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits)
+Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits, Mesh_record* record)
 {
+  if (record) record->triangles = static_cast<int>(mesh.triangles.size());
+  if (record) record->pieces = 1;
   if (mesh.convex) return hull_of(mesh.vertices, file_name);
-  return decomposed_solid(mesh, file_name, limits);
+  if (!record) return decomposed_solid(mesh, file_name, limits);
+  // The options are the default ones until the reader passes the scene's.
+  Solid s = Mesh_cache::from_environment().decomposed(mesh, file_name, limits, Mesh_options().key(), *record);
+  record->pieces = static_cast<int>(s.children.size());
+  return s;
 }
 
 Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits)
@@ -117,9 +125,12 @@ Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, c
   return u;
 }
 
-Solid read_mesh_solid(const std::string& path, const std::string& file_name, const Mesh_limits& limits)
+Solid read_mesh_solid(const std::string& path, const std::string& file_name, const Mesh_limits& limits,
+                      Mesh_record* record)
 {
-  return mesh_solid(check_mesh(read_mesh_file(path, file_name, limits), file_name), file_name, limits);
+  Mesh mesh = read_mesh_file(path, file_name, limits);
+  if (record) record->facets = static_cast<int>(mesh.facets.size());
+  return mesh_solid(check_mesh(mesh, file_name), file_name, limits, record);
 }
 
 } // namespace clash4d
