@@ -48,6 +48,7 @@ struct Reader_context {
   std::filesystem::path base;
   std::vector<std::filesystem::path> allowed;
   std::map<std::string, Solid> meshes;   // by canonical path
+  std::vector<Mesh_record> records;      // Scene::meshes, in the order first used
 };
 
 // The path with its links resolved as far as it exists, absolute.
@@ -189,7 +190,11 @@ Solid read_mesh_body(const Json_value& v, const std::string& path, Reader_contex
   auto found = ctx.meshes.find(key);
   if (found == ctx.meshes.end()) {
     try {
-      found = ctx.meshes.emplace(key, read_mesh_solid(file.string(), v.text)).first;
+      Mesh_record record;
+      record.file = v.text;
+      record.place = path;
+      found = ctx.meshes.emplace(key, read_mesh_solid(file.string(), v.text, Mesh_limits(), &record)).first;
+      ctx.records.push_back(record);
     } catch (const Input_error& e) {
       throw Input_error(path, e.place() + ": " + e.what(), e.exit_code());
     } catch (const std::bad_alloc&) {
@@ -428,6 +433,7 @@ Scene read_scene(const Json_value& root, const std::string& base_directory,
   for (std::size_t i = 0; i < objects.items.size(); ++i)
     scene.objects.push_back(read_object(objects.items[i], at("objects", i), names, ctx));
   if (const Json_value* ignore = root.find("ignore")) read_ignore(*ignore, scene);
+  scene.meshes = std::move(ctx.records);
   for (Scene_object& o : scene.objects) {
     approximate_numbers(o.shape);
     approximate_numbers(o.motion);
