@@ -162,7 +162,8 @@ json cells_json(const std::array<std::array<std::string, 4>, 2>& cells)
   return json::array({point_json(cells[0]), point_json(cells[1])});
 }
 
-json check_json(const Check_answer& a, const Check_options& o, bool stats, double tolerance, const std::string& certificate)
+json check_json(const Check_answer& a, const Check_options& o, bool stats, double tolerance, const std::string& certificate,
+                const std::vector<Mesh_record>& meshes)
 {
   bool closed = a.semantics == Semantics::closed;
   json j = {{"collide", a.collide}, {"number", a.number}, {"semantics", semantics_name(a.semantics)}};
@@ -192,6 +193,7 @@ json check_json(const Check_answer& a, const Check_options& o, bool stats, doubl
   }
   if (!certificate.empty()) j["certificate"] = certificate;
   if (stats) j["stats"] = stats_json(a.stats);
+  if (stats && !meshes.empty()) j["stats"]["meshes"] = meshes_json(meshes);
   return j;
 }
 
@@ -220,12 +222,12 @@ std::string point_text(const std::array<std::string, 4>& p)
 }
 
 void print_check(const Check_answer& a, const Check_options& o, bool stats, double tolerance, std::ostream& out,
-                 const std::string& certificate = "")
+                 const std::string& certificate, const std::vector<Mesh_record>& meshes)
 {
   // The earliest pair's witness is the one shown when --earliest is given.
   const Pair_answer* main = a.reported();
   if (o.json) {
-    out << check_json(a, o, stats, tolerance, certificate).dump(2) << "\n";
+    out << check_json(a, o, stats, tolerance, certificate, meshes).dump(2) << "\n";
     return;
   }
   bool closed = a.semantics == Semantics::closed;
@@ -251,6 +253,7 @@ void print_check(const Check_answer& a, const Check_options& o, bool stats, doub
     out << "stats:\n";
     json s = stats_json(a.stats);
     for (const auto& item : s.items()) out << "  " << item.key() << ": " << item.value().dump() << "\n";
+    if (!meshes.empty()) out << "  meshes:\n" << meshes_text(meshes, "    ");
   }
 }
 
@@ -554,7 +557,7 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
           return CLASH4D_EXIT_LIMIT;
         }
       }
-      print_check(answer, a->options, a->stats, a->tolerance, out, a->certificate);
+      print_check(answer, a->options, a->stats, a->tolerance, out, a->certificate, scene.meshes);
       return answer.collide ? 1 : 0;
     });
   };

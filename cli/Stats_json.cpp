@@ -2,6 +2,9 @@
 #include "exact/Interval_kernel.h"
 #include "float/Double_kernel.h"
 
+#include <cstdio>
+#include <sstream>
+
 namespace clash4d {
 namespace {
 
@@ -96,6 +99,44 @@ json stats_json(const Check_stats& s)
           {"convex_exact_signs", s.convex_exact_signs},
           {"seconds", {{"model", s.seconds_model}, {"sweep", s.seconds_sweep}, {"sbounds", s.seconds_sbounds},
                        {"divide_and_conquer", s.seconds_divide}, {"witness", s.seconds_witness}}}};
+}
+
+json meshes_json(const std::vector<Mesh_record>& meshes)
+{
+  json out = json::array();
+  for (const Mesh_record& m : meshes)
+    out.push_back({{"file", m.file},
+                   {"place", m.place},
+                   {"facets", m.facets},
+                   {"triangles", m.triangles},
+                   {"pieces", m.pieces},
+                   {"scale", m.scale},
+                   {"solid_rule", m.solid_rule},
+                   {"repairs", m.repairs},
+                   {"decomposition_seconds", m.decomposition_seconds},
+                   {"cache", m.cache}});
+  return out;
+}
+
+std::string meshes_text(const std::vector<Mesh_record>& meshes, const std::string& indent)
+{
+  std::ostringstream out;
+  for (const Mesh_record& m : meshes) {
+    out << indent << m.file << " (" << m.place << "): " << m.facets << " facets, " << m.triangles << " triangles, "
+        << m.pieces << (m.pieces == 1 ? " piece" : " pieces");
+    if (!m.scale.empty() && m.scale != "1") out << ", scale " << m.scale;
+    if (!m.solid_rule.empty()) out << ", " << m.solid_rule;
+    // A convex mesh is one hull: no decomposition, nothing cached.
+    if (!m.cache.empty()) {
+      char seconds[32];
+      std::snprintf(seconds, sizeof seconds, "%.3f s", m.decomposition_seconds);
+      out << ", decomposition " << (m.cache == "hit" ? std::string("from the cache") : seconds) << " (cache " << m.cache
+          << ")";
+    }
+    out << "\n";
+    for (const std::string& r : m.repairs) out << indent << "  repair: " << r << "\n";
+  }
+  return out.str();
 }
 
 } // namespace clash4d

@@ -9,7 +9,15 @@
 #include "scene/Mesh_reader.h"
 #include "scene/Mesh_solid.h"
 #include <cstdint>
+#include <cstdlib>
 #include <string_view>
+
+// A fuzz run never writes the user's decomposition cache (scene/Mesh_cache.h).
+extern "C" int LLVMFuzzerInitialize(int*, char***)
+{
+  setenv("CLASH4D_MESH_CACHE", "off", 1);
+  return 0;
+}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

@@ -13,6 +13,13 @@
 #include <iostream>
 #include <string>
 
+// A fuzz run never writes the user's decomposition cache (scene/Mesh_cache.h).
+extern "C" int LLVMFuzzerInitialize(int*, char***)
+{
+  setenv("CLASH4D_MESH_CACHE", "off", 1);
+  return 0;
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
   using namespace clash4d;

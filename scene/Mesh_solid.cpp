@@ -1,6 +1,8 @@
 #include "scene/Mesh_solid.h"
 #include "scene/Hull_solid.h"
 #include "scene/Input_error.h"
+#include "scene/Mesh_cache.h"
+#include "scene/Mesh_options.h"
 #include "scene/Mesh_repair.h"
 
 #include <CGAL/Cartesian.h>
@@ -51,10 +53,17 @@ Rational six_volume(const Piece& p)
 
 } // namespace
 
-Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits)
+Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits, Mesh_record* record)
 {
+  if (record) record->triangles = static_cast<int>(mesh.triangles.size());
+  if (record) record->pieces = 1;
   if (mesh.convex) return hull_of(mesh.vertices, file_name);
-  return decomposed_solid(mesh, file_name, limits);
+  if (!record) return decomposed_solid(mesh, file_name, limits);
+  // The pieces depend on the checked mesh alone (the scale and the repairs
+  // are in it already), so no option is part of the key.
+  Solid s = Mesh_cache::from_environment().decomposed(mesh, file_name, limits, "", *record);
+  record->pieces = static_cast<int>(s.children.size());
+  return s;
 }
 
 Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits)
@@ -118,10 +127,12 @@ Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, c
   return u;
 }
 
-Solid read_mesh_solid(const std::string& path, const std::string& file_name, const Mesh_limits& limits)
+Solid read_mesh_solid(const std::string& path, const std::string& file_name, const Mesh_limits& limits,
+                      Mesh_record* record)
 {
-  Mesh_record record;
-  return read_mesh_solid(path, file_name, Mesh_options(), record, limits);
+  Mesh mesh = read_mesh_file(path, file_name, limits);
+  if (record) record->facets = static_cast<int>(mesh.facets.size());
+  return mesh_solid(check_mesh(mesh, file_name), file_name, limits, record);
 }
 
 namespace {
@@ -134,7 +145,12 @@ void add_pieces(const Repaired_mesh& m, const std::string& name, const Mesh_limi
 {
   Checked_mesh checked = check_mesh(m.mesh, name, m.file_facet);
   record.triangles += static_cast<int>(checked.triangles.size());
-  Solid s = mesh_solid(checked, name, limits);
+  Mesh_record shell;
+  Solid s = mesh_solid(checked, name, limits, &shell);
+  record.decomposition_seconds += shell.decomposition_seconds;
+  // The union's status: a miss when any shell was decomposed, else off, else a hit.
+  auto rank = [](const std::string& c) { return c == "miss" ? 3 : c == "off" ? 2 : c == "hit" ? 1 : 0; };
+  if (rank(shell.cache) > rank(record.cache)) record.cache = shell.cache;
   if (s.kind == Solid::Kind::Union)
     for (Solid& c : s.children) u.children.push_back(std::move(c));
   else
@@ -187,7 +203,7 @@ Solid repaired_solid(const Mesh& file, const std::string& file_name, const Mesh_
       record.solid_rule = "odd shells";
       Checked_mesh checked = check_mesh(m.mesh, file_name, m.file_facet);
       record.triangles = static_cast<int>(checked.triangles.size());
-      s = mesh_solid(checked, file_name, limits);
+      s = mesh_solid(checked, file_name, limits, &record);
       break;
   }
   record.pieces = piece_count(s);

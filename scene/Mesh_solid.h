@@ -13,15 +13,21 @@
 namespace clash4d {
 
 // Kind Hull, or Union of Hull children. Throws Input_error with place
-// file_name: exit 3 beyond limits.pieces convex pieces.
-Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits = Mesh_limits());
+// file_name: exit 3 beyond limits.pieces convex pieces. With a record, a
+// non-convex mesh's pieces go through the decomposition cache
+// (scene/Mesh_cache.h) and the record gets triangles, pieces and what the
+// decomposition cost; without one, it is decomposed every time.
+Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits = Mesh_limits(),
+                 Mesh_record* record = nullptr);
 
 // A non-convex checked mesh as the union of CGAL's convex pieces, each the
 // hull of its vertices (what mesh_solid does for a mesh that is not convex).
 Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits = Mesh_limits());
 
-// read_mesh_file, check_mesh and mesh_solid in turn.
-Solid read_mesh_solid(const std::string& path, const std::string& file_name, const Mesh_limits& limits = Mesh_limits());
+// read_mesh_file, check_mesh and mesh_solid in turn (the record, when
+// given, also gets the file's facets).
+Solid read_mesh_solid(const std::string& path, const std::string& file_name, const Mesh_limits& limits = Mesh_limits(),
+                      Mesh_record* record = nullptr);
 
 // A mesh as read, scaled and repaired as the options say
 // (scene/Mesh_repair.h), then the solid by the options' rule; what happened

@@ -48,7 +48,7 @@ struct Reader_context {
   std::filesystem::path base;
   std::vector<std::filesystem::path> allowed;
   std::map<std::string, Solid> meshes;   // by canonical path and options
-  std::vector<Mesh_record> records;      // one per entry of meshes, in reading order
+  std::vector<Mesh_record> records;      // Scene::meshes, in the order first used
 };
 
 // The path with its links resolved as far as it exists, absolute.

@@ -1,0 +1,247 @@
+#define BOOST_TEST_MODULE mesh_cache
+#include <boost/test/unit_test.hpp>
+
+#include "scene/Mesh_cache.h"
+#include "scene/Mesh_options.h"
+#include "scene/Mesh_solid.h"
+#include "scene/Scene_reader.h"
+#include "support/Cli_run.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <openssl/evp.h>
+#include <unistd.h>
+
+using namespace clash4d;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string meshes = std::string(CLASH4D_FIXTURES) + "/meshes";
+
+// An environment variable set for one test and put back after it.
+class Scoped_env {
+public:
+  Scoped_env(const char* name, const std::string& value) : name_(name)
+  {
+    const char* old = std::getenv(name);
+    had_ = old != nullptr;
+    if (had_) old_ = old;
+    setenv(name, value.c_str(), 1);
+  }
+  ~Scoped_env()
+  {
+    if (had_) setenv(name_, old_.c_str(), 1);
+    else unsetenv(name_);
+  }
+
+private:
+  const char* name_;
+  bool had_;
+  std::string old_;
+};
+
+// CLASH4D_CACHE_DIR as a fresh folder (not yet made) for one test.
+struct Fresh_cache {
+  fs::path folder = fs::temp_directory_path() /
+                    ("clash4d-test-mesh-cache-" + std::to_string(getpid()) + "-" + std::to_string(count++));
+  Scoped_env env{"CLASH4D_CACHE_DIR", folder.string()};
+  Fresh_cache() { fs::remove_all(folder); }
+  ~Fresh_cache() { fs::remove_all(folder); }
+
+  std::vector<fs::path> files() const
+  {
+    std::vector<fs::path> out;
+    std::error_code ec;
+    if (fs::is_directory(folder, ec))
+      for (const auto& e : fs::directory_iterator(folder)) out.push_back(e.path());
+    return out;
+  }
+  static inline int count = 0;
+};
+
+std::string file_text(const fs::path& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+void write_text(const fs::path& path, const std::string& text)
+{
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+}
+
+std::string sha256_hex(const std::string& text)
+{
+  unsigned char d[EVP_MAX_MD_SIZE];
+  unsigned int n = 0;
+  EVP_Digest(text.data(), text.size(), d, &n, EVP_sha256(), nullptr);
+  std::string out;
+  for (unsigned int i = 0; i < n; ++i) out += {"0123456789abcdef"[d[i] >> 4], "0123456789abcdef"[d[i] & 15]};
+  return out;
+}
+
+Solid read_part(const std::string& file, Mesh_record& record)
+{
+  return read_mesh_solid(meshes + "/" + file, file, Mesh_limits(), &record);
+}
+
+// The same solid to the last number and index: what the checks build from.
+bool same_solid(const Solid& a, const Solid& b)
+{
+  if (a.kind != b.kind || a.numbers != b.numbers || a.triples != b.triples || a.constructed != b.constructed ||
+      a.children.size() != b.children.size() || !a.corners != !b.corners || (a.corners && *a.corners != *b.corners))
+    return false;
+  for (std::size_t i = 0; i < a.children.size(); ++i)
+    if (!same_solid(a.children[i], b.children[i])) return false;
+  return true;
+}
+
+// The L-part decomposed without the cache: the answer every read must give.
+Solid reference_part()
+{
+  return mesh_solid(check_mesh(read_mesh_file(meshes + "/l_part.off", "l_part.off"), "l_part.off"), "l_part.off");
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(second_read_is_a_hit_with_the_same_pieces)
+{
+  Fresh_cache cache;
+  Mesh_record first, second;
+  Solid a = read_part("l_part.off", first);
+  BOOST_TEST(first.cache == "miss");
+  BOOST_TEST(first.facets == 10);
+  BOOST_TEST(first.triangles == 20);
+  BOOST_TEST(first.pieces == static_cast<int>(a.children.size()));
+  BOOST_TEST(first.pieces >= 2);
+  BOOST_REQUIRE(cache.files().size() == 1u);
+  BOOST_TEST(cache.files()[0].extension() == ".pieces");
+  Solid b = read_part("l_part.off", second);
+  BOOST_TEST(second.cache == "hit");
+  BOOST_TEST(second.decomposition_seconds == 0);
+  BOOST_TEST(second.pieces == first.pieces);
+  BOOST_TEST(same_solid(a, b));
+  BOOST_TEST(same_solid(a, reference_part()));
+  BOOST_TEST(cache.files().size() == 1u);   // nothing left behind (temporaries)
+}
+
+BOOST_AUTO_TEST_CASE(the_key_tells_meshes_and_options_apart)
+{
+  Checked_mesh l = check_mesh(read_mesh_file(meshes + "/l_part.off", "l_part.off"), "l_part.off");
+  std::string k = Mesh_cache::key(l, Mesh_options().key());
+  BOOST_TEST(k.size() == 64u);
+  BOOST_TEST(Mesh_cache::key(l, Mesh_options().key()) == k);
+  Mesh_options scaled;
+  scaled.scale = Rational(2);
+  BOOST_TEST(Mesh_cache::key(l, scaled.key()) != k);
+  Checked_mesh moved = l;
+  moved.vertices[0][0] += Rational(1, 1000000);
+  BOOST_TEST(Mesh_cache::key(moved, Mesh_options().key()) != k);
+}
+
+BOOST_AUTO_TEST_CASE(a_damaged_entry_is_decomposed_again_with_the_same_answer)
+{
+  Fresh_cache cache;
+  Mesh_record record;
+  Solid reference = read_part("l_part.off", record);
+  BOOST_REQUIRE(cache.files().size() == 1u);
+  fs::path entry = cache.files()[0];
+  std::string good = file_text(entry);
+  // A body whose hash is right but whose pieces do not fill the mesh: one
+  // piece dropped, the count and the hash made to agree.
+  std::size_t body_at = good.find('\n', good.find("\nbody ") + 1) + 1;
+  std::string body = good.substr(body_at);
+  std::size_t last_piece = body.rfind("piece ");
+  std::string fewer = body.substr(0, last_piece);
+  int n = record.pieces;
+  fewer.replace(0, fewer.find('\n'), "pieces " + std::to_string(n - 1));
+  std::string header = good.substr(0, good.find("\nbody ")) + "\nbody " + sha256_hex(fewer) + "\n";
+  std::string flipped_body = good, flipped_key = good;
+  flipped_body[body_at + body.size() / 2] ^= 1;
+  flipped_key[good.find("\nkey ") + 6] ^= 1;
+  std::vector<std::pair<std::string, std::string>> damages = {
+      {"a byte of the body flipped", flipped_body},
+      {"a byte of the key flipped", flipped_key},
+      {"cut in the middle", good.substr(0, good.size() / 2)},
+      {"cut by one byte", good.substr(0, good.size() - 1)},
+      {"empty", ""},
+      {"text appended", good + "piece 4\n"},
+      {"a piece missing, hash made right", header + fewer},
+  };
+  for (const auto& [what, text] : damages) {
+    BOOST_TEST_CONTEXT(what)
+    {
+      write_text(entry, text);
+      Mesh_record again;
+      Solid s = read_part("l_part.off", again);
+      BOOST_TEST(again.cache == "miss");
+      BOOST_TEST(same_solid(s, reference));
+      BOOST_TEST(file_text(entry) == good);   // overwritten with the right entry
+      Mesh_record then;
+      read_part("l_part.off", then);
+      BOOST_TEST(then.cache == "hit");
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(off_writes_nothing_and_a_folder_that_cannot_be_made_is_off)
+{
+  Fresh_cache cache;
+  {
+    Scoped_env off("CLASH4D_MESH_CACHE", "off");
+    Mesh_record record;
+    Solid s = read_part("l_part.off", record);
+    BOOST_TEST(record.cache == "off");
+    BOOST_TEST(same_solid(s, reference_part()));
+    BOOST_TEST(!fs::exists(cache.folder));
+  }
+  // Under a regular file: no folder can be made, the cache is off, no error.
+  fs::create_directories(cache.folder);
+  write_text(cache.folder / "file", "x");
+  Scoped_env blocked("CLASH4D_CACHE_DIR", (cache.folder / "file" / "meshes").string());
+  Mesh_record record;
+  Solid s = read_part("l_part.off", record);
+  BOOST_TEST(record.cache == "off");
+  BOOST_TEST(same_solid(s, reference_part()));
+  BOOST_TEST(cache.files().size() == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(a_convex_mesh_is_not_decomposed_nor_cached)
+{
+  Fresh_cache cache;
+  Mesh_record record;
+  Solid cube = read_part("cube.off", record);
+  BOOST_TEST((cube.kind == Solid::Kind::Hull));
+  BOOST_TEST(record.cache == "");
+  BOOST_TEST(record.pieces == 1);
+  BOOST_TEST(cache.files().empty());
+}
+
+BOOST_AUTO_TEST_CASE(the_scene_records_each_mesh_file_and_check_stats_shows_them)
+{
+  Fresh_cache cache;
+  Scene scene = read_scene_file(meshes + "/scene_l_part.json");
+  BOOST_REQUIRE(scene.meshes.size() == 1u);
+  const Mesh_record& m = scene.meshes[0];
+  BOOST_TEST(m.file == "l_part_binary.stl");
+  BOOST_TEST(m.place == "objects[0].shape.mesh");
+  BOOST_TEST(m.facets == 20);   // STL: triangles
+  BOOST_TEST(m.triangles == 20);
+  BOOST_TEST(m.cache == "miss");
+  Cli_run run = run_clash4d({"check", meshes + "/scene_l_part.json", "--stats", "--json"});
+  auto j = nlohmann::json::parse(run.out);
+  BOOST_REQUIRE(j["stats"]["meshes"].size() == 1u);
+  BOOST_TEST(j["stats"]["meshes"][0]["cache"] == "hit");
+  BOOST_TEST(j["stats"]["meshes"][0]["pieces"] == m.pieces);
+  BOOST_TEST(j["stats"]["meshes"][0]["place"] == "objects[0].shape.mesh");
+  Cli_run text = run_clash4d({"check", meshes + "/scene_l_part.json", "--stats"});
+  BOOST_TEST(text.out.find("  meshes:\n    l_part_binary.stl (objects[0].shape.mesh): 20 facets, 20 triangles, ") !=
+                 std::string::npos,
+             text.out);
+  BOOST_TEST(text.out.find("(cache hit)") != std::string::npos, text.out);
+  // Without --stats, nothing about meshes.
+  BOOST_TEST(run_clash4d({"check", meshes + "/scene_l_part.json", "--json"}).out.find("meshes") == std::string::npos);
+}
