@@ -191,23 +191,17 @@ inline std::vector<Turning_case> all_rotation_cases(unsigned long seed)
 }
 
 // The scene's motions, and the same restated (a pose motion: its last pose
-// once more after the span; a velocity motion: one more breakpoint between
-// equal velocities), as restated_motions does for translations.
+// once more after the span; a velocity motion as restated_motions does).
 inline std::array<std::vector<Motion>, 2> restated_turning_motions(const Scene& scene)
 {
-  std::array<std::vector<Motion>, 2> out;
-  for (const Scene_object& o : scene.objects) {
-    out[0].push_back(o.motion);
-    Motion later = o.motion;
-    if (!later.poses.empty()) {
-      Pose p = later.poses.back();
-      p.t = std::max(p.t, scene.t_hi) + 1;
-      later.poses.push_back(p);
-    } else {
-      later.times.push_back((later.times.empty() ? scene.t_hi : std::max(later.times.back(), scene.t_hi)) + 1);
-      later.velocities.push_back(later.velocities.back());
-    }
-    out[1].push_back(later);
+  std::array<std::vector<Motion>, 2> out = restated_motions(scene);
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    Motion& later = out[1][i];
+    if (scene.objects[i].motion.poses.empty()) continue;
+    later = scene.objects[i].motion;
+    Pose p = later.poses.back();
+    p.t = std::max(p.t, scene.t_hi) + 1;
+    later.poses.push_back(p);
   }
   return out;
 }
