@@ -179,6 +179,7 @@ Critical_times::Critical_times(const std::vector<Moving_plane>& planes, std::siz
   rows.reserve(planes.size());
   for (const Moving_plane& h : planes) rows.push_back(integer_row(h));
   Interval_rows filter(planes, lo, hi);
+  auto normals = [&](int i, int j, int k) { return normal_minor(rows[i], rows[j], rows[k]); };
   Minor_table table;
   bool identically_zero = false;
   std::size_t made = 0;
@@ -191,8 +192,7 @@ Critical_times::Critical_times(const std::vector<Moving_plane>& planes, std::siz
       break;
     }
     auto [i, j, k, l] = m;
-    Int_poly d = rows[j][3] * normal_minor(rows[i], rows[k], rows[l]) - rows[i][3] * normal_minor(rows[j], rows[k], rows[l]) +
-                 rows[l][3] * normal_minor(rows[i], rows[j], rows[k]) - rows[k][3] * normal_minor(rows[i], rows[j], rows[l]);
+    Int_poly d = pair_minors_detail::full_minor(rows, normals, i, j, k, l);
     if (primitive(d).empty()) {
       identically_zero = true;
       break;

@@ -89,6 +89,14 @@ private:
   std::map<std::array<int, 3>, Poly> made_;
 };
 
+// The 4 x 4 minor of rows i, j, k, l by the last column: the offsets e
+// against the minors of the normals.
+template <class Poly, class Normals>
+Poly full_minor(const std::vector<std::array<Poly, 4>>& r, Normals& normals, int i, int j, int k, int l)
+{
+  return r[j][3] * normals(i, k, l) - r[i][3] * normals(j, k, l) + r[l][3] * normals(i, j, k) - r[k][3] * normals(i, j, l);
+}
+
 } // namespace pair_minors_detail
 
 // Calls table.add(minor, rows) for each mixed minor that filter.settled
@@ -128,12 +136,7 @@ void enumerate_pair_minors(const std::vector<std::array<Poly, 4>>& r, int first_
       for (int k = j + 1; k < m; ++k)
         for (int l = k + 1; l < m; ++l)
           if (owners.mixed({i, j, k, l})) {
-            // The 4 x 4 determinant by the last column: the offsets e
-            // against the minors of the normals.
-            if (!filter.settled({i, j, k, l}))
-              table.add(r[j][3] * normals(i, k, l) - r[i][3] * normals(j, k, l) + r[l][3] * normals(i, j, k) -
-                            r[k][3] * normals(i, j, l),
-                        {i, j, k, l});
+            if (!filter.settled({i, j, k, l})) table.add(full_minor(r, normals, i, j, k, l), {i, j, k, l});
             if (++made % 4096 == 0) Work_budget::check();
           }
 }
