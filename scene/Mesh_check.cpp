@@ -73,11 +73,7 @@ std::vector<P3> check_facets(const Facets& facets, const Fail& fail, Checked_mes
     for (std::size_t i = 0; i < F.size(); ++i)
       if (!seen.insert(F[i]).second)
         fail(fail.facet(fi), "vertex " + std::to_string(i) + " " + text(V[F[i]]) + " repeats an earlier vertex of the facet");
-    P3 N{Rational(0), Rational(0), Rational(0)};
-    for (std::size_t i = 0; i < F.size(); ++i) {
-      P3 c = cross(V[F[i]], V[F[(i + 1) % F.size()]]);
-      for (int k = 0; k < 3; ++k) N[k] += c[k];
-    }
+    P3 N = newell_normal(F, V);
     if (is_zero(N)) fail(fail.facet(fi), "zero area (its vertices are collinear; \"repair\": [\"drop-zero-area\"] drops it)");
     if (F.size() > 3) {
       std::string fault = polygon_fault(F, N, V);
@@ -266,6 +262,16 @@ Mesh merged_points(const Mesh& mesh, const std::string& file_name, const std::ve
       out.facets[f].push_back(id[v]);
     }
   return out;
+}
+
+P3 newell_normal(const std::vector<int>& F, const std::vector<P3>& V)
+{
+  P3 N{Rational(0), Rational(0), Rational(0)};
+  for (std::size_t i = 0; i < F.size(); ++i) {
+    P3 c = cross(V[F[i]], V[F[(i + 1) % F.size()]]);
+    for (int k = 0; k < 3; ++k) N[k] += c[k];
+  }
+  return N;
 }
 
 // Planar (normal N) and strictly convex: every other vertex strictly left of

@@ -30,6 +30,9 @@ Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name, const st
 // dropped; throws Input_error for a vertex index out of range.
 Mesh merged_points(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet = {});
 
+// Newell's normal of a polygon (unnormalised): zero exactly when its area is.
+std::array<Rational, 3> newell_normal(const std::vector<int>& polygon, const std::vector<std::array<Rational, 3>>& V);
+
 // Why a polygon of more than three vertices with Newell normal N is not a
 // facet the check accepts (not planar, or not strictly convex), or empty.
 std::string polygon_fault(const std::vector<int>& polygon, const std::array<Rational, 3>& N,

@@ -14,17 +14,6 @@ using P3 = std::array<Rational, 3>;
 
 P3 minus(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
-// Newell's normal of a polygon: zero exactly when its area is zero.
-P3 newell_normal(const std::vector<int>& F, const std::vector<P3>& V)
-{
-  P3 N{Rational(0), Rational(0), Rational(0)};
-  for (std::size_t i = 0; i < F.size(); ++i) {
-    P3 c = cross(V[F[i]], V[F[(i + 1) % F.size()]]);
-    for (int k = 0; k < 3; ++k) N[k] += c[k];
-  }
-  return N;
-}
-
 bool is_zero(const P3& a) { return CGAL::is_zero(a[0]) && CGAL::is_zero(a[1]) && CGAL::is_zero(a[2]); }
 
 // A polygon cut into triangles by ears, in its projection along the largest
