@@ -8,7 +8,7 @@
 #include "check/Pair_skeleton.h"
 #include "check/Pair_sweep.h"
 #include "numbers/Number_ops.h"
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 #include <boost/container/small_vector.hpp>
 #include <algorithm>
 #include <atomic>

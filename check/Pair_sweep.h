@@ -11,7 +11,7 @@
 
 #include "geometry/Box.h"
 #include "model/Scene_model.h"
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 #include <CGAL/box_intersection_d.h>
 #include <boost/container/small_vector.hpp>
 #include <algorithm>

@@ -6,7 +6,7 @@
 #include "scene/Input_error.h"
 #include "scene/Files.h"
 #include "scene/Scene_reader.h"
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>

@@ -6,7 +6,7 @@
 #include "float/Ccd_double_instantiation.h"
 #include "scene/Input_error.h"
 #include "scene/Number_text.h"
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 
 #include <CLI/CLI.hpp>
 #include <tbb/parallel_for.h>

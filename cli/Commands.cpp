@@ -23,7 +23,7 @@
 #include "scene/Rotation_refusal.h"
 #include "scene/Printable.h"
 #include "scene/Grid_scene.h"
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 #include "scene/Scene_reader.h"
 
 #include <CLI/CLI.hpp>
@@ -775,7 +775,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
                                 add_skeleton(app, out, err),  add_compare(app, out, err), add_fuzz(app, out, err),
                                 add_report(app, out, err),    add_generate(app, out, err), add_verify(app, out, err),
                                 add_ccd(app, out, err)};
-  // The work budget (search/Work_budget.h), on the commands that search.
+  // The work budget (run/Work_budget.h), on the commands that search.
   double max_seconds = 0;
   for (const char* name : {"check", "skeleton", "compare", "fuzz", "report", "ccd"})
     app.get_subcommand(name)

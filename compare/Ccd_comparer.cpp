@@ -6,7 +6,7 @@
 #include "float/Ccd_double_instantiation.h"
 #include "scene/Number_json.h"
 #include "scene/Number_text.h"
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 
 #include <chrono>
 #include <cmath>

@@ -18,7 +18,7 @@
 #include "scene/Rotation_refusal.h"
 #include "scene/Scene_reader.h"
 #include "scene/Scene_writer.h"
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 
 #include <algorithm>
 #include <chrono>

@@ -5,7 +5,7 @@
 #include "scene/Json_reader.h"
 #include "scene/Number_text.h"
 #include "scene/Scene_writer.h"
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 
 #include <chrono>
 #include <cstdio>

@@ -2,7 +2,7 @@
 
 #include "rotation/Pair_minors.h"
 
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 
 #include <CGAL/Interval_nt.h>
 

@@ -7,7 +7,7 @@
 #define CLASH4D_ROTATION_PAIR_MINORS_H
 
 #include "rotation/Critical_times.h"
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 #include <array>
 #include <initializer_list>
 #include <map>

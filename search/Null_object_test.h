@@ -19,7 +19,7 @@
 #include "search/Neighbourhood.h"
 #include "search/No_filter.h"
 #include "search/Search_goal.h"
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 #include <algorithm>
 #include <array>
 #include <optional>

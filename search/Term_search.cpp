@@ -1,6 +1,6 @@
 #include "search/Term_search.h"
 
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 #include <algorithm>
 #include <climits>
 

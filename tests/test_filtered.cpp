@@ -27,7 +27,7 @@
 
 #include "search/Null_object_test.h"
 #include "search/Witness.h"
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 #include "exact/Certified_sides.h"
 #include "exact/Exact_witness_signs.h"
 #include "model/Point_classifier.h"

@@ -7,7 +7,7 @@
 #include "scene/Files.h"
 #include "scene/Scene_reader.h"
 #include <algorithm>
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
@@ -88,7 +88,7 @@ BOOST_AUTO_TEST_CASE(an_interrupted_campaign_resumes_and_loses_nothing)
   BOOST_TEST((contents(cut / "findings") == contents(full / "findings")));
 }
 
-// --max-seconds (search/Work_budget.h): a budget that runs out in the first
+// --max-seconds (run/Work_budget.h): a budget that runs out in the first
 // case stops the campaign with Budget_exceeded before any batch is saved;
 // run again without it, the campaign ends with the findings of a run never
 // stopped.

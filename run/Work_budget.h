@@ -1,11 +1,13 @@
-// A bound on a run's time (--max-seconds; issue 16, "A work budget"). The
-// search looks at it once per region of the division (§4.1) and once per
-// line of generate-and-test (§4.2), so a run stops within about one line's
-// work of the deadline, whatever the kernel. Past it, Budget_exceeded is
-// thrown and the command answers exit 3 naming the limit, with nothing
-// partial printed as an answer.
-#ifndef CLASH4D_SEARCH_WORK_BUDGET_H
-#define CLASH4D_SEARCH_WORK_BUDGET_H
+// A bound on a run's time (--max-seconds; issue 16, "A work budget"), and
+// the API's cancellation. It is the bottom of the folder graph, so every
+// step of a run can look at it, the scene reader's mesh decomposition too
+// (scene/Child_process.h). The search looks at it once per region of the
+// division (§4.1) and once per line of generate-and-test (§4.2), so a run
+// stops within about one line's work of the deadline, whatever the kernel.
+// Past it, Budget_exceeded is thrown and the command answers exit 3 naming
+// the limit, with nothing partial printed as an answer.
+#ifndef CLASH4D_RUN_WORK_BUDGET_H
+#define CLASH4D_RUN_WORK_BUDGET_H
 
 #include <atomic>
 #include <chrono>
@@ -53,6 +55,14 @@ public:
     }
     std::int64_t deadline = deadline_().load(std::memory_order_relaxed);
     if (deadline != 0 && now_ns() > deadline) throw Budget_exceeded{seconds_().load()};
+  }
+  // Whether check() can ever throw on this thread: a deadline or a cancel
+  // flag (a step that cannot look at it often runs where it can be stopped
+  // from outside: scene/Child_process.h).
+  static bool limited()
+  {
+    if (std::shared_ptr<const Run_budget> run = this_thread_run().lock()) return run->cancel || run->deadline != 0;
+    return deadline_().load(std::memory_order_relaxed) != 0;
   }
   // The steady-clock deadline `seconds` from now; 0 when seconds <= 0.
   static std::int64_t deadline_after(double seconds)
