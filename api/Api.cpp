@@ -25,7 +25,7 @@
 #include "scene/Pose_motion.h"
 #include "scene/Scene_reader.h"
 #include "scene/Scene_writer.h"
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
@@ -237,7 +237,7 @@ auto guarded(const std::string& file, F f) -> decltype(f())
 }
 
 // The worker threads of one budgeted run's arena take its budget on entry
-// and drop it on exit (search/Work_budget.h: held weakly, so a thread that
+// and drop it on exit (run/Work_budget.h: held weakly, so a thread that
 // leaves unnoticed holds nothing once the run is over).
 class Budget_observer : public tbb::task_scheduler_observer {
 public:
@@ -467,18 +467,26 @@ struct Scene::Impl {
   }
 };
 
-Scene Scene::read_file(const std::string& path, const std::vector<std::string>& allowed_mesh_folders)
+// Read within the cancel flag (budgeted): a mesh's decomposition looks at
+// it (scene/Child_process.h).
+Scene Scene::read_file(const std::string& path, const std::vector<std::string>& allowed_mesh_folders,
+                       const std::atomic<bool>* cancel)
 {
   return guarded(path, [&] {
-    return Scene(std::make_shared<const Impl>(path, in::read_scene_file(path, allowed_mesh_folders)));
+    return budgeted(path, 0, cancel, [&] {
+      return Scene(std::make_shared<const Impl>(path, in::read_scene_file(path, allowed_mesh_folders)));
+    });
   });
 }
 
 Scene Scene::parse(const std::string& json, const std::string& file,
-                   const std::vector<std::string>& allowed_mesh_folders)
+                   const std::vector<std::string>& allowed_mesh_folders, const std::atomic<bool>* cancel)
 {
   return guarded(file, [&] {
-    return Scene(std::make_shared<const Impl>(file, in::read_scene(in::read_json_text(json), "", allowed_mesh_folders)));
+    return budgeted(file, 0, cancel, [&] {
+      return Scene(
+          std::make_shared<const Impl>(file, in::read_scene(in::read_json_text(json), "", allowed_mesh_folders)));
+    });
   });
 }
 

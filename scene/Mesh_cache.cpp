@@ -2,6 +2,8 @@
 #include "scene/Hull_solid.h"
 #include "scene/Mesh_solid.h"
 #include "scene/Slow_step_note.h"
+#include "scene/Child_process.h"
+#include "run/Work_budget.h"
 
 #include <CGAL/Cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -167,6 +169,19 @@ void write_entry(const fs::path& folder, const std::string& key, const Solid& pi
   if (ec) fs::remove(temporary, ec);
 }
 
+// decomposed_solid where the work budget can stop it: in a child process
+// when the run has a deadline or a cancel flag (CGAL's decomposition has no
+// place to look at them), here otherwise. The child's pieces come back as
+// an entry's body, exact, and are rebuilt as hulls the same way.
+Solid decomposed_within_budget(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits)
+{
+  if (!Work_budget::limited()) return decomposed_solid(mesh, file_name, limits);
+  Work_budget::check();
+  std::string body = text_of_child([&] { return body_text(decomposed_solid(mesh, file_name, limits)); },
+                                   [] { Work_budget::check(); }, file_name);
+  return parse_body(body, limits.pieces);
+}
+
 } // namespace
 
 Mesh_cache Mesh_cache::from_environment()
@@ -222,6 +237,7 @@ std::optional<Solid> Mesh_cache::load(const std::string& key, const Checked_mesh
   } catch (const std::exception&) {   // any text that is not what store writes
     return std::nullopt;
   }
+
 }
 
 void Mesh_cache::store(const std::string& key, const Solid& pieces) const
@@ -248,7 +264,7 @@ Solid Mesh_cache::decomposed(const Checked_mesh& mesh, const std::string& file_n
   Solid pieces;
   {
     Slow_step_note note("decomposing " + file_name + " (" + std::to_string(mesh.triangles.size()) + " triangles)");
-    pieces = decomposed_solid(mesh, file_name, limits);
+    pieces = decomposed_within_budget(mesh, file_name, limits);
   }
   record.decomposition_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   store(k, pieces);

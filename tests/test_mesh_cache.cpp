@@ -1,12 +1,17 @@
 #define BOOST_TEST_MODULE mesh_cache
 #include <boost/test/unit_test.hpp>
 
+#include "run/Work_budget.h"
+#include "scene/Child_process.h"
+#include "scene/Input_error.h"
 #include "scene/Mesh_cache.h"
 #include "scene/Mesh_options.h"
 #include "scene/Mesh_solid.h"
 #include "scene/Scene_reader.h"
 #include "support/Cli_run.h"
 
+#include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -244,4 +249,69 @@ BOOST_AUTO_TEST_CASE(the_scene_records_each_mesh_file_and_check_stats_shows_them
   BOOST_TEST(text.out.find("(cache hit)") != std::string::npos, text.out);
   // Without --stats, nothing about meshes.
   BOOST_TEST(run_clash4d({"check", meshes + "/scene_l_part.json", "--json"}).out.find("meshes") == std::string::npos);
+}
+
+// --max-seconds and the API's cancel flag cover the decomposition (issue 58
+// item 3): with a budget it runs in a child process (scene/Child_process.h),
+// and its pieces must be the very ones made here.
+BOOST_AUTO_TEST_CASE(a_budgeted_decomposition_gives_the_same_pieces_from_its_child)
+{
+  Fresh_cache cache;
+  struct Budget {
+    Budget() { Work_budget::start(3600); }
+    ~Budget() { Work_budget::start(0); }
+  } budget;
+  BOOST_REQUIRE(Work_budget::limited());
+  Mesh_record record;
+  Solid a = read_part("l_part.off", record);
+  BOOST_TEST(record.cache == "miss");
+  BOOST_TEST(same_solid(a, reference_part()));
+}
+
+BOOST_AUTO_TEST_CASE(a_child_returns_its_text_its_input_error_and_its_lack_of_memory)
+{
+  auto never = [] {};
+  std::string big(3 << 20, 'x');   // more than a pipe holds: read while the child writes
+  big[12345] = '\n';
+  BOOST_TEST(text_of_child([&] { return big; }, never, "here") == big);
+  try {
+    text_of_child([]() -> std::string { throw Input_error("facet 7", "not planar", 3); }, never, "here");
+    BOOST_FAIL("no Input_error");
+  } catch (const Input_error& e) {
+    BOOST_TEST(e.place() == "facet 7");
+    BOOST_TEST(std::string(e.what()) == "not planar");
+    BOOST_TEST(e.exit_code() == 3);
+  }
+  BOOST_CHECK_THROW(text_of_child([]() -> std::string { throw std::bad_alloc(); }, never, "here"), std::bad_alloc);
+  try {
+    text_of_child([]() -> std::string { throw std::logic_error("CGAL said no"); }, never, "m.off");
+    BOOST_FAIL("no Input_error");
+  } catch (const Input_error& e) {
+    BOOST_TEST(e.place() == "m.off");
+    BOOST_TEST(e.exit_code() == 4);
+    BOOST_TEST(std::string(e.what()).find("CGAL said no") != std::string::npos);
+  }
+}
+
+// A poll that throws (the budget ran out, the run was cancelled) stops a
+// child that would never end: killed and reaped, the exception passed on.
+BOOST_AUTO_TEST_CASE(a_child_is_killed_and_reaped_when_the_poll_throws)
+{
+  struct Stop {};
+  int fds[2];
+  BOOST_REQUIRE(pipe(fds) == 0);
+  int polls = 0;
+  auto work = [&]() -> std::string {
+    pid_t me = getpid();
+    if (write(fds[1], &me, sizeof me) != sizeof me) _exit(1);
+    for (;;) pause();
+  };
+  BOOST_CHECK_THROW(text_of_child(work, [&] { if (++polls == 4) throw Stop{}; }, "here"), Stop);
+  pid_t child = 0;
+  BOOST_REQUIRE(read(fds[0], &child, sizeof child) == sizeof child);
+  close(fds[0]);
+  close(fds[1]);
+  BOOST_TEST(polls == 4);
+  BOOST_TEST(child != getpid());
+  BOOST_TEST((kill(child, 0) == -1 && errno == ESRCH));   // gone: not even a zombie
 }

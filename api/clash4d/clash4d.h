@@ -284,12 +284,17 @@ public:
   // A scene file (JSON); throws Input_error naming the file and the place.
   // Its mesh files must be under the file's folder or one of
   // allowed_mesh_folders (docs/meshes.md, "Where a mesh file may be").
-  static Scene read_file(const std::string& path, const std::vector<std::string>& allowed_mesh_folders = {});
+  // cancel, when not null, may be set by another thread to stop the
+  // reading (a mesh's convex decomposition can take minutes): it then
+  // throws Cancelled. It must outlive the call.
+  static Scene read_file(const std::string& path, const std::vector<std::string>& allowed_mesh_folders = {},
+                         const std::atomic<bool>* cancel = nullptr);
   // A scene as JSON text; `file` names it in error messages. Its mesh files
   // are relative to, and must be under, the current directory or one of
-  // allowed_mesh_folders.
+  // allowed_mesh_folders. cancel as in read_file.
   static Scene parse(const std::string& json, const std::string& file = "<scene>",
-                     const std::vector<std::string>& allowed_mesh_folders = {});
+                     const std::vector<std::string>& allowed_mesh_folders = {},
+                     const std::atomic<bool>* cancel = nullptr);
 
   const std::string& file() const;                 // the path, or the name given to parse
   const std::string& name() const;                 // the scene's "name" ("" when none)

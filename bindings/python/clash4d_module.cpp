@@ -318,8 +318,8 @@ c4::Scene read_scene(py::handle scene, const std::vector<std::string>& mesh_fold
   if (py::isinstance<c4::Scene>(scene)) return scene.cast<c4::Scene>();
   if (py::isinstance<py::dict>(scene)) {
     std::string text = Json_writer("<scene>").write(scene);
-    py::gil_scoped_release release;
-    return c4::Scene::parse(text, "<scene>", mesh_folders);
+    return interruptible(
+        [&](const std::atomic<bool>* cancel) { return c4::Scene::parse(text, "<scene>", mesh_folders, cancel); });
   }
   static py::object* fspath = new py::object(py::module_::import("os").attr("fspath"));
   static py::object* fsdecode = new py::object(py::module_::import("os").attr("fsdecode"));
@@ -331,8 +331,9 @@ c4::Scene read_scene(py::handle scene, const std::vector<std::string>& mesh_fold
                          std::string(py::str(py::type::handle_of(scene).attr("__name__"))));
   }
   std::string file = path.cast<std::string>();
-  py::gil_scoped_release release;
-  return c4::Scene::read_file(file, mesh_folders);
+  // Ctrl-C stops a long read (a mesh's decomposition) as it stops a check.
+  return interruptible(
+      [&](const std::atomic<bool>* cancel) { return c4::Scene::read_file(file, mesh_folders, cancel); });
 }
 
 const char* const ccd_file = "<query>";   // the file of a CCD query's InputError (c4::ccd's)

@@ -875,6 +875,72 @@ class Time_limit_and_interrupt(unittest.TestCase):
         self.assertEqual(clash4d.check(APPROACH, earliest=True)["earliest"]["t"], Fraction(1, 2))
 
 
+def bowl_off(m):
+    """A non-convex part of about 2 m^2 triangles in OFF (as
+    scripts/decomposition-bench makes): z = x^2 + y^2 over an m x m grid on
+    [-1, 1]^2, walls and a lid at z = 3, one grid point in three pushed up
+    into the solid along a diagonal. Its decomposition takes seconds."""
+    xs = [Fraction(-1) + Fraction(2 * i, m) for i in range(m + 1)]
+    pts, at = [], {}
+    for i, x in enumerate(xs):
+        for j, y in enumerate(xs):
+            at[i, j] = len(pts)
+            pushed = 0 < i == j < m and i % 3 == 0
+            pts.append((x, y, x * x + y * y + (Fraction(2, m) if pushed else 0)))
+    for x in (-1, 1):
+        for y in (-1, 1):
+            at["top", x, y] = len(pts)
+            pts.append((Fraction(x), Fraction(y), Fraction(3)))
+    tris = []
+    for i in range(m):
+        for j in range(m):   # seen from below: clockwise from above
+            tris += [(at[i, j], at[i, j + 1], at[i + 1, j + 1]), (at[i, j], at[i + 1, j + 1], at[i + 1, j])]
+    sides = [([at[m, j] for j in range(m + 1)], ("top", 1, -1), ("top", 1, 1)),
+             ([at[i, m] for i in range(m, -1, -1)], ("top", 1, 1), ("top", -1, 1)),
+             ([at[0, j] for j in range(m, -1, -1)], ("top", -1, 1), ("top", -1, -1)),
+             ([at[i, 0] for i in range(m + 1)], ("top", -1, -1), ("top", 1, -1))]
+    for chain, apex, other in sides:   # counter-clockwise seen from outside
+        tris += [(at[apex], chain[k], chain[k + 1]) for k in range(m)] + [(at[apex], chain[m], at[other])]
+    lid = [at["top", -1, -1], at["top", 1, -1], at["top", 1, 1], at["top", -1, 1]]
+    tris += [(lid[0], lid[1], lid[2]), (lid[0], lid[2], lid[3])]
+    text = lambda v: str(Decimal(v.numerator) / Decimal(v.denominator))
+    return "OFF\n%d %d 0\n" % (len(pts), len(tris)) + "".join(
+        " ".join(text(v) for v in p) + "\n" for p in pts) + "".join("3 %d %d %d\n" % t for t in tris)
+
+
+class Interrupted_mesh_reading(unittest.TestCase):
+    """Ctrl-C during a scene's reading, while CGAL decomposes a mesh (issue
+    58 item 3: the decomposition runs where it can be stopped)."""
+
+    def test_ctrl_c_interrupts_a_long_decomposition(self):
+        import tempfile
+        with tempfile.TemporaryDirectory() as folder:
+            folder = pathlib.Path(folder)
+            (folder / "bowl.off").write_text(bowl_off(64))   # read and checked in about 1 s, decomposed in 7
+            scene = {"format": "clash4d-scene/1", "time": [0, 1],
+                     "objects": [{"name": "bowl", "shape": {"mesh": "bowl.off"}},
+                                 {"name": "probe", "shape": {"block": {"min": [5, 5, 5], "max": [6, 6, 6]}}}]}
+            (folder / "scene.json").write_text(json.dumps(scene))
+            old_cache = os.environ.get("CLASH4D_CACHE_DIR")
+            os.environ["CLASH4D_CACHE_DIR"] = str(folder / "cache")
+            old = signal.signal(signal.SIGINT, signal.default_int_handler)
+            timer = threading.Timer(2.0, os.kill, (os.getpid(), signal.SIGINT))
+            start = time.monotonic()
+            try:
+                timer.start()
+                with self.assertRaises(KeyboardInterrupt):
+                    clash4d.Scene(folder / "scene.json")
+                self.assertLess(time.monotonic() - start, GENEROUS)
+            finally:
+                timer.cancel()
+                signal.signal(signal.SIGINT, old)
+                if old_cache is None:
+                    del os.environ["CLASH4D_CACHE_DIR"]
+                else:
+                    os.environ["CLASH4D_CACHE_DIR"] = old_cache
+            self.assertEqual(list((folder / "cache").glob("*.pieces")), [])   # nothing half-made was kept
+
+
 class Typed_answers(unittest.TestCase):
     """check's clash4d.Answer, Pair and Point (issue 60, item 5)."""
 
