@@ -57,8 +57,8 @@ int find_root(std::vector<int>& parent, int i)
 
 // The self-intersection test's kernel: CGAL's lazy exact one, whose
 // predicates are decided on intervals and, only where those cannot tell,
-// on the exact rationals the points are made from (the same signs as
-// CGAL::Cartesian<Rational>, 5-10x sooner on a part of 10k facets).
+// on the exact rationals the points are made from: the same signs as
+// CGAL::Cartesian<Rational>, sooner.
 using Exact_geometry = CGAL::Epeck;
 using Surface = CGAL::Surface_mesh<Exact_geometry::Point_3>;
 
