@@ -66,8 +66,8 @@ Conflict::Of of_from(const json& c)
 
 } // namespace
 
-Turning_prover::Turning_prover(const Scene& scene, Semantics semantics, std::uint64_t step_limit)
-    : scene_(scene), semantics_(semantics), limit_(step_limit)
+Turning_prover::Turning_prover(const Scene& scene, Semantics semantics, std::uint64_t step_limit, bool feature_events)
+    : scene_(scene), semantics_(semantics), feature_events_(feature_events), limit_(step_limit)
 {
 }
 
@@ -126,6 +126,24 @@ Turning_prover::Proof Turning_prover::proof_at(const std::vector<Moving_plane>& 
   return out;
 }
 
+// lo, the critical times of the piece [lo, piece_hi] below hi (of the
+// features only when they are given and none is identically zero there,
+// rotation/Critical_times.h), and hi.
+std::vector<Algebraic> Turning_prover::critical_cuts(const std::vector<Moving_plane>& rows, const Rational& lo,
+                                                     const Rational& piece_hi, const Algebraic& hi,
+                                                     const std::vector<Minor_rows>* features) const
+{
+  bool low_rank = !a_->shape.spans_space && !b_->shape.spans_space;
+  std::size_t split = a_->shape.planes.size();
+  Critical_times critical = features ? Critical_times(rows, split, lo, piece_hi, low_rank, *features)
+                                     : Critical_times(rows, split, lo, piece_hi, low_rank);
+  std::vector<Algebraic> cuts{Algebraic(lo)};
+  for (const Critical_time& c : critical.times())
+    if (c.t < hi) cuts.push_back(c.t);
+  cuts.push_back(hi);
+  return cuts;
+}
+
 // The leaves of one piece between breakpoints, [lo, hi] (hi <= piece_hi,
 // the breakpoint that ends the piece).
 std::vector<Turning_prover::Leaf> Turning_prover::pose_piece(const Rational& lo, const Rational& piece_hi,
@@ -135,20 +153,29 @@ std::vector<Turning_prover::Leaf> Turning_prover::pose_piece(const Rational& lo,
   std::vector<Moving_plane> rows = moving_planes(a_->shape.planes, segment_at(a_->segments, mid));
   std::vector<Moving_plane> more = moving_planes(b_->shape.planes, segment_at(b_->segments, mid));
   rows.insert(rows.end(), more.begin(), more.end());
-  bool low_rank = !a_->shape.spans_space && !b_->shape.spans_space;
-  std::vector<Algebraic> cuts{Algebraic(lo)};
-  Critical_times critical(rows, a_->shape.planes.size(), lo, piece_hi, low_rank);
-  for (const Critical_time& c : critical.times())
-    if (c.t < hi) cuts.push_back(c.t);
-  cuts.push_back(hi);
+  std::optional<std::vector<Minor_rows>> features;
+  if (feature_events_) features = feature_minors(a_->shape, b_->shape);
+  std::vector<Algebraic> cuts = critical_cuts(rows, lo, piece_hi, hi, features ? &*features : nullptr);
+  std::optional<std::vector<Algebraic>> every;   // every mixed minor's cuts, made when a proof needs them
   std::vector<Leaf> leaves;
   std::size_t k = 0;   // the proof of interval k covers [cuts[k], ...]
   while (k + 1 < cuts.size()) {
-    Leaf leaf{cuts[k], cuts[k + 1], proof_at(rows, simplest_between(cuts[k], cuts[k + 1]))};
+    Rational s = simplest_between(cuts[k], cuts[k + 1]);
+    Leaf leaf{cuts[k], cuts[k + 1], proof_at(rows, s)};
     bool last = k + 2 == cuts.size();
-    if (!valid(leaf.conflicts, leaf.lo, leaf.hi, open_end && last))
-      throw Turning_proof_missing(where_ + ": the proof at t = " + to_string(simplest_between(cuts[k], cuts[k + 1])) +
+    if (!valid(leaf.conflicts, leaf.lo, leaf.hi, open_end && last)) {
+      // A feature interval on which this proof's multipliers or sum change
+      // sign: cut it at every mixed minor's critical times inside it, and
+      // prove its first part again.
+      if (features && !every) every = critical_cuts(rows, lo, piece_hi, hi, nullptr);
+      std::size_t before = cuts.size();
+      if (every)
+        for (const Algebraic& t : *every)
+          if (leaf.lo < t && t < leaf.hi) cuts.insert(cuts.begin() + static_cast<std::ptrdiff_t>(k + 1 + cuts.size() - before), t);
+      if (cuts.size() > before) continue;
+      throw Turning_proof_missing(where_ + ": the proof at t = " + to_string(s) +
                                   " does not hold on its whole critical interval");
+    }
     ++k;
     while (k + 1 < cuts.size() && valid(leaf.conflicts, leaf.lo, cuts[k + 1], open_end && k + 2 == cuts.size()))
       leaf.hi = cuts[++k];
