@@ -126,6 +126,32 @@ Turning_prover::Proof Turning_prover::proof_at(const std::vector<Moving_plane>& 
   return out;
 }
 
+namespace {
+
+// The distinct real roots strictly inside (lo, hi) of a proof's multipliers
+// and sums, ascending: where it may stop holding.
+std::vector<Algebraic> roots_inside(const std::vector<Polynomial_conflict>& proof, const Algebraic& lo,
+                                    const Algebraic& hi)
+{
+  std::vector<Algebraic> out;
+  auto add = [&](const Time_poly& p) {
+    std::vector<Rational> c = p.coefficients();
+    while (!c.empty() && is_zero(c.back())) c.pop_back();
+    if (c.size() < 2) return;   // a constant: no root
+    for (Algebraic& r : Algebraic::real_roots(c, lo.lower(), hi.upper()))
+      if (lo < r && r < hi) out.push_back(std::move(r));
+  };
+  for (const Polynomial_conflict& c : proof) {
+    for (const Time_poly& l : c.lambda) add(l);
+    add(c.slack());
+  }
+  std::sort(out.begin(), out.end(), [](const Algebraic& a, const Algebraic& b) { return a < b; });
+  out.erase(std::unique(out.begin(), out.end(), [](const Algebraic& a, const Algebraic& b) { return a == b; }), out.end());
+  return out;
+}
+
+} // namespace
+
 // lo, the critical times of the piece [lo, piece_hi] below hi (of the
 // features only when they are given and none is identically zero there,
 // rotation/Critical_times.h), and hi.
@@ -164,15 +190,21 @@ std::vector<Turning_prover::Leaf> Turning_prover::pose_piece(const Rational& lo,
     Leaf leaf{cuts[k], cuts[k + 1], proof_at(rows, s)};
     bool last = k + 2 == cuts.size();
     if (!valid(leaf.conflicts, leaf.lo, leaf.hi, open_end && last)) {
-      // A feature interval on which this proof's multipliers or sum change
-      // sign: cut it at every mixed minor's critical times inside it, and
-      // prove its first part again.
-      if (features && !every) every = critical_cuts(rows, lo, piece_hi, hi, nullptr);
-      std::size_t before = cuts.size();
-      if (every)
+      // An interval (of the features) on which this proof's multipliers or
+      // sum change sign: cut it where they do, or failing that at every
+      // mixed minor's critical times inside it, and prove its first part
+      // again. Each cut is a root of a minor of the pair's rows (Cramer's
+      // cofactors), so the cutting ends.
+      std::vector<Algebraic> inside = roots_inside(leaf.conflicts, leaf.lo, leaf.hi);
+      if (inside.empty() && features) {
+        if (!every) every = critical_cuts(rows, lo, piece_hi, hi, nullptr);
         for (const Algebraic& t : *every)
-          if (leaf.lo < t && t < leaf.hi) cuts.insert(cuts.begin() + static_cast<std::ptrdiff_t>(k + 1 + cuts.size() - before), t);
-      if (cuts.size() > before) continue;
+          if (leaf.lo < t && t < leaf.hi) inside.push_back(t);
+      }
+      if (!inside.empty()) {
+        cuts.insert(cuts.begin() + static_cast<std::ptrdiff_t>(k + 1), inside.begin(), inside.end());
+        continue;
+      }
       throw Turning_proof_missing(where_ + ": the proof at t = " + to_string(s) +
                                   " does not hold on its whole critical interval");
     }
