@@ -9,6 +9,8 @@
 // pieces (section 8.3), over its pairs.
 //   clash4d_certificate_bench [--seed N] [--random M] [--min-seconds S]
 //                             [--family paper|contact|random|rotation|rotation-fuzz] [--every-minor]
+//                             [--scene FILE]
+// --scene: the four modes on one scene file alone.
 // --every-minor: turning pairs of convex pieces are decided, and their
 // certificates cut, at every mixed minor's critical times, not only at
 // their vertex-face and edge-edge minors' (Check_options::feature_events
@@ -117,14 +119,15 @@ std::vector<std::pair<std::string, Check_options>> modes()
 }
 
 const char* usage = "usage: clash4d_certificate_bench [--seed N] [--random M] [--min-seconds S]\n"
-                    "                                 [--family paper|contact|random|rotation|rotation-fuzz] [--every-minor]\n";
+                    "                                 [--family paper|contact|random|rotation|rotation-fuzz] [--every-minor]\n"
+                    "                                 [--scene FILE]\n";
 
 int run_bench(int argc, char** argv)
 {
   unsigned long seed = 1990;
   int random_count = 20;
   double min_seconds = 0.05;
-  std::string only;
+  std::string only, scene_file;
   for (int i = 1; i < argc; i += 2) {
     std::string a = argv[i];
     if (a == "--help" || a == "-h") {
@@ -142,6 +145,7 @@ int run_bench(int argc, char** argv)
     else if (a == "--random") random_count = option_number<int>(a, argv[i + 1]);
     else if (a == "--min-seconds") min_seconds = option_number<double>(a, argv[i + 1]);
     else if (a == "--family") only = argv[i + 1];
+    else if (a == "--scene") scene_file = argv[i + 1];
     else throw std::invalid_argument("unknown option " + a + "\n" + usage);
   }
   if (!(min_seconds > 0)) throw std::invalid_argument("--min-seconds must be positive");
@@ -151,6 +155,13 @@ int run_bench(int argc, char** argv)
     throw std::invalid_argument("--family " + only + ": not paper, contact, random, rotation or rotation-fuzz");
   std::printf("%-66s %10s %10s %10s %7s %7s %9s %6s  %s\n", "scene (mode)", "check us", "+cert us", "verify us", "write",
               "verify", "bytes", "pieces", "verdict");
+  if (!scene_file.empty()) {
+    Scene scene = read_bench_scene(scene_file);
+    Means means;
+    for (const auto& [mode, opts] : modes()) row(scene_file + " (" + mode + ")", scene, opts, min_seconds, means);
+    means.print(scene_file);
+    return 0;
+  }
   for (const auto& [mode, opts] : modes()) {
     for (const char* family : {"paper", "contact", "rotation"}) {
       if (!only.empty() && only != family) continue;
