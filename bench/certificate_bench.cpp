@@ -5,9 +5,16 @@
 // --earliest. Targets: writing at most 3x check; verifying faster than
 // deciding; on turning scenes (rotation: fixtures/rotation; rotation-fuzz:
 // the first M cases of `clash4d fuzz --rotation`'s families, issue 56)
-// writing at most 5x check.
+// writing at most 5x check. "pieces" counts a turning certificate's APART
+// pieces (section 8.3), over its pairs.
 //   clash4d_certificate_bench [--seed N] [--random M] [--min-seconds S]
-//                             [--family paper|contact|random|rotation|rotation-fuzz]
+//                             [--family paper|contact|random|rotation|rotation-fuzz] [--every-minor]
+//                             [--scene FILE]
+// --scene: the four modes on one scene file alone.
+// --every-minor: turning pairs of convex pieces are decided, and their
+// certificates cut, at every mixed minor's critical times, not only at
+// their vertex-face and edge-edge minors' (Check_options::feature_events
+// off: the cost before that restriction).
 #include "bench/Bench_main.h"
 #include "bench/Fixtures.h"
 #include "bench/Option_number.h"
@@ -53,13 +60,22 @@ bool decide(const Scene& scene, const Check_options& opts)
 std::pair<bool, nlohmann::ordered_json> certified(const Scene& scene, const Check_options& opts)
 {
   if (scene_rotates(scene)) {
-    Check_options full = opts;
-    full.feature_events = false;   // as check --certificate: every mixed minor's critical times
-    Rotating_check_answer a = check_rotating(scene, full, "exact");
-    return {a.collide, make_turning_certificate(scene, a, full)};
+    Rotating_check_answer a = check_rotating(scene, opts, "exact");
+    return {a.collide, make_turning_certificate(scene, a, opts)};
   }
   Check_answer a = check_exact(scene, opts);
   return {a.collide, make_certificate(scene, a, opts)};
+}
+
+// The APART pieces of a turning certificate (docs/certificate-format.md,
+// 8.3), over its pairs; 0 for a certificate of a scene where nothing turns.
+std::size_t apart_pieces(const nlohmann::ordered_json& c)
+{
+  std::size_t n = 0;
+  if (c.value("format", "") != "clash4d-certificate/turning-1") return n;
+  for (const auto& p : c["pairs"])
+    if (p.contains("apart")) n += p["apart"]["pieces"].size();
+  return n;
 }
 
 void row(const std::string& name, const Scene& scene, const Check_options& opts, double min_seconds, Means& means)
@@ -81,10 +97,12 @@ void row(const std::string& name, const Scene& scene, const Check_options& opts,
   means.bytes += static_cast<double>(bytes);
   means.rejected += !ok;
   ++means.count;
-  std::printf("%-66s %10.1f %10.1f %10.1f %7.2f %7.2f %9zu  %s%s\n", name.c_str(), check.seconds_per_query * 1e6,
-              write.seconds_per_query * 1e6, verify.seconds_per_query * 1e6, w, v, bytes, collide ? "collide" : "apart",
-              ok ? "" : " REJECTED");
+  std::printf("%-66s %10.1f %10.1f %10.1f %7.2f %7.2f %9zu %6zu  %s%s\n", name.c_str(), check.seconds_per_query * 1e6,
+              write.seconds_per_query * 1e6, verify.seconds_per_query * 1e6, w, v, bytes, apart_pieces(made),
+              collide ? "collide" : "apart", ok ? "" : " REJECTED");
 }
+
+bool every_minor = false;   // --every-minor: Check_options::feature_events off
 
 std::vector<std::pair<std::string, Check_options>> modes()
 {
@@ -94,20 +112,22 @@ std::vector<std::pair<std::string, Check_options>> modes()
       Check_options o;
       o.semantics = s;
       o.earliest = earliest;
+      o.feature_events = !every_minor;
       out.push_back({std::string(semantics_name(s)) + (earliest ? " --earliest" : ""), o});
     }
   return out;
 }
 
 const char* usage = "usage: clash4d_certificate_bench [--seed N] [--random M] [--min-seconds S]\n"
-                    "                                 [--family paper|contact|random|rotation|rotation-fuzz]\n";
+                    "                                 [--family paper|contact|random|rotation|rotation-fuzz] [--every-minor]\n"
+                    "                                 [--scene FILE]\n";
 
 int run_bench(int argc, char** argv)
 {
   unsigned long seed = 1990;
   int random_count = 20;
   double min_seconds = 0.05;
-  std::string only;
+  std::string only, scene_file;
   for (int i = 1; i < argc; i += 2) {
     std::string a = argv[i];
     if (a == "--help" || a == "-h") {
@@ -115,11 +135,17 @@ int run_bench(int argc, char** argv)
                   "  in both semantics, plain and --earliest\n", usage);
       return 0;
     }
+    if (a == "--every-minor") {
+      every_minor = true;
+      --i;
+      continue;
+    }
     if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
     if (a == "--seed") seed = option_number<unsigned long>(a, argv[i + 1]);
     else if (a == "--random") random_count = option_number<int>(a, argv[i + 1]);
     else if (a == "--min-seconds") min_seconds = option_number<double>(a, argv[i + 1]);
     else if (a == "--family") only = argv[i + 1];
+    else if (a == "--scene") scene_file = argv[i + 1];
     else throw std::invalid_argument("unknown option " + a + "\n" + usage);
   }
   if (!(min_seconds > 0)) throw std::invalid_argument("--min-seconds must be positive");
@@ -127,8 +153,15 @@ int run_bench(int argc, char** argv)
   if (!only.empty() && only != "paper" && only != "contact" && only != "random" && only != "rotation" &&
       only != "rotation-fuzz")
     throw std::invalid_argument("--family " + only + ": not paper, contact, random, rotation or rotation-fuzz");
-  std::printf("%-66s %10s %10s %10s %7s %7s %9s  %s\n", "scene (mode)", "check us", "+cert us", "verify us", "write", "verify",
-              "bytes", "verdict");
+  std::printf("%-66s %10s %10s %10s %7s %7s %9s %6s  %s\n", "scene (mode)", "check us", "+cert us", "verify us", "write",
+              "verify", "bytes", "pieces", "verdict");
+  if (!scene_file.empty()) {
+    Scene scene = read_bench_scene(scene_file);
+    Means means;
+    for (const auto& [mode, opts] : modes()) row(scene_file + " (" + mode + ")", scene, opts, min_seconds, means);
+    means.print(scene_file);
+    return 0;
+  }
   for (const auto& [mode, opts] : modes()) {
     for (const char* family : {"paper", "contact", "rotation"}) {
       if (!only.empty() && only != family) continue;

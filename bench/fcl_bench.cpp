@@ -42,6 +42,10 @@
 // again each time), as the translation table's moved column; "fcl us" and
 // "fcl+build us" as above, the latter through Fcl_subject::check, which maps
 // FCL's time back to the pose's (Convex_motion.cpp, the change of time).
+// "double us" is the same time slices in doubles (check_rotating with
+// --number double, tolerance 0: the float subject), "ex/dbl" exact's time
+// over it (the table ends with its geometric mean), and "dbl t*-exact" the
+// double t*'s error ("DIFFER" when its verdict is not exact's).
 // "verdict" says whether FCL's verdict is exact's, "t* fcl" is FCL's mapped
 // time, "fcl-exact" its error, "within tol" whether that error is within
 // FCL's time tolerance and how many tolerances it is: FCL's shape
@@ -109,7 +113,8 @@ void row(const Case& c, double min_seconds, int repeat)
 // The rotation section's row (see the top): the exact answer is held to
 // the case's construction (verdict, and t* exactly when rational), the moved
 // query's to the whole check's.
-void rotation_row(const Turning_case& rc, double min_seconds, int repeat, bool every_minor)
+// Returns exact's time over double's.
+double rotation_row(const Turning_case& rc, double min_seconds, int repeat, bool every_minor)
 {
   const Case& c = rc.c;
   Check_options opts;
@@ -118,7 +123,7 @@ void rotation_row(const Turning_case& rc, double min_seconds, int repeat, bool e
   Fcl_subject fcl(c.scene);
   if (!fcl.expressible()) {
     std::printf("%-26s %s\n", c.name.c_str(), fcl.reason().c_str());
-    return;
+    return 0;
   }
   if (std::string law = fcl.motion_law(); !law.empty())
     throw std::logic_error(c.name + ": FCL's motion is not the pose's: " + law);
@@ -134,15 +139,19 @@ void rotation_row(const Turning_case& rc, double min_seconds, int repeat, bool e
     moved_answer = decide_rotating_pair(a, b, c.scene.t_lo, c.scene.t_hi, opts, slices);
     return moved_answer.collide;
   };
-  Rotating_check_answer exact_answer;
+  Rotating_check_answer exact_answer, double_answer;
   Check_answer fcl_answer;
-  auto [e, m, f, fb] = time_in_turns(
+  auto [e, m, d, f, fb] = time_in_turns(
       repeat, min_seconds,
       [&] {
         exact_answer = check_rotating(c.scene, opts, "exact");
         return exact_answer.collide;
       },
-      moved, [&] { return fcl.time_of_contact(0, 1).has_value(); },
+      moved,
+      [&] {
+        double_answer = check_rotating(c.scene, opts, "double");
+        return double_answer.collide;
+      }, [&] { return fcl.time_of_contact(0, 1).has_value(); },
       [&] {
         fcl_answer = Fcl_subject(c.scene).check(opts);
         return fcl_answer.collide;
@@ -152,7 +161,7 @@ void rotation_row(const Turning_case& rc, double min_seconds, int repeat, bool e
     throw std::logic_error(c.name + ": exact says " + verdict(exact_answer.collide) + ", the construction " + verdict(rc.collide));
   if (moved_answer.collide != exact_answer.collide)
     throw std::logic_error(c.name + ": the moved check's verdict differs from check's");
-  std::string t_exact = "-", t_fcl = "-", diff = "-", within = "-";
+  std::string t_exact = "-", t_fcl = "-", diff = "-", within = "-", double_diff = "-";
   double fcl_tolerance = 1e-4 * (std::acos(-1.0) / 2) * round_to_nearest(c.scene.t_hi - c.scene.t_lo);
   if (exact_answer.collide) {
     const Algebraic& t = exact_answer.reported()->answer.t_star;
@@ -164,6 +173,10 @@ void rotation_row(const Turning_case& rc, double min_seconds, int repeat, bool e
     else {
       std::snprintf(buf, sizeof buf, "%.9f (irr.)", t.to_double());
       t_exact = buf;
+    }
+    if (double_answer.collide) {
+      std::snprintf(buf, sizeof buf, "%+.1e", double_answer.reported()->answer.t_star.to_double() - t.to_double());
+      double_diff = buf;
     }
     if (fcl_answer.collide) {
       const Pair_answer* p = fcl_answer.reported();
@@ -177,11 +190,14 @@ void rotation_row(const Turning_case& rc, double min_seconds, int repeat, bool e
       within = buf;
     }
   }
-  double fq = f.seconds_per_query;
-  std::printf("%-26s %10.1f %10.1f %8.2f %12.1f %10.0f %10.0f   %-7s %-7s %-7s %-22s %-12s %-9s %s\n", c.name.c_str(),
-              e.seconds_per_query * 1e6, m.seconds_per_query * 1e6, fq * 1e6, fb.seconds_per_query * 1e6,
-              e.seconds_per_query / fq, m.seconds_per_query / fq, verdict(e.collide), verdict(f.collide),
-              e.collide == f.collide ? "same" : "DIFFER", t_exact.c_str(), t_fcl.c_str(), diff.c_str(), within.c_str());
+  if (d.collide != e.collide) double_diff = "DIFFER";
+  double fq = f.seconds_per_query, ratio = e.seconds_per_query / d.seconds_per_query;
+  std::printf("%-26s %10.1f %10.1f %10.1f %6.2f %8.2f %12.1f %10.0f %10.0f   %-7s %-7s %-7s %-22s %-12s %-9s %-10s %s\n",
+              c.name.c_str(), e.seconds_per_query * 1e6, m.seconds_per_query * 1e6, d.seconds_per_query * 1e6, ratio,
+              fq * 1e6, fb.seconds_per_query * 1e6, e.seconds_per_query / fq, m.seconds_per_query / fq,
+              verdict(e.collide), verdict(f.collide), e.collide == f.collide ? "same" : "DIFFER", t_exact.c_str(),
+              t_fcl.c_str(), diff.c_str(), within.c_str(), double_diff.c_str());
+  return ratio;
 }
 
 const char* usage = "usage: clash4d_fcl_bench [--family translation|rotation|all] [--seed N] [--min-seconds S] [--repeat R]\n"
@@ -246,13 +262,19 @@ int run_bench(int argc, char** argv)
     if (family == "all") std::printf("\n");
     std::printf("rotation: one object turns 90 degrees about a fixed point, the other rests; --earliest%s\n",
                 every_minor ? "; every mixed minor (--every-minor)" : "");
-    std::printf("%-26s %10s %10s %8s %12s %10s %10s   %-7s %-7s %-7s %-22s %-12s %-9s %s\n", "case", "exact us",
-                "moved us", "fcl us", "fcl+build us", "exact/fcl", "moved/fcl", "exact", "fcl", "verdict", "t* exact",
-                "t* fcl", "fcl-exact", "within tol");
+    std::printf("%-26s %10s %10s %10s %6s %8s %12s %10s %10s   %-7s %-7s %-7s %-22s %-12s %-9s %-10s %s\n", "case",
+                "exact us", "moved us", "double us", "ex/dbl", "fcl us", "fcl+build us", "exact/fcl", "moved/fcl",
+                "exact", "fcl", "verdict", "t* exact", "t* fcl", "fcl-exact", "within tol", "dbl t*-exact");
+    double log_ratio = 0;
+    int rows = 0;
     for (const Turning_case& rc : all_rotation_cases(seed)) {
       dump(dump_dir, rc.c);
-      rotation_row(rc, min_seconds, repeat, every_minor);
+      if (double r = rotation_row(rc, min_seconds, repeat, every_minor); r > 0) {
+        log_ratio += std::log(r);
+        ++rows;
+      }
     }
+    if (rows > 0) std::printf("geometric mean of exact/double over %d rotation cases: %.2f\n", rows, std::exp(log_ratio / rows));
   }
   return 0;
 }

@@ -32,7 +32,7 @@ class Turning_writer {
 public:
   Turning_writer(const Scene& s, const Rotating_check_answer& a, const Check_options& o)
       : scene_(s), answer_(a), options_(o), closed_(a.semantics == Semantics::closed),
-        prover_(s, a.semantics, certificate_step_limit)
+        prover_(s, a.semantics, certificate_step_limit, o.feature_events)
   {
     for (std::size_t i = 0; i < s.objects.size(); ++i) index_[s.objects[i].name] = static_cast<int>(i);
   }

@@ -66,8 +66,8 @@ Conflict::Of of_from(const json& c)
 
 } // namespace
 
-Turning_prover::Turning_prover(const Scene& scene, Semantics semantics, std::uint64_t step_limit)
-    : scene_(scene), semantics_(semantics), limit_(step_limit)
+Turning_prover::Turning_prover(const Scene& scene, Semantics semantics, std::uint64_t step_limit, bool feature_events)
+    : scene_(scene), semantics_(semantics), feature_events_(feature_events), limit_(step_limit)
 {
 }
 
@@ -126,6 +126,50 @@ Turning_prover::Proof Turning_prover::proof_at(const std::vector<Moving_plane>& 
   return out;
 }
 
+namespace {
+
+// The distinct real roots strictly inside (lo, hi) of a proof's multipliers
+// and sums, ascending: where it may stop holding.
+std::vector<Algebraic> roots_inside(const std::vector<Polynomial_conflict>& proof, const Algebraic& lo,
+                                    const Algebraic& hi)
+{
+  std::vector<Algebraic> out;
+  auto add = [&](const Time_poly& p) {
+    std::vector<Rational> c = p.coefficients();
+    while (!c.empty() && is_zero(c.back())) c.pop_back();
+    if (c.size() < 2) return;   // a constant: no root
+    for (Algebraic& r : Algebraic::real_roots(c, lo.lower(), hi.upper()))
+      if (lo < r && r < hi) out.push_back(std::move(r));
+  };
+  for (const Polynomial_conflict& c : proof) {
+    for (const Time_poly& l : c.lambda) add(l);
+    add(c.slack());
+  }
+  std::sort(out.begin(), out.end(), [](const Algebraic& a, const Algebraic& b) { return a < b; });
+  out.erase(std::unique(out.begin(), out.end(), [](const Algebraic& a, const Algebraic& b) { return a == b; }), out.end());
+  return out;
+}
+
+} // namespace
+
+// lo, the critical times of the piece [lo, piece_hi] below hi (of the
+// features only when they are given and none is identically zero there,
+// rotation/Critical_times.h), and hi.
+std::vector<Algebraic> Turning_prover::critical_cuts(const std::vector<Moving_plane>& rows, const Rational& lo,
+                                                     const Rational& piece_hi, const Algebraic& hi,
+                                                     const std::vector<Minor_rows>* features) const
+{
+  bool low_rank = !a_->shape.spans_space && !b_->shape.spans_space;
+  std::size_t split = a_->shape.planes.size();
+  Critical_times critical = features ? Critical_times(rows, split, lo, piece_hi, low_rank, *features)
+                                     : Critical_times(rows, split, lo, piece_hi, low_rank);
+  std::vector<Algebraic> cuts{Algebraic(lo)};
+  for (const Critical_time& c : critical.times())
+    if (c.t < hi) cuts.push_back(c.t);
+  cuts.push_back(hi);
+  return cuts;
+}
+
 // The leaves of one piece between breakpoints, [lo, hi] (hi <= piece_hi,
 // the breakpoint that ends the piece).
 std::vector<Turning_prover::Leaf> Turning_prover::pose_piece(const Rational& lo, const Rational& piece_hi,
@@ -135,20 +179,35 @@ std::vector<Turning_prover::Leaf> Turning_prover::pose_piece(const Rational& lo,
   std::vector<Moving_plane> rows = moving_planes(a_->shape.planes, segment_at(a_->segments, mid));
   std::vector<Moving_plane> more = moving_planes(b_->shape.planes, segment_at(b_->segments, mid));
   rows.insert(rows.end(), more.begin(), more.end());
-  bool low_rank = !a_->shape.spans_space && !b_->shape.spans_space;
-  std::vector<Algebraic> cuts{Algebraic(lo)};
-  Critical_times critical(rows, a_->shape.planes.size(), lo, piece_hi, low_rank);
-  for (const Critical_time& c : critical.times())
-    if (c.t < hi) cuts.push_back(c.t);
-  cuts.push_back(hi);
+  std::optional<std::vector<Minor_rows>> features;
+  if (feature_events_) features = feature_minors(a_->shape, b_->shape);
+  std::vector<Algebraic> cuts = critical_cuts(rows, lo, piece_hi, hi, features ? &*features : nullptr);
+  std::optional<std::vector<Algebraic>> every;   // every mixed minor's cuts, made when a proof needs them
   std::vector<Leaf> leaves;
   std::size_t k = 0;   // the proof of interval k covers [cuts[k], ...]
   while (k + 1 < cuts.size()) {
-    Leaf leaf{cuts[k], cuts[k + 1], proof_at(rows, simplest_between(cuts[k], cuts[k + 1]))};
+    Rational s = simplest_between(cuts[k], cuts[k + 1]);
+    Leaf leaf{cuts[k], cuts[k + 1], proof_at(rows, s)};
     bool last = k + 2 == cuts.size();
-    if (!valid(leaf.conflicts, leaf.lo, leaf.hi, open_end && last))
-      throw Turning_proof_missing(where_ + ": the proof at t = " + to_string(simplest_between(cuts[k], cuts[k + 1])) +
+    if (!valid(leaf.conflicts, leaf.lo, leaf.hi, open_end && last)) {
+      // An interval (of the features) on which this proof's multipliers or
+      // sum change sign: cut it where they do, or failing that at every
+      // mixed minor's critical times inside it, and prove its first part
+      // again. Each cut is a root of a minor of the pair's rows (Cramer's
+      // cofactors), so the cutting ends.
+      std::vector<Algebraic> inside = roots_inside(leaf.conflicts, leaf.lo, leaf.hi);
+      if (inside.empty() && features) {
+        if (!every) every = critical_cuts(rows, lo, piece_hi, hi, nullptr);
+        for (const Algebraic& t : *every)
+          if (leaf.lo < t && t < leaf.hi) inside.push_back(t);
+      }
+      if (!inside.empty()) {
+        cuts.insert(cuts.begin() + static_cast<std::ptrdiff_t>(k + 1), inside.begin(), inside.end());
+        continue;
+      }
+      throw Turning_proof_missing(where_ + ": the proof at t = " + to_string(s) +
                                   " does not hold on its whole critical interval");
+    }
     ++k;
     while (k + 1 < cuts.size() && valid(leaf.conflicts, leaf.lo, cuts[k + 1], open_end && k + 2 == cuts.size()))
       leaf.hi = cuts[++k];

@@ -6,6 +6,10 @@
 // conflicts lifted to polynomial multipliers (Polynomial_conflict.h); and
 // consecutive intervals merged into one piece for as long as one proof
 // stays valid, so that a piece ends only where a proof's basis changes.
+// Each piece's proof is checked on the piece alone (8.3), whatever cut the
+// span: two convex pieces are cut at their feature minors' roots (as check
+// decides them, rotation/Rotating_pair.h), and an interval on which the
+// proof at its sample does not hold is cut again at every mixed minor's.
 #ifndef CLASH4D_CERTIFY_TURNING_PROVER_H
 #define CLASH4D_CERTIFY_TURNING_PROVER_H
 
@@ -24,7 +28,9 @@ struct Turning_proof_missing : std::runtime_error {
 
 class Turning_prover {
 public:
-  Turning_prover(const Scene& scene, Semantics semantics, std::uint64_t step_limit);
+  // feature_events: as Check_options::feature_events (false: every mixed
+  // minor's critical times from the start).
+  Turning_prover(const Scene& scene, Semantics semantics, std::uint64_t step_limit, bool feature_events = true);
 
   // APART for objects a and b until `until`; open_end: closed semantics
   // leaves t = until out. Throws Turning_proof_missing, Term_limit.
@@ -42,10 +48,13 @@ private:
 
   std::vector<Leaf> pose_piece(const Rational& lo, const Rational& piece_hi, const Algebraic& hi, bool open_end);
   Proof proof_at(const std::vector<Moving_plane>& rows, const Rational& s);
+  std::vector<Algebraic> critical_cuts(const std::vector<Moving_plane>& rows, const Rational& lo, const Rational& piece_hi,
+                                       const Algebraic& hi, const std::vector<Minor_rows>* features) const;
   bool valid(const Proof& p, const Algebraic& lo, const Algebraic& hi, bool open_end) const;
 
   const Scene& scene_;
   Semantics semantics_;
+  bool feature_events_;
   std::uint64_t limit_, steps_ = 0;
   std::size_t conflicts_ = 0;
   std::optional<Rotating_object> a_, b_;   // the pair being proved

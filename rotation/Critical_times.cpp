@@ -99,22 +99,24 @@ public:
   // every piece, or exactly 0 on one (a polynomial that vanishes on an
   // interval is identically zero: a plane's structural zeros, such as the
   // z part of a vertical plane turning about z, are exact in intervals).
-  bool settled(const Minor_rows& m) const { return state(m) != unsure; }
+  bool settled(const Minor_rows& m) const { return state(m) != Minor_state::unsure; }
 
-  enum State { zero, nonzero, unsure };
   // zero: exactly 0 on a piece (identically zero); nonzero: excludes 0 on
   // every piece (no root on [lo, hi]); unsure otherwise.
-  State state(const Minor_rows& m) const
+  Minor_state state(const Minor_rows& m) const
   {
     CGAL::Protect_FPU_rounding<true> upward;
     bool apart = true;
     for (const auto& rows : at_) {
       I d = m[3] < 0 ? normal(rows, m[0], m[1], m[2]) : full(rows, m);
-      if (d.inf() == 0 && d.sup() == 0) return zero;
+      if (d.inf() == 0 && d.sup() == 0) return Minor_state::zero;
       apart = apart && (d.inf() > 0 || d.sup() < 0);
     }
-    return apart ? nonzero : unsure;
+    return apart ? Minor_state::nonzero : Minor_state::unsure;
   }
+
+  // A minor made exactly is identically zero when it is the zero polynomial.
+  bool identically_zero(const Int_poly& d, const Minor_rows&) const { return primitive(d).empty(); }
 
 private:
   static I horner(const Time_poly& p, const I& t)
@@ -167,39 +169,24 @@ Critical_times::Critical_times(const std::vector<Moving_plane>& planes, std::siz
   solve(table.table(), lo, hi);
 }
 
+void check_feature_minor_count(std::size_t features, std::size_t m, std::size_t split)
+{
+  if (features > CLASH4D_MAX_PAIR_MINORS)
+    throw Minor_limit("a pair of convex pieces with " + std::to_string(split) + " and " + std::to_string(m - split) +
+                      " planes has " + std::to_string(features) +
+                      " vertex-face and edge-edge minors, more than the limit of " +
+                      std::to_string(CLASH4D_MAX_PAIR_MINORS) + " (docs/rotation.md, Cost)");
+}
+
 Critical_times::Critical_times(const std::vector<Moving_plane>& planes, std::size_t first_count, const Rational& lo,
                                const Rational& hi, bool low_rank, const std::vector<Minor_rows>& features)
 {
-  if (features.size() > CLASH4D_MAX_PAIR_MINORS)
-    throw Minor_limit("a pair of convex pieces with " + std::to_string(first_count) + " and " +
-                      std::to_string(planes.size() - first_count) + " planes has " + std::to_string(features.size()) +
-                      " vertex-face and edge-edge minors, more than the limit of " +
-                      std::to_string(CLASH4D_MAX_PAIR_MINORS) + " (docs/rotation.md, Cost)");
+  check_feature_minor_count(features.size(), planes.size(), first_count);
   std::vector<Int_row> rows;
   rows.reserve(planes.size());
   for (const Moving_plane& h : planes) rows.push_back(integer_row(h));
-  Interval_rows filter(planes, lo, hi);
-  auto normals = [&](int i, int j, int k) { return normal_minor(rows[i], rows[j], rows[k]); };
   Minor_table table;
-  bool identically_zero = false;
-  std::size_t made = 0;
-  for (const Minor_rows& m : features) {
-    if (++made % 4096 == 0) Work_budget::check();
-    auto state = filter.state(m);
-    if (state == Interval_rows::nonzero) continue;
-    if (state == Interval_rows::zero) {
-      identically_zero = true;
-      break;
-    }
-    auto [i, j, k, l] = m;
-    Int_poly d = pair_minors_detail::full_minor(rows, normals, i, j, k, l);
-    if (primitive(d).empty()) {
-      identically_zero = true;
-      break;
-    }
-    table.add(d, m);
-  }
-  if (identically_zero) {
+  if (!enumerate_feature_minors(rows, features, Interval_rows(planes, lo, hi), table)) {
     // A feature incidence that holds on the whole interval: the touches
     // are not all marked by a feature minor's root; every mixed minor.
     *this = Critical_times(planes, first_count, lo, hi, low_rank);

@@ -34,6 +34,9 @@ struct Minor_limit : std::runtime_error {
 // Throws Minor_limit when a pair of m planes, the first `split` of them
 // the first object's, has more mixed minors than the limit.
 void check_pair_minor_count(int m, int split);
+// Throws Minor_limit when two convex pieces (m planes, the first split of
+// them the first piece's) have more feature minors than the limit.
+void check_feature_minor_count(std::size_t features, std::size_t m, std::size_t split);
 
 struct Critical_time {
   Algebraic t;

@@ -33,6 +33,36 @@ struct Every_minor {
   bool settled(const Minor_rows&) const { return false; }
 };
 
+// The filter of the feature minors in doubles: none is ruled out before it
+// is made (the real roots are sought in (lo, hi) anyway), and one made is
+// identically zero when no coefficient exceeds 1e-12 of the bound on its
+// coefficients, the product of its rows' coefficients' sums of absolute
+// values (the rounding of an exact zero is some 1e-15 of it). One taken
+// for zero that is not costs the full enumeration, never a touch.
+class Double_feature_filter {
+public:
+  explicit Double_feature_filter(const std::vector<Double_row>& rows)
+  {
+    for (const Double_row& r : rows) {
+      double s = 0;
+      for (const Double_poly& p : r)
+        for (int i = 0; i < p.size(); ++i) s += std::fabs(p[i]);
+      size_.push_back(s);
+    }
+  }
+  Minor_state state(const Minor_rows&) const { return Minor_state::unsure; }
+  bool identically_zero(const Double_poly& d, const Minor_rows& m) const
+  {
+    double bound = 1e-12 * size_[m[0]] * size_[m[1]] * size_[m[2]] * size_[m[3]];
+    for (int i = 0; i < d.size(); ++i)
+      if (std::fabs(d[i]) > bound) return false;
+    return true;
+  }
+
+private:
+  std::vector<double> size_;
+};
+
 struct Double_minors {
   std::vector<std::pair<Double_poly, Minor_rows>> minors;
   void add(const Double_poly& p, const Minor_rows& rows) { minors.emplace_back(p, rows); }
@@ -108,13 +138,19 @@ Rational Double_slices::read_answer_number(const std::string& text) const
 std::vector<Critical_time> Double_slices::critical_times(const std::vector<Moving_plane>& planes,
                                                          std::size_t first_count, const Rational& lo,
                                                          const Rational& hi, bool low_rank,
-                                                         const std::vector<Minor_rows>*) const
+                                                         const std::vector<Minor_rows>* features) const
 {
   std::vector<Double_row> rows;
   for (const Moving_plane& h : planes) rows.push_back(double_row(h));
-  check_pair_minor_count(static_cast<int>(rows.size()), static_cast<int>(first_count));
   Double_minors table;
-  enumerate_pair_minors(rows, static_cast<int>(first_count), low_rank, Every_minor(), table);
+  if (features) check_feature_minor_count(features->size(), rows.size(), first_count);
+  if (!features || !enumerate_feature_minors(rows, *features, Double_feature_filter(rows), table)) {
+    // Every mixed minor, as the exact stage (Critical_times.h): no features,
+    // or one of them identically zero on the interval.
+    table.minors.clear();
+    check_pair_minor_count(static_cast<int>(rows.size()), static_cast<int>(first_count));
+    enumerate_pair_minors(rows, static_cast<int>(first_count), low_rank, Every_minor(), table);
+  }
   std::vector<std::pair<double, Minor_rows>> roots;
   for (const auto& [p, m] : table.minors)
     for (double r : real_roots(p, CGAL::to_double(lo), CGAL::to_double(hi))) roots.emplace_back(r, m);

@@ -37,8 +37,10 @@ public:
   // kept when its imaginary part is at most 1e-7 max(1, |z|) (a double
   // root, a touch, comes out of the eigenvalues as a pair about sqrt(eps)
   // apart). Each time is a double, as an exact Algebraic.
-  // Every mixed minor, always: the float subject is not given the convex
-  // pieces' feature minors (features is ignored).
+  // features: the only minors to solve (two convex pieces' vertex-face and
+  // edge-edge minors), as in the exact stage, unless one of them is
+  // identically zero on (lo, hi) (to rounding: Double_slices.cpp); null,
+  // or such a zero, for every mixed minor.
   std::vector<Critical_time> critical_times(const std::vector<Moving_plane>& rows, std::size_t first_count,
                                             const Rational& lo, const Rational& hi, bool low_rank,
                                             const std::vector<Minor_rows>* features = nullptr) const;

@@ -99,6 +99,37 @@ Poly full_minor(const std::vector<std::array<Poly, 4>>& r, Normals& normals, int
 
 } // namespace pair_minors_detail
 
+// What a filter knows of a minor on the interval before it is made:
+// identically zero there, no root there, or neither.
+enum class Minor_state { zero, nonzero, unsure };
+
+// Calls table.add(minor, rows) for each of the given 4 x 4 minors of rows
+// of both objects (two convex pieces' vertex-face and edge-edge minors,
+// Rotating_pair.cpp) that filter.state(rows) does not rule out as rootless.
+// Returns false, at once, when one of them is identically zero on the
+// interval (filter.state says zero, or filter.identically_zero(minor, rows)
+// once it is made): a feature incidence that holds on the whole interval,
+// so the features do not mark every touch and every mixed minor is to be
+// taken instead (enumerate_pair_minors). Looks at the work budget.
+template <class Poly, class Filter, class Table>
+bool enumerate_feature_minors(const std::vector<std::array<Poly, 4>>& r, const std::vector<Minor_rows>& features,
+                              const Filter& filter, Table& table)
+{
+  auto normals = [&](int i, int j, int k) { return normal_minor(r[i], r[j], r[k]); };
+  std::size_t made = 0;
+  for (const Minor_rows& m : features) {
+    if (++made % 4096 == 0) Work_budget::check();
+    Minor_state state = filter.state(m);
+    if (state == Minor_state::nonzero) continue;
+    if (state == Minor_state::zero) return false;
+    auto [i, j, k, l] = m;
+    Poly d = pair_minors_detail::full_minor(r, normals, i, j, k, l);
+    if (filter.identically_zero(d, m)) return false;
+    table.add(d, m);
+  }
+  return true;
+}
+
 // Calls table.add(minor, rows) for each mixed minor that filter.settled
 // (rows) does not rule out: the 4 x 4 minors, the normals' 3 x 3 minors
 // (with v_inf: parallel planes, or three meeting at infinity), and when

@@ -74,6 +74,8 @@ std::array<Algebraic, 4> with_time(const Point3& x, const Rational& t)
   return {Algebraic(x[0]), Algebraic(x[1]), Algebraic(x[2]), Algebraic(t)};
 }
 
+} // namespace
+
 // The events of two bounded, full-dimensional convex pieces (their rows: a's
 // planes, then b's): the minors of a vertex's three planes (one independent
 // triple through it) against each plane of the other piece, both ways, and
@@ -124,8 +126,6 @@ std::optional<std::vector<Minor_rows>> feature_minors(const Shape_planes& a, con
     for (auto [q1, q2] : b.edges) out.push_back({p1, p2, n + q1, n + q2});
   return out;
 }
-
-} // namespace
 
 Rotating_object Rotating_object::make(const Scene_object& o)
 {

@@ -9,6 +9,7 @@
 
 #include "check/Check_answer.h"
 #include "numbers/Algebraic.h"
+#include "rotation/Critical_times.h"
 #include "rotation/Pose_segments.h"
 #include "rotation/Shape_planes.h"
 #include "scene/Scene.h"
@@ -59,6 +60,12 @@ Rotating_answer decide_rotating_pair(const Rotating_object& a, const Rotating_ob
 // polynomials (pose times, velocity changes), and hi, ascending.
 std::vector<Rational> piece_ends(const Rotating_object& a, const Rotating_object& b, const Rational& lo,
                                  const Rational& hi);
+
+// The events of two bounded, full-dimensional convex pieces, as rows of the
+// pair's matrix (a's planes, then b's): the vertex-face and edge-edge
+// minors whose roots are the only times their answers can change (why:
+// Rotating_pair.cpp); none when either shape is not one such piece.
+std::optional<std::vector<Minor_rows>> feature_minors(const Shape_planes& a, const Shape_planes& b);
 
 // The scene of the two objects at rest, placed as they are at time t.
 Scene posed_pair(const Rotating_object& a, const Rotating_object& b, const Rational& t);
