@@ -16,6 +16,7 @@ import sys
 import threading
 import time
 import unittest
+import unittest.mock
 from decimal import Decimal
 from fractions import Fraction
 
@@ -819,6 +820,22 @@ SLOW = slow_scene(4)
 GENEROUS = 15   # seconds: far less than the slow scene's full check in rationals, far more than a stop needs
 
 
+def assert_ctrl_c_stops(test, work, after=0.5):
+    """Ctrl-C (SIGINT) `after` seconds into work() raises KeyboardInterrupt
+    out of it well within GENEROUS seconds."""
+    old = signal.signal(signal.SIGINT, signal.default_int_handler)
+    timer = threading.Timer(after, os.kill, (os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    try:
+        timer.start()
+        with test.assertRaises(KeyboardInterrupt):
+            work()
+        test.assertLess(time.monotonic() - start, GENEROUS)
+    finally:
+        timer.cancel()
+        signal.signal(signal.SIGINT, old)
+
+
 class Time_limit_and_interrupt(unittest.TestCase):
     """max_seconds as `clash4d check --max-seconds`, and Ctrl-C during a
     check (issue 59, item 8)."""
@@ -860,17 +877,7 @@ class Time_limit_and_interrupt(unittest.TestCase):
         self.assertEqual(len(clash4d.ccd_batch([(t0, t1)] * 3, max_seconds=1000)), 3)
 
     def test_ctrl_c_interrupts_a_long_check(self):
-        old = signal.signal(signal.SIGINT, signal.default_int_handler)
-        timer = threading.Timer(0.5, os.kill, (os.getpid(), signal.SIGINT))
-        start = time.monotonic()
-        try:
-            timer.start()
-            with self.assertRaises(KeyboardInterrupt):
-                clash4d.check(SLOW, number="rational", all_pairs=True)
-            self.assertLess(time.monotonic() - start, GENEROUS)
-        finally:
-            timer.cancel()
-            signal.signal(signal.SIGINT, old)
+        assert_ctrl_c_stops(self, lambda: clash4d.check(SLOW, number="rational", all_pairs=True))
         # the module is whole afterwards
         self.assertEqual(clash4d.check(APPROACH, earliest=True)["earliest"]["t"], Fraction(1, 2))
 
@@ -921,23 +928,8 @@ class Interrupted_mesh_reading(unittest.TestCase):
                      "objects": [{"name": "bowl", "shape": {"mesh": "bowl.off"}},
                                  {"name": "probe", "shape": {"block": {"min": [5, 5, 5], "max": [6, 6, 6]}}}]}
             (folder / "scene.json").write_text(json.dumps(scene))
-            old_cache = os.environ.get("CLASH4D_CACHE_DIR")
-            os.environ["CLASH4D_CACHE_DIR"] = str(folder / "cache")
-            old = signal.signal(signal.SIGINT, signal.default_int_handler)
-            timer = threading.Timer(2.0, os.kill, (os.getpid(), signal.SIGINT))
-            start = time.monotonic()
-            try:
-                timer.start()
-                with self.assertRaises(KeyboardInterrupt):
-                    clash4d.Scene(folder / "scene.json")
-                self.assertLess(time.monotonic() - start, GENEROUS)
-            finally:
-                timer.cancel()
-                signal.signal(signal.SIGINT, old)
-                if old_cache is None:
-                    del os.environ["CLASH4D_CACHE_DIR"]
-                else:
-                    os.environ["CLASH4D_CACHE_DIR"] = old_cache
+            with unittest.mock.patch.dict(os.environ, {"CLASH4D_CACHE_DIR": str(folder / "cache")}):
+                assert_ctrl_c_stops(self, lambda: clash4d.Scene(folder / "scene.json"), after=2.0)
             self.assertEqual(list((folder / "cache").glob("*.pieces")), [])   # nothing half-made was kept
 
 
