@@ -65,9 +65,10 @@ public:
 
   json prove(Split_stats& stats)
   {
-    std::vector<int> none[2] = {std::vector<int>(lits_[0].size(), -1), std::vector<int>(lits_[1].size(), -1)};
+    Cell whole{round_to_nearest(lo_), round_to_nearest(hi_), lo_, hi_, {}};
+    for (int side = 0; side < 2; ++side) whole.absent[side].assign(lits_[side].size(), -1);
     std::vector<int> path;
-    json root = node(path, round_to_nearest(lo_), round_to_nearest(hi_), lo_, hi_, none, 0);
+    json root = node(path, whole, 0);
     stats.conflicts += conflicts_written_, stats.leaves += leaves_, stats.splits += splits_;
     return root;
   }
@@ -120,77 +121,80 @@ private:
     return out;
   }
 
-  json node(std::vector<int>& path, double t0, double t1, const Rational& r0, const Rational& r1,
-            const std::vector<int> (&absent)[2], int depth)
+  // A node's cell beyond its path: its time and the pieces shown absent
+  // there (per side and piece: a conflict of pool_, or -1).
+  struct Cell {
+    double t0, t1;
+    Rational r0, r1;
+    std::vector<int> absent[2];
+  };
+
+  json node(std::vector<int>& path, const Cell& cell, int depth)
   {
     Work_budget::check();
     if (++nodes_ > 4 * limits_.max_leaves) throw Giving_up();
-    std::vector<int> pa = present(absent[0]), pb = present(absent[1]);
+    std::vector<int> pa = present(cell.absent[0]), pb = present(cell.absent[1]);
     std::size_t pairs = pa.size() * pb.size();
     // Few pairs left near each other: a conflict for each.
-    if (pairs <= std::max<std::size_t>(4, std::min(lits_[0].size(), lits_[1].size()) / 4)) return leaf(path, absent, pa, pb);
+    if (pairs <= std::max<std::size_t>(4, std::min(lits_[0].size(), lits_[1].size()) / 4)) return leaf(path, cell, pa, pb);
     if (depth >= limits_.max_depth) {
       if (pairs > limits_.max_pair_conflicts) throw Giving_up();
-      return leaf(path, absent, pa, pb);
+      return leaf(path, cell, pa, pb);
     }
-    if (auto s = separating_plane(pa, pb, t0, t1)) {
-      int below = table_.id(*s), above = table_.negation(below);
-      std::vector<int> under[2] = {absent[0], absent[1]}, over[2] = {absent[0], absent[1]};
+    if (auto s = separating_plane(pa, pb, cell.t0, cell.t1)) {
+      Cell side[2] = {cell, cell};
+      int below = table_.id(*s);
       path.push_back(below);
-      sweep_out(1, under[1], path);
-      path.back() = above;
-      sweep_out(0, over[0], path);
+      sweep_out(1, side[0].absent[1], path);
+      path.back() = table_.negation(below);
+      sweep_out(0, side[1].absent[0], path);
       path.pop_back();
-      if (present(under[1]).size() < pb.size() || present(over[0]).size() < pa.size()) {
-        ++splits_;
-        json out{{"split", literal_json(table_.form(below))}};
-        path.push_back(below);
-        out["below"] = node(path, t0, t1, r0, r1, under, depth + 1);
-        path.back() = above;
-        out["above"] = node(path, t0, t1, r0, r1, over, depth + 1);
-        path.pop_back();
-        return out;
-      }
+      if (present(side[0].absent[1]).size() < pb.size() || present(side[1].absent[0]).size() < pa.size())
+        return split(path, below, side, depth);
     }
     // No plane parts what is still present: cut space at the median of the
     // present pieces' centres along their widest axis, when that leaves
     // some piece wholly on one side (a kd-tree step), each side's pieces
     // then tested against its half.
-    if (auto cut = median_cut(pa, pb, t0, t1)) {
-      ++splits_;
-      int below = table_.id(*cut), above = table_.negation(below);
-      json out{{"split", literal_json(table_.form(below))}};
-      for (int half = 0; half < 2; ++half) {
-        std::vector<int> part[2] = {absent[0], absent[1]};
-        path.push_back(half == 0 ? below : above);
-        sweep_out(0, part[0], path);
-        sweep_out(1, part[1], path);
-        out[half == 0 ? "below" : "above"] = node(path, t0, t1, r0, r1, part, depth + 1);
+    if (auto cut = median_cut(pa, pb, cell.t0, cell.t1)) {
+      Cell side[2] = {cell, cell};
+      int below = table_.id(*cut);
+      for (int h = 0; h < 2; ++h) {
+        path.push_back(h == 0 ? below : table_.negation(below));
+        for (int o = 0; o < 2; ++o) sweep_out(o, side[h].absent[o], path);
         path.pop_back();
       }
-      return out;
+      return split(path, below, side, depth);
     }
     // Nor a cut in space: halve the time, where the pieces sweep less (the
     // literal t - tm: below t < tm).
-    ++splits_;
-    Rational rm = (r0 + r1) / 2;
+    Rational rm = (cell.r0 + cell.r1) / 2;
     double tm = round_to_nearest(rm);
-    int below = table_.id({FT(0), FT(0), FT(0), FT(1), -rm}), above = table_.negation(below);
+    Cell side[2] = {cell, cell};
+    side[0].t1 = side[1].t0 = tm, side[0].r1 = side[1].r0 = rm;
+    return split(path, table_.id({FT(0), FT(0), FT(0), FT(1), -rm}), side, depth);
+  }
+
+  // A split on the literal `below` (its negation above), each side's cell.
+  json split(std::vector<int>& path, int below, const Cell (&side)[2], int depth)
+  {
+    ++splits_;
     json out{{"split", literal_json(table_.form(below))}};
-    path.push_back(below);
-    out["below"] = node(path, t0, tm, r0, rm, absent, depth + 1);
-    path.back() = above;
-    out["above"] = node(path, tm, t1, rm, r1, absent, depth + 1);
-    path.pop_back();
+    const char* name[2] = {"below", "above"};
+    for (int h = 0; h < 2; ++h) {
+      path.push_back(h == 0 ? below : table_.negation(below));
+      out[name[h]] = node(path, side[h], depth + 1);
+      path.pop_back();
+    }
     return out;
   }
 
   // The leaf: every absent piece of A; with a piece of A present, every
   // absent piece of B and a conflict for each present pair (the proof in
   // Split_prover.h).
-  json leaf(const std::vector<int>& path, const std::vector<int> (&absent)[2], const std::vector<int>& pa,
-            const std::vector<int>& pb)
+  json leaf(const std::vector<int>& path, const Cell& cell, const std::vector<int>& pa, const std::vector<int>& pb)
   {
+    const auto& absent = cell.absent;
     if (++leaves_ > limits_.max_leaves) throw Giving_up();
     std::vector<int> listed;
     for (int c : absent[0])
