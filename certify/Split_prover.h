@@ -44,8 +44,8 @@ namespace clash4d {
 
 struct Split_limits {
   std::size_t min_pairs = 2;     // pieces of A times pieces of B: fewer, the term-by-term proof
-  std::size_t max_leaves = 64;   // per time piece
-  int max_depth = 16;
+  std::size_t max_leaves = 16;   // per time piece (and 4 nodes per leaf)
+  int max_depth = 12;
   std::size_t max_pair_conflicts = 4096;   // per leaf: present pieces of A times of B
 };
 
