@@ -296,24 +296,47 @@ private:
     }
     // Variables w (4), c, delta: A's corners w.p' + c + delta <= 0, B's
     // -(w.p' + c) + delta <= 0, maximise delta; |w_k| <= 1, |delta| <= 1.
-    CGAL::Quadratic_program<double> lp(CGAL::SMALLER, false, 0, false, 0);
-    for (int k = 0; k < 4; ++k) lp.set_l(k, true, -1), lp.set_u(k, true, 1);
-    lp.set_l(5, true, -1), lp.set_u(5, true, 1);
-    lp.set_c(5, -1);
-    int row = 0;
+    // Over a few corners first, then those the answer violates added, until
+    // it holds for all (the LP's cost grows with its rows).
+    auto value = [&](const Point4d& p, const std::vector<double>& x) {
+      double v = x[4];
+      for (int k = 0; k < 4; ++k) v += x[static_cast<std::size_t>(k)] * (p[k] - centre[k]) / half[k];
+      return v;
+    };
+    std::vector<std::pair<int, std::size_t>> rows;
     for (int side = 0; side < 2; ++side)
-      for (const auto& p : points[side]) {
-        double sign = side == 0 ? 1 : -1;
+      for (std::size_t i = 0; i < points[side].size(); i += std::max<std::size_t>(1, points[side].size() / 128))
+        rows.emplace_back(side, i);
+    std::vector<double> x;
+    for (int round = 0; round < 30; ++round) {
+      CGAL::Quadratic_program<double> lp(CGAL::SMALLER, false, 0, false, 0);
+      for (int k = 0; k < 4; ++k) lp.set_l(k, true, -1), lp.set_u(k, true, 1);
+      lp.set_l(5, true, -1), lp.set_u(5, true, 1);
+      lp.set_c(5, -1);
+      for (int row = 0; row < static_cast<int>(rows.size()); ++row) {
+        const Point4d& p = points[rows[static_cast<std::size_t>(row)].first][rows[static_cast<std::size_t>(row)].second];
+        double sign = rows[static_cast<std::size_t>(row)].first == 0 ? 1 : -1;
         for (int k = 0; k < 4; ++k) lp.set_a(k, row, sign * (p[k] - centre[k]) / half[k]);
         lp.set_a(4, row, sign), lp.set_a(5, row, 1), lp.set_b(row, 0);
-        ++row;
       }
-    auto solution = CGAL::solve_linear_program(lp, CGAL::Gmpzf());
-    if (!solution.is_optimal()) return std::nullopt;
-    std::vector<double> x;
-    for (auto it = solution.variable_values_begin(); it != solution.variable_values_end(); ++it) x.push_back(CGAL::to_double(*it));
-    x.resize(6, 0);
-    if (!(x[5] > 1e-9)) return std::nullopt;
+      auto solution = CGAL::solve_linear_program(lp, CGAL::Gmpzf());
+      if (!solution.is_optimal()) return std::nullopt;
+      x.clear();
+      for (auto it = solution.variable_values_begin(); it != solution.variable_values_end(); ++it) x.push_back(CGAL::to_double(*it));
+      x.resize(6, 0);
+      if (!(x[5] > 1e-9)) return std::nullopt;
+      // The corners most violated, up to 128 a side.
+      std::vector<std::pair<double, std::pair<int, std::size_t>>> worst;
+      for (int side = 0; side < 2; ++side)
+        for (std::size_t i = 0; i < points[side].size(); ++i) {
+          double v = (side == 0 ? value(points[side][i], x) : -value(points[side][i], x)) + x[5];
+          if (v > 1e-12) worst.push_back({-v, {side, i}});
+        }
+      if (worst.empty()) break;
+      if (round == 29) return std::nullopt;
+      std::sort(worst.begin(), worst.end());
+      for (std::size_t i = 0; i < worst.size() && i < 256; ++i) rows.push_back(worst[i].second);
+    }
     // s(p) = sum w_k (p_k - centre_k) / half_k + c, in world coordinates,
     // rounded to integers of about 24 bits.
     double coef[5];
