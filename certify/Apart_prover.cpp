@@ -1,5 +1,6 @@
 #include "certify/Apart_prover.h"
 
+#include "certify/Split_prover.h"
 #include "search/Apart_pieces.h"
 #include <algorithm>
 
@@ -8,6 +9,8 @@ namespace {
 
 using json = nlohmann::ordered_json;
 using K = Rational_kernel;
+
+} // namespace
 
 json conflict_json(const Conflict& c, const Literal_table& table, bool closed)
 {
@@ -20,8 +23,6 @@ json conflict_json(const Conflict& c, const Literal_table& table, bool closed)
   if (closed) out["of"] = c.of == Conflict::Of::A ? "A" : c.of == Conflict::Of::B ? "B" : "both";
   return out;
 }
-
-} // namespace
 
 json literal_json(const Literal_coefficients& h)
 {
@@ -43,15 +44,26 @@ const Scene_model<K>& Apart_prover::model()
 
 json Apart_prover::prove(int a, int b, const Rational& until, bool strict_end)
 {
-  Apart_pieces<K> pieces(model(), semantics_, limit_ - std::min(limit_, steps_));
-  json list = json::array();
-  for (const Apart_piece& p : pieces.prove(a, b, until, strict_end)) {
-    json conflicts = json::array();
-    for (const auto& c : p.conflicts) conflicts.push_back(conflict_json(c, p.literals, semantics_ == Semantics::closed));
-    list.push_back(json{{"t", json::array({to_string(p.lo), to_string(p.hi)})}, {"proof", json{{"conflicts", conflicts}}}});
+  json list;
+  Split_stats split;
+  // Two unions of convex pieces (meshes): a split tree whose leaves close
+  // off pieces one by one (certify/Split_prover.h); otherwise, or past its
+  // limits, the conflicts of every term.
+  if (auto tree = split_apart_pieces(model(), a, b, until, strict_end, semantics_, split_limits_, &split)) {
+    list = std::move(*tree);
+    conflicts_ += split.conflicts;
+    ++split_pairs_;
+  } else {
+    Apart_pieces<K> pieces(model(), semantics_, limit_ - std::min(limit_, steps_));
+    list = json::array();
+    for (const Apart_piece& p : pieces.prove(a, b, until, strict_end)) {
+      json conflicts = json::array();
+      for (const auto& c : p.conflicts) conflicts.push_back(conflict_json(c, p.literals, semantics_ == Semantics::closed));
+      list.push_back(json{{"t", json::array({to_string(p.lo), to_string(p.hi)})}, {"proof", json{{"conflicts", conflicts}}}});
+    }
+    steps_ += pieces.steps();
+    conflicts_ += pieces.conflicts();
   }
-  steps_ += pieces.steps();
-  conflicts_ += pieces.conflicts();
   json out{{"until", to_string(until)}};
   if (strict_end) out["open_end"] = true;
   out["pieces"] = list;

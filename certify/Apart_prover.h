@@ -7,6 +7,7 @@
 #ifndef CLASH4D_CERTIFY_APART_PROVER_H
 #define CLASH4D_CERTIFY_APART_PROVER_H
 
+#include "certify/Split_prover.h"
 #include "search/Term_search.h"
 #include "exact/Rational_kernel.h"
 #include "model/Scene_model.h"
@@ -26,6 +27,10 @@ public:
 
   std::uint64_t steps() const { return steps_; }
   std::size_t conflicts() const { return conflicts_; }
+  // Pairs proved by split trees (certify/Split_prover.h): the writer then
+  // has the checker of verify/ check the certificate before writing it.
+  std::size_t split_pairs() const { return split_pairs_; }
+  void set_split_limits(const Split_limits& limits) { split_limits_ = limits; }
 
 private:
   using K = Rational_kernel;
@@ -34,13 +39,17 @@ private:
   std::optional<Scene_model<K>> model_;   // built at the first proof: a witness needs none
   Semantics semantics_;
   std::uint64_t limit_, steps_ = 0;
-  std::size_t conflicts_ = 0;
+  std::size_t conflicts_ = 0, split_pairs_ = 0;
+  Split_limits split_limits_;
 
   const Scene_model<K>& model();
 };
 
 // A literal's JSON form: five integers as strings.
 nlohmann::ordered_json literal_json(const Literal_coefficients& h);
+
+// A CONFLICT of a leaf (its literals from table); closed: with its "of".
+nlohmann::ordered_json conflict_json(const Conflict& c, const Literal_table& table, bool closed);
 
 } // namespace clash4d
 

@@ -25,6 +25,20 @@ struct Apart_piece {
   std::vector<Conflict> conflicts;
 };
 
+// tL, every velocity change of objects a and b strictly before until, and
+// until: the ends of an APART's pieces (section 3).
+template <class K>
+std::vector<Rational> apart_cuts(const Scene_model<K>& model, int a, int b, const Rational& until)
+{
+  std::vector<Rational> cuts{model.t_lo, until};
+  for (int i : {a, b})
+    for (const auto& t : model.objects[i].motion.times)
+      if (model.t_lo < t && t < until) cuts.push_back(t);
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  return cuts;
+}
+
 template <class K>
 class Apart_pieces {
 public:
@@ -43,12 +57,7 @@ public:
   // Term_feasible (a term has a point: the pair is not apart), Term_limit.
   std::vector<Apart_piece> prove(int a, int b, const Rational& until, bool strict_end)
   {
-    std::vector<Rational> cuts{model_.t_lo, until};
-    for (int i : {a, b})
-      for (const FT& t : model_.objects[i].motion.times)
-        if (model_.t_lo < t && t < until) cuts.push_back(t);
-    std::sort(cuts.begin(), cuts.end());
-    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    std::vector<Rational> cuts = apart_cuts(model_, a, b, until);
     std::vector<Apart_piece> pieces;
     proven_until_ = cuts.front();
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {

@@ -219,9 +219,11 @@ struct Made {
   json doc;
 };
 
-Made made(const std::string& name, const std::string& scene_text, std::vector<std::string> mode)
+// check --certificate on a scene file, and verify accepts it.
+Made made_from_file(const std::string& scene, const std::string& cert, std::vector<std::string> mode)
 {
-  Made m{write_text(name + ".json", scene_text), (work / (name + ".cert.json")).string(), {}};
+  fs::create_directories(work);
+  Made m{scene, cert, {}};
   std::vector<std::string> args{"check", m.scene, "--certificate", m.cert};
   args.insert(args.end(), mode.begin(), mode.end());
   Cli_run c = run_clash4d(args);
@@ -229,6 +231,11 @@ Made made(const std::string& name, const std::string& scene_text, std::vector<st
   m.doc = read_json(m.cert);
   BOOST_TEST_REQUIRE(run_clash4d({"verify", m.scene, m.cert}).status == 0);
   return m;
+}
+
+Made made(const std::string& name, const std::string& scene_text, std::vector<std::string> mode)
+{
+  return made_from_file(write_text(name + ".json", scene_text), (work / (name + ".cert.json")).string(), mode);
 }
 
 // verify on a changed certificate: exit 1, and the message names `where`.
@@ -293,6 +300,92 @@ BOOST_AUTO_TEST_CASE(a_dropped_piece_or_a_moved_bound_breaks_the_cover)
   // leaves (1, 3/2) uncovered.
   moved["pairs"][0]["apart"]["pieces"][1]["t"][0] = "3/2";
   expect_rejected(m, moved, "pairs[0].apart.pieces[1]", "moved piece bound");
+}
+
+// ---- Split trees for unions of convex pieces (certify/Split_prover.h).
+// Both checkers on every mode: tests/python/test_verify_py.py (the folder
+// fixtures/certificates/split); here the shape of the proof and tampering.
+
+namespace {
+
+std::string split_scene(const std::string& name)
+{
+  return (fs::path(CLASH4D_FIXTURES) / "certificates" / "split" / name).string();
+}
+
+Made made_from_file(const std::string& scene, std::vector<std::string> mode)
+{
+  return made_from_file(scene, (work / "split.cert.json").string(), mode);
+}
+
+struct Tree_count {
+  std::size_t splits = 0, leaves = 0, conflicts = 0;
+};
+
+void count_tree(const json& node, Tree_count& n)
+{
+  if (node.contains("split")) {
+    ++n.splits;
+    count_tree(node["below"], n), count_tree(node["above"], n);
+  } else {
+    ++n.leaves, n.conflicts += node["conflicts"].size();
+  }
+}
+
+// The first leaf under a split, and its path.
+json& first_split_leaf(json& doc, std::string& where)
+{
+  json& piece = doc["pairs"][0]["apart"]["pieces"][0]["proof"];
+  BOOST_TEST_REQUIRE(piece.contains("split"));
+  json* node = &piece;
+  where = "pairs[0].apart.pieces[0].proof";
+  while (node->contains("split")) node = &(*node)["below"], where += ".below";
+  return (*node)["conflicts"];
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(split_trees_grow_with_the_pieces_not_their_pairs)
+{
+  // 25 pieces each side, a plane apart: one split, a conflict per piece
+  // (the term-by-term proof needs one per pair that the LP does not share).
+  Made m = made_from_file(split_scene("stars_24_side_by_side.json"), {});
+  Tree_count n;
+  for (const auto& piece : m.doc["pairs"][0]["apart"]["pieces"]) count_tree(piece["proof"], n);
+  BOOST_TEST(n.splits >= 1u);
+  BOOST_TEST(n.conflicts <= 25u + 25u + 4u, n.conflicts << " conflicts for 25 + 25 pieces");
+  // Interleaved arms, no one plane between them: still far below 9 x 9 per leaf.
+  Made k = made_from_file(split_scene("stars_interleaved_pass.json"), {"--semantics", "closed"});
+  Tree_count t;
+  for (const auto& piece : k.doc["pairs"][0]["apart"]["pieces"]) count_tree(piece["proof"], t);
+  BOOST_TEST(t.splits >= 2u);
+  BOOST_TEST(t.conflicts <= t.leaves * (9u + 9u), t.conflicts << " conflicts in " << t.leaves << " leaves");
+}
+
+BOOST_AUTO_TEST_CASE(a_tampered_split_tree_is_rejected)
+{
+  Made m = made_from_file(split_scene("stars_interleaved_pass.json"), {"--semantics", "closed"});
+  std::string where;
+  json dropped = m.doc;
+  json& conflicts = first_split_leaf(dropped, where);
+  // The last: with a piece of A present there, that of a piece of B, which
+  // nothing else closes off (the first, of a piece of A, may be redundant).
+  conflicts.erase(conflicts.end() - 1);
+  expect_rejected(m, dropped, where, "a conflict dropped from a split tree's leaf");
+  // The split moved: its leaves' conflicts no longer hold (the plane they
+  // use is another) or no longer close off the pieces across it.
+  json moved = m.doc;
+  json& split = moved["pairs"][0]["apart"]["pieces"][0]["proof"]["split"];
+  std::string e = split[4];
+  split[4] = e[0] == '-' ? e.substr(1) : "-" + e;
+  expect_rejected(m, moved, "pairs[0].apart.pieces[0].proof", "a split literal changed");
+  // The same proof in regularised semantics: its conflicts say "of" both.
+  Made r = made_from_file(split_scene("stars_interleaved_pass.json"), {});
+  json flipped = r.doc;
+  json& first = first_split_leaf(flipped, where);
+  std::string l = first[0]["lambda"][0];
+  first[0]["lambda"][0] = "-" + l;
+  expect_rejected(r, flipped, where + ".conflicts[0]", "a flipped multiplier in a split tree");
 }
 
 BOOST_AUTO_TEST_CASE(an_earlier_t_star_is_rejected)

@@ -24,7 +24,7 @@ SOURCE = pathlib.Path(__file__).resolve().parents[2]
 CHECKER = SOURCE / "verify" / "python" / "clash4d_verify.py"
 FIXTURES = pathlib.Path(os.environ.get("CLASH4D_FIXTURES", SOURCE / "fixtures"))
 BINARY = os.environ.get("CLASH4D_BINARY")
-FOLDERS = ["paper", "contact", "found", "unbounded", "rotation"]
+FOLDERS = ["paper", "contact", "found", "unbounded", "rotation", "certificates/split"]
 MODES = [[], ["--earliest"], ["--all-pairs"], ["--semantics", "closed"],
          ["--semantics", "closed", "--earliest"]]
 # The sanitizer run (which sets CLASH4D_CERTIFICATE_CASES) checks the
