@@ -4,7 +4,7 @@
 #include "model/Extrusion.h"
 #include "search/Apart_pieces.h"
 #include "search/Motzkin_lp.h"
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 #include <CGAL/Gmpzf.h>
 #include <CGAL/QP_functions.h>
 #include <CGAL/QP_models.h>
