@@ -34,6 +34,7 @@
 #include <algorithm>
 #include <memory>
 #include <optional>
+#include <set>
 #include <tuple>
 #include <vector>
 
@@ -165,7 +166,9 @@ public:
     }
     if (!best) return Pair_result<FT>();
     int a = split_.owner[static_cast<std::size_t>(best->r.a)], b = split_.owner[static_cast<std::size_t>(best->r.b)];
-    return on_objects(best->r, a, b);
+    std::optional<Pair_result<FT>> r = on_objects(best->r, a, b);
+    if (r || K::is_exact) return r;
+    return unverified(std::move(best->r), a, b);
   }
 
 private:
@@ -227,7 +230,9 @@ private:
   }
 
   // Every piece pair of two objects not ignored whose swept boxes meet, by
-  // the time they start to (then pair order, then pieces).
+  // the time they start to (then pair order, then pieces). Stats: the
+  // piece pairs (object_pairs), those whose boxes meet (candidate_pairs);
+  // `pairs` counts those searched.
   std::vector<Candidate> candidates(Check_stats& stats)
   {
     std::vector<Candidate> out;
@@ -235,11 +240,10 @@ private:
     for (std::size_t a = 0; a < n; ++a)
       for (std::size_t b = a + 1; b < n; ++b) {
         if (scene_.ignored(static_cast<int>(a), static_cast<int>(b))) continue;
-        ++stats.object_pairs;
-        std::size_t before = out.size();
+        Work_budget::check();
+        stats.object_pairs += split_.pieces_of(a) * split_.pieces_of(b);
         for (const auto& span : model_.sub_spans({static_cast<int>(a), static_cast<int>(b)}))
           add_meeting(a, b, object_pair, span, out);
-        stats.candidate_pairs += out.size() > before;
         ++object_pair;
       }
     std::sort(out.begin(), out.end(), [&](const Candidate& x, const Candidate& y) {
@@ -250,14 +254,10 @@ private:
     // One entry per piece pair (its earliest sub-span's bound): the pair
     // is searched over all its sub-spans at once.
     std::vector<Candidate> once;
-    std::vector<std::pair<int, int>> seen;
-    for (Candidate& c : out) {
-      std::pair<int, int> key{c.i, c.j};
-      auto at = std::lower_bound(seen.begin(), seen.end(), key);
-      if (at != seen.end() && *at == key) continue;
-      seen.insert(at, key);
-      once.push_back(std::move(c));
-    }
+    std::set<std::pair<int, int>> seen;
+    for (Candidate& c : out)
+      if (seen.insert({c.i, c.j}).second) once.push_back(std::move(c));
+    stats.candidate_pairs = once.size();
     return once;
   }
 
@@ -316,6 +316,19 @@ private:
       if (in) return s;
     }
     return std::nullopt;
+  }
+
+  // A float kernel's answer whose points did not hold for the objects: the
+  // piece pair's, marked unverified (as the cascade's float answers may
+  // be), rather than the cascade's slow search; none when it has no points.
+  static std::optional<Pair_result<FT>> unverified(Pair_result<FT> r, int a, int b)
+  {
+    bool closed = r.semantics == Semantics::closed;
+    if (!r.has_witness || (closed && r.witness_cells.size() != 2) || r.contact_cells.size() != 2) return std::nullopt;
+    r.a = a;
+    r.b = b;
+    r.witness_verified = false;
+    return r;
   }
 
   // The piece pair's answer r for objects a and b: its t* and contact
