@@ -1,4 +1,5 @@
 #include "exact/Exact_checker.h"
+#include "exact/Exact_instantiation.h"
 #include "exact/Filtered_runner.h"
 #include "exact/Interval_kernel.h"
 #include "exact/Rational_kernel.h"
@@ -43,6 +44,8 @@ struct Exact_checker::Impl {
 
   Check_answer check(const Check_options& options)
   {
+    // The same answer as check_exact where it takes the piece pairs.
+    if (std::optional<Check_answer> a = check_exact_by_pieces(moved ? *moved : scene, options)) return std::move(*a);
     std::unique_ptr<Filtered_exact>& r = runner[options.sbounds ? 1 : 0];
     if (!r) r = std::make_unique<Filtered_exact>(moved ? *moved : scene, options.sbounds, true);
     return r->check(options);
