@@ -11,16 +11,23 @@ namespace clash4d {
 using Filtered_exact = Filtered_runner<Interval_kernel, Rational_kernel>;
 
 // Mostly a few linear programs per piece pair (check/Piece_pairs.h).
-std::optional<Check_answer> check_exact_by_pieces(const Scene& scene, const Check_options& options)
+std::optional<Check_answer> check_exact_by_pieces(const Scene& scene, const Check_options& options,
+                                                  std::shared_ptr<void>* kept)
 {
+  using Model = Scene_model<Rational_kernel>;
   if (!Piece_pairs<Rational_kernel>::asked(options)) return std::nullopt;
   std::optional<Piece_split> split = Piece_split::make(scene);
   if (!split) return std::nullopt;
   Rational_kernel k;
   Stage_clock clock(options.stage_seconds);
-  Scene_model<Rational_kernel> model = Scene_model<Rational_kernel>::build(k, scene);
-  double model_seconds = clock.seconds();
-  std::optional<Check_answer> a = piece_pairs_check(k, scene, model, options, *split);
+  std::shared_ptr<Model> model = kept ? std::static_pointer_cast<Model>(*kept) : nullptr;
+  double model_seconds = 0;
+  if (!model) {
+    model = std::make_shared<Model>(Model::build(k, scene));
+    model_seconds = clock.seconds();
+    if (kept) *kept = model;
+  }
+  std::optional<Check_answer> a = piece_pairs_check(k, scene, *model, options, *split);
   if (a) {
     a->number = "exact";
     a->stats.seconds_model = model_seconds;
