@@ -42,6 +42,10 @@ struct Check_options {
   // vertex-face and edge-edge minors (rotation/Rotating_pair.cpp): tests
   // of the restriction against the full enumeration.
   bool feature_events = true;
+  // false: --earliest on objects that are unions of convex pieces (meshes)
+  // searches the whole union formula, as the paper does, instead of the
+  // piece pairs (check/Piece_pairs.h): tests compare the two.
+  bool piece_pairs = true;
   bool json = false;          // output form (used by the command line only)
   Semantics semantics = Semantics::regularised;
 };

@@ -7,6 +7,7 @@
 #include "check/Collision_checker.h"
 #include "check/Pair_skeleton.h"
 #include "check/Pair_sweep.h"
+#include "check/Piece_pairs.h"
 #include "numbers/Number_ops.h"
 #include "run/Work_budget.h"
 #include <boost/container/small_vector.hpp>
@@ -264,17 +265,45 @@ std::vector<std::pair<int, int>> candidate_pairs(const K& k, const Scene_model<K
   return pairs;
 }
 
+// --earliest on unions of convex pieces by piece pairs (check/Piece_pairs.h)
+// in K, on the scene's model in K; none when the query is not one it
+// answers, or its points failed their check (the caller runs the cascade).
 template <class K>
-Check_answer run_check(const K& k, const Scene& scene, const Check_options& options)
+std::optional<Check_answer> piece_pairs_check(const K& k, const Scene& scene, const Scene_model<K>& model,
+                                              const Check_options& options, const Piece_split& split)
 {
-  using Checker = Collision_checker<K>;
   Check_answer answer;
   answer.number = K::name();
   answer.semantics = options.semantics;
   answer.stats.timed = options.stage_seconds;
-  Stage_clock clock(answer.stats.timed);
+  std::optional<Pair_result<typename K::FT>> r = Piece_pairs<K>(k, scene, model, split, options).earliest(answer.stats);
+  if (!r) return std::nullopt;
+  if (r->collide) {
+    answer.collide = true;
+    pair_answer(k, model, *r, answer.pairs.emplace_back());
+    answer.earliest_pair = 0;
+  }
+  return answer;
+}
+
+template <class K>
+Check_answer run_check(const K& k, const Scene& scene, const Check_options& options)
+{
+  using Checker = Collision_checker<K>;
+  Stage_clock clock(options.stage_seconds);
   Scene_model<K> model = Scene_model<K>::build(k, scene);
-  answer.stats.seconds_model = clock.seconds();
+  double model_seconds = clock.seconds();
+  std::optional<Piece_split> split = Piece_pairs<K>::asked(options) ? Piece_split::make(scene) : std::nullopt;
+  if (split)
+    if (std::optional<Check_answer> a = piece_pairs_check(k, scene, model, options, *split)) {
+      a->stats.seconds_model = model_seconds;
+      return std::move(*a);
+    }
+  Check_answer answer;
+  answer.number = K::name();
+  answer.semantics = options.semantics;
+  answer.stats.timed = options.stage_seconds;
+  answer.stats.seconds_model = model_seconds;
   auto settled = settled_bounds_all(k, model, answer.stats, options.sbounds);
   std::vector<std::pair<int, int>> pairs = candidate_pairs(k, model, settled, scene, answer.stats, options.semantics);
   auto check = [&](std::size_t i, const typename K::FT* ceiling, Semantics semantics, Check_stats& stats) {

@@ -1,4 +1,5 @@
 #include "exact/Exact_checker.h"
+#include "exact/Exact_instantiation.h"
 #include "exact/Filtered_runner.h"
 #include "exact/Interval_kernel.h"
 #include "exact/Rational_kernel.h"
@@ -40,9 +41,13 @@ struct Exact_checker::Impl {
   std::unique_ptr<Scene> moved;
   std::unique_ptr<Filtered_exact> runner[2];
   std::vector<int> changed;   // move_to's, kept: a query allocates none
+  std::shared_ptr<void> piece_model;   // check_exact_by_pieces', made again when motions change
 
   Check_answer check(const Check_options& options)
   {
+    // The same answer as check_exact where it takes the piece pairs.
+    if (std::optional<Check_answer> a = check_exact_by_pieces(moved ? *moved : scene, options, &piece_model))
+      return std::move(*a);
     std::unique_ptr<Filtered_exact>& r = runner[options.sbounds ? 1 : 0];
     if (!r) r = std::make_unique<Filtered_exact>(moved ? *moved : scene, options.sbounds, true);
     return r->check(options);
@@ -56,6 +61,7 @@ struct Exact_checker::Impl {
     if (!moved) {
       moved = std::make_unique<Scene>(scene);
       for (auto& r : runner) r.reset();   // they read the scene itself
+      piece_model.reset();
     }
     changed.clear();
     for (std::size_t i = 0; i < moved->objects.size(); ++i)
@@ -71,6 +77,7 @@ struct Exact_checker::Impl {
         changed.push_back(static_cast<int>(i));
       }
     if (changed.empty()) return;
+    piece_model.reset();
     try {
       for (auto& r : runner)
         if (r) r->motions_changed(changed);
@@ -81,7 +88,7 @@ struct Exact_checker::Impl {
   }
 };
 
-Exact_checker::Exact_checker(const Scene& scene) : impl_(new Impl{scene, nullptr, {}, {}}) {}
+Exact_checker::Exact_checker(const Scene& scene) : impl_(new Impl{scene, nullptr, {}, {}, nullptr}) {}
 Exact_checker::~Exact_checker() = default;
 
 Check_answer Exact_checker::check(const Check_options& options)

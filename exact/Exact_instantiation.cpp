@@ -10,8 +10,34 @@ namespace clash4d {
 // The filtered exact kernel: intervals first, rationals where they fail.
 using Filtered_exact = Filtered_runner<Interval_kernel, Rational_kernel>;
 
+// Mostly a few linear programs per piece pair (check/Piece_pairs.h).
+std::optional<Check_answer> check_exact_by_pieces(const Scene& scene, const Check_options& options,
+                                                  std::shared_ptr<void>* kept)
+{
+  using Model = Scene_model<Rational_kernel>;
+  if (!Piece_pairs<Rational_kernel>::asked(options)) return std::nullopt;
+  std::optional<Piece_split> split = Piece_split::make(scene);
+  if (!split) return std::nullopt;
+  Rational_kernel k;
+  Stage_clock clock(options.stage_seconds);
+  std::shared_ptr<Model> model = kept ? std::static_pointer_cast<Model>(*kept) : nullptr;
+  double model_seconds = 0;
+  if (!model) {
+    model = std::make_shared<Model>(Model::build(k, scene));
+    model_seconds = clock.seconds();
+    if (kept) *kept = model;
+  }
+  std::optional<Check_answer> a = piece_pairs_check(k, scene, *model, options, *split);
+  if (a) {
+    a->number = "exact";
+    a->stats.seconds_model = model_seconds;
+  }
+  return a;
+}
+
 Check_answer check_exact(const Scene& scene, const Check_options& options)
 {
+  if (std::optional<Check_answer> a = check_exact_by_pieces(scene, options)) return std::move(*a);
   return Filtered_exact(scene, options.sbounds).check(options);
 }
 
