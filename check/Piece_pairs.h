@@ -30,7 +30,7 @@
 #include "check/Collision_checker.h"
 #include "search/Convex_guide.h"
 #include "search/S_bounds.h"
-#include "search/Work_budget.h"
+#include "run/Work_budget.h"
 #include <algorithm>
 #include <memory>
 #include <optional>
