@@ -478,7 +478,7 @@ BOOST_AUTO_TEST_CASE(a_scene_reaches_only_mesh_files_under_its_folder)
     return file;
   };
   const std::string elsewhere = (root / "elsewhere").string();
-  for (const std::string& inside : {"parts/cube.off", "./parts/../parts/cube.off"})
+  for (const char* inside : {"parts/cube.off", "./parts/../parts/cube.off"})
     BOOST_TEST(run_clash4d({"check", scene_with(inside)}).status == 0, inside);
   for (const std::string& outside : std::vector<std::string>{"../elsewhere/cube.off", elsewhere + "/cube.off", "linked.off", "passwd.off"}) {
     Cli_run r = run_clash4d({"check", scene_with(outside)});
