@@ -8,6 +8,7 @@
 #include "scene/Mesh_options.h"
 #include "scene/Mesh_solid.h"
 #include "scene/Scene_reader.h"
+#include "scene/Slow_step_note.h"
 #include "support/Cli_run.h"
 
 #include <cerrno>
@@ -17,6 +18,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <openssl/evp.h>
+#include <sstream>
+#include <thread>
 #include <unistd.h>
 
 using namespace clash4d;
@@ -314,4 +317,51 @@ BOOST_AUTO_TEST_CASE(a_child_is_killed_and_reaped_when_the_poll_throws)
   BOOST_TEST(polls == 4);
   BOOST_TEST(child != getpid());
   BOOST_TEST((kill(child, 0) == -1 && errno == ESRCH));   // gone: not even a zombie
+}
+
+// Standard error, redirected into a file while `body` runs; its text.
+template <class Body>
+static std::string stderr_of(Body body)
+{
+  fs::path file = fs::temp_directory_path() / ("clash4d-note-" + std::to_string(getpid()) + ".txt");
+  std::fflush(stderr);
+  int saved = dup(STDERR_FILENO);
+  FILE* sink = std::fopen(file.c_str(), "w");
+  BOOST_REQUIRE(saved >= 0 && sink != nullptr);
+  dup2(fileno(sink), STDERR_FILENO);
+  body();
+  std::fflush(stderr);
+  dup2(saved, STDERR_FILENO);
+  close(saved);
+  std::fclose(sink);
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  fs::remove(file);
+  return text.str();
+}
+
+// Issue 58: a long step shows progress in logs too. Standard error here is a
+// file, not a terminal: whole lines while the step runs, then one at its end;
+// nothing at all for a quick step.
+BOOST_AUTO_TEST_CASE(a_slow_step_writes_lines_in_a_log_and_a_quick_one_nothing)
+{
+  using std::chrono::milliseconds;
+  Slow_step_note::Delays short_delays{milliseconds(20), milliseconds(20), milliseconds(50)};
+  std::string slow = stderr_of([&] {
+    Slow_step_note note("decomposing bowl.off (8 triangles)", short_delays);
+    std::this_thread::sleep_for(milliseconds(400));
+  });
+  BOOST_TEST_MESSAGE("the slow step's log:\n" << slow);
+  std::istringstream lines(slow);
+  std::string line, last;
+  int so_far = 0;
+  while (std::getline(lines, line)) {
+    BOOST_TEST(line.rfind("clash4d: decomposing bowl.off (8 triangles): ", 0) == 0);
+    so_far += line.find(" s so far") != std::string::npos;
+    last = line;
+  }
+  BOOST_TEST(so_far >= 2);
+  BOOST_TEST(last.find(": done in ") != std::string::npos);
+  BOOST_TEST(stderr_of([] { Slow_step_note note("decomposing quick.off (8 triangles)"); }).empty());
 }
