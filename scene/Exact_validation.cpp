@@ -1,5 +1,6 @@
 #include "scene/Exact_validation.h"
 #include "geometry/Polytope_ft.h"
+#include "scene/Lazy_point.h"
 
 #include <CGAL/Cartesian.h>
 #include <CGAL/QP_functions.h>
@@ -78,20 +79,27 @@ Polytope_combinatorics hull_facets(const std::vector<Rational3>& points)
   for (k = j + 1; k < pts.size() && CGAL::coplanar(pts[0], pts[i], pts[j], pts[k]); ++k) {}
   if (k >= pts.size()) throw std::invalid_argument("all points lie in one plane: the hull has no interior");
 
-  std::map<Point_3, int> index;
-  for (std::size_t i = 0; i < pts.size(); ++i) index.emplace(pts[i], static_cast<int>(i));
-  using Mesh = CGAL::Surface_mesh<Point_3>;
+  // The hull on the lazy exact kernel (its signs are exact), its vertices
+  // found again among the input points; what follows uses the rationals.
+  std::vector<CGAL::Epeck::Point_3> lazy;
+  for (const auto& p : points) lazy.push_back(lazy_point(p));
+  std::map<CGAL::Epeck::Point_3, int> index;
+  for (std::size_t i = 0; i < lazy.size(); ++i) index.emplace(lazy[i], static_cast<int>(i));
+  using Mesh = CGAL::Surface_mesh<CGAL::Epeck::Point_3>;
   Mesh mesh;
-  CGAL::convex_hull_3(pts.begin(), pts.end(), mesh);
+  CGAL::convex_hull_3(lazy.begin(), lazy.end(), mesh);
   Polytope_combinatorics out;
   std::map<std::array<Rational, 4>, int> planes;
   std::map<Mesh::Face_index, int> plane_of;
   for (auto f : mesh.faces()) {
-    std::array<int, 3> t;
-    int k = 0;
-    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-      if (k < 3) t[k] = index.at(mesh.point(v));
-      ++k;
+    std::vector<int> around;
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) around.push_back(index.at(mesh.point(v)));
+    std::array<int, 3> t{around[0], around[1], around[2]};
+    // The hull's faces are outward: each triangle of a face's fan adds six
+    // times the volume of its tetrahedron with the origin.
+    for (std::size_t i = 1; i + 1 < around.size(); ++i) {
+      const Point_3 &a = pts[around[0]], &b = pts[around[i]], &c = pts[around[i + 1]];
+      out.six_volume += CGAL::determinant(a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z());
     }
     // One triple per facet plane: triangles of the same facet repeat it. The
     // plane, scaled so its first non-zero coefficient is +-1 (keeping its

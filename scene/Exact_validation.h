@@ -27,6 +27,7 @@ std::string prism_base_problem(const std::vector<std::array<Rational, 2>>& base)
 struct Polytope_combinatorics {
   std::vector<std::array<int, 3>> triples;
   std::vector<std::vector<int>> corners;
+  Rational six_volume{0};   // hull_facets only: six times the hull's volume
 };
 
 // Facets of the convex hull as point-index triples oriented outward (right

@@ -3,7 +3,7 @@
 
 namespace clash4d {
 
-void make_hull_solid(const std::vector<Rational3>& points, Solid& s)
+Rational make_hull_solid(const std::vector<Rational3>& points, Solid& s)
 {
   if (points.size() < 4)
     throw std::invalid_argument("a hull needs at least 4 points not in one plane, found " + std::to_string(points.size()));
@@ -18,6 +18,7 @@ void make_hull_solid(const std::vector<Rational3>& points, Solid& s)
     Rational4 plane = facet_plane(points[t[0]], points[t[1]], points[t[2]]);
     s.constructed.insert(s.constructed.end(), plane.begin(), plane.end());
   }
+  return c.six_volume;
 }
 
 } // namespace clash4d

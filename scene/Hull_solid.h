@@ -9,9 +9,10 @@
 
 namespace clash4d {
 
-// Fills s (kind Hull) from the points; throws std::invalid_argument when
+// Fills s (kind Hull) from the points, and returns six times its volume
+// (what the mesh cache checks pieces by); throws std::invalid_argument when
 // they all lie in one plane.
-void make_hull_solid(const std::vector<Rational3>& points, Solid& s);
+Rational make_hull_solid(const std::vector<Rational3>& points, Solid& s);
 
 } // namespace clash4d
 

@@ -5,9 +5,6 @@
 #include "scene/Child_process.h"
 #include "run/Work_budget.h"
 
-#include <CGAL/Cartesian.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/convex_hull_3.h>
 #include <CGAL/version.h>
 #include <openssl/evp.h>
 
@@ -23,8 +20,6 @@ namespace clash4d {
 namespace {
 
 namespace fs = std::filesystem;
-using Exact_geometry = CGAL::Cartesian<Rational>;
-using Point_3 = Exact_geometry::Point_3;
 
 std::string sha256_hex(const std::string& text)
 {
@@ -51,25 +46,6 @@ fs::path made_folder(const fs::path& folder)
   std::error_code ec;
   fs::create_directories(folder, ec);
   return !ec && fs::is_directory(folder, ec) ? folder : fs::path();
-}
-
-// Six times the volume of the convex hull of the points (fans of its
-// facets, outward): what a piece fills, to check the pieces against the mesh.
-Rational six_hull_volume(const std::vector<Rational3>& points)
-{
-  std::vector<Point_3> pts;
-  for (const auto& p : points) pts.emplace_back(p[0], p[1], p[2]);
-  CGAL::Surface_mesh<Point_3> hull;
-  CGAL::convex_hull_3(pts.begin(), pts.end(), hull);
-  Rational sum(0);
-  for (auto f : hull.faces()) {
-    std::vector<Point_3> v;
-    for (auto u : CGAL::vertices_around_face(hull.halfedge(f), hull)) v.push_back(hull.point(u));
-    for (std::size_t i = 1; i + 1 < v.size(); ++i)
-      sum += CGAL::determinant(v[0].x(), v[0].y(), v[0].z(), v[i].x(), v[i].y(), v[i].z(), v[i + 1].x(),
-                               v[i + 1].y(), v[i + 1].z());
-  }
-  return sum;
 }
 
 // The entry's body: "pieces N", then per piece "piece V" and its V points,
@@ -99,9 +75,10 @@ std::size_t count_line(std::istream& in, const std::string& word, std::size_t ma
   return count;
 }
 
-// The pieces of a body, each rebuilt and validated as a hull; throws
-// std::invalid_argument for any text that is not such a body.
-Solid parse_body(const std::string& body, std::size_t max_pieces)
+// The pieces of a body, each rebuilt and validated as a hull, and six times
+// their volume; throws std::invalid_argument for any text that is not such a
+// body.
+Solid parse_body(const std::string& body, std::size_t max_pieces, Rational& six_volume)
 {
   std::istringstream in(body);
   Solid u;
@@ -117,7 +94,7 @@ Solid parse_body(const std::string& body, std::size_t max_pieces)
         x = rational_from_string(text);
       }
     u.children.emplace_back();
-    make_hull_solid(points, u.children.back());
+    six_volume += make_hull_solid(points, u.children.back());
   }
   std::string rest;
   if (in >> rest) throw std::invalid_argument("text after the pieces");
@@ -179,7 +156,11 @@ Solid decomposed_within_budget(const Checked_mesh& mesh, const std::string& file
   Work_budget::check();
   std::string body = text_of_child([&] { return body_text(decomposed_solid(mesh, file_name, limits)); },
                                    [] { Work_budget::check(); }, file_name);
-  return parse_body(body, limits.pieces);
+  Rational six(0);
+  Solid pieces = parse_body(body, limits.pieces, six);
+  if (six != Rational(6) * mesh.volume)   // the child checked this; a pipe's text is checked again
+    throw std::logic_error(file_name + ": the pieces sent back by the decomposition do not fill the solid");
+  return pieces;
 }
 
 } // namespace
@@ -223,15 +204,9 @@ std::optional<Solid> Mesh_cache::load(const std::string& key, const Checked_mesh
     if (end == std::string::npos) return std::nullopt;
     std::string body = text.substr(end + 1);
     if (text != entry_text(key, body)) return std::nullopt;
-    Solid u = parse_body(body, max_pieces);
     // The pieces fill the solid exactly once, as decomposed_solid checks.
     Rational six(0);
-    for (const Solid& piece : u.children) {
-      std::vector<Rational3> points(piece.numbers.size() / 3);
-      for (std::size_t i = 0; i < points.size(); ++i)
-        points[i] = {piece.numbers[3 * i], piece.numbers[3 * i + 1], piece.numbers[3 * i + 2]};
-      six += six_hull_volume(points);
-    }
+    Solid u = parse_body(body, max_pieces, six);
     if (u.children.empty() || six != Rational(6) * mesh.volume) return std::nullopt;
     return u;
   } catch (const std::exception&) {   // any text that is not what store writes

@@ -1,5 +1,6 @@
 #include "scene/Mesh_check.h"
 #include "scene/Input_error.h"
+#include "scene/Lazy_point.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -55,19 +56,10 @@ int find_root(std::vector<int>& parent, int i)
   return i;
 }
 
-// The self-intersection test's kernel: CGAL's lazy exact one, whose
-// predicates are decided on intervals and, only where those cannot tell,
-// on the exact rationals the points are made from: the same signs as
-// CGAL::Cartesian<Rational>, sooner.
+// The self-intersection test's kernel: CGAL's lazy exact one
+// (scene/Lazy_point.h).
 using Exact_geometry = CGAL::Epeck;
 using Surface = CGAL::Surface_mesh<Exact_geometry::Point_3>;
-
-// x as the lazy kernel's number: its exact part is x itself.
-Exact_geometry::FT lazy(const Rational& x)
-{
-  using ET = Exact_geometry::FT::ET;   // mpq_class or Gmpq: each is made from an mpq_t
-  return Exact_geometry::FT(ET(x.mpq()));
-}
 using Facets = std::vector<std::vector<int>>;                         // vertex ids, per facet
 using Edges = std::map<std::pair<int, int>, std::vector<Edge_use>>;  // undirected edge -> its sides
 
@@ -209,7 +201,7 @@ void check_no_crossing(const Checked_mesh& m, const Fail& fail)
 {
   Surface surface;
   std::vector<Surface::Vertex_index> handle;
-  for (const auto& p : m.vertices) handle.push_back(surface.add_vertex(Exact_geometry::Point_3(lazy(p[0]), lazy(p[1]), lazy(p[2]))));
+  for (const auto& p : m.vertices) handle.push_back(surface.add_vertex(lazy_point(p)));
   std::vector<int> facet_of_face;
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {
     const auto& T = m.triangles[t];

@@ -221,6 +221,27 @@ BOOST_AUTO_TEST_CASE(cone_apex_is_one_vertex)
   BOOST_TEST(c.corners[0].size() == 34u);
 }
 
+// A hull's facets and volume, by hand. The box [0,2]x[0,3]x[0,1/2] given by
+// its 8 corners, edge midpoints (on the hull, not vertices), an inner point
+// and a repeat: 6 facet planes, 8 corners of 3 planes (none of 4 or more),
+// and six times the volume 3 is 18 (the mesh cache checks pieces by it).
+BOOST_AUTO_TEST_CASE(hull_facets_gives_one_triple_per_facet_and_six_times_the_volume)
+{
+  std::vector<Rational3> points;
+  for (int i = 0; i < 8; ++i)
+    points.push_back({Rational(2 * (i & 1)), Rational(3 * ((i >> 1) & 1)), Rational((i >> 2) & 1, 2)});
+  points.push_back({Rational(1), Rational(0), Rational(0)});
+  points.push_back({Rational(2), Rational(3, 2), Rational(1, 2)});
+  points.push_back({Rational(1, 3), Rational(1), Rational(1, 4)});
+  points.push_back(points[5]);
+  Polytope_combinatorics c = hull_facets(points);
+  BOOST_TEST(c.triples.size() == 6u);
+  BOOST_TEST(c.corners.empty());
+  BOOST_TEST(c.six_volume == Rational(18));
+  for (const auto& t : c.triples)   // every triple is three of the box's corners
+    for (int k : t) BOOST_TEST(k < 8);
+}
+
 // ---- scene/Files.h: what an atomic write replaces (issue 59 items 10, 11) ----
 
 #include "scene/Files.h"
