@@ -26,6 +26,18 @@ inline CGAL::Epeck::Point_3 lazy_point(const std::array<Rational, 3>& p)
   return CGAL::Epeck::Point_3(lazy_number(p[0]), lazy_number(p[1]), lazy_number(p[2]));
 }
 
+inline mpq_srcptr mpq_of(const mpq_class& q) { return q.get_mpq_t(); }
+inline mpq_srcptr mpq_of(const CGAL::Gmpq& q) { return q.mpq(); }
+
+// The exact rational a lazy number stands for (its exact part, computed if
+// it was not yet): what a construction on the lazy kernel hands back.
+inline Rational rational_of(const CGAL::Epeck::FT& x)
+{
+  Rational r;
+  mpq_set(r.mpq(), mpq_of(CGAL::exact(x)));
+  return r;
+}
+
 } // namespace clash4d
 
 #endif
