@@ -225,7 +225,8 @@ void Mesh_cache::store(const std::string& key, const Solid& pieces) const
 }
 
 Solid Mesh_cache::decomposed(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits,
-                             const std::string& options_key, Mesh_record& record) const
+                             const std::string& options_key, Mesh_record& record,
+                             const std::function<void()>& before_decomposing) const
 {
   std::string k = on() ? key(mesh, options_key) : "";
   if (on())
@@ -235,6 +236,7 @@ Solid Mesh_cache::decomposed(const Checked_mesh& mesh, const std::string& file_n
       return *hit;
     }
   record.cache = on() ? "miss" : "off";
+  before_decomposing();
   auto began = std::chrono::steady_clock::now();
   Solid pieces;
   {

@@ -12,6 +12,7 @@
 #include "scene/Scene.h"
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -49,9 +50,12 @@ public:
   void store(const std::string& key, const Solid& pieces) const;
 
   // decomposed_solid (scene/Mesh_solid.h) through the cache: record gets
-  // cache "hit", "miss" or "off" and the decomposition's seconds.
+  // cache "hit", "miss" or "off" and the decomposition's seconds. Unless
+  // the pieces come from the cache, before_decomposing runs first (the
+  // checks an entry stands for: mesh_solid's crossing test).
   Solid decomposed(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits,
-                   const std::string& options_key, Mesh_record& record) const;
+                   const std::string& options_key, Mesh_record& record,
+                   const std::function<void()>& before_decomposing = [] {}) const;
 
 private:
   std::filesystem::path folder_;

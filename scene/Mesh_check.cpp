@@ -195,32 +195,6 @@ Rational checked_volume(const Checked_mesh& m, const Fail& fail)
   return volume;
 }
 
-// No two facets cross (CGAL's exact self-intersection test on the
-// triangles); the pair reported is the one with the lowest facet.
-void check_no_crossing(const Checked_mesh& m, const Fail& fail)
-{
-  Surface surface;
-  std::vector<Surface::Vertex_index> handle;
-  for (const auto& p : m.vertices) handle.push_back(surface.add_vertex(lazy_point(p)));
-  std::vector<int> facet_of_face;
-  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
-    const auto& T = m.triangles[t];
-    if (surface.add_face(handle[T[0]], handle[T[1]], handle[T[2]]) == Surface::null_face())
-      fail("facet " + std::to_string(m.facet_of[t]), "the facet cannot be joined to its neighbours into one surface");
-    facet_of_face.push_back(m.facet_of[t]);
-  }
-  std::vector<std::pair<Surface::Face_index, Surface::Face_index>> crossing;
-  CGAL::Polygon_mesh_processing::self_intersections(surface, std::back_inserter(crossing));
-  if (crossing.empty()) return;
-  int a = facet_of_face[crossing.front().first], b = facet_of_face[crossing.front().second];
-  for (const auto& c : crossing) {
-    int x = facet_of_face[c.first], y = facet_of_face[c.second];
-    if (std::min(x, y) < std::min(a, b)) a = x, b = y;
-  }
-  if (a > b) std::swap(a, b);
-  fail("facet " + std::to_string(a), "crosses facet " + std::to_string(b) + ": the surface intersects itself (\"shells\": \"union\" reads crossing shells as their union; \"as\": \"hull\" takes the convex hull)");
-}
-
 // Convex: one connected surface whose every edge is convex (the facet
 // beyond the edge is on or below this facet's plane).
 bool is_convex(const Facets& facets, const Edges& edges, const std::vector<P3>& normal, const std::vector<P3>& V)
@@ -300,8 +274,43 @@ std::string polygon_fault(const std::vector<int>& F, const P3& N, const std::vec
 }
 
 // The checks in order, each failing at the first fault it finds
-// (docs/meshes.md): facets, edges, vertices, volume, crossings.
+// (docs/meshes.md): facets, edges, vertices, volume, and then crossings.
 Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet)
+{
+  Checked_mesh out = check_mesh_surface(mesh, file_name, file_facet);
+  check_no_crossing(out, file_name);
+  return out;
+}
+
+// No two facets cross (CGAL's exact self-intersection test on the
+// triangles); the pair reported is the one with the lowest facet.
+void check_no_crossing(const Checked_mesh& m, const std::string& file_name)
+{
+  static const std::vector<int> same;   // m.facet_of holds the file's facets
+  Fail fail{file_name, same};
+  Surface surface;
+  std::vector<Surface::Vertex_index> handle;
+  for (const auto& p : m.vertices) handle.push_back(surface.add_vertex(lazy_point(p)));
+  std::vector<int> facet_of_face;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const auto& T = m.triangles[t];
+    if (surface.add_face(handle[T[0]], handle[T[1]], handle[T[2]]) == Surface::null_face())
+      fail("facet " + std::to_string(m.facet_of[t]), "the facet cannot be joined to its neighbours into one surface");
+    facet_of_face.push_back(m.facet_of[t]);
+  }
+  std::vector<std::pair<Surface::Face_index, Surface::Face_index>> crossing;
+  CGAL::Polygon_mesh_processing::self_intersections(surface, std::back_inserter(crossing));
+  if (crossing.empty()) return;
+  int a = facet_of_face[crossing.front().first], b = facet_of_face[crossing.front().second];
+  for (const auto& c : crossing) {
+    int x = facet_of_face[c.first], y = facet_of_face[c.second];
+    if (std::min(x, y) < std::min(a, b)) a = x, b = y;
+  }
+  if (a > b) std::swap(a, b);
+  fail("facet " + std::to_string(a), "crosses facet " + std::to_string(b) + ": the surface intersects itself (\"shells\": \"union\" reads crossing shells as their union; \"as\": \"hull\" takes the convex hull)");
+}
+
+Checked_mesh check_mesh_surface(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet)
 {
   Fail fail{file_name, file_facet};
   if (mesh.facets.empty()) fail("", "no facets");
@@ -313,7 +322,6 @@ Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name, const st
   Edges edges = check_edges(facets, out.vertices, fail);
   check_fans(facets, out.vertices, fail);
   out.volume = checked_volume(out, fail);
-  check_no_crossing(out, fail);
   out.convex = is_convex(facets, edges, normal, out.vertices);
   return out;
 }

@@ -26,6 +26,14 @@ struct Checked_mesh {
 // one shell of it, scene/Mesh_repair.h), so messages name the file's facet.
 Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet = {});
 
+// check_mesh in two steps, so that a mesh whose pieces come from the
+// decomposition cache skips the costliest check (scene/Mesh_solid.h): every
+// check but the crossings, then the crossings (CGAL's exact
+// self-intersection test) on the result.
+Checked_mesh check_mesh_surface(const Mesh& mesh, const std::string& file_name,
+                                const std::vector<int>& file_facet = {});
+void check_no_crossing(const Checked_mesh& mesh, const std::string& file_name);
+
 // The mesh with equal points as one vertex and the points no facet uses
 // dropped; throws Input_error for a vertex index out of range.
 Mesh merged_points(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet = {});

@@ -65,11 +65,13 @@ Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const M
 {
   if (record) record->triangles = static_cast<int>(mesh.triangles.size());
   if (record) record->pieces = 1;
-  if (mesh.convex) return hull_of(mesh.vertices, file_name);
-  if (!record) return decomposed_solid(mesh, file_name, limits);
+  auto crossings = [&] { check_no_crossing(mesh, file_name); };
+  if (mesh.convex) return crossings(), hull_of(mesh.vertices, file_name);
+  if (!record) return crossings(), decomposed_solid(mesh, file_name, limits);
   // The pieces depend on the checked mesh alone (the scale and the repairs
-  // are in it already), so no option is part of the key.
-  Solid s = Mesh_cache::from_environment().decomposed(mesh, file_name, limits, "", *record);
+  // are in it already), so no option is part of the key. An entry exists
+  // only for a mesh that passed the crossing test, so a hit skips it.
+  Solid s = Mesh_cache::from_environment().decomposed(mesh, file_name, limits, "", *record, crossings);
   record->pieces = static_cast<int>(s.children.size());
   return s;
 }
@@ -140,7 +142,7 @@ Solid read_mesh_solid(const std::string& path, const std::string& file_name, con
 {
   Mesh mesh = read_mesh_file(path, file_name, limits);
   if (record) record->facets = static_cast<int>(mesh.facets.size());
-  return mesh_solid(check_mesh(mesh, file_name), file_name, limits, record);
+  return mesh_solid(check_mesh_surface(mesh, file_name), file_name, limits, record);
 }
 
 namespace {
@@ -151,7 +153,7 @@ int piece_count(const Solid& s) { return s.kind == Solid::Kind::Union ? static_c
 void add_pieces(const Repaired_mesh& m, const std::string& name, const Mesh_limits& limits, Mesh_record& record,
                 Solid& u)
 {
-  Checked_mesh checked = check_mesh(m.mesh, name, m.file_facet);
+  Checked_mesh checked = check_mesh_surface(m.mesh, name, m.file_facet);
   record.triangles += static_cast<int>(checked.triangles.size());
   Mesh_record shell;
   Solid s = mesh_solid(checked, name, limits, &shell);
@@ -209,7 +211,7 @@ Solid repaired_solid(const Mesh& file, const std::string& file_name, const Mesh_
       break;
     case Mesh_options::Solid_rule::Odd_shells:
       record.solid_rule = "odd shells";
-      Checked_mesh checked = check_mesh(m.mesh, file_name, m.file_facet);
+      Checked_mesh checked = check_mesh_surface(m.mesh, file_name, m.file_facet);
       record.triangles = static_cast<int>(checked.triangles.size());
       s = mesh_solid(checked, file_name, limits, &record);
       break;

@@ -365,3 +365,42 @@ BOOST_AUTO_TEST_CASE(a_slow_step_writes_lines_in_a_log_and_a_quick_one_nothing)
   BOOST_TEST(last.find(": done in ") != std::string::npos);
   BOOST_TEST(stderr_of([] { Slow_step_note note("decomposing quick.off (8 triangles)"); }).empty());
 }
+
+// Two cubes [0,2]^3 and [1,3]^3 in one OFF file: each shell closed and
+// outward, so every check but the crossing test passes.
+static std::string overlapping_cubes_off()
+{
+  std::string text = "OFF\n16 12 0\n";
+  for (int o : {0, 1})
+    for (int i = 0; i < 8; ++i)
+      text += std::to_string(o + 2 * (i & 1)) + " " + std::to_string(o + 2 * ((i >> 1) & 1)) + " " +
+              std::to_string(o + 2 * ((i >> 2) & 1)) + "\n";
+  const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (int o : {0, 8})
+    for (const auto& f : faces)
+      text += "4 " + std::to_string(o + f[0]) + " " + std::to_string(o + f[1]) + " " + std::to_string(o + f[2]) +
+              " " + std::to_string(o + f[3]) + "\n";
+  return text;
+}
+
+// A cache hit skips the crossing test (an entry stands for a mesh that
+// passed it), so a mesh that fails it must never get an entry: refused on
+// every read, with nothing written to the cache.
+BOOST_AUTO_TEST_CASE(a_crossing_mesh_is_refused_on_every_read_and_never_cached)
+{
+  Fresh_cache cache;
+  fs::path file = fs::temp_directory_path() / ("clash4d-crossing-" + std::to_string(getpid()) + ".off");
+  write_text(file, overlapping_cubes_off());
+  BOOST_REQUIRE(check_mesh_surface(read_mesh_file(file.string(), "crossing.off"), "crossing.off").volume == 16);
+  for (int read = 0; read < 2; ++read) {
+    Mesh_record record;
+    try {
+      read_mesh_solid(file.string(), "crossing.off", Mesh_limits(), &record);
+      BOOST_FAIL("a crossing mesh was read as a solid");
+    } catch (const Input_error& e) {
+      BOOST_TEST(std::string(e.what()).find("the surface intersects itself") != std::string::npos, e.what());
+    }
+    BOOST_TEST(cache.files().empty());
+  }
+  fs::remove(file);
+}
