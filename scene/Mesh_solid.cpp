@@ -66,8 +66,10 @@ Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const M
   if (record) record->triangles = static_cast<int>(mesh.triangles.size());
   if (record) record->pieces = 1;
   auto crossings = [&] { check_no_crossing(mesh, file_name); };
-  if (mesh.convex) return crossings(), hull_of(mesh.vertices, file_name);
-  if (!record) return crossings(), decomposed_solid(mesh, file_name, limits);
+  if (mesh.convex || !record) {   // no cache
+    crossings();
+    return mesh.convex ? hull_of(mesh.vertices, file_name) : decomposed_solid(mesh, file_name, limits);
+  }
   // The pieces depend on the checked mesh alone (the scale and the repairs
   // are in it already), so no option is part of the key. An entry exists
   // only for a mesh that passed the crossing test, so a hit skips it.
