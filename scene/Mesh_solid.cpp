@@ -27,11 +27,13 @@ using Surface = CGAL::Surface_mesh<Point_3>;
 using Nef = CGAL::Nef_polyhedron_3<Exact_geometry>;
 using Piece = CGAL::Polyhedron_3<Exact_geometry>;
 
-Solid hull_of(const std::vector<Rational3>& points, const std::string& file_name)
+// The hull of the points; adds six times its volume to *six_volume when given.
+Solid hull_of(const std::vector<Rational3>& points, const std::string& file_name, Rational* six_volume = nullptr)
 {
   Solid s;
   try {
-    make_hull_solid(points, s);
+    Rational six = make_hull_solid(points, s);
+    if (six_volume) *six_volume += six;
   } catch (const std::invalid_argument& e) {
     throw Input_error(file_name, e.what());
   }
@@ -39,25 +41,6 @@ Solid hull_of(const std::vector<Rational3>& points, const std::string& file_name
 }
 
 Rational3 rational_point(const Point_3& p) { return {rational_of(p.x()), rational_of(p.y()), rational_of(p.z())}; }
-
-// Six times the signed volume of a closed polyhedron (fans of its facets),
-// in rationals.
-Rational six_volume(const Piece& p)
-{
-  Rational sum(0);
-  for (auto f = p.facets_begin(); f != p.facets_end(); ++f) {
-    std::vector<Rational3> pts;
-    auto h = f->facet_begin();
-    do pts.push_back(rational_point(h->vertex()->point()));
-    while (++h != f->facet_begin());
-    const Rational3& a = pts[0];
-    for (std::size_t i = 1; i + 1 < pts.size(); ++i) {
-      const Rational3 &b = pts[i], &c = pts[i + 1];
-      sum += CGAL::determinant(a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2]);
-    }
-  }
-  return sum;
-}
 
 } // namespace
 
@@ -122,12 +105,11 @@ Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, c
                                        " convex pieces", CLASH4D_EXIT_LIMIT);
     Piece piece;
     nef.convert_inner_shell_to_polyhedron(volume->shells_begin(), piece);
-    Rational v = six_volume(piece);
-    total += v < 0 ? -v : v;
+    // A piece is convex: the hull of its vertices is the piece itself.
     std::vector<Rational3> points;
     for (auto p = piece.vertices_begin(); p != piece.vertices_end(); ++p)
       points.push_back(rational_point(p->point()));
-    u.children.push_back(hull_of(points, file_name));
+    u.children.push_back(hull_of(points, file_name, &total));
   }
   // The pieces fill the solid exactly once: their volumes add up to the
   // facets' signed volume (shells nested and oriented as a solid's are).
