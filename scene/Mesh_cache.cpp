@@ -9,6 +9,7 @@
 #include <openssl/evp.h>
 
 #include <atomic>
+#include <optional>
 #include <cerrno>
 #include <cstdlib>
 #include <fcntl.h>
@@ -149,13 +150,28 @@ void write_entry(const fs::path& folder, const std::string& key, const Solid& pi
 // decomposed_solid where the work budget can stop it: in a child process
 // when the run has a deadline or a cancel flag (CGAL's decomposition has no
 // place to look at them), here otherwise. The child's pieces come back as
-// an entry's body, exact, and are rebuilt as hulls the same way.
-Solid decomposed_within_budget(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits)
+// an entry's body, exact, and are rebuilt as hulls the same way. A slow
+// step says so (issue 58 item 3) under `note`'s text.
+Solid decomposed_within_budget(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits,
+                               const std::string& note)
 {
-  if (!Work_budget::limited()) return decomposed_solid(mesh, file_name, limits);
+  if (!Work_budget::limited()) {
+    Slow_step_note slow(note);
+    return decomposed_solid(mesh, file_name, limits);
+  }
   Work_budget::check();
+  // The note's thread starts at the first poll, after fork(): a thread
+  // that is starting while fork() copies the process can leave the child's
+  // allocator locked, and the child then never ends (seen under
+  // AddressSanitizer, whose allocator has no fork handler).
+  std::optional<Slow_step_note> slow;
   std::string body = text_of_child([&] { return body_text(decomposed_solid(mesh, file_name, limits)); },
-                                   [] { Work_budget::check(); }, file_name);
+                                   [&] {
+                                     if (!slow) slow.emplace(note);
+                                     Work_budget::check();
+                                   },
+                                   file_name);
+  slow.reset();
   Rational six(0);
   Solid pieces = parse_body(body, limits.pieces, six);
   if (six != Rational(6) * mesh.volume)   // the child checked this; a pipe's text is checked again
@@ -238,11 +254,9 @@ Solid Mesh_cache::decomposed(const Checked_mesh& mesh, const std::string& file_n
   record.cache = on() ? "miss" : "off";
   before_decomposing();
   auto began = std::chrono::steady_clock::now();
-  Solid pieces;
-  {
-    Slow_step_note note("decomposing " + file_name + " (" + std::to_string(mesh.triangles.size()) + " triangles)");
-    pieces = decomposed_within_budget(mesh, file_name, limits);
-  }
+  Solid pieces = decomposed_within_budget(
+      mesh, file_name, limits,
+      "decomposing " + file_name + " (" + std::to_string(mesh.triangles.size()) + " triangles)");
   record.decomposition_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   store(k, pieces);
   return pieces;
