@@ -17,6 +17,10 @@ namespace clash4d {
 // 4) for any other failure of the child; std::bad_alloc as such.
 // Every 50 ms of waiting, poll() is called: when it throws, the child is
 // killed and reaped, and the exception goes on.
+// The caller starts no thread just before: a thread still starting when
+// fork() copies the process can hold the allocator's lock, and the child
+// then waits on it for ever (AddressSanitizer's allocator has no fork
+// handler; stop 71's CI hung so). Start such a thread in poll() instead.
 std::string text_of_child(const std::function<std::string()>& work, const std::function<void()>& poll,
                           const std::string& place);
 
