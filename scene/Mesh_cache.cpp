@@ -9,11 +9,11 @@
 #include <openssl/evp.h>
 
 #include <atomic>
-#include <optional>
 #include <cerrno>
 #include <cstdlib>
 #include <fcntl.h>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 
