@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace clash4d {
@@ -19,16 +20,23 @@ public:
   static constexpr int capacity = Capacity;
 
   Polynomial() = default;
-  explicit Polynomial(const FT& c0) : size_(1) { c_[0] = c0; }
-  // c[0] + c[1] t + ...: at most Capacity coefficients.
-  explicit Polynomial(const std::vector<FT>& c) : size_(static_cast<int>(c.size()))
+  explicit Polynomial(const FT& c0)
   {
-    if (size_ > Capacity) throw std::logic_error("Polynomial: more coefficients than the capacity");
+    resize(1);
+    c_[0] = c0;
+  }
+  // c[0] + c[1] t + ...: at most Capacity coefficients.
+  explicit Polynomial(const std::vector<FT>& c)
+  {
+    if (c.size() > static_cast<std::size_t>(Capacity))
+      throw std::logic_error("Polynomial: more coefficients than the capacity");
+    resize(static_cast<int>(c.size()));
     std::copy(c.begin(), c.end(), c_.begin());
   }
   // c0 + c1 t: a coordinate moving linearly.
-  Polynomial(const FT& c0, const FT& c1) : size_(2)
+  Polynomial(const FT& c0, const FT& c1)
   {
+    resize(2);
     c_[0] = c0;
     c_[1] = c1;
   }
@@ -44,7 +52,7 @@ public:
   friend Polynomial operator-(const Polynomial& a)
   {
     Polynomial r;
-    r.size_ = a.size_;
+    r.resize(a.size_);
     for (int i = 0; i < a.size_; ++i) r.c_[i] = -a.c_[i];
     return r;
   }
@@ -52,8 +60,8 @@ public:
   {
     Polynomial r;
     if (a.size_ == 0 || b.size_ == 0) return r;
-    r.size_ = a.size_ + b.size_ - 1;
-    if (r.size_ > Capacity) throw std::logic_error("Polynomial: a product beyond the capacity");
+    if (a.size_ + b.size_ - 1 > Capacity) throw std::logic_error("Polynomial: a product beyond the capacity");
+    r.resize(a.size_ + b.size_ - 1);
     for (int i = 0; i < r.size_; ++i) r.c_[i] = FT(0);
     for (int i = 0; i < a.size_; ++i)
       for (int j = 0; j < b.size_; ++j) r.c_[i + j] += a.c_[i] * b.c_[j];
@@ -72,7 +80,7 @@ public:
   Polynomial derivative() const
   {
     Polynomial r;
-    r.size_ = std::max(size_ - 1, 0);
+    r.resize(std::max(size_ - 1, 0));
     for (int i = 1; i < size_; ++i) r.c_[i - 1] = FT(i) * c_[i];
     return r;
   }
@@ -95,7 +103,7 @@ private:
   static Polynomial combine(const Polynomial& a, const Polynomial& b, int sign)
   {
     Polynomial r;
-    r.size_ = std::max(a.size_, b.size_);
+    r.resize(std::max(a.size_, b.size_));
     for (int i = 0; i < r.size_; ++i) {
       if (i < a.size_ && i < b.size_) r.c_[i] = sign > 0 ? FT(a.c_[i] + b.c_[i]) : FT(a.c_[i] - b.c_[i]);
       else if (i < a.size_) r.c_[i] = a.c_[i];
@@ -104,7 +112,18 @@ private:
     return r;
   }
 
-  std::array<FT, Capacity> c_;   // c_[0 .. size_) hold the coefficients; the rest is unread
+  // Numbers that own memory (GMP's) are kept in a vector of size_ of them:
+  // an array would make Capacity of them for every polynomial, most unread.
+  static constexpr bool owns_memory = !std::is_trivially_copyable_v<FT>;
+  using Storage = std::conditional_t<owns_memory, std::vector<FT>, std::array<FT, Capacity>>;
+
+  void resize(int n)
+  {
+    size_ = n;
+    if constexpr (owns_memory) c_.resize(n);
+  }
+
+  Storage c_;   // c_[0 .. size_) hold the coefficients; the rest is unread
   int size_ = 0;
 };
 
