@@ -60,7 +60,13 @@ json answer_json(const Rotating_check_answer& a, const Check_options& o, bool st
       j["pairs"].push_back(e);
     }
   }
-  if (stats) j["stats"] = {{"method", "time slices (rotation)"}, {"pairs_examined", a.pairs_examined}};
+  if (stats) {
+    const Slice_counts& c = a.counts;
+    j["stats"] = {{"method", "time slices (rotation)"}, {"pairs_examined", a.pairs_examined},
+                  {"piece_pairs", c.piece_pairs},           {"apart_intervals", c.apart_halves},
+                  {"sliced_intervals", c.runs},             {"critical_times", c.critical_times},
+                  {"static_questions", c.static_questions}};
+  }
   return j;
 }
 
@@ -88,7 +94,12 @@ void print_text(const Rotating_check_answer& a, const Check_options& o, bool sta
           << (p.answer.at_start ? "  (already in contact at the start of the span)" : "") << "\n";
   }
   if (o.earliest && main && o.all_pairs) out << "earliest pair: " << printable(main->a) << " and " << printable(main->b) << "\n";
-  if (stats) out << "stats:\n  method: time slices (rotation)\n  pairs_examined: " << a.pairs_examined << "\n";
+  if (!stats) return;
+  const Slice_counts& c = a.counts;
+  out << "stats:\n  method: time slices (rotation)\n  pairs_examined: " << a.pairs_examined
+      << "\n  piece_pairs: " << c.piece_pairs << "\n  apart_intervals: " << c.apart_halves
+      << "\n  sliced_intervals: " << c.runs << "\n  critical_times: " << c.critical_times
+      << "\n  static_questions: " << c.static_questions << "\n";
 }
 
 } // namespace

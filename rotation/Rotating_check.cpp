@@ -104,14 +104,25 @@ Rotating_answer decide_parts(const Object_parts& a, const Object_parts& b, const
   auto count = [](const Object_parts& p) { return p.pieces.empty() ? std::size_t(1) : p.pieces.size(); };
   auto part = [](const Object_parts& p, std::size_t i) -> const Rotating_object& { return p.pieces.empty() ? p.whole : p.pieces[i]; };
   Rotating_answer best;
-  for (std::size_t i = 0; i < count(a); ++i)
-    for (std::size_t j = 0; j < count(b); ++j) {
+  Slice_counts counts;
+  Rational until = hi;   // with --earliest, a piece pair first meeting after it cannot win
+  for (std::size_t i = 0; i < count(a) && lo < until; ++i)
+    for (std::size_t j = 0; j < count(b) && lo < until; ++j) {
       if (!a.pieces.empty() && !b.pieces.empty() && !may_meet(a.piece_boxes[i], b.piece_boxes[j])) continue;
-      Rotating_answer r = decide_rotating_pair(part(a, i), part(b, j), lo, hi, options, slices);
+      Rotating_answer r = decide_rotating_pair(part(a, i), part(b, j), lo, until, options, slices);
+      counts += r.counts;
       if (!r.collide) continue;
-      if (!options.earliest) return r;
-      if (!best.collide || r.t_star < best.t_star) best = std::move(r);
+      if (!options.earliest) {
+        r.counts = counts;
+        return r;
+      }
+      if (best.collide && !(r.t_star < best.t_star)) continue;
+      best = std::move(r);
+      // A later pair wins only with a t* below this one's, so it is asked
+      // up to a rational at or above it; none is below the span's start.
+      if (best.t_star.upper() < until) until = best.t_star.upper();
     }
+  best.counts = counts;
   return best;
 }
 
@@ -162,6 +173,7 @@ Rotating_check_answer check_pairs(const Scene& scene, const Check_options& optio
     if (scene.ignored(i, j)) continue;
     ++out.pairs_examined;
     Rotating_answer a = decide_parts(objects[i], objects[j], scene.t_lo, scene.t_hi, options, slices);
+    out.counts += a.counts;
     if (!a.collide) continue;
     out.collide = true;
     out.pairs.push_back({scene.objects[i].name, scene.objects[j].name, std::move(a)});

@@ -24,6 +24,7 @@ struct Rotating_check_answer {
   std::vector<Rotating_pair_answer> pairs;   // colliding pairs, in pair order
   int earliest_pair = -1;                    // index of the smallest t* (--earliest)
   std::size_t pairs_examined = 0;            // pairs whose swept boxes met
+  Slice_counts counts;                       // over every pair examined
 
   const Rotating_pair_answer* reported() const
   {

@@ -1,5 +1,6 @@
 #include "rotation/Rotating_pair.h"
 
+#include "rotation/Apart_cover.h"
 #include "rotation/Double_slices.h"
 #include "rotation/Exact_slices.h"
 #include "rotation/Moving_planes.h"
@@ -21,6 +22,7 @@ Solid wrapped(Solid::Kind kind, const Rational* numbers, int count, Solid s)
   w.kind = kind;
   w.path = s.path;
   w.numbers.assign(numbers, numbers + count);
+  w.numbers_approximated = approximations(w.numbers);
   w.children.push_back(std::move(s));
   return w;
 }
@@ -28,6 +30,7 @@ Solid wrapped(Solid::Kind kind, const Rational* numbers, int count, Solid s)
 // The shape where the pose puts it at time t: rotated about its origin,
 // then translated (spec: Motion with rotation (poses)), as the scene's own
 // rotate and translate solids, so the static pipeline reads it unchanged.
+// Only the two new solids' numbers are approximated here.
 Solid posed_solid(const Solid& shape, const Pose_segment& s, const Rational& t)
 {
   Solid out = shape;
@@ -35,8 +38,7 @@ Solid posed_solid(const Solid& shape, const Pose_segment& s, const Rational& t)
   if (!is_zero(q[1]) || !is_zero(q[2]) || !is_zero(q[3])) out = wrapped(Solid::Kind::Rotate, q.data(), 4, std::move(out));
   Point3 c = {s.c[0].at(t), s.c[1].at(t), s.c[2].at(t)};
   if (!is_zero(c[0]) || !is_zero(c[1]) || !is_zero(c[2])) out = wrapped(Solid::Kind::Translate, c.data(), 3, std::move(out));
-  approximate_numbers(out);
-  return out;
+  return out;   // the shape's own numbers keep the approximations the reader made
 }
 
 struct Static_hit {
@@ -191,9 +193,10 @@ public:
   {
     std::vector<Rational> ends = piece_ends(a_, b_, t_lo, t_hi);
     t_lo_ = t_lo;
+    answer_.counts.piece_pairs = 1;
     for (std::size_t p = 0; p + 1 < ends.size(); ++p)
       if (piece(ends[p], ends[p + 1])) return answer_;
-    if (closed_) at_rational(t_hi);   // the span's end, closed only
+    if (closed_ && !end_apart_) at_rational(t_hi);   // the span's end, closed only
     return answer_;
   }
 
@@ -206,13 +209,32 @@ private:
     // pair collides there, before any minor is made.
     if (!options_.earliest && in_interval({}, Algebraic(lo), Algebraic(hi))) return true;
     std::vector<Moving_plane> rows = pair_rows(a_, b_, mid);
+    end_apart_ = false;
+    if (!features_) return slice(rows, {lo, hi, false});
+    // Two convex pieces: the slices only where they are not surely apart.
+    Apart_cover cover(a_, b_, rows, mid);
+    Rational sliced_to = lo;
+    bool answered = cover.for_each_unsure(lo, hi, [&](const Time_piece& p) {
+      sliced_to = p.hi;
+      return slice(rows, p);
+    });
+    answer_.counts.apart_halves += cover.proved_apart();
+    end_apart_ = sliced_to < hi;
+    return answered;
+  }
+
+  // True once the slices of the closed interval p have answered.
+  bool slice(const std::vector<Moving_plane>& rows, const Time_piece& p)
+  {
     bool low_rank = !a_.shape.spans_space && !b_.shape.spans_space;
-    std::vector<Critical_time> c = slices_.critical_times(rows, a_.shape.planes.size(), lo, hi, low_rank,
+    std::vector<Critical_time> c = slices_.critical_times(rows, a_.shape.planes.size(), p.lo, p.hi, low_rank,
                                                             features_ ? &*features_ : nullptr);
-    if (closed_ && at_rational(lo)) return true;
+    ++answer_.counts.runs;
+    answer_.counts.critical_times += c.size();
+    if (closed_ && !p.after_apart && at_rational(p.lo)) return true;
     for (std::size_t k = 0; k <= c.size(); ++k) {
-      Algebraic left = k == 0 ? Algebraic(lo) : c[k - 1].t;
-      Algebraic right = k == c.size() ? Algebraic(hi) : c[k].t;
+      Algebraic left = k == 0 ? Algebraic(p.lo) : c[k - 1].t;
+      Algebraic right = k == c.size() ? Algebraic(p.hi) : c[k].t;
       if (closed_ && k > 0 && at_critical(rows, c[k - 1])) return true;
       if (in_interval(rows, left, right)) return true;
     }
@@ -224,6 +246,7 @@ private:
     std::optional<Rational> sample = slices_.sample(left, right);
     if (!sample) return false;   // doubles: no double strictly between
     const Rational& s = *sample;
+    ++answer_.counts.static_questions;
     Static_hit hit = probe(a_, b_, s, options_.semantics, slices_);
     if (!hit.collide) return false;
     if (closed_ && options_.earliest && Slices::is_exact)
@@ -247,6 +270,7 @@ private:
 
   bool at_rational(const Rational& t)
   {
+    ++answer_.counts.static_questions;
     Static_hit hit = probe(a_, b_, t, Semantics::closed, slices_);
     if (!hit.collide) return false;
     std::array<Algebraic, 4> w = with_time(hit.x, t);
@@ -280,6 +304,7 @@ private:
   const Slices& slices_;
   bool closed_;
   Rational t_lo_;
+  bool end_apart_ = false;   // the last piece's end lies in an interval proved apart
   Rotating_answer answer_;
   std::optional<std::vector<Minor_rows>> features_;   // two convex pieces' event minors
 };

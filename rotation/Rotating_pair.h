@@ -38,6 +38,25 @@ struct Rotation_unsupported : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// What the time slices did (`check --stats`), summed over piece pairs.
+struct Slice_counts {
+  std::size_t piece_pairs = 0;       // pairs of objects or convex pieces decided
+  std::size_t apart_halves = 0;      // time intervals proved apart (Apart_cover.h)
+  std::size_t runs = 0;              // time intervals whose critical times were found
+  std::size_t critical_times = 0;    // found in them
+  std::size_t static_questions = 0;  // static checks at rational times
+
+  Slice_counts& operator+=(const Slice_counts& o)
+  {
+    piece_pairs += o.piece_pairs;
+    apart_halves += o.apart_halves;
+    runs += o.runs;
+    critical_times += o.critical_times;
+    static_questions += o.static_questions;
+    return *this;
+  }
+};
+
 struct Rotating_answer {
   bool collide = false;
   // Regularised: a rational generic point inside both at a rational time.
@@ -48,6 +67,7 @@ struct Rotating_answer {
   Algebraic t_star;                  // with --earliest
   std::array<Algebraic, 3> contact;  // a point of the closure at t*
   bool at_start = false;
+  Slice_counts counts;
 };
 
 // The pair's answer on [t_lo, t_hi] by the time slices in the numbers of

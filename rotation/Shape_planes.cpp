@@ -95,6 +95,7 @@ void convex_features(const std::vector<Vector3<Rational>>& vertices, const std::
   distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
   std::vector<std::vector<int>> through;   // [vertex]: the planes through it
   std::vector<std::array<int, 3>> triples;
+  std::vector<Vector3<Rational>> points;   // the vertices
   std::set<std::array<Rational, 3>> seen;   // each point once (a hull may repeat one)
   for (const auto& v : vertices) {
     if (!seen.insert({v[0], v[1], v[2]}).second) continue;
@@ -112,8 +113,10 @@ void convex_features(const std::vector<Vector3<Rational>>& vertices, const std::
             found = true;
           }
     // A point of the polytope on no independent triple is no vertex (a
-    // hull's point inside it, or inside a face or an edge): it has none.
-    if (found) through.push_back(std::move(on));
+    // hull's point inside it, or inside a face or an edge): it is left out.
+    if (!found) continue;
+    through.push_back(std::move(on));
+    points.push_back(v);
   }
   if (triples.size() < 4) return;
   std::map<std::pair<int, int>, int> shared;   // vertices on both planes
@@ -125,6 +128,7 @@ void convex_features(const std::vector<Vector3<Rational>>& vertices, const std::
   std::sort(triples.begin(), triples.end());
   triples.erase(std::unique(triples.begin(), triples.end()), triples.end());
   out.vertex_triples = std::move(triples);
+  out.vertices = std::move(points);
   out.convex_features = true;
 }
 

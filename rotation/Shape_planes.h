@@ -43,6 +43,7 @@ struct Shape_planes {
   // events). convex_features is false otherwise.
   bool convex_features = false;
   std::vector<std::array<int, 3>> vertex_triples;
+  std::vector<Vector3<Rational>> vertices;   // each vertex once, at rest
   std::vector<std::pair<int, int>> edges;
 };
 

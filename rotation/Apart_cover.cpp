@@ -1,0 +1,103 @@
+#include "rotation/Apart_cover.h"
+
+namespace clash4d {
+
+namespace {
+
+using I = CGAL::Interval_nt<false>;
+using Interval_poly = Polynomial<I, 16>;
+
+// p's coefficients as the intervals that hold them.
+Interval_poly enclosed(const Time_poly& p)
+{
+  std::vector<I> c;
+  for (int i = 0; i < p.size(); ++i) c.emplace_back(CGAL::to_interval(p[i]));
+  return Interval_poly(c);
+}
+
+// p(t) for every t in the interval t, surely (Horner; the caller rounds upward).
+I horner(const Interval_poly& p, const I& t)
+{
+  I v(0);
+  for (int i = p.size() - 1; i >= 0; --i) v = v * t + p[i];
+  return v;
+}
+
+} // namespace
+
+Apart_cover::Side Apart_cover::side(const Rotating_object& o, const Rational& at, std::size_t first_row)
+{
+  const Pose_segment& s = segment_at(o.segments, at);
+  Side out;
+  auto n = unnormalised_rotation(s.q);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) out.rotation[r][c] = enclosed(n[r][c]);
+  out.norm = enclosed(s.q[0] * s.q[0] + s.q[1] * s.q[1] + s.q[2] * s.q[2] + s.q[3] * s.q[3]);
+  for (int k = 0; k < 3; ++k) out.origin[k] = enclosed(s.c[k]);
+  for (const auto& v : o.shape.vertices)
+    out.vertices.push_back({I(CGAL::to_interval(v[0])), I(CGAL::to_interval(v[1])), I(CGAL::to_interval(v[2]))});
+  out.orientation.assign(o.shape.planes.size(), 0);
+  if (o.shape.convex_pieces.size() == 1)
+    for (auto [plane, orientation] : o.shape.convex_pieces.front()) out.orientation[plane] = orientation;
+  out.first_row = first_row;
+  return out;
+}
+
+Apart_cover::Apart_cover(const Rotating_object& a, const Rotating_object& b, const std::vector<Moving_plane>& rows,
+                         const Rational& at)
+  : a_(side(a, at, 0)), b_(side(b, at, a.shape.planes.size()))
+{
+  for (const Moving_plane& h : rows) rows_.push_back({enclosed(h[0]), enclosed(h[1]), enclosed(h[2]), enclosed(h[3])});
+}
+
+// A vertex v at rest is at N(q) v / |q|^2 + c at time t (the pose's
+// rotation about the shape's origin, then its origin's path).
+std::vector<Apart_cover::Point> Apart_cover::vertices_on(const Side& s, const I& t) const
+{
+  std::array<std::array<I, 3>, 3> n;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) n[r][c] = horner(s.rotation[r][c], t);
+  I norm = horner(s.norm, t);
+  Point origin = {horner(s.origin[0], t), horner(s.origin[1], t), horner(s.origin[2], t)};
+  std::vector<Point> out;
+  out.reserve(s.vertices.size());
+  for (const Point& v : s.vertices) {
+    Point x;
+    for (int r = 0; r < 3; ++r) x[r] = (n[r][0] * v[0] + n[r][1] * v[1] + n[r][2] * v[2]) / norm + origin[r];
+    out.push_back(x);
+  }
+  return out;
+}
+
+// Row p of s, oriented outward (orientation * (n.x + e) > 0 outside),
+// with every point strictly outside: the closed convex hull of the points
+// and s's piece are then on the two sides of the plane.
+bool Apart_cover::separates(const Side& s, const std::vector<std::array<I, 4>>& rows, const std::vector<Point>& points)
+{
+  for (std::size_t p = 0; p < s.orientation.size(); ++p) {
+    int o = s.orientation[p];
+    if (o == 0) continue;
+    const std::array<I, 4>& h = rows[s.first_row + p];
+    bool outside = true;
+    for (const Point& x : points) {
+      I v = h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3];
+      outside = o > 0 ? v.inf() > 0 : v.sup() < 0;
+      if (!outside) break;
+    }
+    if (outside) return true;
+  }
+  return false;
+}
+
+bool Apart_cover::apart_on(const Rational& lo, const Rational& hi) const
+{
+  if (a_.vertices.empty() || b_.vertices.empty()) return false;
+  CGAL::Protect_FPU_rounding<true> upward;
+  I t(CGAL::to_interval(lo).first, CGAL::to_interval(hi).second);
+  std::vector<std::array<I, 4>> rows(rows_.size());
+  for (std::size_t r = 0; r < rows_.size(); ++r)
+    for (int c = 0; c < 4; ++c) rows[r][c] = horner(rows_[r][c], t);
+  return separates(a_, rows, vertices_on(b_, t)) || separates(b_, rows, vertices_on(a_, t));
+}
+
+} // namespace clash4d
