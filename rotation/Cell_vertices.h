@@ -41,9 +41,12 @@ int sign_of(const FT& x)
 
 // rows: each plane's (n, e) at the time; w: a point on no plane. Calls
 // found(i, j, k) for each vertex of the closure of w's cell, i < j < k,
-// until it returns true.
-template <class FT, class Found>
-void cell_vertices(const std::vector<std::array<FT, 4>>& rows, const std::array<FT, 3>& w, Found found)
+// until it returns true. not_vertex(i, j, k, side), a filter, may say
+// early that a triple is surely not one (side: w's side of each plane);
+// the triples it passes are decided in FT, so it changes no answer.
+template <class FT, class Found, class Not_vertex>
+void cell_vertices(const std::vector<std::array<FT, 4>>& rows, const std::array<FT, 3>& w, Found found,
+                   Not_vertex not_vertex)
 {
   std::size_t m = rows.size();
   auto value = [&](std::size_t i, const std::array<FT, 3>& x) {
@@ -55,6 +58,7 @@ void cell_vertices(const std::vector<std::array<FT, 4>>& rows, const std::array<
     for (std::size_t j = i + 1; j < m; ++j)
       for (std::size_t k = j + 1; k < m; ++k) {
         if (!side[i] || !side[j] || !side[k]) continue;
+        if (not_vertex(i, j, k, side)) continue;
         FT d = det3(rows[i], rows[j], rows[k]);
         if (sign_of(d) == 0) continue;
         std::array<FT, 3> x = cramer_point(rows[i], rows[j], rows[k], d);
@@ -62,6 +66,12 @@ void cell_vertices(const std::vector<std::array<FT, 4>>& rows, const std::array<
         for (std::size_t l = 0; l < m && in_cell; ++l) in_cell = side[l] * sign_of(value(l, x)) >= 0;
         if (in_cell && found(static_cast<int>(i), static_cast<int>(j), static_cast<int>(k))) return;
       }
+}
+
+template <class FT, class Found>
+void cell_vertices(const std::vector<std::array<FT, 4>>& rows, const std::array<FT, 3>& w, Found found)
+{
+  cell_vertices(rows, w, found, [](std::size_t, std::size_t, std::size_t, const std::vector<int>&) { return false; });
 }
 
 } // namespace clash4d

@@ -5,6 +5,7 @@
 #include "rotation/Rotating_pair.h"
 #include "rotation/Pair_minors.h"
 
+#include <CGAL/Interval_nt.h>
 #include <unsupported/Eigen/Polynomials>
 
 #include <algorithm>
@@ -68,6 +69,31 @@ struct Double_minors {
   void add(const Double_poly& p, const Minor_rows& rows) { minors.emplace_back(p, rows); }
 };
 
+// Whether p keeps one sign on [lo, hi] with room to spare: in intervals
+// on 8 pieces, |p| stays above 1e-9 of the sum of its terms' sizes. Such a
+// p has no root there that the companion matrix would report as real (its
+// complex roots are far from the real line), so the eigenvalues are not
+// sought; a p that comes near 0 is solved as before.
+bool far_from_zero(const std::vector<double>& c, double lo, double hi)
+{
+  using I = CGAL::Interval_nt<false>;
+  CGAL::Protect_FPU_rounding<true> upward;
+  double reach = std::max({1.0, std::fabs(lo), std::fabs(hi)}), size = 0, power = 1;
+  for (double x : c) {
+    size += std::fabs(x) * power;
+    power *= reach;
+  }
+  double margin = 1e-9 * size;
+  const int pieces = 8;
+  for (int k = 0; k < pieces; ++k) {
+    I t = I(lo) + (I(hi) - I(lo)) * I(k, k + 1) / I(pieces);
+    I v(0);
+    for (std::size_t i = c.size(); i-- > 0;) v = v * t + I(c[i]);
+    if (!(v.inf() > margin || v.sup() < -margin)) return false;
+  }
+  return true;
+}
+
 // The real roots of p in (lo, hi), by the eigenvalues of its companion
 // matrix; leading coefficients below 1e-14 of the largest are dropped.
 std::vector<double> real_roots(const Double_poly& p, double lo, double hi)
@@ -77,7 +103,7 @@ std::vector<double> real_roots(const Double_poly& p, double lo, double hi)
   for (double x : c) big = std::max(big, std::fabs(x));
   while (!c.empty() && std::fabs(c.back()) <= 1e-14 * big) c.pop_back();
   std::vector<double> out;
-  if (c.size() < 2) return out;
+  if (c.size() < 2 || far_from_zero(c, lo, hi)) return out;
   if (c.size() == 2) {
     out.push_back(-c[0] / c[1]);
   } else {

@@ -232,6 +232,40 @@ std::optional<Quotient_point> common_point_at(const std::vector<Moving_plane>& r
   return std::nullopt;
 }
 
+// The filter of "the planes i, j, k meet in a vertex of w's cell" (one
+// predicate, Cell_vertices.h): the rows enclosed in intervals once; a
+// triple whose enclosed point is surely on the wrong side of some plane is
+// surely not a vertex. Any other triple is decided exactly.
+class Interval_cell {
+public:
+  using I = CGAL::Interval_nt<false>;
+
+  explicit Interval_cell(const std::vector<std::array<Rational, 4>>& rows)
+  {
+    for (const auto& r : rows)
+      rows_.push_back({I(CGAL::to_interval(r[0])), I(CGAL::to_interval(r[1])), I(CGAL::to_interval(r[2])),
+                       I(CGAL::to_interval(r[3]))});
+  }
+
+  bool operator()(std::size_t i, std::size_t j, std::size_t k, const std::vector<int>& side) const
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    I d = det3(rows_[i], rows_[j], rows_[k]);
+    if (!(d.inf() > 0 || d.sup() < 0)) return false;
+    std::array<I, 3> x = cramer_point(rows_[i], rows_[j], rows_[k], d);
+    for (std::size_t l = 0; l < rows_.size(); ++l) {
+      if (l == i || l == j || l == k) continue;
+      const auto& h = rows_[l];
+      I v = h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3];
+      if (side[l] > 0 ? v.sup() < 0 : side[l] < 0 && v.inf() > 0) return true;
+    }
+    return false;
+  }
+
+private:
+  std::vector<std::array<I, 4>> rows_;
+};
+
 } // namespace
 
 // Between rational ends (a piece between pose times, before any critical
@@ -259,11 +293,15 @@ std::array<Algebraic, 3> Exact_slices::contact_point(const std::vector<Moving_pl
   std::vector<std::array<Rational, 4>> at(rows.size());
   for (std::size_t i = 0; i < rows.size(); ++i)
     for (int c = 0; c < 4; ++c) at[i][c] = rows[i][c].at(s);
+  Interval_cell filter(at);
   std::optional<std::array<Algebraic, 3>> x;
-  cell_vertices(at, w, [&](int i, int j, int k) {
-    x = limit_at(cramer_numerators(rows[i], rows[j], rows[k]), normal_minor(rows[i], rows[j], rows[k]), t_star);
-    return x.has_value();
-  });
+  cell_vertices(
+      at, w,
+      [&](int i, int j, int k) {
+        x = limit_at(cramer_numerators(rows[i], rows[j], rows[k]), normal_minor(rows[i], rows[j], rows[k]), t_star);
+        return x.has_value();
+      },
+      filter);
   if (!x)
     throw Rotation_unsupported("the contact point at t*: every vertex of the witness's cell runs off to infinity "
                                "at t* (a degenerate contact this release does not resolve)");
