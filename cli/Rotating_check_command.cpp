@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <utility>
+#include <vector>
 
 namespace clash4d {
 
@@ -37,6 +39,16 @@ json contact_json(const Rotating_answer& a, const Number_format& f)
   return json{{"t", f(a.t_star)}, {"point", point_json(p.data(), 4, f)}, {"at_start", a.at_start}};
 }
 
+// The counts --stats gives after its method, by name (the text and the
+// JSON print the same ones).
+std::vector<std::pair<const char*, std::size_t>> stat_counts(const Rotating_check_answer& a)
+{
+  const Slice_counts& c = a.counts;
+  return {{"pairs_examined", a.pairs_examined},     {"piece_pairs", c.piece_pairs},
+          {"apart_intervals", c.apart_intervals},   {"sliced_intervals", c.sliced_intervals},
+          {"critical_times", c.critical_times},     {"static_questions", c.static_questions}};
+}
+
 json answer_json(const Rotating_check_answer& a, const Check_options& o, bool stats, double tolerance)
 {
   json j = {{"collide", a.collide}, {"number", a.number}, {"semantics", semantics_name(a.semantics)}};
@@ -61,11 +73,8 @@ json answer_json(const Rotating_check_answer& a, const Check_options& o, bool st
     }
   }
   if (stats) {
-    const Slice_counts& c = a.counts;
-    j["stats"] = {{"method", "time slices (rotation)"}, {"pairs_examined", a.pairs_examined},
-                  {"piece_pairs", c.piece_pairs},           {"apart_intervals", c.apart_halves},
-                  {"sliced_intervals", c.runs},             {"critical_times", c.critical_times},
-                  {"static_questions", c.static_questions}};
+    j["stats"] = {{"method", "time slices (rotation)"}};
+    for (const auto& [name, count] : stat_counts(a)) j["stats"][name] = count;
   }
   return j;
 }
@@ -95,11 +104,8 @@ void print_text(const Rotating_check_answer& a, const Check_options& o, bool sta
   }
   if (o.earliest && main && o.all_pairs) out << "earliest pair: " << printable(main->a) << " and " << printable(main->b) << "\n";
   if (!stats) return;
-  const Slice_counts& c = a.counts;
-  out << "stats:\n  method: time slices (rotation)\n  pairs_examined: " << a.pairs_examined
-      << "\n  piece_pairs: " << c.piece_pairs << "\n  apart_intervals: " << c.apart_halves
-      << "\n  sliced_intervals: " << c.runs << "\n  critical_times: " << c.critical_times
-      << "\n  static_questions: " << c.static_questions << "\n";
+  out << "stats:\n  method: time slices (rotation)\n";
+  for (const auto& [name, count] : stat_counts(a)) out << "  " << name << ": " << count << "\n";
 }
 
 } // namespace

@@ -2,29 +2,6 @@
 
 namespace clash4d {
 
-namespace {
-
-using I = CGAL::Interval_nt<false>;
-using Interval_poly = Polynomial<I, 16>;
-
-// p's coefficients as the intervals that hold them.
-Interval_poly enclosed(const Time_poly& p)
-{
-  std::vector<I> c;
-  for (int i = 0; i < p.size(); ++i) c.emplace_back(CGAL::to_interval(p[i]));
-  return Interval_poly(c);
-}
-
-// p(t) for every t in the interval t, surely (Horner; the caller rounds upward).
-I horner(const Interval_poly& p, const I& t)
-{
-  I v(0);
-  for (int i = p.size() - 1; i >= 0; --i) v = v * t + p[i];
-  return v;
-}
-
-} // namespace
-
 Apart_cover::Side Apart_cover::side(const Rotating_object& o, const Rational& at, std::size_t first_row)
 {
   const Pose_segment& s = segment_at(o.segments, at);
@@ -56,9 +33,9 @@ std::vector<Apart_cover::Point> Apart_cover::vertices_on(const Side& s, const I&
 {
   std::array<std::array<I, 3>, 3> n;
   for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) n[r][c] = horner(s.rotation[r][c], t);
-  I norm = horner(s.norm, t);
-  Point origin = {horner(s.origin[0], t), horner(s.origin[1], t), horner(s.origin[2], t)};
+    for (int c = 0; c < 3; ++c) n[r][c] = s.rotation[r][c].at(t);
+  I norm = s.norm.at(t);
+  Point origin = {s.origin[0].at(t), s.origin[1].at(t), s.origin[2].at(t)};
   std::vector<Point> out;
   out.reserve(s.vertices.size());
   for (const Point& v : s.vertices) {
@@ -96,7 +73,7 @@ bool Apart_cover::apart_on(const Rational& lo, const Rational& hi) const
   I t(CGAL::to_interval(lo).first, CGAL::to_interval(hi).second);
   std::vector<std::array<I, 4>> rows(rows_.size());
   for (std::size_t r = 0; r < rows_.size(); ++r)
-    for (int c = 0; c < 4; ++c) rows[r][c] = horner(rows_[r][c], t);
+    for (int c = 0; c < 4; ++c) rows[r][c] = rows_[r][c].at(t);
   return separates(a_, rows, vertices_on(b_, t)) || separates(b_, rows, vertices_on(a_, t));
 }
 

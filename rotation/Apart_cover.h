@@ -11,7 +11,6 @@
 #ifndef CLASH4D_ROTATION_APART_COVER_H
 #define CLASH4D_ROTATION_APART_COVER_H
 
-#include "numbers/Polynomial.h"
 #include "rotation/Moving_planes.h"
 #include "rotation/Rotating_pair.h"
 #include <CGAL/Interval_nt.h>
@@ -61,7 +60,6 @@ public:
 private:
   using I = CGAL::Interval_nt<false>;
   using Point = std::array<I, 3>;
-  using Interval_poly = Polynomial<I, 16>;
 
   // One piece's numbers under its segment, as intervals made once: N(q(t))
   // (|q|^2 times the rotation), |q(t)|^2, the origin c(t), its vertices at

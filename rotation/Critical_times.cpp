@@ -84,23 +84,15 @@ public:
   Interval_rows(const std::vector<Moving_plane>& planes, const Rational& lo, const Rational& hi)
   {
     CGAL::Protect_FPU_rounding<true> upward;
-    std::vector<std::array<Interval_poly, 4>> enclosed;
-    enclosed.reserve(planes.size());
-    for (const Moving_plane& h : planes) {
-      std::array<Interval_poly, 4> e;
-      for (int c = 0; c < 4; ++c) {
-        std::vector<I> coefficients;
-        for (int i = 0; i < h[c].size(); ++i) coefficients.emplace_back(CGAL::to_interval(h[c][i]));
-        e[c] = Interval_poly(coefficients);
-      }
-      enclosed.push_back(e);
-    }
+    std::vector<std::array<Interval_poly, 4>> rows;
+    rows.reserve(planes.size());
+    for (const Moving_plane& h : planes) rows.push_back({enclosed(h[0]), enclosed(h[1]), enclosed(h[2]), enclosed(h[3])});
     I low(CGAL::to_interval(lo)), width = I(CGAL::to_interval(hi)) - low;
     at_.resize(pieces);
     for (int k = 0; k < pieces; ++k) {
       I from = low + width * I(k) / I(pieces), to = low + width * I(k + 1) / I(pieces);
       I t(from.inf(), to.sup());
-      for (const auto& e : enclosed) at_[k].push_back({e[0].at(t), e[1].at(t), e[2].at(t), e[3].at(t)});
+      for (const auto& e : rows) at_[k].push_back({e[0].at(t), e[1].at(t), e[2].at(t), e[3].at(t)});
     }
   }
 
@@ -129,8 +121,6 @@ public:
   bool identically_zero(const Int_poly& d, const Minor_rows&) const { return primitive(d).empty(); }
 
 private:
-  using Interval_poly = Polynomial<I, 16>;
-
   static I normal(const std::vector<std::array<I, 4>>& r, int i, int j, int k)
   {
     return normal_minor(r[i], r[j], r[k]);

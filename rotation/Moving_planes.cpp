@@ -33,4 +33,11 @@ Rational plane_value(const Moving_plane& h, const std::array<Rational, 3>& x, co
   return h[0].at(t) * x[0] + h[1].at(t) * x[1] + h[2].at(t) * x[2] + h[3].at(t);
 }
 
+Interval_poly enclosed(const Time_poly& p)
+{
+  std::vector<CGAL::Interval_nt<false>> c;
+  for (int i = 0; i < p.size(); ++i) c.emplace_back(CGAL::to_interval(p[i]));
+  return Interval_poly(c);
+}
+
 } // namespace clash4d

@@ -8,6 +8,7 @@
 
 #include "geometry/kernel_ft4.h"
 #include "rotation/Pose_segments.h"
+#include <CGAL/Interval_nt.h>
 #include <array>
 #include <vector>
 
@@ -24,6 +25,12 @@ std::vector<Moving_plane> moving_planes(const std::vector<Plane3<Rational>>& pla
 
 // The row's value at the point x and time t: n(t).x + e(t).
 Rational plane_value(const Moving_plane& h, const std::array<Rational, 3>& x, const Rational& t);
+
+// p's coefficients as the intervals that hold them, made once for the
+// interval filters (Interval_poly::at bounds p over an interval of times,
+// under upward rounding).
+using Interval_poly = Polynomial<CGAL::Interval_nt<false>, 16>;
+Interval_poly enclosed(const Time_poly& p);
 
 } // namespace clash4d
 

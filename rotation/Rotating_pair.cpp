@@ -218,7 +218,7 @@ private:
       sliced_to = p.hi;
       return slice(rows, p);
     });
-    answer_.counts.apart_halves += cover.proved_apart();
+    answer_.counts.apart_intervals += cover.proved_apart();
     end_apart_ = sliced_to < hi;
     return answered;
   }
@@ -229,7 +229,7 @@ private:
     bool low_rank = !a_.shape.spans_space && !b_.shape.spans_space;
     std::vector<Critical_time> c = slices_.critical_times(rows, a_.shape.planes.size(), p.lo, p.hi, low_rank,
                                                             features_ ? &*features_ : nullptr);
-    ++answer_.counts.runs;
+    ++answer_.counts.sliced_intervals;
     answer_.counts.critical_times += c.size();
     if (closed_ && !p.after_apart && at_rational(p.lo)) return true;
     for (std::size_t k = 0; k <= c.size(); ++k) {

@@ -41,16 +41,16 @@ struct Rotation_unsupported : std::runtime_error {
 // What the time slices did (`check --stats`), summed over piece pairs.
 struct Slice_counts {
   std::size_t piece_pairs = 0;       // pairs of objects or convex pieces decided
-  std::size_t apart_halves = 0;      // time intervals proved apart (Apart_cover.h)
-  std::size_t runs = 0;              // time intervals whose critical times were found
+  std::size_t apart_intervals = 0;      // time intervals proved apart (Apart_cover.h)
+  std::size_t sliced_intervals = 0;  // time intervals whose critical times were found
   std::size_t critical_times = 0;    // found in them
   std::size_t static_questions = 0;  // static checks at rational times
 
   Slice_counts& operator+=(const Slice_counts& o)
   {
     piece_pairs += o.piece_pairs;
-    apart_halves += o.apart_halves;
-    runs += o.runs;
+    apart_intervals += o.apart_intervals;
+    sliced_intervals += o.sliced_intervals;
     critical_times += o.critical_times;
     static_questions += o.static_questions;
     return *this;

@@ -996,14 +996,14 @@ BOOST_AUTO_TEST_CASE(slice_counts_of_a_turning_block)
     Rotating_check_answer apart = check_rotating(parse_scene(far), o, "exact");
     BOOST_TEST(!apart.collide);
     BOOST_TEST(apart.counts.piece_pairs == 1u);
-    BOOST_TEST(apart.counts.apart_halves >= 1u);
-    BOOST_TEST(apart.counts.runs == 0u);
+    BOOST_TEST(apart.counts.apart_intervals >= 1u);
+    BOOST_TEST(apart.counts.sliced_intervals == 0u);
     BOOST_TEST(apart.counts.critical_times == 0u);
     BOOST_TEST(apart.counts.static_questions == 0u);
     Rotating_check_answer hit = check_rotating(parse_scene(scene_json("square_into_slab.json")), o, "exact");
     BOOST_TEST(hit.collide);
-    BOOST_TEST(hit.counts.apart_halves >= 1u);
-    BOOST_TEST(hit.counts.runs >= 1u);
+    BOOST_TEST(hit.counts.apart_intervals >= 1u);
+    BOOST_TEST(hit.counts.sliced_intervals >= 1u);
     BOOST_TEST(hit.counts.critical_times >= 1u);
     BOOST_TEST(hit.counts.static_questions >= 1u);
   }
