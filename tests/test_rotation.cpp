@@ -16,6 +16,7 @@
 #include "support/Cli_run.h"
 #include "support/Random_rotating_scene.h"
 #include "support/Random_scene.h"
+#include "support/Stage_tests.h"
 #include <nlohmann/json.hpp>
 #include <cfenv>
 #include <cmath>
@@ -947,8 +948,7 @@ BOOST_AUTO_TEST_CASE(apart_cover_of_the_square_turning_into_a_slab)
 // proved keeps the test from passing on a cover that proves nothing.
 BOOST_AUTO_TEST_CASE(apart_cover_proves_only_what_is_apart)
 {
-  std::uint64_t seed = 8181;
-  if (const char* s = std::getenv("CLASH4D_SEED")) seed = std::strtoull(s, nullptr, 10);
+  std::uint64_t seed = stage_tests::env_number("CLASH4D_SEED", 8181);
   int cases = 60;
   if (const char* s = std::getenv("CLASH4D_ROTATION_CASES")) cases = std::max(1, std::atoi(s) / 6);
   BOOST_TEST_MESSAGE("apart cover: seed " << seed << " (CLASH4D_SEED), " << cases << " scenes");
