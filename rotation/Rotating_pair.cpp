@@ -4,6 +4,7 @@
 #include "rotation/Double_slices.h"
 #include "rotation/Exact_slices.h"
 #include "rotation/Moving_planes.h"
+#include "scene/Scene_builder.h"
 
 #include <algorithm>
 
@@ -15,29 +16,30 @@ using Point3 = std::array<Rational, 3>;
 
 bool is_zero(const Rational& x) { return CGAL::sign(x) == CGAL::ZERO; }
 
-// s under a transform solid (rotate or translate) with these numbers.
-Solid wrapped(Solid::Kind kind, const Rational* numbers, int count, Solid s)
+// w, made by the scene builder around s, with the path and approximations
+// the reader would give it.
+Solid wrapped(Solid w)
 {
-  Solid w;
-  w.kind = kind;
-  w.path = s.path;
-  w.numbers.assign(numbers, numbers + count);
+  w.path = w.children.front().path;
   w.numbers_approximated = approximations(w.numbers);
-  w.children.push_back(std::move(s));
+  w.constructed_approximated = approximations(w.constructed);
   return w;
 }
 
 // The shape where the pose puts it at time t: rotated about its origin,
 // then translated (spec: Motion with rotation (poses)), as the scene's own
-// rotate and translate solids, so the static pipeline reads it unchanged.
-// Only the two new solids' numbers are approximated here.
+// rotate and translate solids, exactly as the reader makes them (the
+// rotate's exact matrix too: a double run computing its own from the
+// quaternion answered differently from the same scene read from its file,
+// and once with a witness that was not a number). Only the two new solids'
+// numbers are approximated here.
 Solid posed_solid(const Solid& shape, const Pose_segment& s, const Rational& t)
 {
   Solid out = shape;
   std::array<Rational, 4> q = {s.q[0].at(t), s.q[1].at(t), s.q[2].at(t), s.q[3].at(t)};
-  if (!is_zero(q[1]) || !is_zero(q[2]) || !is_zero(q[3])) out = wrapped(Solid::Kind::Rotate, q.data(), 4, std::move(out));
+  if (!is_zero(q[1]) || !is_zero(q[2]) || !is_zero(q[3])) out = wrapped(rotate(q, std::move(out)));
   Point3 c = {s.c[0].at(t), s.c[1].at(t), s.c[2].at(t)};
-  if (!is_zero(c[0]) || !is_zero(c[1]) || !is_zero(c[2])) out = wrapped(Solid::Kind::Translate, c.data(), 3, std::move(out));
+  if (!is_zero(c[0]) || !is_zero(c[1]) || !is_zero(c[2])) out = wrapped(translate(c, std::move(out)));
   return out;   // the shape's own numbers keep the approximations the reader made
 }
 

@@ -1,4 +1,5 @@
 #include "scene/Scene_builder.h"
+#include "geometry/Rotation_matrix.h"
 #include "scene/Pose_motion.h"
 #include "scene/Scene_writer.h"
 
@@ -92,7 +93,16 @@ Solid translate(const Vec3& d, Solid child) { return wrap(Solid::Kind::Translate
 
 Solid rotate(const std::array<Rational, 4>& q, Solid child)
 {
-  return wrap(Solid::Kind::Rotate, {q[0], q[1], q[2], q[3]}, std::move(child));
+  Solid s = wrap(Solid::Kind::Rotate, {q[0], q[1], q[2], q[3]}, std::move(child));
+  s.constructed = rotation_rows(q);
+  return s;
+}
+
+std::vector<Rational> rotation_rows(const std::array<Rational, 4>& q)
+{
+  std::vector<Rational> out;
+  for (const auto& row : rotation_matrix(q[0], q[1], q[2], q[3])) out.insert(out.end(), row.begin(), row.end());
+  return out;
 }
 
 Motion steady(const Vec3& velocity)

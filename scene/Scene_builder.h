@@ -32,7 +32,14 @@ Solid prism(std::vector<Point2> base, Rational z0, Rational z1);
 // Union, intersection or difference of the children.
 Solid csg(Solid::Kind kind, std::vector<Solid> children);
 Solid translate(const Vec3& d, Solid child);
+// A rotate carries its exact matrix, as the reader makes it (rotation_rows),
+// so a scene built here and the same scene read from its file give every
+// kernel the same numbers.
 Solid rotate(const std::array<Rational, 4>& q, Solid child);
+// The rows of q's rotation matrix, flat (Solid::constructed of a rotate):
+// exact, so a kernel that rounds them (reads_exact_rotations) sees one
+// plane where two rotations share a face.
+std::vector<Rational> rotation_rows(const std::array<Rational, 4>& q);
 
 // Motions.
 Motion steady(const Vec3& velocity);

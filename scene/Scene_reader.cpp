@@ -1,6 +1,5 @@
 #include "scene/Scene_reader.h"
 #include "geometry/Polytope_ft.h"
-#include "geometry/Rotation_matrix.h"
 #include "scene/Exact_validation.h"
 #include "scene/Hull_solid.h"
 #include "scene/Mesh_solid.h"
@@ -9,6 +8,7 @@
 #include "scene/Json_reader.h"
 #include "scene/Number_text.h"
 #include "scene/Pose_motion.h"
+#include "scene/Scene_builder.h"
 
 #include <filesystem>
 #include <map>
@@ -261,9 +261,7 @@ Solid read_solid(const Json_value& v, const std::string& path, Reader_context& c
       if (CGAL::is_zero(q[0]) && CGAL::is_zero(q[1]) && CGAL::is_zero(q[2]) && CGAL::is_zero(q[3]))
         throw Input_error(body_path, "the quaternion must not be zero");
       s.numbers.assign(q.begin(), q.end());
-      // Its matrix once, exactly, for the kernels that read constructions.
-      for (const auto& row : rotation_matrix(q[0], q[1], q[2], q[3]))
-        s.constructed.insert(s.constructed.end(), row.begin(), row.end());
+      s.constructed = rotation_rows(q);   // its matrix once, exactly, for the kernels that read it
       s.children.push_back(read_solid(required(v, "solid", path), dot(path, "solid"), ctx));
       break;
     }

@@ -129,7 +129,9 @@ public:
   {
     const Pair_minors<FT> ab(planes_[line[0]].n, planes_[line[1]].n);
     l = cross_with(ab, line[2], planes_[line[2]].n);
-    base = base_point(ab, line[0], line[1], line[2], l);
+    std::optional<V> on = base_point(ab, line[0], line[1], line[2], l);
+    if (!on) throw std::logic_error("internal error: a policy's line with no point in an exact kernel");
+    base = *on;
   }
 
   // Another kernel's conquer, rebuilt in this one: the layout's planes made
@@ -479,9 +481,10 @@ private:
     V l = line_direction(i, j, m);
     if (k_.is_zero(l)) return;
     ++stats_.lines;
-    V base = base_point(pair_minors(i, j), i, j, m, l);
+    std::optional<V> on = base_point(pair_minors(i, j), i, j, m, l);
     FT s_lo(0), s_hi(0);
-    if (!range_in_region(base, l, s_lo, s_hi)) return;
+    if (!on || !range_in_region(*on, l, s_lo, s_hi)) return;
+    const V& base = *on;
     // The segment's earliest end (time is linear along it), where the
     // face end_plane cuts it.
     auto earliest_end = [&] { return end_plane(k_.sign(l[3]) != CGAL::NEGATIVE); };
@@ -627,9 +630,10 @@ private:
     V l = line_direction(i, j, m);
     if (k_.is_zero(l)) return;
     ++stats_.lines;
-    V base = base_point(pair_minors(i, j), i, j, m, l);
+    std::optional<V> on = base_point(pair_minors(i, j), i, j, m, l);
     FT s_lo(0), s_hi(0);
-    if (!range_in_region(base, l, s_lo, s_hi)) return;
+    if (!on || !range_in_region(*on, l, s_lo, s_hi)) return;
+    const V& base = *on;
     auto earliest_end = [&] { return end_plane(k_.sign(l[3]) != CGAL::NEGATIVE); };
     // A tie with t* (Search_goal::vertex).
     if (goal.vertex_known && at_contact(goal, i, j, m, earliest_end())) return;
@@ -876,7 +880,9 @@ private:
   {
     l = line_direction(i, j, m);
     if (k_.is_zero(l)) return {};
-    base = base_point(pair_minors(i, j), i, j, m, l);
+    std::optional<V> on = base_point(pair_minors(i, j), i, j, m, l);
+    if (!on) return {};
+    base = *on;
     FT s_lo(0), s_hi(0);
     if (!range_in_region(base, l, s_lo, s_hi)) return {};
     evaluate_planes(base, l, layout_.first_face);
@@ -953,7 +959,12 @@ private:
   // Cramer's rule, as cross products of the rows.
   // ab: planes i's and j's minors (line_direction's), whose x01 is
   // cross(r0, r1) term for term (a_i b_j - a_j b_i, negated for columns c2, c0).
-  V base_point(const Pair_minors<FT>& ab, std::size_t i, std::size_t j, std::size_t m, const V& l) const
+  // None when the kernel's sign of the system's determinant is zero: never
+  // in an exact kernel (it is +-l_k, not 0), but a float kernel's rounding
+  // of it can be 0 where its l_k is not; it then sees no point on the line,
+  // as it sees no line where l rounds to zero (a point made by dividing by
+  // 0 was a witness of NaNs, rotation-fuzz #38).
+  std::optional<V> base_point(const Pair_minors<FT>& ab, std::size_t i, std::size_t j, std::size_t m, const V& l) const
   {
     const H &a = planes_[i], &b = planes_[j], &c = planes_[m];
     int k = k_.largest_component(l);
@@ -967,6 +978,7 @@ private:
     Vector3<FT> x01{ab.minor(cols[1], cols[2]), -ab.minor(cols[0], cols[2]), ab.minor(cols[0], cols[1])};
     FT det = dot(r[0], x12);
     CGAL::Sign sd = k_.sign(det);
+    if (sd == CGAL::ZERO) return std::nullopt;
     V p;
     p[k] = FT(0);
     for (int t = 0; t < 3; ++t) p[cols[t]] = k_.quotient(-(a.c * x12[t] + b.c * x20[t] + c.c * x01[t]), det, sd);
