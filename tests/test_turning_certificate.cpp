@@ -181,6 +181,25 @@ BOOST_AUTO_TEST_CASE(turning_hulls_cut_inside_their_feature_intervals)
   BOOST_FAIL("no hull-hull turn miss among the rotation cases");
 }
 
+// Two turning hulls touching first at an irrational time (the hull-hull hit
+// of the same table, built so): the closed earliest certificate names the
+// touch point in Q(t*), found from the feature minors vanishing at t* on
+// t*'s isolating interval (certify/Touch_witness.cpp), and both checkers
+// accept it.
+BOOST_AUTO_TEST_CASE(turning_hulls_touching_at_an_irrational_time)
+{
+  for (const fcl_cases::Turning_case& c : fcl_cases::all_rotation_cases(1990))
+    if (c.c.name == "hull-hull turn hit irrational") {
+      std::string path = write_text("hull-hull-turn-hit-irrational.json", c.c.json);
+      std::size_t before = accepted.size();
+      certify_and_verify(path, modes[5], "exact", c.c.name);
+      BOOST_TEST_REQUIRE(accepted.size() == before + 1);
+      BOOST_TEST(accepted.back().line.find("at t* = root of [") != std::string::npos, accepted.back().line);
+      return;
+    }
+  BOOST_FAIL("no hull-hull turn hit irrational among the rotation cases");
+}
+
 #ifdef CLASH4D_PYTHON
 // Both checkers print the same line for every certificate above
 // (docs/certificate-format.md, section 8.5): the Python checker runs over
