@@ -4,7 +4,6 @@
 #include "certify/Turning_prover.h"
 #include "rotation/Critical_times.h"
 #include "rotation/Exact_slices.h"
-#include "rotation/Rotating_pair.h"
 #include "rotation/Simplest_rational.h"
 #include "scene/Number_json.h"
 #include <algorithm>
@@ -149,42 +148,51 @@ std::pair<Rational, Rational> piece_around(const Rotating_object& a, const Rotat
 
 // The common point at r (closed_point_at), from the minors vanishing at r:
 // sought only on r's isolating interval within the piece, where the
-// interval filter of Critical_times leaves most minors unsolved; two convex
-// pieces' feature minors first (a closed touch's point is on the four
-// planes of one of them, Rotating_pair.cpp, feature_minors), then every
-// mixed minor. Before, every mixed minor on the whole piece: 2 s of
-// writing for a 0.08 s check of two hulls.
-std::optional<Quotient_point> common_point(const std::vector<Moving_plane>& rows, std::size_t first_count,
-                                           const Rotating_object& a, const Rotating_object& b, const Algebraic& r,
-                                           const Rational& lo, const Rational& hi)
+// interval filter of Critical_times leaves most minors unsolved, and pair
+// of convex pieces by pair when the objects are unions of them (the
+// closed objects meet where two closed pieces do); two convex pieces'
+// feature minors first (a closed touch's point is on the four planes of
+// one of them, Rotating_pair.cpp, feature_minors), then every mixed minor.
+// Before, every mixed minor of the whole objects on the whole piece: 2 s
+// of writing for a 0.08 s check of two hulls, and past the minor limit
+// for two unions of 74 planes each.
+std::optional<Quotient_point> common_point(const Object_parts& a, const Object_parts& b, const Algebraic& r,
+                                           const Rational& lo, const Rational& hi, const Rational& mid)
 {
   Rational l = std::max(lo, r.lower()), u = std::min(hi, r.upper());
-  bool low_rank = !a.shape.spans_space && !b.shape.spans_space;
-  auto point_in = [&](const Critical_times& critical) {
-    std::optional<Quotient_point> q;
-    for (const Critical_time& c : critical.times())
-      if (c.t == r) q = closed_point_at(rows, a, b, c);
-    return q;
-  };
-  std::optional<Quotient_point> q;
-  if (std::optional<std::vector<Minor_rows>> features = feature_minors(a.shape, b.shape))
-    q = point_in(Critical_times(rows, first_count, l, u, low_rank, *features));
-  return q ? q : point_in(Critical_times(rows, first_count, l, u, low_rank));
+  for (bool features_only : {true, false})
+    for (std::size_t i = 0; i < a.count(); ++i)
+      for (std::size_t j = 0; j < b.count(); ++j) {
+        if (!a.pieces.empty() && !b.pieces.empty() && !may_meet(a.piece_boxes[i], b.piece_boxes[j])) continue;
+        const Rotating_object &pa = a.part(i), &pb = b.part(j);
+        std::optional<std::vector<Minor_rows>> features = feature_minors(pa.shape, pb.shape);
+        if (features_only && !features) continue;
+        std::vector<Moving_plane> rows = moving_planes(pa.shape.planes, segment_at(pa.segments, mid));
+        std::vector<Moving_plane> more = moving_planes(pb.shape.planes, segment_at(pb.segments, mid));
+        rows.insert(rows.end(), more.begin(), more.end());
+        bool low_rank = !pa.shape.spans_space && !pb.shape.spans_space;
+        std::size_t split = pa.shape.planes.size();
+        Critical_times critical = features_only ? Critical_times(rows, split, l, u, low_rank, *features)
+                                                : Critical_times(rows, split, l, u, low_rank);
+        for (const Critical_time& c : critical.times())
+          if (c.t == r)
+            if (std::optional<Quotient_point> q = closed_point_at(rows, pa, pb, c)) return q;
+      }
+  return std::nullopt;
 }
 
 } // namespace
 
-json touch_at_irrational(const Rotating_object& a, const Rotating_object& b, const Algebraic& r, const Rational& t_lo,
-                         const Rational& t_hi)
+json touch_at_irrational(const Object_parts& parts_a, const Object_parts& parts_b, const Algebraic& r,
+                         const Rational& t_lo, const Rational& t_hi)
 {
+  const Rotating_object &a = parts_a.whole, &b = parts_b.whole;
   std::string where = "objects '" + a.name + "' and '" + b.name + "' touching at t = " + r.to_text();
   auto [lo, hi] = piece_around(a, b, r, t_lo, t_hi);
   Rational mid = simplest_between(Algebraic(lo), Algebraic(hi));
   std::vector<Moving_plane> rows_a = moving_planes(a.shape.planes, segment_at(a.segments, mid));
   std::vector<Moving_plane> rows_b = moving_planes(b.shape.planes, segment_at(b.segments, mid));
-  std::vector<Moving_plane> rows = rows_a;
-  rows.insert(rows.end(), rows_b.begin(), rows_b.end());
-  std::optional<Quotient_point> q = common_point(rows, rows_a.size(), a, b, r, lo, hi);
+  std::optional<Quotient_point> q = common_point(parts_a, parts_b, r, lo, hi, mid);
   if (!q) throw Turning_proof_missing(where + ": no common point was found at that critical time");
   Field_point c;
   for (int k = 0; k < 3; ++k) c[k] = Algebraic::field_element(r, q->num[k].coefficients(), q->den.coefficients());

@@ -8,15 +8,15 @@
 #ifndef CLASH4D_CERTIFY_TOUCH_WITNESS_H
 #define CLASH4D_CERTIFY_TOUCH_WITNESS_H
 
-#include "rotation/Rotating_pair.h"
+#include "rotation/Object_parts.h"
 #include <nlohmann/json.hpp>
 
 namespace clash4d {
 
 // The `touch` object of a pair that touches at the irrational time r, with
-// t_lo <= r <= t_hi. Throws Turning_proof_missing when no point or
-// witness is found.
-nlohmann::ordered_json touch_at_irrational(const Rotating_object& a, const Rotating_object& b, const Algebraic& r,
+// t_lo <= r <= t_hi (the objects, with their convex pieces). Throws
+// Turning_proof_missing when no point or witness is found.
+nlohmann::ordered_json touch_at_irrational(const Object_parts& a, const Object_parts& b, const Algebraic& r,
                                            const Rational& t_lo, const Rational& t_hi);
 
 } // namespace clash4d

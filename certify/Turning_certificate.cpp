@@ -114,9 +114,11 @@ private:
   json touch(const Rotating_pair_answer& p)
   {
     const Algebraic& t = p.answer.witness[3];
-    Rotating_object a = Rotating_object::make(scene_.objects[index_.at(p.a)]);
-    Rotating_object b = Rotating_object::make(scene_.objects[index_.at(p.b)]);
-    if (!t.is_rational()) return touch_at_irrational(a, b, t, scene_.t_lo, scene_.t_hi);
+    const Scene_object &oa = scene_.objects[index_.at(p.a)], &ob = scene_.objects[index_.at(p.b)];
+    if (!t.is_rational())
+      return touch_at_irrational(Object_parts(oa, scene_.t_lo, scene_.t_hi), Object_parts(ob, scene_.t_lo, scene_.t_hi), t,
+                                 scene_.t_lo, scene_.t_hi);
+    Rotating_object a = Rotating_object::make(oa), b = Rotating_object::make(ob);
     Check_options o;
     o.semantics = Semantics::closed;
     Check_answer s = check_exact(posed_pair(a, b, t.rational()), o);

@@ -1,10 +1,13 @@
 #include "certify/Turning_prover.h"
 
 #include "certify/Apart_prover.h"
+#include "certify/Split_prover.h"
 #include "rotation/Critical_times.h"
 #include "rotation/Simplest_rational.h"
+#include "run/Work_budget.h"
 #include "scene/Number_json.h"
 #include <algorithm>
+#include <limits>
 #include <map>
 
 namespace clash4d {
@@ -91,11 +94,18 @@ Turning_prover::Proof Turning_prover::proof_at(const std::vector<Moving_plane>& 
   }
   Scene posed = posed_pair(*a_, *b_, s);
   Apart_prover prover(posed, semantics_, limit_ - std::min(limit_, steps_));
+  // Term by term: a turning APART's proof is a leaf (8.3 has no split), so
+  // two unions of convex pieces are not proved by a split tree here.
+  Split_limits leaf_only;
+  leaf_only.min_pairs = std::numeric_limits<std::size_t>::max();
+  prover.set_split_limits(leaf_only);
   json apart = prover.prove(0, 1, Rational(1), false);
   steps_ += prover.steps();
   bool closed = semantics_ == Semantics::closed;
   Proof out;
-  for (const json& piece : apart["pieces"])
+  for (const json& piece : apart["pieces"]) {
+    if (!piece["proof"].contains("conflicts"))
+      throw Turning_proof_missing(where_ + ": the static proof at t = " + to_string(s) + " is not a leaf of conflicts");
     for (const json& c : piece["proof"]["conflicts"]) {
       std::vector<Moving_plane> literals;
       std::vector<Rational> lambda;
@@ -123,6 +133,7 @@ Turning_prover::Proof Turning_prover::proof_at(const std::vector<Moving_plane>& 
       lifted->of = of;
       out.push_back(std::move(*lifted));
     }
+  }
   return out;
 }
 
@@ -152,20 +163,40 @@ std::vector<Algebraic> roots_inside(const std::vector<Polynomial_conflict>& proo
 
 } // namespace
 
-// lo, the critical times of the piece [lo, piece_hi] below hi (of the
-// features only when they are given and none is identically zero there,
-// rotation/Critical_times.h), and hi.
-std::vector<Algebraic> Turning_prover::critical_cuts(const std::vector<Moving_plane>& rows, const Rational& lo,
-                                                     const Rational& piece_hi, const Algebraic& hi,
-                                                     const std::vector<Minor_rows>* features) const
+// lo, the critical times of the piece [lo, piece_hi] below hi, and hi: of
+// the pair's planes, or of each pair of pieces whose swept boxes meet when
+// an object is a union of convex pieces (every term pair's conflicts are
+// minors of its two pieces' rows, and each pair of pieces answers as one
+// between its own critical times); of the features only when
+// features_only and every pair has them, none identically zero there
+// (rotation/Critical_times.h). `restricted`: whether some pair's are its
+// features' only (every mixed minor's may then cut further).
+std::vector<Algebraic> Turning_prover::critical_cuts(const Rational& mid, const Rational& lo, const Rational& piece_hi,
+                                                     const Algebraic& hi, bool features_only, bool& restricted) const
 {
-  bool low_rank = !a_->shape.spans_space && !b_->shape.spans_space;
-  std::size_t split = a_->shape.planes.size();
-  Critical_times critical = features ? Critical_times(rows, split, lo, piece_hi, low_rank, *features)
-                                     : Critical_times(rows, split, lo, piece_hi, low_rank);
   std::vector<Algebraic> cuts{Algebraic(lo)};
-  for (const Critical_time& c : critical.times())
-    if (c.t < hi) cuts.push_back(c.t);
+  restricted = false;
+  for (std::size_t i = 0; i < parts_a_->count(); ++i)
+    for (std::size_t j = 0; j < parts_b_->count(); ++j) {
+      bool pieces = !parts_a_->pieces.empty() && !parts_b_->pieces.empty();
+      if (pieces && !may_meet(parts_a_->piece_boxes[i], parts_b_->piece_boxes[j])) continue;
+      const Rotating_object &a = parts_a_->part(i), &b = parts_b_->part(j);
+      std::vector<Moving_plane> rows = moving_planes(a.shape.planes, segment_at(a.segments, mid));
+      std::vector<Moving_plane> more = moving_planes(b.shape.planes, segment_at(b.segments, mid));
+      rows.insert(rows.end(), more.begin(), more.end());
+      bool low_rank = !a.shape.spans_space && !b.shape.spans_space;
+      std::size_t split = a.shape.planes.size();
+      std::optional<std::vector<Minor_rows>> features;
+      if (features_only) features = feature_minors(a.shape, b.shape);
+      Critical_times critical = features ? Critical_times(rows, split, lo, piece_hi, low_rank, *features)
+                                         : Critical_times(rows, split, lo, piece_hi, low_rank);
+      restricted = restricted || critical.restricted();
+      for (const Critical_time& c : critical.times())
+        if (c.t < hi) cuts.push_back(c.t);
+    }
+  std::sort(cuts.begin() + 1, cuts.end(), [](const Algebraic& x, const Algebraic& y) { return x < y; });
+  cuts.erase(std::unique(cuts.begin() + 1, cuts.end(), [](const Algebraic& x, const Algebraic& y) { return x == y; }),
+             cuts.end());
   cuts.push_back(hi);
   return cuts;
 }
@@ -179,13 +210,13 @@ std::vector<Turning_prover::Leaf> Turning_prover::pose_piece(const Rational& lo,
   std::vector<Moving_plane> rows = moving_planes(a_->shape.planes, segment_at(a_->segments, mid));
   std::vector<Moving_plane> more = moving_planes(b_->shape.planes, segment_at(b_->segments, mid));
   rows.insert(rows.end(), more.begin(), more.end());
-  std::optional<std::vector<Minor_rows>> features;
-  if (feature_events_) features = feature_minors(a_->shape, b_->shape);
-  std::vector<Algebraic> cuts = critical_cuts(rows, lo, piece_hi, hi, features ? &*features : nullptr);
+  bool restricted = false;
+  std::vector<Algebraic> cuts = critical_cuts(mid, lo, piece_hi, hi, feature_events_, restricted);
   std::optional<std::vector<Algebraic>> every;   // every mixed minor's cuts, made when a proof needs them
   std::vector<Leaf> leaves;
   std::size_t k = 0;   // the proof of interval k covers [cuts[k], ...]
   while (k + 1 < cuts.size()) {
+    Work_budget::check();   // --max-seconds: each leaf's proof is a static proof of the posed pair
     Rational s = simplest_between(cuts[k], cuts[k + 1]);
     Leaf leaf{cuts[k], cuts[k + 1], proof_at(rows, s)};
     bool last = k + 2 == cuts.size();
@@ -196,8 +227,9 @@ std::vector<Turning_prover::Leaf> Turning_prover::pose_piece(const Rational& lo,
       // again. Each cut is a root of a minor of the pair's rows (Cramer's
       // cofactors), so the cutting ends.
       std::vector<Algebraic> inside = roots_inside(leaf.conflicts, leaf.lo, leaf.hi);
-      if (inside.empty() && features) {
-        if (!every) every = critical_cuts(rows, lo, piece_hi, hi, nullptr);
+      if (inside.empty() && restricted) {
+        bool all = false;
+        if (!every) every = critical_cuts(mid, lo, piece_hi, hi, false, all);
         for (const Algebraic& t : *every)
           if (leaf.lo < t && t < leaf.hi) inside.push_back(t);
       }
@@ -220,6 +252,8 @@ json Turning_prover::prove(int a, int b, const Algebraic& until, bool open_end)
 {
   a_ = Rotating_object::make(scene_.objects[a]);
   b_ = Rotating_object::make(scene_.objects[b]);
+  parts_a_.emplace(scene_.objects[a], scene_.t_lo, scene_.t_hi);
+  parts_b_.emplace(scene_.objects[b], scene_.t_lo, scene_.t_hi);
   where_ = "objects '" + scene_.objects[a].name + "' and '" + scene_.objects[b].name + "'";
   json pieces = json::array();
   Rational end = until.is_rational() ? until.rational() : until.upper();

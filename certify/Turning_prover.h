@@ -8,12 +8,15 @@
 // stays valid, so that a piece ends only where a proof's basis changes.
 // Each piece's proof is checked on the piece alone (8.3), whatever cut the
 // span: two convex pieces are cut at their feature minors' roots (as check
-// decides them, rotation/Rotating_pair.h), and an interval on which the
-// proof at its sample does not hold is cut again at every mixed minor's.
+// decides them, rotation/Rotating_pair.h), two unions of convex pieces at
+// those of their pairs of pieces (rotation/Object_parts.h), and an
+// interval on which the proof at its sample does not hold is cut again at
+// every mixed minor's (of each pair of pieces).
 #ifndef CLASH4D_CERTIFY_TURNING_PROVER_H
 #define CLASH4D_CERTIFY_TURNING_PROVER_H
 
 #include "certify/Polynomial_conflict.h"
+#include "rotation/Object_parts.h"
 #include "rotation/Rotating_pair.h"
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -48,8 +51,8 @@ private:
 
   std::vector<Leaf> pose_piece(const Rational& lo, const Rational& piece_hi, const Algebraic& hi, bool open_end);
   Proof proof_at(const std::vector<Moving_plane>& rows, const Rational& s);
-  std::vector<Algebraic> critical_cuts(const std::vector<Moving_plane>& rows, const Rational& lo, const Rational& piece_hi,
-                                       const Algebraic& hi, const std::vector<Minor_rows>* features) const;
+  std::vector<Algebraic> critical_cuts(const Rational& mid, const Rational& lo, const Rational& piece_hi,
+                                       const Algebraic& hi, bool features_only, bool& restricted) const;
   bool valid(const Proof& p, const Algebraic& lo, const Algebraic& hi, bool open_end) const;
 
   const Scene& scene_;
@@ -58,6 +61,7 @@ private:
   std::uint64_t limit_, steps_ = 0;
   std::size_t conflicts_ = 0;
   std::optional<Rotating_object> a_, b_;   // the pair being proved
+  std::optional<Object_parts> parts_a_, parts_b_;   // and their convex pieces
   std::string where_;                      // names it in a refusal
 };
 

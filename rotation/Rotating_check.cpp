@@ -3,6 +3,7 @@
 #include "exact/Exact_instantiation.h"
 #include "rotation/Double_slices.h"
 #include "rotation/Exact_slices.h"
+#include "rotation/Object_parts.h"
 
 #include <algorithm>
 #include <optional>
@@ -11,105 +12,18 @@ namespace clash4d {
 
 namespace {
 
-// A box holding the object over [lo, hi]: its origin's path (linear on
-// each segment, so the segment's clipped ends bound it) widened by the
-// shape's reach, which no rotation about the origin exceeds. None: the
-// shape is unbounded.
-struct Swept_box {
-  bool bounded = false;
-  std::array<Rational, 3> min, max;
-};
-
-Swept_box swept_box(const Rotating_object& o, const Rational& lo, const Rational& hi)
-{
-  Swept_box box;
-  if (!o.shape.reach) return box;
-  bool has_point = false;
-  for (const Pose_segment& s : o.segments) {
-    Rational a = s.from_minus_infinity || s.lo < lo ? lo : s.lo;
-    Rational b = s.to_plus_infinity || hi < s.hi ? hi : s.hi;
-    if (b < a) continue;
-    for (const Rational& t : {a, b}) {
-      std::array<Rational, 3> c = {s.c[0].at(t), s.c[1].at(t), s.c[2].at(t)};
-      for (int k = 0; k < 3; ++k) {
-        if (!has_point || c[k] < box.min[k]) box.min[k] = c[k];
-        if (!has_point || box.max[k] < c[k]) box.max[k] = c[k];
-      }
-      has_point = true;
-    }
-  }
-  for (int k = 0; k < 3; ++k) {
-    box.min[k] -= *o.shape.reach;
-    box.max[k] += *o.shape.reach;
-  }
-  box.bounded = true;
-  return box;
-}
-
-bool may_meet(const Swept_box& a, const Swept_box& b)
-{
-  if (!a.bounded || !b.bounded) return true;
-  for (int k = 0; k < 3; ++k)
-    if (a.max[k] < b.min[k] || b.max[k] < a.min[k]) return false;
-  return true;
-}
-
-// The convex leaves of a union (meshes are unions of hulls), each under the
-// transforms above it: pieces whose closed union is the closed shape.
-void convex_leaves(const Solid& s, std::vector<Solid>& out)
-{
-  if (s.kind == Solid::Kind::Union) {
-    for (const Solid& c : s.children) convex_leaves(c, out);
-    return;
-  }
-  if (s.kind != Solid::Kind::Translate && s.kind != Solid::Kind::Rotate) {
-    out.push_back(s);
-    return;
-  }
-  std::vector<Solid> inner;
-  convex_leaves(s.children.front(), inner);
-  for (Solid& leaf : inner) {
-    Solid wrap = s;
-    wrap.children = {std::move(leaf)};
-    out.push_back(std::move(wrap));
-  }
-}
-
-// An object and, when it is a union of several bounded convex pieces, each
-// piece on its own: a pair of such objects collides (or touches) exactly
-// when some pair of pieces does, and its t* is the least of theirs, so the
-// minors are those of two pieces' planes, not of two whole meshes.
-struct Object_parts {
-  Rotating_object whole;
-  std::vector<Solid> piece_solids;   // owned here, pointed to by pieces
-  std::vector<Rotating_object> pieces;
-  std::vector<Swept_box> piece_boxes;
-
-  Object_parts(const Scene_object& o, const Rational& lo, const Rational& hi) : whole(Rotating_object::make(o))
-  {
-    if (whole.shape.convex_pieces.size() < 2) return;
-    convex_leaves(o.shape, piece_solids);
-    for (const Solid& p : piece_solids) {
-      pieces.push_back(Rotating_object::piece(o, p));
-      piece_boxes.push_back(swept_box(pieces.back(), lo, hi));
-    }
-  }
-};
-
 template <class Slices>
 Rotating_answer decide_parts(const Object_parts& a, const Object_parts& b, const Rational& lo, const Rational& hi,
                              const Check_options& options, const Slices& slices)
 {
   if (a.pieces.empty() && b.pieces.empty()) return decide_rotating_pair(a.whole, b.whole, lo, hi, options, slices);
-  auto count = [](const Object_parts& p) { return p.pieces.empty() ? std::size_t(1) : p.pieces.size(); };
-  auto part = [](const Object_parts& p, std::size_t i) -> const Rotating_object& { return p.pieces.empty() ? p.whole : p.pieces[i]; };
   Rotating_answer best;
   Slice_counts counts;
   Rational until = hi;   // with --earliest, a piece pair first meeting after it cannot win
-  for (std::size_t i = 0; i < count(a) && lo < until; ++i)
-    for (std::size_t j = 0; j < count(b) && lo < until; ++j) {
+  for (std::size_t i = 0; i < a.count() && lo < until; ++i)
+    for (std::size_t j = 0; j < b.count() && lo < until; ++j) {
       if (!a.pieces.empty() && !b.pieces.empty() && !may_meet(a.piece_boxes[i], b.piece_boxes[j])) continue;
-      Rotating_answer r = decide_rotating_pair(part(a, i), part(b, j), lo, until, options, slices);
+      Rotating_answer r = decide_rotating_pair(a.part(i), b.part(j), lo, until, options, slices);
       counts += r.counts;
       if (!r.collide) continue;
       if (!options.earliest) {

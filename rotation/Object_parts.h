@@ -1,0 +1,50 @@
+// An object of a turning pair and, when it is a union of several bounded
+// convex pieces, each piece on its own: a pair of such objects collides
+// (or touches) exactly when some pair of pieces does, and its t* is the
+// least of theirs, so the minors are those of two pieces' planes, not of
+// two whole meshes (docs/rotation.md, Many convex pieces). Read by the
+// check (Rotating_check.cpp) and by the certificate writer
+// (certify/Turning_prover.cpp).
+#ifndef CLASH4D_ROTATION_OBJECT_PARTS_H
+#define CLASH4D_ROTATION_OBJECT_PARTS_H
+
+#include "rotation/Rotating_pair.h"
+#include <array>
+#include <vector>
+
+namespace clash4d {
+
+// A box holding an object over [lo, hi]: its origin's path (linear on each
+// segment, so the segment's clipped ends bound it) widened by the shape's
+// reach, which no rotation about the origin exceeds. Not bounded: the
+// shape is unbounded.
+struct Swept_box {
+  bool bounded = false;
+  std::array<Rational, 3> min, max;
+};
+
+Swept_box swept_box(const Rotating_object& o, const Rational& lo, const Rational& hi);
+// Whether the boxes overlap (touching included); unbounded boxes may.
+bool may_meet(const Swept_box& a, const Swept_box& b);
+
+struct Object_parts {
+  Rotating_object whole;
+  std::vector<Solid> piece_solids;   // owned here, pointed to by pieces
+  std::vector<Rotating_object> pieces;   // none: the object is one piece
+  std::vector<Swept_box> piece_boxes;    // over [lo, hi]
+
+  Object_parts(const Scene_object& o, const Rational& lo, const Rational& hi);
+  // pieces point into piece_solids: a copy would point into another's.
+  Object_parts(const Object_parts&) = delete;
+  Object_parts& operator=(const Object_parts&) = delete;
+  Object_parts(Object_parts&&) = default;
+  Object_parts& operator=(Object_parts&&) = default;
+
+  // The object's parts: its pieces, or the whole when it is one.
+  std::size_t count() const { return pieces.empty() ? 1 : pieces.size(); }
+  const Rotating_object& part(std::size_t i) const { return pieces.empty() ? whole : pieces[i]; }
+};
+
+} // namespace clash4d
+
+#endif
