@@ -25,6 +25,7 @@
 #include "scene/Grid_scene.h"
 #include "run/Work_budget.h"
 #include "scene/Scene_reader.h"
+#include "scene/Slow_step_note.h"
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -479,6 +480,7 @@ std::function<void(const Rotating_check_answer&)> turning_certificate_writer(con
   return [&scene, &a](const Rotating_check_answer& answer) {
     auto max = static_cast<std::size_t>(a.certificate_max_mb * 1024 * 1024);
     try {
+      Slow_step_note note("writing the certificate " + a.certificate);   // a turning proof can take minutes
       write_certificate(a.certificate, make_turning_certificate(scene, answer, a.options), max);
     } catch (const Certificate_limit& e) {
       throw Input_error("certificate", e.what(), CLASH4D_EXIT_LIMIT);
@@ -548,6 +550,7 @@ Command add_check(CLI::App& app, std::ostream& out, std::ostream& err)
         // leaves no answer behind it (exit 3 names the limit).
         try {
           auto max = static_cast<std::size_t>(a->certificate_max_mb * 1024 * 1024);
+          Slow_step_note note("writing the certificate " + a->certificate);
           write_certificate(a->certificate, make_certificate(scene, answer, a->options), max);
         } catch (const Certificate_limit& e) {
           err << a->file << ": " << e.what() << " (exit 3)\n";
