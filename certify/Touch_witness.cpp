@@ -152,33 +152,28 @@ std::pair<Rational, Rational> piece_around(const Rotating_object& a, const Rotat
 // of convex pieces by pair when the objects are unions of them (the
 // closed objects meet where two closed pieces do); two convex pieces'
 // feature minors first (a closed touch's point is on the four planes of
-// one of them, Rotating_pair.cpp, feature_minors), then every mixed minor.
-// Before, every mixed minor of the whole objects on the whole piece: 2 s
-// of writing for a 0.08 s check of two hulls, and past the minor limit
-// for two unions of 74 planes each.
+// one of them, Rotating_pair.cpp, feature_minors), then the pair's every
+// mixed minor. Before, every mixed minor of the whole objects on the whole
+// piece: 2 s of writing for a 0.08 s check of two hulls, and past the
+// minor limit for two unions of 74 planes each.
 std::optional<Quotient_point> common_point(const Object_parts& a, const Object_parts& b, const Algebraic& r,
                                            const Rational& lo, const Rational& hi, const Rational& mid)
 {
   Rational l = std::max(lo, r.lower()), u = std::min(hi, r.upper());
-  for (bool features_only : {true, false})
-    for (std::size_t i = 0; i < a.count(); ++i)
-      for (std::size_t j = 0; j < b.count(); ++j) {
-        if (!a.pieces.empty() && !b.pieces.empty() && !may_meet(a.piece_boxes[i], b.piece_boxes[j])) continue;
-        const Rotating_object &pa = a.part(i), &pb = b.part(j);
-        std::optional<std::vector<Minor_rows>> features = feature_minors(pa.shape, pb.shape);
-        if (features_only && !features) continue;
-        std::vector<Moving_plane> rows = moving_planes(pa.shape.planes, segment_at(pa.segments, mid));
-        std::vector<Moving_plane> more = moving_planes(pb.shape.planes, segment_at(pb.segments, mid));
-        rows.insert(rows.end(), more.begin(), more.end());
-        bool low_rank = !pa.shape.spans_space && !pb.shape.spans_space;
-        std::size_t split = pa.shape.planes.size();
-        Critical_times critical = features_only ? Critical_times(rows, split, l, u, low_rank, *features)
-                                                : Critical_times(rows, split, l, u, low_rank);
-        for (const Critical_time& c : critical.times())
-          if (c.t == r)
-            if (std::optional<Quotient_point> q = closed_point_at(rows, pa, pb, c)) return q;
-      }
-  return std::nullopt;
+  std::optional<Quotient_point> q;
+  auto at_r = [&](const std::vector<Moving_plane>& rows, const Rotating_object& pa, const Rotating_object& pb,
+                  const Critical_times& critical) {
+    for (const Critical_time& c : critical.times())
+      if (c.t == r && (q = closed_point_at(rows, pa, pb, c))) return true;
+    return false;
+  };
+  for_parts_that_may_meet(a, b, [&](const Rotating_object& pa, const Rotating_object& pb) {
+    std::vector<Moving_plane> rows = pair_rows(pa, pb, mid);
+    Critical_times critical = part_pair_times(pa, pb, rows, l, u, true);
+    return at_r(rows, pa, pb, critical) ||
+           (critical.restricted() && at_r(rows, pa, pb, part_pair_times(pa, pb, rows, l, u, false)));
+  });
+  return q;
 }
 
 } // namespace

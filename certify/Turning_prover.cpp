@@ -92,7 +92,7 @@ Turning_prover::Proof Turning_prover::proof_at(const std::vector<Moving_plane>& 
     by_direction.emplace(direction_key(at(h, s)), h);
     by_direction.emplace(direction_key(at(negated(h), s)), negated(h));
   }
-  Scene posed = posed_pair(*a_, *b_, s);
+  Scene posed = posed_pair(a(), b(), s);
   Apart_prover prover(posed, semantics_, limit_ - std::min(limit_, steps_));
   // Term by term: a turning APART's proof is a leaf (8.3 has no split), so
   // two unions of convex pieces are not proved by a split tree here.
@@ -176,24 +176,13 @@ std::vector<Algebraic> Turning_prover::critical_cuts(const Rational& mid, const 
 {
   std::vector<Algebraic> cuts{Algebraic(lo)};
   restricted = false;
-  for (std::size_t i = 0; i < parts_a_->count(); ++i)
-    for (std::size_t j = 0; j < parts_b_->count(); ++j) {
-      bool pieces = !parts_a_->pieces.empty() && !parts_b_->pieces.empty();
-      if (pieces && !may_meet(parts_a_->piece_boxes[i], parts_b_->piece_boxes[j])) continue;
-      const Rotating_object &a = parts_a_->part(i), &b = parts_b_->part(j);
-      std::vector<Moving_plane> rows = moving_planes(a.shape.planes, segment_at(a.segments, mid));
-      std::vector<Moving_plane> more = moving_planes(b.shape.planes, segment_at(b.segments, mid));
-      rows.insert(rows.end(), more.begin(), more.end());
-      bool low_rank = !a.shape.spans_space && !b.shape.spans_space;
-      std::size_t split = a.shape.planes.size();
-      std::optional<std::vector<Minor_rows>> features;
-      if (features_only) features = feature_minors(a.shape, b.shape);
-      Critical_times critical = features ? Critical_times(rows, split, lo, piece_hi, low_rank, *features)
-                                         : Critical_times(rows, split, lo, piece_hi, low_rank);
-      restricted = restricted || critical.restricted();
-      for (const Critical_time& c : critical.times())
-        if (c.t < hi) cuts.push_back(c.t);
-    }
+  for_parts_that_may_meet(*parts_a_, *parts_b_, [&](const Rotating_object& a, const Rotating_object& b) {
+    Critical_times critical = part_pair_times(a, b, pair_rows(a, b, mid), lo, piece_hi, features_only);
+    restricted = restricted || critical.restricted();
+    for (const Critical_time& c : critical.times())
+      if (c.t < hi) cuts.push_back(c.t);
+    return false;
+  });
   std::sort(cuts.begin() + 1, cuts.end(), [](const Algebraic& x, const Algebraic& y) { return x < y; });
   cuts.erase(std::unique(cuts.begin() + 1, cuts.end(), [](const Algebraic& x, const Algebraic& y) { return x == y; }),
              cuts.end());
@@ -207,9 +196,7 @@ std::vector<Turning_prover::Leaf> Turning_prover::pose_piece(const Rational& lo,
                                                              const Algebraic& hi, bool open_end)
 {
   Rational mid = simplest_between(Algebraic(lo), hi);
-  std::vector<Moving_plane> rows = moving_planes(a_->shape.planes, segment_at(a_->segments, mid));
-  std::vector<Moving_plane> more = moving_planes(b_->shape.planes, segment_at(b_->segments, mid));
-  rows.insert(rows.end(), more.begin(), more.end());
+  std::vector<Moving_plane> rows = pair_rows(a(), b(), mid);
   bool restricted = false;
   std::vector<Algebraic> cuts = critical_cuts(mid, lo, piece_hi, hi, feature_events_, restricted);
   std::optional<std::vector<Algebraic>> every;   // every mixed minor's cuts, made when a proof needs them
@@ -250,14 +237,12 @@ std::vector<Turning_prover::Leaf> Turning_prover::pose_piece(const Rational& lo,
 
 json Turning_prover::prove(int a, int b, const Algebraic& until, bool open_end)
 {
-  a_ = Rotating_object::make(scene_.objects[a]);
-  b_ = Rotating_object::make(scene_.objects[b]);
   parts_a_.emplace(scene_.objects[a], scene_.t_lo, scene_.t_hi);
   parts_b_.emplace(scene_.objects[b], scene_.t_lo, scene_.t_hi);
   where_ = "objects '" + scene_.objects[a].name + "' and '" + scene_.objects[b].name + "'";
   json pieces = json::array();
   Rational end = until.is_rational() ? until.rational() : until.upper();
-  std::vector<Rational> ends = piece_ends(*a_, *b_, scene_.t_lo, end);
+  std::vector<Rational> ends = piece_ends(parts_a_->whole, parts_b_->whole, scene_.t_lo, end);
   for (std::size_t p = 0; p + 1 < ends.size() && Algebraic(ends[p]) < until; ++p) {
     Algebraic hi = Algebraic(ends[p + 1]) < until ? Algebraic(ends[p + 1]) : until;
     for (const Leaf& leaf : pose_piece(ends[p], ends[p + 1], hi, open_end && hi == until)) {

@@ -54,14 +54,15 @@ private:
   std::vector<Algebraic> critical_cuts(const Rational& mid, const Rational& lo, const Rational& piece_hi,
                                        const Algebraic& hi, bool features_only, bool& restricted) const;
   bool valid(const Proof& p, const Algebraic& lo, const Algebraic& hi, bool open_end) const;
+  const Rotating_object& a() const { return parts_a_->whole; }
+  const Rotating_object& b() const { return parts_b_->whole; }
 
   const Scene& scene_;
   Semantics semantics_;
   bool feature_events_;
   std::uint64_t limit_, steps_ = 0;
   std::size_t conflicts_ = 0;
-  std::optional<Rotating_object> a_, b_;   // the pair being proved
-  std::optional<Object_parts> parts_a_, parts_b_;   // and their convex pieces
+  std::optional<Object_parts> parts_a_, parts_b_;   // the pair being proved, with its convex pieces
   std::string where_;                      // names it in a refusal
 };
 

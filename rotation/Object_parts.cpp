@@ -71,4 +71,14 @@ Object_parts::Object_parts(const Scene_object& o, const Rational& lo, const Rati
   }
 }
 
+Critical_times part_pair_times(const Rotating_object& a, const Rotating_object& b, const std::vector<Moving_plane>& rows,
+                               const Rational& lo, const Rational& hi, bool features_only)
+{
+  bool low_rank = !a.shape.spans_space && !b.shape.spans_space;
+  std::size_t split = a.shape.planes.size();
+  std::optional<std::vector<Minor_rows>> features;
+  if (features_only) features = feature_minors(a.shape, b.shape);
+  return features ? Critical_times(rows, split, lo, hi, low_rank, *features) : Critical_times(rows, split, lo, hi, low_rank);
+}
+
 } // namespace clash4d

@@ -45,6 +45,26 @@ struct Object_parts {
   const Rotating_object& part(std::size_t i) const { return pieces.empty() ? whole : pieces[i]; }
 };
 
+// f(part of a, part of b) for each pair of parts that may meet (their
+// swept boxes overlap when both objects are in pieces), until f returns
+// true.
+template <class F>
+void for_parts_that_may_meet(const Object_parts& a, const Object_parts& b, F&& f)
+{
+  bool boxes = !a.pieces.empty() && !b.pieces.empty();
+  for (std::size_t i = 0; i < a.count(); ++i)
+    for (std::size_t j = 0; j < b.count(); ++j)
+      if (!boxes || may_meet(a.piece_boxes[i], b.piece_boxes[j]))
+        if (f(a.part(i), b.part(j))) return;
+}
+
+// The critical times on (lo, hi) of two parts whose rows (pair_rows) are
+// given: of their feature minors when features_only and both are convex
+// pieces (Critical_times says whether they are: restricted()), of every
+// mixed minor otherwise.
+Critical_times part_pair_times(const Rotating_object& a, const Rotating_object& b, const std::vector<Moving_plane>& rows,
+                               const Rational& lo, const Rational& hi, bool features_only);
+
 } // namespace clash4d
 
 #endif

@@ -65,14 +65,6 @@ Static_hit probe(const Rotating_object& a, const Rotating_object& b, const Ratio
   return hit;
 }
 
-std::vector<Moving_plane> pair_rows(const Rotating_object& a, const Rotating_object& b, const Rational& at)
-{
-  std::vector<Moving_plane> rows = moving_planes(a.shape.planes, segment_at(a.segments, at));
-  std::vector<Moving_plane> more = moving_planes(b.shape.planes, segment_at(b.segments, at));
-  rows.insert(rows.end(), more.begin(), more.end());
-  return rows;
-}
-
 std::array<Algebraic, 4> with_time(const Point3& x, const Rational& t)
 {
   return {Algebraic(x[0]), Algebraic(x[1]), Algebraic(x[2]), Algebraic(t)};
@@ -153,6 +145,14 @@ std::vector<Rational> piece_ends(const Rotating_object& a, const Rotating_object
   std::sort(t.begin(), t.end());
   t.erase(std::unique(t.begin(), t.end()), t.end());
   return t;
+}
+
+std::vector<Moving_plane> pair_rows(const Rotating_object& a, const Rotating_object& b, const Rational& at)
+{
+  std::vector<Moving_plane> rows = moving_planes(a.shape.planes, segment_at(a.segments, at));
+  std::vector<Moving_plane> more = moving_planes(b.shape.planes, segment_at(b.segments, at));
+  rows.insert(rows.end(), more.begin(), more.end());
+  return rows;
 }
 
 Scene posed_pair(const Rotating_object& a, const Rotating_object& b, const Rational& t)

@@ -87,6 +87,10 @@ std::vector<Rational> piece_ends(const Rotating_object& a, const Rotating_object
 // Rotating_pair.cpp); none when either shape is not one such piece.
 std::optional<std::vector<Minor_rows>> feature_minors(const Shape_planes& a, const Shape_planes& b);
 
+// The rows of fact 10's matrix for a and b on the motion pieces that hold
+// `at`: a's planes as polynomials in t, then b's.
+std::vector<Moving_plane> pair_rows(const Rotating_object& a, const Rotating_object& b, const Rational& at);
+
 // The scene of the two objects at rest, placed as they are at time t.
 Scene posed_pair(const Rotating_object& a, const Rotating_object& b, const Rational& t);
 
