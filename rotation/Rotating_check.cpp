@@ -20,22 +20,17 @@ Rotating_answer decide_parts(const Object_parts& a, const Object_parts& b, const
   Rotating_answer best;
   Slice_counts counts;
   Rational until = hi;   // with --earliest, a piece pair first meeting after it cannot win
-  for (std::size_t i = 0; i < a.count() && lo < until; ++i)
-    for (std::size_t j = 0; j < b.count() && lo < until; ++j) {
-      if (!a.pieces.empty() && !b.pieces.empty() && !may_meet(a.piece_boxes[i], b.piece_boxes[j])) continue;
-      Rotating_answer r = decide_rotating_pair(a.part(i), b.part(j), lo, until, options, slices);
-      counts += r.counts;
-      if (!r.collide) continue;
-      if (!options.earliest) {
-        r.counts = counts;
-        return r;
-      }
-      if (best.collide && !(r.t_star < best.t_star)) continue;
-      best = std::move(r);
-      // A later pair wins only with a t* below this one's, so it is asked
-      // up to a rational at or above it; none is below the span's start.
-      if (best.t_star.upper() < until) until = best.t_star.upper();
-    }
+  for_parts_that_may_meet(a, b, [&](const Rotating_object& pa, const Rotating_object& pb) {
+    Rotating_answer r = decide_rotating_pair(pa, pb, lo, until, options, slices);
+    counts += r.counts;
+    if (!r.collide || (best.collide && !(r.t_star < best.t_star))) return false;
+    best = std::move(r);
+    if (!options.earliest) return true;   // the first colliding pair answers
+    // A later pair wins only with a t* below this one's, so it is asked
+    // up to a rational at or above it; none is below the span's start.
+    if (best.t_star.upper() < until) until = best.t_star.upper();
+    return !(lo < until);
+  });
   best.counts = counts;
   return best;
 }
