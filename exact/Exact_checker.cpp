@@ -1,15 +1,11 @@
 #include "exact/Exact_checker.h"
 #include "exact/Exact_instantiation.h"
-#include "exact/Filtered_runner.h"
-#include "exact/Interval_kernel.h"
-#include "exact/Rational_kernel.h"
+#include "exact/Filtered_exact_runner.h"
 #include "scene/Scene_reader.h"
 #include <stdexcept>
 #include <string>
 
 namespace clash4d {
-
-using Filtered_exact = Filtered_runner<Interval_kernel, Rational_kernel>;
 
 namespace {
 
@@ -39,7 +35,7 @@ bool same_motion(const Motion& a, const Motion& b) { return a.times == b.times &
 struct Exact_checker::Impl {
   const Scene& scene;
   std::unique_ptr<Scene> moved;
-  std::unique_ptr<Filtered_exact> runner[2];
+  std::unique_ptr<Filtered_exact_runner> runner[2];
   std::vector<int> changed;   // move_to's, kept: a query allocates none
   std::shared_ptr<void> piece_model;   // check_exact_by_pieces', made again when motions change
 
@@ -48,8 +44,8 @@ struct Exact_checker::Impl {
     // The same answer as check_exact where it takes the piece pairs.
     if (std::optional<Check_answer> a = check_exact_by_pieces(moved ? *moved : scene, options, &piece_model))
       return std::move(*a);
-    std::unique_ptr<Filtered_exact>& r = runner[options.sbounds ? 1 : 0];
-    if (!r) r = std::make_unique<Filtered_exact>(moved ? *moved : scene, options.sbounds, true);
+    std::unique_ptr<Filtered_exact_runner>& r = runner[options.sbounds ? 1 : 0];
+    if (!r) r = std::make_unique<Filtered_exact_runner>(moved ? *moved : scene, options.sbounds, true);
     return r->check(options);
   }
 

@@ -1,5 +1,6 @@
 #include "exact/Exact_instantiation.h"
 #include "model/Extrusion_report.h"
+#include "exact/Filtered_exact_runner.h"
 #include "exact/Filtered_runner.h"
 #include "exact/Interval_kernel.h"
 #include "exact/Rational_kernel.h"
@@ -8,7 +9,24 @@
 namespace clash4d {
 
 // The filtered exact kernel: intervals first, rationals where they fail.
-using Filtered_exact = Filtered_runner<Interval_kernel, Rational_kernel>;
+// Instantiated here only (Filtered_exact_runner.h).
+struct Filtered_exact_runner::Impl {
+  Impl(const Scene& scene, bool use_sbounds, bool reusable) : runner(scene, use_sbounds, reusable) {}
+  Filtered_runner<Interval_kernel, Rational_kernel> runner;
+};
+
+Filtered_exact_runner::Filtered_exact_runner(const Scene& scene, bool use_sbounds, bool reusable)
+    : impl_(std::make_unique<Impl>(scene, use_sbounds, reusable))
+{
+}
+
+Filtered_exact_runner::~Filtered_exact_runner() = default;
+
+Check_answer Filtered_exact_runner::check(const Check_options& options) { return impl_->runner.check(options); }
+
+void Filtered_exact_runner::motions_changed(const std::vector<int>& changed) { impl_->runner.motions_changed(changed); }
+
+Skeleton_answer Filtered_exact_runner::skeleton() { return impl_->runner.skeleton(); }
 
 // Mostly a few linear programs per piece pair (check/Piece_pairs.h).
 std::optional<Check_answer> check_exact_by_pieces(const Scene& scene, const Check_options& options,
@@ -38,7 +56,7 @@ std::optional<Check_answer> check_exact_by_pieces(const Scene& scene, const Chec
 Check_answer check_exact(const Scene& scene, const Check_options& options)
 {
   if (std::optional<Check_answer> a = check_exact_by_pieces(scene, options)) return std::move(*a);
-  return Filtered_exact(scene, options.sbounds).check(options);
+  return Filtered_exact_runner(scene, options.sbounds).check(options);
 }
 
 // Extrusion is all constructions (nothing to filter): rationals, labelled exact.
@@ -51,7 +69,7 @@ nlohmann::ordered_json extrude_exact(const Scene& scene)
 
 Skeleton_answer skeleton_exact(const Scene& scene)
 {
-  return Filtered_exact(scene, true).skeleton();
+  return Filtered_exact_runner(scene, true).skeleton();
 }
 
 } // namespace clash4d
