@@ -82,6 +82,7 @@ public:
   // Each coefficient is enclosed once, and each piece's ends are enclosed
   // from lo's and hi's intervals (a sure enclosure of the exact piece).
   Interval_rows(const std::vector<Moving_plane>& planes, const Rational& lo, const Rational& hi)
+      : middle_((lo + hi) / 2)
   {
     CGAL::Protect_FPU_rounding<true> upward;
     std::vector<std::array<Interval_poly, 4>> rows;
@@ -120,6 +121,14 @@ public:
   // A minor made exactly is identically zero when it is the zero polynomial.
   bool identically_zero(const Int_poly& d, const Minor_rows&) const { return primitive(d).empty(); }
 
+  // The sign of p at the middle of [lo, hi], exactly.
+  int sign_inside(const Int_poly& p) const
+  {
+    Rational v = 0;
+    for (int i = p.size(); i-- > 0;) v = v * middle_ + Rational(CGAL::Gmpz(p[i].get_mpz_t()));
+    return CGAL::sign(v);
+  }
+
 private:
   static I normal(const std::vector<std::array<I, 4>>& r, int i, int j, int k)
   {
@@ -132,6 +141,7 @@ private:
            r[k][3] * normal(r, i, j, l);
   }
 
+  Rational middle_;
   std::vector<std::vector<std::array<I, 4>>> at_;   // [piece][row]
 };
 
@@ -211,16 +221,17 @@ void check_feature_minor_count(std::size_t features, std::size_t m, std::size_t 
 }
 
 Critical_times::Critical_times(const std::vector<Moving_plane>& planes, std::size_t first_count, const Rational& lo,
-                               const Rational& hi, bool low_rank, const std::vector<Minor_rows>& features)
+                               const Rational& hi, bool low_rank, const Pair_features& features)
 {
-  check_feature_minor_count(features.size(), planes.size(), first_count);
+  check_feature_minor_count(features.minors.size(), planes.size(), first_count);
   std::vector<Int_row> rows;
   rows.reserve(planes.size());
   for (const Moving_plane& h : planes) rows.push_back(integer_row(h));
   Minor_table table;
-  if (!enumerate_feature_minors(rows, features, Interval_rows(planes, lo, hi), table)) {
-    // A feature incidence that holds on the whole interval: the touches
-    // are not all marked by a feature minor's root; every mixed minor.
+  if (!enumerate_feature_minors(rows, static_cast<int>(first_count), features, Interval_rows(planes, lo, hi), table)) {
+    // A feature incidence that holds on the whole interval and may mark
+    // a touch: the touches are not all marked by a feature minor's root;
+    // every mixed minor.
     *this = Critical_times(planes, first_count, lo, hi, low_rank);
     return;
   }

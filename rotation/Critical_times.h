@@ -38,6 +38,15 @@ void check_pair_minor_count(int m, int split);
 // them the first piece's) have more feature minors than the limit.
 void check_feature_minor_count(std::size_t features, std::size_t m, std::size_t split);
 
+// Two convex pieces' event minors (their vertex-face and edge-edge minors,
+// Rotating_pair.cpp, feature_minors), with the side of its plane each piece
+// is on, per row (the first piece's planes, then the second's): +1 where
+// the row's value is <= 0, -1 the other (Shape_planes' orientations).
+struct Pair_features {
+  std::vector<Minor_rows> minors;
+  std::vector<int> sides;
+};
+
 struct Critical_time {
   Algebraic t;
   std::vector<Minor_rows> vanishing;   // the minors with a root at t
@@ -56,7 +65,7 @@ public:
   // of the other piece), every mixed minor as above. Throws Minor_limit
   // past CLASH4D_MAX_PAIR_MINORS of them.
   Critical_times(const std::vector<Moving_plane>& rows, std::size_t first_count, const Rational& lo,
-                 const Rational& hi, bool low_rank, const std::vector<Minor_rows>& features);
+                 const Rational& hi, bool low_rank, const Pair_features& features);
 
   // Ascending, distinct, each strictly inside (lo, hi).
   const std::vector<Critical_time>& times() const { return times_; }

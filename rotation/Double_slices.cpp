@@ -42,7 +42,7 @@ struct Every_minor {
 // for zero that is not costs the full enumeration, never a touch.
 class Double_feature_filter {
 public:
-  explicit Double_feature_filter(const std::vector<Double_row>& rows)
+  Double_feature_filter(const std::vector<Double_row>& rows, double lo, double hi) : middle_(0.5 * lo + 0.5 * hi)
   {
     for (const Double_row& r : rows) {
       double s = 0;
@@ -59,8 +59,15 @@ public:
       if (std::fabs(d[i]) > bound) return false;
     return true;
   }
+  // The sign of p at the middle of the interval.
+  int sign_inside(const Double_poly& p) const
+  {
+    double v = p.at(middle_);
+    return (v > 0) - (v < 0);
+  }
 
 private:
+  double middle_;
   std::vector<double> size_;
 };
 
@@ -164,13 +171,15 @@ Rational Double_slices::read_answer_number(const std::string& text) const
 std::vector<Critical_time> Double_slices::critical_times(const std::vector<Moving_plane>& planes,
                                                          std::size_t first_count, const Rational& lo,
                                                          const Rational& hi, bool low_rank,
-                                                         const std::vector<Minor_rows>* features) const
+                                                         const Pair_features* features) const
 {
   std::vector<Double_row> rows;
   for (const Moving_plane& h : planes) rows.push_back(double_row(h));
   Double_minors table;
-  if (features) check_feature_minor_count(features->size(), rows.size(), first_count);
-  if (!features || !enumerate_feature_minors(rows, *features, Double_feature_filter(rows), table)) {
+  if (features) check_feature_minor_count(features->minors.size(), rows.size(), first_count);
+  if (!features || !enumerate_feature_minors(rows, static_cast<int>(first_count), *features,
+                                             Double_feature_filter(rows, CGAL::to_double(lo), CGAL::to_double(hi)),
+                                             table)) {
     // Every mixed minor, as the exact stage (Critical_times.h): no features,
     // or one of them identically zero on the interval.
     table.minors.clear();

@@ -43,7 +43,7 @@ public:
   // or such a zero, for every mixed minor.
   std::vector<Critical_time> critical_times(const std::vector<Moving_plane>& rows, std::size_t first_count,
                                             const Rational& lo, const Rational& hi, bool low_rank,
-                                            const std::vector<Minor_rows>* features = nullptr) const;
+                                            const Pair_features* features = nullptr) const;
   // The double midpoint of left and right; none when no double lies
   // strictly between their doubles.
   std::optional<Rational> sample(const Algebraic& left, const Algebraic& right) const;

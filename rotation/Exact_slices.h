@@ -48,7 +48,7 @@ public:
   // edge-edge minors), or null for every mixed minor.
   std::vector<Critical_time> critical_times(const std::vector<Moving_plane>& rows, std::size_t first_count,
                                             const Rational& lo, const Rational& hi, bool low_rank,
-                                            const std::vector<Minor_rows>* features = nullptr) const
+                                            const Pair_features* features = nullptr) const
   {
     if (features) return Critical_times(rows, first_count, lo, hi, low_rank, *features).times();
     return Critical_times(rows, first_count, lo, hi, low_rank).times();

@@ -76,7 +76,7 @@ Critical_times part_pair_times(const Rotating_object& a, const Rotating_object& 
 {
   bool low_rank = !a.shape.spans_space && !b.shape.spans_space;
   std::size_t split = a.shape.planes.size();
-  std::optional<std::vector<Minor_rows>> features;
+  std::optional<Pair_features> features;
   if (features_only) features = feature_minors(a.shape, b.shape);
   return features ? Critical_times(rows, split, lo, hi, low_rank, *features) : Critical_times(rows, split, lo, hi, low_rank);
 }

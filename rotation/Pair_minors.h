@@ -97,6 +97,58 @@ Poly full_minor(const std::vector<std::array<Poly, 4>>& r, Normals& normals, int
   return r[j][3] * normals(i, k, l) - r[i][3] * normals(j, k, l) + r[l][3] * normals(i, j, k) - r[k][3] * normals(i, j, l);
 }
 
+// Whether a polynomial is the zero polynomial (every coefficient 0).
+template <class Poly>
+bool zero_polynomial(const Poly& p)
+{
+  for (int i = 0; i < p.size(); ++i)
+    if (p[i] != 0) return false;
+  return true;
+}
+
+// Whether the four normals of rows m stay in one plane: every 3 x 3 minor
+// of them the zero polynomial. Of two convex pieces' features, only the
+// planes of two edges that stay parallel do (a vertex's triple is
+// independent).
+template <class Poly>
+bool normals_flat(const std::vector<std::array<Poly, 4>>& r, const Minor_rows& m)
+{
+  auto [i, j, k, l] = m;
+  return zero_polynomial(normal_minor(r[i], r[j], r[k])) && zero_polynomial(normal_minor(r[i], r[j], r[l])) &&
+         zero_polynomial(normal_minor(r[i], r[k], r[l])) && zero_polynomial(normal_minor(r[j], r[k], r[l]));
+}
+
+// Whether rows m hold a plane of the first piece and one of the second
+// that bound them on the same side on the interval: proportional rows
+// (Row_owners) whose factor's sign, read as the sign of their dot product
+// inside the interval (filter.sign_inside, exact in the exact stage), times
+// the pieces' sides of them is positive.
+template <class Poly, class Filter>
+bool shares_half_space(const std::vector<std::array<Poly, 4>>& r, const Pair_features& f, int first_count,
+                       const Minor_rows& m, const Filter& filter)
+{
+  for (int a : m)
+    for (int b : m)
+      if (a < first_count && b >= first_count && proportional(r[a], r[b]) &&
+          filter.sign_inside(r[a][0] * r[b][0] + r[a][1] * r[b][1] + r[a][2] * r[b][2] + r[a][3] * r[b][3]) *
+                  f.sides[a] * f.sides[b] >
+              0)
+        return true;
+  return false;
+}
+
+// Whether a feature minor that is identically zero on the interval marks
+// no event and may be left out (docs/rotation.md, Convex pieces' events:
+// degenerate features): two edges that stay parallel never cross at one
+// point, and a feature with a plane both pieces bound on the same side is
+// never the one a touch needs.
+template <class Poly, class Filter>
+bool eventless_feature(const std::vector<std::array<Poly, 4>>& r, const Pair_features& f, int first_count,
+                       const Minor_rows& m, const Filter& filter)
+{
+  return normals_flat(r, m) || shares_half_space(r, f, first_count, m, filter);
+}
+
 } // namespace pair_minors_detail
 
 // What a filter knows of a minor on the interval before it is made:
@@ -105,26 +157,30 @@ enum class Minor_state { zero, nonzero, unsure };
 
 // Calls table.add(minor, rows) for each of the given 4 x 4 minors of rows
 // of both objects (two convex pieces' vertex-face and edge-edge minors,
-// Rotating_pair.cpp) that filter.state(rows) does not rule out as rootless.
-// Returns false, at once, when one of them is identically zero on the
-// interval (filter.state says zero, or filter.identically_zero(minor, rows)
-// once it is made): a feature incidence that holds on the whole interval,
-// so the features do not mark every touch and every mixed minor is to be
-// taken instead (enumerate_pair_minors). Looks at the work budget.
+// Rotating_pair.cpp; the first first_count rows the first piece's) that
+// filter.state(rows) does not rule out as rootless. A minor identically
+// zero on the interval (filter.state says zero, or filter.identically_zero
+// (minor, rows) once it is made) is a feature incidence that holds on the
+// whole interval: it is left out when it marks no event
+// (eventless_feature); otherwise the features do not mark every touch, and
+// false is returned at once, so that every mixed minor is taken instead
+// (enumerate_pair_minors). Looks at the work budget.
 template <class Poly, class Filter, class Table>
-bool enumerate_feature_minors(const std::vector<std::array<Poly, 4>>& r, const std::vector<Minor_rows>& features,
-                              const Filter& filter, Table& table)
+bool enumerate_feature_minors(const std::vector<std::array<Poly, 4>>& r, int first_count,
+                              const Pair_features& features, const Filter& filter, Table& table)
 {
   auto normals = [&](int i, int j, int k) { return normal_minor(r[i], r[j], r[k]); };
   std::size_t made = 0;
-  for (const Minor_rows& m : features) {
+  for (const Minor_rows& m : features.minors) {
     if (++made % 4096 == 0) Work_budget::check();
     Minor_state state = filter.state(m);
     if (state == Minor_state::nonzero) continue;
-    if (state == Minor_state::zero) return false;
     auto [i, j, k, l] = m;
-    Poly d = pair_minors_detail::full_minor(r, normals, i, j, k, l);
-    if (filter.identically_zero(d, m)) return false;
+    Poly d = state == Minor_state::zero ? Poly() : pair_minors_detail::full_minor(r, normals, i, j, k, l);
+    if (state == Minor_state::zero || filter.identically_zero(d, m)) {
+      if (pair_minors_detail::eventless_feature(r, features, first_count, m, filter)) continue;
+      return false;
+    }
     table.add(d, m);
   }
   return true;

@@ -108,11 +108,12 @@ std::array<Algebraic, 4> with_time(const Point3& x, const Rational& t)
 // dependent there), which is, by the same faces argument, a vertex of one
 // piece on a plane of the other or two edges' planes through one point: a
 // root of a feature minor again.
-std::optional<std::vector<Minor_rows>> feature_minors(const Shape_planes& a, const Shape_planes& b)
+std::optional<Pair_features> feature_minors(const Shape_planes& a, const Shape_planes& b)
 {
   if (!a.convex_features || !b.convex_features) return std::nullopt;
   int n = static_cast<int>(a.planes.size()), m = static_cast<int>(b.planes.size());
-  std::vector<Minor_rows> out;
+  Pair_features f;
+  std::vector<Minor_rows>& out = f.minors;
   out.reserve(a.vertex_triples.size() * m + b.vertex_triples.size() * n + a.edges.size() * b.edges.size());
   for (const auto& t : a.vertex_triples)
     for (int q = 0; q < m; ++q) out.push_back({t[0], t[1], t[2], n + q});
@@ -120,7 +121,11 @@ std::optional<std::vector<Minor_rows>> feature_minors(const Shape_planes& a, con
     for (int p = 0; p < n; ++p) out.push_back({p, n + t[0], n + t[1], n + t[2]});
   for (auto [p1, p2] : a.edges)
     for (auto [q1, q2] : b.edges) out.push_back({p1, p2, n + q1, n + q2});
-  return out;
+  // Each piece is its one primitive (convex_features): its planes' sides.
+  f.sides.assign(n + m, 0);
+  for (auto [plane, orientation] : a.primitives.front()) f.sides[plane] = orientation;
+  for (auto [plane, orientation] : b.primitives.front()) f.sides[n + plane] = orientation;
+  return f;
 }
 
 Rotating_object Rotating_object::make(const Scene_object& o)
@@ -308,7 +313,7 @@ private:
   Rational t_lo_;
   bool end_apart_ = false;   // the last piece's end lies in an interval proved apart
   Rotating_answer answer_;
-  std::optional<std::vector<Minor_rows>> features_;   // two convex pieces' event minors
+  std::optional<Pair_features> features_;   // two convex pieces' event minors
 };
 
 } // namespace

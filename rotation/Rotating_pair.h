@@ -85,7 +85,7 @@ std::vector<Rational> piece_ends(const Rotating_object& a, const Rotating_object
 // pair's matrix (a's planes, then b's): the vertex-face and edge-edge
 // minors whose roots are the only times their answers can change (why:
 // Rotating_pair.cpp); none when either shape is not one such piece.
-std::optional<std::vector<Minor_rows>> feature_minors(const Shape_planes& a, const Shape_planes& b);
+std::optional<Pair_features> feature_minors(const Shape_planes& a, const Shape_planes& b);
 
 // The rows of fact 10's matrix for a and b on the motion pieces that hold
 // `at`: a's planes as polynomials in t, then b's.
