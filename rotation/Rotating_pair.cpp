@@ -96,7 +96,10 @@ std::array<Algebraic, 4> with_time(const Point3& x, const Rational& t)
 // x: the four planes of the two edges meet at x and their minor vanishes.
 // So the status can change only at a root of a feature minor; where such a
 // minor is identically zero on the interval (a vertex that stays on a plane
-// of the other piece), Critical_times takes every mixed minor instead. At a
+// of the other piece), it is left out when it can never be the one a touch
+// needs (Pair_minors.h, eventless_feature: parallel edges, a plane both
+// pieces bound on the same side), and otherwise Critical_times takes every
+// mixed minor instead. At a
 // closed touch at an irrational time the point x is on the four planes of a
 // vanishing feature minor, three of them independent (an edge's line is not
 // parallel to both planes of a crossing edge), which is what
