@@ -51,6 +51,7 @@ public:
       size_.push_back(s);
     }
   }
+  static constexpr bool minors_cost_more = false;   // doubles (Pair_minors.h)
   Minor_state state(const Minor_rows&) const { return Minor_state::unsure; }
   bool identically_zero(const Double_poly& d, const Minor_rows& m) const
   {

@@ -15,6 +15,10 @@
 
 namespace clash4d {
 
+// What a filter knows of a minor on the interval before it is made:
+// identically zero there, no root there, or neither.
+enum class Minor_state { zero, nonzero, unsure };
+
 namespace pair_minors_detail {
 
 // Whether two rows are proportional as vectors of polynomials (every 2 x 2
@@ -106,82 +110,111 @@ bool zero_polynomial(const Poly& p)
   return true;
 }
 
-// Whether the four normals of rows m stay in one plane: every 3 x 3 minor
-// of them the zero polynomial. Of two convex pieces' features, only the
-// planes of two edges that stay parallel do (a vertex's triple is
-// independent).
-template <class Poly>
-bool normals_flat(const std::vector<std::array<Poly, 4>>& r, const Minor_rows& m)
-{
-  auto [i, j, k, l] = m;
-  return zero_polynomial(normal_minor(r[i], r[j], r[k])) && zero_polynomial(normal_minor(r[i], r[j], r[l])) &&
-         zero_polynomial(normal_minor(r[i], r[k], r[l])) && zero_polynomial(normal_minor(r[j], r[k], r[l]));
-}
-
-// Whether rows m hold a plane of the first piece and one of the second
-// that bound them on the same side on the interval: proportional rows
-// (Row_owners) whose factor's sign, read as the sign of their dot product
-// inside the interval (filter.sign_inside, exact in the exact stage), times
-// the pieces' sides of them is positive.
-template <class Poly, class Filter>
-bool shares_half_space(const std::vector<std::array<Poly, 4>>& r, const Pair_features& f, int first_count,
-                       const Minor_rows& m, const Filter& filter)
-{
-  for (int a : m)
-    for (int b : m)
-      if (a < first_count && b >= first_count && proportional(r[a], r[b]) &&
-          filter.sign_inside(r[a][0] * r[b][0] + r[a][1] * r[b][1] + r[a][2] * r[b][2] + r[a][3] * r[b][3]) *
-                  f.sides[a] * f.sides[b] >
-              0)
-        return true;
-  return false;
-}
-
 // Whether a feature minor that is identically zero on the interval marks
-// no event and may be left out (docs/rotation.md, Convex pieces' events:
-// degenerate features): two edges that stay parallel never cross at one
-// point, and a feature with a plane both pieces bound on the same side is
-// never the one a touch needs.
+// no event and may be left out (docs/rotation.md, Degenerate features):
+//  - its four normals stay in one plane (every 3 x 3 minor of them the zero
+//    polynomial): of two convex pieces' features only two edges that stay
+//    parallel do (a vertex's triple is independent), and parallel lines
+//    never cross at one point;
+//  - it holds a plane of the first piece and one of the second that bound
+//    them on the same side: proportional rows (Row_owners) whose factor's
+//    sign, read as the sign of their dot product inside the interval
+//    (filter.sign_inside, exact in the exact stage), times the pieces'
+//    sides of them is positive.
+// What it finds of a triple of normals or a pair of rows is kept for the
+// interval's other features: a box against a box has some eighty such
+// features on each interval, over a few dozen triples and pairs.
 template <class Poly, class Filter>
-bool eventless_feature(const std::vector<std::array<Poly, 4>>& r, const Pair_features& f, int first_count,
-                       const Minor_rows& m, const Filter& filter)
-{
-  return normals_flat(r, m) || shares_half_space(r, f, first_count, m, filter);
-}
+class Eventless_features {
+public:
+  Eventless_features(const std::vector<std::array<Poly, 4>>& rows, const Pair_features& features, int first_count,
+                     const Filter& filter)
+      : r_(rows), features_(features), first_count_(first_count), filter_(filter)
+  {
+  }
+
+  bool operator()(const Minor_rows& m)
+  {
+    auto [i, j, k, l] = m;
+    if (flat(i, j, k) && flat(i, j, l) && flat(i, k, l) && flat(j, k, l)) return true;
+    for (int a : m)
+      for (int b : m)
+        if (a < first_count_ && b >= first_count_ && same_side(a, b)) return true;
+    return false;
+  }
+
+private:
+  // Whether the normals' minor of rows i, j, k is the zero polynomial:
+  // exactly 0 on a piece of the interval (the filter), else made.
+  bool flat(int i, int j, int k)
+  {
+    auto [it, added] = flat_.try_emplace({i, j, k}, false);
+    if (added) {
+      Minor_state s = filter_.state({i, j, k, -1});
+      it->second = s == Minor_state::zero || (s == Minor_state::unsure && zero_polynomial(normal_minor(r_[i], r_[j], r_[k])));
+    }
+    return it->second;
+  }
+
+  bool same_side(int a, int b)
+  {
+    auto [it, added] = same_side_.try_emplace({a, b}, false);
+    if (added && proportional(r_[a], r_[b])) {
+      const auto &u = r_[a], &v = r_[b];
+      it->second = filter_.sign_inside(u[0] * v[0] + u[1] * v[1] + u[2] * v[2] + u[3] * v[3]) * features_.sides[a] *
+                       features_.sides[b] >
+                   0;
+    }
+    return it->second;
+  }
+
+  const std::vector<std::array<Poly, 4>>& r_;
+  const Pair_features& features_;
+  int first_count_;
+  const Filter& filter_;
+  std::map<std::array<int, 3>, bool> flat_;
+  std::map<std::pair<int, int>, bool> same_side_;
+};
 
 } // namespace pair_minors_detail
-
-// What a filter knows of a minor on the interval before it is made:
-// identically zero there, no root there, or neither.
-enum class Minor_state { zero, nonzero, unsure };
 
 // Calls table.add(minor, rows) for each of the given 4 x 4 minors of rows
 // of both objects (two convex pieces' vertex-face and edge-edge minors,
 // Rotating_pair.cpp; the first first_count rows the first piece's) that
-// filter.state(rows) does not rule out as rootless. A minor identically
-// zero on the interval (filter.state says zero, or filter.identically_zero
-// (minor, rows) once it is made) is a feature incidence that holds on the
-// whole interval: it is left out when it marks no event
-// (eventless_feature); otherwise the features do not mark every touch, and
-// false is returned at once, so that every mixed minor is taken instead
-// (enumerate_pair_minors). Looks at the work budget.
+// filter.state(rows) does not rule out as rootless, and that mark events
+// (Eventless_features leaves out those that never need to). A minor
+// identically zero on the interval (filter.state says zero, or
+// filter.identically_zero(minor, rows) once it is made) is then a feature
+// incidence that holds on the whole interval and may mark a touch: the
+// features do not mark every touch, and false is returned at once, so that
+// every mixed minor is taken instead (enumerate_pair_minors). Looks at the
+// work budget. Filter::minors_cost_more: whether making a minor costs more
+// than asking Eventless_features (exact integer polynomials) or not
+// (doubles).
 template <class Poly, class Filter, class Table>
 bool enumerate_feature_minors(const std::vector<std::array<Poly, 4>>& r, int first_count,
                               const Pair_features& features, const Filter& filter, Table& table)
 {
   auto normals = [&](int i, int j, int k) { return normal_minor(r[i], r[j], r[k]); };
+  pair_minors_detail::Eventless_features<Poly, Filter> eventless(r, features, first_count, filter);
   std::size_t made = 0;
   for (const Minor_rows& m : features.minors) {
     if (++made % 4096 == 0) Work_budget::check();
     Minor_state state = filter.state(m);
     if (state == Minor_state::nonzero) continue;
+    // An eventless feature's minor is identically zero (parallel lines, or
+    // two rows of one plane): asked before the minor is made where that
+    // costs more (Filter::minors_cost_more), else once it is found zero.
+    if (state == Minor_state::unsure && Filter::minors_cost_more && eventless(m)) continue;
     auto [i, j, k, l] = m;
-    Poly d = state == Minor_state::zero ? Poly() : pair_minors_detail::full_minor(r, normals, i, j, k, l);
-    if (state == Minor_state::zero || filter.identically_zero(d, m)) {
-      if (pair_minors_detail::eventless_feature(r, features, first_count, m, filter)) continue;
-      return false;
+    if (state == Minor_state::unsure) {
+      Poly d = pair_minors_detail::full_minor(r, normals, i, j, k, l);
+      if (!filter.identically_zero(d, m)) {
+        table.add(d, m);
+        continue;
+      }
     }
-    table.add(d, m);
+    if (!eventless(m)) return false;
   }
   return true;
 }

@@ -97,7 +97,7 @@ std::array<Algebraic, 4> with_time(const Point3& x, const Rational& t)
 // So the status can change only at a root of a feature minor; where such a
 // minor is identically zero on the interval (a vertex that stays on a plane
 // of the other piece), it is left out when it can never be the one a touch
-// needs (Pair_minors.h, eventless_feature: parallel edges, a plane both
+// needs (Pair_minors.h, Eventless_features: parallel edges, a plane both
 // pieces bound on the same side), and otherwise Critical_times takes every
 // mixed minor instead. At a
 // closed touch at an irrational time the point x is on the four planes of a

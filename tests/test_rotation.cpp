@@ -1030,7 +1030,7 @@ BOOST_AUTO_TEST_CASE(double_feature_events_answer_as_every_minor) { features_ans
 
 // Blocks turning about z on one floor: features identically zero that
 // mark no event (parallel edges, a plane both bound on the same side) are
-// left out (Pair_minors.h, eventless_feature; docs/rotation.md, Degenerate
+// left out (Pair_minors.h, Eventless_features; docs/rotation.md, Degenerate
 // features). The exact answers are every mixed minor's (verdicts, refusals,
 // t*), and contact points lie in both blocks. A floor on the scenes that
 // kept to their features keeps the test from passing where every one
