@@ -10,9 +10,11 @@ namespace clash4d {
 
 // The filtered exact kernel: intervals first, rationals where they fail.
 // Instantiated here only (Filtered_exact_runner.h).
+using Filtered_exact = Filtered_runner<Interval_kernel, Rational_kernel>;
+
 struct Filtered_exact_runner::Impl {
   Impl(const Scene& scene, bool use_sbounds, bool reusable) : runner(scene, use_sbounds, reusable) {}
-  Filtered_runner<Interval_kernel, Rational_kernel> runner;
+  Filtered_exact runner;
 };
 
 Filtered_exact_runner::Filtered_exact_runner(const Scene& scene, bool use_sbounds, bool reusable)
@@ -56,7 +58,7 @@ std::optional<Check_answer> check_exact_by_pieces(const Scene& scene, const Chec
 Check_answer check_exact(const Scene& scene, const Check_options& options)
 {
   if (std::optional<Check_answer> a = check_exact_by_pieces(scene, options)) return std::move(*a);
-  return Filtered_exact_runner(scene, options.sbounds).check(options);
+  return Filtered_exact(scene, options.sbounds).check(options);
 }
 
 // Extrusion is all constructions (nothing to filter): rationals, labelled exact.
@@ -69,7 +71,7 @@ nlohmann::ordered_json extrude_exact(const Scene& scene)
 
 Skeleton_answer skeleton_exact(const Scene& scene)
 {
-  return Filtered_exact_runner(scene, true).skeleton();
+  return Filtered_exact(scene, true).skeleton();
 }
 
 } // namespace clash4d
