@@ -21,6 +21,15 @@ enum class Minor_state { zero, nonzero, unsure };
 
 namespace pair_minors_detail {
 
+// Whether a polynomial is the zero polynomial (every coefficient 0).
+template <class Poly>
+bool zero_polynomial(const Poly& p)
+{
+  for (int i = 0; i < p.size(); ++i)
+    if (p[i] != 0) return false;
+  return true;
+}
+
 // Whether two rows are proportional as vectors of polynomials (every 2 x 2
 // minor identically zero): the same plane up to a factor that is a
 // function of t of one sign (a norm |q(t)|^2, or its negative).
@@ -28,11 +37,8 @@ template <class Poly>
 bool proportional(const std::array<Poly, 4>& u, const std::array<Poly, 4>& v)
 {
   for (int a = 0; a < 4; ++a)
-    for (int b = a + 1; b < 4; ++b) {
-      Poly d = u[a] * v[b] - u[b] * v[a];
-      for (int i = 0; i < d.size(); ++i)
-        if (d[i] != 0) return false;
-    }
+    for (int b = a + 1; b < 4; ++b)
+      if (!zero_polynomial(u[a] * v[b] - u[b] * v[a])) return false;
   return true;
 }
 
@@ -99,15 +105,6 @@ template <class Poly, class Normals>
 Poly full_minor(const std::vector<std::array<Poly, 4>>& r, Normals& normals, int i, int j, int k, int l)
 {
   return r[j][3] * normals(i, k, l) - r[i][3] * normals(j, k, l) + r[l][3] * normals(i, j, k) - r[k][3] * normals(i, j, l);
-}
-
-// Whether a polynomial is the zero polynomial (every coefficient 0).
-template <class Poly>
-bool zero_polynomial(const Poly& p)
-{
-  for (int i = 0; i < p.size(); ++i)
-    if (p[i] != 0) return false;
-  return true;
 }
 
 // Whether a feature minor that is identically zero on the interval marks
