@@ -17,6 +17,7 @@ Apart_cover::Side Apart_cover::side(const Rotating_object& o, const Rational& at
   if (o.shape.convex_pieces.size() == 1)
     for (auto [plane, orientation] : o.shape.convex_pieces.front()) out.orientation[plane] = orientation;
   out.first_row = first_row;
+  out.edges = o.shape.edge_vertices;
   return out;
 }
 
@@ -64,6 +65,59 @@ bool Apart_cover::separates(const Side& s, const std::vector<std::array<I, 4>>& 
     if (outside) return true;
   }
   return false;
+}
+
+std::vector<bool> Apart_cover::far_parts(const Side& s, const std::vector<std::array<I, 4>>& rows,
+                                         const std::vector<Point>& points, const std::vector<std::vector<int>>& edges)
+{
+  std::size_t n = s.orientation.size();
+  std::vector<bool> outside(points.size() * n, false);   // [point * n + plane]
+  for (std::size_t p = 0; p < n; ++p) {
+    int o = s.orientation[p];
+    if (o == 0) continue;
+    const std::array<I, 4>& h = rows[s.first_row + p];
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const Point& x = points[k];
+      I v = h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3];
+      outside[k * n + p] = o > 0 ? v.inf() > 0 : v.sup() < 0;
+    }
+  }
+  auto far = [&](const std::vector<int>& part) {
+    for (std::size_t p = 0; p < n; ++p) {
+      bool all = true;
+      for (int k : part) all = all && outside[k * n + p];
+      if (all) return true;
+    }
+    return false;
+  };
+  std::vector<bool> out;
+  out.reserve(points.size() + edges.size());
+  for (std::size_t k = 0; k < points.size(); ++k) out.push_back(far({static_cast<int>(k)}));
+  for (const auto& e : edges) out.push_back(far(e));
+  return out;
+}
+
+Pair_features Apart_cover::near_features(const Pair_features& all, const Rational& lo, const Rational& hi) const
+{
+  Pair_features out;
+  out.sides = all.sides;
+  std::vector<bool> far_a, far_b;
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    I t(CGAL::to_interval(lo).first, CGAL::to_interval(hi).second);
+    std::vector<std::array<I, 4>> rows(rows_.size());
+    for (std::size_t r = 0; r < rows_.size(); ++r)
+      for (int c = 0; c < 4; ++c) rows[r][c] = rows_[r][c].at(t);
+    far_a = far_parts(b_, rows, vertices_on(a_, t), a_.edges);
+    far_b = far_parts(a_, rows, vertices_on(b_, t), b_.edges);
+  }
+  for (std::size_t f = 0; f < all.minors.size(); ++f) {
+    auto [pa, pb] = all.parts[f];
+    if ((pa >= 0 && far_a[pa]) || (pb >= 0 && far_b[pb])) continue;
+    out.minors.push_back(all.minors[f]);
+    out.parts.push_back(all.parts[f]);
+  }
+  return out;
 }
 
 bool Apart_cover::apart_on(const Rational& lo, const Rational& hi) const

@@ -41,6 +41,15 @@ public:
   // Whether the pieces are surely apart at every time of [lo, hi].
   bool apart_on(const Rational& lo, const Rational& hi) const;
 
+  // The features of `all` (feature_minors of the same two pieces) whose
+  // parts may meet the other piece at some time of [lo, hi]: a feature is
+  // left out when its vertex or edge of one piece has all its vertices
+  // strictly outside one plane of the other throughout (intervals, as
+  // apart_on), since a touch at tau puts the feature that marks it, vertex
+  // or edge, in both closed pieces at tau (docs/rotation.md, Near
+  // features).
+  Pair_features near_features(const Pair_features& all, const Rational& lo, const Rational& hi) const;
+
   // How many intervals for_each_unsure has proved apart so far.
   std::size_t proved_apart() const { return proved_apart_; }
 
@@ -72,6 +81,7 @@ private:
     std::vector<Point> vertices;
     std::vector<int> orientation;
     std::size_t first_row = 0;
+    std::vector<std::vector<int>> edges;   // each edge's vertices
   };
 
   // The leaves walk finds, joined into runs (for_each_unsure).
@@ -117,6 +127,10 @@ private:
   std::vector<Point> vertices_on(const Side& s, const I& t) const;
   // Whether some row of s has every point strictly outside it.
   static bool separates(const Side& s, const std::vector<std::array<I, 4>>& rows, const std::vector<Point>& points);
+  // Per part of the other piece (its vertices, then its edges), whether
+  // all its points are strictly outside one row of s.
+  static std::vector<bool> far_parts(const Side& s, const std::vector<std::array<I, 4>>& rows,
+                                     const std::vector<Point>& points, const std::vector<std::vector<int>>& edges);
 
   template <class Leaf>
   bool walk(const Rational& lo, const Rational& hi, int depth, Leaf& leaf) const

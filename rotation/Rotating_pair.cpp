@@ -118,12 +118,33 @@ std::optional<Pair_features> feature_minors(const Shape_planes& a, const Shape_p
   Pair_features f;
   std::vector<Minor_rows>& out = f.minors;
   out.reserve(a.vertex_triples.size() * m + b.vertex_triples.size() * n + a.edges.size() * b.edges.size());
-  for (const auto& t : a.vertex_triples)
-    for (int q = 0; q < m; ++q) out.push_back({t[0], t[1], t[2], n + q});
-  for (const auto& t : b.vertex_triples)
-    for (int p = 0; p < n; ++p) out.push_back({p, n + t[0], n + t[1], n + t[2]});
-  for (auto [p1, p2] : a.edges)
-    for (auto [q1, q2] : b.edges) out.push_back({p1, p2, n + q1, n + q2});
+  // Parts: each piece's vertices (vertex i on triple i), then its edges.
+  int va = static_cast<int>(a.vertices.size()), vb = static_cast<int>(b.vertices.size());
+  for (int v = 0; v < va; ++v) f.first_parts.push_back({v});
+  for (int v = 0; v < vb; ++v) f.second_parts.push_back({v});
+  f.first_parts.insert(f.first_parts.end(), a.edge_vertices.begin(), a.edge_vertices.end());
+  f.second_parts.insert(f.second_parts.end(), b.edge_vertices.begin(), b.edge_vertices.end());
+  for (int v = 0; v < va; ++v) {
+    const auto& t = a.vertex_triples[v];
+    for (int q = 0; q < m; ++q) {
+      out.push_back({t[0], t[1], t[2], n + q});
+      f.parts.push_back({v, -1});
+    }
+  }
+  for (int v = 0; v < vb; ++v) {
+    const auto& t = b.vertex_triples[v];
+    for (int p = 0; p < n; ++p) {
+      out.push_back({p, n + t[0], n + t[1], n + t[2]});
+      f.parts.push_back({-1, v});
+    }
+  }
+  for (std::size_t e = 0; e < a.edges.size(); ++e)
+    for (std::size_t g = 0; g < b.edges.size(); ++g) {
+      auto [p1, p2] = a.edges[e];
+      auto [q1, q2] = b.edges[g];
+      out.push_back({p1, p2, n + q1, n + q2});
+      f.parts.push_back({va + static_cast<int>(e), vb + static_cast<int>(g)});
+    }
   // Each piece is its one primitive (convex_features): its planes' sides.
   f.sides.assign(n + m, 0);
   for (auto [plane, orientation] : a.primitives.front()) f.sides[plane] = orientation;
@@ -220,25 +241,28 @@ private:
     if (!options_.earliest && in_interval({}, Algebraic(lo), Algebraic(hi))) return true;
     std::vector<Moving_plane> rows = pair_rows(a_, b_, mid);
     end_apart_ = false;
-    if (!features_) return slice(rows, {lo, hi, false});
+    if (!features_) return slice(rows, {lo, hi, false}, nullptr);
     // Two convex pieces: the slices only where they are not surely apart.
     Apart_cover cover(a_, b_, rows, mid);
     Rational sliced_to = lo;
     bool answered = cover.for_each_unsure(lo, hi, [&](const Time_piece& p) {
       sliced_to = p.hi;
-      return slice(rows, p);
+      Pair_features near = cover.near_features(*features_, p.lo, p.hi);
+      return slice(rows, p, &near);
     });
     answer_.counts.apart_intervals += cover.proved_apart();
     end_apart_ = sliced_to < hi;
     return answered;
   }
 
-  // True once the slices of the closed interval p have answered.
-  bool slice(const std::vector<Moving_plane>& rows, const Time_piece& p)
+  // True once the slices of the closed interval p have answered; features:
+  // the events to take there (two convex pieces), or none for every mixed
+  // minor.
+  bool slice(const std::vector<Moving_plane>& rows, const Time_piece& p, const Pair_features* features)
   {
     bool low_rank = !a_.shape.spans_space && !b_.shape.spans_space;
-    std::vector<Critical_time> c = slices_.critical_times(rows, a_.shape.planes.size(), p.lo, p.hi, low_rank,
-                                                            features_ ? &*features_ : nullptr);
+    std::vector<Critical_time> c =
+        slices_.critical_times(rows, a_.shape.planes.size(), p.lo, p.hi, low_rank, features);
     ++answer_.counts.sliced_intervals;
     answer_.counts.critical_times += c.size();
     if (closed_ && !p.after_apart && at_rational(p.lo)) return true;

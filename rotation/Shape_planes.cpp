@@ -119,16 +119,24 @@ void convex_features(const std::vector<Vector3<Rational>>& vertices, const std::
     points.push_back(v);
   }
   if (triples.size() < 4) return;
-  std::map<std::pair<int, int>, int> shared;   // vertices on both planes
-  for (const auto& on : through)
+  // The vertices in the order of their triples (distinct: an independent
+  // triple meets in one point), so that vertex i is on triple i.
+  std::vector<std::size_t> order(triples.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return triples[i] < triples[j]; });
+  std::map<std::pair<int, int>, std::vector<int>> shared;   // the vertices on both planes
+  for (std::size_t v = 0; v < order.size(); ++v) {
+    const std::vector<int>& on = through[order[v]];
     for (std::size_t i = 0; i < on.size(); ++i)
-      for (std::size_t j = i + 1; j < on.size(); ++j) ++shared[{on[i], on[j]}];
-  for (const auto& [pq, n] : shared)
-    if (n >= 2) out.edges.push_back(pq);
-  std::sort(triples.begin(), triples.end());
-  triples.erase(std::unique(triples.begin(), triples.end()), triples.end());
-  out.vertex_triples = std::move(triples);
-  out.vertices = std::move(points);
+      for (std::size_t j = i + 1; j < on.size(); ++j) shared[{on[i], on[j]}].push_back(static_cast<int>(v));
+    out.vertex_triples.push_back(triples[order[v]]);
+    out.vertices.push_back(points[order[v]]);
+  }
+  for (auto& [pq, on] : shared)
+    if (on.size() >= 2) {
+      out.edges.push_back(pq);
+      out.edge_vertices.push_back(std::move(on));
+    }
   out.convex_features = true;
 }
 

@@ -43,8 +43,9 @@ struct Shape_planes {
   // events). convex_features is false otherwise.
   bool convex_features = false;
   std::vector<std::array<int, 3>> vertex_triples;
-  std::vector<Vector3<Rational>> vertices;   // each vertex once, at rest
+  std::vector<Vector3<Rational>> vertices;   // each vertex once, at rest, on its triple
   std::vector<std::pair<int, int>> edges;
+  std::vector<std::vector<int>> edge_vertices;   // per edge, the vertices on its line (its ends)
 };
 
 Shape_planes shape_planes(const Solid& shape);

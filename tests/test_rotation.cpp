@@ -25,7 +25,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <optional>
+#include <set>
 #include <unistd.h>
 
 using namespace clash4d;
@@ -885,7 +887,22 @@ json random_turning_convex_pair(Random_draw& r)
 // included, which is the slow path the events replace.
 struct Feature_counts {
   int collisions = 0, contacts = 0, irrational = 0, unsupported = 0;
+  int double_differs = 0;   // the double's two ways differ, and its feature events answer as exact
 };
+
+// The same verdict, and with --earliest t* within t_error (0: equal).
+bool same_answer(const Rotating_check_answer& a, const Rotating_check_answer& b, bool earliest, double t_error)
+{
+  if (a.collide != b.collide) {
+    BOOST_TEST_MESSAGE("collide " << a.collide << " against " << b.collide);
+    return false;
+  }
+  if (!a.collide || !earliest) return true;
+  const Algebraic &t = a.reported()->answer.t_star, &u = b.reported()->answer.t_star;
+  bool same = t_error == 0 ? compare(t, u) == 0 : std::fabs(t.to_double() - u.to_double()) <= t_error;
+  if (!same) BOOST_TEST_MESSAGE("t* " << t.to_text() << " against " << u.to_text());
+  return same;
+}
 
 // One scene asked four ways (both semantics, with and without --earliest),
 // with the feature events and with every mixed minor: the same refusals,
@@ -921,12 +938,18 @@ void features_answer_as_every_minor_on(const json& sj, const std::string& number
           ++counts.unsupported;
           continue;
         }
-        BOOST_TEST(a->collide == b->collide);
+        if (number == "double" && !same_answer(*a, *b, earliest, t_error)) {
+          // A float subject may miss a touch (docs/rotation.md), and its
+          // two ways then differ: the feature events' answer must be the
+          // exact one, so that the events never make the double worse.
+          ++counts.double_differs;
+          Rotating_check_answer e = check_rotating(scene, features, "exact");
+          BOOST_TEST(same_answer(*a, e, earliest, t_error), "the double differs from every minor's and from exact");
+          continue;
+        }
+        BOOST_TEST(same_answer(*a, *b, earliest, t_error));
         if (!a->collide || !b->collide || !earliest) continue;
         const Algebraic& t = a->reported()->answer.t_star;
-        const Algebraic& u = b->reported()->answer.t_star;
-        if (t_error == 0) BOOST_TEST(compare(t, u) == 0, "t* " << t.to_text() << " against " << u.to_text());
-        else BOOST_TEST(std::fabs(t.to_double() - u.to_double()) <= t_error, "t* " << t.to_text() << " against " << u.to_text());
         (sem == Semantics::closed ? counts.contacts : counts.collisions) += 1;
         counts.irrational += !t.is_rational();
         const auto& x = a->reported()->answer.contact;
@@ -954,7 +977,8 @@ void features_answer_as_every_minor(const std::string& number, int share, double
   }
   BOOST_TEST_MESSAGE("feature events, " << number << ": " << counts.collisions << " collisions, " << counts.contacts
                                         << " contacts, " << counts.irrational << " irrational t*, " << counts.unsupported
-                                        << " unsupported");
+                                        << " unsupported, " << counts.double_differs
+                                        << " where the double's every minor differs and its events answer as exact");
   BOOST_TEST(counts.collisions + counts.contacts > 0);
 }
 
@@ -1023,9 +1047,10 @@ BOOST_AUTO_TEST_CASE(feature_events_answer_as_every_minor) { features_answer_as_
 
 // The double stage (the float subject) takes the same feature minors
 // (Double_slices.h): its answers are those of the double stage with every
-// mixed minor, t* to 1e-9. (Not held to exact: a float subject may miss a
-// touch, docs/rotation.md.) 30 scenes, some 5 s (the sanitizer run's 30
-// gives 2).
+// mixed minor, t* to 1e-9, or, where those differ (a float subject may
+// miss a touch, docs/rotation.md: seed 41's cases 18 and 65, where the
+// double's every minor is wrong), exact's. 30 scenes, some 5 s (the
+// sanitizer run's 30 gives 2).
 BOOST_AUTO_TEST_CASE(double_feature_events_answer_as_every_minor) { features_answer_as_every_minor("double", 30, 1e-9); }
 
 // Blocks turning about z on one floor: features identically zero that
@@ -1185,4 +1210,181 @@ BOOST_AUTO_TEST_CASE(slice_counts_of_a_turning_block)
     BOOST_TEST(hit.counts.critical_times >= 1u);
     BOOST_TEST(hit.counts.static_questions >= 1u);
   }
+}
+
+namespace {
+
+// Where the pose segment in force at t puts a point p of o's shape at rest
+// (x = N(q) p / |q|^2 + c, docs/rotation.md), and back (p = N(q)^T (x - c)
+// / |q|^2, N(q) being |q|^2 times a rotation). The rotation stage's shape
+// coordinates: a motion without rotation has its shape at its first place.
+std::array<std::array<Rational, 3>, 3> rotation_at(const Pose_segment& s, const Rational& t)
+{
+  auto n = unnormalised_rotation(s.q);
+  std::array<std::array<Rational, 3>, 3> out;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) out[i][j] = n[i][j].at(t);
+  return out;
+}
+
+Rational norm_at(const Pose_segment& s, const Rational& t)
+{
+  Rational n = 0;
+  for (const auto& qi : s.q) n += qi.at(t) * qi.at(t);
+  return n;
+}
+
+Point to_world(const Rotating_object& o, const Vector3<Rational>& p, const Rational& t)
+{
+  const Pose_segment& s = segment_at(o.segments, t);
+  auto R = rotation_at(s, t);
+  Rational n = norm_at(s, t);
+  Point out;
+  for (int i = 0; i < 3; ++i) out[i] = (R[i][0] * p[0] + R[i][1] * p[1] + R[i][2] * p[2]) / n + s.c[i].at(t);
+  return out;
+}
+
+// Whether a point is in o's one closed convex piece (its one primitive's
+// half-spaces) at time t.
+bool in_closed_piece(const Rotating_object& o, const Point& x, const Rational& t)
+{
+  const Pose_segment& s = segment_at(o.segments, t);
+  auto R = rotation_at(s, t);
+  Rational n = norm_at(s, t);
+  Point d = {x[0] - s.c[0].at(t), x[1] - s.c[1].at(t), x[2] - s.c[2].at(t)}, p;
+  for (int i = 0; i < 3; ++i) p[i] = (R[0][i] * d[0] + R[1][i] * d[1] + R[2][i] * d[2]) / n;
+  for (auto [plane, orientation] : o.shape.primitives.front()) {
+    const auto& h = o.shape.planes[plane];
+    if (orientation * CGAL::sign(h[0] * p[0] + h[1] * p[1] + h[2] * p[2] + h[3]) > 0) return false;
+  }
+  return true;
+}
+
+// Whether a part of o's piece (a vertex, or an edge: its two ends' hull)
+// meets the other's closed piece at time t, at one of five points along it.
+bool part_meets(const Rotating_object& o, const std::vector<int>& part, const Rotating_object& other, const Rational& t)
+{
+  Point u = to_world(o, o.shape.vertices[part.front()], t), v = to_world(o, o.shape.vertices[part.back()], t);
+  for (int k = 0; k <= 4; ++k) {
+    Rational f(k, 4);
+    Point x = {u[0] + f * (v[0] - u[0]), u[1] + f * (v[1] - u[1]), u[2] + f * (v[2] - u[2])};
+    if (in_closed_piece(other, x, t)) return true;
+  }
+  return false;
+}
+
+// The part lists of two pieces' features: vertices, then edges.
+std::vector<std::vector<int>> parts_of(const Shape_planes& s)
+{
+  std::vector<std::vector<int>> out;
+  for (std::size_t v = 0; v < s.vertices.size(); ++v) out.push_back({static_cast<int>(v)});
+  out.insert(out.end(), s.edge_vertices.begin(), s.edge_vertices.end());
+  return out;
+}
+
+} // namespace
+
+// Near features (Apart_cover::near_features; docs/rotation.md, Near
+// features) on the fixture's square turning into a slab, on [1/10, 1/8],
+// which holds t* ~ 0.11439. The block [-1,1]^3 turns about z by an angle
+// in [0, pi/4] there, so its four corners with x = -1 stay at x <= -cos +
+// sin < 0, strictly outside the slab x >= 6/5: their vertex-face features
+// are left out. The corners (1, -1, +-1) reach the slab at t* (the reach
+// cos + sin of the fixture's derivation is theirs): theirs are kept.
+BOOST_AUTO_TEST_CASE(near_features_of_the_square_turning_into_a_slab)
+{
+  Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/rotation/square_into_slab.json");
+  Rotating_object a = Rotating_object::make(scene.objects[0]), b = Rotating_object::make(scene.objects[1]);
+  BOOST_REQUIRE(a.shape.convex_features && b.shape.convex_features);
+  std::vector<Moving_plane> rows;
+  Rational lo(1, 10), hi(1, 8);
+  Apart_cover cover = cover_of(a, b, lo, hi, rows);
+  Pair_features all = *feature_minors(a.shape, b.shape);
+  Pair_features near = cover.near_features(all, lo, hi);
+  std::set<Minor_rows> kept(near.minors.begin(), near.minors.end());
+  BOOST_TEST(near.minors.size() == near.parts.size());
+  int back = 0, touching = 0;
+  for (std::size_t f = 0; f < all.minors.size(); ++f) {
+    auto [pa, pb] = all.parts[f];
+    if (pa < 0 || pb >= 0) continue;   // a's vertices against b's planes
+    const auto& v = a.shape.vertices[pa];
+    if (v[0] == -1) {
+      ++back;
+      BOOST_TEST(!kept.count(all.minors[f]), "a corner at x = -1 kept");
+    }
+    if (v[0] == 1 && v[1] == -1) {
+      ++touching;
+      BOOST_TEST(kept.count(all.minors[f]), "a corner (1, -1, z) left out");
+    }
+  }
+  BOOST_TEST(back == 4 * 6);       // four corners against the slab's six planes
+  BOOST_TEST(touching == 2 * 6);
+}
+
+// On random turning convex pairs and random time intervals, every feature
+// near_features leaves out has a part (its vertex, or one of its edges)
+// that meets the other piece at no time of the interval: exactly, at its
+// ends and two times inside, at five points along an edge. The intervals
+// are random ones and those the apart cover leaves unsure (where the
+// pieces come near, and check_rotating asks). A floor on the features left
+// out keeps the test from passing on a filter that keeps everything.
+BOOST_AUTO_TEST_CASE(near_features_leave_out_only_parts_apart)
+{
+  std::uint64_t seed = stage_tests::env_number("CLASH4D_SEED", 8282);
+  int cases = 40;
+  if (const char* s = std::getenv("CLASH4D_ROTATION_CASES")) cases = std::max(1, std::atoi(s) / 9);
+  BOOST_TEST_MESSAGE("near features: seed " << seed << " (CLASH4D_SEED), " << cases << " scenes");
+  Random_draw r(seed);
+  std::size_t features = 0, left_out = 0;
+  for (int i = 0; i < cases; ++i) {
+    json sj = random_turning_convex_pair(r);
+    Scene scene = parse_scene(sj);
+    Rotating_object a = Rotating_object::make(scene.objects[0]), b = Rotating_object::make(scene.objects[1]);
+    if (!a.shape.convex_features || !b.shape.convex_features) continue;
+    Pair_features all = *feature_minors(a.shape, b.shape);
+    std::vector<std::vector<int>> parts_a = parts_of(a.shape), parts_b = parts_of(b.shape);
+    // Three random intervals, and the runs the cover leaves unsure on each
+    // piece between the motions' breakpoints: those check_rotating asks.
+    std::vector<std::pair<Rational, Rational>> asked;
+    for (int k = 0; k < 3; ++k) {
+      Rational lo(static_cast<int>(r.range(0, 47)), 16);
+      asked.emplace_back(lo, lo + Rational(static_cast<int>(r.range(1, 4)), 16 << static_cast<int>(r.range(0, 3))));
+    }
+    std::vector<Rational> ends = piece_ends(a, b, Rational(0), Rational(3));
+    for (std::size_t e = 0; e + 1 < ends.size(); ++e) {
+      std::vector<Moving_plane> rows;
+      cover_of(a, b, ends[e], ends[e + 1], rows).for_each_unsure(ends[e], ends[e + 1], [&](const Time_piece& p) {
+        asked.emplace_back(p.lo, p.hi);
+        return false;
+      });
+    }
+    for (const auto& [lo, hi] : asked) {
+      Rational at = (lo + hi) / 2;
+      const Pose_segment &sa = segment_at(a.segments, at), &sb = segment_at(b.segments, at);
+      if (!sa.holds(lo) || !sa.holds(hi) || !sb.holds(lo) || !sb.holds(hi)) continue;
+      std::vector<Moving_plane> rows;
+      Pair_features near = cover_of(a, b, lo, hi, rows).near_features(all, lo, hi);
+      std::set<Minor_rows> kept(near.minors.begin(), near.minors.end());
+      features += all.minors.size();
+      std::map<std::pair<int, int>, bool> apart;   // (piece, part): meets the other at no time asked
+      auto part_apart = [&](int piece, int part) {
+        auto [it, added] = apart.try_emplace({piece, part}, true);
+        if (added)
+          for (const Rational& t : {lo, hi, at, lo + (hi - lo) / 3})
+            if (piece == 0 ? part_meets(a, parts_a[part], b, t) : part_meets(b, parts_b[part], a, t))
+              it->second = false;
+        return it->second;
+      };
+      for (std::size_t f = 0; f < all.minors.size(); ++f) {
+        if (kept.count(all.minors[f])) continue;
+        ++left_out;
+        auto [pa, pb] = all.parts[f];
+        BOOST_TEST(((pa >= 0 && part_apart(0, pa)) || (pb >= 0 && part_apart(1, pb))),
+                   "seed " << seed << " case " << i << ": feature " << f << " left out on [" << lo << ", " << hi
+                           << "], its parts meet: " << sj.dump());
+      }
+    }
+  }
+  BOOST_TEST_MESSAGE("near features: " << left_out << " of " << features << " left out");
+  BOOST_TEST(left_out * 4 >= features);
 }
