@@ -167,9 +167,11 @@ std::vector<Algebraic> roots_inside(const std::vector<Polynomial_conflict>& proo
 // the pair's planes, or of each pair of pieces whose swept boxes meet when
 // an object is a union of convex pieces (every term pair's conflicts are
 // minors of its two pieces' rows, and each pair of pieces answers as one
-// between its own critical times); of the features only when
-// features_only and every pair has them, none identically zero there
-// (rotation/Critical_times.h). `restricted`: whether some pair's are its
+// between its own critical times); when features_only, of two convex
+// pieces' features only, and only of those near each other in the runs
+// their apart cover leaves (rotation/Object_parts.h, part_pair_events: a
+// cut is only where a proof may change, and each leaf's proof is checked
+// on the whole leaf below). `restricted`: whether some pair's are its
 // features' only (every mixed minor's may then cut further).
 std::vector<Algebraic> Turning_prover::critical_cuts(const Rational& mid, const Rational& lo, const Rational& piece_hi,
                                                      const Algebraic& hi, bool features_only, bool& restricted) const
@@ -177,10 +179,8 @@ std::vector<Algebraic> Turning_prover::critical_cuts(const Rational& mid, const 
   std::vector<Algebraic> cuts{Algebraic(lo)};
   restricted = false;
   for_parts_that_may_meet(*parts_a_, *parts_b_, [&](const Rotating_object& a, const Rotating_object& b) {
-    Critical_times critical = part_pair_times(a, b, pair_rows(a, b, mid), lo, piece_hi, features_only);
-    restricted = restricted || critical.restricted();
-    for (const Critical_time& c : critical.times())
-      if (c.t < hi) cuts.push_back(c.t);
+    for (Algebraic& t : part_pair_events(a, b, pair_rows(a, b, mid), mid, lo, piece_hi, features_only, restricted))
+      if (t < hi) cuts.push_back(std::move(t));
     return false;
   });
   std::sort(cuts.begin() + 1, cuts.end(), [](const Algebraic& x, const Algebraic& y) { return x < y; });

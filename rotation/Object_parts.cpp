@@ -1,4 +1,5 @@
 #include "rotation/Object_parts.h"
+#include "rotation/Apart_cover.h"
 
 namespace clash4d {
 
@@ -79,6 +80,31 @@ Critical_times part_pair_times(const Rotating_object& a, const Rotating_object& 
   std::optional<Pair_features> features;
   if (features_only) features = feature_minors(a.shape, b.shape);
   return features ? Critical_times(rows, split, lo, hi, low_rank, *features) : Critical_times(rows, split, lo, hi, low_rank);
+}
+
+std::vector<Algebraic> part_pair_events(const Rotating_object& a, const Rotating_object& b,
+                                        const std::vector<Moving_plane>& rows, const Rational& at, const Rational& lo,
+                                        const Rational& hi, bool features_only, bool& restricted)
+{
+  std::vector<Algebraic> out;
+  auto take = [&](const Critical_times& c) {
+    restricted = restricted || c.restricted();
+    for (const Critical_time& t : c.times()) out.push_back(t.t);
+  };
+  std::optional<Pair_features> features;
+  if (features_only) features = feature_minors(a.shape, b.shape);
+  if (!features) {
+    take(part_pair_times(a, b, rows, lo, hi, false));
+    return out;
+  }
+  restricted = true;
+  bool low_rank = !a.shape.spans_space && !b.shape.spans_space;
+  Apart_cover cover(a, b, rows, at);
+  cover.for_each_unsure(lo, hi, [&](const Time_piece& p) {
+    take(Critical_times(rows, a.shape.planes.size(), p.lo, p.hi, low_rank, cover.near_features(*features, p.lo, p.hi)));
+    return false;
+  });
+  return out;
 }
 
 } // namespace clash4d

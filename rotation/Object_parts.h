@@ -65,6 +65,16 @@ void for_parts_that_may_meet(const Object_parts& a, const Object_parts& b, F&& f
 Critical_times part_pair_times(const Rotating_object& a, const Rotating_object& b, const std::vector<Moving_plane>& rows,
                                const Rational& lo, const Rational& hi, bool features_only);
 
+// The times on (lo, hi) where the answer about two parts may change, for
+// the certificate writer's cuts: part_pair_times' critical times, but for
+// two convex pieces with features_only only in the runs the apart cover
+// leaves on [lo, hi] and of their near features there (Apart_cover.h;
+// docs/rotation.md, Near features). rows: pair_rows at `at`, a time of
+// [lo, hi]. restricted: set when they are some features' only.
+std::vector<Algebraic> part_pair_events(const Rotating_object& a, const Rotating_object& b,
+                                        const std::vector<Moving_plane>& rows, const Rational& at, const Rational& lo,
+                                        const Rational& hi, bool features_only, bool& restricted);
+
 } // namespace clash4d
 
 #endif
