@@ -84,19 +84,30 @@ public:
 
   // Each coefficient is enclosed once, and each piece's ends are enclosed
   // from lo's and hi's intervals (a sure enclosure of the exact piece).
-  Interval_rows(const std::vector<Moving_plane>& planes, const Rational& lo, const Rational& hi)
+  // Only the rows `used` marks are enclosed (all when it is empty): the
+  // others are never asked about.
+  Interval_rows(const std::vector<Moving_plane>& planes, const Rational& lo, const Rational& hi,
+                const std::vector<bool>& used = {})
       : middle_((lo + hi) / 2)
   {
     CGAL::Protect_FPU_rounding<true> upward;
-    std::vector<std::array<Interval_poly, 4>> rows;
-    rows.reserve(planes.size());
-    for (const Moving_plane& h : planes) rows.push_back({enclosed(h[0]), enclosed(h[1]), enclosed(h[2]), enclosed(h[3])});
+    std::vector<std::array<Interval_poly, 4>> rows(planes.size());
+    for (std::size_t r = 0; r < planes.size(); ++r)
+      if (used.empty() || used[r]) {
+        const Moving_plane& h = planes[r];
+        rows[r] = {enclosed(h[0]), enclosed(h[1]), enclosed(h[2]), enclosed(h[3])};
+      }
     I low(CGAL::to_interval(lo)), width = I(CGAL::to_interval(hi)) - low;
     at_.resize(pieces);
     for (int k = 0; k < pieces; ++k) {
       I from = low + width * I(k) / I(pieces), to = low + width * I(k + 1) / I(pieces);
       I t(from.inf(), to.sup());
-      for (const auto& e : rows) at_[k].push_back({e[0].at(t), e[1].at(t), e[2].at(t), e[3].at(t)});
+      at_[k].resize(rows.size(), {I(0), I(0), I(0), I(0)});
+      for (std::size_t r = 0; r < rows.size(); ++r)
+        if (used.empty() || used[r]) {
+          const auto& e = rows[r];
+          at_[k][r] = {e[0].at(t), e[1].at(t), e[2].at(t), e[3].at(t)};
+        }
     }
   }
 
@@ -248,11 +259,18 @@ Critical_times::Critical_times(const std::vector<Moving_plane>& planes, std::siz
                                const Rational& hi, bool low_rank, const Pair_features& features)
 {
   check_feature_minor_count(features.minors.size(), planes.size(), first_count);
-  std::vector<Int_row> rows;
-  rows.reserve(planes.size());
-  for (const Moving_plane& h : planes) rows.push_back(integer_row(h));
+  // Only the rows of the features are made (near features: a few of the
+  // pair's planes); the others stay zero and are never read.
+  std::vector<bool> used(planes.size(), false);
+  for (const Minor_rows& m : features.minors)
+    for (int r : m)
+      if (r >= 0) used[r] = true;
+  std::vector<Int_row> rows(planes.size());
+  for (std::size_t r = 0; r < planes.size(); ++r)
+    if (used[r]) rows[r] = integer_row(planes[r]);
   Minor_table table;
-  if (!enumerate_feature_minors(rows, static_cast<int>(first_count), features, Interval_rows(planes, lo, hi), table)) {
+  if (!enumerate_feature_minors(rows, static_cast<int>(first_count), features, Interval_rows(planes, lo, hi, used),
+                                table)) {
     // A feature incidence that holds on the whole interval and may mark
     // a touch: the touches are not all marked by a feature minor's root;
     // every mixed minor.
