@@ -42,16 +42,14 @@ void check_feature_minor_count(std::size_t features, std::size_t m, std::size_t 
 // Rotating_pair.cpp, feature_minors), with the side of its plane each piece
 // is on, per row (the first piece's planes, then the second's): +1 where
 // the row's value is <= 0, -1 the other (Shape_planes' orientations).
-// Per minor, the part of each piece that is in the touch its root may mark
-// (docs/rotation.md, Near features): a vertex, an edge, or none, as an
-// index into first_parts (the first piece's) and second_parts, or -1. A
-// part is a list of the piece's vertices (Shape_planes::vertices), its
-// convex hull.
+// Per minor, parts: the part of the first piece and of the second that is
+// in the touch its root may mark (docs/rotation.md, Near features): a
+// vertex v (Shape_planes::vertices), an edge e as (vertex count + e)
+// (Shape_planes::edge_vertices), or -1 for none.
 struct Pair_features {
   std::vector<Minor_rows> minors;
   std::vector<int> sides;
   std::vector<std::array<int, 2>> parts;
-  std::vector<std::vector<int>> first_parts, second_parts;
 };
 
 struct Critical_time {

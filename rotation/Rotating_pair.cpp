@@ -118,12 +118,8 @@ std::optional<Pair_features> feature_minors(const Shape_planes& a, const Shape_p
   Pair_features f;
   std::vector<Minor_rows>& out = f.minors;
   out.reserve(a.vertex_triples.size() * m + b.vertex_triples.size() * n + a.edges.size() * b.edges.size());
-  // Parts: each piece's vertices (vertex i on triple i), then its edges.
+  // Parts: each piece's vertices (vertex v on triple v), then its edges.
   int va = static_cast<int>(a.vertices.size()), vb = static_cast<int>(b.vertices.size());
-  for (int v = 0; v < va; ++v) f.first_parts.push_back({v});
-  for (int v = 0; v < vb; ++v) f.second_parts.push_back({v});
-  f.first_parts.insert(f.first_parts.end(), a.edge_vertices.begin(), a.edge_vertices.end());
-  f.second_parts.insert(f.second_parts.end(), b.edge_vertices.begin(), b.edge_vertices.end());
   for (int v = 0; v < va; ++v) {
     const auto& t = a.vertex_triples[v];
     for (int q = 0; q < m; ++q) {
