@@ -542,6 +542,52 @@ BOOST_AUTO_TEST_CASE(random_roots_against_construction)
   }
 }
 
+// Random products of (t - r)^m and (t^2 - c)^k with c > 0 not a square of
+// a rational (roots +-sqrt c, irrational), negative leads and mixed
+// scales: the Sturm count of distinct roots in (x, y) against the roots
+// known by construction (sqrt c lies in (x, y) exactly when x < sqrt c,
+// by squares, and sqrt c < y). The sequences here take more remainder
+// steps than the rational-root products above.
+BOOST_AUTO_TEST_CASE(random_irrational_roots_against_construction)
+{
+  std::mt19937 rng(20261204);
+  BOOST_TEST_MESSAGE("irrational roots: seed 20261204");
+  auto rational = [&](int range, int den) {
+    mpq_class q(long(rng() % (2 * range + 1)) - range, long(rng() % den + 1));
+    q.canonicalize();
+    return q;
+  };
+  auto below_root = [](const mpq_class& x, const mpq_class& c) { return x < 0 || x * x < c; };   // x < sqrt c
+  for (int round = 0; round < 300; ++round) {
+    Rational_poly p = Rational_poly::constant(rational(5, 7) + mpq_class(11, 2));
+    if (rng() % 2) p = mpq_class(-1) * p;
+    std::vector<mpq_class> squares;   // c of each (t^2 - c) factor: roots -sqrt c, sqrt c
+    std::vector<mpq_class> roots;
+    for (int k = 0, n = int(rng() % 3) + 1; k < n; ++k) {
+      // (3k + 2) / 1 or / 9: in lowest terms, with a numerator 2 mod 3, never a square.
+      mpq_class c(2 + 3 * long(rng() % 7), rng() % 2 ? 1 : 9);
+      if (std::find(squares.begin(), squares.end(), c) == squares.end()) squares.push_back(c);
+      for (int m = 0, mult = int(rng() % 2) + 1; m < mult; ++m) p = p * Rational_poly({-c, 0, 1});
+    }
+    for (int k = 0, n = int(rng() % 3); k < n; ++k) {
+      mpq_class r = rational(4, 5);
+      if (std::find(roots.begin(), roots.end(), r) == roots.end()) roots.push_back(r);
+      for (int m = 0, mult = int(rng() % 3) + 1; m < mult; ++m) p = p * Rational_poly::linear(-r, 1);
+    }
+    mpq_class x = rational(5, 6), y = rational(5, 6);
+    if (x == y) continue;
+    if (y < x) std::swap(x, y);
+    long expected = std::count_if(roots.begin(), roots.end(), [&](const mpq_class& r) { return x < r && r < y; });
+    for (const mpq_class& c : squares) {
+      expected += below_root(x, c) && !below_root(y, c);            // sqrt c in (x, y)
+      expected += below_root(-y, c) && !below_root(-x, c);          // -sqrt c in (x, y): -y < sqrt c < -x
+    }
+    BOOST_TEST(count_roots(p, x, y) == expected, "round " << round);
+    BOOST_TEST(Sturm_sequence(p).count(x, y) == expected, "round " << round);
+    BOOST_TEST(count_roots(p, Real_time(x), Real_time(y)) == expected, "round " << round);
+  }
+}
+
 // Shapes and places of the remaining rules of 8.1, 8.3 and 8.4.
 BOOST_AUTO_TEST_CASE(more_places_of_failure)
 {

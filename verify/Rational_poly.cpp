@@ -1,4 +1,5 @@
 #include "verify/Rational_poly.h"
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -122,17 +123,69 @@ Rational_poly square_free_part(const Rational_poly& f) { return exact_div(f, gcd
 
 namespace {
 
+// The Sturm sequence is kept fraction-free: each member is a positive
+// multiple of the true one (the same signs everywhere), with coprime
+// integer coefficients from the constant term up.
+using Integer_poly = std::vector<mpz_class>;
+
+// A positive multiple of p with coprime integer coefficients; p not zero.
+Integer_poly primitive_integer(const Rational_poly& p)
+{
+  mpz_class den = 1, num = 0;
+  for (const mpq_class& c : p.coefficients()) {
+    mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), c.get_den_mpz_t());
+    mpz_gcd(num.get_mpz_t(), num.get_mpz_t(), c.get_num_mpz_t());
+  }
+  Integer_poly out;
+  for (const mpq_class& c : p.coefficients()) out.push_back(c.get_num() * (den / c.get_den()) / num);
+  return out;
+}
+
+// The sign of p at x = n/d (d > 0): of d^deg p(n/d), an integer.
+int sign_at(const Integer_poly& p, const mpq_class& x)
+{
+  mpz_class v = 0, dpow = 1;
+  const mpz_class &n = x.get_num(), &d = x.get_den();
+  for (std::size_t i = p.size(); i-- > 0;) {
+    v = v * n + p[i] * dpow;
+    dpow *= d;
+  }
+  return sgn(v);
+}
+
 // Sign changes of the sequence at x, zeros skipped.
-long variations(const std::vector<Rational_poly>& seq, const mpq_class& x)
+long variations(const std::vector<Integer_poly>& seq, const mpq_class& x)
 {
   long changes = 0;
   int last = 0;
-  for (const Rational_poly& p : seq) {
-    int s = sgn(p(x));
+  for (const Integer_poly& p : seq) {
+    int s = sign_at(p, x);
     if (s != 0 && last != 0 && s != last) ++changes;
     if (s != 0) last = s;
   }
   return changes;
+}
+
+// A positive multiple of the remainder of a by b (deg b >= 0), divided by
+// its content: pseudo-division by |lc(b)|, which keeps the sign, with
+// deg a - deg b + 1 steps (the remainder of |lc(b)|^(that) a by b).
+Integer_poly positive_remainder(Integer_poly r, const Integer_poly& b)
+{
+  std::size_t db = b.size() - 1;
+  mpz_class l = abs(b.back());
+  int s = sgn(b.back());
+  // Step k cancels the coefficient of t^(k + db), for k = deg r - db down to 0.
+  for (std::size_t k = r.size() > db ? r.size() - db : 0; k-- > 0;) {
+    mpz_class lead = r[k + db] * s;
+    for (mpz_class& c : r) c *= l;
+    for (std::size_t i = 0; i <= db; ++i) r[k + i] -= lead * b[i];
+  }
+  r.resize(std::min(r.size(), db));
+  while (!r.empty() && r.back() == 0) r.pop_back();
+  mpz_class g = 0;
+  for (const mpz_class& c : r) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c.get_mpz_t());
+  for (mpz_class& c : r) mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), g.get_mpz_t());
+  return r;
 }
 
 // f divided by (t - x) as long as it divides.
@@ -146,6 +199,20 @@ Rational_poly without_root(Rational_poly f, const mpq_class& x)
   return f;
 }
 
+// Sturm: f, f', then minus the remainders; a positive scale keeps signs.
+// f of degree at least one.
+std::vector<Integer_poly> sturm(const Rational_poly& f)
+{
+  std::vector<Integer_poly> seq{primitive_integer(f), primitive_integer(f.derivative())};
+  while (true) {
+    Integer_poly r = positive_remainder(seq[seq.size() - 2], seq.back());
+    if (r.empty()) break;
+    for (mpz_class& c : r) c = -c;
+    seq.push_back(std::move(r));
+  }
+  return seq;
+}
+
 } // namespace
 
 long count_roots(const Rational_poly& f0, const mpq_class& x, const mpq_class& y)
@@ -153,16 +220,21 @@ long count_roots(const Rational_poly& f0, const mpq_class& x, const mpq_class& y
   if (f0.is_zero()) throw std::logic_error("counting the roots of the zero polynomial");
   Rational_poly f = without_root(without_root(f0, x), y);
   if (f.degree() <= 0) return 0;
-  // Sturm: f, f', then minus the remainders; a positive scale keeps signs.
-  auto scaled = [](const Rational_poly& p) { return mpq_class(1 / abs(p.lead())) * p; };
-  std::vector<Rational_poly> seq{scaled(f), scaled(f.derivative())};
-  Rational_poly q, r;
-  while (true) {
-    divmod(seq[seq.size() - 2], seq.back(), q, r);
-    if (r.is_zero()) break;
-    seq.push_back(-scaled(r));
-  }
+  std::vector<Integer_poly> seq = sturm(f);
   return variations(seq, x) - variations(seq, y);
+}
+
+Sturm_sequence::Sturm_sequence(const Rational_poly& f) : f_(f)
+{
+  if (f.is_zero()) throw std::logic_error("counting the roots of the zero polynomial");
+  if (f.degree() > 0) seq_ = sturm(f);
+}
+
+long Sturm_sequence::count(const mpq_class& x, const mpq_class& y) const
+{
+  if (f_.degree() <= 0) return 0;
+  if (f_(x) == 0 || f_(y) == 0) return count_roots(f_, x, y);
+  return variations(seq_, x) - variations(seq_, y);
 }
 
 } // namespace clash4d::verifier

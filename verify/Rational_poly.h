@@ -58,6 +58,20 @@ Rational_poly square_free_part(const Rational_poly& f);
 // roots at the ends divided out, then Sturm's V(x) - V(y).
 long count_roots(const Rational_poly& f, const mpq_class& x, const mpq_class& y);
 
+// f's Sturm sequence, made once for the many intervals a refinement asks
+// about (each halving of an isolating interval asks again).
+class Sturm_sequence {
+public:
+  explicit Sturm_sequence(const Rational_poly& f);   // f not zero
+  // count_roots(f, x, y): V(x) - V(y) on the sequence when neither end is
+  // a root of f, else count_roots itself (the ends' roots divided out).
+  long count(const mpq_class& x, const mpq_class& y) const;
+
+private:
+  Rational_poly f_;
+  std::vector<std::vector<mpz_class>> seq_;   // positive multiples of its members, integer coefficients
+};
+
 } // namespace clash4d::verifier
 
 #endif

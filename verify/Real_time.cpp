@@ -34,7 +34,8 @@ int sign_at(const Rational_poly& p, const Real_time& r0)
   Rational_poly g = gcd(p, r0.poly());
   if (g.degree() > 0 && count_roots(g, r0.lo(), r0.hi()) > 0) return 0;
   Real_time r = r0;
-  while (!r.exact() && count_roots(p, r.lo(), r.hi()) > 0) r.refine();
+  Sturm_sequence roots(p);
+  while (!r.exact() && roots.count(r.lo(), r.hi()) > 0) r.refine();
   return r.exact() ? sgn(p(r.value())) : sgn(p((r.lo() + r.hi()) / 2));
 }
 
@@ -73,10 +74,10 @@ mpq_class rational_between(Real_time a, Real_time b)
 namespace {
 
 // Refine r until its interval holds no root of f but possibly r itself.
-void isolate_from(const Rational_poly& f, Real_time& r)
+void isolate_from(const Rational_poly& f, const Sturm_sequence& roots, Real_time& r)
 {
   long own = sign_at(f, r) == 0 ? 1 : 0;
-  while (!r.exact() && count_roots(f, r.lo(), r.hi()) > own) r.refine();
+  while (!r.exact() && roots.count(r.lo(), r.hi()) > own) r.refine();
 }
 
 } // namespace
@@ -87,10 +88,11 @@ void isolate_from(const Rational_poly& f, Real_time& r)
 long count_roots(const Rational_poly& f, Real_time a, Real_time b)
 {
   if (!less(a, b)) throw std::logic_error("counting roots in an empty interval of TIMEs");   // the loops below need a < b
-  isolate_from(f, a), isolate_from(f, b);
+  Sturm_sequence roots(f);
+  isolate_from(f, roots, a), isolate_from(f, roots, b);
   while (!(a.upper() <= b.lower())) a.refine(), b.refine();
   mpq_class x = a.upper(), y = b.lower();
-  long n = x < y ? count_roots(f, x, y) : 0;
+  long n = x < y ? roots.count(x, y) : 0;
   bool x_inside = !a.exact() && !(b.exact() && x == b.value());
   bool y_inside = !b.exact() && !(a.exact() && y == a.value()) && !(x_inside && x == y);
   if (x_inside && f(x) == 0) ++n;
