@@ -345,7 +345,8 @@ bool tolerance_explains(const Run& r, const Reference& ref)
 // (empty: none), with the detail. A verdict is "contact" exactly when the
 // scene is one of touching only (regularised no, closed yes) and "input
 // rounding" when exact on the rounded scene already gives the subject's
-// verdict's opposite of exact's.
+// verdict's opposite of exact's, or is the subject and its witness (exact
+// for the rounded scene) is not one of the true scene.
 std::string classify(const Run& r, const Subject_row& s, Reference& ref, std::string& detail)
 {
   if (s.reference) return "";
@@ -371,7 +372,11 @@ std::string classify(const Run& r, const Subject_row& s, Reference& ref, std::st
   if (s.witness_valid == false) {
     detail = r.subject + "'s witness is not " +
              (r.semantics == "closed" ? "in both closed objects" : "strictly inside both objects") + " of the true scene";
-    return "invalid witness";
+    if (&r != ref.rounded) return "invalid witness";
+    // Exact on the rounded scene: its witness holds there, and only the
+    // rounding of the scene's numbers moved it out.
+    detail += " (it holds in the scene rounded to doubles)";
+    return "input rounding";
   }
   if (beyond_time_bound(r, ref)) {
     detail = r.subject + "'s t* is " + s.t_error.value_or("?") + " from exact " + r.semantics + "'s, beyond the bound " +

@@ -27,7 +27,10 @@
 //                    is a fault with that cause.
 // Every disagreement is classified by its cause:
 //   input rounding   exact (in the subject's semantics) on the rounded scene
-//                    already disagrees with exact on the true one;
+//                    already disagrees with exact on the true one; or the
+//                    subject is exact-rounded, whose witness is exact for
+//                    the rounded scene, and that witness does not hold in
+//                    the true one (the verdicts agree);
 //   contact          the scene is one of touching only: exact regularised
 //                    says no collision and exact closed says the closed
 //                    objects meet (regularised-semantics item 6), so the
@@ -50,7 +53,8 @@
 //   arithmetic       otherwise: the subject's own rounding;
 //   invalid witness  verdicts agree but the subject's witness does not hold
 //                    in the true scene (checked exactly: strictly inside both
-//                    objects, or, closed, in both closed objects).
+//                    objects, or, closed, in both closed objects), the
+//                    subject not being exact-rounded.
 #ifndef CLASH4D_COMPARE_COMPARER_H
 #define CLASH4D_COMPARE_COMPARER_H
 

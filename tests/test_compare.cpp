@@ -39,6 +39,24 @@ BOOST_AUTO_TEST_CASE(decimal_sums_that_miss_are_input_rounding)
   BOOST_TEST(subject(c, "double")["cause"] == "input rounding");
 }
 
+// exact-rounded is exact on the scene rounded to doubles, so its witness
+// holds there; where it does not hold in the true scene, the rounding of
+// the numbers is the cause, never an invalid witness. The scene (a peg
+// turning in a pocket whose walls, 16987/26000 and 15/23, are no doubles;
+// `clash4d fuzz --rotation --seed 20261204 --cases 400`, case 195) is one
+// where it does not: the test requires that, so it cannot pass unasked.
+BOOST_AUTO_TEST_CASE(exact_rounded_witness_outside_the_true_scene_is_input_rounding)
+{
+  const std::string file = std::string(CLASH4D_FIXTURES) + "/../tests/data/compare/exact_rounded_witness_outside.json";
+  Compare_options o;
+  json c = compare_scene(read_scene_file(file), "exact_rounded_witness_outside.json", o).to_json();
+  const json &rounded = subject(c, "exact-rounded"), &exact = subject(c, "exact");
+  BOOST_TEST(rounded["collide"] == exact["collide"]);
+  BOOST_TEST_REQUIRE(rounded["witness_valid"] == false);
+  BOOST_TEST(rounded["cause"] == "input rounding");
+  BOOST_TEST(rounded["agrees"] == false);
+}
+
 BOOST_AUTO_TEST_CASE(integer_contact_is_agreed_by_everyone)
 {
   // Integers are exact in doubles and every sum here is too: the faces x = 1
@@ -81,16 +99,18 @@ BOOST_AUTO_TEST_CASE(causes_follow_their_definitions_on_all_fixtures)
           ++disagreements;
           std::string cause = s["cause"];
           const json& ref = s["semantics"] == "closed" ? closed : exact;   // judged in its own terms
-          if (cause == "invalid witness") {
+          if (cause == "invalid witness" || (cause == "input rounding" && s["collide"] == ref["collide"])) {
+            // A witness that does not hold; exact-rounded's is input rounding.
             BOOST_TEST(s["collide"] == ref["collide"], name);
             BOOST_TEST(s["witness_valid"] == false, name);
+            BOOST_TEST((cause == "input rounding") == (s["subject"] == "exact-rounded"), name);
           } else if (cause == "time") {   // the verdicts agree, the t* do not
             BOOST_TEST(s["collide"] == ref["collide"], name);
             BOOST_TEST(std::stod(s["t_error"].get<std::string>()) > 1e-9, name);
           } else {
             BOOST_TEST(s["collide"] != ref["collide"], name);
           }
-          if (cause == "input rounding" && s["semantics"] == rounded["semantics"])
+          if (cause == "input rounding" && s["semantics"] == rounded["semantics"] && s["collide"] != ref["collide"])
             BOOST_TEST((rounded["ok"] == false || rounded["collide"] != ref["collide"]), name);
           if (cause == "contact") {
             ++contact;
