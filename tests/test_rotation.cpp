@@ -1105,6 +1105,12 @@ Apart_cover cover_of(const Rotating_object& a, const Rotating_object& b, const R
   return Apart_cover(a, b, rows, at);
 }
 
+// The fixture's square turning into a slab, and its two objects.
+struct Square_into_slab {
+  Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/rotation/square_into_slab.json");
+  Rotating_object a = Rotating_object::make(scene.objects[0]), b = Rotating_object::make(scene.objects[1]);
+};
+
 } // namespace
 
 // The apart cover (rotation/Apart_cover.h) on the fixture's square turning
@@ -1116,8 +1122,8 @@ Apart_cover cover_of(const Rotating_object& a, const Rotating_object& b, const R
 // enough from 6/5 for intervals of width 1/32 to prove it.
 BOOST_AUTO_TEST_CASE(apart_cover_of_the_square_turning_into_a_slab)
 {
-  Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/rotation/square_into_slab.json");
-  Rotating_object a = Rotating_object::make(scene.objects[0]), b = Rotating_object::make(scene.objects[1]);
+  Square_into_slab fixture;
+  const Rotating_object &a = fixture.a, &b = fixture.b;
   BOOST_REQUIRE(a.shape.convex_features && b.shape.convex_features);
   std::vector<Moving_plane> rows;
   Apart_cover cover = cover_of(a, b, Rational(0), Rational(1), rows);
@@ -1293,8 +1299,8 @@ std::vector<std::vector<int>> parts_of(const Shape_planes& s)
 // cos + sin of the fixture's derivation is theirs): theirs are kept.
 BOOST_AUTO_TEST_CASE(near_features_of_the_square_turning_into_a_slab)
 {
-  Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/rotation/square_into_slab.json");
-  Rotating_object a = Rotating_object::make(scene.objects[0]), b = Rotating_object::make(scene.objects[1]);
+  Square_into_slab fixture;
+  const Rotating_object &a = fixture.a, &b = fixture.b;
   BOOST_REQUIRE(a.shape.convex_features && b.shape.convex_features);
   std::vector<Moving_plane> rows;
   Rational lo(1, 10), hi(1, 8);
