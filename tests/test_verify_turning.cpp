@@ -588,6 +588,28 @@ BOOST_AUTO_TEST_CASE(random_irrational_roots_against_construction)
   }
 }
 
+// gcd on random products of linear factors and an irreducible quadratic:
+// f g and f h, with g's and h's roots apart from each other and from f's,
+// have the monic gcd f / lead(f), whatever the scales.
+BOOST_AUTO_TEST_CASE(random_gcds_against_construction)
+{
+  std::mt19937 rng(20261205);
+  BOOST_TEST_MESSAGE("gcds: seed 20261205");
+  auto product = [&](int first, int count, long scale) {   // roots first, first + 1, ... over 3
+    Rational_poly p = Rational_poly::constant(mpq_class(scale, 7));
+    for (int k = 0; k < count; ++k) p = p * Rational_poly::linear(mpq_class(-(first + k), 3), 1);
+    return p;
+  };
+  for (int round = 0; round < 200; ++round) {
+    long scale = long(rng() % 4) + 1;
+    Rational_poly f = product(0, int(rng() % 3), rng() % 2 ? scale : -scale);
+    if (rng() % 2) f = f * poly({"3", "0", "1"});   // t^2 + 3: no real root
+    Rational_poly g = product(10, int(rng() % 3) + 1, 2), h = product(20, int(rng() % 3), -3);
+    BOOST_TEST((gcd(f * g, f * h) == f.monic()), "round " << round);
+    BOOST_TEST((gcd(f * h, f * g) == f.monic()), "round " << round);
+  }
+}
+
 // Shapes and places of the remaining rules of 8.1, 8.3 and 8.4.
 BOOST_AUTO_TEST_CASE(more_places_of_failure)
 {

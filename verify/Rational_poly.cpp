@@ -85,14 +85,60 @@ Rational_poly exact_div(const Rational_poly& a, const Rational_poly& b)
   return q;
 }
 
+namespace {
+
+// Remainder sequences (gcds, Sturm) are kept fraction-free: each member
+// is a positive multiple of the true one (the same signs everywhere), with
+// coprime integer coefficients from the constant term up.
+using Integer_poly = std::vector<mpz_class>;
+
+// A positive multiple of p with coprime integer coefficients; p not zero.
+Integer_poly primitive_integer(const Rational_poly& p)
+{
+  mpz_class den = 1, num = 0;
+  for (const mpq_class& c : p.coefficients()) {
+    mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), c.get_den_mpz_t());
+    mpz_gcd(num.get_mpz_t(), num.get_mpz_t(), c.get_num_mpz_t());
+  }
+  Integer_poly out;
+  for (const mpq_class& c : p.coefficients()) out.push_back(c.get_num() * (den / c.get_den()) / num);
+  return out;
+}
+
+// A positive multiple of the remainder of a by b (deg b >= 0), divided by
+// its content: pseudo-division by |lc(b)|, which keeps the sign, with
+// deg a - deg b + 1 steps (the remainder of |lc(b)|^(that) a by b).
+Integer_poly positive_remainder(Integer_poly r, const Integer_poly& b)
+{
+  std::size_t db = b.size() - 1;
+  mpz_class l = abs(b.back());
+  int s = sgn(b.back());
+  // Step k cancels the coefficient of t^(k + db), for k = deg r - db down to 0.
+  for (std::size_t k = r.size() > db ? r.size() - db : 0; k-- > 0;) {
+    mpz_class lead = r[k + db] * s;
+    for (mpz_class& c : r) c *= l;
+    for (std::size_t i = 0; i <= db; ++i) r[k + i] -= lead * b[i];
+  }
+  r.resize(std::min(r.size(), db));
+  while (!r.empty() && r.back() == 0) r.pop_back();
+  mpz_class g = 0;
+  for (const mpz_class& c : r) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c.get_mpz_t());
+  for (mpz_class& c : r) mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), g.get_mpz_t());
+  return r;
+}
+
+} // namespace
+
 Rational_poly gcd(const Rational_poly& a, const Rational_poly& b)
 {
-  Rational_poly x = a, y = b, q, r;
-  while (!y.is_zero()) {
-    divmod(x, y, q, r);
-    x = std::move(y), y = r.monic();   // monic remainders keep the numbers small
+  if (a.is_zero() || b.is_zero()) return (a.is_zero() ? b : a).monic();
+  Integer_poly x = primitive_integer(a), y = primitive_integer(b);
+  while (!y.empty()) {   // Euclid on primitive remainders: the numbers stay small
+    Integer_poly r = positive_remainder(x, y);
+    x = std::move(y), y = std::move(r);
   }
-  return x.monic();
+  std::vector<mpq_class> c(x.begin(), x.end());
+  return Rational_poly(std::move(c)).monic();
 }
 
 std::vector<Rational_poly> square_free_factors(const Rational_poly& f)
@@ -123,24 +169,6 @@ Rational_poly square_free_part(const Rational_poly& f) { return exact_div(f, gcd
 
 namespace {
 
-// The Sturm sequence is kept fraction-free: each member is a positive
-// multiple of the true one (the same signs everywhere), with coprime
-// integer coefficients from the constant term up.
-using Integer_poly = std::vector<mpz_class>;
-
-// A positive multiple of p with coprime integer coefficients; p not zero.
-Integer_poly primitive_integer(const Rational_poly& p)
-{
-  mpz_class den = 1, num = 0;
-  for (const mpq_class& c : p.coefficients()) {
-    mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), c.get_den_mpz_t());
-    mpz_gcd(num.get_mpz_t(), num.get_mpz_t(), c.get_num_mpz_t());
-  }
-  Integer_poly out;
-  for (const mpq_class& c : p.coefficients()) out.push_back(c.get_num() * (den / c.get_den()) / num);
-  return out;
-}
-
 // The sign of p at x = n/d (d > 0): of d^deg p(n/d), an integer.
 int sign_at(const Integer_poly& p, const mpq_class& x)
 {
@@ -164,28 +192,6 @@ long variations(const std::vector<Integer_poly>& seq, const mpq_class& x)
     if (s != 0) last = s;
   }
   return changes;
-}
-
-// A positive multiple of the remainder of a by b (deg b >= 0), divided by
-// its content: pseudo-division by |lc(b)|, which keeps the sign, with
-// deg a - deg b + 1 steps (the remainder of |lc(b)|^(that) a by b).
-Integer_poly positive_remainder(Integer_poly r, const Integer_poly& b)
-{
-  std::size_t db = b.size() - 1;
-  mpz_class l = abs(b.back());
-  int s = sgn(b.back());
-  // Step k cancels the coefficient of t^(k + db), for k = deg r - db down to 0.
-  for (std::size_t k = r.size() > db ? r.size() - db : 0; k-- > 0;) {
-    mpz_class lead = r[k + db] * s;
-    for (mpz_class& c : r) c *= l;
-    for (std::size_t i = 0; i <= db; ++i) r[k + i] -= lead * b[i];
-  }
-  r.resize(std::min(r.size(), db));
-  while (!r.empty() && r.back() == 0) r.pop_back();
-  mpz_class g = 0;
-  for (const mpz_class& c : r) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c.get_mpz_t());
-  for (mpz_class& c : r) mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), g.get_mpz_t());
-  return r;
 }
 
 // f divided by (t - x) as long as it divides.
