@@ -238,7 +238,8 @@ private:
     std::vector<Moving_plane> rows = pair_rows(a_, b_, mid);
     end_apart_ = false;
     if (!features_) return slice(rows, {lo, hi, false}, nullptr);
-    // Two convex pieces: the slices only where they are not surely apart.
+    // Two convex pieces: the slices only where they are not surely apart,
+    // each run with the features that can touch there (near_features).
     Apart_cover cover(a_, b_, rows, mid);
     Rational sliced_to = lo;
     bool answered = cover.for_each_unsure(lo, hi, [&](const Time_piece& p) {
