@@ -28,6 +28,14 @@ Apart_cover::Apart_cover(const Rotating_object& a, const Rotating_object& b, con
   for (const Moving_plane& h : rows) rows_.push_back({enclosed(h[0]), enclosed(h[1]), enclosed(h[2]), enclosed(h[3])});
 }
 
+std::vector<std::array<Apart_cover::I, 4>> Apart_cover::rows_on(const I& t) const
+{
+  std::vector<std::array<I, 4>> rows(rows_.size());
+  for (std::size_t r = 0; r < rows_.size(); ++r)
+    for (int c = 0; c < 4; ++c) rows[r][c] = rows_[r][c].at(t);
+  return rows;
+}
+
 // A vertex v at rest is at N(q) v / |q|^2 + c at time t (the pose's
 // rotation about the shape's origin, then its origin's path).
 std::vector<Apart_cover::Point> Apart_cover::vertices_on(const Side& s, const I& t) const
@@ -105,9 +113,7 @@ Pair_features Apart_cover::near_features(const Pair_features& all, const Rationa
   {
     CGAL::Protect_FPU_rounding<true> upward;
     I t(CGAL::to_interval(lo).first, CGAL::to_interval(hi).second);
-    std::vector<std::array<I, 4>> rows(rows_.size());
-    for (std::size_t r = 0; r < rows_.size(); ++r)
-      for (int c = 0; c < 4; ++c) rows[r][c] = rows_[r][c].at(t);
+    std::vector<std::array<I, 4>> rows = rows_on(t);
     far_a = far_parts(b_, rows, vertices_on(a_, t), a_.edges);
     far_b = far_parts(a_, rows, vertices_on(b_, t), b_.edges);
   }
@@ -125,9 +131,7 @@ bool Apart_cover::apart_on(const Rational& lo, const Rational& hi) const
   if (a_.vertices.empty() || b_.vertices.empty()) return false;
   CGAL::Protect_FPU_rounding<true> upward;
   I t(CGAL::to_interval(lo).first, CGAL::to_interval(hi).second);
-  std::vector<std::array<I, 4>> rows(rows_.size());
-  for (std::size_t r = 0; r < rows_.size(); ++r)
-    for (int c = 0; c < 4; ++c) rows[r][c] = rows_[r][c].at(t);
+  std::vector<std::array<I, 4>> rows = rows_on(t);
   return separates(a_, rows, vertices_on(b_, t)) || separates(b_, rows, vertices_on(a_, t));
 }
 

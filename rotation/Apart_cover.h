@@ -125,6 +125,8 @@ private:
 
   static Side side(const Rotating_object& o, const Rational& at, std::size_t first_row);
   std::vector<Point> vertices_on(const Side& s, const I& t) const;
+  // The rows over the times t, under the caller's rounding guard.
+  std::vector<std::array<I, 4>> rows_on(const I& t) const;
   // Whether some row of s has every point strictly outside it.
   static bool separates(const Side& s, const std::vector<std::array<I, 4>>& rows, const std::vector<Point>& points);
   // Per part of the other piece (its vertices, then its edges), whether

@@ -91,23 +91,20 @@ public:
       : middle_((lo + hi) / 2)
   {
     CGAL::Protect_FPU_rounding<true> upward;
+    auto wanted = [&](std::size_t r) { return used.empty() || used[r]; };
     std::vector<std::array<Interval_poly, 4>> rows(planes.size());
     for (std::size_t r = 0; r < planes.size(); ++r)
-      if (used.empty() || used[r]) {
+      if (wanted(r)) {
         const Moving_plane& h = planes[r];
         rows[r] = {enclosed(h[0]), enclosed(h[1]), enclosed(h[2]), enclosed(h[3])};
       }
     I low(CGAL::to_interval(lo)), width = I(CGAL::to_interval(hi)) - low;
-    at_.resize(pieces);
+    at_.assign(pieces, std::vector<std::array<I, 4>>(rows.size(), {I(0), I(0), I(0), I(0)}));
     for (int k = 0; k < pieces; ++k) {
       I from = low + width * I(k) / I(pieces), to = low + width * I(k + 1) / I(pieces);
       I t(from.inf(), to.sup());
-      at_[k].resize(rows.size(), {I(0), I(0), I(0), I(0)});
       for (std::size_t r = 0; r < rows.size(); ++r)
-        if (used.empty() || used[r]) {
-          const auto& e = rows[r];
-          at_[k][r] = {e[0].at(t), e[1].at(t), e[2].at(t), e[3].at(t)};
-        }
+        if (wanted(r)) at_[k][r] = {rows[r][0].at(t), rows[r][1].at(t), rows[r][2].at(t), rows[r][3].at(t)};
     }
   }
 
