@@ -111,15 +111,8 @@ public:
   CGAL::Uncertain<bool> is_nonnegative(const FT& x, bool strict) const { return strict ? x > 0 : x >= 0; }
   FT from_rational(const Rational& q) const
   {
-    // A numerator and denominator of at most 53 bits are exact doubles, and
-    // their quotient as intervals (rounding upward, as everywhere here)
-    // encloses q as tightly as the general conversion, at a fraction of its
-    // cost; an integer is its own point.
-    double n = 0, d = 0;
-    if (!small_double(mpq_numref(q.mpq()), n) || !small_double(mpq_denref(q.mpq()), d)) return FT(CGAL::to_interval(q));
-    if (d == 1) return FT(n);
-    // d > 0 (GMP's canonical form); rounding upward, -(-n / d) rounds down.
-    return FT(-(-n / d), n / d);
+    // Rounding upward, as everywhere here (numbers/Rational.h).
+    return FT(enclosing_interval(q));
   }
   // The reader's enclosure of a.q: CGAL's, the tightest (tests/
   // test_numbers.cpp holds it equal to from_rational's).

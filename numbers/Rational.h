@@ -58,6 +58,20 @@ inline double nearest_double(const Rational& q)
   return round_to_nearest(q);
 }
 
+// An interval of doubles that surely holds q, read under upward rounding
+// (the interval filters' guard, CGAL::Protect_FPU_rounding<true>): with a
+// numerator and denominator of at most 53 bits (exact doubles), their
+// quotient rounded down and up, which is as tight as the general
+// conversion and q itself when q is a double; else CGAL's (MPFR), which
+// the quick path spares the filters on nearly every number of a scene.
+inline std::pair<double, double> enclosing_interval(const Rational& q)
+{
+  double n = 0, d = 0;
+  if (!small_double(mpq_numref(q.mpq()), n) || !small_double(mpq_denref(q.mpq()), d)) return CGAL::to_interval(q);
+  // d > 0 (GMP's canonical form); rounding upward, -(-n / d) rounds down.
+  return {-(-n / d), n / d};
+}
+
 // 2^e as a double, made from its bits in the normal range (no libm call:
 // the grid roundings of the search take it on every comparison).
 inline double power_of_two_double(int e)

@@ -2,17 +2,20 @@
 
 namespace clash4d {
 
+// Under the caller's rounding guard: the pose's numbers enclosed once, and
+// N(q(t)) and |q(t)|^2 made from them in intervals (the same formulas as
+// the exact rows, so the same structural zeros: a vertical plane turning
+// about z keeps an exactly zero z part).
 Apart_cover::Side Apart_cover::side(const Rotating_object& o, const Rational& at, std::size_t first_row)
 {
   const Pose_segment& s = segment_at(o.segments, at);
   Side out;
-  auto n = unnormalised_rotation(s.q);
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) out.rotation[r][c] = enclosed(n[r][c]);
-  out.norm = enclosed(s.q[0] * s.q[0] + s.q[1] * s.q[1] + s.q[2] * s.q[2] + s.q[3] * s.q[3]);
+  std::array<Interval_poly, 4> q = {enclosed(s.q[0]), enclosed(s.q[1]), enclosed(s.q[2]), enclosed(s.q[3])};
+  out.rotation = unnormalised_rotation(q);
+  out.norm = squared_norm(q);
   for (int k = 0; k < 3; ++k) out.origin[k] = enclosed(s.c[k]);
   for (const auto& v : o.shape.vertices)
-    out.vertices.push_back({I(CGAL::to_interval(v[0])), I(CGAL::to_interval(v[1])), I(CGAL::to_interval(v[2]))});
+    out.vertices.push_back({I(enclosing_interval(v[0])), I(enclosing_interval(v[1])), I(enclosing_interval(v[2]))});
   out.orientation.assign(o.shape.planes.size(), 0);
   if (o.shape.convex_pieces.size() == 1)
     for (auto [plane, orientation] : o.shape.convex_pieces.front()) out.orientation[plane] = orientation;
@@ -21,11 +24,25 @@ Apart_cover::Side Apart_cover::side(const Rotating_object& o, const Rational& at
   return out;
 }
 
-Apart_cover::Apart_cover(const Rotating_object& a, const Rotating_object& b, const std::vector<Moving_plane>& rows,
-                         const Rational& at)
-  : a_(side(a, at, 0)), b_(side(b, at, a.shape.planes.size()))
+// The planes' rows in intervals, from the sides' enclosed poses: no exact
+// row is made before the cover leaves a run (fact 9's polynomials, bounded
+// surely by interval arithmetic on enclosures of their inputs).
+void Apart_cover::add_rows(const Rotating_object& o, const Side& s)
 {
-  for (const Moving_plane& h : rows) rows_.push_back({enclosed(h[0]), enclosed(h[1]), enclosed(h[2]), enclosed(h[3])});
+  for (const Plane3<Rational>& p : o.shape.planes) {
+    std::array<I, 4> e = {I(enclosing_interval(p[0])), I(enclosing_interval(p[1])), I(enclosing_interval(p[2])),
+                          I(enclosing_interval(p[3]))};
+    rows_.push_back(moved_plane(e, s.rotation, s.norm, s.origin));
+  }
+}
+
+Apart_cover::Apart_cover(const Rotating_object& a, const Rotating_object& b, const Rational& at)
+{
+  CGAL::Protect_FPU_rounding<true> upward;
+  a_ = side(a, at, 0);
+  b_ = side(b, at, a.shape.planes.size());
+  add_rows(a, a_);
+  add_rows(b, b_);
 }
 
 std::vector<std::array<Apart_cover::I, 4>> Apart_cover::rows_on(const I& t) const
@@ -112,7 +129,7 @@ Pair_features Apart_cover::near_features(const Pair_features& all, const Rationa
   std::vector<bool> far_a, far_b;
   {
     CGAL::Protect_FPU_rounding<true> upward;
-    I t(CGAL::to_interval(lo).first, CGAL::to_interval(hi).second);
+    I t(enclosing_interval(lo).first, enclosing_interval(hi).second);
     std::vector<std::array<I, 4>> rows = rows_on(t);
     far_a = far_parts(b_, rows, vertices_on(a_, t), a_.edges);
     far_b = far_parts(a_, rows, vertices_on(b_, t), b_.edges);
@@ -130,7 +147,7 @@ bool Apart_cover::apart_on(const Rational& lo, const Rational& hi) const
 {
   if (a_.vertices.empty() || b_.vertices.empty()) return false;
   CGAL::Protect_FPU_rounding<true> upward;
-  I t(CGAL::to_interval(lo).first, CGAL::to_interval(hi).second);
+  I t(enclosing_interval(lo).first, enclosing_interval(hi).second);
   std::vector<std::array<I, 4>> rows = rows_on(t);
   return separates(a_, rows, vertices_on(b_, t)) || separates(b_, rows, vertices_on(a_, t));
 }

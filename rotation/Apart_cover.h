@@ -33,10 +33,8 @@ public:
   static constexpr int max_depth = 6;
 
   // a, b: two bounded, full-dimensional convex pieces (Shape_planes::
-  // convex_features), under the pose segments in force at time `at`;
-  // rows: their planes there (a's, then b's), as pair_rows makes them.
-  Apart_cover(const Rotating_object& a, const Rotating_object& b, const std::vector<Moving_plane>& rows,
-              const Rational& at);
+  // convex_features), under the pose segments in force at time `at`.
+  Apart_cover(const Rotating_object& a, const Rotating_object& b, const Rational& at);
 
   // Whether the pieces are surely apart at every time of [lo, hi].
   bool apart_on(const Rational& lo, const Rational& hi) const;
@@ -124,6 +122,8 @@ private:
   };
 
   static Side side(const Rotating_object& o, const Rational& at, std::size_t first_row);
+  // Appends o's planes under s to the rows (a's, then b's, as pair_rows).
+  void add_rows(const Rotating_object& o, const Side& s);
   std::vector<Point> vertices_on(const Side& s, const I& t) const;
   // The rows over the times t, under the caller's rounding guard.
   std::vector<std::array<I, 4>> rows_on(const I& t) const;

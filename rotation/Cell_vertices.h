@@ -6,6 +6,7 @@
 #ifndef CLASH4D_ROTATION_CELL_VERTICES_H
 #define CLASH4D_ROTATION_CELL_VERTICES_H
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -41,12 +42,15 @@ int sign_of(const FT& x)
 
 // rows: each plane's (n, e) at the time; w: a point on no plane. Calls
 // found(i, j, k) for each vertex of the closure of w's cell, i < j < k,
-// until it returns true. not_vertex(i, j, k, side), a filter, may say
-// early that a triple is surely not one (side: w's side of each plane);
-// the triples it passes are decided in FT, so it changes no answer.
+// until it returns true: first the triples of the rows `first` names (the
+// planes of the minors that vanish at t*, where the contact is: a handful
+// of rows instead of every triple of the pair's), then every other triple
+// in order. not_vertex(i, j, k, side), a filter, may say early that a
+// triple is surely not one (side: w's side of each plane); the triples it
+// passes are decided in FT, so it changes no answer.
 template <class FT, class Found, class Not_vertex>
 void cell_vertices(const std::vector<std::array<FT, 4>>& rows, const std::array<FT, 3>& w, Found found,
-                   Not_vertex not_vertex)
+                   Not_vertex not_vertex, std::vector<int> first = {})
 {
   std::size_t m = rows.size();
   auto value = [&](std::size_t i, const std::array<FT, 3>& x) {
@@ -54,18 +58,29 @@ void cell_vertices(const std::vector<std::array<FT, 4>>& rows, const std::array<
   };
   std::vector<int> side(m);
   for (std::size_t i = 0; i < m; ++i) side[i] = sign_of(value(i, w));
+  // True once found(i, j, k) has said so.
+  auto vertex = [&](std::size_t i, std::size_t j, std::size_t k) {
+    if (!side[i] || !side[j] || !side[k]) return false;
+    if (not_vertex(i, j, k, side)) return false;
+    FT d = det3(rows[i], rows[j], rows[k]);
+    if (sign_of(d) == 0) return false;
+    std::array<FT, 3> x = cramer_point(rows[i], rows[j], rows[k], d);
+    for (std::size_t l = 0; l < m; ++l)
+      if (side[l] * sign_of(value(l, x)) < 0) return false;
+    return found(static_cast<int>(i), static_cast<int>(j), static_cast<int>(k));
+  };
+  std::sort(first.begin(), first.end());
+  first.erase(std::unique(first.begin(), first.end()), first.end());
+  std::vector<bool> tried(m, false);
+  for (std::size_t a = 0; a < first.size(); ++a)
+    for (std::size_t b = a + 1; b < first.size(); ++b)
+      for (std::size_t c = b + 1; c < first.size(); ++c)
+        if (vertex(first[a], first[b], first[c])) return;
+  for (int i : first) tried[i] = true;
   for (std::size_t i = 0; i < m; ++i)
     for (std::size_t j = i + 1; j < m; ++j)
-      for (std::size_t k = j + 1; k < m; ++k) {
-        if (!side[i] || !side[j] || !side[k]) continue;
-        if (not_vertex(i, j, k, side)) continue;
-        FT d = det3(rows[i], rows[j], rows[k]);
-        if (sign_of(d) == 0) continue;
-        std::array<FT, 3> x = cramer_point(rows[i], rows[j], rows[k], d);
-        bool in_cell = true;
-        for (std::size_t l = 0; l < m && in_cell; ++l) in_cell = side[l] * sign_of(value(l, x)) >= 0;
-        if (in_cell && found(static_cast<int>(i), static_cast<int>(j), static_cast<int>(k))) return;
-      }
+      for (std::size_t k = j + 1; k < m; ++k)
+        if (!(tried[i] && tried[j] && tried[k]) && vertex(i, j, k)) return;
 }
 
 template <class FT, class Found>

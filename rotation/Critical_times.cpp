@@ -72,10 +72,11 @@ private:
 };
 
 // A filter before any exact minor (one predicate: "this minor has no root
-// on [lo, hi]"): the rows evaluated in intervals on a few closed pieces of
-// [lo, hi] that cover it; a minor whose interval value excludes 0 on every
-// piece has no root there, surely, and is not made exactly. Minors the
-// intervals cannot settle are made and solved exactly as before.
+// on [lo, hi]"): the rows evaluated in intervals on [lo, hi] whole, then,
+// where that is not enough, on a few closed pieces of it that cover it; a
+// minor whose interval value excludes 0 there has no root, surely, and is
+// not made exactly. Minors the intervals cannot settle are made and solved
+// exactly as before.
 class Interval_rows {
 public:
   using I = CGAL::Interval_nt<false>;
@@ -85,7 +86,8 @@ public:
   // Each coefficient is enclosed once, and each piece's ends are enclosed
   // from lo's and hi's intervals (a sure enclosure of the exact piece).
   // Only the rows `used` marks are enclosed (all when it is empty): the
-  // others are never asked about.
+  // others are never asked about. at_[0] is [lo, hi] whole, at_[1 ..
+  // pieces] its pieces.
   Interval_rows(const std::vector<Moving_plane>& planes, const Rational& lo, const Rational& hi,
                 const std::vector<bool>& used = {})
       : middle_((lo + hi) / 2)
@@ -98,10 +100,10 @@ public:
         const Moving_plane& h = planes[r];
         rows[r] = {enclosed(h[0]), enclosed(h[1]), enclosed(h[2]), enclosed(h[3])};
       }
-    I low(CGAL::to_interval(lo)), width = I(CGAL::to_interval(hi)) - low;
-    at_.assign(pieces, std::vector<std::array<I, 4>>(rows.size(), {I(0), I(0), I(0), I(0)}));
-    for (int k = 0; k < pieces; ++k) {
-      I from = low + width * I(k) / I(pieces), to = low + width * I(k + 1) / I(pieces);
+    I low(enclosing_interval(lo)), width = I(enclosing_interval(hi)) - low;
+    at_.assign(pieces + 1, std::vector<std::array<I, 4>>(rows.size(), {I(0), I(0), I(0), I(0)}));
+    for (int k = 0; k <= pieces; ++k) {
+      I from = k == 0 ? low : low + width * I(k - 1) / I(pieces), to = k == 0 ? low + width : low + width * I(k) / I(pieces);
       I t(from.inf(), to.sup());
       for (std::size_t r = 0; r < rows.size(); ++r)
         if (wanted(r)) at_[k][r] = {rows[r][0].at(t), rows[r][1].at(t), rows[r][2].at(t), rows[r][3].at(t)};
@@ -116,25 +118,14 @@ public:
   bool settled(const Minor_rows& m) const { return state(m) != Minor_state::unsure; }
 
   // zero: exactly 0 on a piece (identically zero); nonzero: excludes 0 on
-  // every piece (no root on [lo, hi]); unsure otherwise.
+  // [lo, hi] whole or on every piece (no root on [lo, hi]); unsure
+  // otherwise. The whole interval first: it settles a minor far from 0 at
+  // one evaluation instead of one per piece.
   Minor_state state(const Minor_rows& m) const
   {
     CGAL::Protect_FPU_rounding<true> upward;
-    bool apart = true;
-    auto [i, j, k, l] = m;
-    if (l < 0) {
-      const Normals& d = normals(i, j, k);
-      for (int p = 0; p < pieces; ++p)
-        if (!note(d[p], apart)) return Minor_state::zero;
-    } else {
-      // By the last column: the offsets against the normals' minors.
-      const Normals &a = normals(i, k, l), &b = normals(j, k, l), &c = normals(i, j, k), &e = normals(i, j, l);
-      for (int p = 0; p < pieces; ++p) {
-        const std::vector<std::array<I, 4>>& r = at_[p];
-        if (!note(r[j][3] * a[p] - r[i][3] * b[p] + r[l][3] * c[p] - r[k][3] * e[p], apart)) return Minor_state::zero;
-      }
-    }
-    return apart ? Minor_state::nonzero : Minor_state::unsure;
+    Minor_state whole = state_on(m, 0, 1);
+    return whole != Minor_state::unsure ? whole : state_on(m, 1, pieces + 1);
   }
 
   // A minor made exactly is identically zero when it is the zero polynomial.
@@ -149,18 +140,49 @@ public:
   }
 
 private:
-  using Normals = std::array<I, pieces>;
+  // A triple's normals' minor on [lo, hi] whole (entry 0) and, once asked
+  // for, on every piece.
+  struct Normals {
+    std::array<I, pieces + 1> at;
+    bool pieces_made = false;
+  };
 
-  // The normals' minor of rows i, j, k on every piece, made once: a pair's
-  // minors share their triples (two boxes' 240 feature minors ask about
-  // 180 triples some 960 times). Under the caller's rounding guard.
-  const Normals& normals(int i, int j, int k) const
+  // The minor's state on at_[from .. to): the whole interval, or its pieces.
+  Minor_state state_on(const Minor_rows& m, int from, int to) const
+  {
+    bool apart = true, on_pieces = from > 0;
+    auto [i, j, k, l] = m;
+    if (l < 0) {
+      const Normals& d = normals(i, j, k, on_pieces);
+      for (int p = from; p < to; ++p)
+        if (!note(d.at[p], apart)) return Minor_state::zero;
+    } else {
+      // By the last column: the offsets against the normals' minors.
+      const Normals &a = normals(i, k, l, on_pieces), &b = normals(j, k, l, on_pieces),
+                    &c = normals(i, j, k, on_pieces), &e = normals(i, j, l, on_pieces);
+      for (int p = from; p < to; ++p) {
+        const std::vector<std::array<I, 4>>& r = at_[p];
+        if (!note(r[j][3] * a.at[p] - r[i][3] * b.at[p] + r[l][3] * c.at[p] - r[k][3] * e.at[p], apart))
+          return Minor_state::zero;
+      }
+    }
+    return apart ? Minor_state::nonzero : Minor_state::unsure;
+  }
+
+  // The normals' minor of rows i, j, k, made once: a pair's minors share
+  // their triples (two boxes' 240 feature minors ask about 180 triples
+  // some 960 times). Under the caller's rounding guard.
+  const Normals& normals(int i, int j, int k, bool on_pieces) const
   {
     std::uint64_t key = static_cast<std::uint64_t>(i) << 42 | static_cast<std::uint64_t>(j) << 21 | static_cast<std::uint64_t>(k);
     auto [it, added] = normals_.try_emplace(key);
-    if (added)
-      for (int p = 0; p < pieces; ++p) it->second[p] = normal_minor(at_[p][i], at_[p][j], at_[p][k]);
-    return it->second;
+    Normals& n = it->second;
+    if (added) n.at[0] = normal_minor(at_[0][i], at_[0][j], at_[0][k]);
+    if (on_pieces && !n.pieces_made) {
+      for (int p = 1; p <= pieces; ++p) n.at[p] = normal_minor(at_[p][i], at_[p][j], at_[p][k]);
+      n.pieces_made = true;
+    }
+    return n;
   }
 
   // False when d is exactly 0 (the minor is identically zero); clears
@@ -173,7 +195,7 @@ private:
   }
 
   Rational middle_;
-  std::vector<std::vector<std::array<I, 4>>> at_;     // [piece][row]
+  std::vector<std::vector<std::array<I, 4>>> at_;     // [whole, then each piece][row]
   mutable std::unordered_map<std::uint64_t, Normals> normals_;   // by (i, j, k), 21 bits each
 };
 
@@ -188,7 +210,10 @@ bool surely_no_root(const Poly_key& p, const Rational& lo, const Rational& hi)
   using I = CGAL::Interval_nt<false>;
   CGAL::Protect_FPU_rounding<true> upward;
   std::vector<I> c;
-  for (const mpz_class& x : p) c.emplace_back(CGAL::to_interval(Rational(CGAL::Gmpz(x.get_mpz_t()))));
+  for (const mpz_class& x : p) {
+    double v = 0;
+    c.push_back(small_double(x.get_mpz_t(), v) ? I(v) : I(CGAL::to_interval(CGAL::Gmpz(x.get_mpz_t()))));
+  }
   auto value = [&](const I& t) {
     I v(0);
     for (std::size_t i = c.size(); i-- > 0;) v = v * t + c[i];
@@ -198,7 +223,7 @@ bool surely_no_root(const Poly_key& p, const Rational& lo, const Rational& hi)
     I t;
     int depth;
   };
-  std::vector<Piece> todo = {{I(CGAL::to_interval(lo).first, CGAL::to_interval(hi).second), 0}};
+  std::vector<Piece> todo = {{I(enclosing_interval(lo).first, enclosing_interval(hi).second), 0}};
   while (!todo.empty()) {
     Piece q = todo.back();
     todo.pop_back();

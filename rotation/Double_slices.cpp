@@ -211,7 +211,7 @@ std::optional<Rational> Double_slices::sample(const Algebraic& left, const Algeb
 // when no vertex's planes meet at t* in doubles, w when the cell has none.
 std::array<Algebraic, 3> Double_slices::contact_point(const std::vector<Moving_plane>& rows,
                                                       const std::array<Rational, 3>& w, const Rational& s,
-                                                      const Algebraic& t_star) const
+                                                      const Algebraic& t_star, const std::vector<int>& near_rows) const
 {
   std::vector<std::array<double, 4>> at_s = rows_at(rows, CGAL::to_double(s)), at_t = rows_at(rows, t_star.to_double());
   std::array<double, 3> wd = {CGAL::to_double(w[0]), CGAL::to_double(w[1]), CGAL::to_double(w[2])};
@@ -221,7 +221,7 @@ std::array<Algebraic, 3> Double_slices::contact_point(const std::vector<Moving_p
     double d = det3(at_t[i], at_t[j], at_t[k]);
     if (d != 0) x = cramer_point(at_t[i], at_t[j], at_t[k], d);
     return x && finite(*x);
-  });
+  }, [](std::size_t, std::size_t, std::size_t, const std::vector<int>&) { return false; }, near_rows);
   if (x && finite(*x)) return exact_point(*x);
   if (at_sample && finite(*at_sample)) return exact_point(*at_sample);
   return {Algebraic(w[0]), Algebraic(w[1]), Algebraic(w[2])};

@@ -48,7 +48,8 @@ public:
   // strictly between their doubles.
   std::optional<Rational> sample(const Algebraic& left, const Algebraic& right) const;
   std::array<Algebraic, 3> contact_point(const std::vector<Moving_plane>& rows, const std::array<Rational, 3>& w,
-                                         const Rational& s, const Algebraic& t_star) const;
+                                         const Rational& s, const Algebraic& t_star,
+                                         const std::vector<int>& near_rows = {}) const;
   // Never asked: every critical time here is a double.
   std::optional<std::array<Algebraic, 3>> closed_at_irrational(const std::vector<Moving_plane>&, const Rotating_object&,
                                                                const Rotating_object&, const Critical_time&) const

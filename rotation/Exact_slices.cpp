@@ -132,7 +132,7 @@ private:
   I at(const Time_poly& p) const
   {
     I v(0);
-    for (int i = p.size() - 1; i >= 0; --i) v = v * t_ + I(CGAL::to_interval(p[i]));
+    for (int i = p.size() - 1; i >= 0; --i) v = v * t_ + I(enclosing_interval(p[i]));
     return v;
   }
 
@@ -146,6 +146,19 @@ private:
   bool enclosed_ = false;
   std::array<I, 3> x_;
 };
+
+// Where the planes `ids` meet at the rational time t, when they are
+// independent there (Cramer's rule on their values at t).
+std::optional<std::array<Rational, 3>> meeting_point_at(const std::vector<Moving_plane>& rows, std::array<int, 3> ids,
+                                                        const Rational& t)
+{
+  std::array<std::array<Rational, 4>, 3> r;
+  for (int n = 0; n < 3; ++n)
+    for (int c = 0; c < 4; ++c) r[n][c] = rows[ids[n]][c].at(t);
+  Rational d = det3(r[0], r[1], r[2]);
+  if (is_zero(d)) return std::nullopt;
+  return cramer_point(r[0], r[1], r[2], d);
+}
 
 // Whether the point lies in the closed object whose planes are rows[offset
 // ...]: in some convex piece of it (a union of bounded convex pieces), all
@@ -242,9 +255,10 @@ public:
 
   explicit Interval_cell(const std::vector<std::array<Rational, 4>>& rows)
   {
+    CGAL::Protect_FPU_rounding<true> upward;
     for (const auto& r : rows)
-      rows_.push_back({I(CGAL::to_interval(r[0])), I(CGAL::to_interval(r[1])), I(CGAL::to_interval(r[2])),
-                       I(CGAL::to_interval(r[3]))});
+      rows_.push_back({I(enclosing_interval(r[0])), I(enclosing_interval(r[1])), I(enclosing_interval(r[2])),
+                       I(enclosing_interval(r[3]))});
   }
 
   bool operator()(std::size_t i, std::size_t j, std::size_t k, const std::vector<int>& side) const
@@ -288,7 +302,7 @@ std::optional<Rational> Exact_slices::sample(const Algebraic& left, const Algebr
 // (limit_at).
 std::array<Algebraic, 3> Exact_slices::contact_point(const std::vector<Moving_plane>& rows,
                                                      const std::array<Rational, 3>& w, const Rational& s,
-                                                     const Algebraic& t_star) const
+                                                     const Algebraic& t_star, const std::vector<int>& near_rows) const
 {
   std::vector<std::array<Rational, 4>> at(rows.size());
   for (std::size_t i = 0; i < rows.size(); ++i)
@@ -298,10 +312,18 @@ std::array<Algebraic, 3> Exact_slices::contact_point(const std::vector<Moving_pl
   cell_vertices(
       at, w,
       [&](int i, int j, int k) {
+        // At a rational t* where the three planes stay independent the
+        // limit is their meeting point there (the same quotients, evaluated
+        // first): no polynomial is made.
+        if (t_star.is_rational())
+          if (auto p = meeting_point_at(rows, {i, j, k}, t_star.rational())) {
+            x = std::array<Algebraic, 3>{Algebraic((*p)[0]), Algebraic((*p)[1]), Algebraic((*p)[2])};
+            return true;
+          }
         x = limit_at(cramer_numerators(rows[i], rows[j], rows[k]), normal_minor(rows[i], rows[j], rows[k]), t_star);
         return x.has_value();
       },
-      filter);
+      filter, near_rows);
   if (!x)
     throw Rotation_unsupported("the contact point at t*: every vertex of the witness's cell runs off to infinity "
                                "at t* (a degenerate contact this release does not resolve)");

@@ -59,7 +59,8 @@ public:
   // A point of the closure of the collision region at t*, the left end of
   // the interval whose sample s has the generic witness w (Rotating_pair.cpp).
   std::array<Algebraic, 3> contact_point(const std::vector<Moving_plane>& rows, const std::array<Rational, 3>& w,
-                                         const Rational& s, const Algebraic& t_star) const;
+                                         const Rational& s, const Algebraic& t_star,
+                                         const std::vector<int>& near_rows = {}) const;
   // The closed question at an irrational critical time c: a common point
   // of both closed objects, or none.
   std::optional<std::array<Algebraic, 3>> closed_at_irrational(const std::vector<Moving_plane>& rows,

@@ -17,8 +17,38 @@ namespace clash4d {
 // n_x, n_y, n_z, e: one row of fact 10's matrix.
 using Moving_plane = std::array<Time_poly, 4>;
 
-// N(q(t)), row by row.
-std::array<std::array<Time_poly, 3>, 3> unnormalised_rotation(const std::array<Time_poly, 4>& q);
+// N(q(t)), row by row, for polynomials over the rationals or over
+// intervals (the filters', under the caller's rounding guard): the scene
+// format's matrix of rotate times n = |q|^2, twice a product made as a sum.
+template <class Poly>
+std::array<std::array<Poly, 3>, 3> unnormalised_rotation(const std::array<Poly, 4>& q)
+{
+  const Poly &w = q[0], &x = q[1], &y = q[2], &z = q[3];
+  Poly ww = w * w, xx = x * x, yy = y * y, zz = z * z;
+  auto twice = [](const Poly& p) { return p + p; };
+  return {{{ww + xx - yy - zz, twice(x * y - w * z), twice(x * z + w * y)},
+           {twice(x * y + w * z), ww - xx + yy - zz, twice(y * z - w * x)},
+           {twice(x * z - w * y), twice(y * z + w * x), ww - xx - yy + zz}}};
+}
+
+// |q(t)|^2.
+template <class Poly>
+Poly squared_norm(const std::array<Poly, 4>& q)
+{
+  return q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+}
+
+// The plane a.p + d <= 0 (p: a, b, c, d, numbers of Poly) under the
+// rotation n = N a and the origin c: (n, |q|^2 d - n.c).
+template <class Poly, class FT>
+std::array<Poly, 4> moved_plane(const std::array<FT, 4>& p, const std::array<std::array<Poly, 3>, 3>& N,
+                                const Poly& norm, const std::array<Poly, 3>& c)
+{
+  std::array<Poly, 4> h;
+  for (int r = 0; r < 3; ++r) h[r] = p[0] * N[r][0] + p[1] * N[r][1] + p[2] * N[r][2];
+  h[3] = p[3] * norm - (h[0] * c[0] + h[1] * c[1] + h[2] * c[2]);
+  return h;
+}
 
 // Each plane of planes (shape coordinates) under segment s.
 std::vector<Moving_plane> moving_planes(const std::vector<Plane3<Rational>>& planes, const Pose_segment& s);
@@ -27,8 +57,8 @@ std::vector<Moving_plane> moving_planes(const std::vector<Plane3<Rational>>& pla
 Rational plane_value(const Moving_plane& h, const std::array<Rational, 3>& x, const Rational& t);
 
 // p's coefficients as the intervals that hold them, made once for the
-// interval filters (Interval_poly::at bounds p over an interval of times,
-// under upward rounding).
+// interval filters (Interval_poly::at bounds p over an interval of times),
+// under the caller's upward rounding.
 using Interval_poly = Polynomial<CGAL::Interval_nt<false>, 16>;
 Interval_poly enclosed(const Time_poly& p);
 

@@ -99,7 +99,7 @@ std::vector<Algebraic> part_pair_events(const Rotating_object& a, const Rotating
   }
   restricted = true;
   bool low_rank = !a.shape.spans_space && !b.shape.spans_space;
-  Apart_cover cover(a, b, rows, at);
+  Apart_cover cover(a, b, at);
   cover.for_each_unsure(lo, hi, [&](const Time_piece& p) {
     take(Critical_times(rows, a.shape.planes.size(), p.lo, p.hi, low_rank, cover.near_features(*features, p.lo, p.hi)));
     return false;

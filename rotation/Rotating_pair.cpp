@@ -65,6 +65,16 @@ Static_hit probe(const Rotating_object& a, const Rotating_object& b, const Ratio
   return hit;
 }
 
+// The rows the minors name (v_inf left out).
+std::vector<int> rows_of(const std::vector<Minor_rows>& minors)
+{
+  std::vector<int> out;
+  for (const Minor_rows& m : minors)
+    for (int r : m)
+      if (r >= 0) out.push_back(r);
+  return out;
+}
+
 std::array<Algebraic, 4> with_time(const Point3& x, const Rational& t)
 {
   return {Algebraic(x[0]), Algebraic(x[1]), Algebraic(x[2]), Algebraic(t)};
@@ -235,15 +245,17 @@ private:
     // A verdict alone: one sample first, for the common case where the
     // pair collides there, before any minor is made.
     if (!options_.earliest && in_interval({}, Algebraic(lo), Algebraic(hi))) return true;
-    std::vector<Moving_plane> rows = pair_rows(a_, b_, mid);
     end_apart_ = false;
-    if (!features_) return slice(rows, {lo, hi, false}, nullptr);
+    if (!features_) return slice(pair_rows(a_, b_, mid), {lo, hi, false}, nullptr);
     // Two convex pieces: the slices only where they are not surely apart,
-    // each run with the features that can touch there (near_features).
-    Apart_cover cover(a_, b_, rows, mid);
+    // each run with the features that can touch there (near_features). The
+    // exact rows are made once a run is left (a miss makes none).
+    Apart_cover cover(a_, b_, mid);
+    std::vector<Moving_plane> rows;
     Rational sliced_to = lo;
     bool answered = cover.for_each_unsure(lo, hi, [&](const Time_piece& p) {
       sliced_to = p.hi;
+      if (rows.empty()) rows = pair_rows(a_, b_, mid);
       Pair_features near = cover.near_features(*features_, p.lo, p.hi);
       return slice(rows, p, &near);
     });
@@ -267,12 +279,15 @@ private:
       Algebraic left = k == 0 ? Algebraic(p.lo) : c[k - 1].t;
       Algebraic right = k == c.size() ? Algebraic(p.hi) : c[k].t;
       if (closed_ && k > 0 && at_critical(rows, c[k - 1])) return true;
-      if (in_interval(rows, left, right)) return true;
+      if (in_interval(rows, left, right, k == 0 ? std::vector<int>{} : rows_of(c[k - 1].vanishing))) return true;
     }
     return false;
   }
 
-  bool in_interval(const std::vector<Moving_plane>& rows, const Algebraic& left, const Algebraic& right)
+  // near_left: the rows of the minors that vanish at left, where a
+  // contact at left is (the contact point's vertex is sought there first).
+  bool in_interval(const std::vector<Moving_plane>& rows, const Algebraic& left, const Algebraic& right,
+                   const std::vector<int>& near_left = {})
   {
     std::optional<Rational> sample = slices_.sample(left, right);
     if (!sample) return false;   // doubles: no double strictly between
@@ -294,7 +309,7 @@ private:
       answer_.earliest = true;
       answer_.t_star = left;
       answer_.at_start = left == Algebraic(t_lo_);
-      answer_.contact = slices_.contact_point(rows, hit.x, s, left);
+      answer_.contact = slices_.contact_point(rows, hit.x, s, left, near_left);
     }
     return true;
   }

@@ -1102,7 +1102,7 @@ Apart_cover cover_of(const Rotating_object& a, const Rotating_object& b, const R
   rows = moving_planes(a.shape.planes, segment_at(a.segments, at));
   std::vector<Moving_plane> more = moving_planes(b.shape.planes, segment_at(b.segments, at));
   rows.insert(rows.end(), more.begin(), more.end());
-  return Apart_cover(a, b, rows, at);
+  return Apart_cover(a, b, at);
 }
 
 // The fixture's square turning into a slab, and its two objects.
