@@ -2,13 +2,64 @@
 
 namespace clash4d {
 
+namespace {
+
+using Int_poly = Polynomial<mpz_class, 16>;
+
+// The polynomials' coefficients over one common denominator d > 0 (their
+// numerators returned): each polynomial keeps its size.
+template <std::size_t N>
+std::array<Int_poly, N> integer_polys(const std::array<Time_poly, N>& p, mpz_class& d)
+{
+  std::vector<Rational> all;
+  for (const Time_poly& x : p)
+    for (int i = 0; i < x.size(); ++i) all.push_back(x[i]);
+  std::vector<mpz_class> numerators(all.size());
+  over_common_denominator(all.data(), all.size(), numerators.data(), d);
+  std::array<Int_poly, N> out;
+  std::size_t next = 0;
+  for (std::size_t k = 0; k < N; ++k) {
+    std::vector<mpz_class> c(numerators.begin() + next, numerators.begin() + next + p[k].size());
+    next += p[k].size();
+    out[k] = Int_poly(c);
+  }
+  return out;
+}
+
+Time_poly divided(const Int_poly& p, const mpz_class& d)
+{
+  std::vector<Rational> c;
+  c.reserve(p.size());
+  for (int i = 0; i < p.size(); ++i) c.push_back(quotient_of_integers(p[i], d));
+  return Time_poly(c);
+}
+
+} // namespace
+
+// In integers: with q = Q / D, c = C / E and a plane p = P / L (integer
+// numerators over common denominators), n = P N(Q) / (L D^2) and e = (E
+// P_3 |Q|^2 - n'.C) / (L D^2 E), n' = P N(Q): the same polynomials as
+// moved_plane makes in rationals, coefficient by coefficient, with one
+// fraction reduced per coefficient instead of one per operation.
 std::vector<Moving_plane> moving_planes(const std::vector<Plane3<Rational>>& planes, const Pose_segment& s)
 {
-  auto N = unnormalised_rotation(s.q);
-  Time_poly norm = squared_norm(s.q);
+  mpz_class D, E;
+  std::array<Int_poly, 4> Q = integer_polys(s.q, D);
+  std::array<Int_poly, 3> C = integer_polys(s.c, E);
+  auto N = unnormalised_rotation(Q);
+  Int_poly norm = squared_norm(Q);
   std::vector<Moving_plane> out;
   out.reserve(planes.size());
-  for (const Plane3<Rational>& p : planes) out.push_back(moved_plane(p, N, norm, s.c));
+  for (const Plane3<Rational>& p : planes) {
+    std::array<mpz_class, 4> P;
+    mpz_class L;
+    over_common_denominator(p.data(), 4, P.data(), L);
+    std::array<Int_poly, 3> n;
+    for (int r = 0; r < 3; ++r) n[r] = P[0] * N[r][0] + P[1] * N[r][1] + P[2] * N[r][2];
+    Int_poly e = mpz_class(E * P[3]) * norm - (n[0] * C[0] + n[1] * C[1] + n[2] * C[2]);
+    mpz_class dn = L * D * D, de = dn * E;
+    out.push_back({divided(n[0], dn), divided(n[1], dn), divided(n[2], dn), divided(e, de)});
+  }
   return out;
 }
 

@@ -27,6 +27,7 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <random>
 #include <set>
 #include <unistd.h>
 
@@ -1186,6 +1187,49 @@ BOOST_AUTO_TEST_CASE(apart_cover_proves_only_what_is_apart)
   }
   BOOST_TEST_MESSAGE("apart cover: " << proved << " of " << asked << " intervals proved apart");
   BOOST_TEST(proved >= asked / 10);
+}
+
+// The exact rows in integers (Moving_planes.cpp: numerators over common
+// denominators, one fraction reduced per coefficient) against the formula
+// in rationals (moved_plane on N(q) and |q|^2 made in rationals), on seeded
+// random pose segments and planes: the same polynomials, coefficient by
+// coefficient and of the same sizes. Coefficients are drawn with small and
+// large parts, some zero, and polynomials of 0 to 2 coefficients.
+BOOST_AUTO_TEST_CASE(moving_planes_in_integers_are_the_rational_formula)
+{
+  std::uint64_t seed = stage_tests::env_number("CLASH4D_SEED", 5151);
+  BOOST_TEST_MESSAGE("moving planes in integers: seed " << seed << " (CLASH4D_SEED)");
+  std::mt19937_64 rng(seed);
+  auto number = [&] {
+    if (rng() % 5 == 0) return Rational(0);
+    int bits = rng() % 3 == 0 ? 40 : 4;
+    Rational n(static_cast<long>(rng() % (1ull << bits)) - (1l << (bits - 1)));
+    return n / Rational(static_cast<long>(rng() % (1ull << bits)) + 1);
+  };
+  auto poly = [&] {
+    std::vector<Rational> c(rng() % 3);
+    for (Rational& x : c) x = number();
+    return Time_poly(c);
+  };
+  for (int round = 0; round < 300; ++round) {
+    Pose_segment s;
+    for (Time_poly& x : s.q) x = poly();
+    for (Time_poly& x : s.c) x = poly();
+    std::vector<Plane3<Rational>> planes(3);
+    for (auto& p : planes)
+      for (Rational& x : p) x = number();
+    std::vector<Moving_plane> rows = moving_planes(planes, s);
+    auto N = unnormalised_rotation(s.q);
+    Time_poly norm = squared_norm(s.q);
+    for (std::size_t k = 0; k < planes.size(); ++k) {
+      Moving_plane want = moved_plane(planes[k], N, norm, s.c);
+      for (int c = 0; c < 4; ++c) {
+        BOOST_TEST_REQUIRE(rows[k][c].size() == want[c].size(), "round " << round << " plane " << k << " column " << c);
+        for (int i = 0; i < want[c].size(); ++i)
+          BOOST_TEST(rows[k][c][i] == want[c][i], "round " << round << " plane " << k << " column " << c);
+      }
+    }
+  }
 }
 
 // What --stats counts (Slice_counts). The block [-1,1]^3 turning a quarter
