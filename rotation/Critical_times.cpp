@@ -18,25 +18,13 @@ namespace {
 // The minors are computed on integer rows: each plane's row times the
 // common denominator of its coefficients (a positive factor: the same
 // roots, the same signs), so no fraction is reduced on the way.
-using Int_poly = Polynomial<mpz_class, 16>;
+using Int_poly = Integer_time_poly;
 using Int_row = std::array<Int_poly, 4>;
 
 Int_row integer_row(const Moving_plane& h)
 {
-  mpz_class d = 1;
-  for (const Time_poly& p : h)
-    for (int i = 0; i < p.size(); ++i) {
-      mpz_class den(p[i].denominator().mpz());
-      mpz_lcm(d.get_mpz_t(), d.get_mpz_t(), den.get_mpz_t());
-    }
-  Int_row out;
-  for (int c = 0; c < 4; ++c) {
-    std::vector<mpz_class> coefficients;
-    for (int i = 0; i < h[c].size(); ++i)
-      coefficients.push_back(mpz_class(h[c][i].numerator().mpz()) * (d / mpz_class(h[c][i].denominator().mpz())));
-    out[c] = Int_poly(coefficients);
-  }
-  return out;
+  mpz_class d;
+  return integer_polys(h, d);
 }
 
 using Poly_key = std::vector<mpz_class>;

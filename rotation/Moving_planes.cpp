@@ -4,27 +4,7 @@ namespace clash4d {
 
 namespace {
 
-using Int_poly = Polynomial<mpz_class, 16>;
-
-// The polynomials' coefficients over one common denominator d > 0 (their
-// numerators returned): each polynomial keeps its size.
-template <std::size_t N>
-std::array<Int_poly, N> integer_polys(const std::array<Time_poly, N>& p, mpz_class& d)
-{
-  std::vector<Rational> all;
-  for (const Time_poly& x : p)
-    for (int i = 0; i < x.size(); ++i) all.push_back(x[i]);
-  std::vector<mpz_class> numerators(all.size());
-  over_common_denominator(all.data(), all.size(), numerators.data(), d);
-  std::array<Int_poly, N> out;
-  std::size_t next = 0;
-  for (std::size_t k = 0; k < N; ++k) {
-    std::vector<mpz_class> c(numerators.begin() + next, numerators.begin() + next + p[k].size());
-    next += p[k].size();
-    out[k] = Int_poly(c);
-  }
-  return out;
-}
+using Int_poly = Integer_time_poly;
 
 Time_poly divided(const Int_poly& p, const mpz_class& d)
 {

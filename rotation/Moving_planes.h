@@ -50,6 +50,30 @@ std::array<Poly, 4> moved_plane(const std::array<FT, 4>& p, const std::array<std
   return h;
 }
 
+// Polynomials in t with integer coefficients (the exact stage's minors).
+using Integer_time_poly = Polynomial<mpz_class, 16>;
+
+// The polynomials' coefficients over their least common denominator d > 0
+// (a positive factor, made once for all of them): the numerators, each
+// polynomial keeping its size.
+template <std::size_t N>
+std::array<Integer_time_poly, N> integer_polys(const std::array<Time_poly, N>& p, mpz_class& d)
+{
+  std::vector<Rational> all;
+  for (const Time_poly& x : p)
+    for (int i = 0; i < x.size(); ++i) all.push_back(x[i]);
+  std::vector<mpz_class> numerators(all.size());
+  over_common_denominator(all.data(), all.size(), numerators.data(), d);
+  std::array<Integer_time_poly, N> out;
+  std::size_t next = 0;
+  for (std::size_t k = 0; k < N; ++k) {
+    std::vector<mpz_class> c(numerators.begin() + next, numerators.begin() + next + p[k].size());
+    next += p[k].size();
+    out[k] = Integer_time_poly(c);
+  }
+  return out;
+}
+
 // Each plane of planes (shape coordinates) under segment s.
 std::vector<Moving_plane> moving_planes(const std::vector<Plane3<Rational>>& planes, const Pose_segment& s);
 
