@@ -3,6 +3,8 @@
 #include "model/Far_bound.h"
 #include "model/Model_builder.h"
 
+#include <CGAL/Interval_nt.h>
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -76,6 +78,44 @@ Rational det3(const Plane3<Rational>& a, const Plane3<Rational>& b, const Plane3
 // planes of it is a vertex (the least face holding it lies in their meet).
 // Left unset unless the polytope is full-dimensional (four affinely
 // independent points).
+// "Point v is on plane h" (h . (v, 1) = 0), one predicate filtered: in
+// intervals first (a value that excludes 0 is off the plane, surely), exactly
+// where they cannot tell. A piece's V points against its F planes are V F
+// questions, nearly all of them far from 0; only the few planes through a
+// vertex are decided exactly.
+class Plane_incidence {
+public:
+  using I = CGAL::Interval_nt<false>;
+
+  explicit Plane_incidence(const std::vector<Plane3<Rational>>& planes) : planes_(planes)
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    for (const auto& h : planes)
+      enclosed_.push_back({I(enclosing_interval(h[0])), I(enclosing_interval(h[1])), I(enclosing_interval(h[2])),
+                           I(enclosing_interval(h[3]))});
+  }
+
+  // The planes of `among` through v.
+  std::vector<int> planes_through(const Vector3<Rational>& v, const std::vector<int>& among) const
+  {
+    std::vector<int> on;
+    CGAL::Protect_FPU_rounding<true> upward;
+    std::array<I, 3> x = {I(enclosing_interval(v[0])), I(enclosing_interval(v[1])), I(enclosing_interval(v[2]))};
+    for (int p : among) {
+      const std::array<I, 4>& e = enclosed_[p];
+      I value = e[0] * x[0] + e[1] * x[1] + e[2] * x[2] + e[3];
+      if (value.inf() > 0 || value.sup() < 0) continue;
+      const Plane3<Rational>& h = planes_[p];
+      if (sign_of_sum_of_products(h.data(), v.data(), 3, &h[3]) == 0) on.push_back(p);
+    }
+    return on;
+  }
+
+private:
+  const std::vector<Plane3<Rational>>& planes_;
+  std::vector<std::array<I, 4>> enclosed_;
+};
+
 void convex_features(const std::vector<Vector3<Rational>>& vertices, const std::vector<int>& planes, Shape_planes& out)
 {
   if (vertices.size() < 4) return;
@@ -97,13 +137,10 @@ void convex_features(const std::vector<Vector3<Rational>>& vertices, const std::
   std::vector<std::array<int, 3>> triples;
   std::vector<Vector3<Rational>> points;   // the vertices
   std::set<std::array<Rational, 3>> seen;   // each point once (a hull may repeat one)
+  Plane_incidence incidence(out.planes);
   for (const auto& v : vertices) {
     if (!seen.insert({v[0], v[1], v[2]}).second) continue;
-    std::vector<int> on;
-    for (int p : distinct) {
-      const Plane3<Rational>& h = out.planes[p];
-      if (CGAL::sign(h[0] * v[0] + h[1] * v[1] + h[2] * v[2] + h[3]) == CGAL::ZERO) on.push_back(p);
-    }
+    std::vector<int> on = incidence.planes_through(v, distinct);
     bool found = false;
     for (std::size_t i = 0; i < on.size() && !found; ++i)
       for (std::size_t j = i + 1; j < on.size() && !found; ++j)
