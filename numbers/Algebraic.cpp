@@ -216,12 +216,7 @@ std::optional<Isolated> isolate_in_doubles(const fmpz_poly_t g, const Rational& 
 // g's sign over [lo, hi] when an enclosure in doubles is sure of it and
 // not zero (the filter before the exact test), else 2.
 CGAL::Interval_nt<false> enclosure_of(const Rational& x) { return CGAL::Interval_nt<false>(CGAL::to_interval(x)); }
-CGAL::Interval_nt<false> enclosure_of(const mpz_class& x)
-{
-  double d = 0;
-  if (small_double(x.get_mpz_t(), d)) return CGAL::Interval_nt<false>(d);
-  return CGAL::Interval_nt<false>(CGAL::to_interval(Rational(x.get_mpz_t())));
-}
+CGAL::Interval_nt<false> enclosure_of(const mpz_class& x) { return CGAL::Interval_nt<false>(enclosing_interval(x)); }
 
 template <class Coefficient>
 int sign_in_doubles(const std::vector<Coefficient>& g, const Rational& lo, const Rational& hi)

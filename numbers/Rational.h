@@ -72,6 +72,15 @@ inline std::pair<double, double> enclosing_interval(const Rational& q)
   return {-(-n / d), n / d};
 }
 
+// An interval of doubles that surely holds the integer z, in any rounding
+// mode: z itself when it has at most 53 bits, else CGAL's enclosure.
+inline std::pair<double, double> enclosing_interval(const mpz_class& z)
+{
+  double d = 0;
+  if (small_double(z.get_mpz_t(), d)) return {d, d};
+  return CGAL::to_interval(Rational(z.get_mpz_t()));
+}
+
 // 2^e as a double, made from its bits in the normal range (no libm call:
 // the grid roundings of the search take it on every comparison).
 inline double power_of_two_double(int e)

@@ -15,7 +15,7 @@ Apart_cover::Side Apart_cover::side(const Rotating_object& o, const Rational& at
   out.norm = squared_norm(q);
   for (int k = 0; k < 3; ++k) out.origin[k] = enclosed(s.c[k]);
   for (const auto& v : o.shape.vertices)
-    out.vertices.push_back({I(enclosing_interval(v[0])), I(enclosing_interval(v[1])), I(enclosing_interval(v[2]))});
+    out.vertices.push_back(enclosed(v));
   out.orientation.assign(o.shape.planes.size(), 0);
   if (o.shape.convex_pieces.size() == 1)
     for (auto [plane, orientation] : o.shape.convex_pieces.front()) out.orientation[plane] = orientation;
@@ -29,11 +29,7 @@ Apart_cover::Side Apart_cover::side(const Rotating_object& o, const Rational& at
 // surely by interval arithmetic on enclosures of their inputs).
 void Apart_cover::add_rows(const Rotating_object& o, const Side& s)
 {
-  for (const Plane3<Rational>& p : o.shape.planes) {
-    std::array<I, 4> e = {I(enclosing_interval(p[0])), I(enclosing_interval(p[1])), I(enclosing_interval(p[2])),
-                          I(enclosing_interval(p[3]))};
-    rows_.push_back(moved_plane(e, s.rotation, s.norm, s.origin));
-  }
+  for (const Plane3<Rational>& p : o.shape.planes) rows_.push_back(moved_plane(enclosed(p), s.rotation, s.norm, s.origin));
 }
 
 Apart_cover::Apart_cover(const Rotating_object& a, const Rotating_object& b, const Rational& at)

@@ -198,10 +198,7 @@ bool surely_no_root(const Poly_key& p, const Rational& lo, const Rational& hi)
   using I = CGAL::Interval_nt<false>;
   CGAL::Protect_FPU_rounding<true> upward;
   std::vector<I> c;
-  for (const mpz_class& x : p) {
-    double v = 0;
-    c.push_back(small_double(x.get_mpz_t(), v) ? I(v) : I(CGAL::to_interval(CGAL::Gmpz(x.get_mpz_t()))));
-  }
+  for (const mpz_class& x : p) c.emplace_back(enclosing_interval(x));
   auto value = [&](const I& t) {
     I v(0);
     for (std::size_t i = c.size(); i-- > 0;) v = v * t + c[i];

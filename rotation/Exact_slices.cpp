@@ -256,9 +256,7 @@ public:
   explicit Interval_cell(const std::vector<std::array<Rational, 4>>& rows)
   {
     CGAL::Protect_FPU_rounding<true> upward;
-    for (const auto& r : rows)
-      rows_.push_back({I(enclosing_interval(r[0])), I(enclosing_interval(r[1])), I(enclosing_interval(r[2])),
-                       I(enclosing_interval(r[3]))});
+    for (const auto& r : rows) rows_.push_back(enclosed(r));
   }
 
   bool operator()(std::size_t i, std::size_t j, std::size_t k, const std::vector<int>& side) const

@@ -27,18 +27,17 @@ std::vector<Moving_plane> moving_planes(const std::vector<Plane3<Rational>>& pla
   std::array<Int_poly, 4> Q = integer_polys(s.q, D);
   std::array<Int_poly, 3> C = integer_polys(s.c, E);
   auto N = unnormalised_rotation(Q);
-  Int_poly norm = squared_norm(Q);
+  Int_poly scaled_norm = mpz_class(E) * squared_norm(Q);
   std::vector<Moving_plane> out;
   out.reserve(planes.size());
   for (const Plane3<Rational>& p : planes) {
     std::array<mpz_class, 4> P;
     mpz_class L;
     over_common_denominator(p.data(), 4, P.data(), L);
-    std::array<Int_poly, 3> n;
-    for (int r = 0; r < 3; ++r) n[r] = P[0] * N[r][0] + P[1] * N[r][1] + P[2] * N[r][2];
-    Int_poly e = mpz_class(E * P[3]) * norm - (n[0] * C[0] + n[1] * C[1] + n[2] * C[2]);
+    // (n', E P_3 |Q|^2 - n'.C): moved_plane with the norm times E.
+    std::array<Int_poly, 4> h = moved_plane(P, N, scaled_norm, C);
     mpz_class dn = L * D * D, de = dn * E;
-    out.push_back({divided(n[0], dn), divided(n[1], dn), divided(n[2], dn), divided(e, de)});
+    out.push_back({divided(h[0], dn), divided(h[1], dn), divided(h[2], dn), divided(h[3], de)});
   }
   return out;
 }

@@ -17,8 +17,8 @@ namespace clash4d {
 // n_x, n_y, n_z, e: one row of fact 10's matrix.
 using Moving_plane = std::array<Time_poly, 4>;
 
-// N(q(t)), row by row, for polynomials over the rationals or over
-// intervals (the filters', under the caller's rounding guard): the scene
+// N(q(t)), row by row, for polynomials over the rationals, the integers
+// or intervals (the filters', under the caller's rounding guard): the scene
 // format's matrix of rotate times n = |q|^2, twice a product made as a sum.
 template <class Poly>
 std::array<std::array<Poly, 3>, 3> unnormalised_rotation(const std::array<Poly, 4>& q)
@@ -85,6 +85,16 @@ Rational plane_value(const Moving_plane& h, const std::array<Rational, 3>& x, co
 // under the caller's upward rounding.
 using Interval_poly = Polynomial<CGAL::Interval_nt<false>, 16>;
 Interval_poly enclosed(const Time_poly& p);
+
+// The numbers of a point or a plane as the intervals that hold them, under
+// the caller's upward rounding.
+template <std::size_t N>
+std::array<CGAL::Interval_nt<false>, N> enclosed(const std::array<Rational, N>& x)
+{
+  std::array<CGAL::Interval_nt<false>, N> out;
+  for (std::size_t i = 0; i < N; ++i) out[i] = CGAL::Interval_nt<false>(enclosing_interval(x[i]));
+  return out;
+}
 
 } // namespace clash4d
 

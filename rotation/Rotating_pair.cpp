@@ -279,15 +279,16 @@ private:
       Algebraic left = k == 0 ? Algebraic(p.lo) : c[k - 1].t;
       Algebraic right = k == c.size() ? Algebraic(p.hi) : c[k].t;
       if (closed_ && k > 0 && at_critical(rows, c[k - 1])) return true;
-      if (in_interval(rows, left, right, k == 0 ? std::vector<int>{} : rows_of(c[k - 1].vanishing))) return true;
+      if (in_interval(rows, left, right, k == 0 ? nullptr : &c[k - 1])) return true;
     }
     return false;
   }
 
-  // near_left: the rows of the minors that vanish at left, where a
-  // contact at left is (the contact point's vertex is sought there first).
+  // critical_left: left when it is a critical time, whose vanishing
+  // minors' planes are where a contact at left is (the contact point's
+  // vertex is sought there first).
   bool in_interval(const std::vector<Moving_plane>& rows, const Algebraic& left, const Algebraic& right,
-                   const std::vector<int>& near_left = {})
+                   const Critical_time* critical_left = nullptr)
   {
     std::optional<Rational> sample = slices_.sample(left, right);
     if (!sample) return false;   // doubles: no double strictly between
@@ -309,7 +310,8 @@ private:
       answer_.earliest = true;
       answer_.t_star = left;
       answer_.at_start = left == Algebraic(t_lo_);
-      answer_.contact = slices_.contact_point(rows, hit.x, s, left, near_left);
+      answer_.contact =
+          slices_.contact_point(rows, hit.x, s, left, critical_left ? rows_of(critical_left->vanishing) : std::vector<int>{});
     }
     return true;
   }

@@ -2,6 +2,7 @@
 
 #include "model/Far_bound.h"
 #include "model/Model_builder.h"
+#include "rotation/Moving_planes.h"
 
 #include <CGAL/Interval_nt.h>
 
@@ -69,15 +70,6 @@ Rational det3(const Plane3<Rational>& a, const Plane3<Rational>& b, const Plane3
   return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
 }
 
-// The features of one bounded convex primitive (its exact vertices and its
-// planes, as indices into out.planes): the planes through each vertex
-// (exact incidences), one independent triple of them per vertex, and the
-// pairs of planes sharing two distinct vertices. A point of the list on no
-// independent triple of the planes is not a vertex (a hull's points may lie
-// inside it) and is skipped: a point of the polytope on three independent
-// planes of it is a vertex (the least face holding it lies in their meet).
-// Left unset unless the polytope is full-dimensional (four affinely
-// independent points).
 // "Point v is on plane h" (h . (v, 1) = 0), one predicate filtered: in
 // intervals first (a value that excludes 0 is off the plane, surely), exactly
 // where they cannot tell. A piece's V points against its F planes are V F
@@ -90,9 +82,7 @@ public:
   explicit Plane_incidence(const std::vector<Plane3<Rational>>& planes) : planes_(planes)
   {
     CGAL::Protect_FPU_rounding<true> upward;
-    for (const auto& h : planes)
-      enclosed_.push_back({I(enclosing_interval(h[0])), I(enclosing_interval(h[1])), I(enclosing_interval(h[2])),
-                           I(enclosing_interval(h[3]))});
+    for (const auto& h : planes) enclosed_.push_back(enclosed(h));
   }
 
   // The planes of `among` through v.
@@ -100,7 +90,7 @@ public:
   {
     std::vector<int> on;
     CGAL::Protect_FPU_rounding<true> upward;
-    std::array<I, 3> x = {I(enclosing_interval(v[0])), I(enclosing_interval(v[1])), I(enclosing_interval(v[2]))};
+    std::array<I, 3> x = enclosed(v);
     for (int p : among) {
       const std::array<I, 4>& e = enclosed_[p];
       I value = e[0] * x[0] + e[1] * x[1] + e[2] * x[2] + e[3];
@@ -116,6 +106,15 @@ private:
   std::vector<std::array<I, 4>> enclosed_;
 };
 
+// The features of one bounded convex primitive (its exact vertices and its
+// planes, as indices into out.planes): the planes through each vertex
+// (exact incidences), one independent triple of them per vertex, and the
+// pairs of planes sharing two distinct vertices. A point of the list on no
+// independent triple of the planes is not a vertex (a hull's points may lie
+// inside it) and is skipped: a point of the polytope on three independent
+// planes of it is a vertex (the least face holding it lies in their meet).
+// Left unset unless the polytope is full-dimensional (four affinely
+// independent points).
 void convex_features(const std::vector<Vector3<Rational>>& vertices, const std::vector<int>& planes, Shape_planes& out)
 {
   if (vertices.size() < 4) return;
