@@ -468,6 +468,26 @@ Algebraic Algebraic_access::root_between(const fmpz_poly_struct* f, const Ration
   throw std::logic_error("Algebraic::root_between: no sign change in the interval");
 }
 
+std::vector<mpz_class> Algebraic::without_root(const std::vector<mpz_class>& p) const
+{
+  Fmpz_poly f, m, q;
+  for (std::size_t i = 0; i < p.size(); ++i) fmpz_poly_set_coeff_mpz(f.p, static_cast<slong>(i), p[i].get_mpz_t());
+  if (fmpz_poly_is_zero(f.p)) throw std::logic_error("Algebraic: a root divided out of the zero polynomial");
+  if (is_rational()) {   // b t - a for a / b in lowest terms
+    fmpz_poly_set_coeff_mpz(m.p, 1, mpq_denref(value_.mpq()));
+    mpz_class a(mpq_numref(value_.mpq()));
+    a = -a;
+    fmpz_poly_set_coeff_mpz(m.p, 0, a.get_mpz_t());
+  } else {
+    for (std::size_t i = 0; i < rep_->poly.size(); ++i)
+      fmpz_poly_set_coeff_mpz(m.p, static_cast<slong>(i), rep_->poly[i].get_mpz_t());
+  }
+  while (fmpz_poly_length(f.p) >= fmpz_poly_length(m.p) && fmpz_poly_divides(q.p, f.p, m.p)) fmpz_poly_swap(f.p, q.p);
+  std::vector<mpz_class> out(static_cast<std::size_t>(fmpz_poly_length(f.p)));
+  for (std::size_t i = 0; i < out.size(); ++i) fmpz_poly_get_coeff_mpz(out[i].get_mpz_t(), f.p, static_cast<slong>(i));
+  return out;
+}
+
 CGAL::Sign Algebraic::sign_of(const std::vector<Rational>& g) const
 {
   if (!is_rational())

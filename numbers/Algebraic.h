@@ -50,6 +50,11 @@ public:
 
   bool is_rational() const { return !rep_; }
   const Rational& rational() const { return value_; }   // when is_rational()
+  // p (integer coefficients, constant first, not zero) divided by the
+  // largest power of this number's minimal polynomial that divides it: p
+  // itself when this number is no root of p. Exact over the integers (a
+  // primitive factor of an integer polynomial divides it over Z).
+  std::vector<mpz_class> without_root(const std::vector<mpz_class>& p) const;
   // The minimal polynomial's coefficients, constant term first (irrational).
   const std::vector<mpz_class>& polynomial() const { return rep_->poly; }
   // The isolating interval: the open interval (lower, upper) holds this

@@ -119,6 +119,21 @@ public:
   // A minor made exactly is identically zero when it is the zero polynomial.
   bool identically_zero(const Int_poly& d, const Minor_rows&) const { return primitive(d).empty(); }
 
+  // False when rows a and b are surely not proportional: one of their 2 x 2
+  // minors a_c b_d - a_d b_c excludes 0 on [lo, hi] whole, so that minor is
+  // not the zero polynomial.
+  bool may_be_proportional(int a, int b) const
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    const std::array<I, 4> &u = at_[0][a], &v = at_[0][b];
+    for (int c = 0; c < 4; ++c)
+      for (int d = c + 1; d < 4; ++d) {
+        I m = u[c] * v[d] - u[d] * v[c];
+        if (m.inf() > 0 || m.sup() < 0) return false;
+      }
+    return true;
+  }
+
   // The sign of p at the middle of [lo, hi], exactly.
   int sign_inside(const Int_poly& p) const
   {
@@ -288,6 +303,21 @@ Critical_times::Critical_times(const std::vector<Moving_plane>& planes, std::siz
   solve(table.table(), lo, hi);
 }
 
+// The times found so far that are roots of p too take p's minors, and p
+// is returned without their minimal polynomials: its other roots are
+// those of the rest, so a root two minors share is factored out once.
+std::vector<mpz_class> Critical_times::without_known_roots(const std::vector<mpz_class>& p,
+                                                           const std::vector<Minor_rows>& minors)
+{
+  std::vector<mpz_class> rest = p;
+  for (Critical_time& c : times_) {
+    if (c.t.sign_of(p) != CGAL::ZERO) continue;   // intervals first, then a divisibility
+    c.vanishing.insert(c.vanishing.end(), minors.begin(), minors.end());
+    rest = c.t.without_root(rest);
+  }
+  return rest;
+}
+
 void Critical_times::solve(const std::map<std::vector<mpz_class>, std::vector<Minor_rows>>& table, const Rational& lo,
                            const Rational& hi)
 {
@@ -295,7 +325,9 @@ void Critical_times::solve(const std::map<std::vector<mpz_class>, std::vector<Mi
     Work_budget::check();
     minor_count_ += minors.size();
     if (surely_no_root(key, lo, hi)) continue;
-    for (Algebraic& r : Algebraic::real_roots(key, lo, hi)) {
+    Poly_key rest = without_known_roots(key, minors);
+    if (rest.size() < 2 || (rest.size() < key.size() && surely_no_root(rest, lo, hi))) continue;
+    for (Algebraic& r : Algebraic::real_roots(rest, lo, hi)) {
       if (compare(r, lo) <= 0 || compare(r, hi) >= 0) continue;
       times_.push_back({std::move(r), minors});
     }

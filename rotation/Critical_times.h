@@ -84,6 +84,8 @@ private:
   void solve(const std::map<std::vector<mpz_class>, std::vector<Minor_rows>>& table, const Rational& lo,
              const Rational& hi);
 
+  std::vector<mpz_class> without_known_roots(const std::vector<mpz_class>& p, const std::vector<Minor_rows>& minors);
+
   std::vector<Critical_time> times_;
   std::size_t minor_count_ = 0;
   bool restricted_ = false;

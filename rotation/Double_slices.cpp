@@ -60,6 +60,8 @@ public:
       if (std::fabs(d[i]) > bound) return false;
     return true;
   }
+  // Rows are multiplied out in doubles (no filter).
+  bool may_be_proportional(int, int) const { return true; }
   // The sign of p at the middle of the interval.
   int sign_inside(const Double_poly& p) const
   {
@@ -167,6 +169,12 @@ Rational Double_slices::read_answer_number(const std::string& text) const
     throw Rotation_unsupported("the double pipeline answered with a witness coordinate that is not a finite number (" +
                                text + ")");
   return Rational(x);
+}
+
+std::vector<Moving_plane> Double_slices::rows(const Rotating_object& a, const Rotating_object& b,
+                                              const Rational& at) const
+{
+  return pair_rows(a, b, at);
 }
 
 std::vector<Critical_time> Double_slices::critical_times(const std::vector<Moving_plane>& planes,

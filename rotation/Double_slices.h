@@ -33,6 +33,8 @@ public:
   // A number of check's answer: a double's shortest decimal, read back to
   // that double (its exact value).
   Rational read_answer_number(const std::string& text) const;
+  // The pair's rows at `at` (pair_rows), read into doubles where asked.
+  std::vector<Moving_plane> rows(const Rotating_object& a, const Rotating_object& b, const Rational& at) const;
   // Real roots in (lo, hi) of the mixed minors made in doubles; a root is
   // kept when its imaginary part is at most 1e-7 max(1, |z|) (a double
   // root, a touch, comes out of the eigenvalues as a pair about sqrt(eps)

@@ -37,6 +37,25 @@ std::array<Time_poly, 3> cramer_numerators(const Moving_plane& a, const Moving_p
   return out;
 }
 
+// Cramer's quotients of the point where rows i, j, k meet, made on the
+// rows times the positive common denominators of their coefficients:
+// integer polynomials, so no fraction is reduced on the way, and the same
+// quotients (a row's factor multiplies numerators and denominator alike).
+Quotient_point meeting_quotients(const Moving_plane& a, const Moving_plane& b, const Moving_plane& c)
+{
+  using Row = std::array<Integer_time_poly, 4>;
+  mpz_class d;
+  std::array<Row, 3> r = {integer_polys(a, d), integer_polys(b, d), integer_polys(c, d)};
+  Quotient_point q;
+  for (int col = 0; col < 3; ++col) {
+    std::array<Row, 3> m = r;
+    for (Row& row : m) row[col] = -row[3];
+    q.num[col] = rational_poly(normal_minor(m[0], m[1], m[2]));
+  }
+  q.den = rational_poly(normal_minor(r[0], r[1], r[2]));
+  return q;
+}
+
 std::array<Algebraic, 3> point_at(const std::array<Time_poly, 3>& num, const Time_poly& den, const Algebraic& t)
 {
   return {quotient_at(num[0], den, t), quotient_at(num[1], den, t), quotient_at(num[2], den, t)};
@@ -280,6 +299,12 @@ private:
 
 } // namespace
 
+std::vector<Moving_plane> Exact_slices::rows(const Rotating_object& a, const Rotating_object& b,
+                                             const Rational& at) const
+{
+  return integer_pair_rows(a, b, at);
+}
+
 // Between rational ends (a piece between pose times, before any critical
 // time is known) the midpoint: a verdict is asked there first
 // (Rotating_pair.cpp), and an end-heavy simplest rational (1/11 in (0,
@@ -318,7 +343,8 @@ std::array<Algebraic, 3> Exact_slices::contact_point(const std::vector<Moving_pl
             x = std::array<Algebraic, 3>{Algebraic((*p)[0]), Algebraic((*p)[1]), Algebraic((*p)[2])};
             return true;
           }
-        x = limit_at(cramer_numerators(rows[i], rows[j], rows[k]), normal_minor(rows[i], rows[j], rows[k]), t_star);
+        Quotient_point q = meeting_quotients(rows[i], rows[j], rows[k]);
+        x = limit_at(q.num, q.den, t_star);
         return x.has_value();
       },
       filter, near_rows);

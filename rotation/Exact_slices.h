@@ -44,6 +44,10 @@ public:
   Check_answer check(const Scene& s, const Check_options& o) const { return check_(s, o); }
   // A number of check's answer: its exact text "p/q".
   Rational read_answer_number(const std::string& text) const { return rational_from_string(text); }
+  // The pair's rows (fact 10's matrix) at `at`, each times a positive
+  // integer: integer polynomials, since every question asked of them here
+  // is about signs, roots and meeting points (integer_pair_rows).
+  std::vector<Moving_plane> rows(const Rotating_object& a, const Rotating_object& b, const Rational& at) const;
   // features: the only minors to solve (two convex pieces' vertex-face and
   // edge-edge minors), or null for every mixed minor.
   std::vector<Critical_time> critical_times(const std::vector<Moving_plane>& rows, std::size_t first_count,

@@ -14,14 +14,15 @@ Time_poly divided(const Int_poly& p, const mpz_class& d)
   return Time_poly(c);
 }
 
-} // namespace
 
 // In integers: with q = Q / D, c = C / E and a plane p = P / L (integer
 // numerators over common denominators), n = P N(Q) / (L D^2) and e = (E
 // P_3 |Q|^2 - n'.C) / (L D^2 E), n' = P N(Q): the same polynomials as
 // moved_plane makes in rationals, coefficient by coefficient, with one
-// fraction reduced per coefficient instead of one per operation.
-std::vector<Moving_plane> moving_planes(const std::vector<Plane3<Rational>>& planes, const Pose_segment& s)
+// fraction reduced per coefficient instead of one per operation; or, with
+// reduce false, the row times L D^2 E > 0, no fraction reduced at all.
+template <bool reduce>
+std::vector<Moving_plane> planes_under(const std::vector<Plane3<Rational>>& planes, const Pose_segment& s)
 {
   mpz_class D, E;
   std::array<Int_poly, 4> Q = integer_polys(s.q, D);
@@ -36,10 +37,34 @@ std::vector<Moving_plane> moving_planes(const std::vector<Plane3<Rational>>& pla
     over_common_denominator(p.data(), 4, P.data(), L);
     // (n', E P_3 |Q|^2 - n'.C): moved_plane with the norm times E.
     std::array<Int_poly, 4> h = moved_plane(P, N, scaled_norm, C);
-    mpz_class dn = L * D * D, de = dn * E;
-    out.push_back({divided(h[0], dn), divided(h[1], dn), divided(h[2], dn), divided(h[3], de)});
+    if constexpr (reduce) {
+      mpz_class dn = L * D * D, de = dn * E;
+      out.push_back({divided(h[0], dn), divided(h[1], dn), divided(h[2], dn), divided(h[3], de)});
+    } else {
+      out.push_back({rational_poly(E * h[0]), rational_poly(E * h[1]), rational_poly(E * h[2]), rational_poly(h[3])});
+    }
   }
   return out;
+}
+
+} // namespace
+
+std::vector<Moving_plane> moving_planes(const std::vector<Plane3<Rational>>& planes, const Pose_segment& s)
+{
+  return planes_under<true>(planes, s);
+}
+
+std::vector<Moving_plane> integer_moving_planes(const std::vector<Plane3<Rational>>& planes, const Pose_segment& s)
+{
+  return planes_under<false>(planes, s);
+}
+
+Time_poly rational_poly(const Integer_time_poly& p)
+{
+  std::vector<Rational> c;
+  c.reserve(p.size());
+  for (int i = 0; i < p.size(); ++i) c.emplace_back(CGAL::Gmpz(p[i].get_mpz_t()));
+  return Time_poly(c);
 }
 
 Rational plane_value(const Moving_plane& h, const std::array<Rational, 3>& x, const Rational& t)

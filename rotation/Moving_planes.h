@@ -74,8 +74,16 @@ std::array<Integer_time_poly, N> integer_polys(const std::array<Time_poly, N>& p
   return out;
 }
 
+// p over the rationals (no fraction to reduce).
+Time_poly rational_poly(const Integer_time_poly& p);
+
 // Each plane of planes (shape coordinates) under segment s.
 std::vector<Moving_plane> moving_planes(const std::vector<Plane3<Rational>>& planes, const Pose_segment& s);
+// The same rows, each times a positive integer (its denominators'
+// product): polynomials with integer coefficients, made with no fraction
+// reduced. The same half-spaces, so the same signs, roots and meeting
+// points: for the stages that ask only those (the exact time slices).
+std::vector<Moving_plane> integer_moving_planes(const std::vector<Plane3<Rational>>& planes, const Pose_segment& s);
 
 // The row's value at the point x and time t: n(t).x + e(t).
 Rational plane_value(const Moving_plane& h, const std::array<Rational, 3>& x, const Rational& t);

@@ -117,7 +117,9 @@ Poly full_minor(const std::vector<std::array<Poly, 4>>& r, Normals& normals, int
 //    them on the same side: proportional rows (Row_owners) whose factor's
 //    sign, read as the sign of their dot product inside the interval
 //    (filter.sign_inside, exact in the exact stage), times the pieces'
-//    sides of them is positive.
+//    sides of them is positive. filter.may_be_proportional(a, b) is false
+//    only where rows a and b are surely not proportional (a filter: the
+//    rows made are then not multiplied out).
 // What it finds of a triple of normals or a pair of rows is kept for the
 // interval's other features: a box against a box has some eighty such
 // features on each interval, over a few dozen triples and pairs.
@@ -156,7 +158,7 @@ private:
   bool same_side(int a, int b)
   {
     auto [it, added] = same_side_.try_emplace({a, b}, false);
-    if (added && proportional(r_[a], r_[b])) {
+    if (added && filter_.may_be_proportional(a, b) && proportional(r_[a], r_[b])) {
       const auto &u = r_[a], &v = r_[b];
       it->second = filter_.sign_inside(u[0] * v[0] + u[1] * v[1] + u[2] * v[2] + u[3] * v[3]) * features_.sides[a] *
                        features_.sides[b] >
@@ -192,7 +194,9 @@ template <class Poly, class Filter, class Table>
 bool enumerate_feature_minors(const std::vector<std::array<Poly, 4>>& r, int first_count,
                               const Pair_features& features, const Filter& filter, Table& table)
 {
-  auto normals = [&](int i, int j, int k) { return normal_minor(r[i], r[j], r[k]); };
+  // A triple's normals' minor is made once: features share their triples
+  // (a vertex-face minor's four normals' minors are an edge-edge one's too).
+  pair_minors_detail::Normal_minors<Poly> normals(r);
   pair_minors_detail::Eventless_features<Poly, Filter> eventless(r, features, first_count, filter);
   std::size_t made = 0;
   for (const Minor_rows& m : features.minors) {

@@ -190,6 +190,14 @@ std::vector<Moving_plane> pair_rows(const Rotating_object& a, const Rotating_obj
   return rows;
 }
 
+std::vector<Moving_plane> integer_pair_rows(const Rotating_object& a, const Rotating_object& b, const Rational& at)
+{
+  std::vector<Moving_plane> rows = integer_moving_planes(a.shape.planes, segment_at(a.segments, at));
+  std::vector<Moving_plane> more = integer_moving_planes(b.shape.planes, segment_at(b.segments, at));
+  rows.insert(rows.end(), more.begin(), more.end());
+  return rows;
+}
+
 Scene posed_pair(const Rotating_object& a, const Rotating_object& b, const Rational& t)
 {
   Scene s;
@@ -246,7 +254,7 @@ private:
     // pair collides there, before any minor is made.
     if (!options_.earliest && in_interval({}, Algebraic(lo), Algebraic(hi))) return true;
     end_apart_ = false;
-    if (!features_) return slice(pair_rows(a_, b_, mid), {lo, hi, false}, nullptr);
+    if (!features_) return slice(slices_.rows(a_, b_, mid), {lo, hi, false}, nullptr);
     // Two convex pieces: the slices only where they are not surely apart,
     // each run with the features that can touch there (near_features). The
     // exact rows are made once a run is left (a miss makes none).
@@ -255,7 +263,7 @@ private:
     Rational sliced_to = lo;
     bool answered = cover.for_each_unsure(lo, hi, [&](const Time_piece& p) {
       sliced_to = p.hi;
-      if (rows.empty()) rows = pair_rows(a_, b_, mid);
+      if (rows.empty()) rows = slices_.rows(a_, b_, mid);
       Pair_features near = cover.near_features(*features_, p.lo, p.hi);
       return slice(rows, p, &near);
     });

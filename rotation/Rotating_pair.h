@@ -90,6 +90,9 @@ std::optional<Pair_features> feature_minors(const Shape_planes& a, const Shape_p
 // The rows of fact 10's matrix for a and b on the motion pieces that hold
 // `at`: a's planes as polynomials in t, then b's.
 std::vector<Moving_plane> pair_rows(const Rotating_object& a, const Rotating_object& b, const Rational& at);
+// The same rows each times a positive integer (integer_moving_planes):
+// the same half-spaces, for the exact time slices.
+std::vector<Moving_plane> integer_pair_rows(const Rotating_object& a, const Rotating_object& b, const Rational& at);
 
 // The scene of the two objects at rest, placed as they are at time t.
 Scene posed_pair(const Rotating_object& a, const Rotating_object& b, const Rational& t);

@@ -1232,6 +1232,48 @@ BOOST_AUTO_TEST_CASE(moving_planes_in_integers_are_the_rational_formula)
   }
 }
 
+// A root divided out (Algebraic::without_root, what Critical_times uses so
+// that a root two minors share is factored once): p = m^k c, with m the
+// minimal polynomial of a seeded random rational b/a or square root sqrt k,
+// k from 1 to 3, and c a random cofactor the number is no root of, gives c
+// back exactly; c itself comes back unchanged.
+BOOST_AUTO_TEST_CASE(a_root_divided_out_leaves_its_cofactor)
+{
+  std::uint64_t seed = stage_tests::env_number("CLASH4D_SEED", 5252);
+  BOOST_TEST_MESSAGE("root divided out: seed " << seed << " (CLASH4D_SEED)");
+  std::mt19937_64 rng(seed);
+  auto small = [&](int reach) { return static_cast<long>(rng() % (2 * reach + 1)) - reach; };
+  int checked = 0;
+  for (int round = 0; round < 200; ++round) {
+    Integer_time_poly m;
+    std::optional<Algebraic> r;
+    if (round % 2 == 0) {   // b t - a, a / b in lowest terms
+      Rational q = Rational(small(30)) / Rational(small(10) + 11);   // denominator 1 .. 21
+      r = Algebraic(q);
+      m = Integer_time_poly(std::vector<mpz_class>{mpz_class(-mpz_class(q.numerator().mpz())),
+                                                   mpz_class(q.denominator().mpz())});
+    } else {   // t^2 - k, k not a square: the root sqrt k in (1, k)
+      long k = 2 + rng() % 40;
+      if (static_cast<long>(std::sqrt(static_cast<double>(k))) * static_cast<long>(std::sqrt(static_cast<double>(k))) == k) ++k;
+      std::vector<mpz_class> p = {mpz_class(-k), mpz_class(0), mpz_class(1)};
+      r = Algebraic::real_roots(p, Rational(1), Rational(k))[0];
+      BOOST_TEST_REQUIRE(!r->is_rational());
+      m = Integer_time_poly(p);
+    }
+    std::vector<mpz_class> c(1 + rng() % 4);
+    for (mpz_class& x : c) x = small(20);
+    if (c.back() == 0) c.back() = 7;
+    if (r->sign_of(c) == CGAL::ZERO) continue;
+    Integer_time_poly p(c);
+    int power = 1 + rng() % 3;
+    for (int i = 0; i < power; ++i) p = p * m;
+    BOOST_TEST(r->without_root(p.coefficients()) == c, "round " << round << " power " << power);
+    BOOST_TEST(r->without_root(c) == c, "round " << round);
+    ++checked;
+  }
+  BOOST_TEST(checked > 150);
+}
+
 // What --stats counts (Slice_counts). The block [-1,1]^3 turning a quarter
 // turn about z reaches at most sqrt 2 < 2 from the axis, so against the
 // slab x >= 2 it is apart at every time: the cover proves the whole span
