@@ -176,7 +176,9 @@ void check_fans(const Facets& facets, const std::vector<P3>& V, const Fail& fail
     if (fans > 1)
       fail("vertex " + text(V[v]), "the surface is pinched there: " + std::to_string(fans) +
                                        " separate fans of facets meet at the point (" +
-                                       fail.facet(around[v].front().first) + " is in one; \"shells\": \"union\" reads each fan's shell as a solid)");
+                                       fail.facet(around[v].front().first) +
+                                       " is in one; \"repair\": [\"split-pinched\"] splits the vertex, one per fan, "
+                                       "for the same solid touching itself there)");
   }
 }
 
@@ -216,11 +218,65 @@ bool is_convex(const Facets& facets, const Edges& edges, const std::vector<P3>& 
   return convex && components == 1;
 }
 
+bool has_equal_points(const std::vector<P3>& V)
+{
+  return std::set<P3>(V.begin(), V.end()).size() != V.size();
+}
+
+// A triangle's cone at its vertex p: {a u + b w : a, b >= 0}, with u and w
+// its edges from p and n = u x w != 0 (a facet has area), an angle below pi.
+struct Cone {
+  P3 u, w, n;
+};
+
+Cone cone_at(int p, const std::array<int, 3>& t, const std::vector<P3>& V)
+{
+  int i = static_cast<int>(std::find(t.begin(), t.end(), p) - t.begin());
+  P3 u = sub(V[t[(i + 1) % 3]], V[p]), w = sub(V[t[(i + 2) % 3]], V[p]);
+  return {u, w, cross(u, w)};
+}
+
+// Whether the direction d is in the cone: in its plane, on the inner side
+// of u and of w.
+bool holds(const Cone& c, const P3& d)
+{
+  return CGAL::is_zero(dot(c.n, d)) && CGAL::sign(dot(cross(c.u, d), c.n)) >= 0 &&
+         CGAL::sign(dot(cross(d, c.w), c.n)) >= 0;
+}
+
+// Whether two cones at one point share a direction. In two planes they can
+// share only the line where the planes meet, one way or the other; in one
+// plane, two sectors below pi that meet share an edge's direction of one
+// of them (the intersection is a sector bounded by their edges).
+bool share_direction(const Cone& a, const Cone& b)
+{
+  P3 l = cross(a.n, b.n);
+  if (!is_zero(l)) {
+    P3 m{-l[0], -l[1], -l[2]};
+    return (holds(a, l) && holds(b, l)) || (holds(a, m) && holds(b, m));
+  }
+  return holds(b, a.u) || holds(b, a.w) || holds(a, b.u) || holds(a, b.w);
+}
+
+// Whether triangles s and t, which the crossing test found to meet, meet
+// only at a point where a vertex of each lies (the copies of a split pinched
+// vertex, distinct vertices at one point). Both are convex and hold that
+// point p, so another common point q would put q - p in both cones at p:
+// they meet only at p exactly when their cones share no direction.
+bool meet_only_at_a_split_point(const std::array<int, 3>& s, const std::array<int, 3>& t, const std::vector<P3>& V)
+{
+  for (int i : s)
+    for (int j : t)
+      if (i != j && V[i] == V[j]) return !share_direction(cone_at(i, s, V), cone_at(j, t, V));
+  return false;
+}
+
 } // namespace
 
 // Equal points are one vertex (STL writes each facet's own copies): the
 // distinct points a facet uses, in the order of first use.
-Mesh merged_points(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet)
+Mesh merged_points(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet,
+                   Equal_points equal)
 {
   Fail fail{file_name, file_facet};
   Mesh out;
@@ -231,6 +287,10 @@ Mesh merged_points(const Mesh& mesh, const std::string& file_name, const std::ve
     for (int v : mesh.facets[f]) {
       if (v < 0 || static_cast<std::size_t>(v) >= mesh.vertices.size())
         fail(fail.facet(static_cast<int>(f)), "vertex index " + std::to_string(v) + " out of range");
+      if (id[v] < 0 && equal == Equal_points::keep) {
+        id[v] = static_cast<int>(out.vertices.size());
+        out.vertices.push_back(mesh.vertices[v]);
+      }
       if (id[v] < 0) {
         auto it = id_of.emplace(mesh.vertices[v], static_cast<int>(out.vertices.size())).first;
         if (it->second == static_cast<int>(out.vertices.size())) out.vertices.push_back(mesh.vertices[v]);
@@ -300,6 +360,10 @@ void check_no_crossing(const Checked_mesh& m, const std::string& file_name)
   }
   std::vector<std::pair<Surface::Face_index, Surface::Face_index>> crossing;
   CGAL::Polygon_mesh_processing::self_intersections(surface, std::back_inserter(crossing));
+  if (has_equal_points(m.vertices))
+    crossing.erase(std::remove_if(crossing.begin(), crossing.end(), [&](const auto& c) {
+                     return meet_only_at_a_split_point(m.triangles[c.first], m.triangles[c.second], m.vertices);
+                   }), crossing.end());
   if (crossing.empty()) return;
   int a = facet_of_face[crossing.front().first], b = facet_of_face[crossing.front().second];
   for (const auto& c : crossing) {
@@ -310,19 +374,22 @@ void check_no_crossing(const Checked_mesh& m, const std::string& file_name)
   fail("facet " + std::to_string(a), "crosses facet " + std::to_string(b) + ": the surface intersects itself (\"shells\": \"union\" reads crossing shells as their union; \"as\": \"hull\" takes the convex hull)");
 }
 
-Checked_mesh check_mesh_surface(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet)
+Checked_mesh check_mesh_surface(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet,
+                                Equal_points equal)
 {
   Fail fail{file_name, file_facet};
   if (mesh.facets.empty()) fail("", "no facets");
   Checked_mesh out;
-  Mesh merged = merged_points(mesh, file_name, file_facet);
+  Mesh merged = merged_points(mesh, file_name, file_facet, equal);
   out.vertices = std::move(merged.vertices);
   const Facets& facets = merged.facets;
   std::vector<P3> normal = check_facets(facets, fail, out);
   Edges edges = check_edges(facets, out.vertices, fail);
   check_fans(facets, out.vertices, fail);
   out.volume = checked_volume(out, fail);
-  out.convex = is_convex(facets, edges, normal, out.vertices);
+  // A surface that touches itself bounds no convex solid (and its hull
+  // would fill the gap at the point): never the hull of its vertices.
+  out.convex = is_convex(facets, edges, normal, out.vertices) && !has_equal_points(out.vertices);
   return out;
 }
 

@@ -1,6 +1,7 @@
 // Whether a mesh bounds a solid, decided exactly (docs/meshes.md): closed,
 // edge-manifold, consistently and outward oriented, non-degenerate strictly
-// convex planar facets, no pinched vertex, no self-intersection, a positive
+// convex planar facets, no pinched vertex, no self-intersection (but where
+// the copies of a split pinched vertex meet at their point), a positive
 // volume; and whether it is convex.
 #ifndef CLASH4D_SCENE_MESH_CHECK_H
 #define CLASH4D_SCENE_MESH_CHECK_H
@@ -20,6 +21,11 @@ struct Checked_mesh {
   bool convex = false;          // every edge convex and one connected surface
 };
 
+// Whether equal points are one vertex: a file's mesh is merged (STL writes
+// each facet's own copies), a repaired one (scene/Mesh_repair.h) is merged
+// already and keeps apart the copies of a split pinched vertex.
+enum class Equal_points { merge, keep };
+
 // Throws Input_error (exit 2) with place "FILE_NAME: facet F" (or "vertex
 // ..." or "FILE_NAME") and what is wrong, e.g. "edge shared by 3 facets".
 // F is file_facet[f] for the mesh's facet f when given (a repaired mesh or
@@ -30,13 +36,18 @@ Checked_mesh check_mesh(const Mesh& mesh, const std::string& file_name, const st
 // decomposition cache skips the costliest check (scene/Mesh_solid.h): every
 // check but the crossings, then the crossings (CGAL's exact
 // self-intersection test) on the result.
+// Vertices at the same point (the copies of a split pinched vertex, kept by
+// Equal_points::keep) may meet there: two facets whose only common point is
+// such a point do not cross; any other common point is a crossing.
 Checked_mesh check_mesh_surface(const Mesh& mesh, const std::string& file_name,
-                                const std::vector<int>& file_facet = {});
+                                const std::vector<int>& file_facet = {}, Equal_points equal = Equal_points::merge);
 void check_no_crossing(const Checked_mesh& mesh, const std::string& file_name);
 
-// The mesh with equal points as one vertex and the points no facet uses
-// dropped; throws Input_error for a vertex index out of range.
-Mesh merged_points(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet = {});
+// The mesh with the points no facet uses dropped and, with
+// Equal_points::merge, equal points as one vertex; throws Input_error for a
+// vertex index out of range.
+Mesh merged_points(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet = {},
+                   Equal_points equal = Equal_points::merge);
 
 // Newell's normal of a polygon (unnormalised): zero exactly when its area is.
 std::array<Rational, 3> newell_normal(const std::vector<int>& polygon, const std::vector<std::array<Rational, 3>>& V);

@@ -34,7 +34,10 @@ void read_repairs(const Json_value& v, const std::string& path, Mesh_options& o)
     if (r.text == "triangulate") o.triangulate = true;
     else if (r.text == "drop-zero-area") o.drop_zero_area = true;
     else if (r.text == "orient") o.orient = true;
-    else throw Input_error(at(path, i), "unknown repair \"" + r.text + "\" (expected triangulate, drop-zero-area or orient)");
+    else if (r.text == "split-pinched") o.split_pinched = true;
+    else
+      throw Input_error(at(path, i), "unknown repair \"" + r.text +
+                                         "\" (expected triangulate, drop-zero-area, orient or split-pinched)");
   }
 }
 

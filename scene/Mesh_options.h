@@ -19,6 +19,7 @@ struct Mesh_options {
   bool triangulate = false;       // a facet not exactly planar or not strictly convex is cut into triangles
   bool drop_zero_area = false;    // zero-area triangles dropped, their middle vertex spliced into the neighbour
   bool orient = false;            // each shell's facets turned to agree, and the shell outward
+  bool split_pinched = false;     // a pinched vertex split into one vertex per fan of facets
   Solid_rule rule = Solid_rule::Odd_shells;
 
   // Text that tells options apart: part of the key of a mesh read once per
@@ -26,6 +27,7 @@ struct Mesh_options {
   std::string key() const
   {
     return to_string(scale) + (triangulate ? " triangulate" : "") + (drop_zero_area ? " drop-zero-area" : "") + (orient ? " orient" : "") +
+           (split_pinched ? " split-pinched" : "") +
            " rule " + std::to_string(static_cast<int>(rule));
   }
 };

@@ -247,6 +247,83 @@ void orient(Repaired_mesh& m)
                         " shell(s), each shell outward");
 }
 
+// The fans of facets around each vertex: the facets that use it, joined
+// across the edges from it that exactly two facets share. Only a vertex
+// whose every edge has two facets is given (an edge of one or of three
+// facets is refused by the check as before, and is not mended by a split);
+// each fan is its facets' indices, in order of the lowest.
+std::map<int, std::vector<std::vector<int>>> fans_of_vertices(const std::vector<std::vector<int>>& facets)
+{
+  std::map<std::pair<int, int>, std::vector<int>> edges;   // undirected edge -> its facets
+  std::map<int, std::vector<int>> around;                  // vertex -> its facets
+  for (std::size_t f = 0; f < facets.size(); ++f)
+    for (std::size_t i = 0; i < facets[f].size(); ++i) {
+      int a = facets[f][i], b = facets[f][(i + 1) % facets[f].size()];
+      edges[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(f));
+      around[a].push_back(static_cast<int>(f));
+    }
+  std::map<int, std::map<int, int>> joined;   // vertex -> facet -> a facet of its fan (union-find)
+  auto root = [](std::map<int, int>& parent, int f) {
+    while (parent.count(f) && parent[f] != f) f = parent[f];
+    return f;
+  };
+  std::set<int> open;                          // vertices on an edge not of two facets
+  for (const auto& [e, users] : edges)
+    for (int v : {e.first, e.second}) {
+      if (users.size() != 2) {
+        open.insert(v);
+        continue;
+      }
+      auto& parent = joined[v];
+      parent[root(parent, users[0])] = root(parent, users[1]);
+    }
+  std::map<int, std::vector<std::vector<int>>> fans;
+  for (const auto& [v, users] : around) {
+    if (open.count(v)) continue;
+    std::map<int, std::size_t> fan_of_root;
+    for (int f : std::set<int>(users.begin(), users.end())) {
+      auto [it, added] = fan_of_root.emplace(root(joined[v], f), fans[v].size());
+      if (added) fans[v].emplace_back();
+      fans[v][it->second].push_back(f);
+    }
+  }
+  return fans;
+}
+
+std::string point_text(const P3& p)
+{
+  return "(" + to_string(p[0]) + ", " + to_string(p[1]) + ", " + to_string(p[2]) + ")";
+}
+
+// "split-pinched": each vertex where separate fans of facets meet becomes
+// one vertex per fan, all at the same point (the first fan keeps the
+// vertex). The solid is unchanged, since a point bounds no volume; its
+// surface then touches itself at the point, which the crossing test
+// allows there and nowhere else (scene/Mesh_check.h).
+void split_pinched(Repaired_mesh& m)
+{
+  int split = 0, copies = 0;
+  std::string where;
+  for (const auto& [v, fans] : fans_of_vertices(m.mesh.facets)) {
+    if (fans.size() < 2) continue;
+    if (split++ < 5) {
+      std::string list;
+      for (std::size_t k = 0; k < fans.size(); ++k)
+        list += (k == 0 ? "" : k + 1 == fans.size() ? " and " : ", ") + std::to_string(m.file_facet[fans[k].front()]);
+      where += (where.empty() ? "" : "; ") + point_text(m.mesh.vertices[v]) + " between facets " + list;
+    }
+    for (std::size_t k = 1; k < fans.size(); ++k, ++copies) {
+      int copy = static_cast<int>(m.mesh.vertices.size());
+      m.mesh.vertices.push_back(m.mesh.vertices[v]);
+      for (int f : fans[k]) std::replace(m.mesh.facets[f].begin(), m.mesh.facets[f].end(), v, copy);
+    }
+  }
+  if (split > 5) where += "; and " + std::to_string(split - 5) + " more";
+  if (split)
+    m.repairs.push_back("split-pinched: " + std::to_string(split) + " pinched vertex(es) split into one vertex per fan of "
+                        "facets (" + std::to_string(copies) + " added; the surface touches itself there): " + where);
+}
+
 } // namespace
 
 Repaired_mesh repaired_mesh(const Mesh& file, const Mesh_options& options, const std::string& file_name)
@@ -262,6 +339,7 @@ Repaired_mesh repaired_mesh(const Mesh& file, const Mesh_options& options, const
   if (options.triangulate) triangulate(m);
   if (options.drop_zero_area) drop_zero_area(m);
   if (options.orient) orient(m);
+  if (options.split_pinched) split_pinched(m);
   return m;
 }
 

@@ -1,6 +1,7 @@
 // The repairs a user may ask for on a mesh file (docs/meshes.md, "Repairs,
 // scale and units"), each exact and on the file's own vertices: the scale,
-// facets cut into triangles, zero-area facets dropped. The result is then
+// facets cut into triangles, zero-area facets dropped, facets turned, a
+// pinched vertex split into one vertex per fan. The result is then
 // checked as strictly as any mesh (scene/Mesh_check.h); a repair never
 // hides a fault it was not asked to mend.
 #ifndef CLASH4D_SCENE_MESH_REPAIR_H
@@ -14,7 +15,7 @@
 namespace clash4d {
 
 struct Repaired_mesh {
-  Mesh mesh;                           // equal points merged; the facets after the repairs
+  Mesh mesh;                           // equal points merged (but a split pinched vertex's copies); the facets after the repairs
   std::vector<int> file_facet;         // the file's facet of each facet
   std::vector<std::string> repairs;    // what each repair changed (none: it changed nothing)
 };

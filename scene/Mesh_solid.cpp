@@ -7,9 +7,11 @@
 #include "scene/Mesh_repair.h"
 
 #include <CGAL/Nef_polyhedron_3.h>
+#include <CGAL/Nef_nary_union_3.h>   // after Nef_polyhedron_3.h, which includes Mark_bounded_volumes.h
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_decomposition_3.h>
+#include <algorithm>
 #include <map>
 #include <numeric>
 
@@ -42,6 +44,80 @@ Solid hull_of(const std::vector<Rational3>& points, const std::string& file_name
 
 Rational3 rational_point(const Point_3& p) { return {rational_of(p.x()), rational_of(p.y()), rational_of(p.z())}; }
 
+using Triangles = std::vector<std::array<int, 3>>;
+
+// The mesh's shells: its triangles joined through shared vertices (the
+// copies of a split pinched vertex are distinct vertices, so the two boxes
+// of a split pinch are two shells), in order of their lowest vertex's root.
+std::map<int, Triangles> shells_by_vertices(const Checked_mesh& mesh)
+{
+  std::vector<int> parent(mesh.vertices.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (const auto& t : mesh.triangles) {
+    parent[root(t[1])] = root(t[0]);
+    parent[root(t[2])] = root(t[0]);
+  }
+  std::map<int, Triangles> shells;
+  for (const auto& t : mesh.triangles) shells[root(t[0])].push_back(t);
+  return shells;
+}
+
+// The closed or open surface of the triangles as a Nef polyhedron (CGAL
+// marks the volume a closed one bounds, whatever its orientation). No two
+// of its vertices may be at one point.
+Nef surface_nef(const Checked_mesh& mesh, const Triangles& triangles)
+{
+  Surface surface;
+  std::map<int, Surface::Vertex_index> handle;
+  for (const auto& t : triangles)
+    for (int v : t)
+      if (!handle.count(v)) handle[v] = surface.add_vertex(lazy_point(mesh.vertices[v]));
+  for (const auto& t : triangles) surface.add_face(handle[t[0]], handle[t[1]], handle[t[2]]);
+  return Nef(surface);
+}
+
+// The union of the triangles as point sets, each a planar Nef polyhedron.
+Nef triangles_nef(const Checked_mesh& mesh, const Triangles& triangles)
+{
+  CGAL::Nef_nary_union_3<Nef> all;
+  for (const auto& t : triangles) {
+    std::vector<Point_3> corners{lazy_point(mesh.vertices[t[0]]), lazy_point(mesh.vertices[t[1]]),
+                                 lazy_point(mesh.vertices[t[2]])};
+    all.add_polyhedron(Nef(corners.begin(), corners.end()));
+  }
+  return all.get_union();
+}
+
+// The volume a shell encloses, whatever its orientation. CGAL's
+// polygon-mesh constructor makes a Nef vertex per mesh vertex, so a shell
+// that touches itself (two vertices at one point: a split pinched vertex)
+// would give two at one point, an invalid Nef. Its triangles that use a
+// second vertex at a point are set apart, the rest read as an open surface,
+// the two joined as point sets, and the bounded volumes marked: the
+// complement of one connected closed surface has one bounded part even where
+// it touches itself at points (a point does not join or split open sets in
+// space), and that part is the inside.
+Nef shell_nef(const Checked_mesh& mesh, const Triangles& triangles)
+{
+  std::map<Rational3, int> first_at;   // the first vertex met at each point
+  for (const auto& t : triangles)
+    for (int v : t) first_at.emplace(mesh.vertices[v], v);
+  Triangles surface, apart;
+  for (const auto& t : triangles) {
+    bool second = std::any_of(t.begin(), t.end(), [&](int v) { return first_at.at(mesh.vertices[v]) != v; });
+    (second ? apart : surface).push_back(t);
+  }
+  if (apart.empty()) return surface_nef(mesh, surface);
+  Nef nef = surface_nef(mesh, surface) + triangles_nef(mesh, apart);
+  CGAL::Mark_bounded_volumes<Nef> inside(true);
+  nef.delegate(inside);
+  return nef;
+}
+
 } // namespace
 
 Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits, Mesh_record* record)
@@ -65,31 +141,14 @@ Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, c
 {
   // Each shell (connected surface) encloses a volume, whatever its
   // orientation: CGAL's Nef from a polygon mesh reads it so. The shells do
-  // not cross (check_mesh), so they nest, and the solid is the points inside
+  // not cross (check_mesh; they may touch at the points of split pinched
+  // vertices), so they nest, and the solid is the points inside
   // an odd number of them: the symmetric difference of their volumes. The
   // volume test below then holds it to the facets' orientation.
-  std::vector<int> parent(mesh.vertices.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  for (const auto& t : mesh.triangles) {
-    parent[root(t[1])] = root(t[0]);
-    parent[root(t[2])] = root(t[0]);
-  }
-  std::map<int, std::vector<std::array<int, 3>>> shells;
-  for (const auto& t : mesh.triangles) shells[root(t[0])].push_back(t);
   Nef nef;
   bool first = true;
-  for (const auto& [r, triangles] : shells) {
-    Surface surface;
-    std::map<int, Surface::Vertex_index> handle;
-    for (const auto& t : triangles)
-      for (int v : t)
-        if (!handle.count(v)) handle[v] = surface.add_vertex(lazy_point(mesh.vertices[v]));
-    for (const auto& t : triangles) surface.add_face(handle[t[0]], handle[t[1]], handle[t[2]]);
-    Nef shell(surface);
+  for (const auto& [r, triangles] : shells_by_vertices(mesh)) {
+    Nef shell = shell_nef(mesh, triangles);
     nef = first ? shell : nef ^ shell;
     first = false;
   }
@@ -137,7 +196,7 @@ int piece_count(const Solid& s) { return s.kind == Solid::Kind::Union ? static_c
 void add_pieces(const Repaired_mesh& m, const std::string& name, const Mesh_limits& limits, Mesh_record& record,
                 Solid& u)
 {
-  Checked_mesh checked = check_mesh_surface(m.mesh, name, m.file_facet);
+  Checked_mesh checked = check_mesh_surface(m.mesh, name, m.file_facet, Equal_points::keep);
   record.triangles += static_cast<int>(checked.triangles.size());
   Mesh_record shell;
   Solid s = mesh_solid(checked, name, limits, &shell);
@@ -195,7 +254,7 @@ Solid repaired_solid(const Mesh& file, const std::string& file_name, const Mesh_
       break;
     case Mesh_options::Solid_rule::Odd_shells:
       record.solid_rule = "odd shells";
-      Checked_mesh checked = check_mesh_surface(m.mesh, file_name, m.file_facet);
+      Checked_mesh checked = check_mesh_surface(m.mesh, file_name, m.file_facet, Equal_points::keep);
       record.triangles = static_cast<int>(checked.triangles.size());
       s = mesh_solid(checked, file_name, limits, &record);
       break;
