@@ -468,6 +468,14 @@ Algebraic Algebraic_access::root_between(const fmpz_poly_struct* f, const Ration
   throw std::logic_error("Algebraic::root_between: no sign change in the interval");
 }
 
+bool Algebraic::is_root_of(const std::vector<mpz_class>& p) const
+{
+  if (sign_in_doubles(p, lower(), upper()) != 2) return false;
+  std::size_t length = p.size();
+  while (length > 0 && p[length - 1] == 0) --length;
+  return without_root(p).size() < length;
+}
+
 std::vector<mpz_class> Algebraic::without_root(const std::vector<mpz_class>& p) const
 {
   Fmpz_poly f, m, q;

@@ -50,6 +50,12 @@ public:
 
   bool is_rational() const { return !rep_; }
   const Rational& rational() const { return value_; }   // when is_rational()
+  // Whether this number is a root of p (integer coefficients, constant
+  // first): an enclosure over the isolating interval that excludes 0 says
+  // no, else the minimal polynomial's divisibility decides. Unlike sign_of,
+  // it refines nothing, so what a later step reads of the interval (a
+  // sample between two times) does not depend on having asked.
+  bool is_root_of(const std::vector<mpz_class>& p) const;
   // p (integer coefficients, constant first, not zero) divided by the
   // largest power of this number's minimal polynomial that divides it: p
   // itself when this number is no root of p. Exact over the integers (a

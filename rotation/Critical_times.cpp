@@ -311,7 +311,7 @@ std::vector<mpz_class> Critical_times::without_known_roots(const std::vector<mpz
 {
   std::vector<mpz_class> rest = p;
   for (Critical_time& c : times_) {
-    if (c.t.sign_of(p) != CGAL::ZERO) continue;   // intervals first, then a divisibility
+    if (!c.t.is_root_of(p)) continue;
     c.vanishing.insert(c.vanishing.end(), minors.begin(), minors.end());
     rest = c.t.without_root(rest);
   }
@@ -332,17 +332,8 @@ void Critical_times::solve(const std::map<std::vector<mpz_class>, std::vector<Mi
       times_.push_back({std::move(r), minors});
     }
   }
+  // Distinct already: a root of two minors is found once (without_known_roots).
   std::sort(times_.begin(), times_.end(), [](const Critical_time& a, const Critical_time& b) { return a.t < b.t; });
-  // Equal roots of different polynomials: one critical time.
-  std::vector<Critical_time> merged;
-  for (Critical_time& c : times_) {
-    if (!merged.empty() && merged.back().t == c.t) {
-      merged.back().vanishing.insert(merged.back().vanishing.end(), c.vanishing.begin(), c.vanishing.end());
-      continue;
-    }
-    merged.push_back(std::move(c));
-  }
-  times_ = std::move(merged);
 }
 
 } // namespace clash4d

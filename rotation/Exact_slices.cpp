@@ -24,19 +24,6 @@ Algebraic quotient_at(const Time_poly& num, const Time_poly& den, const Algebrai
   return Algebraic::quotient_at(t, num.coefficients(), den.coefficients());
 }
 
-// Cramer's numerators of the point where rows i, j, k meet: column c of
-// the normals replaced by -e.
-std::array<Time_poly, 3> cramer_numerators(const Moving_plane& a, const Moving_plane& b, const Moving_plane& c)
-{
-  std::array<Time_poly, 3> out;
-  for (int col = 0; col < 3; ++col) {
-    std::array<Moving_plane, 3> m = {a, b, c};
-    for (auto& row : m) row[col] = -row[3];
-    out[col] = normal_minor(m[0], m[1], m[2]);
-  }
-  return out;
-}
-
 // Cramer's quotients of the point where rows i, j, k meet, made on the
 // rows times the positive common denominators of their coefficients:
 // integer polynomials, so no fraction is reduced on the way, and the same
@@ -252,13 +239,11 @@ std::optional<Quotient_point> common_point_at(const std::vector<Moving_plane>& r
       std::vector<int> t;
       for (std::size_t i = 0; i < ids.size(); ++i)
         if (i != skip || ids.size() == 3) t.push_back(ids[i]);
-      Time_poly den = normal_minor(rows[t[0]], rows[t[1]], rows[t[2]]);
-      CGAL::Sign ds = sign_at(den, c.t);
+      Quotient_point x = meeting_quotients(rows[t[0]], rows[t[1]], rows[t[2]]);
+      CGAL::Sign ds = sign_at(x.den, c.t);
       if (ds == CGAL::ZERO) continue;
-      auto num = cramer_numerators(rows[t[0]], rows[t[1]], rows[t[2]]);
-      Point_signs signs(rows, num, den, ds, c.t, ids);
-      if (in_closed_object(rows, 0, a, signs, c.t) && in_closed_object(rows, offset, b, signs, c.t))
-        return Quotient_point{num, den};
+      Point_signs signs(rows, x.num, x.den, ds, c.t, ids);
+      if (in_closed_object(rows, 0, a, signs, c.t) && in_closed_object(rows, offset, b, signs, c.t)) return x;
     }
   }
   return std::nullopt;

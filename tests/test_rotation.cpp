@@ -1232,11 +1232,12 @@ BOOST_AUTO_TEST_CASE(moving_planes_in_integers_are_the_rational_formula)
   }
 }
 
-// A root divided out (Algebraic::without_root, what Critical_times uses so
-// that a root two minors share is factored once): p = m^k c, with m the
-// minimal polynomial of a seeded random rational b/a or square root sqrt k,
-// k from 1 to 3, and c a random cofactor the number is no root of, gives c
-// back exactly; c itself comes back unchanged.
+// A root divided out (Algebraic::without_root and is_root_of, what
+// Critical_times uses so that a root two minors share is factored once):
+// p = m^k c, with m the minimal polynomial of a seeded random rational a/b
+// or square root sqrt n, k from 1 to 3, and c a random cofactor the number
+// is no root of, gives c back exactly; c itself comes back unchanged; the
+// number is a root of p and not of c.
 BOOST_AUTO_TEST_CASE(a_root_divided_out_leaves_its_cofactor)
 {
   std::uint64_t seed = stage_tests::env_number("CLASH4D_SEED", 5252);
@@ -1269,6 +1270,8 @@ BOOST_AUTO_TEST_CASE(a_root_divided_out_leaves_its_cofactor)
     for (int i = 0; i < power; ++i) p = p * m;
     BOOST_TEST(r->without_root(p.coefficients()) == c, "round " << round << " power " << power);
     BOOST_TEST(r->without_root(c) == c, "round " << round);
+    BOOST_TEST(r->is_root_of(p.coefficients()), "round " << round);
+    BOOST_TEST(!r->is_root_of(c), "round " << round);
     ++checked;
   }
   BOOST_TEST(checked > 150);
