@@ -1194,7 +1194,9 @@ BOOST_AUTO_TEST_CASE(apart_cover_proves_only_what_is_apart)
 // in rationals (moved_plane on N(q) and |q|^2 made in rationals), on seeded
 // random pose segments and planes: the same polynomials, coefficient by
 // coefficient and of the same sizes. Coefficients are drawn with small and
-// large parts, some zero, and polynomials of 0 to 2 coefficients.
+// large parts, some zero, and polynomials of 0 to 2 coefficients. The
+// exact slices' rows (integer_moving_planes) are the same rows times one
+// positive factor each, with integer coefficients.
 BOOST_AUTO_TEST_CASE(moving_planes_in_integers_are_the_rational_formula)
 {
   std::uint64_t seed = stage_tests::env_number("CLASH4D_SEED", 5151);
@@ -1219,6 +1221,7 @@ BOOST_AUTO_TEST_CASE(moving_planes_in_integers_are_the_rational_formula)
     for (auto& p : planes)
       for (Rational& x : p) x = number();
     std::vector<Moving_plane> rows = moving_planes(planes, s);
+    std::vector<Moving_plane> integer_rows = integer_moving_planes(planes, s);
     auto N = unnormalised_rotation(s.q);
     Time_poly norm = squared_norm(s.q);
     for (std::size_t k = 0; k < planes.size(); ++k) {
@@ -1227,6 +1230,23 @@ BOOST_AUTO_TEST_CASE(moving_planes_in_integers_are_the_rational_formula)
         BOOST_TEST_REQUIRE(rows[k][c].size() == want[c].size(), "round " << round << " plane " << k << " column " << c);
         for (int i = 0; i < want[c].size(); ++i)
           BOOST_TEST(rows[k][c][i] == want[c][i], "round " << round << " plane " << k << " column " << c);
+      }
+      // The exact slices' row: integer coefficients, one positive factor
+      // times the row, the same for every coefficient.
+      std::optional<Rational> factor;
+      for (int c = 0; c < 4; ++c) {
+        BOOST_TEST_REQUIRE(integer_rows[k][c].size() == want[c].size());
+        for (int i = 0; i < want[c].size(); ++i) {
+          const Rational& x = integer_rows[k][c][i];
+          BOOST_TEST(x.denominator() == CGAL::Gmpz(1), "round " << round << " plane " << k);
+          if (CGAL::is_zero(want[c][i])) {
+            BOOST_TEST(CGAL::is_zero(x), "round " << round << " plane " << k);
+            continue;
+          }
+          if (!factor) factor = x / want[c][i];
+          BOOST_TEST(*factor > 0, "round " << round << " plane " << k);
+          BOOST_TEST(x == *factor * want[c][i], "round " << round << " plane " << k << " column " << c);
+        }
       }
     }
   }
