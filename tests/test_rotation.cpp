@@ -269,6 +269,59 @@ BOOST_AUTO_TEST_CASE(simplest_rational_between)
   BOOST_TEST(s < q("1/8"));
 }
 
+// The simplest rational between two algebraic numbers is theirs, not their
+// isolating intervals': on fresh numbers it is the one the Rational overload
+// gives between inner ends refined far past it (a sub-interval holding the
+// simplest rational of an interval has it as its own simplest), and on
+// rationals it is the Rational overload's.
+BOOST_AUTO_TEST_CASE(simplest_between_algebraic_numbers_is_theirs)
+{
+  std::uint64_t seed = stage_tests::env_number("CLASH4D_SEED", 6161);
+  BOOST_TEST_MESSAGE("simplest between algebraic numbers: seed " << seed << " (CLASH4D_SEED)");
+  std::mt19937_64 rng(seed);
+  auto small = [&](long reach) { return static_cast<long>(rng() % (2 * reach + 1)) - reach; };
+  for (int round = 0; round < 300; ++round) {
+    Rational a = Rational(small(40)) / Rational(1 + rng() % 12), b = Rational(small(40)) / Rational(1 + rng() % 12);
+    if (a == b) continue;
+    if (b < a) std::swap(a, b);
+    BOOST_TEST(simplest_between(Algebraic(a), Algebraic(b)) == simplest_between(a, b), a << " " << b);
+  }
+  // sqrt k, -sqrt k, and rationals; pairs in order.
+  auto draw = [&]() {
+    long k = 2 + rng() % 60;
+    if (static_cast<long>(std::sqrt(static_cast<double>(k))) * static_cast<long>(std::sqrt(static_cast<double>(k))) == k) ++k;
+    std::vector<mpz_class> p = {mpz_class(-k), mpz_class(0), mpz_class(1)};
+    // Wide isolating intervals, (0, k) and (-k, 0), as a root found on a
+    // long run starts out.
+    return rng() % 2 ? Algebraic::root_between(p, Rational(0), Rational(k))
+                     : Algebraic::root_between(p, Rational(-k), Rational(0));
+  };
+  int differs_from_fresh_ends = 0, checked = 0;
+  for (int round = 0; round < 300; ++round) {
+    Algebraic x = draw(), y = draw();
+    if (round % 3 == 0) y = Algebraic(Rational(small(80)) / Rational(1 + rng() % 9));
+    // A rational just past x's isolating interval: the simplest rational
+    // between them may lie inside that interval.
+    if (round % 3 == 1) y = Algebraic(x.upper() + (x.upper() - x.lower()) * Rational(1 + rng() % 4));
+    int c = compare(x, y);
+    if (c == 0) continue;
+    if (c > 0) std::swap(x, y);
+    Algebraic x0 = x, y0 = y;   // the inner ends once apart, as the sample was taken before
+    while (!(x0.upper() < y0.lower())) x0.refine(), y0.refine();
+    Rational fresh_ends = simplest_between(x0.upper(), y0.lower());
+    Rational s = simplest_between(x, y);
+    for (int i = 0; i < 80; ++i) x.refine(), y.refine();
+    BOOST_TEST(compare(x, s) < 0);
+    BOOST_TEST(compare(y, s) > 0);
+    BOOST_TEST(s == simplest_between(x.upper(), y.lower()), "round " << round << ": " << x.to_text() << " " << y.to_text());
+    BOOST_TEST(s == simplest_between(x, y), "round " << round << ": the same after refining");
+    differs_from_fresh_ends += fresh_ends != s;
+    ++checked;
+  }
+  BOOST_TEST_MESSAGE(checked << " pairs, " << differs_from_fresh_ends << " where the fresh intervals' ends give another rational");
+  BOOST_TEST(checked > 250);
+}
+
 // ---- Random rotating scenes (seeded): blocks turning about random axes
 // while moving, against blocks at rest or turning. Two properties that do
 // not come from the stage itself:
