@@ -371,7 +371,32 @@ void check_no_crossing(const Checked_mesh& m, const std::string& file_name)
     if (std::min(x, y) < std::min(a, b)) a = x, b = y;
   }
   if (a > b) std::swap(a, b);
-  fail("facet " + std::to_string(a), "crosses facet " + std::to_string(b) + ": the surface intersects itself (\"shells\": \"union\" reads crossing shells as their union; \"as\": \"hull\" takes the convex hull)");
+  std::vector<int> shell = shell_of_triangles(m);
+  auto triangle_of = [&](int facet) { return std::find(m.facet_of.begin(), m.facet_of.end(), facet) - m.facet_of.begin(); };
+  // "shells": "union" helps only where two shells cross; a shell that crosses
+  // itself has no repair here (docs/meshes.md: the winding-number rule is not built).
+  std::string repair = shell[triangle_of(a)] == shell[triangle_of(b)]
+                         ? "one shell crosses itself, which no repair reads as a solid"
+                         : "\"shells\": \"union\" reads crossing shells as their union";
+  fail("facet " + std::to_string(a), "crosses facet " + std::to_string(b) + ": the surface intersects itself (" + repair +
+                                         "; \"as\": \"hull\" takes the convex hull)");
+}
+
+std::vector<int> shell_of_triangles(const Checked_mesh& mesh)
+{
+  std::vector<int> parent(mesh.vertices.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (const auto& t : mesh.triangles) {
+    parent[root(t[1])] = root(t[0]);
+    parent[root(t[2])] = root(t[0]);
+  }
+  std::vector<int> shell;
+  for (const auto& t : mesh.triangles) shell.push_back(root(t[0]));
+  return shell;
 }
 
 Checked_mesh check_mesh_surface(const Mesh& mesh, const std::string& file_name, const std::vector<int>& file_facet,

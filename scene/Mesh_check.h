@@ -43,6 +43,11 @@ Checked_mesh check_mesh_surface(const Mesh& mesh, const std::string& file_name,
                                 const std::vector<int>& file_facet = {}, Equal_points equal = Equal_points::merge);
 void check_no_crossing(const Checked_mesh& mesh, const std::string& file_name);
 
+// The shell of each triangle: the triangles joined through shared vertices
+// (the copies of a split pinched vertex are distinct vertices), named by a
+// vertex of the shell.
+std::vector<int> shell_of_triangles(const Checked_mesh& mesh);
+
 // The mesh with the points no facet uses dropped and, with
 // Equal_points::merge, equal points as one vertex; throws Input_error for a
 // vertex index out of range.

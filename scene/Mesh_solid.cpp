@@ -51,18 +51,9 @@ using Triangles = std::vector<std::array<int, 3>>;
 // of a split pinch are two shells), in order of their lowest vertex's root.
 std::map<int, Triangles> shells_by_vertices(const Checked_mesh& mesh)
 {
-  std::vector<int> parent(mesh.vertices.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  for (const auto& t : mesh.triangles) {
-    parent[root(t[1])] = root(t[0]);
-    parent[root(t[2])] = root(t[0]);
-  }
+  std::vector<int> shell = shell_of_triangles(mesh);
   std::map<int, Triangles> shells;
-  for (const auto& t : mesh.triangles) shells[root(t[0])].push_back(t);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) shells[shell[t]].push_back(mesh.triangles[t]);
   return shells;
 }
 

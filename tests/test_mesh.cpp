@@ -254,6 +254,9 @@ BOOST_AUTO_TEST_CASE(shells_cavities_crossings_and_pinches)
   BOOST_TEST(crossing.second == CLASH4D_EXIT_INVALID);
   BOOST_TEST(contains(crossing.first, "crossing.off: facet "), crossing.first);
   BOOST_TEST(contains(crossing.first, ": the surface intersects itself"), crossing.first);
+  // Two shells: the union of shells is the repair to offer (one shell
+  // crossing itself is fixtures/meshes/repair/spike_through.off).
+  BOOST_TEST(contains(crossing.first, "\"shells\": \"union\" reads crossing shells"), crossing.first);
   // Two cubes sharing only the corner (1, 1, 1).
   auto pinched = refused(boxes_off({{0, 1, 0, 0, 0, false}, {0, 1, 1, 1, 1, false}}), "pinched.off");
   BOOST_TEST(pinched.second == CLASH4D_EXIT_INVALID);
