@@ -1,22 +1,19 @@
 #include "rotation/Exact_slices.h"
 
 #include "rotation/Cell_vertices.h"
+#include "rotation/Central_topes.h"
 #include "rotation/Rotating_pair.h"
 #include "rotation/Simplest_rational.h"
 
 #include <CGAL/Interval_nt.h>
+
+#include <set>
 
 namespace clash4d {
 
 namespace {
 
 bool is_zero(const Rational& x) { return CGAL::sign(x) == CGAL::ZERO; }
-
-CGAL::Sign sign_at(const Time_poly& p, const Algebraic& t)
-{
-  if (t.is_rational()) return CGAL::sign(p.at(t.rational()));
-  return t.sign_of(p.coefficients());
-}
 
 Algebraic quotient_at(const Time_poly& num, const Time_poly& den, const Algebraic& t)
 {
@@ -184,8 +181,9 @@ bool in_closed_pieces(std::size_t offset, const Shape_planes& shape, Point_signs
 
 // Whether the point is in the closed regular set of a CSG shape whose
 // planes are rows[offset ...]: some open cell next to the point is inside.
-// The planes through the point must be at most three and independent
-// there, so that every choice of their sides is a cell.
+// When at most three planes pass through it and they are independent there,
+// every choice of their sides is a cell; otherwise the cells are the topes
+// of their normals (a vertex of four faces, a plane through an edge).
 bool in_closed_cells(const std::vector<Moving_plane>& rows, std::size_t offset, const Rotating_object& o,
                      Point_signs& signs, const Algebraic& r)
 {
@@ -203,12 +201,20 @@ bool in_closed_cells(const std::vector<Moving_plane>& rows, std::size_t offset, 
     for (int i = 0; i < 3 && !independent; ++i)
       independent = sign_at(u[i] * v[(i + 1) % 3] - u[(i + 1) % 3] * v[i], r) != CGAL::ZERO;
   }
-  if (!independent)
-    throw Rotation_unsupported("closed semantics at an irrational critical time: a contact point on more than three "
-                               "planes of '" + o.name + "', or on dependent ones (a degenerate contact this "
-                               "release does not resolve)");
-  for (unsigned mask = 0; mask < (1u << zero.size()); ++mask) {
-    for (std::size_t k = 0; k < zero.size(); ++k) side[zero[k]] = (mask >> k) & 1 ? 1 : -1;
+  std::set<std::vector<int>> cells;
+  if (independent) {
+    for (unsigned mask = 0; mask < (1u << zero.size()); ++mask) {
+      std::vector<int> sides;
+      for (std::size_t k = 0; k < zero.size(); ++k) sides.push_back((mask >> k) & 1 ? 1 : -1);
+      cells.insert(sides);
+    }
+  } else {
+    std::vector<Time_direction> normals;
+    for (int p : zero) normals.push_back({rows[offset + p][0], rows[offset + p][1], rows[offset + p][2]});
+    cells = central_topes(normals, r);
+  }
+  for (const std::vector<int>& sides : cells) {
+    for (std::size_t k = 0; k < zero.size(); ++k) side[zero[k]] = sides[k];
     if (inside_at_generic(o.shape, side)) return true;
   }
   return false;
