@@ -468,12 +468,16 @@ Algebraic Algebraic_access::root_between(const fmpz_poly_struct* f, const Ration
   throw std::logic_error("Algebraic::root_between: no sign change in the interval");
 }
 
-bool Algebraic::is_root_of(const std::vector<mpz_class>& p) const
+bool Algebraic::is_root_of(const std::vector<mpz_class>& p) const { return root_divided_out(p).has_value(); }
+
+std::optional<std::vector<mpz_class>> Algebraic::root_divided_out(const std::vector<mpz_class>& p) const
 {
-  if (sign_in_doubles(p, lower(), upper()) != 2) return false;
+  if (sign_in_doubles(p, lower(), upper()) != 2) return std::nullopt;
   std::size_t length = p.size();
   while (length > 0 && p[length - 1] == 0) --length;
-  return without_root(p).size() < length;
+  std::vector<mpz_class> rest = without_root(p);
+  if (rest.size() == length) return std::nullopt;   // no power divides: not a root
+  return rest;
 }
 
 std::vector<mpz_class> Algebraic::without_root(const std::vector<mpz_class>& p) const

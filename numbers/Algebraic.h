@@ -17,6 +17,7 @@
 #include <CGAL/enum.h>
 #include <gmpxx.h>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -61,6 +62,10 @@ public:
   // itself when this number is no root of p. Exact over the integers (a
   // primitive factor of an integer polynomial divides it over Z).
   std::vector<mpz_class> without_root(const std::vector<mpz_class>& p) const;
+  // Both at once: p without the powers of the minimal polynomial when this
+  // number is a root of p (is_root_of's filter, then the divisions made
+  // once), none when it is not.
+  std::optional<std::vector<mpz_class>> root_divided_out(const std::vector<mpz_class>& p) const;
   // The minimal polynomial's coefficients, constant term first (irrational).
   const std::vector<mpz_class>& polynomial() const { return rep_->poly; }
   // The isolating interval: the open interval (lower, upper) holds this

@@ -311,9 +311,10 @@ std::vector<mpz_class> Critical_times::without_known_roots(const std::vector<mpz
 {
   std::vector<mpz_class> rest = p;
   for (Critical_time& c : times_) {
-    if (!c.t.is_root_of(p)) continue;
+    std::optional<std::vector<mpz_class>> cofactor = c.t.root_divided_out(rest);
+    if (!cofactor) continue;
     c.vanishing.insert(c.vanishing.end(), minors.begin(), minors.end());
-    rest = c.t.without_root(rest);
+    rest = std::move(*cofactor);
   }
   return rest;
 }

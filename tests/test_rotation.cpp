@@ -1361,6 +1361,9 @@ BOOST_AUTO_TEST_CASE(a_root_divided_out_leaves_its_cofactor)
     BOOST_TEST(r->without_root(c) == c, "round " << round);
     BOOST_TEST(r->is_root_of(p.coefficients()), "round " << round);
     BOOST_TEST(!r->is_root_of(c), "round " << round);
+    std::optional<std::vector<mpz_class>> cofactor = r->root_divided_out(p.coefficients());
+    BOOST_TEST((cofactor && *cofactor == c), "round " << round);
+    BOOST_TEST(!r->root_divided_out(c), "round " << round);
     ++checked;
   }
   BOOST_TEST(checked > 150);
