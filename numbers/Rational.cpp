@@ -128,6 +128,10 @@ void over_common_denominator(const Rational* x, std::size_t n, mpz_class* X, mpz
     if (!mpz_divisible_p(d.get_mpz_t(), mpq_denref(x[i].mpq())))
       mpz_lcm(d.get_mpz_t(), d.get_mpz_t(), mpq_denref(x[i].mpq()));
   for (std::size_t i = 0; i < n; ++i) {
+    if (mpz_cmp(d.get_mpz_t(), mpq_denref(x[i].mpq())) == 0) {   // the factor is 1 (integers: always)
+      mpz_set(X[i].get_mpz_t(), mpq_numref(x[i].mpq()));
+      continue;
+    }
     mpz_divexact(X[i].get_mpz_t(), d.get_mpz_t(), mpq_denref(x[i].mpq()));
     mpz_mul(X[i].get_mpz_t(), X[i].get_mpz_t(), mpq_numref(x[i].mpq()));
   }
