@@ -178,11 +178,13 @@ std::vector<Algebraic> Turning_prover::critical_cuts(const Rational& mid, const 
 {
   std::vector<Algebraic> cuts{Algebraic(lo)};
   restricted = false;
-  for_parts_that_may_meet(*parts_a_, *parts_b_, [&](const Rotating_object& a, const Rotating_object& b) {
+  auto add = [&](const Rotating_object& a, const Rotating_object& b) {
     for (Algebraic& t : part_pair_events(a, b, pair_rows(a, b, mid), mid, lo, piece_hi, features_only, restricted))
       if (t < hi) cuts.push_back(std::move(t));
     return false;
-  });
+  };
+  if (one_member_pair_) add(a(), b());
+  else for_parts_that_may_meet(*parts_a_, *parts_b_, add);
   std::sort(cuts.begin() + 1, cuts.end(), [](const Algebraic& x, const Algebraic& y) { return x < y; });
   cuts.erase(std::unique(cuts.begin() + 1, cuts.end(), [](const Algebraic& x, const Algebraic& y) { return x == y; }),
              cuts.end());
@@ -235,14 +237,22 @@ std::vector<Turning_prover::Leaf> Turning_prover::pose_piece(const Rational& lo,
   return leaves;
 }
 
-json Turning_prover::prove(int a, int b, const Algebraic& until, bool open_end)
+// 8.3's members: when each object is a union of bounded convex pieces, or
+// one such piece, and one has two or more. Its pieces are then the
+// formula's members in order (the union's convex leaves, as the checker
+// flattens the formula's top OR).
+bool Turning_prover::by_members() const
 {
-  parts_a_.emplace(scene_.objects[a], scene_.t_lo, scene_.t_hi);
-  parts_b_.emplace(scene_.objects[b], scene_.t_lo, scene_.t_hi);
-  where_ = "objects '" + scene_.objects[a].name + "' and '" + scene_.objects[b].name + "'";
+  auto convex = [](const Object_parts& o) { return !o.pieces.empty() || o.whole.shape.convex_pieces.size() == 1; };
+  return convex(*parts_a_) && convex(*parts_b_) && (!parts_a_->pieces.empty() || !parts_b_->pieces.empty());
+}
+
+// The pieces of time of a() and b() from tL until `until`, each a leaf.
+json Turning_prover::pieces_until(const Algebraic& until, bool open_end)
+{
   json pieces = json::array();
   Rational end = until.is_rational() ? until.rational() : until.upper();
-  std::vector<Rational> ends = piece_ends(parts_a_->whole, parts_b_->whole, scene_.t_lo, end);
+  std::vector<Rational> ends = piece_ends(a(), b(), scene_.t_lo, end);
   for (std::size_t p = 0; p + 1 < ends.size() && Algebraic(ends[p]) < until; ++p) {
     Algebraic hi = Algebraic(ends[p + 1]) < until ? Algebraic(ends[p + 1]) : until;
     for (const Leaf& leaf : pose_piece(ends[p], ends[p + 1], hi, open_end && hi == until)) {
@@ -253,9 +263,31 @@ json Turning_prover::prove(int a, int b, const Algebraic& until, bool open_end)
                             {"proof", json{{"conflicts", conflicts}}}});
     }
   }
+  return pieces;
+}
+
+json Turning_prover::prove(int a, int b, const Algebraic& until, bool open_end)
+{
+  parts_a_.emplace(scene_.objects[a], scene_.t_lo, scene_.t_hi);
+  parts_b_.emplace(scene_.objects[b], scene_.t_lo, scene_.t_hi);
+  std::string pair = "objects '" + scene_.objects[a].name + "' and '" + scene_.objects[b].name + "'";
   json out{{"until", number_json(until)}};
   if (open_end) out["open_end"] = true;
-  out["pieces"] = pieces;
+  if (!by_members()) {
+    a_ = &parts_a_->whole, b_ = &parts_b_->whole, one_member_pair_ = false;
+    where_ = pair;
+    out["pieces"] = pieces_until(until, open_end);
+    return out;
+  }
+  json members = json::array();
+  one_member_pair_ = true;
+  for (std::size_t i = 0; i < parts_a_->count(); ++i)
+    for (std::size_t j = 0; j < parts_b_->count(); ++j) {
+      a_ = &parts_a_->part(i), b_ = &parts_b_->part(j);
+      where_ = pair + ", members " + std::to_string(i) + " and " + std::to_string(j);
+      members.push_back(json{{"a", std::to_string(i)}, {"b", std::to_string(j)}, {"pieces", pieces_until(until, open_end)}});
+    }
+  out["members"] = members;
   return out;
 }
 

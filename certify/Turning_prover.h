@@ -11,7 +11,11 @@
 // decides them, rotation/Rotating_pair.h), two unions of convex pieces at
 // those of their pairs of pieces (rotation/Object_parts.h), and an
 // interval on which the proof at its sample does not hold is cut again at
-// every mixed minor's (of each pair of pieces).
+// every mixed minor's (of each pair of pieces). When both objects are
+// unions of convex pieces (one of them at least two), the APART is given by
+// members (8.3): each pair of pieces proved apart on its own pieces of time,
+// cut at its own events only, so the proof grows with the pairs of pieces
+// and their own events, not with their product.
 #ifndef CLASH4D_CERTIFY_TURNING_PROVER_H
 #define CLASH4D_CERTIFY_TURNING_PROVER_H
 
@@ -50,12 +54,14 @@ private:
   using Proof = std::vector<Polynomial_conflict>;
 
   std::vector<Leaf> pose_piece(const Rational& lo, const Rational& piece_hi, const Algebraic& hi, bool open_end);
+  nlohmann::ordered_json pieces_until(const Algebraic& until, bool open_end);
+  bool by_members() const;
   Proof proof_at(const std::vector<Moving_plane>& rows, const Rational& s);
   std::vector<Algebraic> critical_cuts(const Rational& mid, const Rational& lo, const Rational& piece_hi,
                                        const Algebraic& hi, bool features_only, bool& restricted) const;
   bool valid(const Proof& p, const Algebraic& lo, const Algebraic& hi, bool open_end) const;
-  const Rotating_object& a() const { return parts_a_->whole; }
-  const Rotating_object& b() const { return parts_b_->whole; }
+  const Rotating_object& a() const { return *a_; }
+  const Rotating_object& b() const { return *b_; }
 
   const Scene& scene_;
   Semantics semantics_;
@@ -63,6 +69,10 @@ private:
   std::uint64_t limit_, steps_ = 0;
   std::size_t conflicts_ = 0;
   std::optional<Object_parts> parts_a_, parts_b_;   // the pair being proved, with its convex pieces
+  // What is proved now: the whole objects (cut at every pair of their
+  // pieces that may meet), or one member of each (cut at that pair's).
+  const Rotating_object *a_ = nullptr, *b_ = nullptr;
+  bool one_member_pair_ = false;
   std::string where_;                      // names it in a refusal
 };
 

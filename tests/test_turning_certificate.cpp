@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <unistd.h>
 
 using namespace clash4d;
@@ -252,6 +253,68 @@ BOOST_AUTO_TEST_CASE(turning_unions_of_convex_pieces_before_their_first_contact)
   ]})json");
   certify_and_verify(path, modes[1], "exact", "stars-3-spikes.json");
   if (!std::getenv("CLASH4D_TURNING_CERTIFICATE_CASES")) certify_and_verify(path, modes[5], "exact", "stars-3-spikes.json");
+}
+
+// Two unions of two blocks each (the pieces scene above, regularised: they
+// only touch): the APART is given by members (docs/certificate-format.md,
+// 8.3), one entry per pair of pieces with its own pieces of time, which
+// both checkers accept; and each way of leaving a pair of pieces unproved
+// is rejected by both, at its place.
+BOOST_AUTO_TEST_CASE(members_prove_each_pair_of_pieces)
+{
+  const std::string cut = R"({"format": "clash4d-scene/1", "time": ["1/5", 1], "objects": [
+    {"name": "diamond", "shape": {"union": [{"block": {"min": [-1, -1, -1], "max": [1, 0, 1]}},
+                                            {"block": {"min": [-1, 0, -1], "max": [1, 1, 1]}}]},
+     "motion": {"poses": [{"t": 0, "translate": [0, 0, 0], "rotate": [1, 0, 0, 0]},
+                          {"t": 1, "translate": [-1, 0, 0], "rotate": [1, 0, 0, 1]}]}},
+    {"name": "corner", "shape": {"union": [{"block": {"min": [1, 0, -1], "max": [2, 2, 1]}},
+                                           {"block": {"min": [2, 0, -1], "max": [3, 2, 1]}}]}}]})";
+  std::string scene = write_text("members.json", cut), cert = (work / "members-cert.json").string();
+  BOOST_TEST_REQUIRE(run_clash4d({"check", scene, "--certificate", cert}).status == 0);
+  json c = json::parse(std::ifstream(cert));
+  const json& apart = c["pairs"][0]["apart"];
+  BOOST_TEST_REQUIRE(apart.contains("members"));
+  BOOST_TEST(!apart.contains("pieces"));
+  std::set<std::pair<std::string, std::string>> pairs;
+  for (const json& e : apart["members"]) pairs.insert({e["a"].get<std::string>(), e["b"].get<std::string>()});
+  BOOST_TEST(pairs.size() == 4u);
+  BOOST_TEST(apart["members"].size() == 4u);
+  certify_and_verify(scene, modes[0], "exact", "members.json");
+  auto rejected = [&](const std::string& what, const json& changed, const std::string& where, const std::string& reason) {
+    std::string path = write_text("members-" + what + ".json", changed.dump());
+    Cli_run v = run_clash4d({"verify", scene, path});
+    BOOST_TEST(v.status == 1, what << ": " << v.out << v.err);
+    BOOST_TEST(v.err.find(where) != std::string::npos, what << ": " << v.err);
+    BOOST_TEST(v.err.find(reason) != std::string::npos, what << ": " << v.err);
+#ifdef CLASH4D_PYTHON
+    std::string command = std::string(CLASH4D_PYTHON) + " " + CLASH4D_SOURCE + "/verify/python/clash4d_verify.py " + scene +
+                          " " + path + " > " + (work / "py.txt").string() + " 2>&1";
+    int status = std::system(command.c_str());
+    std::ifstream in(work / "py.txt");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    BOOST_TEST(WEXITSTATUS(status) == 1, what << " (Python): " << text);
+    BOOST_TEST(text.find(where) != std::string::npos, what << " (Python): " << text);
+#endif
+  };
+  const std::string at = "pairs[0].apart.members";
+  json missing = c;
+  missing["pairs"][0]["apart"]["members"].erase(0);
+  rejected("missing", missing, at, "no entry for members");
+  json twice = c;
+  twice["pairs"][0]["apart"]["members"][0] = twice["pairs"][0]["apart"]["members"][1];
+  rejected("twice", twice, at + "[1]", "a second entry");
+  json beyond = c;
+  beyond["pairs"][0]["apart"]["members"][0]["a"] = "2";
+  rejected("beyond", beyond, at + "[0].a", "not a member");
+  // Each pair's pieces given to another pair: the conflicts name the
+  // planes of their own pair of blocks, so the other pair's term is open.
+  json swapped = c;
+  json& m = swapped["pairs"][0]["apart"]["members"];
+  for (json& e : m) e["a"] = e["a"] == "0" ? "1" : "0";
+  rejected("swapped", swapped, at, "no conflict closes off the term");
+  json both = c;
+  both["pairs"][0]["apart"]["pieces"] = json::array();
+  rejected("both", both, "pairs[0].apart", "one of pieces and members");
 }
 
 #ifdef CLASH4D_PYTHON

@@ -367,17 +367,83 @@ void Turning_checker::check_path(const Json& j, const std::string& at, int a, in
 }
 
 // 8.3: pieces cover [tL, until] exactly, no breakpoint inside one.
+namespace {
+
+// 8.3's members of a formula: an OR's members are its children's, an AND
+// of one child has that child's, any other node is one member.
+void members_of(const Lit_tree& t, std::vector<const Lit_tree*>& out)
+{
+  if (t.op == Formula::Op::Or || (t.op == Formula::Op::And && t.kids.size() == 1)) {
+    for (const Lit_tree& k : t.kids) members_of(k, out);
+    return;
+  }
+  out.push_back(&t);
+}
+
+std::vector<const Lit_tree*> members_of(const Lit_tree& t)
+{
+  std::vector<const Lit_tree*> out;
+  members_of(t, out);
+  return out;
+}
+
+} // namespace
+
 Real_time Turning_checker::check_apart(const Json& j, const std::string& at, int a, int b, bool& open_end, std::string& until_text)
 {
-  expect_keys(j, at, {"until", "pieces"}, {"open_end"});
+  expect_keys(j, at, {"until"}, {"open_end", "pieces", "members"});
   Real_time until = read_time(j["until"], key_at(at, "until"), &until_text);
   open_end = j.contains("open_end") && read_bool(j["open_end"], key_at(at, "open_end"));
   if (less(Real_time(t_hi_), until)) reject(key_at(at, "until"), "until is after tH = " + text(t_hi_));
-  const Json& pieces = read_array(j["pieces"], key_at(at, "pieces"));
+  if (j.contains("pieces") == j.contains("members")) reject(at, "an APART holds one of pieces and members");
+  if (j.contains("members")) {
+    check_members(j["members"], key_at(at, "members"), a, b, open_end, until, until_text);
+    return until;
+  }
+  std::string end_text;
+  Real_time end = check_pieces(j["pieces"], key_at(at, "pieces"), a, b, open_end, -1, -1, end_text);
+  if (!equal(end, until)) reject(key_at(at, "until"), "the pieces end at " + end_text + ", not at until = " + until_text);
+  return until;
+}
+
+// 8.3's members form: one entry per pair of members, each with pieces
+// covering [tL, until] whose leaves close off that pair's terms.
+void Turning_checker::check_members(const Json& j, const std::string& at, int a, int b, bool open_end,
+                                    const Real_time& until, const std::string& until_text)
+{
+  std::size_t count_a = members_of(tree(a, 0)).size(), count_b = members_of(tree(b, 0)).size();
+  const Json& list = read_array(j, at);
+  std::vector<bool> seen(count_a * count_b, false);
+  for (std::size_t e = 0; e < list.size(); ++e) {
+    std::string ea = index_at(at, e);
+    expect_keys(list[e], ea, {"a", "b", "pieces"});
+    mpq_class ma = read_number(list[e]["a"], key_at(ea, "a")), mb = read_number(list[e]["b"], key_at(ea, "b"));
+    if (ma.get_den() != 1 || ma < 0 || ma >= count_a)
+      reject(key_at(ea, "a"), "not a member of " + objects_[a].name() + " (it has " + std::to_string(count_a) + ")");
+    if (mb.get_den() != 1 || mb < 0 || mb >= count_b)
+      reject(key_at(ea, "b"), "not a member of " + objects_[b].name() + " (it has " + std::to_string(count_b) + ")");
+    int i = static_cast<int>(ma.get_num().get_si()), k = static_cast<int>(mb.get_num().get_si());
+    if (seen[i * count_b + k]) reject(ea, "a second entry for members " + std::to_string(i) + " and " + std::to_string(k));
+    seen[i * count_b + k] = true;
+    std::string end_text;
+    Real_time end = check_pieces(list[e]["pieces"], key_at(ea, "pieces"), a, b, open_end, i, k, end_text);
+    if (!equal(end, until)) reject(key_at(ea, "pieces"), "the pieces end at " + end_text + ", not at until = " + until_text);
+  }
+  for (std::size_t x = 0; x < seen.size(); ++x)
+    if (!seen[x])
+      reject(at, "no entry for members " + std::to_string(x / count_b) + " of " + objects_[a].name() + " and " +
+                     std::to_string(x % count_b) + " of " + objects_[b].name());
+}
+
+// Pieces covering [tL, ...] in order (8.3); returns where they end.
+Real_time Turning_checker::check_pieces(const Json& j, const std::string& at, int a, int b, bool open_end, int member_a,
+                                        int member_b, std::string& end_text)
+{
+  const Json& pieces = read_array(j, at);
   Real_time prev(t_lo_);
   std::string prev_text = text(t_lo_);
   for (std::size_t i = 0; i < pieces.size(); ++i) {
-    std::string pa = index_at(key_at(at, "pieces"), i), ta = key_at(pa, "t"), lo_text, hi_text;
+    std::string pa = index_at(at, i), ta = key_at(pa, "t"), lo_text, hi_text;
     expect_keys(pieces[i], pa, {"t", "proof"});
     const Json& t = read_array(pieces[i]["t"], ta, 2);
     Real_time lo = read_time(t[0], index_at(ta, 0), &lo_text), hi = read_time(t[1], index_at(ta, 1), &hi_text);
@@ -385,15 +451,16 @@ Real_time Turning_checker::check_apart(const Json& j, const std::string& at, int
     if (!less(lo, hi)) reject(index_at(ta, 1), "a piece needs lo < hi");
     for (int o : {a, b})
       if (objects_[o].break_between(lo, hi)) reject(ta, "a breakpoint of " + objects_[o].name() + " lies inside the piece");
-    Piece piece{a, b, objects_[a].piece_of(lo), objects_[b].piece_of(lo), lo, hi, open_end && i + 1 == pieces.size()};
+    Piece piece{a, b, objects_[a].piece_of(lo), objects_[b].piece_of(lo), lo, hi, open_end && i + 1 == pieces.size(),
+                member_a, member_b};
     const Json& proof = pieces[i]["proof"];
     std::string pp = key_at(pa, "proof");
     if (proof.is_object() && proof.contains("split")) reject(key_at(pp, "split"), "unknown key 'split': a proof of turning-1 is a leaf (section 8.3)");
     check_leaf(proof, pp, piece);
     prev = hi, prev_text = hi_text;
   }
-  if (!equal(prev, until)) reject(key_at(at, "until"), "the pieces end at " + prev_text + ", not at until = " + until_text);
-  return until;
+  end_text = prev_text;
+  return prev;
 }
 
 void Turning_checker::check_leaf(const Json& j, const std::string& at, const Piece& piece)
@@ -402,8 +469,10 @@ void Turning_checker::check_leaf(const Json& j, const std::string& at, const Pie
   const Json& list = read_array(j["conflicts"], key_at(at, "conflicts"));
   std::vector<Leaf_conflict> conflicts;
   for (std::size_t k = 0; k < list.size(); ++k) conflicts.push_back(check_conflict(list[k], index_at(key_at(at, "conflicts"), k), piece));
-  const Lit_tree& fa = tree(piece.a, piece.piece_a);
-  const Lit_tree& fb = tree(piece.b, piece.piece_b);
+  const Lit_tree& whole_a = tree(piece.a, piece.piece_a);
+  const Lit_tree& whole_b = tree(piece.b, piece.piece_b);
+  const Lit_tree& fa = piece.member_a < 0 ? whole_a : *members_of(whole_a)[piece.member_a];
+  const Lit_tree& fb = piece.member_b < 0 ? whole_b : *members_of(whole_b)[piece.member_b];
   bool closed;
   try {   // no path or slab literals: time is a parameter (8.3)
     closed = terms_.all_closed(regularised_, fa, fb, {}, {}, conflicts, forms_.size());

@@ -45,10 +45,13 @@ private:
   };
   // An APART piece [lo, hi]: the objects' motion pieces, and whether the
   // non-strict sums need only be positive on [lo, hi) (open_end, 8.3).
+  // member_a, member_b: the members whose formulas the leaf closes off
+  // (8.3's members form), -1 for the whole formula.
   struct Piece {
     int a, b, piece_a, piece_b;
     Real_time lo, hi;
     bool half_open = false;
+    int member_a = -1, member_b = -1;
   };
 
   Pair_result check_pair(const Json& p, const std::string& at);
@@ -59,6 +62,10 @@ private:
   std::string check_earliest(const Json& j, const std::string& at, int a, int b, Real_time& t_star, std::string& t_text);
   void check_path(const Json& j, const std::string& at, int a, int b, const Real_time& t_star);
   Real_time check_apart(const Json& j, const std::string& at, int a, int b, bool& open_end, std::string& until_text);
+  Real_time check_pieces(const Json& j, const std::string& at, int a, int b, bool open_end, int member_a, int member_b,
+                         std::string& end_text);
+  void check_members(const Json& j, const std::string& at, int a, int b, bool open_end, const Real_time& until,
+                     const std::string& until_text);
   void check_leaf(const Json& j, const std::string& at, const Piece& piece);
   Leaf_conflict check_conflict(const Json& j, const std::string& at, const Piece& piece);
   Lit read_lit(const Json& j, const std::string& at);

@@ -823,6 +823,15 @@ def extrude(node, literal):
     return kids[0] if len(kids) == 1 else (tag, kids)
 
 
+def members(node):
+    """s8.3's members: an OR's members are its children's, an AND of one child has that
+    child's, any other node is one member (extrude leaves no AND or OR of one child)."""
+    tag, arg = node
+    if tag == "or" or (tag == "and" and len(arg) == 1):
+        return [m for c in arg for m in members(c)]
+    return [node]
+
+
 def rotation_polys(q):
     """N(q) = |q|^2 R(q), the un-normalised rotation matrix, and |q|^2, of a quaternion of
     polynomials (s8.2)."""
@@ -1781,17 +1790,47 @@ class Checker:
                                    f"{fmt_point(c)} and {at(w, k)} at the witness")
 
     def turning_apart(self, v, path, A, B):
-        """s8.3: pieces covering [tL, until] between TIMEs, no breakpoint strictly inside one."""
+        """s8.3: pieces covering [tL, until] between TIMEs, no breakpoint strictly inside one;
+        or `members`: such pieces for each pair of a member of A and a member of B."""
         tL, tH = self.scene.time
-        ap = self.keys(v, path, {"until", "pieces"}, {"open_end"})
+        ap = self.keys(v, path, {"until"}, {"open_end", "pieces", "members"})
         until = self.time(ap["until"], path + ".until")
         open_end = self.boolean(ap.get("open_end", False), path + ".open_end")
         if cmp_time(until, tH) > 0:
             raise Failed(path + ".until", f"{until} is after tH = {tH}")
-        pieces = self.array(ap["pieces"], path + ".pieces")
+        if ("pieces" in ap) == ("members" in ap):
+            raise Failed(path, "an APART holds one of pieces and members")
+        if "pieces" in ap:
+            self.turning_pieces(ap["pieces"], path + ".pieces", A, B, until, open_end, path + ".until", None)
+            return until, open_end
+        count = [len(members(O.turning_formula(0))) for O in (A, B)]
+        seen = set()
+        for e, entry in enumerate(self.array(ap["members"], path + ".members")):
+            ep = f"{path}.members[{e}]"
+            entry = self.keys(entry, ep, {"a", "b", "pieces"})
+            ij = []
+            for key, O, n in (("a", A, count[0]), ("b", B, count[1])):
+                m = self.num(entry[key], f"{ep}.{key}")
+                if not isinstance(m, int) or not 0 <= m < n:
+                    raise Failed(f"{ep}.{key}", f"not a member of {O.name} (it has {n})")
+                ij.append(m)
+            if tuple(ij) in seen:
+                raise Failed(ep, f"a second entry for members {ij[0]} and {ij[1]}")
+            seen.add(tuple(ij))
+            self.turning_pieces(entry["pieces"], ep + ".pieces", A, B, until, open_end, ep + ".pieces", tuple(ij))
+        for i in range(count[0]):
+            for j in range(count[1]):
+                if (i, j) not in seen:
+                    raise Failed(path + ".members", f"no entry for members {i} of {A.name} and {j} of {B.name}")
+        return until, open_end
+
+    def turning_pieces(self, pieces, path, A, B, until, open_end, end_path, member):
+        """s8.3's pieces from tL to until; member: (i, j) of the members form, or None."""
+        tL = self.scene.time[0]
+        pieces = self.array(pieces, path)
         at = tL
         for i, pc in enumerate(pieces):
-            pp = f"{path}.pieces[{i}]"
+            pp = f"{path}[{i}]"
             pc = self.keys(pc, pp, {"t", "proof"})
             lo, hi = (self.time(x, f"{pp}.t[{j}]") for j, x in enumerate(self.array(pc["t"], pp + ".t", 2)))
             if cmp_time(lo, at) != 0:
@@ -1806,11 +1845,10 @@ class Checker:
                     raise Failed(pp + ".t", f"a breakpoint of {O.name} at t = {bps[k]} lies inside")
                 ks.append(k)
             open_last = open_end and i == len(pieces) - 1
-            self.turning_leaf(pc["proof"], pp + ".proof", A, B, ks, lo, hi, open_last)
+            self.turning_leaf(pc["proof"], pp + ".proof", A, B, ks, lo, hi, open_last, member)
             at = hi
         if cmp_time(at, until) != 0:
-            raise Failed(path + ".until", f"the pieces end at {at}, not at until = {until}")
-        return until, open_end
+            raise Failed(end_path, f"the pieces end at {at}, not at until = {until}")
 
     def conflict_of(self, cf, cp):
         """A CONFLICT's `of` (s3): closed semantics only, default "both"."""
@@ -1821,7 +1859,7 @@ class Checker:
             raise Failed(cp + ".of", "expected \"both\", \"A\" or \"B\"")
         return of if self.closed else "both"          # regularised ignores `of`
 
-    def turning_leaf(self, v, path, A, B, ks, lo, hi, open_last):
+    def turning_leaf(self, v, path, A, B, ks, lo, hi, open_last, member=None):
         """s8.3: a leaf (split is an unknown key); every conflict's arithmetic, then every term
         closed off (s4's enumeration, without slab or path literals)."""
         node = self.keys(v, path, {"conflicts"})
@@ -1842,6 +1880,8 @@ class Checker:
             self.turning_conflict(cp, lits, lams, lo, hi, strict, open_last)
             conflicts.append((of, frozenset(lit_key(lit) for lit in lits)))
         fa, fb = A.turning_formula(ks[0]), B.turning_formula(ks[1])
+        if member is not None:
+            fa, fb = members(fa)[member[0]], members(fb)[member[1]]
         self.terms(path, fa, fb, [], [], conflicts)
 
     def turning_conflict(self, cp, lits, lams, lo, hi, strict, open_last):
