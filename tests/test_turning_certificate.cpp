@@ -201,6 +201,20 @@ BOOST_AUTO_TEST_CASE(turning_hulls_touching_at_an_irrational_time)
   BOOST_FAIL("no hull-hull turn hit irrational among the rotation cases");
 }
 
+namespace {
+
+// fixtures/rotation/touch_at_irrational_time.json with each object cut in
+// two blocks.
+const std::string blocks_in_pieces = R"({"format": "clash4d-scene/1", "time": ["1/5", 1], "objects": [
+    {"name": "diamond", "shape": {"union": [{"block": {"min": [-1, -1, -1], "max": [1, 0, 1]}},
+                                            {"block": {"min": [-1, 0, -1], "max": [1, 1, 1]}}]},
+     "motion": {"poses": [{"t": 0, "translate": [0, 0, 0], "rotate": [1, 0, 0, 0]},
+                          {"t": 1, "translate": [-1, 0, 0], "rotate": [1, 0, 0, 1]}]}},
+    {"name": "corner", "shape": {"union": [{"block": {"min": [1, 0, -1], "max": [2, 2, 1]}},
+                                           {"block": {"min": [2, 0, -1], "max": [3, 2, 1]}}]}}]})";
+
+} // namespace
+
 // The block turning and sliding against a corner (the fixture
 // touch_at_irrational_time.json) with each object cut into two blocks: the
 // same closed solids, so the same answers, verified with the same lines.
@@ -210,15 +224,8 @@ BOOST_AUTO_TEST_CASE(turning_hulls_touching_at_an_irrational_time)
 // (certify/Touch_witness.cpp).
 BOOST_AUTO_TEST_CASE(unions_of_pieces_verify_as_the_whole_blocks)
 {
-  const std::string cut = R"({"format": "clash4d-scene/1", "time": ["1/5", 1], "objects": [
-    {"name": "diamond", "shape": {"union": [{"block": {"min": [-1, -1, -1], "max": [1, 0, 1]}},
-                                            {"block": {"min": [-1, 0, -1], "max": [1, 1, 1]}}]},
-     "motion": {"poses": [{"t": 0, "translate": [0, 0, 0], "rotate": [1, 0, 0, 0]},
-                          {"t": 1, "translate": [-1, 0, 0], "rotate": [1, 0, 0, 1]}]}},
-    {"name": "corner", "shape": {"union": [{"block": {"min": [1, 0, -1], "max": [2, 2, 1]}},
-                                           {"block": {"min": [2, 0, -1], "max": [3, 2, 1]}}]}}]})";
   std::string whole = (fs::path(CLASH4D_FIXTURES) / "rotation" / "touch_at_irrational_time.json").string();
-  std::string pieces = write_text("touch-at-irrational-time-in-pieces.json", cut);
+  std::string pieces = write_text("touch-at-irrational-time-in-pieces.json", blocks_in_pieces);
   for (const Mode& mode : {modes[1], modes[4], modes[5]}) {
     std::size_t before = accepted.size();
     certify_and_verify(whole, mode, "exact", "touch_at_irrational_time.json");
@@ -262,14 +269,7 @@ BOOST_AUTO_TEST_CASE(turning_unions_of_convex_pieces_before_their_first_contact)
 // is rejected by both, at its place.
 BOOST_AUTO_TEST_CASE(members_prove_each_pair_of_pieces)
 {
-  const std::string cut = R"({"format": "clash4d-scene/1", "time": ["1/5", 1], "objects": [
-    {"name": "diamond", "shape": {"union": [{"block": {"min": [-1, -1, -1], "max": [1, 0, 1]}},
-                                            {"block": {"min": [-1, 0, -1], "max": [1, 1, 1]}}]},
-     "motion": {"poses": [{"t": 0, "translate": [0, 0, 0], "rotate": [1, 0, 0, 0]},
-                          {"t": 1, "translate": [-1, 0, 0], "rotate": [1, 0, 0, 1]}]}},
-    {"name": "corner", "shape": {"union": [{"block": {"min": [1, 0, -1], "max": [2, 2, 1]}},
-                                           {"block": {"min": [2, 0, -1], "max": [3, 2, 1]}}]}}]})";
-  std::string scene = write_text("members.json", cut), cert = (work / "members-cert.json").string();
+  std::string scene = write_text("members.json", blocks_in_pieces), cert = (work / "members-cert.json").string();
   BOOST_TEST_REQUIRE(run_clash4d({"check", scene, "--certificate", cert}).status == 0);
   json c = json::parse(std::ifstream(cert));
   const json& apart = c["pairs"][0]["apart"];
