@@ -366,7 +366,6 @@ void Turning_checker::check_path(const Json& j, const std::string& at, int a, in
   }
 }
 
-// 8.3: pieces cover [tL, until] exactly, no breakpoint inside one.
 namespace {
 
 // 8.3's members of a formula: an OR's members are its children's, an AND
@@ -389,6 +388,8 @@ std::vector<const Lit_tree*> members_of(const Lit_tree& t)
 
 } // namespace
 
+// 8.3: pieces cover [tL, until] exactly, no breakpoint inside one; or one
+// such cover per pair of members.
 Real_time Turning_checker::check_apart(const Json& j, const std::string& at, int a, int b, bool& open_end, std::string& until_text)
 {
   expect_keys(j, at, {"until"}, {"open_end", "pieces", "members"});
