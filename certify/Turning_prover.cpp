@@ -183,7 +183,7 @@ std::vector<Algebraic> Turning_prover::critical_cuts(const Rational& mid, const 
       if (t < hi) cuts.push_back(std::move(t));
     return false;
   };
-  if (one_member_pair_) add(a(), b());
+  if (one_member_pair()) add(a(), b());
   else for_parts_that_may_meet(*parts_a_, *parts_b_, add);
   std::sort(cuts.begin() + 1, cuts.end(), [](const Algebraic& x, const Algebraic& y) { return x < y; });
   cuts.erase(std::unique(cuts.begin() + 1, cuts.end(), [](const Algebraic& x, const Algebraic& y) { return x == y; }),
@@ -274,13 +274,12 @@ json Turning_prover::prove(int a, int b, const Algebraic& until, bool open_end)
   json out{{"until", number_json(until)}};
   if (open_end) out["open_end"] = true;
   if (!by_members()) {
-    a_ = &parts_a_->whole, b_ = &parts_b_->whole, one_member_pair_ = false;
+    a_ = &parts_a_->whole, b_ = &parts_b_->whole;
     where_ = pair;
     out["pieces"] = pieces_until(until, open_end);
     return out;
   }
   json members = json::array();
-  one_member_pair_ = true;
   for (std::size_t i = 0; i < parts_a_->count(); ++i)
     for (std::size_t j = 0; j < parts_b_->count(); ++j) {
       a_ = &parts_a_->part(i), b_ = &parts_b_->part(j);

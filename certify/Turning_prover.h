@@ -70,9 +70,10 @@ private:
   std::size_t conflicts_ = 0;
   std::optional<Object_parts> parts_a_, parts_b_;   // the pair being proved, with its convex pieces
   // What is proved now: the whole objects (cut at every pair of their
-  // pieces that may meet), or one member of each (cut at that pair's).
+  // pieces that may meet), or one member of each (cut at that pair's; then
+  // at least one of them is a piece, not its whole object).
   const Rotating_object *a_ = nullptr, *b_ = nullptr;
-  bool one_member_pair_ = false;
+  bool one_member_pair() const { return a_ != &parts_a_->whole || b_ != &parts_b_->whole; }
   std::string where_;                      // names it in a refusal
 };
 
