@@ -53,13 +53,24 @@ bool second_word(const Json_value& obj, const char* key, const char* first, cons
   throw Input_error(where, "expected \"" + std::string(first) + "\" or \"" + second + "\", found \"" + v->text + "\"");
 }
 
+// "max_pieces": a whole number from 1 to CLASH4D_MAX_MESH_PIECES_ALLOWED,
+// read exactly (100.5 or 1e9 is refused, not rounded or clamped).
+std::size_t max_pieces(const Json_value& v, const std::string& path)
+{
+  Rational n = read_number(v, path);
+  if (n.denominator() != 1 || n < 1 || n > Rational(static_cast<long>(CLASH4D_MAX_MESH_PIECES_ALLOWED)))
+    throw Input_error(path, "expected a whole number of pieces from 1 to " +
+                                std::to_string(CLASH4D_MAX_MESH_PIECES_ALLOWED) + ", found " + to_string(n));
+  return static_cast<std::size_t>(mpz_get_ui(n.numerator().mpz()));
+}
+
 } // namespace
 
 using namespace json_field;
 
 Mesh_options read_mesh_options(const Json_value& solid, const std::string& path)
 {
-  expect_keys(solid, {"mesh", "scale", "units", "repair", "shells", "as"}, path);
+  expect_keys(solid, {"mesh", "scale", "units", "repair", "shells", "as", "max_pieces"}, path);
   Mesh_options o;
   if (const Json_value* s = solid.find("scale")) {
     o.scale = read_number(*s, dot(path, "scale"));
@@ -67,6 +78,7 @@ Mesh_options read_mesh_options(const Json_value& solid, const std::string& path)
   }
   if (const Json_value* u = solid.find("units")) o.scale *= unit_in_metres(*u, dot(path, "units"));
   if (const Json_value* r = solid.find("repair")) read_repairs(*r, dot(path, "repair"), o);
+  if (const Json_value* m = solid.find("max_pieces")) o.max_pieces = max_pieces(*m, dot(path, "max_pieces"));
   if (second_word(solid, "shells", "odd", "union", path)) o.rule = Mesh_options::Solid_rule::Union_of_shells;
   if (second_word(solid, "as", "solid", "hull", path)) {
     for (const char* key : {"repair", "shells"})

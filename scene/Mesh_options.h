@@ -5,6 +5,8 @@
 #define CLASH4D_SCENE_MESH_OPTIONS_H
 
 #include "numbers/Rational.h"
+#include "scene/Mesh_reader.h"
+#include <cstddef>
 #include <string>
 
 namespace clash4d {
@@ -21,6 +23,10 @@ struct Mesh_options {
   bool orient = false;            // each shell's facets turned to agree, and the shell outward
   bool split_pinched = false;     // a pinched vertex split into one vertex per fan of facets
   Solid_rule rule = Solid_rule::Odd_shells;
+  // "max_pieces": the most convex pieces the solid may have (exit 3 past
+  // it). It bounds the work of a run, not the solid: a mesh read within
+  // it has the same pieces under any larger bound.
+  std::size_t max_pieces = CLASH4D_MAX_MESH_PIECES;
 
   // Text that tells options apart: part of the key of a mesh read once per
   // scene, and of the decomposition cache's key.
@@ -28,7 +34,7 @@ struct Mesh_options {
   {
     return to_string(scale) + (triangulate ? " triangulate" : "") + (drop_zero_area ? " drop-zero-area" : "") + (orient ? " orient" : "") +
            (split_pinched ? " split-pinched" : "") +
-           " rule " + std::to_string(static_cast<int>(rule));
+           " rule " + std::to_string(static_cast<int>(rule)) + " max_pieces " + std::to_string(max_pieces);
   }
 };
 
@@ -36,7 +42,8 @@ struct Json_value;
 
 // The options written beside "mesh" in the solid object at path; throws
 // Input_error naming the member for an unknown key, unit, repair or word,
-// or a scale that is not positive.
+// a scale that is not positive, or a max_pieces that is not a whole number
+// from 1 to CLASH4D_MAX_MESH_PIECES_ALLOWED.
 Mesh_options read_mesh_options(const Json_value& solid, const std::string& path);
 
 } // namespace clash4d

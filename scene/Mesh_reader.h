@@ -21,7 +21,8 @@ constexpr std::size_t CLASH4D_MAX_MESH_FILE_BYTES = 64u << 20;
 constexpr std::size_t CLASH4D_MAX_MESH_FACETS = 100000;
 constexpr std::size_t CLASH4D_MAX_MESH_VERTICES = 100000;
 constexpr std::size_t CLASH4D_MAX_FACET_VERTICES = 100;
-constexpr std::size_t CLASH4D_MAX_MESH_PIECES = 1000;
+constexpr std::size_t CLASH4D_MAX_MESH_PIECES = 1000;           // the default; "max_pieces" raises it
+constexpr std::size_t CLASH4D_MAX_MESH_PIECES_ALLOWED = 100000;  // the most "max_pieces" may ask for
 
 // The limits above, injectable so tests can reach them with small files.
 struct Mesh_limits {

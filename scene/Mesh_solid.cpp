@@ -18,6 +18,13 @@
 namespace clash4d {
 namespace {
 
+// The limit in a refusal, with the way past it (docs/meshes.md, Limits).
+std::string pieces_limit(const Mesh_limits& limits)
+{
+  return std::to_string(limits.pieces) + " convex pieces (raise it with \"max_pieces\" beside \"mesh\", up to " +
+         std::to_string(CLASH4D_MAX_MESH_PIECES_ALLOWED) + ")";
+}
+
 // The decomposition runs on CGAL's lazy exact kernel (scene/Lazy_point.h):
 // its signs are exact, decided on intervals where those tell, and its
 // constructions (the pieces' vertices) are handed back as exact rationals.
@@ -151,8 +158,8 @@ Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, c
   for (auto volume = ++nef.volumes_begin(); volume != nef.volumes_end(); ++volume) {
     if (!volume->mark()) continue;
     if (u.children.size() >= limits.pieces)
-      throw Input_error(file_name, "the decomposition has more than the limit of " + std::to_string(limits.pieces) +
-                                       " convex pieces", CLASH4D_EXIT_LIMIT);
+      throw Input_error(file_name, "the decomposition has more than the limit of " + pieces_limit(limits),
+                        CLASH4D_EXIT_LIMIT);
     Piece piece;
     nef.convert_inner_shell_to_polyhedron(volume->shells_begin(), piece);
     // A piece is convex: the hull of its vertices is the piece itself.
@@ -200,8 +207,7 @@ void add_pieces(const Repaired_mesh& m, const std::string& name, const Mesh_limi
   else
     u.children.push_back(std::move(s));
   if (u.children.size() > limits.pieces)
-    throw Input_error(name, "the solid has more than the limit of " + std::to_string(limits.pieces) + " convex pieces",
-                      CLASH4D_EXIT_LIMIT);
+    throw Input_error(name, "the solid has more than the limit of " + pieces_limit(limits), CLASH4D_EXIT_LIMIT);
 }
 
 // "shells": "union": each shell a solid by itself (checked alone, so shells

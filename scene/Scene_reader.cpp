@@ -194,7 +194,9 @@ Solid read_mesh_body(const Json_value& v, const Mesh_options& options, const std
       Mesh_record record;
       record.file = v.text;
       record.place = path;
-      found = ctx.meshes.emplace(key, read_mesh_solid(file.string(), v.text, options, record)).first;
+      Mesh_limits limits;
+      limits.pieces = options.max_pieces;
+      found = ctx.meshes.emplace(key, read_mesh_solid(file.string(), v.text, options, record, limits)).first;
       ctx.records.push_back(std::move(record));
     } catch (const Input_error& e) {
       throw Input_error(path, e.place() + ": " + e.what(), e.exit_code());

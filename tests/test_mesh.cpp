@@ -451,6 +451,35 @@ BOOST_AUTO_TEST_CASE(cli_checks_mesh_scenes_and_reports_bad_meshes)
   BOOST_TEST(valid.status == 0, valid.err);
 }
 
+// "max_pieces" beside "mesh" (docs/meshes.md, Limits) moves the piece
+// limit for that mesh: the L part has one reflex edge, so two convex pieces
+// (its upper arm and its foot). A limit of 1 refuses it with exit 3 and
+// names the option; 2 reads it; a count that is not a whole number from 1
+// to the allowed most is refused where it is written.
+BOOST_AUTO_TEST_CASE(max_pieces_moves_the_piece_limit)
+{
+  auto with = [](const json& max) {
+    return read_scene(read_json_text(scene_text({{"mesh", "l_part.off"}, {"max_pieces", max}},
+                                                {{"block", {{"min", {5, 5, 5}}, {"max", {6, 6, 6}}}}}, "rest")),
+                      meshes);
+  };
+  auto r = refusal([&] { with(1); });
+  BOOST_TEST(r.second == CLASH4D_EXIT_LIMIT);
+  BOOST_TEST(contains(r.first, "objects[0].shape.mesh: l_part.off: the decomposition has more than the limit of 1 "
+                               "convex pieces (raise it with \"max_pieces\""), r.first);
+  Scene two = with(2);
+  BOOST_TEST((two.objects[0].shape.kind == Solid::Kind::Union));
+  BOOST_TEST(two.objects[0].shape.children.size() == 2u);
+  BOOST_TEST(with("1000000/1000").objects[0].shape.children.size() == 2u);   // exact: 1000
+  for (const json& bad : {json(0), json(2.5), json("5/2"), json(100001), json("many"), json(-3)}) {
+    auto b = refusal([&] { with(bad); });
+    BOOST_TEST(b.second == CLASH4D_EXIT_INVALID, bad.dump());
+    BOOST_TEST(contains(b.first, "objects[0].shape.max_pieces: "), b.first);
+  }
+  // The default is CLASH4D_MAX_MESH_PIECES, as without the option.
+  BOOST_TEST(Mesh_options().max_pieces == CLASH4D_MAX_MESH_PIECES);
+}
+
 BOOST_AUTO_TEST_CASE(mesh_key_is_strict)
 {
   auto r = refusal([] { read_scene(read_json_text(scene_text({{"mesh", 3}}, {{"mesh", "x.off"}}, "rest"))); });
