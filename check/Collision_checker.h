@@ -241,7 +241,9 @@ private:
     if (convex) {
       goal.improved = false;
       using Verdict = typename Convex_pair<K, Policy>::Verdict;
-      Verdict v = policy_.convex_stage([&] { return convex->decide(index, A, B, span, goal); });
+      std::optional<Verdict> decided = policy_.convex_stage([&] { return convex->decide(index, A, B, span, goal); });
+      if (!decided) return true;   // the policy stopped the pair here (stops_after)
+      Verdict v = *decided;
       stats_.seconds_divide += clock.lap();
       if (v == Verdict::undecided) {
         ++stats_.convex_undecided;

@@ -211,36 +211,27 @@ private:
         checker.use_guides(&guide_source_);
         Pair_result<AFT> found =
             checker.check_pair(a, b, options.earliest, ceiling ? &aceiling : nullptr, options.semantics);
-        if (!found.collide) {
-          stats = std::move(astats);
+        using Stop = typename Interval_filter<Filtered_runner>::Stop;
+        switch (policy.stop()) {
+        case Stop::apart:
+          stopped_in_search(astats, clock, stats);
           return Result();
-        }
-        if (found.has_witness && found.witness_verified && exact_copyable(found)) {
-          stats = std::move(astats);
-          ++witnesses_by_intervals_;
-          return kept_in_points(std::move(found));
-        }
-        if (std::optional<Pair_result<EFT>> r = policy.convex_answer(found)) {
-          stats = std::move(astats);
-          return std::move(*r);
-        }
-        if (options.witness_lines)
-          if (std::optional<Pair_result<EFT>> r = witness_line(policy, a, b, options, astats, stats))
+        case Stop::inside:
+          stopped_in_search(astats, clock, stats);
+          return Pair_result<EFT>(std::move(policy.found_inside()));
+        case Stop::convex_uncertain:
+          trail.complete = false;   // decided below, in rationals
+          break;
+        case Stop::none:
+          if (std::optional<Result> r = interval_answer(policy, std::move(found), a, b, options, astats, stats))
             return std::move(*r);
-        earliest_trail = options.earliest && policy.earliest_trail();
-        stages = policy.take_stages();
-        ++witness_runs_;
+          earliest_trail = options.earliest && policy.earliest_trail();
+          stages = policy.take_stages();
+          ++witness_runs_;
+        }
       } catch (const CGAL::Uncertain_conversion_exception&) {
         ++fallbacks_;
         trail.complete = false;
-      } catch (const Convex_uncertain&) {
-        trail.complete = false;   // decided below, in rationals
-      } catch (const Proven_apart&) {
-        stopped_in_search(astats, clock, stats);
-        return Result();
-      } catch (const Found_inside<EFT>& f) {
-        stopped_in_search(astats, clock, stats);
-        return Pair_result<EFT>(f.result);
       }
     }
     if (std::optional<Pair_result<EFT>> r = convex_in_rationals(a, b, options, ceiling, stats)) return std::move(*r);
@@ -261,8 +252,34 @@ private:
     return checker.check_pair(a, b, options.earliest, ceiling, options.semantics);
   }
 
+  // The interval run's answer when it searched to the end: none found, a
+  // witness of points, a convex pair's answer, or the witness line's;
+  // nothing when a rational run must make it.
+  std::optional<Result> interval_answer(Interval_filter<Filtered_runner>& policy, Pair_result<AFT>&& found, int a,
+                                        int b, const Check_options& options, Check_stats& astats, Check_stats& stats)
+  {
+    if (!found.collide) {
+      stats = std::move(astats);
+      return Result();
+    }
+    if (found.has_witness && found.witness_verified && exact_copyable(found)) {
+      stats = std::move(astats);
+      ++witnesses_by_intervals_;
+      return kept_in_points(std::move(found));
+    }
+    if (std::optional<Pair_result<EFT>> r = policy.convex_answer(found)) {
+      stats = std::move(astats);
+      return Result(std::move(*r));
+    }
+    if (options.witness_lines)
+      if (std::optional<Pair_result<EFT>> r = witness_line(policy, a, b, options, astats, stats))
+        return Result(std::move(*r));
+    return std::nullopt;
+  }
+
   // The interval run stopped inside a span by a hand-over's answer
-  // (Proven_apart, Found_inside): its time, and the LPs', are the search's.
+  // (Interval_filter::Stop apart or inside): its time, and the LPs', are the
+  // search's.
   static void stopped_in_search(const Check_stats& astats, const Stage_clock& clock, Check_stats& stats)
   {
     stats = astats;

@@ -51,20 +51,6 @@
 
 namespace clash4d {
 
-// The interval run stopped: the runner proved the pair apart.
-struct Proven_apart {};
-// The interval run stopped: the runner made the pair's witness, checked,
-// from a point the hand-over's LP found inside a term of its formula
-// (Filtered_runner::proves_apart).
-template <class EFT>
-struct Found_inside {
-  Pair_result<EFT> result;
-};
-// The interval run stopped in a convex pair's linear programs (a sign they
-// could not certify: a touch's multiplier sum, a vertex on a fifth row):
-// the runner decides them in rationals (Filtered_runner::convex_in_rationals).
-struct Convex_uncertain {};
-
 template <class Runner>
 class Interval_filter {
 public:
@@ -72,6 +58,20 @@ public:
   using AFT = typename AK::FT;
   using EK = typename Runner::Exact_kernel;
   using EFT = typename EK::FT;
+
+  // Why the interval run stopped the pair's search before its end. The
+  // stages are told through the policy's hooks (takes_child, decides_here,
+  // stops_after, convex_stage's empty verdict) and return as at the end of
+  // a search; the runner then reads stop() (Filtered_runner::check_pair).
+  enum class Stop {
+    none,
+    apart,             // the runner proved the pair apart (decides_here)
+    inside,            // the runner made the pair's witness, checked, from a point the
+                       // hand-over's LP found inside a term of its formula (found_inside)
+    convex_uncertain   // a sign of a convex pair's linear programs the intervals could not
+                       // certify (a touch's multiplier sum, a vertex on a fifth row): the
+                       // runner decides them in rationals (Filtered_runner::convex_in_rationals)
+  };
 
   Interval_filter() = default;   // only as a stage's unused default
   // record: an any-witness search, whose trail and witness are wanted.
@@ -152,14 +152,18 @@ public:
     return apart;
   }
   template <class Decide>
-  auto convex_stage(Decide decide)
+  auto convex_stage(Decide decide) -> std::optional<decltype(decide())>
   {
     try {
       return decide();
     } catch (const CGAL::Uncertain_conversion_exception&) {
-      throw Convex_uncertain();
+      stop_ = Stop::convex_uncertain;
+      return std::nullopt;
     }
   }
+  Stop stop() const { return stop_; }
+  // Stop::inside: the pair's answer.
+  Pair_result<EFT>& found_inside() { return *inside_; }
   // A sign of a convex pair's programs the intervals cannot certify (a
   // touch's multiplier sum, a fifth row through a vertex): the same
   // predicate of the rational run's stage on the sub-span, whose rows are
@@ -336,7 +340,7 @@ public:
   {
     if (record_ || earliest_) trail_->span = index;
   }
-  bool stops_after(std::size_t) const { return false; }
+  bool stops_after(std::size_t) const { return stop_ != Stop::none; }
   // The point is the rational run's own when the path was certified (the
   // trail is not approximate) and the intervals found it themselves. A
   // closed witness (a touching point, any rational) is made too: the runner
@@ -374,7 +378,7 @@ public:
 
   // The leaf was kept: the path may now differ from the rational run's.
   void uncertain_simplification() { trail_->approximate = true; }
-  bool takes_child(std::size_t, int) const { return !span_apart_; }
+  bool takes_child(std::size_t, int) const { return !span_apart_ && stop_ == Stop::none; }
   // Earliest mode: a region whose lower time ties with t* (a sub-span end
   // off the grid, where the objects are already in contact) is compared
   // exactly, on the rational run's region (exact/Region_faces.h) and t*.
@@ -452,10 +456,10 @@ public:
   // (search_work), the runner asks whether conflicts close off every term
   // of the pair's formula (Filtered_runner::proves_apart; one exact LP per
   // conflict, where generate-and-test examines many lines per conflict).
-  // Proven, the run stops with Proven_apart, the pair's "no collision" (a
+  // Proven, the run stops (Stop::apart), the pair's "no collision" (a
   // pair apart on the whole span has no t* either: earliest mode too, until
   // a point inside is found). A term left open in a regularised search for
-  // any point inside may give the witness (Found_inside: the pair collides,
+  // any point inside may give the witness (Stop::inside: the pair collides,
   // wherever the search was). Otherwise it goes on where it was. Out of
   // steps, it asks again at 16 times the work with 16 times the steps, so
   // the asking costs a bounded share of the search; a term left open would
@@ -468,14 +472,14 @@ public:
   // skipped (skips_span).
   bool decides_here(std::size_t, bool conquers)
   {
-    if (span_apart_) return false;
+    if (span_apart_ || stop_ != Stop::none) return false;
     if (apart_after_ == 0) apart_after_ = first_hand_over();
     if (!conquers || found_any_ || search_work() < apart_after_) return true;
     Rational until;
     Pair_result<EFT> inside;
     switch (runner_->proves_apart(a_, b_, closed_, apart_steps_, until, earliest_ || closed_ ? nullptr : &inside)) {
-    case Runner::Apart::proven: throw Proven_apart();
-    case Runner::Apart::inside: throw Found_inside<EFT>{std::move(inside)};
+    case Runner::Apart::proven: stop_ = Stop::apart; return false;
+    case Runner::Apart::inside: stop_ = Stop::inside, inside_ = std::move(inside); return false;
     case Runner::Apart::out_of_steps: apart_after_ *= 16, apart_steps_ *= 16; break;
     case Runner::Apart::not_proven: apart_after_ = std::numeric_limits<std::size_t>::max(); break;
     }
@@ -677,6 +681,8 @@ private:
   bool found_any_ = false;   // a point inside was found: the pair is not apart
   std::optional<Rational> apart_until_;   // the pair proven apart on [tL, this] (decides_here)
   bool span_apart_ = false;               // the sub-span searched now is in it
+  Stop stop_ = Stop::none;
+  std::optional<Pair_result<EFT>> inside_;   // Stop::inside's answer
   std::array<bool, 3> frame_{};
   std::shared_ptr<typename Exact_span<Runner>::Lines> lines_;   // this conquer's, once one is needed
   std::size_t lines_conquer_ = 0;                               // which conquer they are for

@@ -17,10 +17,12 @@
 //                                      start; spans come in time order, so
 //                                      false stops the pair)
 //     bool skips_span(index)           the span is known to hold no collision
-//     template <class Decide> auto convex_stage(decide)   a convex pair's
-//                                      linear programs (search/Convex_pair.h):
-//                                      decide() gives the verdict; a filter
-//                                      failing in it may hand the pair on
+//     template <class Decide> std::optional<Verdict> convex_stage(decide)
+//                                      a convex pair's linear programs
+//                                      (search/Convex_pair.h): decide() gives
+//                                      the verdict; a filter failing in it
+//                                      may stop the pair instead (nothing;
+//                                      stops_after then says so)
 //   Convex_pair:
 //     template <class Stage, class Predicate> auto convex_certain(stage, p)
 //                                      p(stage): one sign of the programs,
@@ -49,7 +51,10 @@
 //                                      prunes the span
 //     void search_span(a, b, index, frame_of_a)   the span about to be searched
 //     void found_in_span(index)        a (better) point inside was found there
-//     bool stops_after(index)          after a span that found nothing: stop
+//     bool stops_after(index)          after a span: stop the pair (the
+//                                      span found nothing, or the policy
+//                                      stopped the search: takes_child and
+//                                      decides_here false from then on)
 //     bool witness_certified()         the point found may become the witness
 //     bool witness_answers(goal)       a witness made from goal could be the
 //                                      answer's (a filter whose closed
@@ -150,7 +155,7 @@ struct No_filter {
   }
   bool skips_span(std::size_t) const { return false; }
   template <class Decide>
-  auto convex_stage(Decide decide)
+  auto convex_stage(Decide decide) -> std::optional<decltype(decide())>
   {
     return decide();
   }
