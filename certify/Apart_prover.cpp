@@ -56,7 +56,12 @@ json Apart_prover::prove(int a, int b, const Rational& until, bool strict_end)
   } else {
     Apart_pieces<K> pieces(model(), semantics_, limit_ - std::min(limit_, steps_));
     list = json::array();
-    for (const Apart_piece& p : pieces.prove(a, b, until, strict_end)) {
+    std::vector<Apart_piece> proven = pieces.prove(a, b, until, strict_end);
+    if (const std::optional<Term_stop>& stop = pieces.stopped()) {
+      if (stop->why == Term_stop::Why::out_of_steps) throw Term_limit(stop->what);
+      throw Term_feasible(stop->what);
+    }
+    for (const Apart_piece& p : proven) {
       json conflicts = json::array();
       for (const auto& c : p.conflicts) conflicts.push_back(conflict_json(c, p.literals, semantics_ == Semantics::closed));
       list.push_back(json{{"t", json::array({to_string(p.lo), to_string(p.hi)})}, {"proof", json{{"conflicts", conflicts}}}});

@@ -13,8 +13,21 @@
 #include "model/Scene_model.h"
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <stdexcept>
 
 namespace clash4d {
+
+// A pair the certificate says is apart has a term with a point: the answer
+// being certified is wrong, or the pipeline and the certifier disagree
+// (Term_stop::Why::open_term). An internal error, never a proof.
+struct Term_feasible : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+// Closing off the terms took more steps than a checker is held to
+// (Term_stop::Why::out_of_steps): a resource limit.
+struct Term_limit : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 class Apart_prover {
 public:

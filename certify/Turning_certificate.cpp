@@ -1,5 +1,6 @@
 #include "certify/Turning_certificate.h"
 
+#include "certify/Apart_prover.h"
 #include "certify/Touch_witness.h"
 #include "certify/Turning_prover.h"
 #include "certify/Witness_path.h"

@@ -328,17 +328,14 @@ private:
     need_model(a);
     need_model(b);
     Apart_pieces<EK> pieces(emodel_, closed ? Semantics::closed : Semantics::regularised, step_limit, Lp_effort::quick);
+    pieces.prove(a, b, ek_.to_rational(emodel_.t_hi), false);
     Apart verdict = Apart::proven;
-    try {
-      pieces.prove(a, b, ek_.to_rational(emodel_.t_hi), false);
-    } catch (const Term_feasible& e) {
-      verdict = Apart::not_proven;
-      if (inside && e.inside.found && witness_at(a, b, e.inside.x, *inside)) {
+    if (const std::optional<Term_stop>& stop = pieces.stopped()) {
+      verdict = stop->why == Term_stop::Why::out_of_steps ? Apart::out_of_steps : Apart::not_proven;
+      if (verdict == Apart::not_proven && inside && stop->inside.found && witness_at(a, b, stop->inside.x, *inside)) {
         verdict = Apart::inside;
         ++witnesses_by_terms_;
       }
-    } catch (const Term_limit&) {
-      verdict = Apart::out_of_steps;
     }
     ++(verdict == Apart::proven ? apart_proofs_ : apart_attempts_);
     apart_until = pieces.proven_until();
@@ -346,7 +343,7 @@ private:
   }
 
   // A point the double simplex guessed inside a term of the pair's formula
-  // (Term_feasible; world frame), made the pair's witness as a search's
+  // (Term_stop::inside; world frame), made the pair's witness as a search's
   // point inside is made (Witness::make: moved off every plane of both
   // objects on its sub-span, snapped) and checked (is_valid_witness): a
   // regularised collision. False when it is not one after all. The guess

@@ -13,6 +13,7 @@
 #include "model/Extrusion.h"
 #include "search/Term_search.h"
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 namespace clash4d {
@@ -53,21 +54,27 @@ public:
   }
 
   // The pieces of objects a and b until `until`, each closed off; strict_end:
-  // the closed proof of an earliest time, which leaves t = until out. Throws
-  // Term_feasible (a term has a point: the pair is not apart), Term_limit.
+  // the closed proof of an earliest time, which leaves t = until out. The
+  // leading pieces only, when a piece's search stopped (stopped(): a term
+  // has a point, so the pair is not apart, or the steps ran out).
   std::vector<Apart_piece> prove(int a, int b, const Rational& until, bool strict_end)
   {
     std::vector<Rational> cuts = apart_cuts(model_, a, b, until);
     std::vector<Apart_piece> pieces;
     proven_until_ = cuts.front();
+    stop_.reset();
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-      pieces.push_back(piece(a, b, cuts[i], cuts[i + 1], strict_end && i + 2 == cuts.size()));
+      Apart_piece p = piece(a, b, cuts[i], cuts[i + 1], strict_end && i + 2 == cuts.size());
+      if (stop_) break;
+      pieces.push_back(std::move(p));
       proven_until_ = cuts[i + 1];
     }
     return pieces;
   }
+  // Why prove did not close off every piece; nothing when it did.
+  const std::optional<Term_stop>& stopped() const { return stop_; }
 
-  // The end of the leading pieces closed off so far: when prove throws,
+  // The end of the leading pieces closed off so far: when prove stopped,
   // the pair is still proven apart on [tL, proven_until()] (each piece's
   // proof stands alone), a prefix of its sub-spans.
   const Rational& proven_until() const { return proven_until_; }
@@ -82,6 +89,7 @@ private:
   Lp_effort effort_;
   std::size_t conflicts_ = 0;
   Rational proven_until_;
+  std::optional<Term_stop> stop_;
 
   Apart_piece piece(int a, int b, const Rational& lo, const Rational& hi, bool strict_end)
   {
@@ -105,6 +113,7 @@ private:
     Term_search search(out.literals, std::move(nodes), root, slab, semantics_, strict_end,
                        limit_ - std::min(limit_, steps_), effort_);
     out.conflicts = search.run();
+    stop_ = search.stopped();
     steps_ += search.steps();
     conflicts_ += out.conflicts.size();
     return out;

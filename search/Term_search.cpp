@@ -23,6 +23,12 @@ std::vector<Conflict> Term_search::run()
   return conflicts_;
 }
 
+int Term_search::stop(Term_stop::Why why, std::string what, Inside_guess inside)
+{
+  stop_ = Term_stop{why, std::move(what), inside};
+  return unwind;
+}
+
 void Term_search::grow(int literal)
 {
   std::size_t n = std::max(table_.size(), static_cast<std::size_t>(literal) + 1);
@@ -35,10 +41,11 @@ void Term_search::grow(int literal)
 // One step of the depth-first walk over the pending nodes. Returns the
 // length of the term prefix that holds a conflict just learnt (INT_MAX when
 // none): every choice made with at least that prefix is closed off too.
+// unwind (below every prefix) when the search stopped (stop_).
 int Term_search::walk()
 {
   if (++steps_ > limit_)
-    throw Term_limit("closing off the terms took more than " + std::to_string(limit_) + " steps");
+    return stop(Term_stop::Why::out_of_steps, "closing off the terms took more than " + std::to_string(limit_) + " steps");
   if ((steps_ & 1023) == 0) Work_budget::check();   // --max-seconds covers the certificate too
   if (pending_.empty()) return complete();
   int n = pending_.back();
@@ -159,8 +166,10 @@ int Term_search::complete()
   // Regularised, the one LP was the term's: its guess is a point inside it.
   Inside_guess inside = closed_ ? Inside_guess() : inside_;
   if (!learnt && effort_ == Lp_effort::quick)
-    throw Term_feasible("a term of the pair's formula was not closed off", inside);
-  if (!learnt) throw Term_feasible("a term of the pair's formula has a point: the apart claim does not hold", inside);
+    return stop(Term_stop::Why::open_term, "a term of the pair's formula was not closed off", inside);
+  if (!learnt)
+    return stop(Term_stop::Why::open_term, "a term of the pair's formula has a point: the apart claim does not hold",
+                inside);
   const Conflict& c = conflicts_.back();
   int level = 0;
   for (int l : c.literals) {

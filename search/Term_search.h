@@ -11,7 +11,7 @@
 #include "search/Literal_table.h"
 #include "search/Semantics.h"
 #include <cstdint>
-#include <stdexcept>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,21 +32,25 @@ struct Conflict {
   std::vector<Rational> lambda;
 };
 
-// A term the LP finds feasible: the answer being certified is wrong, or the
-// pipeline and the certifier disagree; never written as a proof. With
-// Lp_effort::quick, only a term the guided LP did not close off (a search
-// handing over goes on instead). Regularised, `inside` is the double
-// simplex's point inside that term's literals (Inside_guess), when it
-// found one: a caller may check it as a witness.
-struct Term_feasible : std::runtime_error {
-  explicit Term_feasible(const std::string& what, Inside_guess guess = {})
-    : std::runtime_error(what), inside(guess) {}
+// Why a term search stopped before closing off every term: an answer of
+// the search, returned, not thrown (a caller decides whether it is an
+// error: certify/Apart_prover.h makes it one).
+struct Term_stop {
+  enum class Why : std::uint8_t {
+    // A term the LP finds feasible: the answer being certified is wrong,
+    // or the pipeline and the certifier disagree; never written as a
+    // proof. With Lp_effort::quick, only a term the guided LP did not
+    // close off (a search handing over goes on instead).
+    open_term,
+    // The enumeration took more steps than a checker is held to.
+    out_of_steps
+  };
+  Why why;
+  std::string what;   // the reason, in words
+  // open_term, regularised: the double simplex's point inside that term's
+  // literals (Inside_guess), when it found one: a caller may check it as a
+  // witness.
   Inside_guess inside;
-};
-
-// The enumeration took more steps than a checker is held to.
-struct Term_limit : std::runtime_error {
-  using std::runtime_error::runtime_error;
 };
 
 class Term_search {
@@ -55,13 +59,16 @@ public:
   // t - hi; strict_end: t - hi is strict in closed semantics (the end of an
   // earliest proof).
   // effort: Lp_effort::quick, a term the double simplex's guess does not
-  // close off stops the search with Term_feasible too (not proven; only
-  // complete says the term has a point).
+  // close off stops the search too (Term_stop::Why::open_term: not proven;
+  // only complete says the term has a point).
   Term_search(Literal_table& table, std::vector<Term_node> nodes, int root, std::vector<int> slab,
               Semantics semantics, bool strict_end, std::uint64_t step_limit,
               Lp_effort effort = Lp_effort::complete);
 
+  // The conflicts learnt; every term is closed off unless stopped() says
+  // why not.
   std::vector<Conflict> run();
+  const std::optional<Term_stop>& stopped() const { return stop_; }
   std::uint64_t steps() const { return steps_; }
 
 private:
@@ -79,6 +86,12 @@ private:
   std::vector<int> position_;               // per literal: first place in order_, -1 absent
   std::vector<int> pending_;
   Inside_guess inside_;                     // the last LP's, when it learnt nothing
+  std::optional<Term_stop> stop_;
+
+  // walk's jump back when the search stops: past the root, so every level
+  // returns without trying another choice.
+  static constexpr int unwind = -1;
+  int stop(Term_stop::Why why, std::string what, Inside_guess inside = {});
 
   int walk();
   int leaf(int literal, int side);

@@ -6,6 +6,11 @@
 #define BOOST_TEST_MODULE certificate
 #include <boost/test/unit_test.hpp>
 
+#include "certify/Apart_prover.h"
+#include "exact/Rational_kernel.h"
+#include "scene/Json_reader.h"
+#include "scene/Scene_reader.h"
+#include "search/Apart_pieces.h"
 #include "search/Motzkin_lp.h"
 #include "compare/Contact_families.h"
 #include "support/Cli_run.h"
@@ -468,6 +473,68 @@ BOOST_AUTO_TEST_CASE(certificates_need_an_exact_kernel_and_stay_within_their_lim
   BOOST_TEST(l.err.find("--certificate-max-mb") != std::string::npos, l.err);
   BOOST_TEST(l.out.empty(), l.out);
   BOOST_TEST(!fs::exists(cert));
+}
+
+// A term search that cannot close off every term says why, as its answer
+// (Term_stop), not by an exception through the stages: a pair in overlap
+// has a term with a point (open_term; regularised, the guess lies strictly
+// inside both blocks), and a step limit of 0 stops before the first step
+// (out_of_steps). Each stop keeps the leading pieces proven. The
+// certificate's prover, at the edge, makes them errors: Term_feasible (an
+// apart claim that does not hold) and Term_limit (exit 3 at check).
+BOOST_AUTO_TEST_CASE(a_term_search_that_stops_says_why)
+{
+  // a = [0,1]^3 at rest; b a block that sinks at rate 1 until t = 1, then
+  // rises at rate 1 (D(0) = 0), on the span [0, 2].
+  auto scene = [](const std::string& b_min, const std::string& b_max) {
+    return read_scene(read_json_text(
+        R"({"format": "clash4d-scene/1", "time": [0, 2], "objects": [
+             {"name": "a", "shape": {"block": {"min": [0, 0, 0], "max": [1, 1, 1]}}},
+             {"name": "b", "shape": {"block": {"min": )" + b_min + R"(, "max": )" + b_max + R"(}},
+              "motion": "vel 0 0 -1 until 1 vel 0 0 1"}]})"));
+  };
+  // Beside a (x in [3, 4]) and far below it (z at most -4.5): apart on the
+  // whole span, in both semantics. Over a's corner with z in [-1/4, 1/4] at
+  // t = 0: b's top leaves a's bottom z = 0 at t = 1/4, so the first piece
+  // [0, 1] has a term with a point (0.5 < x, y < 1, 0 < t < 1/4).
+  Scene beside = scene("[3, 0, 0]", "[4, 1, 1]"), below = scene("[0.5, 0.5, -5]", "[1.5, 1.5, -4.5]"),
+        overlap = scene("[0.5, 0.5, -0.25]", "[1.5, 1.5, 0.25]");
+  Rational_kernel k;
+  auto beside_model = Scene_model<Rational_kernel>::build(k, beside);
+  auto below_model = Scene_model<Rational_kernel>::build(k, below);
+  auto overlap_model = Scene_model<Rational_kernel>::build(k, overlap);
+  const Rational until(2);
+
+  Apart_pieces<Rational_kernel> proof(beside_model, Semantics::regularised, 1000000);
+  std::vector<Apart_piece> pieces = proof.prove(0, 1, until, false);
+  BOOST_TEST(!proof.stopped().has_value());
+  BOOST_TEST(pieces.size() == 2u);   // cut at b's velocity change, t = 1
+  BOOST_TEST(proof.proven_until() == until);
+  Apart_pieces<Rational_kernel> closed_proof(below_model, Semantics::closed, 1000000);
+  BOOST_TEST(closed_proof.prove(0, 1, until, false).size() == 2u);
+  BOOST_TEST(!closed_proof.stopped().has_value());
+
+  Apart_pieces<Rational_kernel> limited(beside_model, Semantics::regularised, 0);
+  BOOST_TEST(limited.prove(0, 1, until, false).empty());
+  BOOST_REQUIRE(limited.stopped().has_value());
+  BOOST_TEST((limited.stopped()->why == Term_stop::Why::out_of_steps));
+  BOOST_TEST(limited.proven_until() == Rational(0));
+
+  Apart_pieces<Rational_kernel> open(overlap_model, Semantics::regularised, 1000000);
+  BOOST_TEST(open.prove(0, 1, until, false).empty());
+  BOOST_REQUIRE(open.stopped().has_value());
+  BOOST_TEST((open.stopped()->why == Term_stop::Why::open_term));
+  BOOST_TEST(open.proven_until() == Rational(0));
+  if (open.stopped()->inside.found) {
+    const auto& x = open.stopped()->inside.x;
+    BOOST_TEST((x[0] > 0.5 && x[0] < 1 && x[1] > 0.5 && x[1] < 1 && x[3] > 0 && x[3] < 0.25), x[0] << " " << x[1]
+                                                                                                   << " " << x[3]);
+  }
+
+  Apart_prover prover(overlap, Semantics::regularised, 1000000);
+  BOOST_CHECK_THROW(prover.prove(0, 1, until, false), Term_feasible);
+  Apart_prover tight(beside, Semantics::regularised, 0);
+  BOOST_CHECK_THROW(tight.prove(0, 1, until, false), Term_limit);
 }
 
 // verify refuses, unread, a certificate beyond its --certificate-max-mb
