@@ -73,20 +73,20 @@ public:
     enter(a, b, s, frame);
     auto plane = [&](long e, int f) {
       if (e >= 0) return entry(static_cast<std::size_t>(e));
-      std::optional<Rational> v = runner_.ak_.exact_value(f % 2 ? region.hi[f / 2] : region.lo[f / 2]);
+      std::optional<Rational> v = runner_.ak().exact_value(f % 2 ? region.hi[f / 2] : region.lo[f / 2]);
       if (!v) throw CGAL::Uncertain_conversion_exception("a region face the intervals only enclose");
       Box<EFT, 4> exact;
-      exact.set(f / 2, runner_.ek_.from_rational(*v), runner_.ek_.from_rational(*v));
+      exact.set(f / 2, runner_.ek().from_rational(*v), runner_.ek().from_rational(*v));
       return Null_object_test<EK>::face(exact, f);
     };
     if (eh < 0 || eg < 0) {
-      ++runner_.exact_planes_;
-      return clash4d::proportional(runner_.ek_, plane(eh, fh), plane(eg, fg));
+      runner_.counted_plane_test();
+      return clash4d::proportional(runner_.ek(), plane(eh, fh), plane(eg, fg));
     }
     auto [it, fresh] = answers_.try_emplace({eh, eg}, 0);
     if (fresh) {
-      ++runner_.exact_planes_;
-      it->second = clash4d::proportional(runner_.ek_, plane(eh, fh), plane(eg, fg));
+      runner_.counted_plane_test();
+      it->second = clash4d::proportional(runner_.ek(), plane(eh, fh), plane(eg, fg));
     }
     return it->second;
   }
@@ -107,7 +107,7 @@ public:
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     enter(a, b, s, frame);
-    ++runner_.exact_regions_;
+    runner_.counted_region();
     Box<EFT, 4> outer;
     bool exact = true;
     for (int q = 0; q < 4; ++q) {
@@ -121,7 +121,7 @@ public:
     }
     for (long e : layout.entry)
       if (e >= 0) entry(static_cast<std::size_t>(e));   // all the lines read (Null_object_test::adopt)
-    auto conquer = std::make_shared<Lines>(runner_.ek_, as_is ? table_ : lowest_terms(layout), groups_, exact);
+    auto conquer = std::make_shared<Lines>(runner_.ek(), as_is ? table_ : lowest_terms(layout), groups_, exact);
     conquer->conquer().adopt(layout, outer);
     return conquer;
   }
@@ -140,22 +140,22 @@ public:
     Moving_object<EFT> EA, EB;
     {
       CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-      runner_.need_bounds(a);   // the settled S-bounds, all the stage reads
-      runner_.need_bounds(b);
-      const Scene_model<EK>& model = runner_.emodel_;
+      runner_.rational().need_bounds(a);   // the settled S-bounds, all the stage reads
+      runner_.rational().need_bounds(b);
+      const Scene_model<EK>& model = runner_.rational().model();
       const Time_span<EFT> span = model.sub_spans({a, b}).at(s);
-      EA = runner_.bounds_on(a, span);
-      EB = runner_.bounds_on(b, span);
+      EA = runner_.rational().bounds_on(a, span);
+      EB = runner_.rational().bounds_on(b, span);
       Check_stats scratch;
-      e = Span_region<EK>(runner_.ek_, scratch, model.far_exponent, closed_)
-              .stage(EA, EB, span, runner_.use_sbounds_);
+      e = Span_region<EK>(runner_.ek(), scratch, model.far_exponent, closed_)
+              .stage(EA, EB, span, runner_.use_sbounds());
     }
-    ++runner_.exact_stages_;
+    runner_.counted_stage();
     Exact_stage<EFT>& kept = stages_[s];
     kept.stage = e;
     for (const auto& n : EA.beta) kept.empty_a.push_back(n.empty);
     for (const auto& n : EB.beta) kept.empty_b.push_back(n.empty);
-    auto to = [&](const EFT& x) { return runner_.ak_.from_rational(runner_.ek_.to_rational(x)); };
+    auto to = [&](const EFT& x) { return runner_.ak().from_rational(runner_.ek().to_rational(x)); };
     auto box = [&](const Box<EFT, 4>& x) {
       Box<AFT, 4> y;
       for (int q = 0; q < 4; ++q) y.set(q, to(x.lo[q]), to(x.hi[q]));
@@ -172,7 +172,7 @@ public:
     if (e.region) st.region = box(*e.region);
     st.frame_of_a = e.frame_of_a;
     for (int q = 0; q < 3; ++q)
-      st.shear[q] = !runner_.use_sbounds_ ? AFT(0) : e.frame_of_a[q] ? A.v[q] : B.v[q];
+      st.shear[q] = !runner_.use_sbounds() ? AFT(0) : e.frame_of_a[q] ? A.v[q] : B.v[q];
   }
 
   // The stages region_stage made, per sub-span (for the trail's replay).
@@ -196,15 +196,15 @@ public:
         const Hyperplane4<EFT>& h = entry(e);
         std::array<Rational, 4> x;
         std::array<Rational, 5> y;
-        for (int q = 0; q < 4; ++q) y[q] = x[q] = runner_.ek_.to_rational(h.n[q]);
-        y[4] = runner_.ek_.to_rational(h.c);
+        for (int q = 0; q < 4; ++q) y[q] = x[q] = runner_.ek().to_rational(h.n[q]);
+        y[4] = runner_.ek().to_rational(h.c);
         scale_to_coprime_integers(x.data(), 4);
         scale_to_coprime_integers(y.data(), 5);
         exact.push_back(x);
         whole.push_back(y);
       }
     }
-    auto to = [&](const Rational& x) { return runner_.ak_.from_rational(x); };
+    auto to = [&](const Rational& x) { return runner_.ak().from_rational(x); };
     normals.clear();
     planes.clear();
     for (const auto& x : exact) normals.push_back({to(x[0]), to(x[1]), to(x[2]), to(x[3])});
@@ -232,14 +232,14 @@ private:
   void enter(int a, int b, std::size_t s, const std::array<bool, 3>& frame)
   {
     if (s == span_) return;
-    runner_.need_planes(a);   // the table reads planes alone
-    runner_.need_planes(b);
-    const Scene_model<EK>& model = runner_.emodel_;
+    runner_.rational().need_planes(a);   // the table reads planes alone
+    runner_.rational().need_planes(b);
+    const Scene_model<EK>& model = runner_.rational().model();
     const Time_span<EFT> span = model.sub_spans({a, b}).at(s);
     A_ = moving_on(model, a, span, {});
     B_ = moving_on(model, b, span, {});
     groups_ = Motion_groups<EFT>();
-    bool fitted = runner_.use_sbounds_;
+    bool fitted = runner_.use_sbounds();
     Extrusion<EK>::pair_groups(*A_, *B_, Extrusion<EK>::shear_of(*A_, *B_, frame, fitted), frame, fitted, groups_);
     table_.assign(groups_.of.size(), unmade());
     made_.assign(table_.size(), 0);
@@ -283,7 +283,7 @@ private:
     }
     for (long e : layout.entry)
       if (e >= 0 && !lowest_made_[e]) {
-        lowest_[e] = runner_.ek_.in_lowest_terms(table_[e]);
+        lowest_[e] = runner_.ek().in_lowest_terms(table_[e]);
         lowest_made_[e] = 1;
       }
     return lowest_;

@@ -37,7 +37,7 @@
 #include "exact/Exact_witness_signs.h"
 #include "exact/Filtered_result.h"
 #include "exact/Interval_filter.h"
-#include "exact/Lazy_once.h"
+#include "exact/Rational_model.h"
 #include "exact/Sweep_tie.h"
 #include "exact/Trail_replay.h"
 #include "search/Apart_pieces.h"
@@ -68,17 +68,7 @@ public:
 
   // reusable: check may be called again (exact/Exact_checker.h).
   Filtered_runner(const Scene& scene, bool use_sbounds, bool reusable = false)
-    : scene_(scene), use_sbounds_(use_sbounds), reusable_(reusable), made_(new Exact_parts[scene.objects.size()])
-  {
-    emodel_.t_lo = ek_.from_rational(scene.t_lo);
-    emodel_.t_hi = ek_.from_rational(scene.t_hi);
-    emodel_.set_exact_span(scene);
-    emodel_.scene = &scene;
-    emodel_.objects.resize(scene.objects.size());
-    esettled_.resize(scene.objects.size());
-    ebounds_.resize(scene.objects.size());
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) emodel_.objects[i].name = scene.objects[i].name;
-  }
+    : scene_(scene), use_sbounds_(use_sbounds), reusable_(reusable), rational_(ek_, scene, use_sbounds) {}
 
   // On a reusable runner, may be called again (a prepared scene: the model,
   // S-bounds, sweeps and guides are made once), one call at a time; each
@@ -102,7 +92,7 @@ public:
       // A result kept in intervals is printed from them: each number a point
       // (at_start's comparison too, kept_in_points).
       auto answer_one = [&](const Result& r, Pair_answer& p) {
-        if (!r.in_points()) return pair_answer(ek_, emodel_, r.exact(), p);
+        if (!r.in_points()) return pair_answer(ek_, rational_.model(), r.exact(), p);
         std::optional<Protector> protect;   // at_start's comparison (--earliest) is interval arithmetic
         if (r.points().earliest) protect.emplace();
         pair_answer(ak_, amodel_, r.points(), p);
@@ -125,13 +115,7 @@ public:
   {
     if (!reusable_) throw std::logic_error("Filtered_runner::motions_changed: not made reusable");
     for (Prepared_sweep& sweep : sweeps_) sweep.done = false;   // made again by the next check, into the same storage
-    for (int i : changed) {
-      made_[i].moved.reset();
-      if (!made_[i].guide) continue;
-      if (made_[i].guide.use_count() > 1)   // not expected: a check's holders are gone; the holder's copy stays as it is
-        made_[i].guide = std::make_shared<Convex_guide>(*made_[i].guide);
-      made_[i].guide->set_motion(scene_.objects[i].motion);
-    }
+    rational_.motions_changed(changed);
     if (!model_.done || !model_.ok) {
       model_ = Prepared_model();   // made whole by the next check
       return;
@@ -139,7 +123,7 @@ public:
     try {
       Protector protect;
       for (int i : changed) amodel_.objects[i].motion.rebuild(ak_, scene_.objects[i].motion);
-      amodel_.far_exponent = emodel_.far_exponent = far_exponent(scene_);
+      amodel_.far_exponent = rational_.model().far_exponent = far_exponent(scene_);
     } catch (const CGAL::Uncertain_conversion_exception&) {
       model_ = Prepared_model();
     }
@@ -170,21 +154,156 @@ public:
           ++fallbacks_;
         }
       }
-      need_exact(a);
-      need_exact(b);
-      return Pair_skeleton<EK>(ek_, emodel_, esettled_, stats).edges(a, b);
+      rational_.need_exact(a);
+      rational_.need_exact(b);
+      return Pair_skeleton<EK>(ek_, rational_.model(), rational_.settled(), stats).edges(a, b);
     };
-      run_skeleton_pairs(ek_, emodel_, pairs, skeleton_one, answer);
+      run_skeleton_pairs(ek_, rational_.model(), pairs, skeleton_one, answer);
     }
     answer.number = EK_name;
     finish(answer.stats);
     return answer;
   }
 
+  // What its policies (exact/Interval_filter.h, exact/Exact_span.h,
+  // exact/Sweep_tie.h) read of the run, and the exact work they ask of it;
+  // they reach nothing else.
+  const AK& ak() const { return ak_; }
+  const EK& ek() const { return ek_; }
+  const Scene& scene() const { return scene_; }
+  bool use_sbounds() const { return use_sbounds_; }
+  const Scene_model<AK>& interval_model() const { return amodel_; }
+  bool exact_only(int i) const { return exact_only_[static_cast<std::size_t>(i)] != 0; }
+  Rational_model<EK>& rational() { return rational_; }
+  const Rational_model<EK>& rational() const { return rational_; }
+  // The witness checks' plane sides in EK's runs (certified_sides).
+  const Sides_at<EFT>& certified() const { return certified_; }
+  // --stats: a plane tested in rationals on a sub-span's table, a region
+  // made in rationals, a region stage run in rationals (exact/Exact_span.h).
+  void counted_plane_test() { ++exact_planes_; }
+  void counted_region() { ++exact_regions_; }
+  void counted_stage() { ++exact_stages_; }
+
+  // A long search handed over (Interval_filter::decides_here):
+  // whether conflicts close off every term of the pair's formula on the
+  // scene's whole span, exact LPs on EK's model (search/Apart_pieces.h):
+  // proven, that is the pair's "no collision", as its certificate proves
+  // it. Not: a term the double simplex's guess does not close off (it may
+  // have a point; asking again would meet it again), or past step_limit.
+  // Not proven: apart_until, the end of the leading sub-spans it did prove
+  // apart (Apart_pieces::proven_until; tL when none), which hold nothing.
+  // inside (regularised, any point wanted): where the open term's LP guessed
+  // a point inside it, the witness made from it and checked (witness_at),
+  // the pair's collision (Apart::inside).
+  enum class Apart { proven, not_proven, out_of_steps, inside };
+  Apart proves_apart(int a, int b, bool closed, std::uint64_t step_limit, Rational& apart_until,
+                     Pair_result<EFT>* inside = nullptr)
+  {
+    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+    rational_.need_model(a);
+    rational_.need_model(b);
+    Apart_pieces<EK> pieces(rational_.model(), closed ? Semantics::closed : Semantics::regularised, step_limit, Lp_effort::quick);
+    pieces.prove(a, b, ek_.to_rational(rational_.model().t_hi), false);
+    Apart verdict = Apart::proven;
+    if (const std::optional<Term_stop>& stop = pieces.stopped()) {
+      verdict = stop->why == Term_stop::Why::out_of_steps ? Apart::out_of_steps : Apart::not_proven;
+      if (verdict == Apart::not_proven && inside && stop->inside.found && witness_at(a, b, stop->inside.x, *inside)) {
+        verdict = Apart::inside;
+        ++witnesses_by_terms_;
+      }
+    }
+    ++(verdict == Apart::proven ? apart_proofs_ : apart_attempts_);
+    apart_until = pieces.proven_until();
+    return verdict;
+  }
+
+  // A point the double simplex guessed inside a term of the pair's formula
+  // (Term_stop::inside; world frame), made the pair's witness as a search's
+  // point inside is made (Witness::make: moved off every plane of both
+  // objects on its sub-span, snapped) and checked (is_valid_witness): a
+  // regularised collision. False when it is not one after all. The guess
+  // is only where to look; every sign is EK's. Asked by proves_apart alone.
+  bool witness_at(int a, int b, const std::array<double, 4>& x, Pair_result<EFT>& r)
+  {
+    Vector4<EFT> p;
+    for (int q = 0; q < 4; ++q) {
+      if (!std::isfinite(x[q])) return false;
+      p[q] = ek_.from_rational(exact_rational(x[q]));
+    }
+    const auto& spans = rational_.model().sub_spans({a, b});
+    auto span = std::find_if(spans.begin(), spans.end(),
+                             [&](const Time_span<EFT>& s) { return !ek_.less(p[3], s.lo) && !ek_.less(s.hi, p[3]); });
+    if (span == spans.end()) return false;
+    // Both models are whole: proves_apart made them (need_model).
+    Moving_object<EFT> A = moving_on(rational_.model(), a, *span, {}), B = moving_on(rational_.model(), b, *span, {});
+    const Vector3<EFT> no_shear{EFT(0), EFT(0), EFT(0)};
+    std::optional<Vector4<EFT>> w = Witness<EK>(ek_).make(p, no_shear, A, B, span->lo, span->hi);
+    if (!w || !is_valid_witness(ek_, rational_.model(), a, b, *w, &certified_)) return false;
+    r = Pair_result<EFT>();
+    r.a = a;
+    r.b = b;
+    r.collide = r.has_witness = r.witness_verified = true;
+    r.witness = r.contact = *w;
+    return true;
+  }
+  // Whether sub-span s of pair (a, b) ends by `until` (need_motion).
+  bool span_ends_by(int a, int b, std::size_t s, const Rational& until) const
+  {
+    return !ek_.less(ek_.from_rational(until), rational_.model().sub_spans({a, b}).at(s).hi);
+  }
+
+  // AK's number x in EK when it is a point interval: then it is the exact
+  // number the rational run has there. Exchanged in (swap_numbers: no copy
+  // of a rational).
+  bool to_exact(const AFT& x, EFT& to) const
+  {
+    std::optional<Rational> v = ak_.exact_value(x);
+    if (!v) return false;
+    EFT e = ek_.from_rational(*v);
+    swap_numbers(to, e);
+    return true;
+  }
+  // The same for a point: every coordinate a point interval.
+  bool to_exact(const Vector4<AFT>& x, Vector4<EFT>& to) const
+  {
+    for (int q = 0; q < 4; ++q)
+      if (!to_exact(x[q], to[q])) return false;
+    return true;
+  }
+  // Whether to_exact(x) takes, without making the number.
+  bool exact_point(const Vector4<AFT>& x) const
+  {
+    return std::all_of(x.begin(), x.end(), [&](const AFT& c) { return ak_.has_exact_value(c); });
+  }
+
+  // Object i's root box in EK, as the sweep reads it: a one-primitive
+  // object's is its primitive's box (its S-bounds have nothing to narrow),
+  // made without a model (Model_builder::primitive_box); another's, its
+  // settled S-bounds' root. Either holds the object (the sweep's only need).
+  Box<EFT, 3> exact_root(int i)
+  {
+    rational_.need_motion(i);
+    if (amodel_.objects[i].csg.nodes.size() != 1) {
+      rational_.need_bounds(i);
+      return rational_.settled()[i][0];
+    }
+    return Model_builder<EK>(ek_).primitive_box(scene_.objects[static_cast<std::size_t>(i)].shape);
+  }
+
+  Box<AFT, 3> enclose(const Box<EFT, 3>& e) const
+  {
+    Box<AFT, 3> b;
+    b.empty = e.empty;
+    b.has_lo = e.has_lo;
+    b.has_hi = e.has_hi;
+    for (int q = 0; q < 3; ++q) {
+      if (e.has_lo[q]) b.lo[q] = ak_.from_rational(ek_.to_rational(e.lo[q]));
+      if (e.has_hi[q]) b.hi[q] = ak_.from_rational(ek_.to_rational(e.hi[q]));
+    }
+    return b;
+  }
+
 private:
-  template <class Runner> friend class Exact_span;
-  template <class Runner> friend class Interval_filter;
-  template <class Runner> friend class Sweep_tie;
   static constexpr const char* EK_name = "exact";
 
   // One pair: the interval run, then, when it could not decide or could not
@@ -235,8 +354,8 @@ private:
       }
     }
     if (std::optional<Pair_result<EFT>> r = convex_in_rationals(a, b, options, ceiling, stats)) return std::move(*r);
-    need_exact(a);
-    need_exact(b);
+    rational_.need_exact(a);
+    rational_.need_exact(b);
     if (earliest_trail)
       if (auto r = replayed<Earliest_replay<EFT>>(trail, stages, a, b, true, options.semantics, astats, stats,
                                                   earliest_by_intervals_))
@@ -245,7 +364,7 @@ private:
       if (auto r = replayed<Trail_replay<EFT>>(trail, stages, a, b, false, options.semantics, astats, stats,
                                                witness_replays_))
         return std::move(*r);
-    Collision_checker<EK> checker(ek_, emodel_, esettled_, stats, use_sbounds_);
+    Collision_checker<EK> checker(ek_, rational_.model(), rational_.settled(), stats, use_sbounds_);
     checker.use_convex_lp(convex_lp_);
     checker.check_points_with(&certified_);
     checker.use_guides(&guide_source_);
@@ -296,10 +415,10 @@ private:
                                                       Check_stats& stats)
   {
     if (!convex_lp_ || !Convex_pair<AK>::applies(amodel_, a, b)) return std::nullopt;
-    need_model(a);
-    need_model(b);
+    rational_.need_model(a);
+    rational_.need_model(b);
     Check_stats estats = stats.fresh();
-    Collision_checker<EK> checker(ek_, emodel_, esettled_, estats, use_sbounds_);
+    Collision_checker<EK> checker(ek_, rational_.model(), rational_.settled(), estats, use_sbounds_);
     checker.check_points_with(&certified_);
     checker.use_guides(&guide_source_);
     std::optional<Pair_result<EFT>> r = checker.check_convex_pair(a, b, options.earliest, ceiling, options.semantics);
@@ -309,74 +428,6 @@ private:
     }
     return r;
   }
-  // A long search handed over (Interval_filter::decides_here):
-  // whether conflicts close off every term of the pair's formula on the
-  // scene's whole span, exact LPs on EK's model (search/Apart_pieces.h):
-  // proven, that is the pair's "no collision", as its certificate proves
-  // it. Not: a term the double simplex's guess does not close off (it may
-  // have a point; asking again would meet it again), or past step_limit.
-  // Not proven: apart_until, the end of the leading sub-spans it did prove
-  // apart (Apart_pieces::proven_until; tL when none), which hold nothing.
-  // inside (regularised, any point wanted): where the open term's LP guessed
-  // a point inside it, the witness made from it and checked (witness_at),
-  // the pair's collision (Apart::inside).
-  enum class Apart { proven, not_proven, out_of_steps, inside };
-  Apart proves_apart(int a, int b, bool closed, std::uint64_t step_limit, Rational& apart_until,
-                     Pair_result<EFT>* inside = nullptr)
-  {
-    CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-    need_model(a);
-    need_model(b);
-    Apart_pieces<EK> pieces(emodel_, closed ? Semantics::closed : Semantics::regularised, step_limit, Lp_effort::quick);
-    pieces.prove(a, b, ek_.to_rational(emodel_.t_hi), false);
-    Apart verdict = Apart::proven;
-    if (const std::optional<Term_stop>& stop = pieces.stopped()) {
-      verdict = stop->why == Term_stop::Why::out_of_steps ? Apart::out_of_steps : Apart::not_proven;
-      if (verdict == Apart::not_proven && inside && stop->inside.found && witness_at(a, b, stop->inside.x, *inside)) {
-        verdict = Apart::inside;
-        ++witnesses_by_terms_;
-      }
-    }
-    ++(verdict == Apart::proven ? apart_proofs_ : apart_attempts_);
-    apart_until = pieces.proven_until();
-    return verdict;
-  }
-
-  // A point the double simplex guessed inside a term of the pair's formula
-  // (Term_stop::inside; world frame), made the pair's witness as a search's
-  // point inside is made (Witness::make: moved off every plane of both
-  // objects on its sub-span, snapped) and checked (is_valid_witness): a
-  // regularised collision. False when it is not one after all. The guess
-  // is only where to look; every sign is EK's. Asked by proves_apart alone.
-  bool witness_at(int a, int b, const std::array<double, 4>& x, Pair_result<EFT>& r)
-  {
-    Vector4<EFT> p;
-    for (int q = 0; q < 4; ++q) {
-      if (!std::isfinite(x[q])) return false;
-      p[q] = ek_.from_rational(exact_rational(x[q]));
-    }
-    const auto& spans = emodel_.sub_spans({a, b});
-    auto span = std::find_if(spans.begin(), spans.end(),
-                             [&](const Time_span<EFT>& s) { return !ek_.less(p[3], s.lo) && !ek_.less(s.hi, p[3]); });
-    if (span == spans.end()) return false;
-    // Both models are whole: proves_apart made them (need_model).
-    Moving_object<EFT> A = moving_on(emodel_, a, *span, {}), B = moving_on(emodel_, b, *span, {});
-    const Vector3<EFT> no_shear{EFT(0), EFT(0), EFT(0)};
-    std::optional<Vector4<EFT>> w = Witness<EK>(ek_).make(p, no_shear, A, B, span->lo, span->hi);
-    if (!w || !is_valid_witness(ek_, emodel_, a, b, *w, &certified_)) return false;
-    r = Pair_result<EFT>();
-    r.a = a;
-    r.b = b;
-    r.collide = r.has_witness = r.witness_verified = true;
-    r.witness = r.contact = *w;
-    return true;
-  }
-  // Whether sub-span s of pair (a, b) ends by `until` (need_motion).
-  bool span_ends_by(int a, int b, std::size_t s, const Rational& until) const
-  {
-    return !ek_.less(ek_.from_rational(until), emodel_.sub_spans({a, b}).at(s).hi);
-  }
-
   // witness_from, timed and counted; stats: the interval run's, on success.
   std::optional<Pair_result<EFT>> witness_line(Interval_filter<Filtered_runner>& policy, int a, int b,
                                                const Check_options& options, const Check_stats& astats,
@@ -407,10 +458,10 @@ private:
     std::optional<typename Interval_filter<Filtered_runner>::Exact_goal> g = policy.exact_goal();
     if (!g) return std::nullopt;
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-    need_planes(a);   // the witness and its check read planes alone
-    need_planes(b);
-    const Time_span<EFT> span = emodel_.sub_spans({a, b}).at(g->span);
-    Moving_object<EFT> A = moving_on(emodel_, a, span, {}), B = moving_on(emodel_, b, span, {});
+    rational_.need_planes(a);   // the witness and its check read planes alone
+    rational_.need_planes(b);
+    const Time_span<EFT> span = rational_.model().sub_spans({a, b}).at(g->span);
+    Moving_object<EFT> A = moving_on(rational_.model(), a, span, {}), B = moving_on(rational_.model(), b, span, {});
     Pair_result<EFT> r;
     r.a = a;
     r.b = b;
@@ -420,7 +471,7 @@ private:
     Vector3<EFT> shear = Extrusion<EK>::shear_of(A, B, g->frame, use_sbounds_);
     std::optional<std::array<Vector4<EFT>, 2>> cells;
     if (g->goal.closed() && !g->goal.convex) cells = interval_cells(*g, a, b, A, B, shear);
-    Collision_checker<EK> checker(ek_, emodel_, esettled_, ignored, use_sbounds_);
+    Collision_checker<EK> checker(ek_, rational_.model(), rational_.settled(), ignored, use_sbounds_);
     checker.check_points_with(&certified_);
     checker.use_guides(&guide_source_);
     checker.make_witness(g->goal, shear, A, B, span, r, cells ? &*cells : nullptr);
@@ -434,7 +485,7 @@ private:
   Plane_sides<EFT> certified_sides(int i, const Vector3<EFT>& y) const
   {
     std::size_t o = static_cast<std::size_t>(i);
-    return clash4d::certified_sides(ak_, amodel_.objects[o].csg, ek_, emodel_.objects[o].csg, y);
+    return clash4d::certified_sides(ak_, amodel_.objects[o].csg, ek_, rational_.model().objects[o].csg, y);
   }
 
   // Closed: each object's generic point near the contact (Witness::
@@ -491,7 +542,7 @@ private:
   {
     Check_stats rstats = stats.fresh();
     Replay replay(trail, &stages);
-    Collision_checker<EK, Replay> checker(ek_, emodel_, esettled_, rstats, use_sbounds_, &replay);
+    Collision_checker<EK, Replay> checker(ek_, rational_.model(), rational_.settled(), rstats, use_sbounds_, &replay);
     checker.check_points_with(&certified_);
     checker.use_guides(&guide_source_);
     checker.use_convex_lp(convex_lp_);
@@ -509,6 +560,7 @@ private:
   bool convex_lp_ = true;
   AK ak_;
   EK ek_;
+  Rational_model<EK> rational_;               // EK's model, object by object as asked
   Scene_model<AK> amodel_;
   std::vector<typename S_bounds<AK>::Bounds> asettled_;
   std::vector<char> exact_only_;              // AK could not bound the object: its pairs go to EK
@@ -536,22 +588,10 @@ private:
   Prepared_model model_;
   Prepared_sweep sweeps_[2];
   std::vector<char> sweep_certain_;           // the intervals' sweep's, per pair (drop_apart_ties)
-  Scene_model<EK> emodel_;                    // objects built on demand
-  std::vector<typename S_bounds<EK>::Bounds> esettled_;
-  std::vector<Object_model<EFT>> ebounds_;   // boxes-only trees (need_bounds)
-  // Whether EK has made an object's planes, its whole model, its S-bounds,
-  // its motion (one allocation per run: a convex pair's query is a few µs);
-  // and the object's convex-pair guide (guide(i)), made as lazily.
-  struct Exact_parts {
-    Lazy_once planed, built, settled, moved, guided;
-    std::shared_ptr<Convex_guide> guide;   // changed only by motions_changed
-  };
-  std::unique_ptr<Exact_parts[]> made_;
-  // The witness checks' plane sides in EK's runs (certified_sides).
   const Sides_at<EFT> certified_{[this](int i, const Vector3<EFT>& y) { return certified_sides(i, y); }};
   // Each object's convex-pair guide, made once (search/Convex_guide.h): all
   // pairs of a check, and every check of a prepared scene, share it.
-  const Guide_source guide_source_{[this](int i) { return guide(i); }};
+  const Guide_source guide_source_{[this](int i) { return rational_.guide(i); }};
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
       stages_adopted_{0}, lines_rerun_{0}, witness_lines_{0}, convex_rational_{0}, closed_cells_{0},
@@ -627,30 +667,6 @@ private:
     }
   }
 
-  // AK's number x in EK when it is a point interval: then it is the exact
-  // number the rational run has there. Exchanged in (swap_numbers: no copy
-  // of a rational).
-  bool to_exact(const AFT& x, EFT& to) const
-  {
-    std::optional<Rational> v = ak_.exact_value(x);
-    if (!v) return false;
-    EFT e = ek_.from_rational(*v);
-    swap_numbers(to, e);
-    return true;
-  }
-  // The same for a point: every coordinate a point interval.
-  bool to_exact(const Vector4<AFT>& x, Vector4<EFT>& to) const
-  {
-    for (int q = 0; q < 4; ++q)
-      if (!to_exact(x[q], to[q])) return false;
-    return true;
-  }
-  // Whether to_exact(x) takes, without making the number.
-  bool exact_point(const Vector4<AFT>& x) const
-  {
-    return std::all_of(x.begin(), x.end(), [&](const AFT& c) { return ak_.has_exact_value(c); });
-  }
-
   // AK's model, each object's S-bounds (EK's where AK fails), and the sweep's
   // pairs. False when AK cannot build the model, or cannot be trusted on
   // this machine at all (AK::encloses_here): the whole run goes to EK.
@@ -701,7 +717,7 @@ private:
     try {
       Protector protect;
       amodel_ = Scene_model<AK>::build(ak_, scene_);
-      emodel_.far_exponent = amodel_.far_exponent;   // one exponent, from the scene: EK's runs take AK's path
+      rational_.model().far_exponent = amodel_.far_exponent;   // one exponent, from the scene: EK's runs take AK's path
     } catch (const CGAL::Uncertain_conversion_exception&) {
       ++fallbacks_;
       return false;
@@ -719,8 +735,8 @@ private:
     } catch (const CGAL::Uncertain_conversion_exception&) {
       // The sweep could not order some motion times: sweep in EK instead.
       ++fallbacks_;
-      for (std::size_t i = 0; i < scene_.objects.size(); ++i) need_exact(static_cast<int>(i));
-      candidate_pairs(ek_, emodel_, esettled_, scene_, stats, semantics, pairs);
+      for (std::size_t i = 0; i < scene_.objects.size(); ++i) rational_.need_exact(static_cast<int>(i));
+      candidate_pairs(ek_, rational_.model(), rational_.settled(), scene_, stats, semantics, pairs);
       return;
     }
     drop_apart_ties(pairs, sweep_certain_, stats, semantics);
@@ -770,7 +786,7 @@ private:
     std::vector<Box<EFT, 3>> eroots(scene_.objects.size());
     eroots[static_cast<std::size_t>(i)] = exact_root(i);
     eroots[static_cast<std::size_t>(j)] = exact_root(j);
-    return Pair_sweep<EK>(ek_, false).meets(emodel_, eroots, i, j);
+    return Pair_sweep<EK>(ek_, false).meets(rational_.model(), eroots, i, j);
   }
 
   typename S_bounds<AK>::Bounds settle(int i, Check_stats& stats)
@@ -781,111 +797,11 @@ private:
     } catch (const CGAL::Uncertain_conversion_exception&) {
       ++fallbacks_;
       exact_only_[i] = 1;
-      need_exact(i);
+      rational_.need_exact(i);
       // Only the sweep reads it: the root box, EK's enclosed in AK's numbers.
       Protector protect;
-      return typename S_bounds<AK>::Bounds(1, enclose(esettled_[i][0]));
+      return typename S_bounds<AK>::Bounds(1, enclose(rational_.settled()[i][0]));
     }
-  }
-
-  // Object i's root box in EK, as the sweep reads it: a one-primitive
-  // object's is its primitive's box (its S-bounds have nothing to narrow),
-  // made without a model (Model_builder::primitive_box); another's, its
-  // settled S-bounds' root. Either holds the object (the sweep's only need).
-  Box<EFT, 3> exact_root(int i)
-  {
-    need_motion(i);
-    if (amodel_.objects[i].csg.nodes.size() != 1) {
-      need_bounds(i);
-      return esettled_[i][0];
-    }
-    return Model_builder<EK>(ek_).primitive_box(scene_.objects[static_cast<std::size_t>(i)].shape);
-  }
-
-  Box<AFT, 3> enclose(const Box<EFT, 3>& e) const
-  {
-    Box<AFT, 3> b;
-    b.empty = e.empty;
-    b.has_lo = e.has_lo;
-    b.has_hi = e.has_hi;
-    for (int q = 0; q < 3; ++q) {
-      if (e.has_lo[q]) b.lo[q] = ak_.from_rational(ek_.to_rational(e.lo[q]));
-      if (e.has_hi[q]) b.hi[q] = ak_.from_rational(ek_.to_rational(e.hi[q]));
-    }
-    return b;
-  }
-
-  // EK's planes of object i, in its model's tree (Model_builder::
-  // build_planes): all plane tables (exact/Exact_span.h), witnesses and
-  // their checks read. Its vertices and boxes are made only when
-  // need_model asks.
-  void need_planes(int i)
-  {
-    need_motion(i);
-    made_[i].planed.call(
-        [&] { emodel_.objects[i].csg = Model_builder<EK>(ek_).build_planes(scene_.objects[i].shape); });
-  }
-  // EK's whole model of object i (what EK's runs and linear programs read:
-  // Convex_pair reads vertices), and with need_exact its S-bounds too: made
-  // whole when no planes were asked for before, otherwise the planes'
-  // model completed in place: its planes, which another thread may be
-  // reading, are not touched, and no reader of vertices or boxes gets here
-  // before this is done.
-  void need_model(int i)
-  {
-    need_motion(i);
-    bool whole = false;
-    made_[i].planed.call([&] {
-      emodel_.objects[i].csg = Model_builder<EK>(ek_).build(scene_.objects[i].shape);
-      whole = true;
-    });
-    made_[i].built.call([&] {
-      if (whole) return;
-      Csg_model<EFT> more = Model_builder<EK>(ek_).build_vertices(scene_.objects[i].shape);
-      std::vector<Primitive<EFT>>& to = emodel_.objects[i].csg.primitives;
-      for (std::size_t k = 0; k < to.size(); ++k) {
-        to[k].vertices = std::move(more.primitives[k].vertices);
-        to[k].box = more.primitives[k].box;
-      }
-    });
-  }
-  // Only the motion (a convex pair's signs in rationals read their planes
-  // from the scene as asked, Interval_filter::Exact_convex).
-  void need_motion(int i)
-  {
-    made_[i].moved.call([&] { emodel_.objects[i].motion = Motion_path<EFT>::build(ek_, scene_.objects[i].motion); });
-  }
-  // Object i's convex-pair guide, made by the first pair that asks.
-  std::shared_ptr<const Convex_guide> guide(int i)
-  {
-    made_[i].guided.call([&] { made_[i].guide = Convex_guide::make(scene_.objects[static_cast<std::size_t>(i)]); });
-    return made_[i].guide;
-  }
-  void need_exact(int i)
-  {
-    need_model(i);
-    need_bounds(i);
-  }
-  // EK's settled S-bounds of object i, and its motion, without its model:
-  // settled on the boxes-only tree (Model_builder::build_boxes), whose
-  // nodes and boxes are the model's, so they are the model's bounds. All a
-  // region stage in rationals reads (exact/Exact_span.h), on bounds_on.
-  void need_bounds(int i)
-  {
-    need_motion(i);
-    made_[i].settled.call([&] {
-      Check_stats ignored;
-      ebounds_[i].csg = Model_builder<EK>(ek_).build_boxes(scene_.objects[static_cast<std::size_t>(i)].shape);
-      esettled_[i] = settled_bounds(ek_, ebounds_[i].csg, ignored, use_sbounds_);
-    });
-  }
-  // Object i on a sub-span with its settled S-bounds, for the S-bound
-  // stages only (need_bounds): its tree holds boxes, not planes.
-  Moving_object<EFT> bounds_on(int i, const Time_span<EFT>& span) const
-  {
-    Moving_object<EFT> m = moving_on(emodel_, i, span, esettled_[i]);
-    m.object = &ebounds_[i];
-    return m;
   }
 
   void reset_counts()

@@ -129,7 +129,7 @@ public:
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     Search_goal<EFT> e = rational_goal_of(goal);
     ++stats_->exact_ties;
-    return e.can_improve(runner_->ek_, runner_->ek_.from_rational(*span.exact_lo));
+    return e.can_improve(runner_->ek(), runner_->ek().from_rational(*span.exact_lo));
   }
   // Earliest mode: a convex pair's vertex B at time t, against a t* or a
   // ceiling it ties with (two pairs touching at one instant, another
@@ -143,7 +143,7 @@ public:
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     Search_goal<EFT> e = rational_goal_of(goal);
     ++stats_->exact_ties;
-    return e.can_improve(runner_->ek_, exact_convex(stage.a(), stage.b(), stage.span_index()).vertex(*B)[3]);
+    return e.can_improve(runner_->ek(), exact_convex(stage.a(), stage.b(), stage.span_index()).vertex(*B)[3]);
   }
   bool skips_span(std::size_t index)
   {
@@ -210,14 +210,14 @@ public:
       // A point inside the intervals could not snap (an overlap as thin as
       // their enclosures): the witness made from it in rationals, on every
       // plane of the objects (their models' planes: all it and its check read).
-      runner_->need_planes(found.a);
-      runner_->need_planes(found.b);
+      runner_->rational().need_planes(found.a);
+      runner_->rational().need_planes(found.b);
       const Exact_convex& x = *exact_convex_;
       Vector3<EFT> world{EFT(0), EFT(0), EFT(0)};
-      r.witness = Witness<EK>(runner_->ek_)
+      r.witness = Witness<EK>(runner_->ek())
                       .make(f.at_centre ? e.centre(f.centre_rows) : g, world, x.A, x.B, x.span.lo, x.span.hi)
                       .value();   // rationals tell every sign
-      if (!is_valid_witness(runner_->ek_, runner_->emodel_, r.a, r.b, r.witness, &runner_->certified_))
+      if (!is_valid_witness(runner_->ek(), runner_->rational().model(), r.a, r.b, r.witness, &runner_->certified()))
         return std::nullopt;
     }
     Vector4<EFT> p = f.at_vertex ? e.vertex(f.basis) : f.at_centre ? r.witness : g;
@@ -388,7 +388,7 @@ public:
     if (std::optional<bool> r = certified_improves(k, goal, region.lo[3], earliest_ && !fold_unsynced_)) return *r;
     std::optional<Box<EFT, 4>> exact = exact_region(span_, region);
     if (!exact) throw CGAL::Uncertain_conversion_exception("a region's time the intervals only enclose");
-    return rational_goal_of(goal).can_improve(runner_->ek_, exact->lo[3]);
+    return rational_goal_of(goal).can_improve(runner_->ek(), exact->lo[3]);
   }
   // Earliest mode: a point of a line (an edge's end, a segment's earliest
   // end) whose time the intervals cannot tell from t*: a tie, the vertex at
@@ -413,10 +413,10 @@ public:
     const auto& e = lines.conquer();
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     std::array<EFT, 2> time = meeting_time(e.plane(line[0]), e.plane(line[1]), e.plane(line[2]), e.plane(p));
-    CGAL::Sign den = runner_->ek_.sign(time[1]);
+    CGAL::Sign den = runner_->ek().sign(time[1]);
     if (den == CGAL::ZERO) throw CGAL::Uncertain_conversion_exception("a tie where the planes meet in no point");
     ++stats_->exact_ties;
-    return exact_goal.can_improve(runner_->ek_, runner_->ek_.quotient(time[0], time[1], den));
+    return exact_goal.can_improve(runner_->ek(), runner_->ek().quotient(time[0], time[1], den));
   }
   // Two cuts of a line the intervals cannot order (several planes through
   // one point the intervals only enclose: the contact vertex, a decimal
@@ -584,13 +584,13 @@ public:
   template <class V, class Inside>
   std::optional<bool> verdict_first(const V& l, const std::vector<V>& keys, Inside& inside, std::size_t& tested)
   {
-    return interval_verdict(runner_->ak_, tested,
+    return interval_verdict(runner_->ak(), tested,
                             [&](auto& hood) { return hood.find_inside(l, keys, inside).has_value(); });
   }
   template <class V, class Inside>
   std::optional<bool> verdict_around(const std::vector<V>& keys, Inside inside, std::size_t& tested)
   {
-    return interval_verdict(runner_->ak_, tested,
+    return interval_verdict(runner_->ak(), tested,
                             [&](auto& hood) { return hood.find_inside_around(keys, inside).has_value(); });
   }
 
@@ -609,9 +609,9 @@ private:
     Convex_pair<EK> stage;
     Exact_convex(Runner& runner, int a_, int b_, std::size_t i, Primitive_planes<EK>& pa, Primitive_planes<EK>& pb,
                  const Convex_guides& guides)
-      : a(a_), b(b_), index(i), span(runner.emodel_.sub_spans({a_, b_}).at(i)),
-        A(moving_on(runner.emodel_, a_, span, {})), B(moving_on(runner.emodel_, b_, span, {})),
-        stage(runner.ek_, runner.emodel_, a_, b_, nullptr, guides)
+      : a(a_), b(b_), index(i), span(runner.rational().model().sub_spans({a_, b_}).at(i)),
+        A(moving_on(runner.rational().model(), a_, span, {})), B(moving_on(runner.rational().model(), b_, span, {})),
+        stage(runner.ek(), runner.rational().model(), a_, b_, nullptr, guides)
     {
       stage.use_planes(pa, pb);
       stage.start_span(i, A, B, span);
@@ -626,13 +626,13 @@ private:
   Convex_pair<EK>& exact_convex(int a, int b, std::size_t index)
   {
     if (!exact_convex_ || exact_convex_->a != a || exact_convex_->b != b || exact_convex_->index != index) {
-      runner_->need_motion(a);
-      runner_->need_motion(b);
+      runner_->rational().need_motion(a);
+      runner_->rational().need_motion(b);
       int ids[2] = {a, b};
       for (int o = 0; o < 2; ++o)
         if (!exact_planes_[o])
           exact_planes_[o] = std::make_unique<Primitive_planes<EK>>(
-              runner_->ek_, runner_->scene_.objects[static_cast<std::size_t>(ids[o])].shape);
+              runner_->ek(), runner_->scene().objects[static_cast<std::size_t>(ids[o])].shape);
       exact_convex_ =
           std::make_unique<Exact_convex>(*runner_, a, b, index, *exact_planes_[0], *exact_planes_[1], convex_guides_);
     }
@@ -802,9 +802,9 @@ private:
   {
     if (fold_unsynced_) {
       // A fold's t* is its region's lower time, a grid point.
-      std::optional<Rational> t = runner_->ak_.exact_value(goal.t_star);
+      std::optional<Rational> t = runner_->ak().exact_value(goal.t_star);
       if (!t) throw CGAL::Uncertain_conversion_exception("a fold's time the intervals only enclose");
-      set_t_star(runner_->ek_.from_rational(*t));
+      set_t_star(runner_->ek().from_rational(*t));
       fold_unsynced_ = false;
       stale_ = false;
     }
@@ -815,8 +815,8 @@ private:
       if (floor_conquer_ != g.conquers() || floor_t_star_ != t_stars_) {
         floor_conquer_ = g.conquers();
         floor_t_star_ = t_stars_;
-        std::optional<Rational> lo = runner_->ak_.exact_value(g.region().lo[3]);
-        floor_reached_ = lo && !runner_->ek_.less(runner_->ek_.from_rational(*lo), *t_star_);
+        std::optional<Rational> lo = runner_->ak().exact_value(g.region().lo[3]);
+        floor_reached_ = lo && !runner_->ek().less(runner_->ek().from_rational(*lo), *t_star_);
       }
       if (floor_reached_) return;
     }
@@ -830,14 +830,14 @@ private:
       improved_on_keys_ = false;
       pending_ = true;
       pending_line_ = {i, j, m};
-      if (std::optional<Rational> t = runner_->ak_.exact_value(goal.t_star)) {
-        set_t_star(runner_->ek_.from_rational(*t));   // a point: the exact t* itself
+      if (std::optional<Rational> t = runner_->ak().exact_value(goal.t_star)) {
+        set_t_star(runner_->ek().from_rational(*t));   // a point: the exact t* itself
         stale_ = false;
       } else if (near_grid(goal.t_star)) {
         // Likely a region's face (S-bounds fitted to the contact time):
         // the later comparisons with region times need the exact t*.
         make_exact();
-        goal.t_star = runner_->ak_.from_rational(runner_->ek_.to_rational(*t_star_));
+        goal.t_star = runner_->ak().from_rational(runner_->ek().to_rational(*t_star_));
       }
       return;
     } catch (const CGAL::Uncertain_conversion_exception&) {
@@ -858,7 +858,7 @@ private:
     set_t_star(e.t_star);
     improved_on_keys_ = true;
     last_.reset();
-    auto enclose = [&](const EFT& x) { return runner_->ak_.from_rational(runner_->ek_.to_rational(x)); };
+    auto enclose = [&](const EFT& x) { return runner_->ak().from_rational(runner_->ek().to_rational(x)); };
     goal.found = goal.improved = true;
     goal.vertex_known = false;   // the rational conquer's record, not this one's
     goal.t_star = enclose(e.t_star);
@@ -877,7 +877,7 @@ private:
   {
     trail_->region_known = false;
     for (int q = 0; q < 4; ++q) {
-      std::optional<Rational> lo = runner_->ak_.exact_value(region.lo[q]), hi = runner_->ak_.exact_value(region.hi[q]);
+      std::optional<Rational> lo = runner_->ak().exact_value(region.lo[q]), hi = runner_->ak().exact_value(region.hi[q]);
       if (!lo || !hi) return;
       trail_->region[2 * q] = *lo;
       trail_->region[2 * q + 1] = *hi;
@@ -926,7 +926,7 @@ private:
   {
     std::optional<Box<EFT, 4>> root = exact_root(s);
     if (!root) return std::nullopt;
-    return Region_faces<AK, EK>(runner_->ak_, runner_->ek_).descendant(region, *root);
+    return Region_faces<AK, EK>(runner_->ak(), runner_->ek()).descendant(region, *root);
   }
 
   // Sub-span s's root region in rationals: the stage's own when it was made
@@ -939,12 +939,12 @@ private:
     if (known != exact_roots_.end()) return known->second;
     std::optional<Box<EFT, 4>>& root = exact_roots_[s];
     auto it = roots_.find(s);
-    if (it == roots_.end() || closed_ || !runner_->use_sbounds_) return root;
+    if (it == roots_.end() || closed_ || !runner_->use_sbounds()) return root;
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-    runner_->need_motion(a_);   // the sub-spans' times; the faces read no model
-    runner_->need_motion(b_);
-    const Time_span<EFT> span = runner_->emodel_.sub_spans({a_, b_}).at(s);
-    root = Region_faces<AK, EK>(runner_->ak_, runner_->ek_).root(it->second, span.lo, span.hi);
+    runner_->rational().need_motion(a_);   // the sub-spans' times; the faces read no model
+    runner_->rational().need_motion(b_);
+    const Time_span<EFT> span = runner_->rational().model().sub_spans({a_, b_}).at(s);
+    root = Region_faces<AK, EK>(runner_->ak(), runner_->ek()).root(it->second, span.lo, span.hi);
     return root;
   }
   std::map<std::size_t, Box<AFT, 4>> roots_;                         // the interval stages' regions

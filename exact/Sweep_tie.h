@@ -34,7 +34,7 @@ public:
   using AFT = typename AK::FT;
   using EFT = typename EK::FT;
 
-  explicit Sweep_tie(Runner& runner) : r_(runner), roots_(runner.scene_.objects.size()) {}
+  explicit Sweep_tie(Runner& runner) : r_(runner), roots_(runner.scene().objects.size()) {}
 
   // Whether some box of i and some box of j share interior (EK's answer).
   bool meets(int i, int j)
@@ -42,10 +42,10 @@ public:
     typename AK::Protector protect;
     const Root &ri = root(i), &rj = root(j);
     if (ri.aroot.empty || rj.aroot.empty) return false;
-    Pair_sweep<AK> sweep(r_.ak_, false);
-    for (const auto& x : r_.amodel_.sub_spans({i}))
-      for (const auto& y : r_.amodel_.sub_spans({j})) {
-        Box<AFT, 4> a = sweep.swept(r_.amodel_, i, ri.aroot, x), b = sweep.swept(r_.amodel_, j, rj.aroot, y);
+    Pair_sweep<AK> sweep(r_.ak(), false);
+    for (const auto& x : r_.interval_model().sub_spans({i}))
+      for (const auto& y : r_.interval_model().sub_spans({j})) {
+        Box<AFT, 4> a = sweep.swept(r_.interval_model(), i, ri.aroot, x), b = sweep.swept(r_.interval_model(), j, rj.aroot, y);
         bool all = true;
         for (int q = 0; q < 4 && all; ++q)
           all = opens_past({i, &x, &a}, {j, &y, &b}, q) && opens_past({j, &y, &b}, {i, &x, &a}, q);
@@ -76,24 +76,24 @@ private:
   bool opens_past(const Swept& a, const Swept& b, int q)
   {
     if (!a.box->has_hi[q] || !b.box->has_lo[q]) return true;
-    const AK& k = r_.ak_;
+    const AK& k = r_.ak();
     if (!k.possibly_positive(a.box->hi[q] - b.box->lo[q])) return false;
     if (!k.possibly_nonnegative(b.box->lo[q] - a.box->hi[q])) return true;
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-    return r_.ek_.compare(side(a, q, true), side(b, q, false)) == CGAL::LARGER;
+    return r_.ek().compare(side(a, q, true), side(b, q, false)) == CGAL::LARGER;
   }
 
   // EK's side of a swept box: its root's plus the motion's displacement
   // (Pair_sweep::moved), or the sub-span's end on the time axis.
   EFT side(const Swept& s, int q, bool upper)
   {
-    const EK& k = r_.ek_;
+    const EK& k = r_.ek();
     Time_span<EFT> span{k.from_rational(*s.span->exact_lo), k.from_rational(*s.span->exact_hi)};
     if (q == 3) return upper ? span.hi : span.lo;
-    r_.need_motion(s.object);
+    r_.rational().need_motion(s.object);
     // AK's certified choice of the motion's segment (Pair_sweep::swept), EK's.
-    std::size_t seg = r_.amodel_.segment_on(s.object, *s.span);
-    auto [dlo, dhi] = Pair_sweep<EK>(k, false).moved(r_.emodel_, s.object, seg, span, q);
+    std::size_t seg = r_.interval_model().segment_on(s.object, *s.span);
+    auto [dlo, dhi] = Pair_sweep<EK>(k, false).moved(r_.rational().model(), s.object, seg, span, q);
     return root_side(s.object, q, upper) + (upper ? dhi : dlo);
   }
 
@@ -105,10 +105,10 @@ private:
     if (made) return *made;
     // The vertices whose enclosure reaches past every other's near side:
     // the exact extreme is one of them (each encloses its vertex).
-    const auto& vs = r_.amodel_.objects[i].csg.primitives[0].vertices;
+    const auto& vs = r_.interval_model().objects[i].csg.primitives[0].vertices;
     double reach = upper ? vs[0][q].inf() : vs[0][q].sup();
     for (const auto& v : vs) reach = upper ? std::max(reach, v[q].inf()) : std::min(reach, v[q].sup());
-    Model_builder<EK> builder(r_.ek_);
+    Model_builder<EK> builder(r_.ek());
     std::optional<EFT> best;
     for (std::size_t k = 0; k < vs.size(); ++k) {
       if (upper ? vs[k][q].sup() < reach : vs[k][q].inf() > reach) continue;
@@ -123,11 +123,11 @@ private:
   {
     Root& r = roots_[static_cast<std::size_t>(i)];
     if (r.solid || r.exact) return r;
-    const Csg_model<AFT>& csg = r_.amodel_.objects[i].csg;
-    if (csg.nodes.size() == 1 && !csg.primitives[0].vertices.empty() && !r_.exact_only_[i]) {
+    const Csg_model<AFT>& csg = r_.interval_model().objects[i].csg;
+    if (csg.nodes.size() == 1 && !csg.primitives[0].vertices.empty() && !r_.exact_only(i)) {
       r.aroot = csg.primitives[0].box;
       r.placed = Affine3<EFT>::identity();
-      r.solid = &Model_builder<EK>(r_.ek_).peel(r_.scene_.objects[static_cast<std::size_t>(i)].shape, r.placed);
+      r.solid = &Model_builder<EK>(r_.ek()).peel(r_.scene().objects[static_cast<std::size_t>(i)].shape, r.placed);
     } else {
       r.exact = r_.exact_root(i);
       r.aroot = r_.enclose(*r.exact);
