@@ -321,7 +321,7 @@ private:
       try {
         Protector protect;
         AFT aceiling = ceiling ? ak_.from_rational(ek_.to_rational(*ceiling)) : AFT(0);
-        Interval_filter<Filtered_runner> policy(*this, trail, astats, !options.earliest, closed);
+        Interval_filter<Filtered_runner> policy(*this, trail, astats, closed);
         if (options.earliest) policy.resolve_earliest(ceiling);
         if (!options.apart_proofs) policy.never_hand_over();
         Collision_checker<AK, Interval_filter<Filtered_runner>> checker(ak_, amodel_, asettled_, astats, use_sbounds_,

@@ -74,11 +74,11 @@ public:
   };
 
   Interval_filter() = default;   // only as a stage's unused default
-  // record: an any-witness search, whose trail and witness are wanted.
-  // closed: the pair is searched in closed semantics.
-  Interval_filter(Runner& runner, Search_trail& trail, Check_stats& stats, bool record, bool closed = false)
-    : runner_(&runner), trail_(&trail), stats_(&stats),
-      record_(record), closed_(closed) {}
+  // An any-witness search, whose trail and witness are wanted, unless
+  // resolve_earliest makes it an earliest one. closed: the pair is searched
+  // in closed semantics.
+  Interval_filter(Runner& runner, Search_trail& trail, Check_stats& stats, bool closed = false)
+    : runner_(&runner), trail_(&trail), stats_(&stats), closed_(closed) {}
 
   // Earliest mode: lines decided against the exact t* (see above);
   // ceiling: the runner's, in rationals.
@@ -267,7 +267,7 @@ public:
   template <class M>
   void keep_for_replay(std::size_t index, const M& A, const M& B, const Region_stage<AFT>& st)
   {
-    if (!record_ || earliest_) return;
+    if (earliest_) return;
     Exact_stage<EFT> kept;
     kept.stage.alive = st.alive;
     kept.stage.frame_of_a = st.frame_of_a;
@@ -313,7 +313,7 @@ public:
       if (!e) return std::nullopt;
       return Exact_goal{std::move(*e), last_->span, last_->frame};
     }
-    if (!record_ || !found_line_ || !trail_->complete || trail_->approximate) return std::nullopt;
+    if (!found_line_ || !trail_->complete || trail_->approximate) return std::nullopt;
     Search_goal<EFT> start;
     start.semantics = closed_ ? Semantics::closed : Semantics::regularised;
     std::optional<Search_goal<EFT>> e = goal_on_line(*found_line_, std::move(start), true);
@@ -338,7 +338,7 @@ public:
   }
   void found_in_span(std::size_t index)
   {
-    if (record_ || earliest_) trail_->span = index;
+    trail_->span = index;   // either search records its trail
   }
   bool stops_after(std::size_t) const { return stop_ != Stop::none; }
   // The point is the rational run's own when the path was certified (the
@@ -355,7 +355,7 @@ public:
   bool witness_certified() const
   {
     bool earliest_here = earliest_ && !pending_ && !improved_on_keys_;
-    return (record_ || earliest_here) && !trail_->approximate && !found_in_rationals_;
+    return (!earliest_ || earliest_here) && !trail_->approximate && !found_in_rationals_;
   }
   // Closed, the witness is the contact point itself, kept only as point
   // intervals (Filtered_runner::exact_copy): one whose time is not a point
@@ -509,7 +509,7 @@ public:
       fold_unsynced_ = !on_line;
       return;
     }
-    if (!record_ || trail_->complete) return;
+    if (earliest_ || trail_->complete) return;
     keep_region(region, f);
     trail_->path = path;
     trail_->on_line = on_line;
@@ -539,7 +539,7 @@ public:
     } catch (const CGAL::Uncertain_conversion_exception&) {
       decide_in_rationals(g, f, i, j, m, goal);
     }
-    if (record_ && !before && goal.found) {
+    if (!earliest_ && !before && goal.found) {
       trail_->line = {i, j, m};
       found_line_ = Stale{span_, frame_, g.layout(), g.region(), f, {i, j, m}};
     }
@@ -649,7 +649,6 @@ private:
   }
   Search_trail* trail_ = nullptr;
   Check_stats* stats_ = nullptr;
-  bool record_ = false;
   bool closed_ = false;
   int a_ = -1, b_ = -1;
   std::size_t span_ = 0;
@@ -973,7 +972,7 @@ private:
     if (lines_->has_inside(f, i, j, m, goal.semantics, known)) {
       goal.found = goal.improved = true;
       found_in_rationals_ = true;
-      if (record_) trail_->line_known = known;
+      if (!earliest_) trail_->line_known = known;
     }
   }
 };
