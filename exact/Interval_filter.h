@@ -385,7 +385,7 @@ public:
   template <class FT>
   bool can_enter(const AK& k, const Search_goal<FT>& goal, const Box<FT, 4>& region)
   {
-    if (std::optional<bool> r = certified_improves(k, goal, region.lo[3], earliest_ && !fold_unsynced_)) return *r;
+    if (std::optional<bool> r = certified_improves(k, goal, region.lo[3], earliest_ && lag_ != Lag::fold)) return *r;
     std::optional<Box<EFT, 4>> exact = exact_region(span_, region);
     if (!exact) throw CGAL::Uncertain_conversion_exception("a region's time the intervals only enclose");
     return rational_goal_of(goal).can_improve(runner_->ek(), exact->lo[3]);
@@ -403,7 +403,7 @@ public:
   bool improves(const AK& k, const G& g, const Search_goal<FT>& goal, const FT& t,
                 const std::array<std::size_t, 3>& line, Fourth fourth)
   {
-    if (std::optional<bool> r = certified_improves(k, goal, t, earliest_ && goal.earliest && !fold_unsynced_))
+    if (std::optional<bool> r = certified_improves(k, goal, t, earliest_ && goal.earliest && lag_ != Lag::fold))
       return *r;
     std::size_t p = fourth();
     if (p == npos) throw CGAL::Uncertain_conversion_exception("a tie at an unknown vertex");
@@ -506,7 +506,7 @@ public:
       trail_->line_known = true;
       trail_->complete = true;
       pending_ = false;
-      fold_unsynced_ = !on_line;
+      if (!on_line) lag_ = Lag::fold;   // (a line's own was synced when it improved: earliest_line)
       return;
     }
     if (earliest_ || trail_->complete) return;
@@ -689,12 +689,10 @@ private:
   bool earliest_ = false;                                       // resolve_earliest
   const EFT* ceiling_ = nullptr;
   std::optional<EFT> t_star_;                                   // the goal's t*, exact, once found
-  bool fold_unsynced_ = false;                                  // a fold recorded a t* not yet in t_star_
   bool pending_ = false;                                        // a line improved; its conquer's path follows
   bool improved_on_keys_ = false;                               // the last improvement: a line in rationals
   std::array<std::size_t, 3> pending_line_{};
-  // The line that last improved the goal in intervals (stale_: while
-  // t_star_ lags).
+  // The line that last improved the goal in intervals.
   struct Stale {
     std::size_t span;
     std::array<bool, 3> frame;
@@ -705,7 +703,12 @@ private:
   };
   std::optional<Stale> last_;
   std::optional<Stale> found_line_;   // any witness: the line that found the point
-  bool stale_ = false;
+  // How t_star_ stands to the interval goal's t*: the same number; behind
+  // the line last_, which improved it in intervals (made when a comparison
+  // needs it: make_exact); or behind a fold, whose t* is its region's lower
+  // time, a grid point (taken at the next line: earliest_line).
+  enum class Lag { none, line, fold };
+  Lag lag_ = Lag::none;
   // Whether t* is at the conquer's lower time (no line of it improves),
   // for which conquer and which t* (set_t_star counts them).
   bool floor_reached_ = false;
@@ -738,8 +741,8 @@ private:
       e.t_star = exact_convex(convex_pair_[0], convex_pair_[1], convex_found_->index).vertex(convex_found_->basis)[3];
       return e;
     }
-    if (fold_unsynced_) throw CGAL::Uncertain_conversion_exception("t* of a fold not yet exact");
-    if (stale_) make_exact();
+    if (lag_ == Lag::fold) throw CGAL::Uncertain_conversion_exception("t* of a fold not yet exact");
+    if (lag_ == Lag::line) make_exact();
     if (goal.found && !t_star_) throw CGAL::Uncertain_conversion_exception("t* not yet exact");
     return rational_goal(goal.found);
   }
@@ -764,7 +767,7 @@ private:
   void make_exact()
   {
     if (!exact_last(false)) throw CGAL::Uncertain_conversion_exception("earliest mode on a widened region");
-    stale_ = false;
+    lag_ = Lag::none;
   }
 
   // The goal the last line left, and t_star_: that line in rationals, from
@@ -799,18 +802,17 @@ private:
   template <class G>
   void earliest_line(G& g, const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<AFT>& goal)
   {
-    if (fold_unsynced_) {
+    if (lag_ == Lag::fold) {
       // A fold's t* is its region's lower time, a grid point.
       std::optional<Rational> t = runner_->ak().exact_value(goal.t_star);
       if (!t) throw CGAL::Uncertain_conversion_exception("a fold's time the intervals only enclose");
       set_t_star(runner_->ek().from_rational(*t));
-      fold_unsynced_ = false;
-      stale_ = false;
+      lag_ = Lag::none;
     }
     // Every point of the closed region is at or after its lower time: once
     // t* is there, no line of the conquer improves it (decided exactly,
     // once per conquer and t*).
-    if (t_star_ && goal.found && !stale_) {
+    if (t_star_ && goal.found && lag_ == Lag::none) {
       if (floor_conquer_ != g.conquers() || floor_t_star_ != t_stars_) {
         floor_conquer_ = g.conquers();
         floor_t_star_ = t_stars_;
@@ -825,13 +827,13 @@ private:
       if (goal.found == saved.found && (!goal.found || same(goal.t_star, saved.t_star))) return;
       // Improved, every decision certified: the exact t* is made when needed.
       last_ = Stale{span_, frame_, g.layout(), g.region(), f, {i, j, m}};
-      stale_ = true;
+      lag_ = Lag::line;
       improved_on_keys_ = false;
       pending_ = true;
       pending_line_ = {i, j, m};
       if (std::optional<Rational> t = runner_->ak().exact_value(goal.t_star)) {
         set_t_star(runner_->ek().from_rational(*t));   // a point: the exact t* itself
-        stale_ = false;
+        lag_ = Lag::none;
       } else if (near_grid(goal.t_star)) {
         // Likely a region's face (S-bounds fitted to the contact time):
         // the later comparisons with region times need the exact t*.
@@ -843,7 +845,7 @@ private:
     }
     goal = saved;
     make_keys();
-    if (stale_) make_exact();
+    if (lag_ == Lag::line) make_exact();
     if (!conquer_lines(g).exact()) throw CGAL::Uncertain_conversion_exception("earliest mode on a widened region");
     ++stats_->exact_lines;
     // Nothing found yet (no tie with t* possible): most such lines hold no
