@@ -463,7 +463,8 @@ public:
   // wherever the search was). Otherwise it goes on where it was. Out of
   // steps, it asks again at 16 times the work with 16 times the steps, so
   // the asking costs a bounded share of the search; a term left open would
-  // be met again, so then it never asks again.
+  // be met again, so then it never asks again; nor once a point inside is
+  // found (test_line).
   void never_hand_over() { apart_after_ = std::numeric_limits<std::size_t>::max(); }
   // A proof that stops at a later sub-span (a term with a point there, or
   // its step bound) still proves the sub-spans before it apart: the
@@ -474,7 +475,7 @@ public:
   {
     if (span_apart_ || stop_ != Stop::none) return false;
     if (apart_after_ == 0) apart_after_ = first_hand_over();
-    if (!conquers || found_any_ || search_work() < apart_after_) return true;
+    if (!conquers || search_work() < apart_after_) return true;
     Rational until;
     Pair_result<EFT> inside;
     switch (runner_->proves_apart(a_, b_, closed_, apart_steps_, until, earliest_ || closed_ ? nullptr : &inside)) {
@@ -526,12 +527,14 @@ public:
   template <class G>
   void test_line(G& g, const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Search_goal<AFT>& goal)
   {
+    // A point inside found (by a fold before, or this line; earliest mode
+    // goes on): the pair is not apart, and no hand-over is asked again.
     bool before = goal.found;
-    found_any_ = found_any_ || before;   // a fold found it (earliest mode goes on)
+    if (before) never_hand_over();
     if (goal.earliest) {
       if (earliest_) earliest_line(g, f, i, j, m, goal);
       else g.test_line(f, i, j, m, goal);
-      found_any_ = found_any_ || goal.found;
+      if (goal.found) never_hand_over();
       return;
     }
     try {
@@ -653,8 +656,8 @@ private:
   int a_ = -1, b_ = -1;
   std::size_t span_ = 0;
   // When to ask for an apart proof (decides_here): the search's work so
-  // far (0: first_hand_over's, set at the first ask), and the proof's step
-  // bound. A search of a few hundred lines costs about as much as a small
+  // far (0: first_hand_over's, set at the first ask; the most size_t, never
+  // again), and the proof's step bound. A search of a few hundred lines costs about as much as a small
   // pair's proof (tens of exact LPs), and most pairs are decided before.
   std::size_t apart_after_ = 0;
   // A regularised search hands over after 128 lines' work: looking for
@@ -677,7 +680,6 @@ private:
   // filled cavities and pegs, fuzz's rotated touches, the weaving late stop).
   std::size_t search_work() const { return stats_->lines + stats_->cells_tested; }
   std::uint64_t apart_steps_ = 32768;
-  bool found_any_ = false;   // a point inside was found: the pair is not apart
   std::optional<Rational> apart_until_;   // the pair proven apart on [tL, this] (decides_here)
   bool span_apart_ = false;               // the sub-span searched now is in it
   Stop stop_ = Stop::none;
