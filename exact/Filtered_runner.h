@@ -202,7 +202,8 @@ public:
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     rational_.need_model(a);
     rational_.need_model(b);
-    Apart_pieces<EK> pieces(rational_.model(), closed ? Semantics::closed : Semantics::regularised, step_limit, Lp_effort::quick);
+    Apart_pieces<EK> pieces(rational_.model(), closed ? Semantics::closed : Semantics::regularised, step_limit,
+                            Lp_effort::quick);
     pieces.prove(a, b, ek_.to_rational(rational_.model().t_hi), false);
     Apart verdict = Apart::proven;
     if (const std::optional<Term_stop>& stop = pieces.stopped()) {
@@ -217,35 +218,6 @@ public:
     return verdict;
   }
 
-  // A point the double simplex guessed inside a term of the pair's formula
-  // (Term_stop::inside; world frame), made the pair's witness as a search's
-  // point inside is made (Witness::make: moved off every plane of both
-  // objects on its sub-span, snapped) and checked (is_valid_witness): a
-  // regularised collision. False when it is not one after all. The guess
-  // is only where to look; every sign is EK's. Asked by proves_apart alone.
-  bool witness_at(int a, int b, const std::array<double, 4>& x, Pair_result<EFT>& r)
-  {
-    Vector4<EFT> p;
-    for (int q = 0; q < 4; ++q) {
-      if (!std::isfinite(x[q])) return false;
-      p[q] = ek_.from_rational(exact_rational(x[q]));
-    }
-    const auto& spans = rational_.model().sub_spans({a, b});
-    auto span = std::find_if(spans.begin(), spans.end(),
-                             [&](const Time_span<EFT>& s) { return !ek_.less(p[3], s.lo) && !ek_.less(s.hi, p[3]); });
-    if (span == spans.end()) return false;
-    // Both models are whole: proves_apart made them (need_model).
-    Moving_object<EFT> A = moving_on(rational_.model(), a, *span, {}), B = moving_on(rational_.model(), b, *span, {});
-    const Vector3<EFT> no_shear{EFT(0), EFT(0), EFT(0)};
-    std::optional<Vector4<EFT>> w = Witness<EK>(ek_).make(p, no_shear, A, B, span->lo, span->hi);
-    if (!w || !is_valid_witness(ek_, rational_.model(), a, b, *w, &certified_)) return false;
-    r = Pair_result<EFT>();
-    r.a = a;
-    r.b = b;
-    r.collide = r.has_witness = r.witness_verified = true;
-    r.witness = r.contact = *w;
-    return true;
-  }
   // Whether sub-span s of pair (a, b) ends by `until` (need_motion).
   bool span_ends_by(int a, int b, std::size_t s, const Rational& until) const
   {
@@ -305,6 +277,36 @@ public:
 
 private:
   static constexpr const char* EK_name = "exact";
+
+  // A point the double simplex guessed inside a term of the pair's formula
+  // (Term_stop::inside; world frame), made the pair's witness as a search's
+  // point inside is made (Witness::make: moved off every plane of both
+  // objects on its sub-span, snapped) and checked (is_valid_witness): a
+  // regularised collision. False when it is not one after all. The guess
+  // is only where to look; every sign is EK's. Asked by proves_apart alone.
+  bool witness_at(int a, int b, const std::array<double, 4>& x, Pair_result<EFT>& r)
+  {
+    Vector4<EFT> p;
+    for (int q = 0; q < 4; ++q) {
+      if (!std::isfinite(x[q])) return false;
+      p[q] = ek_.from_rational(exact_rational(x[q]));
+    }
+    const auto& spans = rational_.model().sub_spans({a, b});
+    auto span = std::find_if(spans.begin(), spans.end(),
+                             [&](const Time_span<EFT>& s) { return !ek_.less(p[3], s.lo) && !ek_.less(s.hi, p[3]); });
+    if (span == spans.end()) return false;
+    // Both models are whole: proves_apart made them (need_model).
+    Moving_object<EFT> A = moving_on(rational_.model(), a, *span, {}), B = moving_on(rational_.model(), b, *span, {});
+    const Vector3<EFT> no_shear{EFT(0), EFT(0), EFT(0)};
+    std::optional<Vector4<EFT>> w = Witness<EK>(ek_).make(p, no_shear, A, B, span->lo, span->hi);
+    if (!w || !is_valid_witness(ek_, rational_.model(), a, b, *w, &certified_)) return false;
+    r = Pair_result<EFT>();
+    r.a = a;
+    r.b = b;
+    r.collide = r.has_witness = r.witness_verified = true;
+    r.witness = r.contact = *w;
+    return true;
+  }
 
   // One pair: the interval run, then, when it could not decide or could not
   // make the witness, EK along its trail or from the start. A witness the

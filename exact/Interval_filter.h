@@ -880,7 +880,8 @@ private:
   {
     trail_->region_known = false;
     for (int q = 0; q < 4; ++q) {
-      std::optional<Rational> lo = runner_->ak().exact_value(region.lo[q]), hi = runner_->ak().exact_value(region.hi[q]);
+      std::optional<Rational> lo = runner_->ak().exact_value(region.lo[q]);
+      std::optional<Rational> hi = runner_->ak().exact_value(region.hi[q]);
       if (!lo || !hi) return;
       trail_->region[2 * q] = *lo;
       trail_->region[2 * q + 1] = *hi;

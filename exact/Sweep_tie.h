@@ -45,7 +45,8 @@ public:
     Pair_sweep<AK> sweep(r_.ak(), false);
     for (const auto& x : r_.interval_model().sub_spans({i}))
       for (const auto& y : r_.interval_model().sub_spans({j})) {
-        Box<AFT, 4> a = sweep.swept(r_.interval_model(), i, ri.aroot, x), b = sweep.swept(r_.interval_model(), j, rj.aroot, y);
+        Box<AFT, 4> a = sweep.swept(r_.interval_model(), i, ri.aroot, x);
+        Box<AFT, 4> b = sweep.swept(r_.interval_model(), j, rj.aroot, y);
         bool all = true;
         for (int q = 0; q < 4 && all; ++q)
           all = opens_past({i, &x, &a}, {j, &y, &b}, q) && opens_past({j, &y, &b}, {i, &x, &a}, q);

@@ -45,7 +45,8 @@ void Term_search::grow(int literal)
 int Term_search::walk()
 {
   if (++steps_ > limit_)
-    return stop(Term_stop::Why::out_of_steps, "closing off the terms took more than " + std::to_string(limit_) + " steps");
+    return stop(Term_stop::Why::out_of_steps,
+                "closing off the terms took more than " + std::to_string(limit_) + " steps");
   if ((steps_ & 1023) == 0) Work_budget::check();   // --max-seconds covers the certificate too
   if (pending_.empty()) return complete();
   int n = pending_.back();
