@@ -28,9 +28,6 @@
 namespace clash4d {
 
 struct Search_trail {
-  enum class Mode { Record, Replay };
-  Mode mode = Mode::Record;
-
   bool complete = false;                // Record: a point inside was found and the trail leads to it
   bool diverged = false;                // Replay: the exact run's path differs; use a full run
   bool approximate = false;             // Record: a simplification was skipped as uncertain, so
@@ -51,9 +48,6 @@ struct Search_trail {
   // allocations.
   std::array<Rational, 8> region = shared_zeros<Rational, 8>();
   Pair_formula formula;
-
-  bool recording() const { return mode == Mode::Record; }
-  bool replaying() const { return mode == Mode::Replay; }
 };
 
 } // namespace clash4d
