@@ -175,7 +175,6 @@ public:
   const Scene_model<AK>& interval_model() const { return amodel_; }
   bool exact_only(int i) const { return exact_only_[static_cast<std::size_t>(i)] != 0; }
   Rational_model<EK>& rational() { return rational_; }
-  const Rational_model<EK>& rational() const { return rational_; }
   // The witness checks' plane sides in EK's runs (certified_sides).
   const Sides_at<EFT>& certified() const { return certified_; }
   // --stats: a plane tested in rationals on a sub-span's table, a region
@@ -241,11 +240,6 @@ public:
     for (int q = 0; q < 4; ++q)
       if (!to_exact(x[q], to[q])) return false;
     return true;
-  }
-  // Whether to_exact(x) takes, without making the number.
-  bool exact_point(const Vector4<AFT>& x) const
-  {
-    return std::all_of(x.begin(), x.end(), [&](const AFT& c) { return ak_.has_exact_value(c); });
   }
 
   // Object i's root box in EK, as the sweep reads it: a one-primitive
@@ -599,6 +593,11 @@ private:
       stages_adopted_{0}, lines_rerun_{0}, witness_lines_{0}, convex_rational_{0}, closed_cells_{0},
       witnesses_by_terms_{0};
 
+  // Whether to_exact(x) takes, without making the number.
+  bool exact_point(const Vector4<AFT>& x) const
+  {
+    return std::all_of(x.begin(), x.end(), [&](const AFT& c) { return ak_.has_exact_value(c); });
+  }
   // Whether AK's witness, verified on a certified path, is EK's: each
   // number exact_copy takes a point interval. Regularised, the witness's
   // coordinates are grid points (Witness::snap), exact doubles, so AK's
