@@ -24,11 +24,6 @@ struct Check_options {
   // being decided by linear programs first (search/Convex_pair.h;
   // --no-convex-lp: reproduction, and tests of the cascade).
   bool convex_lp = true;
-  // false: a colliding pair whose witness the interval run found but could
-  // not make goes to a rational replay of its trail (exact/Trail_replay.h)
-  // instead of having only the line that found it run again in rationals
-  // (Interval_filter::exact_goal): tests of that path.
-  bool witness_lines = true;
   // Measure each stage's seconds (Check_stats::seconds_*, printed by
   // --stats, which sets this). Off by default: the clock reads are about
   // 5% of a convex pair's query (search/Stage_clock.h).

@@ -76,7 +76,6 @@ json stats_json(const Check_stats& s)
           {"convex_undecided", s.convex_undecided},
           {"exact_fallbacks", s.exact_fallbacks},
           {"exact_witness_runs", s.exact_witness_runs},
-          {"exact_witness_replays", s.exact_witness_replays},
           {"exact_regions", s.exact_regions},
           {"exact_lines", s.exact_lines},
           {"exact_ties", s.exact_ties},

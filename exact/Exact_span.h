@@ -32,13 +32,10 @@ public:
       : lines_(k, table, stats_, &groups, &policy_), exact_(exact) {}
     Null_object_test<EK, Exact_line_filter>& conquer() { return lines_; }
     const Null_object_test<EK, Exact_line_filter>& conquer() const { return lines_; }
-    // Whether line i, j, m holds a point inside; `known`: it is the line the
-    // rational run itself will find (the region was exact).
-    bool has_inside(const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Semantics semantics,
-                    bool& known)
+    // Whether line i, j, m holds a point inside.
+    bool has_inside(const Pair_formula& f, std::size_t i, std::size_t j, std::size_t m, Semantics semantics)
     {
       CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-      known = exact_;
       return lines_.line_has_inside(f, i, j, m, semantics);
     }
 

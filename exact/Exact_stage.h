@@ -2,7 +2,7 @@
 // could not certify it (exact/Exact_span.h, region_stage): the rational
 // run's own stage and the CSG nodes its S-bounds emptied in each object.
 // Kept per sub-span, so that the rational run replaying the interval run's
-// trail (exact/Trail_replay.h) adopts it instead of making it again.
+// trail (exact/Earliest_replay.h) adopts it instead of making it again.
 #ifndef CLASH4D_EXACT_EXACT_STAGE_H
 #define CLASH4D_EXACT_EXACT_STAGE_H
 

@@ -14,15 +14,15 @@
 // snapped to a dyadic grid point (Witness::snap), which AK finds exactly
 // from its enclosures. Otherwise the line that found the point is run
 // again in EK, on the rational run's region, and the witness made from it
-// (witness_from); where that region is not known, the pair is run again
-// on EK: an any-witness search goes straight to the point AK found, along
-// AK's trail (exact/Trail_replay.h), and falls back to the whole search
-// when EK's path differs. Earliest mode, in both semantics: the interval
+// (witness_from); where that is not the rational run's line (AK's path
+// was not certified, or the point lay in the sliver between AK's region and
+// EK's), the whole search runs again on EK. Earliest mode, in both semantics: the interval
 // run decides in rationals the lines that improve the goal or tie with its
 // t* (exact/Interval_filter.h), so its path is the rational run's; t*, the
 // contact point and the witness are its own where they come out as points,
 // and otherwise they are made from its last improvement's line in EK as
-// above, or a rational run replays that improvement (Earliest_replay);
+// above, or a rational run replays that improvement (exact/
+// Earliest_replay.h);
 // where that fails, earliest mode runs the whole search in rationals.
 // Every witness EK makes is checked against the scene with plane sides
 // that AK's model decides where it can certify them (exact/
@@ -34,12 +34,12 @@
 
 #include "check/Check_runner.h"
 #include "exact/Certified_sides.h"
+#include "exact/Earliest_replay.h"
 #include "exact/Exact_witness_signs.h"
 #include "exact/Filtered_result.h"
 #include "exact/Interval_filter.h"
 #include "exact/Rational_model.h"
 #include "exact/Sweep_tie.h"
-#include "exact/Trail_replay.h"
 #include "search/Apart_pieces.h"
 #include "search/Witness.h"
 #include <CGAL/Uncertain.h>
@@ -353,13 +353,7 @@ private:
     rational_.need_exact(a);
     rational_.need_exact(b);
     if (earliest_trail)
-      if (auto r = replayed<Earliest_replay<EFT>>(trail, stages, a, b, true, options.semantics, astats, stats,
-                                                  earliest_by_intervals_))
-        return std::move(*r);
-    if (!options.earliest && trail.complete && !trail.approximate)
-      if (auto r = replayed<Trail_replay<EFT>>(trail, stages, a, b, false, options.semantics, astats, stats,
-                                               witness_replays_))
-        return std::move(*r);
+      if (auto r = replayed(trail, stages, a, b, options.semantics, astats, stats)) return std::move(*r);
     Collision_checker<EK> checker(ek_, rational_.model(), rational_.settled(), stats, use_sbounds_);
     checker.use_convex_lp(convex_lp_);
     checker.check_points_with(&certified_);
@@ -386,9 +380,8 @@ private:
       stats = std::move(astats);
       return Result(std::move(*r));
     }
-    if (options.witness_lines)
-      if (std::optional<Pair_result<EFT>> r = witness_line(policy, a, b, options, astats, stats))
-        return Result(std::move(*r));
+    if (std::optional<Pair_result<EFT>> r = witness_line(policy, a, b, options, astats, stats))
+      return Result(std::move(*r));
     return std::nullopt;
   }
 
@@ -529,22 +522,21 @@ private:
     }
   }
 
-  // EK along the interval run's trail (Replay: the witness's or the
-  // earliest improvement's); the answer when the trail held, counted.
-  template <class Replay>
+  // EK along the earliest-mode interval run's trail, to its last
+  // improvement; the answer when the trail held, counted.
   std::optional<Pair_result<EFT>> replayed(Search_trail& trail, const Exact_stages<EFT>& stages, int a, int b,
-                                           bool earliest, Semantics semantics, const Check_stats& astats,
-                                           Check_stats& stats, std::atomic<std::size_t>& count)
+                                           Semantics semantics, const Check_stats& astats, Check_stats& stats)
   {
     Check_stats rstats = stats.fresh();
-    Replay replay(trail, &stages);
-    Collision_checker<EK, Replay> checker(ek_, rational_.model(), rational_.settled(), rstats, use_sbounds_, &replay);
+    Earliest_replay<EFT> replay(trail, stages);
+    Collision_checker<EK, Earliest_replay<EFT>> checker(ek_, rational_.model(), rational_.settled(), rstats,
+                                                        use_sbounds_, &replay);
     checker.check_points_with(&certified_);
     checker.use_guides(&guide_source_);
     checker.use_convex_lp(convex_lp_);
-    Pair_result<EFT> r = checker.check_pair(a, b, earliest, nullptr, semantics);
+    Pair_result<EFT> r = checker.check_pair(a, b, true, nullptr, semantics);
     if (!r.collide || trail.diverged) return std::nullopt;
-    ++count;
+    ++earliest_by_intervals_;
     stages_adopted_ += replay.adopted();
     stats = astats;                     // the search, as the interval run did it
     stats.seconds_witness += rstats.seconds_witness;
@@ -588,7 +580,7 @@ private:
   // Each object's convex-pair guide, made once (search/Convex_guide.h): all
   // pairs of a check, and every check of a prepared scene, share it.
   const Guide_source guide_source_{[this](int i) { return rational_.guide(i); }};
-  std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, witness_replays_{0}, exact_regions_{0}, exact_planes_{0},
+  std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
       stages_adopted_{0}, lines_rerun_{0}, witness_lines_{0}, convex_rational_{0}, closed_cells_{0},
       witnesses_by_terms_{0};
@@ -808,7 +800,7 @@ private:
   void reset_counts()
   {
     for (std::atomic<std::size_t>* c :
-         {&fallbacks_, &witness_runs_, &witness_replays_, &exact_regions_, &exact_planes_, &witnesses_by_intervals_,
+         {&fallbacks_, &witness_runs_, &exact_regions_, &exact_planes_, &witnesses_by_intervals_,
           &earliest_by_intervals_, &exact_stages_, &apart_proofs_, &apart_attempts_, &stages_adopted_, &lines_rerun_,
           &witness_lines_, &convex_rational_, &closed_cells_, &witnesses_by_terms_})
       c->store(0, std::memory_order_relaxed);   // no check is running: nothing to order against
@@ -817,7 +809,6 @@ private:
   {
     stats.exact_fallbacks = fallbacks_.load();
     stats.exact_witness_runs = witness_runs_.load();
-    stats.exact_witness_replays = witness_replays_.load();
     stats.exact_regions = exact_regions_.load();
     stats.exact_plane_tests = exact_planes_.load();
     stats.exact_region_stages = exact_stages_.load();

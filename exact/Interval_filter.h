@@ -18,9 +18,9 @@
 //    intervals are exact, so planes that are parallel after a rational
 //    rotation (and lines of dependent normals) are zeros it writes.
 // Anything else uncertain stops the run, and the runner redoes the pair in
-// rationals. For an any-witness search it records where the first point
-// inside was found (exact/Search_trail.h), so a rational run can go
-// straight there (exact/Trail_replay.h).
+// rationals. For an any-witness search it records whether its path to the
+// first point inside was certified (exact/Search_trail.h), so that only the
+// line that found it is run again in rationals (exact_goal).
 //
 // Earliest mode, in both semantics (resolve_earliest; closed: t* is the
 // first touch): t* is any rational, which
@@ -246,7 +246,6 @@ public:
     try {
       run();
       if (!st.doubtful) {
-        keep_for_replay(index, A, B, st);
         if (st.region) roots_[index] = *st.region;
         return;
       }
@@ -258,36 +257,6 @@ public:
     }
     exact().region_stage(a, b, index, A, B, st);
     if (st.region) exact_roots_[index] = exact().stages().at(index).stage.region;
-  }
-  // A stage the intervals made, kept for the trail's replay when it is the
-  // rational run's in its own numbers: its emptied nodes were certified,
-  // and its region (on the grid) and frame came out as point intervals.
-  // What the replay reads of a stage is only that (and, in earliest mode,
-  // the narrowed times, which are S-bound values: not kept then).
-  template <class M>
-  void keep_for_replay(std::size_t index, const M& A, const M& B, const Region_stage<AFT>& st)
-  {
-    if (earliest_) return;
-    Exact_stage<EFT> kept;
-    kept.stage.alive = st.alive;
-    kept.stage.frame_of_a = st.frame_of_a;
-    if (st.region) {
-      Box<EFT, 4> r;
-      for (int q = 0; q < 4; ++q) {
-        EFT lo, hi;
-        if (!runner_->to_exact(st.region->lo[q], lo) || !runner_->to_exact(st.region->hi[q], hi)) return;
-        r.set(q, lo, hi);
-      }
-      for (int q = 0; q < 3; ++q)
-        if (!runner_->to_exact(st.shear[q], kept.stage.shear[q])) return;
-      kept.stage.region = r;
-      kept.stage.fitted = r;            // statistics only, and the replay's are not kept
-      kept.stage.tl = r.lo[3];          // read only by an earliest goal
-      kept.stage.th = r.hi[3];
-    }
-    for (const auto& n : A.beta) kept.empty_a.push_back(n.empty);
-    for (const auto& n : B.beta) kept.empty_b.push_back(n.empty);
-    exact().stages().emplace(index, std::move(kept));
   }
 
   // The rational run's goal, made from the line that found it, with the
@@ -504,17 +473,12 @@ public:
       trail_->path = path;
       trail_->on_line = on_line;
       trail_->line = pending_line_;
-      trail_->line_known = true;
       trail_->complete = true;
       pending_ = false;
       if (!on_line) lag_ = Lag::fold;   // (a line's own was synced when it improved: earliest_line)
       return;
     }
-    if (earliest_ || trail_->complete) return;
-    keep_region(region, f);
-    trail_->path = path;
-    trail_->on_line = on_line;
-    trail_->complete = true;
+    trail_->complete = true;   // any witness: the found line is run again alone (exact_goal)
   }
 
   template <class FT>
@@ -543,7 +507,6 @@ public:
       decide_in_rationals(g, f, i, j, m, goal);
     }
     if (!earliest_ && !before && goal.found) {
-      trail_->line = {i, j, m};
       found_line_ = Stale{span_, frame_, g.layout(), g.region(), f, {i, j, m}};
     }
   }
@@ -853,8 +816,7 @@ private:
     // Nothing found yet (no tie with t* possible): most such lines hold no
     // point inside at all, which the verdict alone (its neighbourhoods
     // classified in intervals first) says more cheaply.
-    bool known = false;
-    if (!goal.found && !lines_->has_inside(f, i, j, m, goal.semantics, known)) return;
+    if (!goal.found && !lines_->has_inside(f, i, j, m, goal.semantics)) return;
     Search_goal<EFT> e = rational_goal(goal.found);
     lines_->test_line(f, i, j, m, e);
     if (!e.improved) return;
@@ -973,11 +935,9 @@ private:
     conquer_lines(g);
     make_keys();
     ++stats_->exact_lines;
-    bool known = false;
-    if (lines_->has_inside(f, i, j, m, goal.semantics, known)) {
+    if (lines_->has_inside(f, i, j, m, goal.semantics)) {
       goal.found = goal.improved = true;
       found_in_rationals_ = true;
-      if (!earliest_) trail_->line_known = known;
     }
   }
 };

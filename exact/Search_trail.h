@@ -1,7 +1,10 @@
-// Where an approximate run found its first point inside a pair's collision
-// region, so that the exact run can go straight there (the "recomputed
-// exactly on demand" half of the filtered kernel, exact/Filtered_runner.h),
-// when the approximate run could not make the witness itself.
+// Where an approximate run found a point inside a pair's collision region
+// (earliest mode: its last improvement), so that the exact run can go
+// straight there (the "recomputed exactly on demand" half of the filtered
+// kernel, exact/Filtered_runner.h), when the approximate run could not make
+// the witness itself. An any-witness run keeps only whether its path is
+// certified (complete, not approximate): the line that found the point is
+// then the rational run's first with a point, and is run again alone.
 //
 // Why following the trail gives the exact run's own answer: every decision
 // the approximate run made was a certified sign, the heuristic ones included
@@ -36,8 +39,6 @@ struct Search_trail {
   std::vector<int> path;                // division: child index at each depth
   bool on_line = false;                 // found on a line (else a region folded to "inside")
   std::array<std::size_t, 3> line{};    // the line's three planes, in generate-and-test's order
-  bool line_known = true;               // false: found on a line decided in rationals over a widened
-                                        // region (Filtered_runner::Exact_span::lines): replay the region
   // The region at the end of the path, when its faces are exact (point
   // intervals: the rational run's region), with the formula simplified
   // there (the rational run's: every simplification on the way was

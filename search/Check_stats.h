@@ -50,9 +50,7 @@ struct Check_stats {
   // exact_fallbacks: interval runs (object bounds, pairs) stopped by a sign
   // the intervals could not certify, each then redone in rationals;
   // exact_witness_runs: colliding pairs rerun in rationals to construct
-  // their witness, t* and contact point exactly; exact_witness_replays: those
-  // of them whose rational run went straight to the interval run's point
-  // (exact/Search_trail.h) instead of searching again; exact_regions and
+  // their witness, t* and contact point exactly; exact_regions and
   // exact_lines: lines of generate-and-test with a sign the intervals could
   // not certify, each then decided in rationals alone (the run goes on), and
   // the regions they were in;
@@ -76,7 +74,7 @@ struct Check_stats {
   // witness_lines_rerun: any-witness colliding pairs (of
   // exact_witness_runs) whose search the interval run made, with only the
   // line that found the point run again in rationals and the witness made
-  // from it, instead of a replay;
+  // from it, instead of searching again;
   // exact_ties: points of lines whose time the intervals could not tell
   // from t* (earliest mode), compared exactly by the time of the one
   // vertex there instead of the line in rationals; and sub-spans starting
@@ -95,9 +93,9 @@ struct Check_stats {
   // rationals (Filtered_runner::witness_at);
   // apart_spans: sub-spans such an attempt still proved apart (those
   // before the term with a point), whose search it stopped or skipped;
-  // replay_stages_adopted: sub-span region stages a rational replay took
-  // from the interval run (made there in rationals, or in intervals with
-  // every number exact) instead of making them again;
+  // replay_stages_adopted: sub-span region stages an earliest replay took
+  // from the interval run (made there in rationals) instead of making them
+  // again;
   // closed_cells_by_intervals: closed touches whose generic points inside
   // each object (search/Witness.h, near_in_space) the interval run made,
   // with the signs it could not tell (planes through the contact, steps
@@ -106,7 +104,7 @@ struct Check_stats {
   // convex_rational: convex pairs whose linear programs the intervals could
   // not decide or answer as points (a touch, a vertex at t*), decided by
   // them in rationals alone (search/Convex_pair.h).
-  std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_witness_replays = 0, exact_regions = 0,
+  std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_regions = 0,
               exact_lines = 0, exact_plane_tests = 0, exact_region_stages = 0, witnesses_by_intervals = 0,
               earliest_by_intervals = 0, apart_proofs = 0, apart_attempts = 0, apart_spans = 0,
               replay_stages_adopted = 0, earliest_lines_rerun = 0, witness_lines_rerun = 0, exact_ties = 0,

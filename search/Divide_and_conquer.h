@@ -94,7 +94,7 @@ public:
   }
 
   // A replay that knows the region deciding and its formula goes there
-  // directly (exact/Trail_replay.h), instead of simplifying down the path.
+  // directly (exact/Earliest_replay.h), instead of simplifying down the path.
   bool jumped(Search_goal<FT>& goal)
   {
     Box4 at;

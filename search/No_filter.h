@@ -5,8 +5,8 @@
 // exception, keep no trail and call no callback of their own. No_filter is
 // the policy of every run that decides its own signs (rational, double): it
 // does nothing, and compiles away. The filtered exact kernel's policies are
-// in exact/ (Interval_filter.h: the interval run; Trail_replay.h: a rational
-// run straight to the interval run's point; Exact_line_filter.h: rational
+// in exact/ (Interval_filter.h: the interval run; Earliest_replay.h: a
+// rational run straight to the interval run's t*; Exact_line_filter.h: rational
 // lines that try intervals first).
 //
 // A policy P provides:

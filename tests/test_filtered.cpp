@@ -399,16 +399,15 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
   std::uint64_t seed = env_number("CLASH4D_SEED", 20261122ull), cases = env_number("CLASH4D_FILTER_CASES", 1000);
   BOOST_TEST_MESSAGE("filtered vs rational, coarse-grid scenes: seed " << seed << ", " << cases << " cases");
   std::mt19937_64 rng(seed);
-  std::size_t by_intervals = 0, collide = 0, witnessed = 0, replayed = 0, searched = 0, earliest_colliding = 0,
+  std::size_t by_intervals = 0, collide = 0, witnessed = 0, searched = 0, earliest_colliding = 0,
               earliest_by_intervals = 0, earliest_made = 0, adopted = 0, rerun = 0, convex = 0, found_lines = 0,
               by_terms = 0;
   for (std::uint64_t i = 0; i < cases; ++i) {
     Random_scene rs = random_scene_with_text(rng);
     Check_options o;
     o.convex_lp = i % 2 == 0;   // odd cases: convex pairs through the paper's cascade too
-    o.witness_lines = i % 5 != 4;   // one case in five: the trail's replay instead of the found line
     std::string label = "seed " + std::to_string(seed) + " case " + std::to_string(i) +
-                        (o.convex_lp ? "" : " --no-convex-lp") + (o.witness_lines ? "" : " (replays)");
+                        (o.convex_lp ? "" : " --no-convex-lp");
     Check_answer a = same_answers(rs.scene, o, label + ": " + rs.json);
     if (a.stats.witnesses_by_terms > 0) {
       // A hand-over ended the search with a witness of its own: the
@@ -422,12 +421,11 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
     by_intervals += decided_by_intervals(a);
     collide += a.collide;
     witnessed += a.stats.witnesses_by_intervals;
-    replayed += a.stats.exact_witness_replays;
     found_lines += a.stats.witness_lines_rerun;
-    adopted += a.stats.replay_stages_adopted;
     o.earliest = true;
     Check_answer e = same_answers(rs.scene, o, label + ": " + rs.json);
-    searched += e.stats.exact_witness_runs - e.stats.exact_witness_replays - e.stats.earliest_by_intervals;
+    adopted += e.stats.replay_stages_adopted;
+    searched += e.stats.exact_witness_runs - e.stats.earliest_by_intervals;
     earliest_colliding += e.stats.exact_witness_runs + e.stats.witnesses_by_intervals;
     earliest_by_intervals += e.stats.earliest_by_intervals;
     earliest_made += e.stats.witnesses_by_intervals;
@@ -435,20 +433,19 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
   }
   BOOST_TEST_MESSAGE(by_intervals << " of " << cases << " decided by intervals alone, " << collide << " collide, "
                                   << witnessed << " witnesses made by the interval run, " << found_lines
-                                  << " made in rationals from the line that found the point, " << replayed
-                                  << " replayed from its trail in rationals (" << adopted
-                                  << " adopting the interval run's region stage), " << searched
+                                  << " made in rationals from the line that found the point, " << searched
                                   << " earliest-mode pairs searched again in rationals; of " << earliest_colliding
                                   << " colliding earliest-mode pairs, " << earliest_made
                                   << " had t*, contact and witness made by the interval run, " << earliest_by_intervals
                                   << " were searched by intervals with the rational run replaying the last "
-                                     "improvement or (" << rerun << ") only its line; " << convex
+                                     "improvement (" << adopted << " region stages adopted) or (" << rerun
+                                  << ") only its line; " << convex
                                   << " sub-spans decided by a convex pair's linear programs, " << by_terms
                                   << " witnesses made from a hand-over's point inside a term (seed " << seed << ")");
   // The comparison must exercise every path: many answers from intervals
   // alone (coarse-grid numbers are exact doubles), witnesses made by the
-  // interval run itself, and the rational reruns: of the line that found
-  // the point, or (witness_lines off) through the trail replay.
+  // interval run itself, and the rational rerun of the line that found
+  // the point.
   // (Since box simplifications are retried on the keys, no regularised
   // earliest pair of this seed is searched again in full: the closed
   // campaign below holds that path.)
@@ -456,13 +453,9 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
   BOOST_TEST(collide > cases / 10);
   BOOST_TEST(witnessed > collide / 4);
   BOOST_TEST(found_lines > 0u);
-  BOOST_TEST(replayed > 0u);
-  // A replay adopts the interval run's region stage where its numbers came
-  // out exact (Interval_filter::keep_for_replay): 1 of 1 replay at this
-  // seed's 1,000 cases and at the sanitizer run's 100, 3 of 6 at
-  // CLASH4D_SEED=17's 1,500, 0 of 1 at 18's. Counted here, not a floor
-  // (it would hold for some seeds only): a_replay_adopts_a_region_stage
-  // holds the path on this seed's case 9.
+  // An earliest replay adopts a region stage the interval run made in
+  // rationals: counted, not a floor (it holds for some seeds only);
+  // an_earliest_replay_adopts_a_region_stage holds the path.
   // Earliest mode (issue 16): most colliding pairs' t* comes from the
   // interval search, ties with t* decided in rationals line by line, not
   // from a whole rational search: either the interval run made t*, the
@@ -478,45 +471,49 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational)
   BOOST_TEST(by_terms > 0u);
 }
 
+// An earliest replay adopts a region stage the interval run made in
+// rationals (S-bounds that meet exactly: Interval_filter::region_stage)
+// instead of making it again. The scene is a fuzz family's tiny gap: a
+// pyramid's apex and a face close in y at 3/20 each from t = 15/2 to their
+// rest at 35/4, where they overlap by 1e-12. By hand: they first touch at
+// 35/4 - 1e-12 / (3/10) = 26249999999999/3000000000000, which no double is,
+// so t* and the contact point are made by the replay. The answer must be
+// the rational run's.
+BOOST_AUTO_TEST_CASE(an_earliest_replay_adopts_a_region_stage)
+{
+  const std::string json =
+      R"({"format":"clash4d-scene/1","time":[0,10],"objects":[)"
+      R"({"name":"b","shape":{"convex":[[-1,0,0,"774967/10"],[0,0,-1,"87/10"],)"
+      R"([0,"1/2",0,"-88638474999999999/20000000000000"],[-1,1,0,"686329025000000001/10000000000000"],)"
+      R"([0,"-1/2",0,"88637474999999999/20000000000000"],[2,0,0,"-774973/5"],[0,0,"1/2","-93/20"]]},)"
+      R"("motion":"rest until 15/2 vel 0 -3/20 0 until 35/4 rest"},)"
+      R"({"name":"a","shape":{"hull":[["387486/5","3545309/400","87/10"],["774971/10","3545309/400","91/10"],)"
+      R"(["387484/5","3545309/400","89/10"],[77497,"3545349/400",9]]},)"
+      R"("motion":"rest until 15/2 vel 0 3/20 0 until 35/4 rest"}]})";
+  Scene scene = read_scene(read_json_text(json));
+  for (Semantics s : {Semantics::regularised, Semantics::closed}) {
+    Check_options o;
+    o.earliest = true;
+    o.semantics = s;
+    std::string label = std::string("tiny gap, ") + (s == Semantics::closed ? "closed" : "regularised");
+    Check_answer e = same_answers(scene, o, label);
+    BOOST_REQUIRE(e.collide);
+    BOOST_TEST(e.reported()->t_star == "26249999999999/3000000000000", label);
+    BOOST_TEST(e.stats.earliest_by_intervals == 1u, label);
+    BOOST_TEST(e.stats.replay_stages_adopted > 0u, label << ": " << e.stats.replay_stages_adopted);
+  }
+}
+
 // Closed semantics on the same coarse-grid scenes: the filtered run decides
 // "apart" in intervals, makes a touching point in intervals when it is an
 // exact double (a point interval), and otherwise in rationals from the
-// line that found it, or a replay of its trail (a touching point is any
-// rational).
-// A trail's replay in rationals adopts a region stage the interval run made
-// with exact numbers (Interval_filter::keep_for_replay) instead of making it
-// again. The scene is case 9 of random_contact_scenes_match_rational at its
-// default seed, checked as that campaign checks it after a hand-over's term
-// witness: the paper's cascade (no convex programs), the trail's replay (not
-// the found line), no hand-over. A fixed scene, so the path is held
-// whatever CLASH4D_SEED the campaigns run at; the answer must be the
-// rational run's.
-BOOST_AUTO_TEST_CASE(a_replay_adopts_a_region_stage)
-{
-  const std::string json =
-      R"({"format":"clash4d-scene/1","time":[0,2],"objects":[)"
-      R"({"name":"o0","shape":{"rotate":[1,1,1,0],"solid":{"difference":[{"block":{"min":[0,0,1],"max":[2,2,3]}},)"
-      R"({"halfspace":[0,1,1,-3]}]}}},)"
-      R"({"name":"o1","shape":{"rotate":[1,1,1,0],"solid":{"translate":["1/2",0.5,"5/2"],"solid":{"translate":[0,0,2],)"
-      R"("solid":{"rotate":[1,1,0,0],"solid":{"block":{"min":[-1,-1,0],"max":[1,1,0.5]}}}}}},)"
-      R"("motion":"vel -1/6 -1/3 1/3 until 0 vel -1/6 2/3 -1/6"}]})";
-  Scene scene = read_scene(read_json_text(json));
-  Check_options o;
-  o.convex_lp = false;
-  o.witness_lines = false;
-  o.apart_proofs = false;
-  Check_answer a = same_answers(scene, o, "case 9 of seed 20261122");
-  BOOST_TEST(a.collide);
-  BOOST_TEST(a.stats.exact_witness_replays == 1u);
-  BOOST_TEST(a.stats.replay_stages_adopted > 0u, a.stats.replay_stages_adopted << " stages adopted");
-}
-
+// line that found it (a touching point is any rational).
 BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational_closed)
 {
   std::uint64_t seed = env_number("CLASH4D_SEED", 20261122ull) + 1, cases = env_number("CLASH4D_FILTER_CASES", 1000) / 2;
   BOOST_TEST_MESSAGE("filtered vs rational, closed semantics: seed " << seed << ", " << cases << " cases");
   std::mt19937_64 rng(seed);
-  std::size_t by_intervals = 0, collide = 0, replayed = 0, witnessed = 0, searched = 0, earliest_made = 0,
+  std::size_t by_intervals = 0, collide = 0, witnessed = 0, searched = 0, earliest_made = 0,
               earliest_replayed = 0, found_lines = 0;
   for (std::uint64_t i = 0; i < cases; ++i) {
     Random_scene rs = random_scene_with_text(rng);
@@ -525,25 +522,22 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational_closed)
     o.all_pairs = i % 3 == 1;
     o.earliest = i % 3 == 2;
     o.convex_lp = i % 2 == 0;   // odd cases: the paper's cascade for convex pairs too
-    o.witness_lines = i % 5 != 4;   // one case in five: the trail's replay instead of the found line
     Check_answer a = same_answers(rs.scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) +
-                                                   (o.convex_lp ? "" : " --no-convex-lp") +
-                                                   (o.witness_lines ? "" : " (replays)") + ": " + rs.json);
+                                                   (o.convex_lp ? "" : " --no-convex-lp") + ": " + rs.json);
     by_intervals += decided_by_intervals(a);
     collide += a.collide;
-    replayed += a.stats.exact_witness_replays;
     found_lines += a.stats.witness_lines_rerun + a.stats.earliest_lines_rerun;
     witnessed += a.stats.witnesses_by_intervals;
     if (o.earliest) {
-      searched += a.stats.exact_witness_runs - a.stats.exact_witness_replays - a.stats.earliest_by_intervals;
+      searched += a.stats.exact_witness_runs - a.stats.earliest_by_intervals;
       earliest_made += a.stats.witnesses_by_intervals;
       earliest_replayed += a.stats.earliest_by_intervals;
     }
   }
   BOOST_TEST_MESSAGE(by_intervals << " of " << cases << " decided by intervals alone, " << collide << " touch or collide, "
                                   << witnessed << " touching points made by the interval run, " << found_lines
-                                  << " made in rationals from the line that found them (earliest mode too), "
-                                  << replayed << " replayed from its trail; earliest mode: " << earliest_made
+                                  << " made in rationals from the line that found them (earliest mode too); "
+                                     "earliest mode: " << earliest_made
                                   << " first touches made by the interval run, " << earliest_replayed
                                   << " replayed from its last improvement, " << searched
                                   << " searched again in full");
@@ -551,9 +545,6 @@ BOOST_AUTO_TEST_CASE(random_contact_scenes_match_rational_closed)
   BOOST_TEST(collide > cases / 5);
   BOOST_TEST(witnessed > collide / 4);
   BOOST_TEST(found_lines > 0u);
-  // Replays (witness_lines off) are rare here: 4 at this seed's 500 cases,
-  // none at the sanitizer run's 50. closed_touch_off_the_grid_is_made_
-  // from_its_line holds that path.
   // Closed earliest mode (issue 16) takes the regularised one's path: the
   // interval search with ties decided in rationals, then the first touch
   // made by the interval run or a replay of its last improvement.
@@ -888,7 +879,6 @@ BOOST_AUTO_TEST_CASE(earliest_contact_off_the_grid_is_made_from_its_line)
   const std::string& x = e.reported()->contact[0];
   BOOST_TEST((x == "999999999/1000000000" || x == "1"), x);
   BOOST_TEST(e.stats.earliest_lines_rerun == 1u);
-  BOOST_TEST(e.stats.exact_witness_replays == 0u);
   BOOST_TEST(e.stats.exact_fallbacks == 0u);
 }
 
@@ -932,9 +922,8 @@ BOOST_AUTO_TEST_CASE(earliest_answers_in_points_are_the_rationals)
 // scene's decimals (y = -0.1), so the touching point is no double and the
 // generic points beside it need the planes through it, which intervals
 // cannot say. The line that found it is run again in rationals and the
-// witness made from it, without a replay of the search; with
-// witness_lines off, the replay makes the same answer. Both are the
-// rational run's, touching point and generic points included.
+// witness made from it, without searching the pair again; the answer is
+// the rational run's, touching point and generic points included.
 BOOST_AUTO_TEST_CASE(closed_touch_off_the_grid_is_made_from_its_line)
 {
   Scene scene = read_scene_file(std::string(CLASH4D_FIXTURES) + "/paper/section6_weaving_vehicle.json");
@@ -944,13 +933,7 @@ BOOST_AUTO_TEST_CASE(closed_touch_off_the_grid_is_made_from_its_line)
   BOOST_REQUIRE(a.collide);
   BOOST_TEST(a.reported()->witness_verified);
   BOOST_TEST(a.stats.witness_lines_rerun == 1u);
-  BOOST_TEST(a.stats.exact_witness_replays == 0u);
   BOOST_TEST(a.stats.exact_fallbacks == 0u);
-  o.witness_lines = false;
-  Check_answer r = same_answers(scene, o, "section6_weaving_vehicle (replays)");
-  BOOST_TEST(describe(r) == describe(a));
-  BOOST_TEST(r.stats.witness_lines_rerun == 0u);
-  BOOST_TEST(r.stats.exact_witness_replays == 1u);
 }
 
 // Corners (model/Motion_groups.h): a square pyramid's apex lies on four
