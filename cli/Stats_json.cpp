@@ -94,7 +94,6 @@ json stats_json(const Check_stats& s)
           {"witness_lines_rerun", s.witness_lines_rerun},
           {"closed_cells_by_intervals", s.closed_cells_by_intervals},
           {"witnesses_by_terms", s.witnesses_by_terms},
-          {"convex_rational", s.convex_rational},
           {"convex_exact_signs", s.convex_exact_signs},
           {"seconds", {{"model", s.seconds_model}, {"sweep", s.seconds_sweep}, {"sbounds", s.seconds_sbounds},
                        {"divide_and_conquer", s.seconds_divide}, {"witness", s.seconds_witness}}}};

@@ -335,7 +335,8 @@ private:
           stopped_in_search(astats, clock, stats);
           return Pair_result<EFT>(std::move(policy.found_inside()));
         case Stop::convex_uncertain:
-          trail.complete = false;   // decided below, in rationals
+          ++fallbacks_;   // a sign outside the programs' own: the pair in rationals
+          trail.complete = false;
           break;
         case Stop::none:
           if (std::optional<Result> r = interval_answer(policy, std::move(found), a, b, options, astats, stats))
@@ -349,7 +350,6 @@ private:
         trail.complete = false;
       }
     }
-    if (std::optional<Pair_result<EFT>> r = convex_in_rationals(a, b, options, ceiling, stats)) return std::move(*r);
     rational_.need_exact(a);
     rational_.need_exact(b);
     if (earliest_trail)
@@ -395,28 +395,6 @@ private:
     stats.seconds_divide += std::max(0.0, clock.seconds() - counted);
   }
 
-  // A convex pair the interval run could not decide or answer as points
-  // (a touch: a multiplier sum that is exactly zero; a vertex at t*): its
-  // linear programs in rationals alone, on EK's model without S-bounds
-  // (search/Convex_pair.h), when they decide every sub-span; the rational
-  // run decides the pair by them first, so this is its answer.
-  std::optional<Pair_result<EFT>> convex_in_rationals(int a, int b, const Check_options& options, const EFT* ceiling,
-                                                      Check_stats& stats)
-  {
-    if (!convex_lp_ || !Convex_pair<AK>::applies(amodel_, a, b)) return std::nullopt;
-    rational_.need_model(a);
-    rational_.need_model(b);
-    Check_stats estats = stats.fresh();
-    Collision_checker<EK> checker(ek_, rational_.model(), rational_.settled(), estats, use_sbounds_);
-    checker.check_points_with(&certified_);
-    checker.use_guides(&guide_source_);
-    std::optional<Pair_result<EFT>> r = checker.check_convex_pair(a, b, options.earliest, ceiling, options.semantics);
-    if (r) {
-      stats = estats;
-      ++convex_rational_;
-    }
-    return r;
-  }
   // witness_from, timed and counted; stats: the interval run's, on success.
   std::optional<Pair_result<EFT>> witness_line(Interval_filter<Filtered_runner>& policy, int a, int b,
                                                const Check_options& options, const Check_stats& astats,
@@ -582,7 +560,7 @@ private:
   const Guide_source guide_source_{[this](int i) { return rational_.guide(i); }};
   std::atomic<std::size_t> fallbacks_{0}, witness_runs_{0}, exact_regions_{0}, exact_planes_{0},
       witnesses_by_intervals_{0}, earliest_by_intervals_{0}, exact_stages_{0}, apart_proofs_{0}, apart_attempts_{0},
-      stages_adopted_{0}, lines_rerun_{0}, witness_lines_{0}, convex_rational_{0}, closed_cells_{0},
+      stages_adopted_{0}, lines_rerun_{0}, witness_lines_{0}, closed_cells_{0},
       witnesses_by_terms_{0};
 
   // Whether to_exact(x) takes, without making the number.
@@ -802,7 +780,7 @@ private:
     for (std::atomic<std::size_t>* c :
          {&fallbacks_, &witness_runs_, &exact_regions_, &exact_planes_, &witnesses_by_intervals_,
           &earliest_by_intervals_, &exact_stages_, &apart_proofs_, &apart_attempts_, &stages_adopted_, &lines_rerun_,
-          &witness_lines_, &convex_rational_, &closed_cells_, &witnesses_by_terms_})
+          &witness_lines_, &closed_cells_, &witnesses_by_terms_})
       c->store(0, std::memory_order_relaxed);   // no check is running: nothing to order against
   }
   void finish(Check_stats& stats) const
@@ -821,7 +799,6 @@ private:
     stats.witness_lines_rerun = witness_lines_.load();
     stats.closed_cells_by_intervals = closed_cells_.load();
     stats.witnesses_by_terms = witnesses_by_terms_.load();
-    stats.convex_rational = convex_rational_.load();
   }
 };
 

@@ -68,9 +68,10 @@ public:
     apart,             // the runner proved the pair apart (decides_here)
     inside,            // the runner made the pair's witness, checked, from a point the
                        // hand-over's LP found inside a term of its formula (found_inside)
-    convex_uncertain   // a sign of a convex pair's linear programs the intervals could not
-                       // certify (a touch's multiplier sum, a vertex on a fifth row): the
-                       // runner decides them in rationals (Filtered_runner::convex_in_rationals)
+    convex_uncertain   // a sign in a convex pair's linear programs the intervals could not
+                       // certify outside the programs' own predicates (convex_certain asks
+                       // those of the rational stage): the runner runs the pair in
+                       // rationals (exact_fallbacks)
   };
 
   Interval_filter() = default;   // only as a stage's unused default

@@ -100,15 +100,12 @@ struct Check_stats {
   // each object (search/Witness.h, near_in_space) the interval run made,
   // with the signs it could not tell (planes through the contact, steps
   // parallel to a plane) asked of the rational planes one by one, instead
-  // of making them in rationals over every plane;
-  // convex_rational: convex pairs whose linear programs the intervals could
-  // not decide or answer as points (a touch, a vertex at t*), decided by
-  // them in rationals alone (search/Convex_pair.h).
+  // of making them in rationals over every plane.
   std::size_t exact_fallbacks = 0, exact_witness_runs = 0, exact_regions = 0,
               exact_lines = 0, exact_plane_tests = 0, exact_region_stages = 0, witnesses_by_intervals = 0,
               earliest_by_intervals = 0, apart_proofs = 0, apart_attempts = 0, apart_spans = 0,
               replay_stages_adopted = 0, earliest_lines_rerun = 0, witness_lines_rerun = 0, exact_ties = 0,
-              exact_cut_orders = 0, exact_zeros = 0, convex_rational = 0, doubtful_stages_pruned = 0,
+              exact_cut_orders = 0, exact_zeros = 0, doubtful_stages_pruned = 0,
               closed_cells_by_intervals = 0, witnesses_by_terms = 0;
   // Time per stage, seconds; measured only when timed (search/Stage_clock.h:
   // Check_options::stage_seconds, which --stats sets), otherwise 0.

@@ -581,7 +581,7 @@ BOOST_AUTO_TEST_CASE(coinciding_decimal_velocity_changes_stay_in_intervals)
       BOOST_TEST(a.stats.exact_sweep_ties == (s == Semantics::regularised ? 1u : 0u));
       BOOST_TEST(a.stats.candidate_pairs == (s == Semantics::regularised ? 0u : 1u));
       if (s == Semantics::closed && convex_lp)
-        BOOST_TEST((a.stats.convex_exact_signs > 0u && a.stats.convex_rational == 0u));
+        BOOST_TEST(a.stats.convex_exact_signs > 0u);
       if (s == Semantics::closed && !convex_lp) BOOST_TEST(a.stats.exact_region_stages > 0u);
     }
 }
@@ -638,7 +638,7 @@ BOOST_AUTO_TEST_CASE(convex_vertex_ties_with_t_star_stay_in_intervals)
     BOOST_TEST_REQUIRE(a.reported() != nullptr);
     BOOST_TEST(a.reported()->t_star == "2");
     BOOST_TEST(a.reported()->b == "b");   // the first pair in order wins the tie
-    BOOST_TEST((a.stats.exact_fallbacks == 0u && a.stats.convex_rational == 0u));
+    BOOST_TEST(a.stats.exact_fallbacks == 0u);
   }
   Check_answer a = check_exact(stop, o);
   BOOST_TEST(a.stats.exact_ties == 1u);   // the sub-span [2, 10] against t* = 2
@@ -665,7 +665,7 @@ BOOST_AUTO_TEST_CASE(contact_families_match_rational)
 {
   std::uint64_t seed = env_number("CLASH4D_SEED", 20261122ull), cases = env_number("CLASH4D_FILTER_CASES", 1000);
   BOOST_TEST_MESSAGE("filtered vs rational, fuzz contact families: seed " << seed << ", " << cases << " cases");
-  std::size_t fell_back = 0, whole = 0, stages = 0, convex_rational = 0, convex_ties = 0, ties_dropped = 0,
+  std::size_t fell_back = 0, whole = 0, stages = 0, convex_ties = 0, ties_dropped = 0,
               ties_kept = 0, doubted = 0;
   for (std::uint64_t i = 0; i < cases; ++i) {
     Fuzz_case c = make_fuzz_case(seed, i);
@@ -676,7 +676,6 @@ BOOST_AUTO_TEST_CASE(contact_families_match_rational)
     o.convex_lp = i % 8 < 4;   // half the cases: the paper's cascade for convex pairs too
     Check_answer a = same_answers(scene, o, "seed " + std::to_string(seed) + " case " + std::to_string(i) +
                                                 (o.convex_lp ? "" : " --no-convex-lp") + " (" + c.family + "): " + c.json);
-    convex_rational += a.stats.convex_rational;
     // A convex pair's vertex tying with t* or a ceiling (a motion changing
     // at the contact, two pairs touching at one instant), decided in
     // rationals inside the interval run (Interval_filter::enters_span,
@@ -694,8 +693,7 @@ BOOST_AUTO_TEST_CASE(contact_families_match_rational)
                                << " adopted a region stage made in rationals (S-bounds meeting exactly), " << doubted
                                << " pruned a sub-span with S-bounds keeping boxes the intervals could not decide, "
                                << whole
-                               << " were run again in rationals whole; " << convex_rational
-                               << " convex pairs' linear programs were decided in rationals whole, "
+                               << " were run again in rationals whole; "
                                << convex_ties << " had a vertex tying with t* decided in rationals; "
                                << ties_dropped << " were decided at the sweep on rational boxes, " << ties_kept
                                << " had a sweep tie kept");
@@ -711,9 +709,7 @@ BOOST_AUTO_TEST_CASE(contact_families_match_rational)
   // cases now reach it, so only the full campaign asks for one here (the
   // sanitizer run's 100 do not); whole_rational_rerun_matches pins one.
   if (cases >= 1000) BOOST_TEST(whole > 0u);
-  // A convex pair's ties with t* are decided exactly where they arise; its
-  // programs in rationals whole (convex_rational) remain only as the
-  // fallback for a sign outside them, which these families no longer reach.
+  // A convex pair's ties with t* are decided exactly where they arise.
   BOOST_TEST(convex_ties > cases / 200);
   // Both ways out of a regularised sweep tie (Filtered_runner::
   // drop_apart_ties) are held to rationals: touching boxes (a contact under
@@ -776,7 +772,7 @@ BOOST_AUTO_TEST_CASE(convex_pairs_ask_rationals_only_the_signs_intervals_leave)
   Check_answer touch = same_answers(fixture("rotated_skew_face_touch"), Check_options(), "rotated_skew_face_touch");
   BOOST_TEST(!touch.collide);
   BOOST_TEST(touch.stats.convex_exact_signs > 0u);
-  BOOST_TEST((touch.stats.convex_rational == 0u && touch.stats.exact_fallbacks == 0u));
+  BOOST_TEST(touch.stats.exact_fallbacks == 0u);
 
   Check_options earliest;
   earliest.earliest = true;
@@ -786,7 +782,7 @@ BOOST_AUTO_TEST_CASE(convex_pairs_ask_rationals_only_the_signs_intervals_leave)
     BOOST_REQUIRE(apex.collide);
     BOOST_TEST(apex.reported()->t_star == "999999999/1000000000");
     BOOST_TEST(apex.stats.lines == 0u);
-    BOOST_TEST((apex.stats.convex_rational == 0u && apex.stats.exact_fallbacks == 0u));
+    BOOST_TEST(apex.stats.exact_fallbacks == 0u);
   }
 }
 
