@@ -48,6 +48,7 @@
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <variant>
 
 namespace clash4d {
 
@@ -278,10 +279,11 @@ public:
   std::optional<Exact_goal> exact_goal()
   {
     if (earliest_) {
-      if (!last_ || !witness_certified()) return std::nullopt;
+      const Stale* last = last_line();
+      if (!last || !witness_certified()) return std::nullopt;
       std::optional<Search_goal<EFT>> e = exact_last(true);
       if (!e) return std::nullopt;
-      return Exact_goal{std::move(*e), last_->span, last_->frame};
+      return Exact_goal{std::move(*e), last->span, last->frame};
     }
     if (!found_line_ || !trail_->complete || trail_->approximate) return std::nullopt;
     Search_goal<EFT> start;
@@ -302,9 +304,7 @@ public:
     a_ = a, b_ = b, span_ = index, frame_ = frame_of_a;
     span_apart_ = false;
     lines_.reset();   // a new search: its conquers count from zero again
-    keyed_ = false;
-    keys_.clear();
-    plane_keys_.clear();
+    keys_.reset();
   }
   void found_in_span(std::size_t index)
   {
@@ -324,7 +324,7 @@ public:
   // points (the runner keeps them only then).
   bool witness_certified() const
   {
-    bool earliest_here = earliest_ && !pending_ && !improved_on_keys_;
+    bool earliest_here = earliest_ && !pending_ && !std::holds_alternative<On_keys>(last_);
     return (!earliest_ || earliest_here) && !trail_->approximate && !found_in_rationals_;
   }
   // Closed, the witness is the contact point itself, kept only as point
@@ -467,8 +467,7 @@ public:
       // passed the same comparison on entry); a conquer may not have.
       if (on_line && !pending_) return;
       if (!on_line) {
-        improved_on_keys_ = false;   // a fold: its region's centre and lower face
-        last_.reset();
+        last_ = std::monostate();   // a fold: its region's centre and lower face
       }
       keep_region(region, f);
       trail_->path = path;
@@ -527,13 +526,13 @@ public:
   const std::vector<Vector4<FT>>* normal_keys() const
   {
     static_assert(std::is_same_v<FT, AFT>, "normal keys are the interval run's");
-    return keyed_ ? &keys_ : nullptr;
+    return keys_ ? &keys_->normals : nullptr;
   }
   template <class FT>
   const std::vector<Hyperplane4<FT>>* plane_keys() const
   {
     static_assert(std::is_same_v<FT, AFT>, "plane keys are the interval run's");
-    return keyed_ ? &plane_keys_ : nullptr;
+    return keys_ ? &keys_->planes : nullptr;
   }
   // A box simplification the intervals leave open: the keys now (a plane
   // through a corner of a grid region is a zero on them).
@@ -542,7 +541,7 @@ public:
   {
     static_assert(std::is_same_v<FT, AFT>, "plane keys are the interval run's");
     make_keys();
-    return &plane_keys_;
+    return &keys_->planes;
   }
 
   // A keyed line's neighbourhoods on the keys (Null_object_test::classify
@@ -656,7 +655,6 @@ private:
   const EFT* ceiling_ = nullptr;
   std::optional<EFT> t_star_;                                   // the goal's t*, exact, once found
   bool pending_ = false;                                        // a line improved; its conquer's path follows
-  bool improved_on_keys_ = false;                               // the last improvement: a line in rationals
   std::array<std::size_t, 3> pending_line_{};
   // The line that last improved the goal in intervals.
   struct Stale {
@@ -667,7 +665,13 @@ private:
     Pair_formula formula;
     std::array<std::size_t, 3> line;
   };
-  std::optional<Stale> last_;
+  // Earliest mode, the line that last improved the goal: none (nothing
+  // found yet, or a fold since), one the intervals examined, or one
+  // examined in rationals on keys (planes in lowest terms give other
+  // generic points than the rational run's: witness_certified).
+  struct On_keys {};
+  std::variant<std::monostate, Stale, On_keys> last_;
+  const Stale* last_line() const { return std::get_if<Stale>(&last_); }
   std::optional<Stale> found_line_;   // any witness: the line that found the point
   // How t_star_ stands to the interval goal's t*: the same number; behind
   // the line last_, which improved it in intervals (made when a comparison
@@ -677,8 +681,12 @@ private:
   Lag lag_ = Lag::none;
   // Whether t* is at the conquer's lower time (no line of it improves),
   // for which conquer and which t* (set_t_star counts them).
-  bool floor_reached_ = false;
-  std::size_t floor_conquer_ = 0, floor_t_star_ = 0, t_stars_ = 0;
+  struct Floor {
+    std::size_t conquer, t_star;
+    bool reached;
+  };
+  std::optional<Floor> floor_;
+  std::size_t t_stars_ = 0;
 
   void set_t_star(EFT t)
   {
@@ -744,7 +752,7 @@ private:
   // must be exact; nothing otherwise.
   std::optional<Search_goal<EFT>> exact_last(bool as_is)
   {
-    std::optional<Search_goal<EFT>> e = goal_on_line(*last_, rational_goal(false), as_is);
+    std::optional<Search_goal<EFT>> e = goal_on_line(*last_line(), rational_goal(false), as_is);
     if (!e) return e;
     if (!e->found) throw std::logic_error("internal error: a line the intervals certified found nothing in rationals");
     set_t_star(e->t_star);
@@ -779,13 +787,11 @@ private:
     // t* is there, no line of the conquer improves it (decided exactly,
     // once per conquer and t*).
     if (t_star_ && goal.found && lag_ == Lag::none) {
-      if (floor_conquer_ != g.conquers() || floor_t_star_ != t_stars_) {
-        floor_conquer_ = g.conquers();
-        floor_t_star_ = t_stars_;
+      if (!floor_ || floor_->conquer != g.conquers() || floor_->t_star != t_stars_) {
         std::optional<Rational> lo = runner_->ak().exact_value(g.region().lo[3]);
-        floor_reached_ = lo && !runner_->ek().less(runner_->ek().from_rational(*lo), *t_star_);
+        floor_ = Floor{g.conquers(), t_stars_, lo && !runner_->ek().less(runner_->ek().from_rational(*lo), *t_star_)};
       }
-      if (floor_reached_) return;
+      if (floor_->reached) return;
     }
     Search_goal<AFT> saved = goal;
     try {
@@ -794,7 +800,6 @@ private:
       // Improved, every decision certified: the exact t* is made when needed.
       last_ = Stale{span_, frame_, g.layout(), g.region(), f, {i, j, m}};
       lag_ = Lag::line;
-      improved_on_keys_ = false;
       pending_ = true;
       pending_line_ = {i, j, m};
       if (std::optional<Rational> t = runner_->ak().exact_value(goal.t_star)) {
@@ -822,8 +827,7 @@ private:
     lines_->test_line(f, i, j, m, e);
     if (!e.improved) return;
     set_t_star(e.t_star);
-    improved_on_keys_ = true;
-    last_.reset();
+    last_ = On_keys();
     auto enclose = [&](const EFT& x) { return runner_->ak().from_rational(runner_->ek().to_rational(x)); };
     goal.found = goal.improved = true;
     goal.vertex_known = false;   // the rational conquer's record, not this one's
@@ -919,14 +923,19 @@ private:
 
   void make_keys()
   {
-    if (keyed_) return;
-    exact().keys(a_, b_, span_, frame_, keys_, plane_keys_);
-    keyed_ = true;
+    if (keys_) return;
+    Keys k;
+    exact().keys(a_, b_, span_, frame_, k.normals, k.planes);
+    keys_ = std::move(k);
   }
 
-  bool keyed_ = false;                                          // keys_ made for this sub-span
-  std::vector<Vector4<AFT>> keys_;
-  std::vector<Hyperplane4<AFT>> plane_keys_;
+  // The sub-span's normal and plane keys (Exact_span::keys), made at its
+  // first line the intervals could not decide.
+  struct Keys {
+    std::vector<Vector4<AFT>> normals;
+    std::vector<Hyperplane4<AFT>> planes;
+  };
+  std::optional<Keys> keys_;
 
   // One line the intervals could not decide; the same rational conquer
   // serves the rest of this conquer's lines.
