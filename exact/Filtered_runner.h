@@ -15,15 +15,15 @@
 // from its enclosures. Otherwise the line that found the point is run
 // again in EK, on the rational run's region, and the witness made from it
 // (witness_from); where that is not the rational run's line (AK's path
-// was not certified, or the point lay in the sliver between AK's region and
-// EK's), the whole search runs again on EK. Earliest mode, in both semantics: the interval
-// run decides in rationals the lines that improve the goal or tie with its
-// t* (exact/Interval_filter.h), so its path is the rational run's; t*, the
-// contact point and the witness are its own where they come out as points,
-// and otherwise they are made from its last improvement's line in EK as
-// above, or a rational run replays that improvement (exact/
-// Earliest_replay.h);
-// where that fails, earliest mode runs the whole search in rationals.
+// was not certified, or the point lay in the sliver between AK's region
+// and EK's), the whole search runs again on EK. Earliest mode, in both
+// semantics: the interval run decides in rationals the lines that improve
+// the goal or tie with its t* (exact/Interval_filter.h), so its path is the
+// rational run's; t*, the contact point and the witness are its own where
+// they come out as points, and otherwise they are made from its last
+// improvement's line in EK as above, or a rational run replays that
+// improvement (exact/Earliest_replay.h); where that fails, earliest mode
+// runs the whole search in rationals.
 // Every witness EK makes is checked against the scene with plane sides
 // that AK's model decides where it can certify them (exact/
 // Certified_sides.h): the same check, most planes in intervals.

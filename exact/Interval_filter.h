@@ -308,7 +308,7 @@ public:
   }
   void found_in_span(std::size_t index)
   {
-    trail_->span = index;   // either search records its trail
+    trail_->span = index;   // the earliest replay skips the sub-spans before it
   }
   bool stops_after(std::size_t) const { return stop_ != Stop::none; }
   // The point is the rational run's own when the path was certified (the
