@@ -195,14 +195,13 @@ public:
   // a point inside it, the witness made from it and checked (witness_at),
   // the pair's collision (Apart::inside).
   enum class Apart { proven, not_proven, out_of_steps, inside };
-  Apart proves_apart(int a, int b, bool closed, std::uint64_t step_limit, Rational& apart_until,
+  Apart proves_apart(int a, int b, Semantics semantics, std::uint64_t step_limit, Rational& apart_until,
                      Pair_result<EFT>* inside = nullptr)
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     rational_.need_model(a);
     rational_.need_model(b);
-    Apart_pieces<EK> pieces(rational_.model(), closed ? Semantics::closed : Semantics::regularised, step_limit,
-                            Lp_effort::quick);
+    Apart_pieces<EK> pieces(rational_.model(), semantics, step_limit, Lp_effort::quick);
     pieces.prove(a, b, ek_.to_rational(rational_.model().t_hi), false);
     Apart verdict = Apart::proven;
     if (const std::optional<Term_stop>& stop = pieces.stopped()) {
@@ -307,7 +306,6 @@ private:
   // interval run made of points stays in them (exact/Filtered_result.h).
   Result check_pair(int a, int b, const Check_options& options, const EFT* ceiling, Check_stats& stats)
   {
-    bool closed = options.semantics == Semantics::closed;
     Search_trail trail;
     Check_stats astats = stats.fresh();
     bool earliest_trail = false;
@@ -317,7 +315,7 @@ private:
       try {
         Protector protect;
         AFT aceiling = ceiling ? ak_.from_rational(ek_.to_rational(*ceiling)) : AFT(0);
-        Interval_filter<Filtered_runner> policy(*this, trail, astats, closed);
+        Interval_filter<Filtered_runner> policy(*this, trail, astats, options.semantics);
         if (options.earliest) policy.resolve_earliest(ceiling);
         if (!options.apart_proofs) policy.never_hand_over();
         Collision_checker<AK, Interval_filter<Filtered_runner>> checker(ak_, amodel_, asettled_, astats, use_sbounds_,

@@ -77,10 +77,9 @@ public:
 
   Interval_filter() = default;   // only as a stage's unused default
   // An any-witness search, whose trail and witness are wanted, unless
-  // resolve_earliest makes it an earliest one. closed: the pair is searched
-  // in closed semantics.
-  Interval_filter(Runner& runner, Search_trail& trail, Check_stats& stats, bool closed = false)
-    : runner_(&runner), trail_(&trail), stats_(&stats), closed_(closed) {}
+  // resolve_earliest makes it an earliest one, in the given semantics.
+  Interval_filter(Runner& runner, Search_trail& trail, Check_stats& stats, Semantics semantics)
+    : runner_(&runner), trail_(&trail), stats_(&stats), semantics_(semantics) {}
 
   // Earliest mode: lines decided against the exact t* (see above);
   // ceiling: the runner's, in rationals.
@@ -287,7 +286,7 @@ public:
     }
     if (!found_line_ || !trail_->complete || trail_->approximate) return std::nullopt;
     Search_goal<EFT> start;
-    start.semantics = closed_ ? Semantics::closed : Semantics::regularised;
+    start.semantics = semantics_;
     std::optional<Search_goal<EFT>> e = goal_on_line(*found_line_, std::move(start), true);
     // Nothing there: the point lay in the sliver between the interval
     // region (widened to doubles) and the rational run's, which then
@@ -448,7 +447,7 @@ public:
     if (!conquers || search_work() < apart_after_) return true;
     Rational until;
     Pair_result<EFT> inside;
-    switch (runner_->proves_apart(a_, b_, closed_, apart_steps_, until, earliest_ || closed_ ? nullptr : &inside)) {
+    switch (runner_->proves_apart(a_, b_, semantics_, apart_steps_, until, earliest_ || closed() ? nullptr : &inside)) {
     case Runner::Apart::proven: stop_ = Stop::apart; return false;
     case Runner::Apart::inside: stop_ = Stop::inside, inside_ = std::move(inside); return false;
     case Runner::Apart::out_of_steps: apart_after_ *= 16, apart_steps_ *= 16; break;
@@ -610,12 +609,13 @@ private:
   std::unique_ptr<Exact_span<Runner>> exact_;
   Exact_span<Runner>& exact()
   {
-    if (!exact_) exact_ = std::make_unique<Exact_span<Runner>>(*runner_, closed_);
+    if (!exact_) exact_ = std::make_unique<Exact_span<Runner>>(*runner_, closed());
     return *exact_;
   }
   Search_trail* trail_ = nullptr;
   Check_stats* stats_ = nullptr;
-  bool closed_ = false;
+  Semantics semantics_ = Semantics::regularised;
+  bool closed() const { return semantics_ == Semantics::closed; }
   int a_ = -1, b_ = -1;
   std::size_t span_ = 0;
   // When to ask for an apart proof (decides_here): the search's work so
@@ -634,7 +634,7 @@ private:
   // quarter to a third less on filled cavities and union seams (32 no
   // better); 128 in closed searches too cost the weaving late stop's
   // closed earliest run a third more (a wasted attempt at a touch).
-  std::size_t first_hand_over() const { return closed_ ? 512 : 128; }
+  std::size_t first_hand_over() const { return closed() ? 512 : 128; }
   // The search's work in lines: each line examined, and each cell tested
   // around a point whose neighbourhood was classified (Appendix A: its
   // rays and sectors at a vertex where many planes meet, as at touches of
@@ -726,7 +726,7 @@ private:
   {
     Search_goal<EFT> e;
     e.earliest = true;
-    e.semantics = closed_ ? Semantics::closed : Semantics::regularised;
+    e.semantics = semantics_;
     e.found = found;
     if (found) e.t_star = *t_star_;
     if (ceiling_) {
@@ -910,7 +910,7 @@ private:
     if (known != exact_roots_.end()) return known->second;
     std::optional<Box<EFT, 4>>& root = exact_roots_[s];
     auto it = roots_.find(s);
-    if (it == roots_.end() || closed_ || !runner_->use_sbounds()) return root;
+    if (it == roots_.end() || closed() || !runner_->use_sbounds()) return root;
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     runner_->rational().need_motion(a_);   // the sub-spans' times; the faces read no model
     runner_->rational().need_motion(b_);
