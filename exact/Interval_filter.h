@@ -42,6 +42,7 @@
 #ifndef CLASH4D_EXACT_INTERVAL_FILTER_H
 #define CLASH4D_EXACT_INTERVAL_FILTER_H
 
+#include "exact/Apart_hand_over.h"
 #include "exact/Exact_span.h"
 #include "exact/Region_faces.h"
 #include "exact/Search_trail.h"
@@ -79,7 +80,7 @@ public:
   // An any-witness search, whose trail and witness are wanted, unless
   // resolve_earliest makes it an earliest one, in the given semantics.
   Interval_filter(Runner& runner, Search_trail& trail, Check_stats& stats, Semantics semantics)
-    : runner_(&runner), trail_(&trail), stats_(&stats), semantics_(semantics) {}
+    : runner_(&runner), trail_(&trail), stats_(&stats), semantics_(semantics), hand_over_(semantics) {}
 
   // Earliest mode: lines decided against the exact t* (see above);
   // ceiling: the runner's, in rationals.
@@ -148,7 +149,8 @@ public:
   }
   bool skips_span(std::size_t index)
   {
-    bool apart = apart_until_ && runner_->span_ends_by(a_, b_, index, *apart_until_);
+    const std::optional<Rational>& until = hand_over_.until();
+    bool apart = until && runner_->span_ends_by(a_, b_, index, *until);
     stats_->apart_spans += apart;
     return apart;
   }
@@ -301,7 +303,7 @@ public:
   void search_span(int a, int b, std::size_t index, const std::array<bool, 3>& frame_of_a)
   {
     a_ = a, b_ = b, span_ = index, frame_ = frame_of_a;
-    span_apart_ = false;
+    hand_over_.new_span();
     lines_.reset();   // a new search: its conquers count from zero again
     keys_.reset();
   }
@@ -347,7 +349,7 @@ public:
 
   // The leaf was kept: the path may now differ from the rational run's.
   void uncertain_simplification() { trail_->approximate = true; }
-  bool takes_child(std::size_t, int) const { return !span_apart_ && stop_ == Stop::none; }
+  bool takes_child(std::size_t, int) const { return !hand_over_.span_apart() && stop_ == Stop::none; }
   // Earliest mode: a region whose lower time ties with t* (a sub-span end
   // off the grid, where the objects are already in contact) is compared
   // exactly, on the rational run's region (exact/Region_faces.h) and t*.
@@ -421,7 +423,7 @@ public:
     ++stats_->exact_zeros;
     return e->zero_on_line(line, p, along);
   }
-  // A long search is handed over: past apart_after_ lines' work
+  // A long search is handed over: when exact/Apart_hand_over.h says so
   // (search_work), the runner asks whether conflicts close off every term
   // of the pair's formula (Filtered_runner::proves_apart; one exact LP per
   // conflict, where generate-and-test examines many lines per conflict).
@@ -429,12 +431,10 @@ public:
   // pair apart on the whole span has no t* either: earliest mode too, until
   // a point inside is found). A term left open in a regularised search for
   // any point inside may give the witness (Stop::inside: the pair collides,
-  // wherever the search was). Otherwise it goes on where it was. Out of
-  // steps, it asks again at 16 times the work with 16 times the steps, so
-  // the asking costs a bounded share of the search; a term left open would
-  // be met again, so then it never asks again; nor once a point inside is
-  // found (test_line).
-  void never_hand_over() { apart_after_ = std::numeric_limits<std::size_t>::max(); }
+  // wherever the search was). Otherwise it goes on where it was, and asks
+  // again later (out of steps) or never (a term left open; once a point
+  // inside is found: test_line).
+  void never_hand_over() { hand_over_.never(); }
   // A proof that stops at a later sub-span (a term with a point there, or
   // its step bound) still proves the sub-spans before it apart: the
   // search of this one stops (takes_child, decides_here: nothing is
@@ -442,21 +442,21 @@ public:
   // skipped (skips_span).
   bool decides_here(std::size_t, bool conquers)
   {
-    if (span_apart_ || stop_ != Stop::none) return false;
-    if (apart_after_ == 0) apart_after_ = first_hand_over();
-    if (!conquers || search_work() < apart_after_) return true;
+    if (hand_over_.span_apart() || stop_ != Stop::none) return false;
+    if (!conquers || !hand_over_.due(search_work())) return true;
     Rational until;
     Pair_result<EFT> inside;
-    switch (runner_->proves_apart(a_, b_, semantics_, apart_steps_, until, earliest_ || closed() ? nullptr : &inside)) {
+    switch (runner_->proves_apart(a_, b_, semantics_, hand_over_.steps(), until,
+                                  earliest_ || closed() ? nullptr : &inside)) {
     case Runner::Apart::proven: stop_ = Stop::apart; return false;
     case Runner::Apart::inside: stop_ = Stop::inside, inside_ = std::move(inside); return false;
-    case Runner::Apart::out_of_steps: apart_after_ *= 16, apart_steps_ *= 16; break;
-    case Runner::Apart::not_proven: apart_after_ = std::numeric_limits<std::size_t>::max(); break;
+    case Runner::Apart::out_of_steps: hand_over_.out_of_steps(); break;
+    case Runner::Apart::not_proven: hand_over_.never(); break;
     }
-    apart_until_ = until;
-    span_apart_ = runner_->span_ends_by(a_, b_, span_, until);
-    stats_->apart_spans += span_apart_;
-    return !span_apart_;
+    bool covered = runner_->span_ends_by(a_, b_, span_, until);
+    hand_over_.proved_until(std::move(until), covered);
+    stats_->apart_spans += covered;
+    return !covered;
   }
   template <class FT>
   void found_at(const std::vector<int>& path, bool on_line, const Box<FT, 4>& region, const Pair_formula& f)
@@ -618,23 +618,6 @@ private:
   bool closed() const { return semantics_ == Semantics::closed; }
   int a_ = -1, b_ = -1;
   std::size_t span_ = 0;
-  // When to ask for an apart proof (decides_here): the search's work so
-  // far (0: first_hand_over's, set at the first ask; the most size_t, never
-  // again), and the proof's step bound. A search of a few hundred lines costs about as much as a small
-  // pair's proof (tens of exact LPs), and most pairs are decided before.
-  std::size_t apart_after_ = 0;
-  // A regularised search hands over after 128 lines' work: looking for
-  // any point, the proof ends it either way (apart, or the open term's
-  // point is the witness); with --earliest, the sub-spans it proves apart
-  // before an open term are still cut short (apart_spans). A closed search
-  // waits for 512: its open terms are touches, which answer nothing, and a
-  // touching pair's search mostly finds its touch before. Measured over
-  // clash4d_bench's families (contact, fuzz, paper, random, with and
-  // without --earliest) against 512 everywhere: the same or less, a
-  // quarter to a third less on filled cavities and union seams (32 no
-  // better); 128 in closed searches too cost the weaving late stop's
-  // closed earliest run a third more (a wasted attempt at a touch).
-  std::size_t first_hand_over() const { return closed() ? 512 : 128; }
   // The search's work in lines: each line examined, and each cell tested
   // around a point whose neighbourhood was classified (Appendix A: its
   // rays and sectors at a vertex where many planes meet, as at touches of
@@ -642,9 +625,7 @@ private:
   // there (0.3-0.7 us against 0.5 us: the contact fixtures' exactly
   // filled cavities and pegs, fuzz's rotated touches, the weaving late stop).
   std::size_t search_work() const { return stats_->lines + stats_->cells_tested; }
-  std::uint64_t apart_steps_ = 32768;
-  std::optional<Rational> apart_until_;   // the pair proven apart on [tL, this] (decides_here)
-  bool span_apart_ = false;               // the sub-span searched now is in it
+  Apart_hand_over hand_over_;
   Stop stop_ = Stop::none;
   std::optional<Pair_result<EFT>> inside_;   // Stop::inside's answer
   std::array<bool, 3> frame_{};
