@@ -8,8 +8,8 @@
 // t*, first recorded at the edge the whole search records last, so the
 // goal, the witness and the contact point are the whole search's. Later
 // sub-spans cannot improve on t* (none did in the interval run): the run
-// stops. Wherever the rational run's path leaves the trail, the trail is
-// marked diverged and the runner searches the whole pair again. A
+// stops. Wherever the rational run's path leaves the trail, the replay
+// has diverged and the runner searches the whole pair again. A
 // sub-span's region stage the interval run had made in rationals
 // (exact/Exact_stage.h) is adopted, not made again.
 #ifndef CLASH4D_EXACT_EARLIEST_REPLAY_H
@@ -26,7 +26,7 @@ template <class FT>
 class Earliest_replay : public No_filter {
 public:
   Earliest_replay() = default;   // only as a stage's unused default
-  Earliest_replay(Search_trail& trail, const Exact_stages<FT>& stages) : trail_(&trail), stages_(&stages) {}
+  Earliest_replay(const Search_trail& trail, const Exact_stages<FT>& stages) : trail_(&trail), stages_(&stages) {}
 
   template <class M, class Run>
   void region_stage(int, int, std::size_t index, M& A, M& B, Region_stage<FT>& st, Run run)
@@ -47,7 +47,7 @@ public:
   bool takes_child(std::size_t depth, int child) const
   {
     if (depth >= trail_->path.size()) {
-      trail_->diverged = true;
+      diverged_ = true;
       return false;
     }
     return child == trail_->path[depth];
@@ -57,7 +57,7 @@ public:
   bool decides_here(std::size_t depth, bool conquers) const
   {
     if (depth == trail_->path.size() && trail_->on_line == conquers) return true;
-    trail_->diverged = true;
+    diverged_ = true;
     return false;
   }
 
@@ -66,9 +66,10 @@ public:
   bool jumps_to(Box<FT, 4>& region, Pair_formula& f, bool& on_line, std::vector<int>& path) const
   {
     static_assert(std::is_same_v<FT, Rational>, "a trail's region is in rationals");
-    if (!trail_->region_known) return false;
-    for (int q = 0; q < 4; ++q) region.set(q, trail_->region[2 * q], trail_->region[2 * q + 1]);
-    f = trail_->formula;
+    if (!trail_->region) return false;
+    const auto& faces = trail_->region->faces;
+    for (int q = 0; q < 4; ++q) region.set(q, faces[2 * q], faces[2 * q + 1]);
+    f = trail_->region->formula;
     on_line = trail_->on_line;
     path = trail_->path;
     return true;
@@ -76,15 +77,19 @@ public:
 
   // Every line before the trail's made no improvement.
   const std::array<std::size_t, 3>* replay_line() const { return &trail_->line; }
-  void replayed(bool found) { trail_->diverged = trail_->diverged || !found; }
+  void replayed(bool found) { diverged_ = diverged_ || !found; }
 
   // Region stages adopted instead of made again.
   std::size_t adopted() const { return adopted_; }
+  // Whether the rational run's path left the trail: its answer is not the
+  // whole search's.
+  bool diverged() const { return diverged_; }
 
 private:
-  Search_trail* trail_ = nullptr;
+  const Search_trail* trail_ = nullptr;
   const Exact_stages<FT>* stages_ = nullptr;
   std::size_t adopted_ = 0;
+  mutable bool diverged_ = false;   // set by the const hooks the stages call
 };
 
 } // namespace clash4d

@@ -500,7 +500,7 @@ private:
 
   // EK along the earliest-mode interval run's trail, to its last
   // improvement; the answer when the trail held, counted.
-  std::optional<Pair_result<EFT>> replayed(Search_trail& trail, const Exact_stages<EFT>& stages, int a, int b,
+  std::optional<Pair_result<EFT>> replayed(const Search_trail& trail, const Exact_stages<EFT>& stages, int a, int b,
                                            Semantics semantics, const Check_stats& astats, Check_stats& stats)
   {
     Check_stats rstats = stats.fresh();
@@ -511,7 +511,7 @@ private:
     checker.use_guides(&guide_source_);
     checker.use_convex_lp(convex_lp_);
     Pair_result<EFT> r = checker.check_pair(a, b, true, nullptr, semantics);
-    if (!r.collide || trail.diverged) return std::nullopt;
+    if (!r.collide || replay.diverged()) return std::nullopt;
     ++earliest_by_intervals_;
     stages_adopted_ += replay.adopted();
     stats = astats;                     // the search, as the interval run did it

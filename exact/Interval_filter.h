@@ -826,16 +826,17 @@ private:
   // are points (the rational run's region).
   void keep_region(const Box<AFT, 4>& region, const Pair_formula& f)
   {
-    trail_->region_known = false;
+    trail_->region.reset();
+    Search_trail::Known_region known;
     for (int q = 0; q < 4; ++q) {
       std::optional<Rational> lo = runner_->ak().exact_value(region.lo[q]);
       std::optional<Rational> hi = runner_->ak().exact_value(region.hi[q]);
       if (!lo || !hi) return;
-      trail_->region[2 * q] = *lo;
-      trail_->region[2 * q + 1] = *hi;
+      known.faces[2 * q] = std::move(*lo);
+      known.faces[2 * q + 1] = std::move(*hi);
     }
-    trail_->formula = f;
-    trail_->region_known = true;
+    known.formula = f;
+    trail_->region = std::move(known);
   }
   // The current conquer in rationals, when the line's planes and p and q
   // there are the rational run's: table planes always, region faces only

@@ -17,24 +17,24 @@
 // exact run too: the exact run's first point inside is the one at the end
 // of the trail. Earlier spans hold no collision at all (the approximate run
 // proved it), so they are skipped. The exact run still checks that the
-// trail leads somewhere (`diverged` otherwise, and a full run follows).
+// trail leads somewhere (Earliest_replay::diverged otherwise, and a full
+// run follows).
 #ifndef CLASH4D_EXACT_SEARCH_TRAIL_H
 #define CLASH4D_EXACT_SEARCH_TRAIL_H
 
 #include "model/Pair_formula.h"
-#include "numbers/Number_ops.h"
 #include "numbers/Rational.h"
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace clash4d {
 
 struct Search_trail {
-  bool complete = false;                // Record: a point inside was found and the trail leads to it
-  bool diverged = false;                // Replay: the exact run's path differs; use a full run
-  bool approximate = false;             // Record: a simplification was skipped as uncertain, so
-                                        // the path may differ from the exact run's: no replay
+  bool complete = false;                // a point inside was found and the trail leads to it
+  bool approximate = false;             // a simplification was skipped as uncertain, so the
+                                        // path may differ from the exact run's: no replay
   std::size_t span = 0;                 // index of the sub-span, in time order
   std::vector<int> path;                // division: child index at each depth
   bool on_line = false;                 // found on a line (else a region folded to "inside")
@@ -43,12 +43,11 @@ struct Search_trail {
   // intervals: the rational run's region), with the formula simplified
   // there (the rational run's: every simplification on the way was
   // certified): the replay goes there directly (Divide_and_conquer::jumped).
-  bool region_known = false;
-  // lo and hi per axis, x y z t; copies of one zero (numbers/Number_ops.h):
-  // every pair's run makes a trail, and eight zeros made afresh are eight
-  // allocations.
-  std::array<Rational, 8> region = shared_zeros<Rational, 8>();
-  Pair_formula formula;
+  struct Known_region {
+    std::array<Rational, 8> faces;      // lo and hi per axis, x y z t
+    Pair_formula formula;
+  };
+  std::optional<Known_region> region;
 };
 
 } // namespace clash4d
