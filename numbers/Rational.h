@@ -152,6 +152,12 @@ Rational power_of_two(int e);
 // The least k with 2^-k <= q, for q > 0 (that is, -floor(log2 q)).
 int grid_exponent(const Rational& q);
 
+// The rational q with lo < q < hi (lo < hi) that has the least denominator
+// (Stern-Brocot, by continued fractions): sample times that read as a
+// person would write them (rotation/Simplest_rational.h), and the fraction
+// a certified double enclosure of a rational root holds.
+Rational simplest_between(const Rational& lo, const Rational& hi);
+
 } // namespace clash4d
 
 #endif

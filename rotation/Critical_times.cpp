@@ -103,17 +103,26 @@ public:
   // every piece, or exactly 0 on one (a polynomial that vanishes on an
   // interval is identically zero: a plane's structural zeros, such as the
   // z part of a vertical plane turning about z, are exact in intervals).
-  bool settled(const Minor_rows& m) const { return state(m) != Minor_state::unsure; }
+  bool settled(const Minor_rows& m) const
+  {
+    Minor_state whole = whole_state(m);
+    return (whole != Minor_state::unsure ? whole : piece_state(m)) != Minor_state::unsure;
+  }
 
-  // zero: exactly 0 on a piece (identically zero); nonzero: excludes 0 on
-  // [lo, hi] whole or on every piece (no root on [lo, hi]); unsure
-  // otherwise. The whole interval first: it settles a minor far from 0 at
-  // one evaluation instead of one per piece.
-  Minor_state state(const Minor_rows& m) const
+  // zero: exactly 0 on the interval whole or on a piece (identically
+  // zero); nonzero: excludes 0 on [lo, hi] whole, or on every piece (no
+  // root on [lo, hi]); unsure otherwise. Callers ask the whole interval
+  // first: it settles a minor far from 0 at one evaluation instead of one
+  // per piece.
+  Minor_state whole_state(const Minor_rows& m) const
   {
     CGAL::Protect_FPU_rounding<true> upward;
-    Minor_state whole = state_on(m, 0, 1);
-    return whole != Minor_state::unsure ? whole : state_on(m, 1, pieces + 1);
+    return state_on(m, 0, 1);
+  }
+  Minor_state piece_state(const Minor_rows& m) const
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    return state_on(m, 1, pieces + 1);
   }
 
   // A minor made exactly is identically zero when it is the zero polynomial.

@@ -52,7 +52,8 @@ public:
     }
   }
   static constexpr bool minors_cost_more = false;   // doubles (Pair_minors.h)
-  Minor_state state(const Minor_rows&) const { return Minor_state::unsure; }
+  Minor_state whole_state(const Minor_rows&) const { return Minor_state::unsure; }
+  Minor_state piece_state(const Minor_rows&) const { return Minor_state::unsure; }
   bool identically_zero(const Double_poly& d, const Minor_rows& m) const
   {
     double bound = 1e-12 * size_[m[0]] * size_[m[1]] * size_[m[2]] * size_[m[3]];

@@ -155,9 +155,8 @@ private:
 std::optional<std::array<Rational, 3>> meeting_point_at(const std::vector<Moving_plane>& rows, std::array<int, 3> ids,
                                                         const Rational& t)
 {
-  std::array<std::array<Rational, 4>, 3> r;
-  for (int n = 0; n < 3; ++n)
-    for (int c = 0; c < 4; ++c) r[n][c] = rows[ids[n]][c].at(t);
+  std::array<std::array<Rational, 4>, 3> r = {plane_at(rows[ids[0]], t), plane_at(rows[ids[1]], t),
+                                              plane_at(rows[ids[2]], t)};
   Rational d = det3(r[0], r[1], r[2]);
   if (is_zero(d)) return std::nullopt;
   return cramer_point(r[0], r[1], r[2], d);
@@ -318,9 +317,9 @@ std::array<Algebraic, 3> Exact_slices::contact_point(const std::vector<Moving_pl
                                                      const std::array<Rational, 3>& w, const Rational& s,
                                                      const Algebraic& t_star, const std::vector<int>& near_rows) const
 {
-  std::vector<std::array<Rational, 4>> at(rows.size());
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    for (int c = 0; c < 4; ++c) at[i][c] = rows[i][c].at(s);
+  std::vector<std::array<Rational, 4>> at;
+  at.reserve(rows.size());
+  for (const Moving_plane& h : rows) at.push_back(plane_at(h, s));
   Interval_cell filter(at);
   std::optional<std::array<Algebraic, 3>> x;
   cell_vertices(

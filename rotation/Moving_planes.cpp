@@ -1,5 +1,7 @@
 #include "rotation/Moving_planes.h"
 
+#include <algorithm>
+
 namespace clash4d {
 
 namespace {
@@ -65,6 +67,35 @@ Time_poly rational_poly(const Integer_time_poly& p)
   c.reserve(p.size());
   for (int i = 0; i < p.size(); ++i) c.emplace_back(CGAL::Gmpz(p[i].get_mpz_t()));
   return Time_poly(c);
+}
+
+std::array<Rational, 4> plane_at(const Moving_plane& h, const Rational& t)
+{
+  int size = 0;
+  bool integers = true;
+  for (const Time_poly& p : h) {
+    size = std::max(size, p.size());
+    for (int i = 0; i < p.size() && integers; ++i) integers = mpz_cmp_ui(mpq_denref(p[i].mpq()), 1) == 0;
+  }
+  std::array<Rational, 4> out;
+  if (!integers) {
+    for (int c = 0; c < 4; ++c) out[c] = h[c].at(t);
+    return out;
+  }
+  // sum c_i n^i d^(k - i), k = size - 1: d^k p(n / d).
+  mpz_srcptr n = mpq_numref(t.mpq()), d = mpq_denref(t.mpq());
+  std::vector<mpz_class> n_power(size), d_power(size);
+  for (int i = 0; i < size; ++i) {
+    n_power[i] = i == 0 ? mpz_class(1) : mpz_class(n_power[i - 1] * mpz_class(n));
+    d_power[i] = i == 0 ? mpz_class(1) : mpz_class(d_power[i - 1] * mpz_class(d));
+  }
+  for (int c = 0; c < 4; ++c) {
+    mpz_class v = 0;
+    for (int i = 0; i < h[c].size(); ++i)
+      v += mpz_class(mpq_numref(h[c][i].mpq())) * n_power[i] * d_power[size - 1 - i];
+    out[c] = Rational(v.get_mpz_t());
+  }
+  return out;
 }
 
 Rational plane_value(const Moving_plane& h, const std::array<Rational, 3>& x, const Rational& t)

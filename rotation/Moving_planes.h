@@ -6,7 +6,9 @@
 #ifndef CLASH4D_ROTATION_MOVING_PLANES_H
 #define CLASH4D_ROTATION_MOVING_PLANES_H
 
+#include "geometry/Rotation_matrix.h"
 #include "geometry/kernel_ft4.h"
+#include "numbers/Integer_poly.h"
 #include "rotation/Pose_segments.h"
 #include <CGAL/Interval_nt.h>
 #include <array>
@@ -16,27 +18,6 @@ namespace clash4d {
 
 // n_x, n_y, n_z, e: one row of fact 10's matrix.
 using Moving_plane = std::array<Time_poly, 4>;
-
-// N(q(t)), row by row, for polynomials over the rationals, the integers
-// or intervals (the filters', under the caller's rounding guard): the scene
-// format's matrix of rotate times n = |q|^2, twice a product made as a sum.
-template <class Poly>
-std::array<std::array<Poly, 3>, 3> unnormalised_rotation(const std::array<Poly, 4>& q)
-{
-  const Poly &w = q[0], &x = q[1], &y = q[2], &z = q[3];
-  Poly ww = w * w, xx = x * x, yy = y * y, zz = z * z;
-  auto twice = [](const Poly& p) { return p + p; };
-  return {{{ww + xx - yy - zz, twice(x * y - w * z), twice(x * z + w * y)},
-           {twice(x * y + w * z), ww - xx + yy - zz, twice(y * z - w * x)},
-           {twice(x * z - w * y), twice(y * z + w * x), ww - xx - yy + zz}}};
-}
-
-// |q(t)|^2.
-template <class Poly>
-Poly squared_norm(const std::array<Poly, 4>& q)
-{
-  return q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
-}
 
 // The plane a.p + d <= 0 (p: a, b, c, d, numbers of Poly) under the
 // rotation n = N a and the origin c: (n, |q|^2 d - n.c).
@@ -51,11 +32,10 @@ std::array<Poly, 4> moved_plane(const std::array<FT, 4>& p, const std::array<std
 }
 
 // Polynomials in t with integer coefficients (the exact stage's minors).
-using Integer_time_poly = Polynomial<mpz_class, 16>;
+using Integer_time_poly = Integer_poly;
 
 // The polynomials' coefficients over their least common denominator d > 0
-// (a positive factor, made once for all of them): the numerators, each
-// polynomial keeping its size.
+// (a positive factor, made once for all of them): the numerators.
 template <std::size_t N>
 std::array<Integer_time_poly, N> integer_polys(const std::array<Time_poly, N>& p, mpz_class& d)
 {
@@ -84,6 +64,13 @@ std::vector<Moving_plane> moving_planes(const std::vector<Plane3<Rational>>& pla
 // reduced. The same half-spaces, so the same signs, roots and meeting
 // points: for the stages that ask only those (the exact time slices).
 std::vector<Moving_plane> integer_moving_planes(const std::vector<Plane3<Rational>>& planes, const Pose_segment& s);
+
+// The row's plane at the rational time t = n / d: its four values at t,
+// or, when the row's coefficients are integers (integer_moving_planes),
+// those values times d^k > 0 (k the row's largest degree), made in
+// integers with no fraction reduced. The same half-space either way, so
+// the same sides and meeting points.
+std::array<Rational, 4> plane_at(const Moving_plane& h, const Rational& t);
 
 // The row's value at the point x and time t: n(t).x + e(t).
 Rational plane_value(const Moving_plane& h, const std::array<Rational, 3>& x, const Rational& t);

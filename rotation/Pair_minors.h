@@ -149,7 +149,8 @@ private:
   {
     auto [it, added] = flat_.try_emplace({i, j, k}, false);
     if (added) {
-      Minor_state s = filter_.state({i, j, k, -1});
+      Minor_state s = filter_.whole_state({i, j, k, -1});
+      if (s == Minor_state::unsure) s = filter_.piece_state({i, j, k, -1});
       it->second = s == Minor_state::zero || (s == Minor_state::unsure && zero_polynomial(normal_minor(r_[i], r_[j], r_[k])));
     }
     return it->second;
@@ -180,9 +181,10 @@ private:
 // Calls table.add(minor, rows) for each of the given 4 x 4 minors of rows
 // of both objects (two convex pieces' vertex-face and edge-edge minors,
 // Rotating_pair.cpp; the first first_count rows the first piece's) that
-// filter.state(rows) does not rule out as rootless, and that mark events
+// filter.whole_state(rows) and filter.piece_state(rows) (the interval
+// whole, then its pieces) do not rule out as rootless, and that mark events
 // (Eventless_features leaves out those that never need to). A minor
-// identically zero on the interval (filter.state says zero, or
+// identically zero on the interval (the filter says zero, or
 // filter.identically_zero(minor, rows) once it is made) is then a feature
 // incidence that holds on the whole interval and may mark a touch: the
 // features do not mark every touch, and false is returned at once, so that
@@ -201,12 +203,14 @@ bool enumerate_feature_minors(const std::vector<std::array<Poly, 4>>& r, int fir
   std::size_t made = 0;
   for (const Minor_rows& m : features.minors) {
     if (++made % 4096 == 0) Work_budget::check();
-    Minor_state state = filter.state(m);
-    if (state == Minor_state::nonzero) continue;
     // An eventless feature's minor is identically zero (parallel lines, or
-    // two rows of one plane): asked before the minor is made where that
-    // costs more (Filter::minors_cost_more), else once it is found zero.
+    // two rows of one plane): asked before the pieces of the interval and
+    // the minor where they cost more (Filter::minors_cost_more), else once
+    // the minor is found zero.
+    Minor_state state = filter.whole_state(m);
     if (state == Minor_state::unsure && Filter::minors_cost_more && eventless(m)) continue;
+    if (state == Minor_state::unsure) state = filter.piece_state(m);
+    if (state == Minor_state::nonzero) continue;
     auto [i, j, k, l] = m;
     if (state == Minor_state::unsure) {
       Poly d = pair_minors_detail::full_minor(r, normals, i, j, k, l);

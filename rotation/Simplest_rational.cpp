@@ -7,37 +7,6 @@ namespace clash4d {
 
 namespace {
 
-Rational floor_of(const Rational& q)
-{
-  mpz_class n(q.numerator().mpz()), d(q.denominator().mpz()), f;
-  mpz_fdiv_q(f.get_mpz_t(), n.get_mpz_t(), d.get_mpz_t());
-  return Rational(CGAL::Gmpz(f.get_mpz_t()));
-}
-
-// The simplest q with lo < q < hi; hi_infinite: no upper end.
-Rational simplest(const Rational& lo, const Rational& hi, bool hi_infinite)
-{
-  Rational f = floor_of(lo), next = f + 1;
-  if (hi_infinite || next < hi) return next;
-  // lo and hi lie in [f, f + 1]: continue on the reciprocals of what is left.
-  Rational a = hi - f, b = lo - f;   // 0 < a <= 1, 0 <= b < a
-  bool b_zero = CGAL::sign(b) == CGAL::ZERO;
-  Rational inner = simplest(Rational(1) / a, b_zero ? Rational(0) : Rational(1) / b, b_zero);
-  return f + Rational(1) / inner;
-}
-
-} // namespace
-
-Rational simplest_between(const Rational& lo, const Rational& hi)
-{
-  if (!(lo < hi)) throw std::logic_error("simplest_between: an empty interval");
-  if (lo < 0 && 0 < hi) return Rational(0);
-  if (hi <= 0) return -simplest(-hi, -lo, false);
-  return simplest(lo, hi, false);
-}
-
-namespace {
-
 // Where a rational lies against the open interval (lo, hi): -1 at or below
 // lo, +1 at or above hi, 0 inside. Exact comparisons only, so the answer is
 // the numbers', not their isolating intervals'.

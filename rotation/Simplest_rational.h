@@ -11,8 +11,8 @@
 
 namespace clash4d {
 
-// The simplest rational q with lo < q < hi (lo < hi).
-Rational simplest_between(const Rational& lo, const Rational& hi);
+// The simplest rational q with lo < q < hi (lo < hi); for rational ends,
+// numbers/Rational.h's simplest_between.
 Rational simplest_between(const Algebraic& lo, const Algebraic& hi);
 
 } // namespace clash4d

@@ -100,8 +100,18 @@ Solid rotate(const std::array<Rational, 4>& q, Solid child)
 
 std::vector<Rational> rotation_rows(const std::array<Rational, 4>& q)
 {
+  // R(q) = N(Q) / |Q|^2 for Q = d q, d > 0 the common denominator of q's
+  // parts (R(s q) = R(q) for s != 0): integer products, and one fraction
+  // reduced per entry instead of one per operation (the time slices pose
+  // a turning pair at every sample time, rotation/Rotating_pair.cpp).
+  std::array<mpz_class, 4> Q;
+  mpz_class d;
+  over_common_denominator(q.data(), 4, Q.data(), d);
+  auto N = unnormalised_rotation(Q);
+  mpz_class n = squared_norm(Q);
   std::vector<Rational> out;
-  for (const auto& row : rotation_matrix(q[0], q[1], q[2], q[3])) out.insert(out.end(), row.begin(), row.end());
+  for (const auto& row : N)
+    for (const mpz_class& e : row) out.push_back(quotient_of_integers(e, n));
   return out;
 }
 

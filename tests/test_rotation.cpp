@@ -15,6 +15,7 @@
 #include "scene/Json_reader.h"
 #include "search/Motzkin_lp.h"
 #include "scene/Random_draw.h"
+#include "scene/Scene_builder.h"
 #include "scene/Scene_reader.h"
 #include "scene/Scene_writer.h"
 #include "support/Cli_run.h"
@@ -22,6 +23,7 @@
 #include "support/Random_scene.h"
 #include "support/Stage_tests.h"
 #include <nlohmann/json.hpp>
+#include <algorithm>
 #include <cfenv>
 #include <cmath>
 #include <cstdio>
@@ -1294,30 +1296,161 @@ BOOST_AUTO_TEST_CASE(moving_planes_in_integers_are_the_rational_formula)
     std::vector<Moving_plane> integer_rows = integer_moving_planes(planes, s);
     auto N = unnormalised_rotation(s.q);
     Time_poly norm = squared_norm(s.q);
+    // The coefficient of t^i, 0 past the last one stored (the integer
+    // path keeps no leading zero, the rational formula may).
+    auto coefficient = [](const Time_poly& p, int i) { return i < p.size() ? p[i] : Rational(0); };
+    auto size = [](const Time_poly& a, const Time_poly& b) { return std::max(a.size(), b.size()); };
     for (std::size_t k = 0; k < planes.size(); ++k) {
       Moving_plane want = moved_plane(planes[k], N, norm, s.c);
-      for (int c = 0; c < 4; ++c) {
-        BOOST_TEST_REQUIRE(rows[k][c].size() == want[c].size(), "round " << round << " plane " << k << " column " << c);
-        for (int i = 0; i < want[c].size(); ++i)
-          BOOST_TEST(rows[k][c][i] == want[c][i], "round " << round << " plane " << k << " column " << c);
-      }
+      for (int c = 0; c < 4; ++c)
+        for (int i = 0; i < size(rows[k][c], want[c]); ++i)
+          BOOST_TEST(coefficient(rows[k][c], i) == coefficient(want[c], i),
+                     "round " << round << " plane " << k << " column " << c);
       // The exact slices' row: integer coefficients, one positive factor
       // times the row, the same for every coefficient.
       std::optional<Rational> factor;
       for (int c = 0; c < 4; ++c) {
-        BOOST_TEST_REQUIRE(integer_rows[k][c].size() == want[c].size());
-        for (int i = 0; i < want[c].size(); ++i) {
-          const Rational& x = integer_rows[k][c][i];
-          BOOST_TEST(x.denominator() == CGAL::Gmpz(1), "round " << round << " plane " << k);
-          if (CGAL::is_zero(want[c][i])) {
+        for (int i = 0; i < size(integer_rows[k][c], want[c]); ++i) {
+          const Rational x = coefficient(integer_rows[k][c], i);
+          if (CGAL::is_zero(coefficient(want[c], i))) {
             BOOST_TEST(CGAL::is_zero(x), "round " << round << " plane " << k);
             continue;
           }
+          BOOST_TEST(x.denominator() == CGAL::Gmpz(1), "round " << round << " plane " << k);
           if (!factor) factor = x / want[c][i];
           BOOST_TEST(*factor > 0, "round " << round << " plane " << k);
           BOOST_TEST(x == *factor * want[c][i], "round " << round << " plane " << k << " column " << c);
         }
       }
+      // A row at a rational time (plane_at): the values themselves for
+      // the rational rows, and one positive factor times them for the
+      // integer rows.
+      Rational t = number();
+      std::array<Rational, 4> value = plane_at(rows[k], t), scaled = plane_at(integer_rows[k], t);
+      std::optional<Rational> at_factor;
+      for (int c = 0; c < 4; ++c) {
+        Rational v = want[c].at(t);
+        BOOST_TEST(value[c] == v, "round " << round << " plane " << k << " column " << c);
+        if (CGAL::is_zero(v)) {
+          BOOST_TEST(CGAL::is_zero(scaled[c]), "round " << round << " plane " << k);
+          continue;
+        }
+        if (!at_factor) at_factor = scaled[c] / v;
+        BOOST_TEST(*at_factor > 0, "round " << round << " plane " << k);
+        BOOST_TEST(scaled[c] == *at_factor * v, "round " << round << " plane " << k << " column " << c);
+      }
+    }
+    // The scene's rotate matrix, made in integers (rotation_rows), is the
+    // rational formula's.
+    std::array<Rational, 4> q = {number(), number(), number(), number()};
+    if (CGAL::is_zero(q[0]) && CGAL::is_zero(q[1]) && CGAL::is_zero(q[2]) && CGAL::is_zero(q[3])) q[0] = Rational(1);
+    std::vector<Rational> rows_made = rotation_rows(q);
+    auto R = rotation_matrix<Rational>(q[0], q[1], q[2], q[3]);
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) BOOST_TEST(rows_made[3 * r + c] == R[r][c], "round " << round);
+  }
+}
+
+// Integer_poly (FLINT) is Polynomial's arithmetic over GMP's integers:
+// sums, differences, products, negation and scalar products of seeded
+// random polynomials with coefficients of 1 to 100 bits agree coefficient
+// by coefficient, and a result keeps no leading zero.
+BOOST_AUTO_TEST_CASE(integer_polynomials_are_polynomials_over_the_integers)
+{
+  std::uint64_t seed = stage_tests::env_number("CLASH4D_SEED", 5353);
+  BOOST_TEST_MESSAGE("integer polynomials: seed " << seed << " (CLASH4D_SEED)");
+  std::mt19937_64 rng(seed);
+  using Reference = Polynomial<mpz_class, 16>;
+  auto coefficients = [&] {
+    std::vector<mpz_class> c(rng() % 6);
+    for (mpz_class& x : c) {
+      int bits = 1 + static_cast<int>(rng() % 100);
+      x = 0;
+      for (int b = 0; b < bits; b += 32) x = (x << 32) + static_cast<unsigned long>(rng() & 0xffffffffu);
+      x >>= (bits + 31) / 32 * 32 - bits;
+      if (rng() % 2) x = -x;
+      if (rng() % 4 == 0) x = 0;
+    }
+    return c;
+  };
+  auto same = [](const Integer_poly& a, const Reference& b) {
+    int last = b.size();
+    while (last > 0 && b[last - 1] == 0) --last;
+    if (a.size() != last) return false;
+    for (int i = 0; i < last; ++i)
+      if (a[i] != b[i]) return false;
+    return true;
+  };
+  for (int round = 0; round < 500; ++round) {
+    std::vector<mpz_class> x = coefficients(), y = coefficients();
+    Integer_poly a(x), b(y);
+    Reference ra(x), rb(y);
+    mpz_class s = mpz_class(static_cast<long>(rng() % 2001) - 1000);
+    BOOST_TEST(same(a + b, ra + rb), "round " << round);
+    BOOST_TEST(same(a - b, ra - rb), "round " << round);
+    BOOST_TEST(same(-a, -ra), "round " << round);
+    BOOST_TEST(same(a * b, ra * rb), "round " << round);
+    BOOST_TEST(same(s * a, s * ra), "round " << round);
+    Integer_poly c = a;
+    c += b;
+    c -= a;
+    BOOST_TEST(same(c, rb), "round " << round);
+    BOOST_TEST(same(Integer_poly(a.coefficients()), ra), "round " << round);
+  }
+}
+
+// Real roots found without factoring where each one is rational
+// (Algebraic.cpp, rational_roots: a root that is a double is found so) and
+// by factoring otherwise: a product of seeded random linear factors q t -
+// p (small denominators, dyadic or not, some repeated) and, one time in
+// two, an irreducible quadratic t^2 - n, has exactly those roots in [a,
+// b], the rational ones rational.
+BOOST_AUTO_TEST_CASE(real_roots_of_products_of_known_factors)
+{
+  std::uint64_t seed = stage_tests::env_number("CLASH4D_SEED", 5454);
+  BOOST_TEST_MESSAGE("real roots of known factors: seed " << seed << " (CLASH4D_SEED)");
+  std::mt19937_64 rng(seed);
+  for (int round = 0; round < 300; ++round) {
+    std::vector<Rational> p = {Rational(1)};
+    auto times = [&](const std::vector<Rational>& f) {
+      std::vector<Rational> out(p.size() + f.size() - 1, Rational(0));
+      for (std::size_t i = 0; i < p.size(); ++i)
+        for (std::size_t j = 0; j < f.size(); ++j) out[i + j] += p[i] * f[j];
+      p = out;
+    };
+    std::vector<Rational> rational;
+    int linear = 1 + static_cast<int>(rng() % 3);
+    for (int k = 0; k < linear; ++k) {
+      Rational r = Rational(static_cast<long>(rng() % 41) - 20) / Rational(static_cast<long>(rng() % 12) + 1);
+      times({-r, Rational(1)});
+      if (rng() % 4 == 0) times({-r, Rational(1)});
+      rational.push_back(r);
+    }
+    std::optional<long> square;   // t^2 - n, n not a square
+    if (rng() % 2) {
+      long n = 2 + static_cast<long>(rng() % 30);
+      while (static_cast<long>(std::sqrt(static_cast<double>(n))) * static_cast<long>(std::sqrt(static_cast<double>(n))) == n) ++n;
+      times({Rational(-n), Rational(0), Rational(1)});
+      square = n;
+    }
+    Rational a = Rational(static_cast<long>(rng() % 21) - 10) / Rational(3), b = a + Rational(static_cast<long>(rng() % 20) + 1) / Rational(2);
+    std::vector<Algebraic> want;
+    for (const Rational& r : rational)
+      if (!(r < a) && !(b < r)) want.emplace_back(r);
+    if (square)
+      for (int sign : {-1, 1}) {
+        // sqrt n by its minimal polynomial: the root of t^2 - n on its side.
+        Algebraic root = Algebraic::real_roots(std::vector<Rational>{Rational(-*square), Rational(0), Rational(1)},
+                                               Rational(sign < 0 ? -*square - 1 : 0), Rational(sign < 0 ? 0 : *square + 1))[0];
+        if (compare(root, a) >= 0 && compare(root, b) <= 0) want.push_back(root);
+      }
+    std::sort(want.begin(), want.end());
+    want.erase(std::unique(want.begin(), want.end()), want.end());
+    std::vector<Algebraic> got = Algebraic::real_roots(p, a, b);
+    BOOST_TEST_REQUIRE(got.size() == want.size(), "round " << round);
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      BOOST_TEST((got[i] == want[i]), "round " << round << ": " << got[i].to_text() << " against " << want[i].to_text());
+      BOOST_TEST(got[i].is_rational() == want[i].is_rational(), "round " << round);
     }
   }
 }
