@@ -458,9 +458,17 @@ std::vector<Algebraic> Algebraic::real_roots(const std::vector<mpz_class>& p, co
   return Algebraic_access::real_roots(f.p, a, b);
 }
 
+std::vector<Algebraic> Algebraic::real_roots_rational_first(const std::vector<mpz_class>& p, const Rational& a,
+                                                            const Rational& b)
+{
+  Fmpz_poly f;
+  primitive_integer_poly(f, p);
+  if (auto rational = rational_roots(f.p, a, b)) return *rational;
+  return Algebraic_access::real_roots(f.p, a, b);
+}
+
 std::vector<Algebraic> Algebraic_access::real_roots(const fmpz_poly_struct* f, const Rational& a, const Rational& b)
 {
-  if (auto rational = rational_roots(f, a, b)) return *rational;
   fmpz_poly_factor_t fac;
   fmpz_poly_factor_init(fac);
   fmpz_poly_factor(fac, f);

@@ -337,7 +337,7 @@ void Critical_times::solve(const std::map<std::vector<mpz_class>, std::vector<Mi
     if (surely_no_root(key, lo, hi)) continue;
     Poly_key rest = without_known_roots(key, minors);
     if (rest.size() < 2 || (rest.size() < key.size() && surely_no_root(rest, lo, hi))) continue;
-    for (Algebraic& r : Algebraic::real_roots(rest, lo, hi)) {
+    for (Algebraic& r : Algebraic::real_roots_rational_first(rest, lo, hi)) {
       if (compare(r, lo) <= 0 || compare(r, hi) >= 0) continue;
       times_.push_back({std::move(r), minors});
     }

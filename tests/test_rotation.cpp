@@ -1400,8 +1400,8 @@ BOOST_AUTO_TEST_CASE(integer_polynomials_are_polynomials_over_the_integers)
 }
 
 // Real roots found without factoring where each one is rational
-// (Algebraic.cpp, rational_roots: a root that is a double is found so) and
-// by factoring otherwise: a product of seeded random linear factors q t -
+// (Algebraic::real_roots_rational_first, a turning pair's critical times)
+// and by factoring otherwise: a product of seeded random linear factors q t -
 // p (small denominators, dyadic or not, some repeated) and, one time in
 // two, an irreducible quadratic t^2 - n, has exactly those roots in [a,
 // b], the rational ones rational.
@@ -1446,7 +1446,11 @@ BOOST_AUTO_TEST_CASE(real_roots_of_products_of_known_factors)
       }
     std::sort(want.begin(), want.end());
     want.erase(std::unique(want.begin(), want.end()), want.end());
-    std::vector<Algebraic> got = Algebraic::real_roots(p, a, b);
+    std::vector<mpz_class> integer(p.size());
+    mpz_class d;
+    over_common_denominator(p.data(), p.size(), integer.data(), d);
+    std::vector<Algebraic> got = Algebraic::real_roots_rational_first(integer, a, b);
+    BOOST_TEST_REQUIRE(got.size() == Algebraic::real_roots(p, a, b).size(), "round " << round);
     BOOST_TEST_REQUIRE(got.size() == want.size(), "round " << round);
     for (std::size_t i = 0; i < got.size(); ++i) {
       BOOST_TEST((got[i] == want[i]), "round " << round << ": " << got[i].to_text() << " against " << want[i].to_text());
