@@ -36,12 +36,9 @@ T squared_norm(const std::array<T, 4>& q)
 template <class FT>
 std::array<Vector3<FT>, 3> rotation_matrix(const FT& w, const FT& x, const FT& y, const FT& z)
 {
-  FT n = w * w + x * x + y * y + z * z;
-  FT two(2);
-  std::array<Vector3<FT>, 3> m = {{
-      {w * w + x * x - y * y - z * z, two * (x * y - w * z), two * (x * z + w * y)},
-      {two * (x * y + w * z), w * w - x * x + y * y - z * z, two * (y * z - w * x)},
-      {two * (x * z - w * y), two * (y * z + w * x), w * w - x * x - y * y + z * z}}};
+  std::array<FT, 4> q = {w, x, y, z};
+  FT n = squared_norm(q);
+  std::array<Vector3<FT>, 3> m = unnormalised_rotation(q);
   for (auto& row : m)
     for (auto& e : row) e /= n;
   return m;

@@ -99,9 +99,6 @@ public:
     return *this;
   }
 
-  // The FLINT polynomial, for the callers that factor or divide by content.
-  const fmpz_poly_struct* flint() const { return p_; }
-
 private:
   template <class Op>
   static Integer_poly made(Op op)
