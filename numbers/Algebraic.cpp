@@ -7,7 +7,6 @@
 #include <optional>
 
 #include <flint/fmpq.h>
-#include <flint/fmpq_mat.h>
 #include <flint/fmpq_poly.h>
 #include <flint/fmpz_poly.h>
 #include <flint/fmpz_poly_factor.h>

@@ -6,7 +6,9 @@
 // a query when each coefficient was an mpz_class.
 //
 // The interface is the one rotation/'s generic code asks of Polynomial<FT>:
-// size(), reading a coefficient, +, -, *, and a scalar times a polynomial.
+// size(), reading a coefficient, +, -, *, and a scalar times a polynomial;
+// and the exact division, primitive part and square root that
+// Critical_times.cpp takes a turning object's scale out of a minor with.
 // size() is the degree plus one (FLINT keeps no leading zero); 0 for the
 // zero polynomial.
 #ifndef CLASH4D_NUMBERS_INTEGER_POLY_H
@@ -17,6 +19,7 @@
 #include <flint/fmpz.h>
 #include <flint/fmpz_poly.h>
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -88,6 +91,26 @@ public:
   {
     return made([&](fmpz_poly_t r) { fmpz_poly_scalar_mul_mpz(r, a.p_, s.get_mpz_t()); });
   }
+  // The quotient by d (not zero) when d divides this exactly, else none.
+  std::optional<Integer_poly> divided_by(const Integer_poly& d) const
+  {
+    Integer_poly q;
+    if (!fmpz_poly_divides(q.p_, p_, d.p_)) return std::nullopt;
+    return q;
+  }
+  // This over the gcd of its coefficients, the leading one positive.
+  Integer_poly primitive_part() const
+  {
+    return made([&](fmpz_poly_t r) { fmpz_poly_primitive_part(r, p_); });
+  }
+  // The polynomial whose square this is, when there is one.
+  std::optional<Integer_poly> square_root() const
+  {
+    Integer_poly r;
+    if (!fmpz_poly_sqrt(r.p_, p_)) return std::nullopt;
+    return r;
+  }
+
   Integer_poly& operator+=(const Integer_poly& b)
   {
     fmpz_poly_add(p_, p_, b.p_);

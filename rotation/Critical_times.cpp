@@ -247,6 +247,48 @@ bool surely_no_root(const Poly_key& p, const Rational& lo, const Rational& hi)
   return true;
 }
 
+// The factor a turning object's rows put into the minors, which no
+// critical time is a root of: n(t) = N(q(t)) a (Moving_planes.h), and the
+// cofactors of N(q) are |q|^2 N(q), so a minor with two normals of one
+// turning object holds |q(t)|^2 > 0. It is read off one row: n.n =
+// |q|^4 |a|^2, so the primitive part of n.n is the square of |q|^2's. A
+// turning box's irrational minor (t^2 + 1)(23 t^2 - 20 t + 3) is then a
+// quadratic, which FLINT factors by its discriminant where the quartic
+// took Zassenhaus' algorithm (a sixth of the query). None (a constant)
+// for an object that does not turn.
+Int_poly row_scale(const Int_row& row)
+{
+  Int_poly square = (row[0] * row[0] + row[1] * row[1] + row[2] * row[2]).primitive_part();
+  std::optional<Int_poly> root = square.size() > 1 ? square.square_root() : std::nullopt;
+  return root ? *root : Int_poly();
+}
+
+// Each object's scale (row_scale, on its first row that was made), kept
+// when it surely has no root on [lo, hi].
+std::vector<Int_poly> scales_of(const std::vector<Int_row>& rows, std::size_t first_count, const Rational& lo,
+                                const Rational& hi)
+{
+  std::vector<Int_poly> scales;
+  for (auto [from, to] : {std::pair{std::size_t{0}, first_count}, std::pair{first_count, rows.size()}})
+    for (std::size_t r = from; r < to; ++r) {
+      if (rows[r][0].size() == 0 && rows[r][1].size() == 0 && rows[r][2].size() == 0) continue;
+      Int_poly scale = row_scale(rows[r]);
+      if (scale.size() > 1 && surely_no_root(scale.coefficients(), lo, hi)) scales.push_back(std::move(scale));
+      break;
+    }
+  return scales;
+}
+
+// p without every power of the scales that divides it: the same roots on
+// [lo, hi].
+Poly_key without_scales(const Poly_key& p, const std::vector<Int_poly>& scales)
+{
+  Int_poly rest(p);
+  for (const Int_poly& scale : scales)
+    while (std::optional<Int_poly> q = rest.divided_by(scale)) rest = std::move(*q);
+  return primitive(rest);
+}
+
 } // namespace
 
 void check_pair_minor_count(int m, int split)
@@ -274,7 +316,7 @@ Critical_times::Critical_times(const std::vector<Moving_plane>& planes, std::siz
   check_pair_minor_count(static_cast<int>(rows.size()), static_cast<int>(first_count));
   Minor_table table;
   enumerate_pair_minors(rows, static_cast<int>(first_count), low_rank, Interval_rows(planes, lo, hi), table);
-  solve(table.table(), lo, hi);
+  solve(table.table(), rows, first_count, lo, hi);
 }
 
 void check_feature_minor_count(std::size_t features, std::size_t m, std::size_t split)
@@ -309,7 +351,7 @@ Critical_times::Critical_times(const std::vector<Moving_plane>& planes, std::siz
     return;
   }
   restricted_ = true;
-  solve(table.table(), lo, hi);
+  solve(table.table(), rows, first_count, lo, hi);
 }
 
 // The times found so far that are roots of p too take p's minors, and p
@@ -328,14 +370,17 @@ std::vector<mpz_class> Critical_times::without_known_roots(const std::vector<mpz
   return rest;
 }
 
-void Critical_times::solve(const std::map<std::vector<mpz_class>, std::vector<Minor_rows>>& table, const Rational& lo,
-                           const Rational& hi)
+void Critical_times::solve(const std::map<std::vector<mpz_class>, std::vector<Minor_rows>>& table,
+                           const std::vector<std::array<Integer_time_poly, 4>>& rows, std::size_t first_count,
+                           const Rational& lo, const Rational& hi)
 {
+  std::optional<std::vector<Int_poly>> scales;   // made when a minor is first solved
   for (const auto& [key, minors] : table) {
     Work_budget::check();
     minor_count_ += minors.size();
     if (surely_no_root(key, lo, hi)) continue;
-    Poly_key rest = without_known_roots(key, minors);
+    if (!scales) scales = scales_of(rows, first_count, lo, hi);
+    Poly_key rest = without_known_roots(without_scales(key, *scales), minors);
     if (rest.size() < 2 || (rest.size() < key.size() && surely_no_root(rest, lo, hi))) continue;
     for (Algebraic& r : Algebraic::real_roots_rational_first(rest, lo, hi)) {
       if (compare(r, lo) <= 0 || compare(r, hi) >= 0) continue;

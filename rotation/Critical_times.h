@@ -80,8 +80,10 @@ public:
   bool restricted() const { return restricted_; }
 
 private:
-  // The real roots in (lo, hi) of each distinct minor, merged in order.
-  void solve(const std::map<std::vector<mpz_class>, std::vector<Minor_rows>>& table, const Rational& lo,
+  // The real roots in (lo, hi) of each distinct minor of these rows (the
+  // first first_count of them the first object's), merged in order.
+  void solve(const std::map<std::vector<mpz_class>, std::vector<Minor_rows>>& table,
+             const std::vector<std::array<Integer_time_poly, 4>>& rows, std::size_t first_count, const Rational& lo,
              const Rational& hi);
 
   std::vector<mpz_class> without_known_roots(const std::vector<mpz_class>& p, const std::vector<Minor_rows>& minors);

@@ -670,11 +670,14 @@ BOOST_AUTO_TEST_CASE(fixtures_answer_as_derived)
   }
 }
 
-// Algebraic::quotient_at (the printed u and v): on seeded cubic roots r and
-// quotients alpha = N(r) / D(r), its minimal polynomial mu has mu(alpha) = 0
-// in Q(r) (mu evaluated at alpha's polynomial in r, reduced modulo r's
-// minimal polynomial, is 0), and it is alpha and not a conjugate: its
-// double is alpha's, evaluated in long double at r's.
+// Algebraic::quotient_at (the printed u and v, and a turning pair's
+// contact point at a quadratic t*): on seeded cubic and quadratic roots r
+// and quotients alpha = N(r) / D(r), its minimal polynomial mu has
+// mu(alpha) = 0 in Q(r) (mu evaluated at alpha's polynomial in r, reduced
+// modulo r's minimal polynomial, is 0), of r's degree when alpha is
+// irrational (2 and 3 are prime), and it is alpha and not a conjugate:
+// its double is alpha's, evaluated in long double at r's, and mu changes
+// sign across its interval.
 BOOST_AUTO_TEST_CASE(quotients_at_a_root_are_those_numbers)
 {
   std::uint64_t seed = env_number("CLASH4D_SEED", 20261202);
@@ -693,9 +696,9 @@ BOOST_AUTO_TEST_CASE(quotients_at_a_root_are_those_numbers)
     }
     return a;
   };
-  int irrational = 0;
-  for (int i = 0; i < 200; ++i) {
-    auto roots = Algebraic::real_roots(small_poly(3), Rational(-8), Rational(8));
+  int irrational = 0, quadratic = 0;
+  for (int i = 0; i < 300; ++i) {
+    auto roots = Algebraic::real_roots(small_poly(i % 3 == 2 ? 2 : 3), Rational(-8), Rational(8));
     for (const Algebraic& r : roots) {
       if (r.is_rational()) continue;
       std::vector<Rational> num = small_poly(2), den = small_poly(2);
@@ -723,9 +726,21 @@ BOOST_AUTO_TEST_CASE(quotients_at_a_root_are_those_numbers)
         for (std::size_t k = num.size(); k-- > 0;) n = n * t + CGAL::to_double(num[k]);
         for (std::size_t k = den.size(); k-- > 0;) d = d * t + CGAL::to_double(den[k]);
         BOOST_TEST(std::abs(q.to_double() - static_cast<double>(n / d)) <= 1e-9 * (1 + std::abs(static_cast<double>(n / d))));
+        BOOST_TEST(q.is_rational() == (alpha.size() == 1));
+        if (!q.is_rational()) {
+          BOOST_TEST(mu.size() == r.polynomial().size());
+          auto mu_at = [&](const Rational& x) {
+            Rational v = 0;
+            for (std::size_t k = mu.size(); k-- > 0;) v = v * x + Rational(mu[k].get_mpz_t());
+            return CGAL::sign(v);
+          };
+          BOOST_TEST(mu_at(q.lower()) * mu_at(q.upper()) < 0);
+        }
       }
       irrational += !q.is_rational();
+      quadratic += !q.is_rational() && r.polynomial().size() == 3;
     }
   }
   BOOST_TEST(irrational > 50);
+  BOOST_TEST(quadratic > 20);
 }

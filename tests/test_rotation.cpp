@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cfenv>
 #include <cmath>
+#include <numeric>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -1457,6 +1458,69 @@ BOOST_AUTO_TEST_CASE(real_roots_of_products_of_known_factors)
       BOOST_TEST(got[i].is_rational() == want[i].is_rational(), "round " << round);
     }
   }
+}
+
+// Quadratics (a turning pair's irrational critical times, once the
+// rotation's scale is divided out of the minor: Critical_times.cpp):
+// seeded random a t^2 + b t + c, a != 0. With D = b^2 - 4 a c, the real
+// roots in [-40, 40] are none when D < 0; the rationals (-b +- sqrt D) / 2a
+// when D is a square; otherwise two irrational roots whose minimal
+// polynomial is the quadratic made primitive with a positive leading
+// coefficient, each one a root of it alone in its interval (a sign change
+// there), at the doubles (-b +- sqrt D) / 2a. root_between gives the same.
+BOOST_AUTO_TEST_CASE(real_roots_of_quadratics_are_the_formula)
+{
+  std::uint64_t seed = stage_tests::env_number("CLASH4D_SEED", 5656);
+  BOOST_TEST_MESSAGE("real roots of quadratics: seed " << seed << " (CLASH4D_SEED)");
+  std::mt19937_64 rng(seed);
+  auto draw = [&](long span) { return static_cast<long>(rng() % (2 * span + 1)) - span; };
+  int irrational = 0, rational = 0, none = 0;
+  for (int round = 0; round < 400; ++round) {
+    long a = draw(12), b = draw(30), c = draw(30), k = 1 + static_cast<long>(rng() % 3);
+    if (a == 0) a = 1;
+    if (round % 5 == 0) c = 0;   // a rational root at 0
+    BOOST_TEST_CONTEXT("round " << round << ": " << k * a << " t^2 + " << k * b << " t + " << k * c)
+    {
+      std::vector<Rational> p = {Rational(k * c), Rational(k * b), Rational(k * a)};
+      std::vector<Algebraic> got = Algebraic::real_roots(p, Rational(-40), Rational(40));
+      long disc = b * b - 4 * a * c;
+      if (disc < 0) {
+        BOOST_TEST(got.empty());
+        ++none;
+        continue;
+      }
+      long s = static_cast<long>(std::llround(std::sqrt(static_cast<double>(disc))));
+      double r1 = (-b - std::sqrt(static_cast<double>(disc))) / (2.0 * a), r2 = (-b + std::sqrt(static_cast<double>(disc))) / (2.0 * a);
+      std::vector<double> want = {std::min(r1, r2), std::max(r1, r2)};
+      if (disc == 0) want.pop_back();
+      BOOST_TEST_REQUIRE(got.size() == want.size());
+      for (std::size_t i = 0; i < got.size(); ++i) {
+        BOOST_TEST(std::abs(got[i].to_double() - want[i]) <= 1e-12 * (1 + std::abs(want[i])));
+        BOOST_TEST(got[i].is_rational() == (s * s == disc));
+        if (s * s == disc) {
+          std::vector<Rational> exact = {Rational(-b - s) / Rational(2 * a), Rational(-b + s) / Rational(2 * a)};
+          std::sort(exact.begin(), exact.end());
+          if (disc == 0) exact.pop_back();
+          BOOST_TEST((got[i] == Algebraic(exact[i])), got[i].to_text() << " against " << exact[i]);
+          ++rational;
+          continue;
+        }
+        std::vector<mpz_class> m = got[i].polynomial();
+        long g = std::gcd(std::gcd(a, b), c) * (a < 0 ? -1 : 1);
+        BOOST_TEST((m == std::vector<mpz_class>{c / g, b / g, a / g}));
+        std::vector<Rational> mq = {Rational(m[0].get_mpz_t()), Rational(m[1].get_mpz_t()), Rational(m[2].get_mpz_t())};
+        auto value = [&](const Rational& t) { return mq[0] + t * (mq[1] + t * mq[2]); };
+        BOOST_TEST(CGAL::sign(value(got[i].lower())) * CGAL::sign(value(got[i].upper())) < 0);
+        Algebraic between = Algebraic::root_between(p, got[i].lower(), got[i].upper());
+        BOOST_TEST((between == got[i]));
+        ++irrational;
+      }
+    }
+  }
+  BOOST_TEST_MESSAGE("quadratics: " << irrational << " irrational roots, " << rational << " rational, " << none << " with none");
+  BOOST_TEST(irrational > 200);
+  BOOST_TEST(rational > 50);
+  BOOST_TEST(none > 20);
 }
 
 // A root divided out (Algebraic::without_root and is_root_of, what
