@@ -46,7 +46,8 @@ std::vector<std::pair<const char*, std::size_t>> stat_counts(const Rotating_chec
   const Slice_counts& c = a.counts;
   return {{"pairs_examined", a.pairs_examined},     {"piece_pairs", c.piece_pairs},
           {"apart_intervals", c.apart_intervals},   {"sliced_intervals", c.sliced_intervals},
-          {"critical_times", c.critical_times},     {"static_questions", c.static_questions}};
+          {"critical_times", c.critical_times},     {"static_questions", c.static_questions},
+          {"apart_samples", c.apart_samples}};
 }
 
 json answer_json(const Rotating_check_answer& a, const Check_options& o, bool stats, double tolerance)

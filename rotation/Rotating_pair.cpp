@@ -259,6 +259,7 @@ private:
     // each run with the features that can touch there (near_features). The
     // exact rows are made once a run is left (a miss makes none).
     Apart_cover cover(a_, b_, mid);
+    cover_ = &cover;
     std::vector<Moving_plane> rows;
     Rational sliced_to = lo;
     bool answered = cover.for_each_unsure(lo, hi, [&](const Time_piece& p) {
@@ -267,6 +268,7 @@ private:
       Pair_features near = cover.near_features(*features_, p.lo, p.hi);
       return slice(rows, p, &near);
     });
+    cover_ = nullptr;
     answer_.counts.apart_intervals += cover.proved_apart();
     end_apart_ = sliced_to < hi;
     return answered;
@@ -301,6 +303,7 @@ private:
     std::optional<Rational> sample = slices_.sample(left, right);
     if (!sample) return false;   // doubles: no double strictly between
     const Rational& s = *sample;
+    if (apart_at(s)) return false;
     ++answer_.counts.static_questions;
     Static_hit hit = probe(a_, b_, s, options_.semantics, slices_);
     if (!hit.collide) return false;
@@ -326,11 +329,23 @@ private:
 
   bool at_rational(const Rational& t)
   {
+    if (apart_at(t)) return false;
     ++answer_.counts.static_questions;
     Static_hit hit = probe(a_, b_, t, Semantics::closed, slices_);
     if (!hit.collide) return false;
     std::array<Algebraic, 4> w = with_time(hit.x, t);
     found_closed(w, hit.verified);
+    return true;
+  }
+
+  // A filter before a static question at the one time t (two convex
+  // pieces): the cover's separating plane at t alone, in intervals as tight
+  // as t is exact. Where it holds, the closed pieces are apart at t, which
+  // is the static answer "no" in both semantics, and nothing is posed.
+  bool apart_at(const Rational& t)
+  {
+    if (!cover_ || !cover_->apart_on(t, t)) return false;
+    ++answer_.counts.apart_samples;
     return true;
   }
 
@@ -363,6 +378,7 @@ private:
   bool end_apart_ = false;   // the last piece's end lies in an interval proved apart
   Rotating_answer answer_;
   std::optional<Pair_features> features_;   // two convex pieces' event minors
+  const Apart_cover* cover_ = nullptr;       // the piece's, while its runs are sliced
 };
 
 } // namespace

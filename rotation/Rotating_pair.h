@@ -45,6 +45,7 @@ struct Slice_counts {
   std::size_t sliced_intervals = 0;  // time intervals whose critical times were found
   std::size_t critical_times = 0;    // found in them
   std::size_t static_questions = 0;  // static checks at rational times
+  std::size_t apart_samples = 0;     // rational times the cover proved apart instead
 
   Slice_counts& operator+=(const Slice_counts& o)
   {
@@ -53,6 +54,7 @@ struct Slice_counts {
     sliced_intervals += o.sliced_intervals;
     critical_times += o.critical_times;
     static_questions += o.static_questions;
+    apart_samples += o.apart_samples;
     return *this;
   }
 };
