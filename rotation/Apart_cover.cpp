@@ -68,40 +68,60 @@ std::vector<Apart_cover::Point> Apart_cover::vertices_on(const Side& s, const I&
   return out;
 }
 
+const Apart_cover::Reach& Apart_cover::reach(const Side& s, std::size_t p, std::size_t k) const
+{
+  const Side& other = &s == &a_ ? b_ : a_;
+  auto& memo = reaches_[&s == &a_ ? 0 : 1];
+  if (memo.empty()) memo.assign(s.orientation.size(), std::vector<std::optional<Reach>>(other.vertices.size()));
+  std::optional<Reach>& r = memo[p][k];
+  if (r) return *r;
+  const std::array<Interval_poly, 4>& h = rows_[s.first_row + p];
+  const Point& v = other.vertices[k];
+  Interval_poly value = (h[3] + h[0] * other.origin[0] + h[1] * other.origin[1] + h[2] * other.origin[2]) * other.norm;
+  for (int c = 0; c < 3; ++c)
+    value += h[c] * (v[0] * other.rotation[c][0] + v[1] * other.rotation[c][1] + v[2] * other.rotation[c][2]);
+  if (s.orientation[p] < 0) value = -value;
+  r = Reach{value, value.derivative()};
+  return *r;
+}
+
+bool Apart_cover::outside(const Side& s, std::size_t p, const std::vector<std::array<I, 4>>& rows,
+                          const std::vector<Point>& points, std::size_t k, const I& t, const I& mid) const
+{
+  const std::array<I, 4>& h = rows[s.first_row + p];
+  const Point& x = points[k];
+  I v = h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3];
+  if (s.orientation[p] < 0) v = -v;
+  if (v.inf() > 0) return true;
+  if (v.sup() <= 0) return false;
+  const Reach& r = reach(s, p, k);
+  return (r.value.at(mid) + r.slope.at(t) * (t - mid)).inf() > 0;
+}
+
 // Row p of s, oriented outward (orientation * (n.x + e) > 0 outside),
 // with every point strictly outside: the closed convex hull of the points
 // and s's piece are then on the two sides of the plane.
-bool Apart_cover::separates(const Side& s, const std::vector<std::array<I, 4>>& rows, const std::vector<Point>& points)
+bool Apart_cover::separates(const Side& s, const std::vector<std::array<I, 4>>& rows, const std::vector<Point>& points,
+                            const I& t, const I& mid) const
 {
   for (std::size_t p = 0; p < s.orientation.size(); ++p) {
-    int o = s.orientation[p];
-    if (o == 0) continue;
-    const std::array<I, 4>& h = rows[s.first_row + p];
-    bool outside = true;
-    for (const Point& x : points) {
-      I v = h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3];
-      outside = o > 0 ? v.inf() > 0 : v.sup() < 0;
-      if (!outside) break;
-    }
-    if (outside) return true;
+    if (s.orientation[p] == 0) continue;
+    bool all = true;
+    for (std::size_t k = 0; k < points.size() && all; ++k) all = outside(s, p, rows, points, k, t, mid);
+    if (all) return true;
   }
   return false;
 }
 
 std::vector<bool> Apart_cover::far_parts(const Side& s, const std::vector<std::array<I, 4>>& rows,
-                                         const std::vector<Point>& points, const std::vector<std::vector<int>>& edges)
+                                         const std::vector<Point>& points, const std::vector<std::vector<int>>& edges,
+                                         const I& t, const I& mid) const
 {
   std::size_t n = s.orientation.size();
   std::vector<bool> outside(points.size() * n, false);   // [point * n + plane]
   for (std::size_t p = 0; p < n; ++p) {
-    int o = s.orientation[p];
-    if (o == 0) continue;
-    const std::array<I, 4>& h = rows[s.first_row + p];
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      const Point& x = points[k];
-      I v = h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3];
-      outside[k * n + p] = o > 0 ? v.inf() > 0 : v.sup() < 0;
-    }
+    if (s.orientation[p] == 0) continue;
+    for (std::size_t k = 0; k < points.size(); ++k) outside[k * n + p] = this->outside(s, p, rows, points, k, t, mid);
   }
   auto far = [&](const std::vector<int>& part) {
     for (std::size_t p = 0; p < n; ++p) {
@@ -125,10 +145,10 @@ Pair_features Apart_cover::near_features(const Pair_features& all, const Rationa
   std::vector<bool> far_a, far_b;
   {
     CGAL::Protect_FPU_rounding<true> upward;
-    I t(enclosing_interval(lo).first, enclosing_interval(hi).second);
+    auto [t, mid] = times(lo, hi);
     std::vector<std::array<I, 4>> rows = rows_on(t);
-    far_a = far_parts(b_, rows, vertices_on(a_, t), a_.edges);
-    far_b = far_parts(a_, rows, vertices_on(b_, t), b_.edges);
+    far_a = far_parts(b_, rows, vertices_on(a_, t), a_.edges, t, mid);
+    far_b = far_parts(a_, rows, vertices_on(b_, t), b_.edges, t, mid);
   }
   for (std::size_t f = 0; f < all.minors.size(); ++f) {
     auto [pa, pb] = all.parts[f];
@@ -143,9 +163,16 @@ bool Apart_cover::apart_on(const Rational& lo, const Rational& hi) const
 {
   if (a_.vertices.empty() || b_.vertices.empty()) return false;
   CGAL::Protect_FPU_rounding<true> upward;
-  I t(enclosing_interval(lo).first, enclosing_interval(hi).second);
+  auto [t, mid] = times(lo, hi);
   std::vector<std::array<I, 4>> rows = rows_on(t);
-  return separates(a_, rows, vertices_on(b_, t)) || separates(b_, rows, vertices_on(a_, t));
+  return separates(a_, rows, vertices_on(b_, t), t, mid) || separates(b_, rows, vertices_on(a_, t), t, mid);
+}
+
+std::pair<Apart_cover::I, Apart_cover::I> Apart_cover::times(const Rational& lo, const Rational& hi)
+{
+  I t(enclosing_interval(lo).first, enclosing_interval(hi).second);
+  double m = t.inf() + (t.sup() - t.inf()) / 2;   // rounded: kept only if it lies in t
+  return {t, I(t.inf() <= m && m <= t.sup() ? m : t.inf())};
 }
 
 } // namespace clash4d
