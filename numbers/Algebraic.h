@@ -47,8 +47,9 @@ public:
   static Algebraic root_between(const std::vector<Rational>& p, const Rational& lo, const Rational& hi);
   static Algebraic root_between(const std::vector<mpz_class>& p, const Rational& lo, const Rational& hi);
   // num(r) / den(r), den(r) != 0: an element of the field Q(r) as a number
-  // of its own (its minimal polynomial a factor of a resultant, and its
-  // root chosen by enclosure: Algebraic.cpp).
+  // of its own (for a quadratic r, a + b r read off the field element;
+  // otherwise its minimal polynomial a factor of a resultant, and its root
+  // chosen by enclosure: Algebraic.cpp).
   static Algebraic quotient_at(const Algebraic& r, const std::vector<Rational>& num, const std::vector<Rational>& den);
   static Algebraic quotient_at(const Algebraic& r, const std::vector<mpz_class>& num, const std::vector<mpz_class>& den);
   // The same element as a polynomial in r of degree below r's (its

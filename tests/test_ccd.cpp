@@ -677,7 +677,8 @@ BOOST_AUTO_TEST_CASE(fixtures_answer_as_derived)
 // modulo r's minimal polynomial, is 0), of r's degree when alpha is
 // irrational (2 and 3 are prime), and it is alpha and not a conjugate:
 // its double is alpha's, evaluated in long double at r's, and mu changes
-// sign across its interval.
+// sign across its interval. And a quotient that is a rational c by
+// construction, (c D + m L) / D, is c.
 BOOST_AUTO_TEST_CASE(quotients_at_a_root_are_those_numbers)
 {
   std::uint64_t seed = env_number("CLASH4D_SEED", 20261202);
@@ -696,7 +697,7 @@ BOOST_AUTO_TEST_CASE(quotients_at_a_root_are_those_numbers)
     }
     return a;
   };
-  int irrational = 0, quadratic = 0;
+  int irrational = 0, quadratic = 0, disguised_rationals = 0;
   for (int i = 0; i < 300; ++i) {
     auto roots = Algebraic::real_roots(small_poly(i % 3 == 2 ? 2 : 3), Rational(-8), Rational(8));
     for (const Algebraic& r : roots) {
@@ -739,8 +740,21 @@ BOOST_AUTO_TEST_CASE(quotients_at_a_root_are_those_numbers)
       }
       irrational += !q.is_rational();
       quadratic += !q.is_rational() && r.polynomial().size() == 3;
+      // A rational made to look otherwise: (c D + m L)(r) / D(r) = c, since
+      // m(r) = 0 (for a quadratic r the field element is the constant c,
+      // read off without a resultant: Algebraic_access::field_quotient; for
+      // a cubic, the resultant's linear factor).
+      Rational c(static_cast<int>(draw.range(-9, 9)), static_cast<int>(draw.range(1, 4)));
+      std::vector<Rational> l = small_poly(1), disguised(std::max(den.size(), m.size() + l.size() - 1), Rational(0));
+      for (std::size_t k = 0; k < den.size(); ++k) disguised[k] += c * den[k];
+      for (std::size_t a = 0; a < m.size(); ++a)
+        for (std::size_t b = 0; b < l.size(); ++b) disguised[a + b] += m[a] * l[b];
+      Algebraic same = Algebraic::quotient_at(r, disguised, den);
+      BOOST_TEST((same.is_rational() && same.rational() == c), "root " << r.to_text() << ": " << same.to_text() << " != " << c);
+      ++disguised_rationals;
     }
   }
   BOOST_TEST(irrational > 50);
   BOOST_TEST(quadratic > 20);
+  BOOST_TEST(disguised_rationals > 50);
 }
