@@ -376,10 +376,8 @@ struct Algebraic_access {
   // The root of one of R's irreducible factors that N(r) / D(r) is.
   static Algebraic root_of_factor(const fmpz_poly_struct* R, const Algebraic& r, const fmpz_poly_struct* n,
                                   const fmpz_poly_struct* d);
-  // N(r) / D(r) read off the field element for a quadratic r: a rational,
-  // or a + b r; none for other degrees.
-  static std::optional<Algebraic> field_quotient(const Algebraic& r, const fmpz_poly_struct* n,
-                                                 const fmpz_poly_struct* d, const fmpz_poly_struct* m);
+  // a + b r, b != 0, for a quadratic r, as a number of its own.
+  static Algebraic linear_image(const Algebraic& r, const Rational& a, const Rational& b);
 };
 
 Algebraic Algebraic::irrational(std::vector<mpz_class> poly, const Rational& lo, const Rational& hi)
@@ -684,8 +682,8 @@ std::vector<Rational> Algebraic::field_element(const Algebraic& r, const std::ve
 // rational arithmetic), factored (fmpz_poly_factor), and the factor and
 // root are the one alpha's enclosure (Arb, over r's interval) meets alone,
 // certified: a sign change across the enclosure and a derivative whose
-// enclosure excludes zero. Before that, field_quotient answers every
-// alpha of a quadratic r without a resultant.
+// enclosure excludes zero. A quadratic r takes no resultant: alpha is
+// read off the field element (linear_image).
 Algebraic Algebraic::quotient_at(const Algebraic& r, const std::vector<Rational>& num, const std::vector<Rational>& den)
 {
   if (r.is_rational()) return Algebraic(field_element(r, num, den)[0]);
@@ -704,42 +702,17 @@ Algebraic Algebraic::quotient_at(const Algebraic& r, const std::vector<Rational>
   return quotient_at(r, scaled(num), scaled(den));
 }
 
-// alpha = N(r) / D(r) for a quadratic r as the field element N D^-1 mod m
-// (m r's minimal polynomial, D^-1 by the extended gcd, as field_element):
-// a rational when the element is a constant, and otherwise alpha = a + b
-// r, b != 0, which has the minimal polynomial b^2 m((X - a) / b),
-// of degree 2 and irreducible as m is, and the open interval a + b (lo, hi)
-// of r's isolating interval holds alpha and not its conjugate a + b r'
-// (X = a + b t is one to one and r' is outside (lo, hi)), with rational
-// ends that are no roots. No resultant is made or factored then: a
-// contact coordinate at a quadratic t* is one such (the box hit of
-// clash4d_fcl_bench --family rotation has two rational ones of three).
-// Other degrees take the resultant as before: for the CCD queries' cubic
-// times the field element would be a cost first (it seldom is rational).
-std::optional<Algebraic> Algebraic_access::field_quotient(const Algebraic& r, const fmpz_poly_struct* n,
-                                                          const fmpz_poly_struct* d, const fmpz_poly_struct* m)
+// alpha = a + b r, b != 0, r quadratic with minimal polynomial m: alpha
+// has the minimal polynomial b^2 m((X - a) / b), of degree 2 and
+// irreducible as m is, and the open interval a + b (lo, hi) of r's
+// isolating interval holds alpha and not its conjugate a + b r' (X = a + b
+// t is one to one and r' is outside (lo, hi)), with rational ends that
+// are no roots. No resultant is made or factored: a contact coordinate at
+// a quadratic t* is one such (quotient_at).
+Algebraic Algebraic_access::linear_image(const Algebraic& r, const Rational& a, const Rational& b)
 {
-  if (fmpz_poly_degree(m) != 2) return std::nullopt;
-  Fmpq_poly N, D, M, g, s, t, alpha;
-  fmpq_poly_set_fmpz_poly(N.p, n);
-  fmpq_poly_set_fmpz_poly(D.p, d);
-  fmpq_poly_set_fmpz_poly(M.p, m);
-  fmpq_poly_rem(N.p, N.p, M.p);
-  fmpq_poly_rem(D.p, D.p, M.p);
-  if (fmpq_poly_is_zero(D.p)) return std::nullopt;   // D(r) = 0: the caller's to refuse
-  fmpq_poly_xgcd(g.p, s.p, t.p, D.p, M.p);
-  mul_mod(alpha.p, N.p, s.p, M.p);
-  slong length = fmpq_poly_length(alpha.p);
-  auto coefficient = [&](slong i) {
-    Fmpq c;
-    fmpq_poly_get_coeff_fmpq(c.q, alpha.p, i);
-    return from_fmpq(c.q);
-  };
-  if (length <= 1) return Algebraic(length == 0 ? Rational(0) : coefficient(0));
-  Rational a = coefficient(0), b = coefficient(1);
-  mpz_class c[3];
-  for (slong i = 0; i < 3; ++i) fmpz_poly_get_coeff_mpz(c[i].get_mpz_t(), m, i);
-  Rational c0(c[0].get_mpz_t()), c1(c[1].get_mpz_t()), c2(c[2].get_mpz_t());
+  const std::vector<mpz_class>& m = r.rep_->poly;
+  Rational c0(m[0].get_mpz_t()), c1(m[1].get_mpz_t()), c2(m[2].get_mpz_t());
   // b^2 m((X - a) / b) = c2 (X - a)^2 + c1 b (X - a) + c0 b^2.
   std::vector<Rational> p = {c2 * a * a - c1 * b * a + c0 * b * b, c1 * b - Rational(2) * a * c2, c2};
   Fmpz_poly P;
@@ -751,18 +724,21 @@ std::optional<Algebraic> Algebraic_access::field_quotient(const Algebraic& r, co
 
 Algebraic Algebraic::quotient_at(const Algebraic& r, const std::vector<mpz_class>& num, const std::vector<mpz_class>& den)
 {
-  if (r.is_rational()) {
+  // A rational r, or a quadratic one: the field element (one number, or
+  // a + b r) says it all. Other degrees take the resultant below: for the
+  // CCD queries' cubic times the field element would be a cost first.
+  if (r.is_rational() || r.rep_->poly.size() == 3) {
     std::vector<Rational> n(num.size()), d(den.size());
     for (std::size_t i = 0; i < num.size(); ++i) n[i] = Rational(num[i].get_mpz_t());
     for (std::size_t i = 0; i < den.size(); ++i) d[i] = Rational(den[i].get_mpz_t());
-    return Algebraic(field_element(r, n, d)[0]);
+    std::vector<Rational> e = field_element(r, n, d);
+    return e.size() == 1 ? Algebraic(e[0]) : Algebraic_access::linear_image(r, e[0], e[1]);
   }
   Fmpz_poly n, d_, m;
   for (std::size_t i = 0; i < num.size(); ++i) fmpz_poly_set_coeff_mpz(n.p, static_cast<slong>(i), num[i].get_mpz_t());
   for (std::size_t i = 0; i < den.size(); ++i) fmpz_poly_set_coeff_mpz(d_.p, static_cast<slong>(i), den[i].get_mpz_t());
   for (std::size_t i = 0; i < r.rep_->poly.size(); ++i)
     fmpz_poly_set_coeff_mpz(m.p, static_cast<slong>(i), r.rep_->poly[i].get_mpz_t());
-  if (std::optional<Algebraic> x = Algebraic_access::field_quotient(r, n.p, d_.p, m.p)) return *x;
   // The points X avoid the one where D X - N drops below its degree in t
   // (the resultant's value there is not R's).
   slong degree = fmpz_poly_degree(m.p), k = std::max(fmpz_poly_degree(n.p), fmpz_poly_degree(d_.p));

@@ -118,15 +118,15 @@ std::vector<bool> Apart_cover::far_parts(const Side& s, const std::vector<std::a
                                          const I& t, const I& mid) const
 {
   std::size_t n = s.orientation.size();
-  std::vector<bool> outside(points.size() * n, false);   // [point * n + plane]
+  std::vector<bool> beyond(points.size() * n, false);   // [point * n + plane]
   for (std::size_t p = 0; p < n; ++p) {
     if (s.orientation[p] == 0) continue;
-    for (std::size_t k = 0; k < points.size(); ++k) outside[k * n + p] = this->outside(s, p, rows, points, k, t, mid);
+    for (std::size_t k = 0; k < points.size(); ++k) beyond[k * n + p] = outside(s, p, rows, points, k, t, mid);
   }
   auto far = [&](const std::vector<int>& part) {
     for (std::size_t p = 0; p < n; ++p) {
       bool all = true;
-      for (int k : part) all = all && outside[k * n + p];
+      for (int k : part) all = all && beyond[k * n + p];
       if (all) return true;
     }
     return false;

@@ -742,7 +742,7 @@ BOOST_AUTO_TEST_CASE(quotients_at_a_root_are_those_numbers)
       quadratic += !q.is_rational() && r.polynomial().size() == 3;
       // A rational made to look otherwise: (c D + m L)(r) / D(r) = c, since
       // m(r) = 0 (for a quadratic r the field element is the constant c,
-      // read off without a resultant: Algebraic_access::field_quotient; for
+      // read off without a resultant: Algebraic_access::linear_image; for
       // a cubic, the resultant's linear factor).
       Rational c(static_cast<int>(draw.range(-9, 9)), static_cast<int>(draw.range(1, 4)));
       std::vector<Rational> l = small_poly(1), disguised(std::max(den.size(), m.size() + l.size() - 1), Rational(0));
