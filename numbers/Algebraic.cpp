@@ -2,6 +2,7 @@
 
 #include "numbers/Interval_isolation.h"
 #include "numbers/Polynomial.h"
+#include "numbers/Quadratic_element.h"
 #include <CGAL/FPU.h>
 #include <cmath>
 #include <optional>
@@ -376,8 +377,6 @@ struct Algebraic_access {
   // The root of one of R's irreducible factors that N(r) / D(r) is.
   static Algebraic root_of_factor(const fmpz_poly_struct* R, const Algebraic& r, const fmpz_poly_struct* n,
                                   const fmpz_poly_struct* d);
-  // a + b r, b != 0, for a quadratic r, as a number of its own.
-  static Algebraic linear_image(const Algebraic& r, const Rational& a, const Rational& b);
 };
 
 Algebraic Algebraic::irrational(std::vector<mpz_class> poly, const Rational& lo, const Rational& hi)
@@ -683,10 +682,14 @@ std::vector<Rational> Algebraic::field_element(const Algebraic& r, const std::ve
 // root are the one alpha's enclosure (Arb, over r's interval) meets alone,
 // certified: a sign change across the enclosure and a derivative whose
 // enclosure excludes zero. A quadratic r takes no resultant: alpha is
-// read off the field element (linear_image).
+// read off Q(r) (Quadratic_element, linear_image).
 Algebraic Algebraic::quotient_at(const Algebraic& r, const std::vector<Rational>& num, const std::vector<Rational>& den)
 {
   if (r.is_rational()) return Algebraic(field_element(r, num, den)[0]);
+  if (r.rep_->poly.size() == 3) {
+    Quadratic_element field(r);
+    return (field.at(num) / field.at(den)).value();
+  }
   // num and den over one common denominator: integers, the same quotient.
   std::vector<Rational> both = num;
   both.insert(both.end(), den.begin(), den.end());
@@ -709,8 +712,10 @@ Algebraic Algebraic::quotient_at(const Algebraic& r, const std::vector<Rational>
 // t is one to one and r' is outside (lo, hi)), with rational ends that
 // are no roots. No resultant is made or factored: a contact coordinate at
 // a quadratic t* is one such (quotient_at).
-Algebraic Algebraic_access::linear_image(const Algebraic& r, const Rational& a, const Rational& b)
+Algebraic Algebraic::linear_image(const Algebraic& r, const Rational& a, const Rational& b)
 {
+  if (CGAL::is_zero(b)) return Algebraic(a);
+  if (r.is_rational() || r.rep_->poly.size() != 3) throw std::logic_error("Algebraic::linear_image: r is not a quadratic irrational");
   const std::vector<mpz_class>& m = r.rep_->poly;
   Rational c0(m[0].get_mpz_t()), c1(m[1].get_mpz_t()), c2(m[2].get_mpz_t());
   // b^2 m((X - a) / b) = c2 (X - a)^2 + c1 b (X - a) + c0 b^2.
@@ -724,15 +729,18 @@ Algebraic Algebraic_access::linear_image(const Algebraic& r, const Rational& a, 
 
 Algebraic Algebraic::quotient_at(const Algebraic& r, const std::vector<mpz_class>& num, const std::vector<mpz_class>& den)
 {
-  // A rational r, or a quadratic one: the field element (one number, or
-  // a + b r) says it all. Other degrees take the resultant below: for the
+  // A rational r: one number. A quadratic one: a + b r, made in Q(r)
+  // (Quadratic_element). Other degrees take the resultant below: for the
   // CCD queries' cubic times the field element would be a cost first.
-  if (r.is_rational() || r.rep_->poly.size() == 3) {
+  if (r.is_rational()) {
     std::vector<Rational> n(num.size()), d(den.size());
     for (std::size_t i = 0; i < num.size(); ++i) n[i] = Rational(num[i].get_mpz_t());
     for (std::size_t i = 0; i < den.size(); ++i) d[i] = Rational(den[i].get_mpz_t());
-    std::vector<Rational> e = field_element(r, n, d);
-    return e.size() == 1 ? Algebraic(e[0]) : Algebraic_access::linear_image(r, e[0], e[1]);
+    return Algebraic(field_element(r, n, d)[0]);
+  }
+  if (r.rep_->poly.size() == 3) {
+    Quadratic_element field(r);
+    return (field.at(num) / field.at(den)).value();
   }
   Fmpz_poly n, d_, m;
   for (std::size_t i = 0; i < num.size(); ++i) fmpz_poly_set_coeff_mpz(n.p, static_cast<slong>(i), num[i].get_mpz_t());

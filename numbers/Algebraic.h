@@ -57,6 +57,10 @@ public:
   // check in Q(r) reads.
   static std::vector<Rational> field_element(const Algebraic& r, const std::vector<Rational>& num,
                                              const std::vector<Rational>& den);
+  // a + b r, r an irrational root of a quadratic, as a number of its own:
+  // the rational a when b = 0 (numbers/Quadratic_element.h makes such
+  // elements).
+  static Algebraic linear_image(const Algebraic& r, const Rational& a, const Rational& b);
 
   bool is_rational() const { return !rep_; }
   const Rational& rational() const { return value_; }   // when is_rational()

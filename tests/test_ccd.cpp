@@ -13,6 +13,7 @@
 #include "ccd/Ccd_reader.h"
 #include "exact/Ccd_filtered_kernel.h"
 #include "exact/Ccd_instantiation.h"
+#include "numbers/Quadratic_element.h"
 #include "float/Ccd_double_instantiation.h"
 #include "scene/Input_error.h"
 #include "scene/Number_text.h"
@@ -670,6 +671,17 @@ BOOST_AUTO_TEST_CASE(fixtures_answer_as_derived)
   }
 }
 
+namespace {
+// A polynomial of this degree with small random rational coefficients
+// (numerators in [-9, 9], denominators in [1, 4]).
+std::vector<Rational> small_rational_poly(Random_draw& draw, int degree)
+{
+  std::vector<Rational> p;
+  for (int i = 0; i <= degree; ++i) p.emplace_back(static_cast<int>(draw.range(-9, 9)), static_cast<int>(draw.range(1, 4)));
+  return p;
+}
+} // namespace
+
 // Algebraic::quotient_at (the printed u and v, and a turning pair's
 // contact point at a quadratic t*): on seeded cubic and quadratic roots r
 // and quotients alpha = N(r) / D(r), its minimal polynomial mu has
@@ -684,11 +696,7 @@ BOOST_AUTO_TEST_CASE(quotients_at_a_root_are_those_numbers)
   std::uint64_t seed = env_number("CLASH4D_SEED", 20261202);
   BOOST_TEST_MESSAGE("quotients at roots: seed " << seed);
   Random_draw draw(seed);
-  auto small_poly = [&](int degree) {
-    std::vector<Rational> p;
-    for (int i = 0; i <= degree; ++i) p.emplace_back(static_cast<int>(draw.range(-9, 9)), static_cast<int>(draw.range(1, 4)));
-    return p;
-  };
+  auto small_poly = [&](int degree) { return small_rational_poly(draw, degree); };
   auto remainder = [](std::vector<Rational> a, const std::vector<Rational>& m) {   // a mod m, m's leading term non-zero
     while (a.size() >= m.size()) {
       Rational f = a.back() / m.back();
@@ -757,4 +765,54 @@ BOOST_AUTO_TEST_CASE(quotients_at_a_root_are_those_numbers)
   BOOST_TEST(irrational > 50);
   BOOST_TEST(quadratic > 20);
   BOOST_TEST(disguised_rationals > 50);
+}
+
+// Quadratic_element (numbers/Quadratic_element.h: Q(r) for a quadratic r,
+// in integers) against FLINT's field arithmetic (Algebraic::field_element:
+// an extended gcd modulo r's minimal polynomial m): on seeded quadratic
+// roots r and polynomials g, h, the element g(r) / h(r) is the number
+// a + b r of field_element's (a, b); g(r) h(r) and g(r) - h(r) are those
+// of the polynomials g h and g - h; m(r) is 0, and a default element is
+// 0 in any field.
+BOOST_AUTO_TEST_CASE(quadratic_elements_are_flints_field_elements)
+{
+  std::uint64_t seed = env_number("CLASH4D_SEED", 20261206);
+  BOOST_TEST_MESSAGE("quadratic elements: seed " << seed);
+  Random_draw draw(seed);
+  auto small_poly = [&](int degree) { return small_rational_poly(draw, degree); };
+  auto number = [](const Algebraic& r, const std::vector<Rational>& e) {
+    return e.size() == 1 ? Algebraic(e[0]) : Algebraic::linear_image(r, e[0], e[1]);
+  };
+  int irrational = 0, checked = 0;
+  for (int i = 0; i < 200; ++i) {
+    for (const Algebraic& r : Algebraic::real_roots(small_poly(2), Rational(-8), Rational(8))) {
+      if (r.is_rational()) continue;
+      Quadratic_element field(r);
+      std::vector<Rational> g = small_poly(static_cast<int>(draw.range(0, 6))), h = small_poly(static_cast<int>(draw.range(0, 6)));
+      std::vector<Rational> product(g.size() + h.size() - 1, Rational(0)), difference(std::max(g.size(), h.size()), Rational(0));
+      for (std::size_t a = 0; a < g.size(); ++a)
+        for (std::size_t b = 0; b < h.size(); ++b) product[a + b] += g[a] * h[b];
+      for (std::size_t a = 0; a < g.size(); ++a) difference[a] += g[a];
+      for (std::size_t b = 0; b < h.size(); ++b) difference[b] -= h[b];
+      std::vector<Rational> m;
+      for (const mpz_class& c : r.polynomial()) m.emplace_back(c.get_mpz_t());
+      BOOST_TEST_CONTEXT("root " << r.to_text())
+      {
+        BOOST_TEST(field.at(m).is_zero());
+        BOOST_TEST(field.at(r.polynomial()).is_zero());
+        BOOST_TEST(((field.at(g) * field.at(h)).value() == number(r, Algebraic::field_element(r, product, {Rational(1)}))));
+        BOOST_TEST(((field.at(g) - field.at(h)).value() == number(r, Algebraic::field_element(r, difference, {Rational(1)}))));
+        BOOST_TEST(((Quadratic_element() + field.at(g)).value() == field.at(g).value()));
+        if (r.sign_of(h) != CGAL::ZERO) {
+          std::vector<Rational> e = Algebraic::field_element(r, g, h);
+          Algebraic q = (field.at(g) / field.at(h)).value();
+          BOOST_TEST((q == number(r, e)), q.to_text() << " != " << number(r, e).to_text());
+          irrational += !q.is_rational();
+          ++checked;
+        }
+      }
+    }
+  }
+  BOOST_TEST(checked > 100);
+  BOOST_TEST(irrational > 80);
 }
