@@ -45,12 +45,16 @@ int sign_of(const FT& x)
 // until it returns true: first the triples of the rows `first` names (the
 // planes of the minors that vanish at t*, where the contact is: a handful
 // of rows instead of every triple of the pair's), then every other triple
-// in order. not_vertex(i, j, k, side), a filter, may say early that a
-// triple is surely not one (side: w's side of each plane); the triples it
-// passes are decided in FT, so it changes no answer.
-template <class FT, class Found, class Not_vertex>
+// in order. filter(i, j, k, side) (side: w's side of each plane), may say
+// early that a triple surely is one (Cell_filter::vertex: planes of
+// nonzero sides, independent, meeting on w's side of every other plane) or
+// surely is not (Cell_filter::not_vertex); the triples it leaves
+// (Cell_filter::unknown) are decided in FT, so it changes no answer.
+enum class Cell_filter { not_vertex, unknown, vertex };
+
+template <class FT, class Found, class Filter>
 void cell_vertices(const std::vector<std::array<FT, 4>>& rows, const std::array<FT, 3>& w, Found found,
-                   Not_vertex not_vertex, std::vector<int> first = {})
+                   Filter filter, std::vector<int> first = {})
 {
   std::size_t m = rows.size();
   auto value = [&](std::size_t i, const std::array<FT, 3>& x) {
@@ -61,7 +65,9 @@ void cell_vertices(const std::vector<std::array<FT, 4>>& rows, const std::array<
   // True once found(i, j, k) has said so.
   auto vertex = [&](std::size_t i, std::size_t j, std::size_t k) {
     if (!side[i] || !side[j] || !side[k]) return false;
-    if (not_vertex(i, j, k, side)) return false;
+    Cell_filter sure = filter(i, j, k, side);
+    if (sure == Cell_filter::not_vertex) return false;
+    if (sure == Cell_filter::vertex) return found(static_cast<int>(i), static_cast<int>(j), static_cast<int>(k));
     FT d = det3(rows[i], rows[j], rows[k]);
     if (sign_of(d) == 0) return false;
     std::array<FT, 3> x = cramer_point(rows[i], rows[j], rows[k], d);
@@ -86,7 +92,8 @@ void cell_vertices(const std::vector<std::array<FT, 4>>& rows, const std::array<
 template <class FT, class Found>
 void cell_vertices(const std::vector<std::array<FT, 4>>& rows, const std::array<FT, 3>& w, Found found)
 {
-  cell_vertices(rows, w, found, [](std::size_t, std::size_t, std::size_t, const std::vector<int>&) { return false; });
+  cell_vertices(rows, w, found,
+                [](std::size_t, std::size_t, std::size_t, const std::vector<int>&) { return Cell_filter::unknown; });
 }
 
 } // namespace clash4d

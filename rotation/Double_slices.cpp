@@ -230,7 +230,7 @@ std::array<Algebraic, 3> Double_slices::contact_point(const std::vector<Moving_p
     double d = det3(at_t[i], at_t[j], at_t[k]);
     if (d != 0) x = cramer_point(at_t[i], at_t[j], at_t[k], d);
     return x && finite(*x);
-  }, [](std::size_t, std::size_t, std::size_t, const std::vector<int>&) { return false; }, near_rows);
+  }, [](std::size_t, std::size_t, std::size_t, const std::vector<int>&) { return Cell_filter::unknown; }, near_rows);
   if (x && finite(*x)) return exact_point(*x);
   if (at_sample && finite(*at_sample)) return exact_point(*at_sample);
   return {Algebraic(w[0]), Algebraic(w[1]), Algebraic(w[2])};

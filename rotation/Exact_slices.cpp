@@ -1,7 +1,9 @@
 #include "rotation/Exact_slices.h"
 
+#include "numbers/Quadratic_element.h"
 #include "rotation/Cell_vertices.h"
 #include "rotation/Central_topes.h"
+#include "rotation/Interval_cell.h"
 #include "rotation/Rotating_pair.h"
 #include "rotation/Simplest_rational.h"
 
@@ -162,6 +164,22 @@ std::optional<std::array<Rational, 3>> meeting_point_at(const std::vector<Moving
   return cramer_point(r[0], r[1], r[2], d);
 }
 
+// The same at an irrational quadratic t (the usual irrational t* of a
+// turning pair): Cramer's rule on the planes' values in Q(t), a few
+// products where the quotients as polynomials (meeting_quotients, then
+// quotient_at) make 4 minors of degree 6 and read each at t.
+std::optional<std::array<Algebraic, 3>> meeting_point_in(const Quadratic_element& field,
+                                                         const std::vector<Moving_plane>& rows, std::array<int, 3> ids)
+{
+  std::array<std::array<Quadratic_element, 4>, 3> r;
+  for (int k = 0; k < 3; ++k)
+    for (int c = 0; c < 4; ++c) r[k][c] = field.at(rows[ids[k]][c].coefficients());
+  Quadratic_element d = det3(r[0], r[1], r[2]);
+  if (d.is_zero()) return std::nullopt;
+  std::array<Quadratic_element, 3> x = cramer_point(r[0], r[1], r[2], d);
+  return std::array<Algebraic, 3>{x[0].value(), x[1].value(), x[2].value()};
+}
+
 // Whether the point lies in the closed object whose planes are rows[offset
 // ...]: in some convex piece of it (a union of bounded convex pieces), all
 // rows <= 0.
@@ -254,38 +272,6 @@ std::optional<Quotient_point> common_point_at(const std::vector<Moving_plane>& r
   return std::nullopt;
 }
 
-// The filter of "the planes i, j, k meet in a vertex of w's cell" (one
-// predicate, Cell_vertices.h): the rows enclosed in intervals once; a
-// triple whose enclosed point is surely on the wrong side of some plane is
-// surely not a vertex. Any other triple is decided exactly.
-class Interval_cell {
-public:
-  using I = CGAL::Interval_nt<false>;
-
-  explicit Interval_cell(const std::vector<std::array<Rational, 4>>& rows)
-  {
-    CGAL::Protect_FPU_rounding<true> upward;
-    for (const auto& r : rows) rows_.push_back(enclosed(r));
-  }
-
-  bool operator()(std::size_t i, std::size_t j, std::size_t k, const std::vector<int>& side) const
-  {
-    CGAL::Protect_FPU_rounding<true> upward;
-    I d = det3(rows_[i], rows_[j], rows_[k]);
-    if (!(d.inf() > 0 || d.sup() < 0)) return false;
-    std::array<I, 3> x = cramer_point(rows_[i], rows_[j], rows_[k], d);
-    for (std::size_t l = 0; l < rows_.size(); ++l) {
-      if (l == i || l == j || l == k) continue;
-      const auto& h = rows_[l];
-      I v = h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3];
-      if (side[l] > 0 ? v.sup() < 0 : side[l] < 0 && v.inf() > 0) return true;
-    }
-    return false;
-  }
-
-private:
-  std::vector<std::array<I, 4>> rows_;
-};
 
 } // namespace
 
@@ -321,18 +307,21 @@ std::array<Algebraic, 3> Exact_slices::contact_point(const std::vector<Moving_pl
   at.reserve(rows.size());
   for (const Moving_plane& h : rows) at.push_back(plane_at(h, s));
   Interval_cell filter(at);
+  std::optional<Quadratic_element> field;
+  if (!t_star.is_rational() && t_star.polynomial().size() == 3) field.emplace(t_star);
   std::optional<std::array<Algebraic, 3>> x;
   cell_vertices(
       at, w,
       [&](int i, int j, int k) {
-        // At a rational t* where the three planes stay independent the
-        // limit is their meeting point there (the same quotients, evaluated
-        // first): no polynomial is made.
+        // At a rational or quadratic t* where the three planes stay
+        // independent the limit is their meeting point there (the same
+        // quotients, evaluated first): no polynomial is made.
         if (t_star.is_rational())
           if (auto p = meeting_point_at(rows, {i, j, k}, t_star.rational())) {
             x = std::array<Algebraic, 3>{Algebraic((*p)[0]), Algebraic((*p)[1]), Algebraic((*p)[2])};
             return true;
           }
+        if (field && (x = meeting_point_in(*field, rows, {i, j, k}))) return true;
         Quotient_point q = meeting_quotients(rows[i], rows[j], rows[k]);
         x = limit_at(q.num, q.den, t_star);
         return x.has_value();

@@ -82,18 +82,25 @@ std::array<Rational, 4> plane_at(const Moving_plane& h, const Rational& t)
     for (int c = 0; c < 4; ++c) out[c] = h[c].at(t);
     return out;
   }
-  // sum c_i n^i d^(k - i), k = size - 1: d^k p(n / d).
+  // sum c_i n^i d^(k - i), k = size - 1: d^k p(n / d), with the weights
+  // n^i d^(k - i) made once for the four polynomials.
   mpz_srcptr n = mpq_numref(t.mpq()), d = mpq_denref(t.mpq());
-  std::vector<mpz_class> n_power(size), d_power(size);
-  for (int i = 0; i < size; ++i) {
-    n_power[i] = i == 0 ? mpz_class(1) : mpz_class(n_power[i - 1] * mpz_class(n));
-    d_power[i] = i == 0 ? mpz_class(1) : mpz_class(d_power[i - 1] * mpz_class(d));
+  std::vector<mpz_class> weight(size);
+  mpz_class d_power = 1;
+  for (int i = size; i-- > 0;) {
+    weight[i] = d_power;
+    d_power *= mpz_class(d);
+  }
+  mpz_class n_power = 1;
+  for (int i = 1; i < size; ++i) {
+    n_power *= mpz_class(n);
+    weight[i] *= n_power;
   }
   for (int c = 0; c < 4; ++c) {
-    mpz_class v = 0;
+    Rational v;   // a new number: written through mpq(), an integer
     for (int i = 0; i < h[c].size(); ++i)
-      v += mpz_class(mpq_numref(h[c][i].mpq())) * n_power[i] * d_power[size - 1 - i];
-    out[c] = Rational(v.get_mpz_t());
+      mpz_addmul(mpq_numref(v.mpq()), mpq_numref(h[c][i].mpq()), weight[i].get_mpz_t());
+    out[c] = v;
   }
   return out;
 }
