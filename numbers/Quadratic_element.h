@@ -5,9 +5,10 @@
 // fraction to reduce. A turning pair's irrational t* is mostly such a root
 // (the reach of a turning vertex is quadratic in t: docs/rotation.md), and
 // a point read at t* (Cramer's quotients of three planes) is a few integer
-// products and one conjugate here, where the general path makes minors of
-// degree 6 and an extended gcd in FLINT per coordinate
-// (Algebraic::quotient_at, field_element).
+// products and one conjugate here, where the quotients as polynomials
+// are minors of degree 6, each read at t* by an extended gcd in FLINT
+// (Algebraic::field_element). Algebraic::quotient_at at a quadratic root
+// is made here too.
 #ifndef CLASH4D_NUMBERS_QUADRATIC_ELEMENT_H
 #define CLASH4D_NUMBERS_QUADRATIC_ELEMENT_H
 
