@@ -372,6 +372,9 @@ void primitive_integer_poly(Fmpz_poly& out, const std::vector<Rational>& p)
 // The work on FLINT's types, with Algebraic's representation at hand.
 struct Algebraic_access {
   static std::vector<Algebraic> real_roots(const fmpz_poly_struct* f, const Rational& a, const Rational& b);
+  static std::vector<Algebraic> quadratic_roots(const fmpz_poly_struct* f, const Rational& a, const Rational& b);
+  static void irreducible_roots(const fmpz_poly_struct* g, const Rational& a, const Rational& b,
+                                std::vector<Algebraic>& out);
   static Algebraic root_between(const fmpz_poly_struct* f, const Rational& lo, const Rational& hi);
   static CGAL::Sign sign_of(const Algebraic& x, const fmpq_poly_struct* g);
   // The root of one of R's irreducible factors that N(r) / D(r) is.
@@ -463,8 +466,51 @@ std::vector<Algebraic> Algebraic::real_roots_rational_first(const std::vector<mp
 {
   Fmpz_poly f;
   primitive_integer_poly(f, p);
+  if (fmpz_poly_degree(f.p) == 2) return Algebraic_access::quadratic_roots(f.p, a, b);
   if (auto rational = rational_roots(f.p, a, b)) return *rational;
   return Algebraic_access::real_roots(f.p, a, b);
+}
+
+// f = c2 t^2 + c1 t + c0 with D = c1^2 - 4 c0 c2: no real root when D < 0;
+// rational roots (-c1 +- sqrt D) / (2 c2) when D is a square (an exact
+// integer root); otherwise f has no rational root, so it is irreducible
+// over Q and its roots are isolated as any irreducible factor's. A
+// turning pair's critical times are mostly such roots; no factoring, and
+// no rational tried first.
+std::vector<Algebraic> Algebraic_access::quadratic_roots(const fmpz_poly_struct* f, const Rational& a,
+                                                         const Rational& b)
+{
+  mpz_class c[3];
+  for (int i = 0; i < 3; ++i) fmpz_get_mpz(c[i].get_mpz_t(), f->coeffs + i);
+  mpz_class D = c[1] * c[1] - 4 * c[0] * c[2];
+  std::vector<Algebraic> out;
+  if (sgn(D) < 0) return out;
+  if (!mpz_perfect_square_p(D.get_mpz_t())) {
+    irreducible_roots(f, a, b, out);
+    return out;
+  }
+  mpz_class root;
+  mpz_sqrt(root.get_mpz_t(), D.get_mpz_t());
+  for (int s : {-1, 1}) {
+    Rational x = quotient_of_integers(-c[1] + s * root, 2 * c[2]);
+    if (!(x < a) && !(b < x) && (out.empty() || out.back().rational() != x)) out.emplace_back(x);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The roots in [a, b] of g, irreducible of degree 2 or more, ascending:
+// isolated in doubles where that certifies them, else by Arb.
+void Algebraic_access::irreducible_roots(const fmpz_poly_struct* g, const Rational& a, const Rational& b,
+                                         std::vector<Algebraic>& out)
+{
+  std::vector<mpz_class> poly = normal_coefficients(g);
+  auto isolated = isolate_in_doubles(g, a, b);
+  if (!isolated) isolated = isolate_real_roots(g);
+  for (const auto& [lo, hi] : isolated->intervals) {
+    Algebraic x = Algebraic::irrational(poly, lo, hi);
+    if (compare(x, a) >= 0 && compare(x, b) <= 0) out.push_back(std::move(x));
+  }
 }
 
 std::vector<Algebraic> Algebraic_access::real_roots(const fmpz_poly_struct* f, const Rational& a, const Rational& b)
@@ -481,13 +527,7 @@ std::vector<Algebraic> Algebraic_access::real_roots(const fmpz_poly_struct* f, c
       if (!(root < a) && !(b < root)) out.emplace_back(root);
       continue;
     }
-    std::vector<mpz_class> poly = normal_coefficients(g);
-    auto isolated = isolate_in_doubles(g, a, b);
-    if (!isolated) isolated = isolate_real_roots(g);
-    for (const auto& [lo, hi] : isolated->intervals) {
-      Algebraic x = Algebraic::irrational(poly, lo, hi);
-      if (compare(x, a) >= 0 && compare(x, b) <= 0) out.push_back(std::move(x));
-    }
+    irreducible_roots(g, a, b, out);
   }
   fmpz_poly_factor_clear(fac);
   std::sort(out.begin(), out.end());

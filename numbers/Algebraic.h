@@ -34,9 +34,11 @@ public:
   static std::vector<Algebraic> real_roots(const std::vector<Rational>& p, const Rational& a, const Rational& b);
   static std::vector<Algebraic> real_roots(const std::vector<mpz_class>& p, const Rational& a, const Rational& b);
   // The same, for callers whose roots are often simple fractions (a
-  // turning pair's critical times: contacts at t = 1/4): when every root
-  // near [a, b] is a double or a simple fraction, found without factoring
-  // p (isolation in doubles, then exact signs); otherwise as real_roots.
+  // turning pair's critical times: contacts at t = 1/4): a quadratic by
+  // its discriminant (rational roots when it is a square, else p is
+  // irreducible); otherwise, when every root near [a, b] is a double or a
+  // simple fraction, found without factoring p (isolation in doubles, then
+  // exact signs); otherwise as real_roots.
   // Where roots are mostly irrational (the CCD queries' cubics) the first
   // step is a cost: 12% on the CCD bench's rational column.
   static std::vector<Algebraic> real_roots_rational_first(const std::vector<mpz_class>& p, const Rational& a,

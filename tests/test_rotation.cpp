@@ -1542,7 +1542,8 @@ BOOST_AUTO_TEST_CASE(real_roots_of_products_of_known_factors)
 // when D is a square; otherwise two irrational roots whose minimal
 // polynomial is the quadratic made primitive with a positive leading
 // coefficient, each one a root of it alone in its interval (a sign change
-// there), at the doubles (-b +- sqrt D) / 2a. root_between gives the same.
+// there), at the doubles (-b +- sqrt D) / 2a. root_between, and
+// real_roots_rational_first (by the discriminant), give the same.
 BOOST_AUTO_TEST_CASE(real_roots_of_quadratics_are_the_formula)
 {
   std::uint64_t seed = stage_tests::env_number("CLASH4D_SEED", 5656);
@@ -1558,6 +1559,11 @@ BOOST_AUTO_TEST_CASE(real_roots_of_quadratics_are_the_formula)
     {
       std::vector<Rational> p = {Rational(k * c), Rational(k * b), Rational(k * a)};
       std::vector<Algebraic> got = Algebraic::real_roots(p, Rational(-40), Rational(40));
+      // The critical times' path (by the discriminant) finds the same.
+      std::vector<Algebraic> first =
+          Algebraic::real_roots_rational_first({mpz_class(k * c), mpz_class(k * b), mpz_class(k * a)}, Rational(-40), Rational(40));
+      BOOST_TEST_REQUIRE(first.size() == got.size());
+      for (std::size_t i = 0; i < got.size(); ++i) BOOST_TEST((first[i] == got[i]), first[i].to_text() << " against " << got[i].to_text());
       long disc = b * b - 4 * a * c;
       if (disc < 0) {
         BOOST_TEST(got.empty());
