@@ -75,27 +75,27 @@ public:
   // from lo's and hi's intervals (a sure enclosure of the exact piece).
   // Only the rows `used` marks are enclosed (all when it is empty): the
   // others are never asked about. at_[0] is [lo, hi] whole, at_[1 ..
-  // pieces] its pieces.
+  // pieces] its pieces; a row is evaluated on the pieces only when a minor
+  // that [lo, hi] whole leaves unsure asks for it (pieces_of).
   Interval_rows(const std::vector<Moving_plane>& planes, const Rational& lo, const Rational& hi,
                 const std::vector<bool>& used = {})
-      : middle_((lo + hi) / 2)
+      : middle_((lo + hi) / 2), rows_(planes.size()), on_pieces_(planes.size(), false)
   {
     CGAL::Protect_FPU_rounding<true> upward;
     auto wanted = [&](std::size_t r) { return used.empty() || used[r]; };
-    std::vector<std::array<Interval_poly, 4>> rows(planes.size());
     for (std::size_t r = 0; r < planes.size(); ++r)
       if (wanted(r)) {
         const Moving_plane& h = planes[r];
-        rows[r] = {enclosed(h[0]), enclosed(h[1]), enclosed(h[2]), enclosed(h[3])};
+        rows_[r] = {enclosed(h[0]), enclosed(h[1]), enclosed(h[2]), enclosed(h[3])};
       }
     I low(enclosing_interval(lo)), width = I(enclosing_interval(hi)) - low;
-    at_.assign(pieces + 1, std::vector<std::array<I, 4>>(rows.size(), {I(0), I(0), I(0), I(0)}));
     for (int k = 0; k <= pieces; ++k) {
       I from = k == 0 ? low : low + width * I(k - 1) / I(pieces), to = k == 0 ? low + width : low + width * I(k) / I(pieces);
-      I t(from.inf(), to.sup());
-      for (std::size_t r = 0; r < rows.size(); ++r)
-        if (wanted(r)) at_[k][r] = {rows[r][0].at(t), rows[r][1].at(t), rows[r][2].at(t), rows[r][3].at(t)};
+      times_[k] = I(from.inf(), to.sup());
     }
+    at_.assign(pieces + 1, std::vector<std::array<I, 4>>(rows_.size(), {I(0), I(0), I(0), I(0)}));
+    for (std::size_t r = 0; r < rows_.size(); ++r)
+      if (wanted(r)) at_[0][r] = row_on(r, 0);
   }
 
   // Whether the minor of these rows (four, or three with v_inf: -1 last)
@@ -122,6 +122,7 @@ public:
   Minor_state piece_state(const Minor_rows& m) const
   {
     CGAL::Protect_FPU_rounding<true> upward;
+    if (changes_sign(m)) return Minor_state::unsure;
     return state_on(m, 1, pieces + 1);
   }
 
@@ -159,10 +160,55 @@ private:
     bool pieces_made = false;
   };
 
+  // Row r's coefficients enclosed on times_[k] (under the caller's
+  // rounding guard).
+  std::array<I, 4> row_on(std::size_t r, int k) const
+  {
+    const I& t = times_[k];
+    return {rows_[r][0].at(t), rows_[r][1].at(t), rows_[r][2].at(t), rows_[r][3].at(t)};
+  }
+
+  // Whether the minor is surely of opposite signs at lo and at hi: then it
+  // has a root between them (a polynomial), every cover of [lo, hi] has a
+  // piece whose value holds 0, and no piece's value is exactly 0 (the
+  // minor is not the zero polynomial), so the pieces would say unsure: the
+  // turning hits' contact minors, whose pieces were most of this filter's
+  // cost. Under the caller's rounding guard.
+  bool changes_sign(const Minor_rows& m) const
+  {
+    I a = minor_at(m, times_[1].inf()), b = minor_at(m, times_[pieces].sup());
+    return (a.inf() > 0 && b.sup() < 0) || (a.sup() < 0 && b.inf() > 0);
+  }
+
+  // The minor enclosed at the time t, from the rows alone (no cache).
+  I minor_at(const Minor_rows& m, double t) const
+  {
+    auto [i, j, k, l] = m;
+    auto at = [&](int r) {
+      return std::array<I, 4>{rows_[r][0].at(I(t)), rows_[r][1].at(I(t)), rows_[r][2].at(I(t)), rows_[r][3].at(I(t))};
+    };
+    std::array<I, 4> ri = at(i), rj = at(j), rk = at(k);
+    if (l < 0) return normal_minor(ri, rj, rk);
+    std::array<I, 4> rl = at(l);
+    return rj[3] * normal_minor(ri, rk, rl) - ri[3] * normal_minor(rj, rk, rl) + rl[3] * normal_minor(ri, rj, rk) -
+           rk[3] * normal_minor(ri, rj, rl);
+  }
+
+  // Rows i, j, k and l (l < 0: none) evaluated on every piece, once each.
+  void pieces_of(const Minor_rows& m) const
+  {
+    for (int r : m)
+      if (r >= 0 && !on_pieces_[r]) {
+        for (int k = 1; k <= pieces; ++k) at_[k][r] = row_on(r, k);
+        on_pieces_[r] = true;
+      }
+  }
+
   // The minor's state on at_[from .. to): the whole interval, or its pieces.
   Minor_state state_on(const Minor_rows& m, int from, int to) const
   {
     bool apart = true, on_pieces = from > 0;
+    if (on_pieces) pieces_of(m);
     auto [i, j, k, l] = m;
     if (l < 0) {
       const Normals& d = normals(i, j, k, on_pieces);
@@ -207,7 +253,10 @@ private:
   }
 
   Rational middle_;
-  std::vector<std::vector<std::array<I, 4>>> at_;     // [whole, then each piece][row]
+  std::vector<std::array<Interval_poly, 4>> rows_;   // each row's coefficients enclosed
+  std::array<I, pieces + 1> times_;                  // [lo, hi] whole, then each piece
+  mutable std::vector<std::vector<std::array<I, 4>>> at_;   // [time][row]: pieces made by pieces_of
+  mutable std::vector<bool> on_pieces_;                      // row r's pieces made
   mutable std::unordered_map<std::uint64_t, Normals> normals_;   // by (i, j, k), 21 bits each
 };
 

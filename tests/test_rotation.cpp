@@ -9,6 +9,8 @@
 #include "float/Double_instantiation.h"
 #include "rotation/Apart_cover.h"
 #include "rotation/Central_topes.h"
+#include "rotation/Critical_times.h"
+#include "rotation/Pair_minors.h"
 #include "rotation/Interval_cell.h"
 #include "rotation/Rotating_check.h"
 #include "rotation/Shape_planes.h"
@@ -1301,6 +1303,76 @@ BOOST_AUTO_TEST_CASE(interval_cell_filter_agrees_with_the_exact_vertices)
   BOOST_TEST(answers[Cell_filter::not_vertex] >= 200);
   BOOST_TEST(answers[Cell_filter::unknown] >= 50);
   BOOST_TEST(exact_sides >= 200);
+}
+
+// The critical-time filter (Critical_times.cpp, Interval_rows: [lo, hi]
+// whole, a sign change between its ends, then 32 pieces) leaves out only
+// minors with no root in (lo, hi): on random turning convex pairs, the
+// critical times are the distinct roots in (lo, hi) of every mixed minor,
+// made here in integers with no filter (enumerate_pair_minors, every minor
+// taken) and each root-isolated by FLINT. Floors on the times found and on
+// the intervals with one keep the test from passing where there is none.
+BOOST_AUTO_TEST_CASE(critical_times_are_every_mixed_minors_roots)
+{
+  std::uint64_t seed = stage_tests::env_number("CLASH4D_SEED", 9393);
+  int cases = 40;
+  if (const char* s = std::getenv("CLASH4D_ROTATION_CASES")) cases = std::max(1, std::atoi(s) / 6);
+  BOOST_TEST_MESSAGE("critical times: seed " << seed << " (CLASH4D_SEED), " << cases << " scenes");
+  struct Every_minor {
+    bool settled(const Minor_rows&) const { return false; }
+  };
+  struct Minors {
+    std::set<std::vector<mpz_class>> distinct;
+    void add(const Integer_poly& p, const Minor_rows&)
+    {
+      std::vector<mpz_class> c = p.coefficients();
+      if (!c.empty()) distinct.insert(c);
+    }
+  };
+  Random_draw r(seed);
+  int asked = 0, with_times = 0;
+  std::size_t times = 0;
+  for (int i = 0; i < cases; ++i) {
+    Scene scene = parse_scene(random_turning_convex_pair(r));
+    Rotating_object a = Rotating_object::make(scene.objects[0]), b = Rotating_object::make(scene.objects[1]);
+    for (int k = 0; k < 3; ++k) {
+      Rational lo(static_cast<int>(r.range(0, 47)), 16);
+      Rational hi = lo + Rational(static_cast<int>(r.range(1, 8)), 16 << static_cast<int>(r.range(0, 3)));
+      Rational at = (lo + hi) / 2;
+      const Pose_segment &sa = segment_at(a.segments, at), &sb = segment_at(b.segments, at);
+      if (!sa.holds(lo) || !sa.holds(hi) || !sb.holds(lo) || !sb.holds(hi)) continue;
+      ++asked;
+      std::vector<Moving_plane> rows = pair_rows(a, b, at);
+      std::size_t first = a.shape.planes.size();
+      Critical_times filtered(rows, first, lo, hi, false);
+      std::vector<std::array<Integer_poly, 4>> integer_rows;
+      for (const Moving_plane& h : rows) {
+        mpz_class d;
+        integer_rows.push_back(integer_polys(h, d));
+      }
+      Minors minors;
+      enumerate_pair_minors(integer_rows, static_cast<int>(first), false, Every_minor{}, minors);
+      std::vector<Algebraic> roots;
+      for (const std::vector<mpz_class>& p : minors.distinct)
+        for (Algebraic& t : Algebraic::real_roots(p, lo, hi))
+          if (compare(t, lo) > 0 && compare(t, hi) < 0) roots.push_back(std::move(t));
+      std::sort(roots.begin(), roots.end(), [](const Algebraic& x, const Algebraic& y) { return x < y; });
+      roots.erase(std::unique(roots.begin(), roots.end(), [](const Algebraic& x, const Algebraic& y) { return compare(x, y) == 0; }),
+                  roots.end());
+      const std::vector<Critical_time>& found = filtered.times();
+      BOOST_TEST_CONTEXT("seed " << seed << " case " << i << " on [" << lo << ", " << hi << "]")
+      {
+        BOOST_TEST(found.size() == roots.size());
+        for (std::size_t n = 0; n < std::min(found.size(), roots.size()); ++n) BOOST_TEST(compare(found[n].t, roots[n]) == 0);
+      }
+      times += found.size();
+      with_times += found.empty() ? 0 : 1;
+    }
+  }
+  BOOST_TEST_MESSAGE("critical times: " << asked << " intervals, " << with_times << " with critical times, " << times
+                                        << " times");
+  BOOST_TEST(asked >= cases);
+  BOOST_TEST(with_times >= cases / 4);
 }
 
 BOOST_AUTO_TEST_CASE(apart_cover_proves_only_what_is_apart)
