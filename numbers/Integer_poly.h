@@ -64,6 +64,8 @@ public:
     fmpz_poly_get_coeff_mpz(c.get_mpz_t(), p_, i);
     return c;
   }
+  // The coefficient of t^i written into x (no number made).
+  void coefficient_into(int i, mpz_ptr x) const { fmpz_poly_get_coeff_mpz(x, p_, i); }
   std::vector<mpz_class> coefficients() const
   {
     std::vector<mpz_class> c(size());

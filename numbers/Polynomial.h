@@ -33,6 +33,15 @@ public:
     resize(static_cast<int>(c.size()));
     std::copy(c.begin(), c.end(), c_.begin());
   }
+  // The same, taking the numbers over (GMP's: none is made again).
+  explicit Polynomial(std::vector<FT>&& c)
+  {
+    if (c.size() > static_cast<std::size_t>(Capacity))
+      throw std::logic_error("Polynomial: more coefficients than the capacity");
+    size_ = static_cast<int>(c.size());
+    if constexpr (owns_memory) c_ = std::move(c);
+    else std::copy(c.begin(), c.end(), c_.begin());
+  }
   // c0 + c1 t: a coordinate moving linearly.
   Polynomial(const FT& c0, const FT& c1)
   {

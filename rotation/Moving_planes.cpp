@@ -43,7 +43,7 @@ std::vector<Moving_plane> planes_under(const std::vector<Plane3<Rational>>& plan
       mpz_class dn = L * D * D, de = dn * E;
       out.push_back({divided(h[0], dn), divided(h[1], dn), divided(h[2], dn), divided(h[3], de)});
     } else {
-      out.push_back({rational_poly(E * h[0]), rational_poly(E * h[1]), rational_poly(E * h[2]), rational_poly(h[3])});
+      out.push_back({rational_poly(h[0], E), rational_poly(h[1], E), rational_poly(h[2], E), rational_poly(h[3])});
     }
   }
   return out;
@@ -61,12 +61,15 @@ std::vector<Moving_plane> integer_moving_planes(const std::vector<Plane3<Rationa
   return planes_under<false>(planes, s);
 }
 
-Time_poly rational_poly(const Integer_time_poly& p)
+Time_poly rational_poly(const Integer_time_poly& p, const mpz_class& factor)
 {
-  std::vector<Rational> c;
-  c.reserve(p.size());
-  for (int i = 0; i < p.size(); ++i) c.emplace_back(CGAL::Gmpz(p[i].get_mpz_t()));
-  return Time_poly(c);
+  std::vector<Rational> c(p.size());   // new numbers: written through mpq(), integers
+  for (int i = 0; i < p.size(); ++i) {
+    mpz_ptr x = mpq_numref(c[i].mpq());
+    p.coefficient_into(i, x);
+    if (factor != 1) mpz_mul(x, x, factor.get_mpz_t());
+  }
+  return Time_poly(std::move(c));
 }
 
 std::array<Rational, 4> plane_at(const Moving_plane& h, const Rational& t)

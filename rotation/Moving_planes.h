@@ -54,8 +54,8 @@ std::array<Integer_time_poly, N> integer_polys(const std::array<Time_poly, N>& p
   return out;
 }
 
-// p over the rationals (no fraction to reduce).
-Time_poly rational_poly(const Integer_time_poly& p);
+// p times factor over the rationals (no fraction to reduce).
+Time_poly rational_poly(const Integer_time_poly& p, const mpz_class& factor = 1);
 
 // Each plane of planes (shape coordinates) under segment s.
 std::vector<Moving_plane> moving_planes(const std::vector<Plane3<Rational>>& planes, const Pose_segment& s);
