@@ -6,6 +6,8 @@
 #ifndef CLASH4D_ROTATION_CELL_VERTICES_H
 #define CLASH4D_ROTATION_CELL_VERTICES_H
 
+#include "numbers/Rational.h"
+
 #include <algorithm>
 #include <array>
 #include <vector>
@@ -40,6 +42,18 @@ int sign_of(const FT& x)
   return x < FT(0) ? -1 : FT(0) < x ? 1 : 0;
 }
 
+// The side of x of the plane h: sign(h_0 x_0 + h_1 x_1 + h_2 x_2 + h_3);
+// in rationals without reducing the sum (numbers/Rational.h).
+template <class FT>
+int side_of(const std::array<FT, 4>& h, const std::array<FT, 3>& x)
+{
+  return sign_of(h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3]);
+}
+inline int side_of(const std::array<Rational, 4>& h, const std::array<Rational, 3>& x)
+{
+  return sign_of_sum_of_products(h.data(), x.data(), 3, &h[3]);
+}
+
 // rows: each plane's (n, e) at the time; w: a point on no plane. Calls
 // found(i, j, k) for each vertex of the closure of w's cell, i < j < k,
 // until it returns true: first the triples of the rows `first` names (the
@@ -57,11 +71,8 @@ void cell_vertices(const std::vector<std::array<FT, 4>>& rows, const std::array<
                    Filter filter, std::vector<int> first = {})
 {
   std::size_t m = rows.size();
-  auto value = [&](std::size_t i, const std::array<FT, 3>& x) {
-    return rows[i][0] * x[0] + rows[i][1] * x[1] + rows[i][2] * x[2] + rows[i][3];
-  };
   std::vector<int> side(m);
-  for (std::size_t i = 0; i < m; ++i) side[i] = sign_of(value(i, w));
+  for (std::size_t i = 0; i < m; ++i) side[i] = side_of(rows[i], w);
   // True once found(i, j, k) has said so.
   auto vertex = [&](std::size_t i, std::size_t j, std::size_t k) {
     if (!side[i] || !side[j] || !side[k]) return false;
@@ -72,7 +83,7 @@ void cell_vertices(const std::vector<std::array<FT, 4>>& rows, const std::array<
     if (sign_of(d) == 0) return false;
     std::array<FT, 3> x = cramer_point(rows[i], rows[j], rows[k], d);
     for (std::size_t l = 0; l < m; ++l)
-      if (side[l] * sign_of(value(l, x)) < 0) return false;
+      if (side[l] * side_of(rows[l], x) < 0) return false;
     return found(static_cast<int>(i), static_cast<int>(j), static_cast<int>(k));
   };
   std::sort(first.begin(), first.end());
