@@ -22,8 +22,9 @@ public:
   Polynomial() = default;
   explicit Polynomial(const FT& c0)
   {
-    resize(1);
-    c_[0] = c0;
+    size_ = 1;
+    if constexpr (owns_memory) c_ = {c0};   // copies: no number made first
+    else c_[0] = c0;
   }
   // c[0] + c[1] t + ...: at most Capacity coefficients.
   explicit Polynomial(const std::vector<FT>& c)
@@ -45,9 +46,13 @@ public:
   // c0 + c1 t: a coordinate moving linearly.
   Polynomial(const FT& c0, const FT& c1)
   {
-    resize(2);
-    c_[0] = c0;
-    c_[1] = c1;
+    size_ = 2;
+    if constexpr (owns_memory) {
+      c_ = {c0, c1};
+    } else {
+      c_[0] = c0;
+      c_[1] = c1;
+    }
   }
 
   // The coefficients stored; the degree is at most size() - 1 (a leading

@@ -15,6 +15,7 @@ Time_poly constant(const Rational& v) { return Time_poly(v); }
 // coordinate between two pose times.
 Time_poly between(const Rational& v0, const Rational& v1, const Rational& t0, const Rational& t1)
 {
+  if (v0 == v1) return Time_poly(v0, Rational(0));   // the same numbers, with no arithmetic
   Rational slope = (v1 - v0) / (t1 - t0);
   return Time_poly(v0 - slope * t0, slope);
 }
