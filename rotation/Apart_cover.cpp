@@ -71,18 +71,19 @@ std::vector<Apart_cover::Point> Apart_cover::vertices_on(const Side& s, const I&
 const Apart_cover::Reach& Apart_cover::reach(const Side& s, std::size_t p, std::size_t k) const
 {
   const Side& other = &s == &a_ ? b_ : a_;
-  auto& memo = reaches_[&s == &a_ ? 0 : 1];
-  if (memo.empty()) memo.assign(s.orientation.size(), std::vector<std::optional<Reach>>(other.vertices.size()));
-  std::optional<Reach>& r = memo[p][k];
-  if (r) return *r;
+  std::vector<int>& index = reach_index_[&s == &a_ ? 0 : 1];
+  if (index.empty()) index.assign(s.orientation.size() * other.vertices.size(), -1);
+  int& at = index[p * other.vertices.size() + k];
+  if (at >= 0) return reach_store_[static_cast<std::size_t>(at)];
   const std::array<Interval_poly, 4>& h = rows_[s.first_row + p];
   const Point& v = other.vertices[k];
   Interval_poly value = (h[3] + h[0] * other.origin[0] + h[1] * other.origin[1] + h[2] * other.origin[2]) * other.norm;
   for (int c = 0; c < 3; ++c)
     value += h[c] * (v[0] * other.rotation[c][0] + v[1] * other.rotation[c][1] + v[2] * other.rotation[c][2]);
   if (s.orientation[p] < 0) value = -value;
-  r = Reach{value, value.derivative()};
-  return *r;
+  at = static_cast<int>(reach_store_.size());
+  reach_store_.push_back(Reach{value, value.derivative()});
+  return reach_store_.back();
 }
 
 bool Apart_cover::outside(const Side& s, std::size_t p, const std::vector<std::array<I, 4>>& rows,

@@ -17,6 +17,7 @@
 #include "rotation/Rotating_pair.h"
 #include <CGAL/Interval_nt.h>
 #include <array>
+#include <deque>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -183,8 +184,11 @@ private:
   std::vector<std::array<Interval_poly, 4>> rows_;
   Side a_, b_;
   // Reaches made so far (a memo, not a state): b's vertices past a's
-  // planes, then a's past b's, by [plane][vertex].
-  mutable std::array<std::vector<std::vector<std::optional<Reach>>>, 2> reaches_;
+  // planes, then a's past b's, each pair [plane * vertices + vertex] an
+  // index into reach_store_ (-1: not made yet), so that only the few the
+  // cover asks for are made (a deque: references to them stay valid).
+  mutable std::array<std::vector<int>, 2> reach_index_;
+  mutable std::deque<Reach> reach_store_;
   mutable std::size_t proved_apart_ = 0;   // a count for --stats, not a state
 };
 
