@@ -9,7 +9,7 @@ Quadratic_element::Quadratic_element(const Algebraic& r)
   if (r.is_rational() || r.polynomial().size() != 3)
     throw std::logic_error("Quadratic_element: r is not a quadratic irrational");
   const std::vector<mpz_class>& m = r.polynomial();
-  field_ = std::make_shared<const Field>(Field{r, m[0], m[1], m[2]});
+  field_ = std::make_shared<const Field>(Field{r, m[0], m[1], m[2], m[0] * m[2]});
 }
 
 const Quadratic_element::Field& Quadratic_element::field() const
@@ -18,34 +18,51 @@ const Quadratic_element::Field& Quadratic_element::field() const
   return *field_;
 }
 
-Quadratic_element Quadratic_element::horner(const std::vector<mpz_class>& g, const mpz_class& L) const
+Quadratic_element Quadratic_element::horner(const mpz_srcptr* g, std::size_t n, const mpz_class& L) const
 {
   const Field& f = field();
-  mpz_class A = 0, B = 0, scale = 1;   // scale = c2^(k - i)
-  for (std::size_t i = g.size(); i-- > 0;) {
-    // (A + B s) s = -B c0 c2 + (A - B c1) s.
-    mpz_class next_A = -B * f.c0 * f.c2 + g[i] * scale;
-    B = A - B * f.c1;
-    A = std::move(next_A);
+  mpz_class A = 0, B = 0, scale = 1, next_B;   // scale = c2^(k - i)
+  for (std::size_t i = n; i-- > 0;) {
+    // (A + B s) s = -B c0 c2 + (A - B c1) s, then + g_i c2^(k - i).
+    next_B = A - B * f.c1;
+    mpz_mul(A.get_mpz_t(), g[i], scale.get_mpz_t());
+    A -= B * f.c0_c2;
+    B.swap(next_B);
     if (i > 0) scale *= f.c2;
   }
   // Now A + B s = c2^k g(r) L, k = deg g (the last scale, c2^k).
-  return {field_, A, B, scale * L};
+  return {field_, std::move(A), std::move(B), scale * L};
 }
 
-Quadratic_element Quadratic_element::at(const std::vector<mpz_class>& g) const { return horner(g, mpz_class(1)); }
-
-Quadratic_element Quadratic_element::at(const std::vector<Rational>& g) const
+Quadratic_element Quadratic_element::at(const std::vector<mpz_class>& g) const
 {
-  mpz_class L = 1;
-  for (const Rational& c : g) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), mpq_denref(c.mpq()));
-  std::vector<mpz_class> G(g.size());
-  for (std::size_t i = 0; i < g.size(); ++i) {
-    mpz_divexact(G[i].get_mpz_t(), L.get_mpz_t(), mpq_denref(g[i].mpq()));
-    G[i] *= mpz_class(mpq_numref(g[i].mpq()));
-  }
-  return horner(G, L);
+  std::vector<mpz_srcptr> G(g.size());
+  for (std::size_t i = 0; i < g.size(); ++i) G[i] = g[i].get_mpz_t();
+  return horner(G.data(), G.size(), mpz_class(1));
 }
+
+Quadratic_element Quadratic_element::at(const Rational* g, std::size_t n) const
+{
+  // Integers (a turning pair's rows): their numerators, nothing made.
+  std::vector<mpz_srcptr> G(n);
+  bool integers = true;
+  for (std::size_t i = 0; i < n && integers; ++i) {
+    G[i] = mpq_numref(g[i].mpq());
+    integers = mpz_cmp_ui(mpq_denref(g[i].mpq()), 1) == 0;
+  }
+  if (integers) return horner(G.data(), n, mpz_class(1));
+  mpz_class L = 1;
+  for (std::size_t i = 0; i < n; ++i) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), mpq_denref(g[i].mpq()));
+  std::vector<mpz_class> numerators(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    mpz_divexact(numerators[i].get_mpz_t(), L.get_mpz_t(), mpq_denref(g[i].mpq()));
+    numerators[i] *= mpz_class(mpq_numref(g[i].mpq()));
+    G[i] = numerators[i].get_mpz_t();
+  }
+  return horner(G.data(), n, L);
+}
+
+Quadratic_element Quadratic_element::at(const std::vector<Rational>& g) const { return at(g.data(), g.size()); }
 
 Algebraic Quadratic_element::value() const
 {
@@ -68,14 +85,14 @@ Quadratic_element operator*(const Quadratic_element& x, const Quadratic_element&
   if (x.B_ == 0 || y.B_ == 0) return {field, x.A_ * y.A_, x.A_ * y.B_ + x.B_ * y.A_, d};
   const Quadratic_element::Field& f = *field;
   mpz_class BD = x.B_ * y.B_;
-  return {field, x.A_ * y.A_ - BD * f.c0 * f.c2, x.A_ * y.B_ + x.B_ * y.A_ - BD * f.c1, d};
+  return {field, x.A_ * y.A_ - BD * f.c0_c2, x.A_ * y.B_ + x.B_ * y.A_ - BD * f.c1, d};
 }
 
 Quadratic_element Quadratic_element::inverse() const
 {
   if (is_zero()) throw std::logic_error("Quadratic_element: division by zero");
   const Field& f = field();
-  mpz_class norm = A_ * A_ - f.c1 * A_ * B_ + f.c0 * f.c2 * B_ * B_;
+  mpz_class norm = A_ * A_ - f.c1 * A_ * B_ + f.c0_c2 * B_ * B_;
   return {field_, d_ * (A_ - B_ * f.c1), -d_ * B_, norm};
 }
 

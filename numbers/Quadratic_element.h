@@ -32,6 +32,8 @@ public:
   // sum g_i c2^(k - i) s^i, k = deg g.
   Quadratic_element at(const std::vector<Rational>& g) const;
   Quadratic_element at(const std::vector<mpz_class>& g) const;
+  // The same on g[0 .. n).
+  Quadratic_element at(const Rational* g, std::size_t n) const;
 
   bool is_zero() const { return A_ == 0 && B_ == 0; }   // r is irrational
   // The element as a number: the rational a when it is one, else the root
@@ -54,6 +56,7 @@ private:
   struct Field {
     Algebraic r;
     mpz_class c0, c1, c2;
+    mpz_class c0_c2;   // c0 c2: s^2 = -c1 s - c0 c2
   };
   Quadratic_element(std::shared_ptr<const Field> field, mpz_class A, mpz_class B, mpz_class d)
     : field_(std::move(field)), A_(std::move(A)), B_(std::move(B)), d_(std::move(d)) {}
@@ -63,8 +66,9 @@ private:
   }
   const Field& field() const;   // throws on an element of no field
   static Quadratic_element sum(const Quadratic_element& x, const Quadratic_element& y, int sign);
-  // g over its common denominator L: integers, then Horner.
-  Quadratic_element horner(const std::vector<mpz_class>& g, const mpz_class& L) const;
+  // g(r) L for the integers g[0 .. n) (g over its common denominator L),
+  // by Horner.
+  Quadratic_element horner(const mpz_srcptr* g, std::size_t n, const mpz_class& L) const;
 
   std::shared_ptr<const Field> field_;
   mpz_class A_ = 0, B_ = 0, d_ = 1;   // d != 0

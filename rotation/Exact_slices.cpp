@@ -173,7 +173,10 @@ std::optional<std::array<Algebraic, 3>> meeting_point_in(const Quadratic_element
 {
   std::array<std::array<Quadratic_element, 4>, 3> r;
   for (int k = 0; k < 3; ++k)
-    for (int c = 0; c < 4; ++c) r[k][c] = field.at(rows[ids[k]][c].coefficients());
+    for (int c = 0; c < 4; ++c) {
+      const Time_poly& g = rows[ids[k]][c];
+      r[k][c] = field.at(g.size() > 0 ? &g[0] : nullptr, static_cast<std::size_t>(g.size()));
+    }
   Quadratic_element d = det3(r[0], r[1], r[2]);
   if (d.is_zero()) return std::nullopt;
   std::array<Quadratic_element, 3> x = cramer_point(r[0], r[1], r[2], d);
@@ -303,9 +306,7 @@ std::array<Algebraic, 3> Exact_slices::contact_point(const std::vector<Moving_pl
                                                      const std::array<Rational, 3>& w, const Rational& s,
                                                      const Algebraic& t_star, const std::vector<int>& near_rows) const
 {
-  std::vector<std::array<Rational, 4>> at;
-  at.reserve(rows.size());
-  for (const Moving_plane& h : rows) at.push_back(plane_at(h, s));
+  std::vector<std::array<Rational, 4>> at = planes_at(rows, s);
   Interval_cell filter(at);
   std::optional<Quadratic_element> field;
   if (!t_star.is_rational() && t_star.polynomial().size() == 3) field.emplace(t_star);
