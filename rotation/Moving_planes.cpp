@@ -72,7 +72,40 @@ Time_poly rational_poly(const Integer_time_poly& p, const mpz_class& factor)
   return Time_poly(std::move(c));
 }
 
-std::array<Rational, 4> plane_at(const Moving_plane& h, const Rational& t)
+namespace {
+
+// The weights n^i d^(k - i) of d^k p(n / d), t = n / d, for each length
+// k + 1 of the polynomials read at t: made once per length, and shared by
+// all the rows read at t (planes_at).
+class Weights_at {
+public:
+  explicit Weights_at(const Rational& t) : n_(mpq_numref(t.mpq())), d_(mpq_denref(t.mpq())) {}
+
+  const std::vector<mpz_class>& of(int size)
+  {
+    if (static_cast<int>(by_size_.size()) <= size) by_size_.resize(size + 1);
+    std::vector<mpz_class>& weight = by_size_[size];
+    if (!weight.empty() || size == 0) return weight;
+    weight.resize(size);
+    mpz_class d_power = 1;
+    for (int i = size; i-- > 0;) {
+      weight[i] = d_power;
+      d_power *= d_;
+    }
+    mpz_class n_power = 1;
+    for (int i = 1; i < size; ++i) {
+      n_power *= n_;
+      weight[i] *= n_power;
+    }
+    return weight;
+  }
+
+private:
+  mpz_class n_, d_;
+  std::vector<std::vector<mpz_class>> by_size_;
+};
+
+std::array<Rational, 4> plane_at(const Moving_plane& h, const Rational& t, Weights_at& weights)
 {
   int size = 0;
   bool integers = true;
@@ -85,26 +118,31 @@ std::array<Rational, 4> plane_at(const Moving_plane& h, const Rational& t)
     for (int c = 0; c < 4; ++c) out[c] = h[c].at(t);
     return out;
   }
-  // sum c_i n^i d^(k - i), k = size - 1: d^k p(n / d), with the weights
-  // n^i d^(k - i) made once for the four polynomials.
-  mpz_srcptr n = mpq_numref(t.mpq()), d = mpq_denref(t.mpq());
-  std::vector<mpz_class> weight(size);
-  mpz_class d_power = 1;
-  for (int i = size; i-- > 0;) {
-    weight[i] = d_power;
-    d_power *= mpz_class(d);
-  }
-  mpz_class n_power = 1;
-  for (int i = 1; i < size; ++i) {
-    n_power *= mpz_class(n);
-    weight[i] *= n_power;
-  }
+  // sum c_i n^i d^(k - i), k = size - 1: d^k p(n / d).
+  const std::vector<mpz_class>& weight = weights.of(size);
   for (int c = 0; c < 4; ++c) {
     Rational v;   // a new number: written through mpq(), an integer
     for (int i = 0; i < h[c].size(); ++i)
       mpz_addmul(mpq_numref(v.mpq()), mpq_numref(h[c][i].mpq()), weight[i].get_mpz_t());
     out[c] = v;
   }
+  return out;
+}
+
+} // namespace
+
+std::array<Rational, 4> plane_at(const Moving_plane& h, const Rational& t)
+{
+  Weights_at weights(t);
+  return plane_at(h, t, weights);
+}
+
+std::vector<std::array<Rational, 4>> planes_at(const std::vector<Moving_plane>& rows, const Rational& t)
+{
+  Weights_at weights(t);
+  std::vector<std::array<Rational, 4>> out;
+  out.reserve(rows.size());
+  for (const Moving_plane& h : rows) out.push_back(plane_at(h, t, weights));
   return out;
 }
 

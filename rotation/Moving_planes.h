@@ -71,6 +71,8 @@ std::vector<Moving_plane> integer_moving_planes(const std::vector<Plane3<Rationa
 // integers with no fraction reduced. The same half-space either way, so
 // the same sides and meeting points.
 std::array<Rational, 4> plane_at(const Moving_plane& h, const Rational& t);
+// plane_at of every row, the same numbers, with the powers of t made once.
+std::vector<std::array<Rational, 4>> planes_at(const std::vector<Moving_plane>& rows, const Rational& t);
 
 // The row's value at the point x and time t: n(t).x + e(t).
 Rational plane_value(const Moving_plane& h, const std::array<Rational, 3>& x, const Rational& t);
