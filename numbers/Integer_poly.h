@@ -64,6 +64,8 @@ public:
     fmpz_poly_get_coeff_mpz(c.get_mpz_t(), p_, i);
     return c;
   }
+  // Sets the coefficient of t^i to c.
+  void set_coefficient(int i, mpz_srcptr c) { fmpz_poly_set_coeff_mpz(p_, static_cast<slong>(i), c); }
   // The coefficient of t^i written into x (no number made).
   void coefficient_into(int i, mpz_ptr x) const { fmpz_poly_get_coeff_mpz(x, p_, i); }
   std::vector<mpz_class> coefficients() const

@@ -39,12 +39,21 @@ using Integer_time_poly = Integer_poly;
 template <std::size_t N>
 std::array<Integer_time_poly, N> integer_polys(const std::array<Time_poly, N>& p, mpz_class& d)
 {
+  std::array<Integer_time_poly, N> out;
+  bool integers = true;   // the usual rows (integer_moving_planes): d = 1, the numerators as they are
+  for (const Time_poly& x : p)
+    for (int i = 0; i < x.size() && integers; ++i) integers = mpz_cmp_ui(mpq_denref(x[i].mpq()), 1) == 0;
+  if (integers) {
+    d = 1;
+    for (std::size_t k = 0; k < N; ++k)
+      for (int i = p[k].size(); i-- > 0;) out[k].set_coefficient(i, mpq_numref(p[k][i].mpq()));
+    return out;
+  }
   std::vector<Rational> all;
   for (const Time_poly& x : p)
     for (int i = 0; i < x.size(); ++i) all.push_back(x[i]);
   std::vector<mpz_class> numerators(all.size());
   over_common_denominator(all.data(), all.size(), numerators.data(), d);
-  std::array<Integer_time_poly, N> out;
   std::size_t next = 0;
   for (std::size_t k = 0; k < N; ++k) {
     std::vector<mpz_class> c(numerators.begin() + next, numerators.begin() + next + p[k].size());

@@ -1554,6 +1554,28 @@ BOOST_AUTO_TEST_CASE(integer_polynomials_are_polynomials_over_the_integers)
     c -= a;
     BOOST_TEST(same(c, rb), "round " << round);
     BOOST_TEST(same(Integer_poly(a.coefficients()), ra), "round " << round);
+    // integer_polys: the numerators over the least common denominator d
+    // (d = 1 for integers, the rows' usual case), and back with
+    // rational_poly times a factor.
+    long den = round % 3 == 0 ? static_cast<long>(1 + rng() % 12) : 1;
+    auto over = [&](const std::vector<mpz_class>& c) {
+      std::vector<Rational> q;
+      for (const mpz_class& v : c) q.push_back(Rational(CGAL::Gmpz(v.get_mpz_t()), CGAL::Gmpz(den)));
+      return Time_poly(q);
+    };
+    std::array<Time_poly, 2> tp = {over(x), over(y)};
+    mpz_class d;
+    std::array<Integer_poly, 2> ip = integer_polys(tp, d);
+    bool scaled = d > 0 && (den != 1 || d == 1);
+    for (int k = 0; k < 2; ++k) {
+      for (int i = 0; i < tp[k].size(); ++i)
+        scaled = scaled && Rational(CGAL::Gmpz((i < ip[k].size() ? ip[k][i] : mpz_class(0)).get_mpz_t())) ==
+                               tp[k][i] * Rational(CGAL::Gmpz(d.get_mpz_t()));
+      Time_poly back = rational_poly(ip[k], s);
+      for (int i = 0; i < back.size(); ++i)
+        scaled = scaled && back[i] == tp[k][i] * Rational(CGAL::Gmpz(mpz_class(d * s).get_mpz_t()));
+    }
+    BOOST_TEST(scaled, "round " << round << ": integer_polys or rational_poly");
   }
 }
 
