@@ -14,9 +14,16 @@ using Place = std::function<int(const Rational&)>;
 
 struct Fraction { mpz_class p, q; };   // p / q, q >= 0 (1/0 is infinity)
 
+// Every fraction made here is a + k b for neighbours a, b of the
+// Stern-Brocot tree (a.p b.q - a.q b.p = +-1, which a + k b keeps with b),
+// so p and q are coprime and q > 0: the rational is written as it is, with
+// no gcd.
 Rational as_rational(const Fraction& f)
 {
-  return Rational(CGAL::Gmpz(f.p.get_mpz_t()), CGAL::Gmpz(f.q.get_mpz_t()));
+  Rational r;   // a new number: written through mpq()
+  mpz_set(mpq_numref(r.mpq()), f.p.get_mpz_t());
+  mpz_set(mpq_denref(r.mpq()), f.q.get_mpz_t());
+  return r;
 }
 
 // The largest k >= 1 with place((a + k b)) == side, given that k = 1 has it:
