@@ -21,6 +21,20 @@ Apart_cover::Side Apart_cover::side(const Rotating_object& o, const Rational& at
     for (auto [plane, orientation] : o.shape.convex_pieces.front()) out.orientation[plane] = orientation;
   out.first_row = first_row;
   out.edges = o.shape.edge_vertices;
+  // Constant: every coefficient past the first exactly 0 (a resting pose
+  // is written as a segment whose slopes are 0), so its value at any t is
+  // exactly its first coefficient.
+  auto constant = [](const Interval_poly& p) {
+    for (int i = 1; i < p.size(); ++i)
+      if (!(p[i].inf() == 0 && p[i].sup() == 0)) return false;
+    return true;
+  };
+  bool rests = constant(out.norm);
+  for (int r = 0; r < 3; ++r) {
+    rests = rests && constant(out.origin[r]);
+    for (int c = 0; c < 3; ++c) rests = rests && constant(out.rotation[r][c]);
+  }
+  if (rests) out.at_rest = vertices_at(out, I(0));
   return out;
 }
 
@@ -52,6 +66,11 @@ std::vector<std::array<Apart_cover::I, 4>> Apart_cover::rows_on(const I& t) cons
 // A vertex v at rest is at N(q) v / |q|^2 + c at time t (the pose's
 // rotation about the shape's origin, then its origin's path).
 std::vector<Apart_cover::Point> Apart_cover::vertices_on(const Side& s, const I& t) const
+{
+  return s.at_rest ? *s.at_rest : vertices_at(s, t);
+}
+
+std::vector<Apart_cover::Point> Apart_cover::vertices_at(const Side& s, const I& t)
 {
   std::array<std::array<I, 3>, 3> n;
   for (int r = 0; r < 3; ++r)

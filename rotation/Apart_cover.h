@@ -85,6 +85,10 @@ private:
     std::vector<int> orientation;
     std::size_t first_row = 0;
     std::vector<std::vector<int>> edges;   // each edge's vertices
+    // The vertices where they stay, when the pose's polynomials are all
+    // constant (a resting piece): made once, the same intervals as
+    // vertices_on at any time.
+    std::optional<std::vector<Point>> at_rest;
   };
 
   // How far outside a plane of one piece a vertex of the other is, as a
@@ -139,6 +143,9 @@ private:
   // Appends o's planes under s to the rows (a's, then b's, as pair_rows).
   void add_rows(const Rotating_object& o, const Side& s);
   std::vector<Point> vertices_on(const Side& s, const I& t) const;
+  // The vertices at t from the pose's polynomials, under the caller's
+  // rounding guard.
+  static std::vector<Point> vertices_at(const Side& s, const I& t);
   // The rows over the times t, under the caller's rounding guard.
   std::vector<std::array<I, 4>> rows_on(const I& t) const;
   // Whether vertex k of the other piece (at points[k] over t) is strictly
