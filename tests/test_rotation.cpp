@@ -1101,6 +1101,23 @@ json floor_pair(Random_draw& r)
   return {{"format", "clash4d-scene/1"}, {"name", "blocks on one floor"}, {"time", {0, 3}}, {"objects", objects}};
 }
 
+// A random closed interval [lo, hi] of [0, 3], lo a multiple of 1/16 and
+// 1 to 8 sixteenths, halves, quarters or eighths of one wide, with its
+// middle: when one pose segment of each object holds it (where the
+// planes are one polynomial each).
+struct Span {
+  Rational lo, hi, at;
+};
+std::optional<Span> random_span(Random_draw& r, const Rotating_object& a, const Rotating_object& b)
+{
+  Rational lo(static_cast<int>(r.range(0, 47)), 16);
+  Rational hi = lo + Rational(static_cast<int>(r.range(1, 8)), 16 << static_cast<int>(r.range(0, 3)));
+  Rational at = (lo + hi) / 2;
+  const Pose_segment &sa = segment_at(a.segments, at), &sb = segment_at(b.segments, at);
+  if (!sa.holds(lo) || !sa.holds(hi) || !sb.holds(lo) || !sb.holds(hi)) return std::nullopt;
+  return Span{lo, hi, at};
+}
+
 // Whether two convex objects' critical times on [0, 1] keep to their
 // feature minors (Critical_times::restricted): no identically zero
 // feature is left that may mark a touch.
@@ -1336,11 +1353,9 @@ BOOST_AUTO_TEST_CASE(critical_times_are_every_mixed_minors_roots)
     Scene scene = parse_scene(random_turning_convex_pair(r));
     Rotating_object a = Rotating_object::make(scene.objects[0]), b = Rotating_object::make(scene.objects[1]);
     for (int k = 0; k < 3; ++k) {
-      Rational lo(static_cast<int>(r.range(0, 47)), 16);
-      Rational hi = lo + Rational(static_cast<int>(r.range(1, 8)), 16 << static_cast<int>(r.range(0, 3)));
-      Rational at = (lo + hi) / 2;
-      const Pose_segment &sa = segment_at(a.segments, at), &sb = segment_at(b.segments, at);
-      if (!sa.holds(lo) || !sa.holds(hi) || !sb.holds(lo) || !sb.holds(hi)) continue;
+      std::optional<Span> span = random_span(r, a, b);
+      if (!span) continue;
+      const Rational &lo = span->lo, &hi = span->hi, &at = span->at;
       ++asked;
       std::vector<Moving_plane> rows = pair_rows(a, b, at);
       std::size_t first = a.shape.planes.size();
@@ -1389,11 +1404,9 @@ BOOST_AUTO_TEST_CASE(apart_cover_proves_only_what_is_apart)
     Rotating_object a = Rotating_object::make(scene.objects[0]), b = Rotating_object::make(scene.objects[1]);
     if (!a.shape.convex_features || !b.shape.convex_features) continue;
     for (int k = 0; k < 4; ++k) {
-      Rational lo(static_cast<int>(r.range(0, 47)), 16);
-      Rational hi = lo + Rational(static_cast<int>(r.range(1, 8)), 16 << static_cast<int>(r.range(0, 3)));
-      Rational at = (lo + hi) / 2;
-      const Pose_segment &sa = segment_at(a.segments, at), &sb = segment_at(b.segments, at);
-      if (!sa.holds(lo) || !sa.holds(hi) || !sb.holds(lo) || !sb.holds(hi)) continue;
+      std::optional<Span> span = random_span(r, a, b);
+      if (!span) continue;
+      const Rational &lo = span->lo, &hi = span->hi, &at = span->at;
       std::vector<Moving_plane> rows;
       ++asked;
       // At one time alone (the filter before a static question,
