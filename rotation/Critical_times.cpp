@@ -180,18 +180,15 @@ private:
     return (a.inf() > 0 && b.sup() < 0) || (a.sup() < 0 && b.inf() > 0);
   }
 
-  // The minor enclosed at the time t, from the rows alone (no cache).
+  // The minor enclosed at the time t, from the rows alone (no cache): its
+  // rows at t, then full_minor's expansion (Pair_minors.h).
   I minor_at(const Minor_rows& m, double t) const
   {
-    auto [i, j, k, l] = m;
-    auto at = [&](int r) {
-      return std::array<I, 4>{rows_[r][0].at(I(t)), rows_[r][1].at(I(t)), rows_[r][2].at(I(t)), rows_[r][3].at(I(t))};
-    };
-    std::array<I, 4> ri = at(i), rj = at(j), rk = at(k);
-    if (l < 0) return normal_minor(ri, rj, rk);
-    std::array<I, 4> rl = at(l);
-    return rj[3] * normal_minor(ri, rk, rl) - ri[3] * normal_minor(rj, rk, rl) + rl[3] * normal_minor(ri, rj, rk) -
-           rk[3] * normal_minor(ri, rj, rl);
+    std::vector<std::array<I, 4>> r;
+    for (int row : m)
+      if (row >= 0) r.push_back({rows_[row][0].at(I(t)), rows_[row][1].at(I(t)), rows_[row][2].at(I(t)), rows_[row][3].at(I(t))});
+    auto normals = [&](int a, int b, int c) { return normal_minor(r[a], r[b], r[c]); };
+    return r.size() == 3 ? normals(0, 1, 2) : pair_minors_detail::full_minor(r, normals, 0, 1, 2, 3);
   }
 
   // Rows i, j, k and l (l < 0: none) evaluated on every piece, once each.
