@@ -48,7 +48,7 @@ Quadratic_element Quadratic_element::at(const Rational* g, std::size_t n) const
   bool integers = true;
   for (std::size_t i = 0; i < n && integers; ++i) {
     G[i] = mpq_numref(g[i].mpq());
-    integers = mpz_cmp_ui(mpq_denref(g[i].mpq()), 1) == 0;
+    integers = is_integer(g[i]);
   }
   if (integers) return horner(G.data(), n, mpz_class(1));
   mpz_class L = 1;

@@ -58,6 +58,9 @@ inline double nearest_double(const Rational& q)
   return round_to_nearest(q);
 }
 
+// Whether q is an integer (GMP's canonical form: denominator 1).
+inline bool is_integer(const Rational& q) { return mpz_cmp_ui(mpq_denref(q.mpq()), 1) == 0; }
+
 // An interval of doubles that surely holds q, read under upward rounding
 // (the interval filters' guard, CGAL::Protect_FPU_rounding<true>): with a
 // numerator and denominator of at most 53 bits (exact doubles), their

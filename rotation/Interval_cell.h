@@ -15,6 +15,7 @@
 #include <CGAL/Interval_nt.h>
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace clash4d {
@@ -74,17 +75,17 @@ private:
   const Vector4<mpz_class>& integer_row(std::size_t l) const
   {
     if (integers_.empty()) integers_.resize(exact_.size());
-    Vector4<mpz_class>& X = integers_[l];
-    if (X == Vector4<mpz_class>{}) {
+    std::optional<Vector4<mpz_class>>& X = integers_[l];
+    if (!X) {
       mpz_class d;
-      over_common_denominator(exact_[l].data(), 4, X.data(), d);
+      over_common_denominator(exact_[l].data(), 4, X.emplace().data(), d);
     }
-    return X;
+    return *X;
   }
 
   const std::vector<std::array<Rational, 4>>& exact_;
   std::vector<std::array<I, 4>> rows_;
-  mutable std::vector<Vector4<mpz_class>> integers_;   // made on first need; a zero row is remade (it is cheap)
+  mutable std::vector<std::optional<Vector4<mpz_class>>> integers_;   // each row made on first need
   mutable long exact_sides_ = 0;
 };
 

@@ -111,7 +111,7 @@ std::array<Rational, 4> plane_at(const Moving_plane& h, const Rational& t, Weigh
   bool integers = true;
   for (const Time_poly& p : h) {
     size = std::max(size, p.size());
-    for (int i = 0; i < p.size() && integers; ++i) integers = mpz_cmp_ui(mpq_denref(p[i].mpq()), 1) == 0;
+    integers = integers && has_integer_coefficients(p);
   }
   std::array<Rational, 4> out;
   if (!integers) {

@@ -11,6 +11,7 @@
 #include "numbers/Integer_poly.h"
 #include "rotation/Pose_segments.h"
 #include <CGAL/Interval_nt.h>
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -36,14 +37,20 @@ using Integer_time_poly = Integer_poly;
 
 // The polynomials' coefficients over their least common denominator d > 0
 // (a positive factor, made once for all of them): the numerators.
+// Whether every coefficient of p is an integer (integer_moving_planes' rows).
+inline bool has_integer_coefficients(const Time_poly& p)
+{
+  for (int i = 0; i < p.size(); ++i)
+    if (!is_integer(p[i])) return false;
+  return true;
+}
+
 template <std::size_t N>
 std::array<Integer_time_poly, N> integer_polys(const std::array<Time_poly, N>& p, mpz_class& d)
 {
   std::array<Integer_time_poly, N> out;
-  bool integers = true;   // the usual rows (integer_moving_planes): d = 1, the numerators as they are
-  for (const Time_poly& x : p)
-    for (int i = 0; i < x.size() && integers; ++i) integers = mpz_cmp_ui(mpq_denref(x[i].mpq()), 1) == 0;
-  if (integers) {
+  // The usual rows (integer_moving_planes): d = 1, the numerators as they are.
+  if (std::all_of(p.begin(), p.end(), has_integer_coefficients)) {
     d = 1;
     for (std::size_t k = 0; k < N; ++k)
       for (int i = p[k].size(); i-- > 0;) out[k].set_coefficient(i, mpq_numref(p[k][i].mpq()));
