@@ -95,8 +95,11 @@ Rational plane_value(const Moving_plane& h, const std::array<Rational, 3>& x, co
 
 // p's coefficients as the intervals that hold them, made once for the
 // interval filters (Interval_poly::at bounds p over an interval of times),
-// under the caller's upward rounding.
-using Interval_poly = Polynomial<CGAL::Interval_nt<false>, 16>;
+// under the caller's upward rounding. Capacity 8: a row is of degree 3 at
+// most and the apart cover's reaches of degree 5 (Apart_cover.h); every
+// polynomial is a fixed array, so a larger capacity is only more memory
+// copied per operation.
+using Interval_poly = Polynomial<CGAL::Interval_nt<false>, 8>;
 Interval_poly enclosed(const Time_poly& p);
 
 // The numbers of a point or a plane as the intervals that hold them, under

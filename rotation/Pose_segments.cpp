@@ -15,7 +15,10 @@ Time_poly constant(const Rational& v) { return Time_poly(v); }
 // coordinate between two pose times.
 Time_poly between(const Rational& v0, const Rational& v1, const Rational& t0, const Rational& t1)
 {
-  if (v0 == v1) return Time_poly(v0, Rational(0));   // the same numbers, with no arithmetic
+  // A coordinate that does not change is a constant, of degree 0: every
+  // product it enters then keeps its true degree (a resting body's planes,
+  // their minors and enclosures are made with no terms that are exactly 0).
+  if (v0 == v1) return Time_poly(v0);
   Rational slope = (v1 - v0) / (t1 - t0);
   return Time_poly(v0 - slope * t0, slope);
 }
@@ -66,7 +69,9 @@ std::vector<Pose_segment> from_robmod(const Motion& m)
     if (i > 0) s.lo = path.times[i - 1];
     if (i + 1 < n) s.hi = path.times[i];
     s.q = {constant(Rational(1)), constant(Rational(0)), constant(Rational(0)), constant(Rational(0))};
-    for (int a = 0; a < 3; ++a) s.c[a] = Time_poly(path.offset[i][a], path.velocity[i][a]);
+    for (int a = 0; a < 3; ++a)
+      s.c[a] = CGAL::is_zero(path.velocity[i][a]) ? Time_poly(path.offset[i][a])
+                                                 : Time_poly(path.offset[i][a], path.velocity[i][a]);
   }
   return out;
 }
