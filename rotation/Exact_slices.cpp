@@ -177,10 +177,20 @@ std::optional<std::array<Algebraic, 3>> meeting_point_in(const Quadratic_element
       const Time_poly& g = rows[ids[k]][c];
       r[k][c] = field.at(g.size() > 0 ? &g[0] : nullptr, static_cast<std::size_t>(g.size()));
     }
-  Quadratic_element d = det3(r[0], r[1], r[2]);
+  // Cramer's rule by the normals' cross products, u = n1 x n2, v = n2 x n0,
+  // w = n0 x n1: d = n0 . u, and x = -(e0 u + e1 v + e2 w) / d (fewer
+  // products in Q(t) than four 3 x 3 determinants, and one inverse).
+  auto cross = [](const std::array<Quadratic_element, 4>& p, const std::array<Quadratic_element, 4>& q) {
+    return std::array<Quadratic_element, 3>{p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2],
+                                            p[0] * q[1] - p[1] * q[0]};
+  };
+  std::array<Quadratic_element, 3> u = cross(r[1], r[2]), v = cross(r[2], r[0]), w = cross(r[0], r[1]);
+  Quadratic_element d = r[0][0] * u[0] + r[0][1] * u[1] + r[0][2] * u[2];
   if (d.is_zero()) return std::nullopt;
-  std::array<Quadratic_element, 3> x = cramer_point(r[0], r[1], r[2], d);
-  return std::array<Algebraic, 3>{x[0].value(), x[1].value(), x[2].value()};
+  Quadratic_element minus_inverse = (-d).inverse();
+  std::array<Algebraic, 3> x;
+  for (int c = 0; c < 3; ++c) x[c] = ((r[0][3] * u[c] + r[1][3] * v[c] + r[2][3] * w[c]) * minus_inverse).value();
+  return x;
 }
 
 // Whether the point lies in the closed object whose planes are rows[offset
