@@ -213,7 +213,7 @@ private:
     Search_goal<FT> goal;
     goal.earliest = earliest;
     goal.semantics = semantics;
-    if (ceiling) { goal.has_ceiling = true; goal.ceiling = *ceiling; }
+    if (ceiling) goal.ceiling = *ceiling;
     std::optional<Convex_pair<K, Policy>> convex;
     if (convex_lp_ && Convex_pair<K>::applies(model_, a, b))
       convex.emplace(k_, model_, a, b, &policy_, guides_ ? Convex_guides{(*guides_)(a), (*guides_)(b)} : Convex_guides{});

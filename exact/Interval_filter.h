@@ -100,8 +100,8 @@ public:
   template <class FT>
   static bool ties(const AK& k, const Search_goal<FT>& goal, const FT& t)
   {
-    if (goal.has_ceiling) {
-      CGAL::Uncertain<CGAL::Sign> s = k.uncertain_sign(goal.ceiling - t);
+    if (goal.ceiling) {
+      CGAL::Uncertain<CGAL::Sign> s = k.uncertain_sign(*goal.ceiling - t);
       if (!CGAL::is_certain(s)) return true;
       if (CGAL::get_certain(s) == CGAL::NEGATIVE) return false;   // can_improve: no, at once
     }
@@ -710,10 +710,7 @@ private:
     e.semantics = semantics_;
     e.found = found;
     if (found) e.t_star = *t_star_;
-    if (ceiling_) {
-      e.has_ceiling = true;
-      e.ceiling = *ceiling_;
-    }
+    if (ceiling_) e.ceiling = *ceiling_;
     return e;
   }
 
@@ -811,7 +808,7 @@ private:
     last_ = On_keys();
     auto enclose = [&](const EFT& x) { return runner_->ak().from_rational(runner_->ek().to_rational(x)); };
     goal.found = goal.improved = true;
-    goal.vertex_known = false;   // the rational conquer's record, not this one's
+    goal.vertex.reset();   // the rational conquer's record, not this one's
     goal.t_star = enclose(e.t_star);
     for (int q = 0; q < 4; ++q) {
       goal.contact[q] = enclose(e.contact[q]);

@@ -64,7 +64,7 @@ public:
   void run(const Pair_formula& f, const Box<FT, 4>& region, Search_goal<FT>& goal)
   {
     collect_planes(f, region);
-    goal.vertex_known = false;   // another conquer's layout
+    goal.vertex.reset();   // another conquer's layout
     std::size_t n = planes_.size();
     if (const std::array<std::size_t, 3>* t = policy_.replay_line()) {
       if ((*t)[2] < n) test_line(f, (*t)[0], (*t)[1], (*t)[2], goal);
@@ -490,7 +490,7 @@ private:
     auto earliest_end = [&] { return end_plane(k_.sign(l[3]) != CGAL::NEGATIVE); };
     // At the recorded contact point: a tie with t*, which cannot improve
     // (Search_goal::vertex).
-    if (goal.vertex_known && at_contact(goal, i, j, m, earliest_end())) return;
+    if (goal.vertex && at_contact(goal, i, j, m, earliest_end())) return;
     if (!improves(goal, Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]), earliest_end)) return;
     evaluate_planes(base, l, layout_.first_face);
     std::vector<Cut>& cuts = cuts_;         // reused: a line's cuts, no allocation per line
@@ -539,7 +539,7 @@ private:
       // a possible tie and at a record, earliest mode).
       bool segment_end = up ? q == 0 : q + 2 == cuts.size();
       auto by = [&] { return end.plane == npos && segment_end ? end_plane(up) : end.plane; };
-      if (goal.vertex_known && at_contact(goal, i, j, m, by())) continue;
+      if (goal.vertex && at_contact(goal, i, j, m, by())) continue;
       V early = point_along(base, end.s, l);
       if (!improves(goal, early[3], by)) continue;
       FT mid = (cuts[q].s + cuts[q + 1].s) / FT(2);
@@ -597,7 +597,7 @@ private:
   // recorded contact point (earliest mode, this conquer): its time is t*.
   static bool at_contact(const Search_goal<FT>& goal, std::size_t i, std::size_t j, std::size_t m, std::size_t p)
   {
-    return goal.earliest && goal.vertex_known && p != npos && vertex_of(i, j, m, p) == goal.vertex;
+    return goal.earliest && goal.vertex && p != npos && vertex_of(i, j, m, p) == *goal.vertex;
   }
 
   // The contact point just recorded is where plane p cuts line i, j, m.
@@ -605,7 +605,6 @@ private:
   {
     if (p == npos) return;
     goal.vertex = vertex_of(i, j, m, p);
-    goal.vertex_known = true;
   }
 
   // The line's three planes and the plane cutting it, sorted: the four
@@ -636,7 +635,7 @@ private:
     const V& base = *on;
     auto earliest_end = [&] { return end_plane(k_.sign(l[3]) != CGAL::NEGATIVE); };
     // A tie with t* (Search_goal::vertex).
-    if (goal.vertex_known && at_contact(goal, i, j, m, earliest_end())) return;
+    if (goal.vertex && at_contact(goal, i, j, m, earliest_end())) return;
     if (!improves(goal, Number_ops<FT>::lower(base[3] + s_lo * l[3], base[3] + s_hi * l[3]), earliest_end)) return;
     evaluate_planes(base, l, layout_.first_face);
     collect_points(s_lo, s_hi);
@@ -648,7 +647,7 @@ private:
     for (std::size_t g = 0; g < groups_at_.size() && !goal.done(); ++g) {
       const Point_on_line& at = points_[groups_at_[g]];
       auto by = [&] { return at.by == npos && at.plane < 0 ? end_plane(g == 0) : at.by; };
-      if (goal.vertex_known && at_contact(goal, i, j, m, by())) continue;
+      if (goal.vertex && at_contact(goal, i, j, m, by())) continue;
       if (!improves(goal, base[3] + at.s * l[3], by)) continue;
       for (std::size_t p = 0; p < layout_.first_face; ++p)
         if (group_of_[p] >= 0) sign_[p] = cut_sign_[p] * (g > std::size_t(group_of_[p]) ? 1 : g < std::size_t(group_of_[p]) ? -1 : 0);

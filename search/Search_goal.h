@@ -10,6 +10,7 @@
 #include "search/Semantics.h"
 #include <array>
 #include <cstddef>
+#include <optional>
 
 namespace clash4d {
 
@@ -38,8 +39,7 @@ struct Search_goal {
   // planes meet ends at that very point, whose time is t* exactly: it
   // cannot improve, and no comparison is asked (a tie, which intervals
   // could not certify). Cleared by every other record.
-  std::array<std::size_t, 4> vertex{};
-  bool vertex_known = false;
+  std::optional<std::array<std::size_t, 4>> vertex;
   std::size_t records = 0;      // improvements so far (a caller sees whether it made one)
   // Recorded by a convex pair's linear programs (search/Convex_pair.h): the
   // region's closure on the sub-span is one convex polyhedron holding the
@@ -51,8 +51,7 @@ struct Search_goal {
 
   // Earliest mode across pairs: a pair whose collision cannot start before
   // the best time of the pairs already examined need not be searched.
-  bool has_ceiling = false;
-  FT ceiling = zero_value<FT>();
+  std::optional<FT> ceiling;
 
   bool done() const { return found && !earliest; }
   // Could a region or edge whose times start at t_from hold a better point?
@@ -62,7 +61,7 @@ struct Search_goal {
   {
     // Not strict: a pair that ties the best must still be found, so that the
     // first pair in order wins ties whatever order the threads ran in.
-    if (has_ceiling && k.less(ceiling, t_from)) return false;
+    if (ceiling && k.less(*ceiling, t_from)) return false;
     return !found || (earliest && k.less(t_from, t_star));
   }
 
@@ -77,7 +76,8 @@ struct Search_goal {
     inside = in;
     t_star = lowest[3];
     contact = lowest;
-    vertex_known = convex = false;
+    vertex.reset();
+    convex = false;
     ++records;
     return true;
   }
@@ -92,7 +92,8 @@ struct Search_goal {
     found = improved = true;
     inside = contact = p;
     t_star = p[3];
-    vertex_known = convex = false;
+    vertex.reset();
+    convex = false;
     ++records;
     toward_a = a;
     toward_b = b;
