@@ -1,5 +1,6 @@
 #include "rotation/Exact_slices.h"
 
+#include "geometry/kernel_ft4.h"
 #include "numbers/Quadratic_element.h"
 #include "rotation/Cell_vertices.h"
 #include "rotation/Central_topes.h"
@@ -180,11 +181,9 @@ std::optional<std::array<Algebraic, 3>> meeting_point_in(const Quadratic_element
   // Cramer's rule by the normals' cross products, u = n1 x n2, v = n2 x n0,
   // w = n0 x n1: d = n0 . u, and x = -(e0 u + e1 v + e2 w) / d (fewer
   // products in Q(t) than four 3 x 3 determinants, and one inverse).
-  auto cross = [](const std::array<Quadratic_element, 4>& p, const std::array<Quadratic_element, 4>& q) {
-    return std::array<Quadratic_element, 3>{p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2],
-                                            p[0] * q[1] - p[1] * q[0]};
-  };
-  std::array<Quadratic_element, 3> u = cross(r[1], r[2]), v = cross(r[2], r[0]), w = cross(r[0], r[1]);
+  std::array<Vector3<Quadratic_element>, 3> n;
+  for (int k = 0; k < 3; ++k) n[k] = {r[k][0], r[k][1], r[k][2]};
+  Vector3<Quadratic_element> u = cross(n[1], n[2]), v = cross(n[2], n[0]), w = cross(n[0], n[1]);
   Quadratic_element d = r[0][0] * u[0] + r[0][1] * u[1] + r[0][2] * u[2];
   if (d.is_zero()) return std::nullopt;
   Quadratic_element minus_inverse = (-d).inverse();
