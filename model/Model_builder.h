@@ -81,6 +81,11 @@ public:
   explicit Model_builder(const K& k) : k_(k) {}
 
   Csg_model<FT> build(const Solid& s) { return build_parts(s, Parts::all); }
+  // The same placed by `outer` (x -> R x + b, R a rotation in FT), as if s
+  // were written under a rotate and a translate of those numbers: a shape
+  // posed at a time whose numbers are not the scene's rationals (the
+  // number-field kernel's, exact/Closed_in_field.h).
+  Csg_model<FT> build(const Solid& s, const Affine3<FT>& outer) { return build_parts(s, Parts::all, outer); }
 
   // The same tree with each primitive's box alone (no planes, no
   // vertices): all the S-bounds read (search/S_bounds.h), at a fraction of
@@ -105,11 +110,11 @@ private:
   Csg_model<FT> model_;
   Parts parts_ = Parts::all;
 
-  Csg_model<FT> build_parts(const Solid& s, Parts parts)
+  Csg_model<FT> build_parts(const Solid& s, Parts parts, const Affine3<FT>& outer = Affine3<FT>::identity())
   {
     model_ = Csg_model<FT>();
     parts_ = parts;
-    add(s, Affine3<FT>::identity(), -1);
+    add(s, outer, -1);
     return std::move(model_);
   }
 

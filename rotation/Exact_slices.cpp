@@ -1,5 +1,6 @@
 #include "rotation/Exact_slices.h"
 
+#include "exact/Closed_in_field.h"
 #include "geometry/kernel_ft4.h"
 #include "numbers/Quadratic_element.h"
 #include "rotation/Cell_vertices.h"
@@ -343,12 +344,59 @@ std::array<Algebraic, 3> Exact_slices::contact_point(const std::vector<Moving_pl
   return *x;
 }
 
+namespace {
+
+// The pose segment whose interval holds the irrational r (never a pose
+// time, which is rational).
+const Pose_segment& segment_holding(const std::vector<Pose_segment>& segments, const Algebraic& r)
+{
+  for (const Pose_segment& s : segments)
+    if ((s.from_minus_infinity || compare(r, s.lo) > 0) && (s.to_plus_infinity || compare(r, s.hi) < 0)) return s;
+  throw std::logic_error("internal error: no pose segment holds a critical time");
+}
+
+Field_posed posed_at(const Rotating_object& o, const Algebraic& r)
+{
+  const Pose_segment& s = segment_holding(o.segments, r);
+  Field_posed p;
+  p.shape = o.solid;
+  for (int i = 0; i < 4; ++i) p.q[i] = s.q[i].coefficients();
+  for (int i = 0; i < 3; ++i) p.c[i] = s.c[i].coefficients();
+  return p;
+}
+
+// The closed question at the irrational r asked of the static pipeline in
+// Q(r) (exact/Closed_in_field.h); its point as quotients over 1.
+std::optional<Quotient_point> field_point_at(const Rotating_object& a, const Rotating_object& b, const Algebraic& r)
+{
+  Field_answer x = closed_point_in_field(r, posed_at(a, r), posed_at(b, r));
+  if (!x.refused.empty()) throw Rotation_unsupported("the closed question at an irrational critical time: " + x.refused);
+  if (!x.meet) return std::nullopt;
+  return Quotient_point{{Time_poly(x.point[0]), Time_poly(x.point[1]), Time_poly(x.point[2])}, Time_poly(Rational(1))};
+}
+
+// The closed question at an irrational critical time (fact 12). Two
+// bounded shapes that meet at r and at no time just before meet in a
+// vertex-face or edge-edge point (common_point_at), so its candidates
+// decide. A contact of unbounded shapes may have no vertex in it (the edge
+// line of a wedge settling on a half-space), so where either is unbounded
+// and no candidate holds, the static pipeline in Q(r) decides.
+std::optional<Quotient_point> closed_quotients(const std::vector<Moving_plane>& rows, const Rotating_object& a,
+                                               const Rotating_object& b, const Critical_time& c)
+{
+  if (std::optional<Quotient_point> x = common_point_at(rows, a, b, c)) return x;
+  if (a.shape.reach && b.shape.reach) return std::nullopt;
+  return field_point_at(a, b, c.t);
+}
+
+} // namespace
+
 std::optional<std::array<Algebraic, 3>> Exact_slices::closed_at_irrational(const std::vector<Moving_plane>& rows,
                                                                          const Rotating_object& a,
                                                                          const Rotating_object& b,
                                                                          const Critical_time& c) const
 {
-  std::optional<Quotient_point> x = common_point_at(rows, a, b, c);
+  std::optional<Quotient_point> x = closed_quotients(rows, a, b, c);
   if (!x) return std::nullopt;
   return point_at(x->num, x->den, c.t);
 }
@@ -356,7 +404,7 @@ std::optional<std::array<Algebraic, 3>> Exact_slices::closed_at_irrational(const
 std::optional<Quotient_point> closed_point_at(const std::vector<Moving_plane>& rows, const Rotating_object& a,
                                               const Rotating_object& b, const Critical_time& c)
 {
-  return common_point_at(rows, a, b, c);
+  return closed_quotients(rows, a, b, c);
 }
 
 } // namespace clash4d

@@ -5,11 +5,13 @@
 #include "compare/Comparer.h"
 #include "compare/Rotation_families.h"
 #include "compare/Witness_judge.h"
+#include "exact/Closed_in_field.h"
 #include "exact/Exact_instantiation.h"
 #include "float/Double_instantiation.h"
 #include "rotation/Apart_cover.h"
 #include "rotation/Central_topes.h"
 #include "rotation/Critical_times.h"
+#include "rotation/Exact_slices.h"
 #include "rotation/Pair_minors.h"
 #include "rotation/Interval_cell.h"
 #include "rotation/Rotating_check.h"
@@ -1388,6 +1390,70 @@ BOOST_AUTO_TEST_CASE(critical_times_are_every_mixed_minors_roots)
                                         << " times");
   BOOST_TEST(asked >= cases);
   BOOST_TEST(with_times >= cases / 4);
+}
+
+// The closed question at an irrational critical time r, two ways: the
+// vertex-face and edge-edge candidate points of the time slices
+// (closed_point_at, exact signs in Q(r)) and the static pipeline itself run
+// on the number-field kernel (exact/Closed_in_field.h). A candidate is a
+// point of both closed objects, so the pipeline must find them meeting;
+// where the pipeline finds them meeting and no candidate holds, the
+// candidates' argument says r is neither a first nor a last contact: the
+// objects meet just before r and just after it, and the static checks at a
+// rational time of (the previous critical time, r) and of (r, the next)
+// must say so.
+BOOST_AUTO_TEST_CASE(closed_questions_in_the_number_field_agree_with_the_candidates)
+{
+  std::uint64_t seed = stage_tests::env_number("CLASH4D_SEED", 6161);
+  int cases = 24;
+  if (const char* s = std::getenv("CLASH4D_ROTATION_CASES")) cases = std::max(1, std::atoi(s) / 10);
+  BOOST_TEST_MESSAGE("closed questions in Q(r): seed " << seed << " (CLASH4D_SEED), " << cases << " scenes");
+  auto posed = [](const Rotating_object& o, const Rational& at) {
+    const Pose_segment& s = segment_at(o.segments, at);
+    Field_posed p;
+    p.shape = o.solid;
+    for (int i = 0; i < 4; ++i) p.q[i] = s.q[i].coefficients();
+    for (int i = 0; i < 3; ++i) p.c[i] = s.c[i].coefficients();
+    return p;
+  };
+  Random_draw r(seed);
+  int asked = 0, candidates = 0, met_before = 0, apart = 0;
+  for (int i = 0; i < cases; ++i) {
+    Scene scene = parse_scene(random_turning_convex_pair(r));
+    Rotating_object a = Rotating_object::make(scene.objects[0]), b = Rotating_object::make(scene.objects[1]);
+    for (int k = 0; k < 2; ++k) {
+      std::optional<Span> span = random_span(r, a, b);
+      if (!span) continue;
+      std::vector<Moving_plane> rows = integer_pair_rows(a, b, span->at);
+      std::vector<Critical_time> times = Critical_times(rows, a.shape.planes.size(), span->lo, span->hi, false).times();
+      for (std::size_t n = 0; n < times.size(); ++n) {
+        const Critical_time& c = times[n];
+        Algebraic previous = n > 0 ? times[n - 1].t : Algebraic(span->lo);
+        Algebraic next = n + 1 < times.size() ? times[n + 1].t : Algebraic(span->hi);
+        BOOST_TEST_CONTEXT("seed " << seed << " case " << i << " at " << c.t.to_text())
+        if (!c.t.is_rational()) {
+          ++asked;
+          bool candidate = closed_point_at(rows, a, b, c).has_value();
+          Field_answer field = closed_point_in_field(c.t, posed(a, span->at), posed(b, span->at));
+          BOOST_TEST(field.refused.empty());
+          if (candidate) ++candidates;
+          if (!field.meet) ++apart;
+          BOOST_TEST((!candidate || field.meet));
+          if (field.meet && !candidate) {
+            ++met_before;
+            BOOST_TEST(static_collides(scene, simplest_between(previous, c.t), Semantics::closed));
+            BOOST_TEST(static_collides(scene, simplest_between(c.t, next), Semantics::closed));
+          }
+        }
+      }
+    }
+  }
+  BOOST_TEST_MESSAGE("closed questions in Q(r): " << asked << " irrational times, " << candidates
+                                                  << " with a candidate point, " << met_before << " met before, "
+                                                  << apart << " apart");
+  BOOST_TEST(asked >= cases);
+  BOOST_TEST(candidates >= 1);
+  BOOST_TEST(apart >= cases / 2);
 }
 
 BOOST_AUTO_TEST_CASE(apart_cover_proves_only_what_is_apart)

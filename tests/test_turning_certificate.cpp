@@ -14,6 +14,7 @@
 #include "support/Cli_run.h"
 #include "support/Random_rotating_scene.h"
 #include <nlohmann/json.hpp>
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -115,6 +116,25 @@ BOOST_DATA_TEST_CASE(every_rotation_fixture_in_every_mode, boost::unit_test::dat
 {
   for (const Mode& m : modes)
     for (const char* number : {"exact", "rational"}) certify_and_verify(scene.string(), m, number, scene.filename().string());
+}
+
+// fixtures/rotation/unbounded: every mode but regularised --earliest, whose
+// contact point this release does not make there (docs/rotation.md); the
+// closed touch at an irrational time is found by the static pipeline in
+// Q(r) (exact/Closed_in_field.h), and its point is what the certificate
+// writes.
+BOOST_AUTO_TEST_CASE(the_unbounded_rotation_fixtures_where_decided)
+{
+  for (const auto& e : fs::directory_iterator(fs::path(CLASH4D_FIXTURES) / "rotation" / "unbounded")) {
+    if (e.path().extension() != ".json" || e.path().filename() == "expected.json") continue;
+    for (const Mode& m : modes) {
+      bool closed = std::find(m.args.begin(), m.args.end(), "closed") != m.args.end();
+      bool earliest = std::find(m.args.begin(), m.args.end(), "--earliest") != m.args.end();
+      if (closed || !earliest)
+        for (const char* number : {"exact", "rational"})
+          certify_and_verify(e.path().string(), m, number, e.path().filename().string());
+    }
+  }
 }
 
 BOOST_AUTO_TEST_CASE(the_rotation_fuzz_families)
