@@ -355,6 +355,8 @@ const Pose_segment& segment_holding(const std::vector<Pose_segment>& segments, c
   throw std::logic_error("internal error: no pose segment holds a critical time");
 }
 
+} // namespace
+
 Field_posed posed_at(const Rotating_object& o, const Algebraic& r)
 {
   const Pose_segment& s = segment_holding(o.segments, r);
@@ -364,6 +366,8 @@ Field_posed posed_at(const Rotating_object& o, const Algebraic& r)
   for (int i = 0; i < 3; ++i) p.c[i] = s.c[i].coefficients();
   return p;
 }
+
+namespace {
 
 // The closed question at the irrational r asked of the static pipeline in
 // Q(r) (exact/Closed_in_field.h); its point as quotients over 1.

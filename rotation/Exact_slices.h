@@ -7,6 +7,7 @@
 #define CLASH4D_ROTATION_EXACT_SLICES_H
 
 #include "check/Check_answer.h"
+#include "exact/Closed_in_field.h"
 #include "numbers/Algebraic.h"
 #include "rotation/Critical_times.h"
 #include "rotation/Moving_planes.h"
@@ -35,6 +36,11 @@ struct Quotient_point {
 // certificate writes in Q(r)); none when there is none.
 std::optional<Quotient_point> closed_point_at(const std::vector<Moving_plane>& rows, const Rotating_object& a,
                                               const Rotating_object& b, const Critical_time& c);
+
+// o's shape posed at the irrational r (its pose segment's q and c as
+// polynomials): what the static pipeline in Q(r) reads
+// (exact/Closed_in_field.h).
+Field_posed posed_at(const Rotating_object& o, const Algebraic& r);
 
 class Exact_slices {
 public:

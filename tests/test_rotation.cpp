@@ -1408,14 +1408,6 @@ BOOST_AUTO_TEST_CASE(closed_questions_in_the_number_field_agree_with_the_candida
   int cases = 24;
   if (const char* s = std::getenv("CLASH4D_ROTATION_CASES")) cases = std::max(1, std::atoi(s) / 10);
   BOOST_TEST_MESSAGE("closed questions in Q(r): seed " << seed << " (CLASH4D_SEED), " << cases << " scenes");
-  auto posed = [](const Rotating_object& o, const Rational& at) {
-    const Pose_segment& s = segment_at(o.segments, at);
-    Field_posed p;
-    p.shape = o.solid;
-    for (int i = 0; i < 4; ++i) p.q[i] = s.q[i].coefficients();
-    for (int i = 0; i < 3; ++i) p.c[i] = s.c[i].coefficients();
-    return p;
-  };
   Random_draw r(seed);
   int asked = 0, candidates = 0, met_before = 0, apart = 0;
   for (int i = 0; i < cases; ++i) {
@@ -1434,7 +1426,7 @@ BOOST_AUTO_TEST_CASE(closed_questions_in_the_number_field_agree_with_the_candida
         if (!c.t.is_rational()) {
           ++asked;
           bool candidate = closed_point_at(rows, a, b, c).has_value();
-          Field_answer field = closed_point_in_field(c.t, posed(a, span->at), posed(b, span->at));
+          Field_answer field = closed_point_in_field(c.t, posed_at(a, c.t), posed_at(b, c.t));
           BOOST_TEST(field.refused.empty());
           if (candidate) ++candidates;
           if (!field.meet) ++apart;
@@ -1449,7 +1441,7 @@ BOOST_AUTO_TEST_CASE(closed_questions_in_the_number_field_agree_with_the_candida
     }
   }
   BOOST_TEST_MESSAGE("closed questions in Q(r): " << asked << " irrational times, " << candidates
-                                                  << " with a candidate point, " << met_before << " met before, "
+                                                  << " with a candidate point, " << met_before << " met on both sides, "
                                                   << apart << " apart");
   BOOST_TEST(asked >= cases);
   BOOST_TEST(candidates >= 1);
