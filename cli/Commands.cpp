@@ -92,6 +92,9 @@ int guarded(const std::string& file, std::ostream& err, Run run)
   } catch (const std::logic_error& e) {
     err << file << ": " << e.what() << "\n";
     return CLASH4D_EXIT_INTERNAL;
+  } catch (const std::runtime_error& e) {   // none is expected here: a message, never a crash
+    err << file << ": " << e.what() << "\n";
+    return CLASH4D_EXIT_INTERNAL;
   }
 }
 

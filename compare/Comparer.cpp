@@ -513,8 +513,13 @@ Comparison compare_scene(const Scene& scene, const std::string& file, const Comp
   Check_options co;
   co.earliest = options.earliest;
   std::vector<Run> runs = builtin_runs(scene, options, co);
+  // Every subject is judged against the exact ones: without them there is
+  // no comparison, only a scene this release does not decide (as check
+  // reports it, exit 2 naming the reason).
   for (int i : {0, 1})
-    if (!runs[i].ok) throw std::runtime_error("the " + runs[i].subject + " subject failed: " + runs[i].error);
+    if (!runs[i].ok)
+      throw Input_error("", "not compared: the " + runs[i].subject + " subject, the reference, did not decide it: " +
+                                runs[i].error);
   Witness_judge judge(scene);
   for (const auto& pool : options.externals) {
     if (options.on_subject) options.on_subject(pool->spec().name);

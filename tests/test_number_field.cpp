@@ -13,6 +13,7 @@
 #include "rotation/Rotating_check.h"
 #include "rotation/Rotating_pair.h"
 #include "scene/Json_reader.h"
+#include "support/Cli_run.h"
 #include "scene/Scene_reader.h"
 #include <gmpxx.h>
 #include <nlohmann/json.hpp>
@@ -310,4 +311,19 @@ BOOST_AUTO_TEST_CASE(many_planes_of_two_unbounded_shapes_are_refused)
   Field_answer x = closed_point_in_field(r, posed(scene.objects[0].shape, rest), posed(scene.objects[1].shape, rest));
   BOOST_TEST(!x.meet);
   BOOST_TEST(x.refused.find("more than 37 planes") != std::string::npos, x.refused);
+}
+
+// compare on a fixture whose exact answer this release does not make
+// (regularised --earliest on the wedge): exit 2 naming the file and the
+// reason, as check does, never a crash; what it does decide is compared.
+BOOST_AUTO_TEST_CASE(compare_refuses_what_the_exact_subject_does_not_decide)
+{
+  std::string wedge = fixture("unbounded/wedge_settles_on_floor.json");
+  Cli_run refused = run_clash4d({"compare", wedge, "--earliest", "--no-rounded"});
+  BOOST_TEST(refused.status == 2);
+  BOOST_TEST(refused.err.rfind(wedge + ": not compared: the exact subject", 0) == 0, refused.err);
+  BOOST_TEST(refused.err.find("contact point at t*") != std::string::npos, refused.err);
+  Cli_run closed = run_clash4d({"compare", wedge, "--semantics", "closed", "--no-rounded", "--json"});
+  BOOST_TEST((closed.status == 0 || closed.status == 1), closed.err);
+  BOOST_TEST(closed.err.empty(), closed.err);
 }
