@@ -5,6 +5,7 @@
 #include "certify/Turning_prover.h"
 #include "rotation/Cell_vertices.h"
 #include "rotation/Critical_times.h"
+#include "rotation/Exact_slices.h"
 #include "rotation/Simplest_rational.h"
 #include <optional>
 
@@ -99,15 +100,16 @@ json poly_json(Poly p)
 
 } // namespace
 
-json witness_path(const Rotating_object& a, const Rotating_object& b, const Algebraic& t_star,
-                  const std::array<Rational, 3>& w, const Rational& s)
+namespace {
+
+// A path from a vertex of the closure of w's cell among `starts` at s (the
+// pair's rows, or those and a cut across their lineality) that keeps its
+// side of every one of `rows` (the objects' own planes, a's first `split`).
+std::optional<json> path_from_vertices(const std::vector<Moving_plane>& starts, const std::vector<Moving_plane>& rows,
+                                       std::size_t split, const Rotating_object& a, const Rotating_object& b,
+                                       const Algebraic& t_star, const std::array<Rational, 3>& w, const Rational& s)
 {
-  std::vector<Moving_plane> rows = moving_planes(a.shape.planes, segment_at(a.segments, s));
-  std::size_t split = rows.size();
-  std::vector<Moving_plane> more = moving_planes(b.shape.planes, segment_at(b.segments, s));
-  rows.insert(rows.end(), more.begin(), more.end());
-  std::vector<std::array<Rational, 4>> now;
-  for (const Moving_plane& h : rows) now.push_back({h[0].at(s), h[1].at(s), h[2].at(s), h[3].at(s)});
+  std::vector<std::array<Rational, 4>> now = planes_at(starts, s);
   Poly P = vanishing_at(t_star, s);
   std::optional<json> found;
   cell_vertices(now, w, [&](int i, int j, int k) {
@@ -124,7 +126,7 @@ json witness_path(const Rotating_object& a, const Rotating_object& b, const Alge
       for (int shorter = 0; shorter < 4 && !found; ++shorter, t1 = simplest_between(t_star, Algebraic(t1))) {
         Rational c(1);
         for (int halving = 0; halving < 100 && !found; ++halving, c /= 2) {
-          Path p = vertex_path(rows, i, j, k, s, sigma, step, c);
+          Path p = vertex_path(starts, i, j, k, s, sigma, step, c);
           if (holds(p, rows, split, a, b, t_star, t1))
             found = json{{"x", poly_json(p.num[0])}, {"y", poly_json(p.num[1])}, {"z", poly_json(p.num[2])},
                          {"w", poly_json(p.den)}, {"to", to_string(t1)}};
@@ -133,6 +135,27 @@ json witness_path(const Rotating_object& a, const Rotating_object& b, const Alge
     }
     return found.has_value();
   });
+  return found;
+}
+
+} // namespace
+
+// From the pair's cells first; where w's has no vertex (normals of rank 2),
+// from the cell cut across its lineality (lineality_cut).
+json witness_path(const Rotating_object& a, const Rotating_object& b, const Algebraic& t_star,
+                  const std::array<Rational, 3>& w, const Rational& s)
+{
+  std::vector<Moving_plane> rows = moving_planes(a.shape.planes, segment_at(a.segments, s));
+  std::size_t split = rows.size();
+  std::vector<Moving_plane> more = moving_planes(b.shape.planes, segment_at(b.segments, s));
+  rows.insert(rows.end(), more.begin(), more.end());
+  std::optional<json> found = path_from_vertices(rows, rows, split, a, b, t_star, w, s);
+  if (!found)
+    if (std::optional<Moving_plane> cut = lineality_cut(rows, planes_at(rows, s), w)) {
+      std::vector<Moving_plane> cut_rows = rows;
+      cut_rows.push_back(*cut);
+      found = path_from_vertices(cut_rows, rows, split, a, b, t_star, w, s);
+    }
   if (!found)
     throw Turning_proof_missing("objects '" + a.name + "' and '" + b.name + "': no path inside both was found after t* = " +
                                 t_star.to_text());

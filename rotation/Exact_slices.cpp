@@ -305,6 +305,24 @@ std::optional<Rational> Exact_slices::sample(const Algebraic& left, const Algebr
   return simplest_between(left, right);
 }
 
+std::optional<Moving_plane> lineality_cut(const std::vector<Moving_plane>& rows,
+                                          const std::vector<std::array<Rational, 4>>& at, const std::array<Rational, 3>& w)
+{
+  auto normal = [&](std::size_t i) { return Vector3<Rational>{at[i][0], at[i][1], at[i][2]}; };
+  for (std::size_t i = 0; i < at.size(); ++i)
+    for (std::size_t j = i + 1; j < at.size(); ++j) {
+      Vector3<Rational> d = cross(normal(i), normal(j));
+      if (is_zero(d[0]) && is_zero(d[1]) && is_zero(d[2])) continue;
+      for (std::size_t k = 0; k < at.size(); ++k)
+        if (!is_zero(dot(d, normal(k)))) return std::nullopt;   // rank 3: the cells have vertices
+      Vector3<Time_poly> n = {rows[i][0], rows[i][1], rows[i][2]}, m = {rows[j][0], rows[j][1], rows[j][2]};
+      Vector3<Time_poly> dt = cross(n, m);
+      return Moving_plane{dt[0], dt[1], dt[2], Time_poly(Rational(1) - dot(d, w))};
+    }
+  return std::nullopt;   // rank 1 or 0
+}
+
+
 // The closure of w's cell at s, P(t) = { x : h_i(x, t) is 0 or of the sign
 // of h_i(w, s) }, keeps its vertices' planes on the whole interval (fact
 // 10), so a vertex x(t) of P(s) (Cramer's quotients) is a point of the
@@ -312,9 +330,14 @@ std::optional<Rational> Exact_slices::sample(const Algebraic& left, const Algebr
 // limit at t*: the quotients at t*, or, where the vertex's three planes
 // become dependent at t*, the limit of the quotients when it is finite
 // (limit_at).
-std::array<Algebraic, 3> Exact_slices::contact_point(const std::vector<Moving_plane>& rows,
+namespace {
+
+// A vertex of the closure of w's cell among `rows` at s whose quotients
+// have a finite limit at t*, that limit; none when every vertex runs off
+// (or the cell has none).
+std::optional<std::array<Algebraic, 3>> vertex_limit(const std::vector<Moving_plane>& rows,
                                                      const std::array<Rational, 3>& w, const Rational& s,
-                                                     const Algebraic& t_star, const std::vector<int>& near_rows) const
+                                                     const Algebraic& t_star, const std::vector<int>& near_rows)
 {
   std::vector<std::array<Rational, 4>> at = planes_at(rows, s);
   Interval_cell filter(at);
@@ -338,6 +361,24 @@ std::array<Algebraic, 3> Exact_slices::contact_point(const std::vector<Moving_pl
         return x.has_value();
       },
       filter, near_rows);
+  return x;
+}
+
+} // namespace
+
+// The pair's cells first; where w's has no vertex (normals of rank 2), the
+// same on the cell cut across its lineality (lineality_cut).
+std::array<Algebraic, 3> Exact_slices::contact_point(const std::vector<Moving_plane>& rows,
+                                                     const std::array<Rational, 3>& w, const Rational& s,
+                                                     const Algebraic& t_star, const std::vector<int>& near_rows) const
+{
+  std::optional<std::array<Algebraic, 3>> x = vertex_limit(rows, w, s, t_star, near_rows);
+  if (!x)
+    if (std::optional<Moving_plane> cut = lineality_cut(rows, planes_at(rows, s), w)) {
+      std::vector<Moving_plane> cut_rows = rows;
+      cut_rows.push_back(*cut);
+      x = vertex_limit(cut_rows, w, s, t_star, near_rows);
+    }
   if (!x)
     throw Rotation_unsupported("the contact point at t*: every vertex of the witness's cell runs off to infinity "
                                "at t* (a degenerate contact this release does not resolve)");

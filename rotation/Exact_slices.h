@@ -42,6 +42,20 @@ std::optional<Quotient_point> closed_point_at(const std::vector<Moving_plane>& r
 // (exact/Closed_in_field.h).
 Field_posed posed_at(const Rotating_object& o, const Algebraic& r);
 
+// Where the pair's normals span a plane only (rank 2 at s, so on the whole
+// critical interval: the minors with v_inf keep their sign there), every
+// cell is a prism along the lineality d(t) = n_i(t) x n_j(t) and has no
+// vertex. The plane d(t).x + e = 0, e = 1 - d(s).w (w strictly on its
+// positive side), cuts them all: its minors with three rows are |d| times
+// the rows' own minors in d's orthogonal plane, and with two rows and
+// v_inf (n_i x n_j).d, so they vanish only where the pair's do, and the
+// cut arrangement keeps its vertices' planes on the interval as the pair's
+// does. The cut cell's vertices are points of w's cell's closure: where a
+// contact point or a witness path starts (docs/rotation.md). None when the
+// normals at s (at: the rows there) have rank 3, or below 2.
+std::optional<Moving_plane> lineality_cut(const std::vector<Moving_plane>& rows,
+                                          const std::vector<std::array<Rational, 4>>& at, const std::array<Rational, 3>& w);
+
 class Exact_slices {
 public:
   static constexpr bool is_exact = true;
