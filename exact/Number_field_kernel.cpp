@@ -11,6 +11,8 @@ namespace {
 
 mpq_class to_mpq(const Rational& q) { return mpq_class(q.mpq()); }
 Rational from_mpq(const mpq_class& q) { return Rational(q.get_mpq_t()); }
+// The rational value of an element that is rational (is_rational()).
+Rational rational_value(const Field_number::Element& e) { return from_mpq(static_cast<mpq_class>(e)); }
 
 // The rational an arf holds (finite: the ends of a ball made from two).
 Rational rational_of(const arf_t x)
@@ -103,7 +105,7 @@ Field_number Number_field_kernel::at(const std::vector<Rational>& g) const
 std::vector<Rational> Number_field_kernel::coefficients(const FT& x) const
 {
   const Field_number::Element& e = x.element();
-  if (e.is_rational()) return {from_mpq(static_cast<mpq_class>(e))};
+  if (e.is_rational()) return {rational_value(e)};
   std::vector<mpz_class> num = e.num_vector();
   mpz_class den = e.den();
   std::vector<Rational> out;
@@ -125,7 +127,7 @@ Field_number Number_field_kernel::floor_to_grid(const FT& x, int bits) const
 int Number_field_kernel::grid_exponent(const FT& x) const
 {
   if (sign(x) != CGAL::POSITIVE) throw std::logic_error("internal error: grid_exponent of a number that is not positive");
-  if (x.element().is_rational()) return clash4d::grid_exponent(from_mpq(static_cast<mpq_class>(x.element())));
+  if (x.element().is_rational()) return clash4d::grid_exponent(rational_value(x.element()));
   // x's floor on a grid of 2^-bits, made finer until it is not zero; then
   // x lies in [f, f + 2^-bits), and x is irrational, so it is never f nor a
   // power of two: the exponent of f decides unless f + 2^-bits passes the
@@ -140,16 +142,19 @@ int Number_field_kernel::grid_exponent(const FT& x) const
 
 std::string Number_field_kernel::to_text(const FT& x) const
 {
-  if (x.element().is_rational()) return to_string(from_mpq(static_cast<mpq_class>(x.element())));
+  if (x.element().is_rational()) return to_string(rational_value(x.element()));
   return Algebraic::quotient_at(r_, coefficients(x), {Rational(1)}).to_text();
 }
 
 Stat_number Number_field_kernel::to_stat(const FT& x) const
 {
   if (x.element().is_rational())
-    return {Stat_number::Kind::Exact, from_mpq(static_cast<mpq_class>(x.element())), 0, 0};
-  Rational f = floor_on_grid(x, 40);   // x in [f, f + 2^-40]
-  return {Stat_number::Kind::Enclosure, Rational(0), round_to_nearest(f), round_to_nearest(f + clash4d::power_of_two(-40))};
+    return {Stat_number::Kind::Exact, rational_value(x.element()), 0, 0};
+  // x in [f, f + 2^-40]; each end rounded outward, so the doubles still
+  // enclose x (an Enclosure is read as sure bounds).
+  Rational f = floor_on_grid(x, 40);
+  return {Stat_number::Kind::Enclosure, Rational(0), enclosing_interval(f).first,
+          enclosing_interval(f + clash4d::power_of_two(-40)).second};
 }
 
 } // namespace clash4d

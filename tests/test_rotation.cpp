@@ -24,6 +24,7 @@
 #include "scene/Scene_reader.h"
 #include "scene/Scene_writer.h"
 #include "support/Cli_run.h"
+#include "support/Expected_numbers.h"
 #include "support/Random_rotating_scene.h"
 #include "support/Random_scene.h"
 #include "support/Stage_tests.h"
@@ -62,32 +63,6 @@ static std::vector<std::string> fixture_names()
 }
 
 static Rational q(const std::string& s) { return rational_from_string(s); }
-
-// An expected number: "p/q", or {"poly", "between"}: the one root there.
-static Algebraic expected_number(const json& e)
-{
-  if (e.is_string()) return Algebraic(q(e.get<std::string>()));
-  std::vector<Rational> poly;
-  for (const auto& c : e["poly"]) poly.push_back(q(c.get<std::string>()));
-  auto roots = Algebraic::real_roots(poly, q(e["between"][0].get<std::string>()), q(e["between"][1].get<std::string>()));
-  BOOST_REQUIRE_EQUAL(roots.size(), 1u);
-  return roots[0];
-}
-
-// A coordinate: an exact number, or {"range": [lo, hi]} where the contact
-// set leaves it free.
-static void check_coordinate(const Algebraic& x, const json& e, const std::string& what)
-{
-  BOOST_TEST_CONTEXT(what << " = " << x.to_text() << ", expected " << e.dump())
-  {
-    if (e.is_object() && e.contains("range")) {
-      BOOST_TEST(compare(x, q(e["range"][0].get<std::string>())) >= 0);
-      BOOST_TEST(compare(x, q(e["range"][1].get<std::string>())) <= 0);
-    } else {
-      BOOST_TEST(compare(x, expected_number(e)) == 0);
-    }
-  }
-}
 
 // ---- An independent evaluator of the fixtures' solids (blocks, unions,
 // differences) under pose motions, written from the spec: the pose at t by
