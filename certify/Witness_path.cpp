@@ -103,7 +103,7 @@ json poly_json(Poly p)
 namespace {
 
 // A path from a vertex of the closure of w's cell among `starts` at s (the
-// pair's rows, or those and a cut across their lineality) that keeps its
+// pair's rows, or those and cuts across their lineality) that keeps its
 // side of every one of `rows` (the objects' own planes, a's first `split`).
 std::optional<json> path_from_vertices(const std::vector<Moving_plane>& starts, const std::vector<Moving_plane>& rows,
                                        std::size_t split, const Rotating_object& a, const Rotating_object& b,
@@ -140,8 +140,8 @@ std::optional<json> path_from_vertices(const std::vector<Moving_plane>& starts, 
 
 } // namespace
 
-// From the pair's cells first; where w's has no vertex (normals of rank 2),
-// from the cell cut across its lineality (lineality_cut).
+// From the pair's cells first; where w's has no vertex (normals of rank 2
+// or 1), from the cell cut across its lineality (lineality_cuts).
 json witness_path(const Rotating_object& a, const Rotating_object& b, const Algebraic& t_star,
                   const std::array<Rational, 3>& w, const Rational& s)
 {
@@ -150,12 +150,14 @@ json witness_path(const Rotating_object& a, const Rotating_object& b, const Alge
   std::vector<Moving_plane> more = moving_planes(b.shape.planes, segment_at(b.segments, s));
   rows.insert(rows.end(), more.begin(), more.end());
   std::optional<json> found = path_from_vertices(rows, rows, split, a, b, t_star, w, s);
-  if (!found)
-    if (std::optional<Moving_plane> cut = lineality_cut(rows, planes_at(rows, s), w)) {
+  if (!found) {
+    std::vector<Moving_plane> cuts = lineality_cuts(rows, planes_at(rows, s), s, w);
+    if (!cuts.empty()) {
       std::vector<Moving_plane> cut_rows = rows;
-      cut_rows.push_back(*cut);
+      cut_rows.insert(cut_rows.end(), cuts.begin(), cuts.end());
       found = path_from_vertices(cut_rows, rows, split, a, b, t_star, w, s);
     }
+  }
   if (!found)
     throw Turning_proof_missing("objects '" + a.name + "' and '" + b.name + "': no path inside both was found after t* = " +
                                 t_star.to_text());

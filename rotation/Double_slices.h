@@ -11,6 +11,7 @@
 
 #include "check/Check_answer.h"
 #include "numbers/Algebraic.h"
+#include "rotation/Contact_at_critical.h"
 #include "rotation/Critical_times.h"
 #include "rotation/Moving_planes.h"
 #include "scene/Scene.h"
@@ -53,10 +54,10 @@ public:
                                          const Rational& s, const Algebraic& t_star,
                                          const std::vector<int>& near_rows = {}) const;
   // Never asked: every critical time here is a double.
-  std::optional<std::array<Algebraic, 3>> closed_at_irrational(const std::vector<Moving_plane>&, const Rotating_object&,
-                                                               const Rotating_object&, const Critical_time&) const
+  Contact_at_critical closed_at_irrational(const std::vector<Moving_plane>&, const Rotating_object&,
+                                           const Rotating_object&, const Critical_time&) const
   {
-    return std::nullopt;
+    return {};
   }
 
 private:

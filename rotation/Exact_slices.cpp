@@ -305,21 +305,74 @@ std::optional<Rational> Exact_slices::sample(const Algebraic& left, const Algebr
   return simplest_between(left, right);
 }
 
-std::optional<Moving_plane> lineality_cut(const std::vector<Moving_plane>& rows,
-                                          const std::vector<std::array<Rational, 4>>& at, const std::array<Rational, 3>& w)
+namespace {
+
+bool is_zero_poly(const Time_poly& p)
+{
+  for (int i = 0; i < p.size(); ++i)
+    if (!is_zero(p[i])) return false;
+  return true;
+}
+
+Vector3<Time_poly> moving_normal(const Moving_plane& row) { return {row[0], row[1], row[2]}; }
+
+// The plane d(t).x + e = 0 through the origin (e = 0), so that a contact
+// point on it has small coordinates where the pair's planes pass near the
+// origin; e = 1 where w lies on that plane at s. Either way w is off it,
+// and w's side of it names w's cut cell.
+Moving_plane cut_through(const Vector3<Time_poly>& d, const Rational& s, const std::array<Rational, 3>& w)
+{
+  Rational at_w(0);
+  for (int c = 0; c < 3; ++c) at_w += d[c].at(s) * w[c];
+  return Moving_plane{d[0], d[1], d[2], Time_poly(Rational(is_zero(at_w) ? 1 : 0))};
+}
+
+// Rank 1: every row's normal is a multiple of n = n_i(t) for all t (the
+// rows' cross products with it vanish as polynomials, not only at s), so
+// every cell is a slab across n and each point of a face's plane has that
+// face's signs for every other row. Two cuts d1 = n x c and d2 = n x d1,
+// c the axis least along n(s), both through the origin, meet a face's plane in one point wherever
+// d1 is not zero (their minor with n is |n|^2 |d1|^2): a point of the
+// face for every t where it is defined. None when the normals are not
+// parallel as polynomials.
+std::vector<Moving_plane> slab_cuts(const std::vector<Moving_plane>& rows, std::size_t i,
+                                    const std::array<Rational, 4>& at_s, const Rational& s,
+                                    const std::array<Rational, 3>& w)
+{
+  Vector3<Time_poly> n = moving_normal(rows[i]);
+  for (const Moving_plane& row : rows) {
+    Vector3<Time_poly> x = cross(n, moving_normal(row));
+    if (!is_zero_poly(x[0]) || !is_zero_poly(x[1]) || !is_zero_poly(x[2])) return {};
+  }
+  int axis = 0;
+  for (int c = 1; c < 3; ++c)
+    if (CGAL::abs(at_s[c]) < CGAL::abs(at_s[axis])) axis = c;
+  Vector3<Time_poly> c{Time_poly(Rational(0)), Time_poly(Rational(0)), Time_poly(Rational(0))};
+  c[axis] = Time_poly(Rational(1));
+  Vector3<Time_poly> d1 = cross(n, c), d2 = cross(n, d1);
+  return {cut_through(d1, s, w), cut_through(d2, s, w)};
+}
+
+} // namespace
+
+std::vector<Moving_plane> lineality_cuts(const std::vector<Moving_plane>& rows,
+                                         const std::vector<std::array<Rational, 4>>& at, const Rational& s,
+                                         const std::array<Rational, 3>& w)
 {
   auto normal = [&](std::size_t i) { return Vector3<Rational>{at[i][0], at[i][1], at[i][2]}; };
-  for (std::size_t i = 0; i < at.size(); ++i)
+  std::optional<std::size_t> some;   // a row whose normal is not zero at s
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    if (!some && !(is_zero(at[i][0]) && is_zero(at[i][1]) && is_zero(at[i][2]))) some = i;
     for (std::size_t j = i + 1; j < at.size(); ++j) {
       Vector3<Rational> d = cross(normal(i), normal(j));
       if (is_zero(d[0]) && is_zero(d[1]) && is_zero(d[2])) continue;
       for (std::size_t k = 0; k < at.size(); ++k)
-        if (!is_zero(dot(d, normal(k)))) return std::nullopt;   // rank 3: the cells have vertices
-      Vector3<Time_poly> n = {rows[i][0], rows[i][1], rows[i][2]}, m = {rows[j][0], rows[j][1], rows[j][2]};
-      Vector3<Time_poly> dt = cross(n, m);
-      return Moving_plane{dt[0], dt[1], dt[2], Time_poly(Rational(1) - dot(d, w))};
+        if (!is_zero(dot(d, normal(k)))) return {};   // rank 3: the cells have vertices
+      return {cut_through(cross(moving_normal(rows[i]), moving_normal(rows[j])), s, w)};
     }
-  return std::nullopt;   // rank 1 or 0
+  }
+  if (!some) return {};
+  return slab_cuts(rows, *some, at[*some], s, w);
 }
 
 
@@ -366,19 +419,21 @@ std::optional<std::array<Algebraic, 3>> vertex_limit(const std::vector<Moving_pl
 
 } // namespace
 
-// The pair's cells first; where w's has no vertex (normals of rank 2), the
-// same on the cell cut across its lineality (lineality_cut).
+// The pair's cells first; where w's has no vertex (normals of rank 2 or 1),
+// the same on the cell cut across its lineality (lineality_cuts).
 std::array<Algebraic, 3> Exact_slices::contact_point(const std::vector<Moving_plane>& rows,
                                                      const std::array<Rational, 3>& w, const Rational& s,
                                                      const Algebraic& t_star, const std::vector<int>& near_rows) const
 {
   std::optional<std::array<Algebraic, 3>> x = vertex_limit(rows, w, s, t_star, near_rows);
-  if (!x)
-    if (std::optional<Moving_plane> cut = lineality_cut(rows, planes_at(rows, s), w)) {
+  if (!x) {
+    std::vector<Moving_plane> cuts = lineality_cuts(rows, planes_at(rows, s), s, w);
+    if (!cuts.empty()) {
       std::vector<Moving_plane> cut_rows = rows;
-      cut_rows.push_back(*cut);
+      cut_rows.insert(cut_rows.end(), cuts.begin(), cuts.end());
       x = vertex_limit(cut_rows, w, s, t_star, near_rows);
     }
+  }
   if (!x)
     throw Rotation_unsupported("the contact point at t*: every vertex of the witness's cell runs off to infinity "
                                "at t* (a degenerate contact this release does not resolve)");
@@ -410,14 +465,22 @@ Field_posed posed_at(const Rotating_object& o, const Algebraic& r)
 
 namespace {
 
+// The closed question at an irrational critical time, as quotients in t:
+// a point, none, or not decided (the reason).
+struct Closed_quotients {
+  std::optional<Quotient_point> point;
+  std::string undecided;
+};
+
 // The closed question at the irrational r asked of the static pipeline in
 // Q(r) (exact/Closed_in_field.h); its point as quotients over 1.
-std::optional<Quotient_point> field_point_at(const Rotating_object& a, const Rotating_object& b, const Algebraic& r)
+Closed_quotients field_point_at(const Rotating_object& a, const Rotating_object& b, const Algebraic& r)
 {
   Field_answer x = closed_point_in_field(r, posed_at(a, r), posed_at(b, r));
-  if (!x.refused.empty()) throw Rotation_unsupported("the closed question at an irrational critical time: " + x.refused);
-  if (!x.meet) return std::nullopt;
-  return Quotient_point{{Time_poly(x.point[0]), Time_poly(x.point[1]), Time_poly(x.point[2])}, Time_poly(Rational(1))};
+  if (!x.refused.empty()) return {std::nullopt, "the closed question at an irrational critical time: " + x.refused};
+  if (!x.meet) return {};
+  return {Quotient_point{{Time_poly(x.point[0]), Time_poly(x.point[1]), Time_poly(x.point[2])}, Time_poly(Rational(1))},
+          {}};
 }
 
 // The closed question at an irrational critical time (fact 12). Two
@@ -426,30 +489,32 @@ std::optional<Quotient_point> field_point_at(const Rotating_object& a, const Rot
 // decide. A contact of unbounded shapes may have no vertex in it (the edge
 // line of a wedge settling on a half-space), so where either is unbounded
 // and no candidate holds, the static pipeline in Q(r) decides.
-std::optional<Quotient_point> closed_quotients(const std::vector<Moving_plane>& rows, const Rotating_object& a,
-                                               const Rotating_object& b, const Critical_time& c)
+Closed_quotients closed_quotients(const std::vector<Moving_plane>& rows, const Rotating_object& a,
+                                  const Rotating_object& b, const Critical_time& c)
 {
-  if (std::optional<Quotient_point> x = common_point_at(rows, a, b, c)) return x;
-  if (a.shape.reach && b.shape.reach) return std::nullopt;
+  if (std::optional<Quotient_point> x = common_point_at(rows, a, b, c)) return {x, {}};
+  if (a.shape.reach && b.shape.reach) return {};
   return field_point_at(a, b, c.t);
 }
 
 } // namespace
 
-std::optional<std::array<Algebraic, 3>> Exact_slices::closed_at_irrational(const std::vector<Moving_plane>& rows,
-                                                                         const Rotating_object& a,
-                                                                         const Rotating_object& b,
-                                                                         const Critical_time& c) const
+Contact_at_critical Exact_slices::closed_at_irrational(const std::vector<Moving_plane>& rows, const Rotating_object& a,
+                                                       const Rotating_object& b, const Critical_time& c) const
 {
-  std::optional<Quotient_point> x = closed_quotients(rows, a, b, c);
-  if (!x) return std::nullopt;
-  return point_at(x->num, x->den, c.t);
+  Closed_quotients x = closed_quotients(rows, a, b, c);
+  if (!x.point) return {std::nullopt, x.undecided};
+  return {point_at(x.point->num, x.point->den, c.t), {}};
 }
 
+// The certificate's writer asks only where check found a point, so an
+// undecided question here is a refusal of the certificate.
 std::optional<Quotient_point> closed_point_at(const std::vector<Moving_plane>& rows, const Rotating_object& a,
                                               const Rotating_object& b, const Critical_time& c)
 {
-  return closed_quotients(rows, a, b, c);
+  Closed_quotients x = closed_quotients(rows, a, b, c);
+  if (!x.undecided.empty()) throw Rotation_unsupported(x.undecided);
+  return x.point;
 }
 
 } // namespace clash4d

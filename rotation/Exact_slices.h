@@ -9,6 +9,7 @@
 #include "check/Check_answer.h"
 #include "exact/Closed_in_field.h"
 #include "numbers/Algebraic.h"
+#include "rotation/Contact_at_critical.h"
 #include "rotation/Critical_times.h"
 #include "rotation/Moving_planes.h"
 #include "scene/Scene.h"
@@ -45,16 +46,20 @@ Field_posed posed_at(const Rotating_object& o, const Algebraic& r);
 // Where the pair's normals span a plane only (rank 2 at s, so on the whole
 // critical interval: the minors with v_inf keep their sign there), every
 // cell is a prism along the lineality d(t) = n_i(t) x n_j(t) and has no
-// vertex. The plane d(t).x + e = 0, e = 1 - d(s).w (w strictly on its
-// positive side), cuts them all: its minors with three rows are |d| times
+// vertex. The plane d(t).x + e = 0, e = 0 (or 1 where w is on d(s).x = 0,
+// so that w is off it), cuts them all: its minors with three rows are |d| times
 // the rows' own minors in d's orthogonal plane, and with two rows and
 // v_inf (n_i x n_j).d, so they vanish only where the pair's do, and the
 // cut arrangement keeps its vertices' planes on the interval as the pair's
-// does. The cut cell's vertices are points of w's cell's closure: where a
-// contact point or a witness path starts (docs/rotation.md). None when the
-// normals at s (at: the rows there) have rank 3, or below 2.
-std::optional<Moving_plane> lineality_cut(const std::vector<Moving_plane>& rows,
-                                          const std::vector<std::array<Rational, 4>>& at, const std::array<Rational, 3>& w);
+// does. Where the normals are all parallel, as polynomials (rank 1), the
+// cells are slabs, and two cuts across n make a point of each face (see
+// the .cpp). The cut cell's vertices are points of w's cell's closure:
+// where a contact point or a witness path starts (docs/rotation.md). None
+// when the normals at s (at: the rows there) have rank 3, or are parallel
+// at s only.
+std::vector<Moving_plane> lineality_cuts(const std::vector<Moving_plane>& rows,
+                                         const std::vector<std::array<Rational, 4>>& at, const Rational& s,
+                                         const std::array<Rational, 3>& w);
 
 class Exact_slices {
 public:
@@ -86,10 +91,10 @@ public:
                                          const Rational& s, const Algebraic& t_star,
                                          const std::vector<int>& near_rows = {}) const;
   // The closed question at an irrational critical time c: a common point
-  // of both closed objects, or none.
-  std::optional<std::array<Algebraic, 3>> closed_at_irrational(const std::vector<Moving_plane>& rows,
-                                                               const Rotating_object& a, const Rotating_object& b,
-                                                               const Critical_time& c) const;
+  // of both closed objects, none, or not decided (two unbounded shapes
+  // the static pipeline in Q(r) refuses).
+  Contact_at_critical closed_at_irrational(const std::vector<Moving_plane>& rows, const Rotating_object& a,
+                                           const Rotating_object& b, const Critical_time& c) const;
 
 private:
   Static_check check_;

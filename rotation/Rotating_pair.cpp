@@ -241,7 +241,10 @@ public:
     answer_.counts.piece_pairs = 1;
     for (std::size_t p = 0; p + 1 < ends.size(); ++p)
       if (piece(ends[p], ends[p + 1])) return answer_;
-    if (closed_ && !end_apart_) at_rational(t_hi);   // the span's end, closed only
+    if (closed_ && !end_apart_ && at_rational(t_hi)) return answer_;   // the span's end, closed only
+    // No contact anywhere else: whether they touch at the undecided time
+    // decides the verdict, so it is not made.
+    if (!undecided_.empty()) throw Rotation_unsupported(undecided_);
     return answer_;
   }
 
@@ -349,12 +352,20 @@ private:
     return true;
   }
 
+  // An irrational time whose closed question is not decided ends an
+  // --earliest search (the first contact may be there); a verdict goes on,
+  // since a contact found later decides it all the same.
   bool at_critical(const std::vector<Moving_plane>& rows, const Critical_time& c)
   {
     if (c.t.is_rational()) return at_rational(c.t.rational());
-    std::optional<std::array<Algebraic, 3>> x = slices_.closed_at_irrational(rows, a_, b_, c);
-    if (!x) return false;
-    found_closed({(*x)[0], (*x)[1], (*x)[2], c.t}, true);
+    Contact_at_critical x = slices_.closed_at_irrational(rows, a_, b_, c);
+    if (!x.decided()) {
+      if (options_.earliest) throw Rotation_unsupported(x.undecided);
+      if (undecided_.empty()) undecided_ = x.undecided;
+      return false;
+    }
+    if (!x.point) return false;
+    found_closed({(*x.point)[0], (*x.point)[1], (*x.point)[2], c.t}, true);
     return true;
   }
 
@@ -376,6 +387,7 @@ private:
   bool closed_;
   Rational t_lo_;
   bool end_apart_ = false;   // the last piece's end lies in an interval proved apart
+  std::string undecided_;    // the first critical time's closed question not decided, why
   Rotating_answer answer_;
   std::optional<Pair_features> features_;   // two convex pieces' event minors
   const Apart_cover* cover_ = nullptr;       // the piece's, while its runs are sliced
