@@ -468,6 +468,17 @@ Own_checks own_checks(const Scene& scene, std::shared_ptr<Exact_checker>& exact)
           [&scene](const Check_options& o) { return own_answer(check_rotating(rounded_scene(scene), o, "exact")); }};
 }
 
+// Every subject is judged against the exact ones: without them there is
+// no comparison, only a scene this release does not decide (as check
+// reports it, exit 2 naming the reason), and no subject is run for it.
+void require_references(const std::vector<Run>& runs)
+{
+  for (int i : {0, 1})
+    if (!runs[i].ok)
+      throw Input_error("", "not compared: the " + runs[i].subject + " subject, the reference, did not decide it: " +
+                                runs[i].error);
+}
+
 // The exact references (regularised, then closed) and the toolkit's own
 // subjects in the semantics asked for, then the libraries (closed).
 std::vector<Run> builtin_runs(const Scene& scene, const Compare_options& options, const Check_options& co)
@@ -485,6 +496,7 @@ std::vector<Run> builtin_runs(const Scene& scene, const Compare_options& options
   runs.push_back(timed(announce("exact"), true, [&] { return checks.exact(co); }));
   runs.push_back(timed(announce("exact closed"), true, [&] { return checks.exact(closed); }));
   runs.back().semantics = "closed";
+  require_references(runs);
   std::size_t own_from = runs.size();
   if (options.doubles) {
     runs.push_back(timed(announce("double"), false, [&] { return checks.in_doubles(0, own); }));
@@ -513,13 +525,6 @@ Comparison compare_scene(const Scene& scene, const std::string& file, const Comp
   Check_options co;
   co.earliest = options.earliest;
   std::vector<Run> runs = builtin_runs(scene, options, co);
-  // Every subject is judged against the exact ones: without them there is
-  // no comparison, only a scene this release does not decide (as check
-  // reports it, exit 2 naming the reason).
-  for (int i : {0, 1})
-    if (!runs[i].ok)
-      throw Input_error("", "not compared: the " + runs[i].subject + " subject, the reference, did not decide it: " +
-                                runs[i].error);
   Witness_judge judge(scene);
   for (const auto& pool : options.externals) {
     if (options.on_subject) options.on_subject(pool->spec().name);
