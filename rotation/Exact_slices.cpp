@@ -331,10 +331,10 @@ Moving_plane cut_through(const Vector3<Time_poly>& d, const Rational& s, const s
 // rows' cross products with it vanish as polynomials, not only at s), so
 // every cell is a slab across n and each point of a face's plane has that
 // face's signs for every other row. Two cuts d1 = n x c and d2 = n x d1,
-// c the axis least along n(s), both through the origin, meet a face's plane in one point wherever
-// d1 is not zero (their minor with n is |n|^2 |d1|^2): a point of the
-// face for every t where it is defined. None when the normals are not
-// parallel as polynomials.
+// c the axis least along n(s), both through the origin, meet a face's
+// plane in one point wherever d1 is not zero (their minor with n is
+// |n|^2 |d1|^2): a point of the face for every t where it is defined.
+// None when the normals are not parallel as polynomials.
 std::vector<Moving_plane> slab_cuts(const std::vector<Moving_plane>& rows, std::size_t i,
                                     const std::array<Rational, 4>& at_s, const Rational& s,
                                     const std::array<Rational, 3>& w)
