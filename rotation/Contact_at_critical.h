@@ -13,12 +13,17 @@
 
 namespace clash4d {
 
-struct Contact_at_critical {
-  std::optional<std::array<Algebraic, 3>> point;   // where they meet, when they do
-  std::string undecided;                           // why it is not decided; empty when it is
+// Point: the meeting point's form (algebraic coordinates; or quotients of
+// polynomials in t, the certificate writer's, in Exact_slices.cpp).
+template <class Point>
+struct Closed_at_critical {
+  std::optional<Point> point;   // where they meet, when they do
+  std::string undecided;        // why it is not decided; empty when it is
 
   bool decided() const { return undecided.empty(); }
 };
+
+using Contact_at_critical = Closed_at_critical<std::array<Algebraic, 3>>;
 
 } // namespace clash4d
 

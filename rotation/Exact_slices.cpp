@@ -307,13 +307,6 @@ std::optional<Rational> Exact_slices::sample(const Algebraic& left, const Algebr
 
 namespace {
 
-bool is_zero_poly(const Time_poly& p)
-{
-  for (int i = 0; i < p.size(); ++i)
-    if (!is_zero(p[i])) return false;
-  return true;
-}
-
 Vector3<Time_poly> moving_normal(const Moving_plane& row) { return {row[0], row[1], row[2]}; }
 
 // The plane d(t).x + e = 0 through the origin (e = 0), so that a contact
@@ -342,7 +335,7 @@ std::vector<Moving_plane> slab_cuts(const std::vector<Moving_plane>& rows, std::
   Vector3<Time_poly> n = moving_normal(rows[i]);
   for (const Moving_plane& row : rows) {
     Vector3<Time_poly> x = cross(n, moving_normal(row));
-    if (!is_zero_poly(x[0]) || !is_zero_poly(x[1]) || !is_zero_poly(x[2])) return {};
+    if (!is_zero_polynomial(x[0]) || !is_zero_polynomial(x[1]) || !is_zero_polynomial(x[2])) return {};
   }
   int axis = 0;
   for (int c = 1; c < 3; ++c)
@@ -467,10 +460,7 @@ namespace {
 
 // The closed question at an irrational critical time, as quotients in t:
 // a point, none, or not decided (the reason).
-struct Closed_quotients {
-  std::optional<Quotient_point> point;
-  std::string undecided;
-};
+using Closed_quotients = Closed_at_critical<Quotient_point>;
 
 // The closed question at the irrational r asked of the static pipeline in
 // Q(r) (exact/Closed_in_field.h); its point as quotients over 1.
@@ -513,7 +503,7 @@ std::optional<Quotient_point> closed_point_at(const std::vector<Moving_plane>& r
                                               const Rotating_object& b, const Critical_time& c)
 {
   Closed_quotients x = closed_quotients(rows, a, b, c);
-  if (!x.undecided.empty()) throw Rotation_unsupported(x.undecided);
+  if (!x.decided()) throw Rotation_unsupported(x.undecided);
   return x.point;
 }
 

@@ -18,6 +18,15 @@ namespace clash4d {
 // pose polynomials reach degree 9 in a minor of four planes.
 using Time_poly = Polynomial<Rational, 16>;
 
+// p = 0 as a polynomial: every coefficient is zero, so p vanishes at every
+// t (not only at the times asked).
+inline bool is_zero_polynomial(const Time_poly& p)
+{
+  for (int i = 0; i < p.size(); ++i)
+    if (CGAL::sign(p[i]) != CGAL::ZERO) return false;
+  return true;
+}
+
 struct Pose_segment {
   // The closed interval [lo, hi] of the segment; unbounded ends are flagged.
   Rational lo, hi;

@@ -29,12 +29,9 @@ namespace {
 
 Rational q(const std::string& s) { return rational_from_string(s); }
 
-// The one root of p (constant term first) in (lo, hi).
 Algebraic root(const std::vector<Rational>& p, const std::string& lo, const std::string& hi)
 {
-  std::vector<Algebraic> r = Algebraic::real_roots(p, q(lo), q(hi));
-  BOOST_REQUIRE_EQUAL(r.size(), 1u);
-  return r[0];
+  return only_root(p, q(lo), q(hi));
 }
 
 using Poly = std::vector<Rational>;   // in t, constant term first

@@ -15,15 +15,22 @@
 
 namespace clash4d {
 
+// The one root of p (constant term first) in (lo, hi); a test that names
+// an interval holding another root, or none, fails here.
+inline Algebraic only_root(const std::vector<Rational>& p, const Rational& lo, const Rational& hi)
+{
+  std::vector<Algebraic> roots = Algebraic::real_roots(p, lo, hi);
+  BOOST_REQUIRE_EQUAL(roots.size(), 1u);
+  return roots[0];
+}
+
 inline Algebraic expected_number(const nlohmann::json& e)
 {
   auto q = [](const nlohmann::json& s) { return rational_from_string(s.get<std::string>()); };
   if (e.is_string()) return Algebraic(q(e));
   std::vector<Rational> poly;
   for (const auto& c : e["poly"]) poly.push_back(q(c));
-  std::vector<Algebraic> roots = Algebraic::real_roots(poly, q(e["between"][0]), q(e["between"][1]));
-  BOOST_REQUIRE_EQUAL(roots.size(), 1u);
-  return roots[0];
+  return only_root(poly, q(e["between"][0]), q(e["between"][1]));
 }
 
 inline void check_coordinate(const Algebraic& x, const nlohmann::json& e, const std::string& what)
