@@ -146,9 +146,9 @@ public:
       // there) and each cell point strictly inside its object at its time
       // (Convex_pair::cell): only the cell points are left to check.
       r.witness = contact;
-      r.witness_cells = {goal.cell_a, goal.cell_b};
-      r.witness_verified = is_generic_inside(k_, model_, r.a, goal.cell_a, sides_) &&
-                           is_generic_inside(k_, model_, r.b, goal.cell_b, sides_);
+      r.witness_cells = {goal.convex->cell_a, goal.convex->cell_b};
+      r.witness_verified = is_generic_inside(k_, model_, r.a, goal.convex->cell_a, sides_) &&
+                           is_generic_inside(k_, model_, r.b, goal.convex->cell_b, sides_);
       r.contact_cells = r.witness_cells;
     } else if (goal.closed()) {
       std::optional<V4> ga = cells ? (*cells)[0] : w.near_in_space(goal.contact, goal.toward_a, shear, A),

@@ -532,7 +532,7 @@ private:
     if (!policy_.convex_improves(k_, *this, goal, B ? &*B : nullptr, lowest[3]))
       return Verdict::apart;   // past the ceiling: nothing to record
     goal.record(k_, in, lowest);
-    goal.convex = true;
+    goal.convex.emplace();
     found_ = {index_, B.has_value(), B ? *B : Basis{}, g, C != nullptr, C ? *C : Centre{}};
     policy_.convex_found(*this);
     return Verdict::collide;
@@ -545,9 +545,7 @@ private:
     V4 p = B ? vertex(*B) : exact_point(g);
     if (!policy_.convex_improves(k_, *this, goal, B, p[3])) return Verdict::apart;
     goal.record_touch(k_, p, V4{FT(0), FT(0), FT(0), FT(0)}, V4{FT(0), FT(0), FT(0), FT(0)});
-    goal.convex = true;
-    goal.cell_a = cell(0, p[3]);
-    goal.cell_b = cell(1, p[3]);
+    goal.convex = typename Search_goal<FT>::Convex_record{cell(0, p[3]), cell(1, p[3])};
     found_ = {index_, B != nullptr, B ? *B : Basis{}, g, false, Centre{}};
     policy_.convex_found(*this);
     return Verdict::collide;

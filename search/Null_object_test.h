@@ -230,9 +230,8 @@ private:
   const std::vector<V>* keys_ = nullptr;
   std::vector<V> plane_key_;
   std::vector<H> whole_key_;              // plane_keys, per plane (a face: itself)
-  V line_key_{};
   bool line_keyed_ = false;               // keys are known for this line
-  bool line_key_made_ = false;            // line_key_ is this line's
+  std::optional<V> line_key_;             // the line's direction from them, once made
   // on_line_closed: the segment's points, per plane its cut's group (or -1)
   // and the sign of its slope along the line.
   struct Point_on_line {
@@ -244,10 +243,10 @@ private:
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
   // classify's cells around the current line, for the planes through the
   // point (Neighbourhood::Memo): the same at every point of the line
-  // between cuts. Kept for one examination of one line (memo_open_).
+  // between cuts. Kept for one examination of one line, with the planes
+  // through the point it was made for (none: not yet made on this line).
   typename Neighbourhood<K>::Memo memo_;
-  std::vector<std::size_t> memo_through_;
-  bool memo_open_ = false;
+  std::optional<std::vector<std::size_t>> memo_through_;
   std::vector<Point_on_line> points_;
   std::vector<std::size_t> groups_at_;
   std::vector<long> group_of_;
@@ -327,9 +326,10 @@ private:
     for (int g = 0; common && line_group_ < 0; ++g)
       if (common & (1u << g)) line_group_ = g;
     line_ = {i, j, m};
-    memo_open_ = false;   // each examination of a line anew
+    memo_through_.reset();   // each examination of a line anew
     find_line_corners(i, j, m);
-    line_keyed_ = line_key_made_ = false;
+    line_keyed_ = false;
+    line_key_.reset();
     if (const std::vector<V>* keys = policy_.template normal_keys<FT>()) {
       if (keys != keys_) {
         keys_ = keys;
@@ -380,12 +380,11 @@ private:
   // The current line's direction from the keys, made once per line.
   const V& line_key()
   {
-    if (!line_key_made_) {
+    if (!line_key_) {
       const auto& ab = key_minors_.at(line_[0], line_[1], plane_key_[line_[0]], plane_key_[line_[1]]);
       line_key_ = cross_with(ab, line_[2], plane_key_[line_[2]]);
-      line_key_made_ = true;
     }
-    return line_key_;
+    return *line_key_;
   }
 
   // Whether plane p, parallel to the current line, contains it, beyond
@@ -1016,11 +1015,10 @@ private:
         if (verdict_only_) return point_along(base, s, l);   // inside: a verdict, the point is not used
       }
     }
-    if (!memo_open_ || memo_through_ != through) {
+    if (!memo_through_ || *memo_through_ != through) {
       memo_.cells.clear();
       memo_.complete = false;
       memo_through_ = through;
-      memo_open_ = true;
     }
     std::optional<V> d = hood.find_inside(l, normals, inside, &memo_);
     stats_.cells_tested += hood.cells_tested();

@@ -44,10 +44,13 @@ struct Search_goal {
   // Recorded by a convex pair's linear programs (search/Convex_pair.h): the
   // region's closure on the sub-span is one convex polyhedron holding the
   // contact point, with `inside` in its interior; closed, cell_a and cell_b
-  // are points strictly inside each object at the contact's time. Every
-  // such point sees the contact in its cell's closure.
-  bool convex = false;
-  Vector4<FT> cell_a = shared_zeros<FT, 4>(), cell_b = shared_zeros<FT, 4>();
+  // are points strictly inside each object at the contact's time (unread
+  // in regularised semantics). Every such point sees the contact in its
+  // cell's closure.
+  struct Convex_record {
+    Vector4<FT> cell_a = shared_zeros<FT, 4>(), cell_b = shared_zeros<FT, 4>();
+  };
+  std::optional<Convex_record> convex;   // none: the search's own record
 
   // Earliest mode across pairs: a pair whose collision cannot start before
   // the best time of the pairs already examined need not be searched.
@@ -77,7 +80,7 @@ struct Search_goal {
     t_star = lowest[3];
     contact = lowest;
     vertex.reset();
-    convex = false;
+    convex.reset();
     ++records;
     return true;
   }
@@ -93,7 +96,7 @@ struct Search_goal {
     inside = contact = p;
     t_star = p[3];
     vertex.reset();
-    convex = false;
+    convex.reset();
     ++records;
     toward_a = a;
     toward_b = b;
