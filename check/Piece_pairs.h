@@ -32,6 +32,7 @@
 #include "search/S_bounds.h"
 #include "run/Work_budget.h"
 #include <algorithm>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <set>
@@ -134,10 +135,15 @@ public:
   // earliest pair only, linear programs on (the path's speed is theirs).
   static bool asked(const Check_options& o) { return o.earliest && !o.all_pairs && o.piece_pairs && o.convex_lp; }
 
+  // Another kernel's check of piece pair (i, j) of split.scene, its answer
+  // in K's numbers and K's own (the filtered kernel: exact/
+  // Exact_instantiation.cpp); none: K checks the pair.
+  using Pair_check = std::function<std::optional<Pair_result<FT>>(int, int, const FT*, Check_stats&)>;
+
   // model: the scene's, in K (its objects' primitives are the pieces').
   Piece_pairs(const K& k, const Scene& scene, const Scene_model<K>& model, const Piece_split& split,
-              const Check_options& options)
-    : k_(k), scene_(scene), model_(model), split_(split), options_(options)
+              const Check_options& options, Pair_check pair_check = {})
+    : k_(k), scene_(scene), model_(model), split_(split), options_(options), pair_check_(std::move(pair_check))
   {}
 
   // The earliest colliding pair in the objects' indices, its points made
@@ -155,9 +161,7 @@ public:
                    (!k_.less(c.t0, best->r.t_star) && c.object_pair >= best->object_pair)))
         continue;   // cannot start before the best (a tie: a later object pair loses it)
       if (++searched % 64 == 0) Work_budget::check();
-      Collision_checker<K> checker(k_, pieces_, settled_, stats, options_.sbounds);
-      checker.use_guides(&guide_source_);
-      Pair_result<FT> r = checker.check_pair(c.i, c.j, true, best ? &best->r.t_star : nullptr, options_.semantics);
+      Pair_result<FT> r = check_pair(c, best ? &best->r.t_star : nullptr, stats);
       if (!r.collide) continue;
       if (best && !k_.less(r.t_star, best->r.t_star) &&
           (k_.less(best->r.t_star, r.t_star) || c.object_pair >= best->object_pair))
@@ -189,6 +193,7 @@ private:
   const Scene_model<K>& model_;
   const Piece_split& split_;
   const Check_options& options_;
+  Pair_check pair_check_;
   Scene_model<K> pieces_;
   std::vector<Bounds> settled_;
   std::vector<std::shared_ptr<const Convex_guide>> guides_;
@@ -227,6 +232,17 @@ private:
     settled_ = settled_bounds_all(k_, pieces_, stats, options_.sbounds);
     guides_.assign(pieces_.objects.size(), nullptr);
     return true;
+  }
+
+  // Piece pair c searched for its earliest point before `ceiling`: by the
+  // pair check when there is one and it answers, else in K.
+  Pair_result<FT> check_pair(const Candidate& c, const FT* ceiling, Check_stats& stats)
+  {
+    if (pair_check_)
+      if (std::optional<Pair_result<FT>> r = pair_check_(c.i, c.j, ceiling, stats)) return std::move(*r);
+    Collision_checker<K> checker(k_, pieces_, settled_, stats, options_.sbounds);
+    checker.use_guides(&guide_source_);
+    return checker.check_pair(c.i, c.j, true, ceiling, options_.semantics);
   }
 
   // Every piece pair of two objects not ignored whose swept boxes meet, by

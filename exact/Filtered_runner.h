@@ -105,6 +105,27 @@ public:
     return answer;
   }
 
+  // One pair of the scene's objects as check asks it, its answer in EK (the
+  // rational run's); none when AK cannot build the model, and the caller
+  // asks EK itself. For a stage that takes its pairs one at a time: the
+  // piece pairs of --earliest on unions (check/Piece_pairs.h), on a runner
+  // of the piece scene.
+  std::optional<Pair_result<EFT>> check_one(int a, int b, const Check_options& options, const EFT* ceiling,
+                                            Check_stats& stats)
+  {
+    convex_lp_ = options.convex_lp;
+    if (!prepared_) {
+      const std::vector<std::pair<int, int>>* pairs = nullptr;
+      prepared_ = prepare(stats, pairs, options.semantics);
+    }
+    if (!*prepared_) return std::nullopt;
+    Result r = check_pair(a, b, options, ceiling, stats);
+    if (!r.in_points()) return std::move(r.make_exact());
+    Pair_result<EFT> e;
+    if (r.points().collide) exact_copy(r.points(), e);
+    return e;
+  }
+
   // A reusable runner's scene, whose objects in `changed` now have other
   // motions (exact/Exact_checker.h): what depends on motions is made again
   // by the next check, as a fresh runner would make it (each object's
@@ -522,6 +543,7 @@ private:
   const Scene& scene_;
   const bool use_sbounds_, reusable_;
   bool convex_lp_ = true;
+  std::optional<bool> prepared_;              // check_one: whether prepare could (none: not yet asked)
   AK ak_;
   EK ek_;
   Rational_model<EK> rational_;               // EK's model, object by object as asked
