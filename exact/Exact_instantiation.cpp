@@ -50,9 +50,8 @@ std::optional<Check_answer> check_exact_by_pieces(const Scene& scene, const Chec
   // Each piece pair by the filtered kernel on the piece scene, whose
   // planes are the pieces' own (the answer is the rational run's).
   Filtered_exact pieces(split->scene, options.sbounds);
-  Check_options each = options;
   auto pair_check = [&](int i, int j, const Rational_kernel::FT* ceiling, Check_stats& stats) {
-    return pieces.check_one(i, j, each, ceiling, stats);
+    return pieces.check_one(i, j, options, ceiling, stats);
   };
   std::optional<Check_answer> a = piece_pairs_check(k, scene, *model, options, *split, pair_check);
   if (a) {

@@ -115,11 +115,18 @@ public:
   {
     convex_lp_ = options.convex_lp;
     if (!prepared_) {
+      // The caller counts its own pairs and bounds: the piece scene's model
+      // and sweep counts are not the query's.
+      Check_stats made = stats.fresh();
       const std::vector<std::pair<int, int>>* pairs = nullptr;
-      prepared_ = prepare(stats, pairs, options.semantics);
+      prepared_ = prepare(made, pairs, options.semantics);
     }
     if (!*prepared_) return std::nullopt;
-    Result r = check_pair(a, b, options, ceiling, stats);
+    // check_pair writes a pair's own counts (as run_pairs gives each pair),
+    // added to the caller's.
+    Check_stats own = stats.fresh();
+    Result r = check_pair(a, b, options, ceiling, own);
+    stats.add(own);
     if (!r.in_points()) return std::move(r.make_exact());
     Pair_result<EFT> e;
     if (r.points().collide) exact_copy(r.points(), e);
