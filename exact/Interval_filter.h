@@ -562,23 +562,32 @@ public:
 private:
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);   // no plane (Null_object_test's)
   Runner* runner_ = nullptr;
-  // A convex pair's stage in rationals on one sub-span, for the signs the
-  // intervals leave open: EK's motions of the two objects, and their planes
-  // made as the stage reads them (model/Primitive_planes.h).
-  // The planes are the pair's, kept across its sub-spans.
+  // A convex pair's stage in rationals, for the signs the intervals leave
+  // open: EK's motions of the two objects, and their planes made as the
+  // stage reads them (model/Primitive_planes.h). The stage, the planes and
+  // the sub-spans are the pair's, made once; start_span sets the stage on
+  // the sub-span asked (before, a stage per sub-span: a closed touch asks
+  // a few signs on each of ten).
   struct Exact_convex {
     int a, b;
-    std::size_t index;
+    std::size_t index = 0;
+    typename Scene_model<EK>::Spans spans;
     Time_span<EFT> span;
     Moving_object<EFT> A, B;
     Convex_pair<EK> stage;
-    Exact_convex(Runner& runner, int a_, int b_, std::size_t i, Primitive_planes<EK>& pa, Primitive_planes<EK>& pb,
+    Exact_convex(Runner& runner, int a_, int b_, Primitive_planes<EK>& pa, Primitive_planes<EK>& pb,
                  const Convex_guides& guides)
-      : a(a_), b(b_), index(i), span(runner.rational().model().sub_spans({a_, b_}).at(i)),
-        A(moving_on(runner.rational().model(), a_, span, {})), B(moving_on(runner.rational().model(), b_, span, {})),
+      : a(a_), b(b_), spans(runner.rational().model().sub_spans({a_, b_})),
         stage(runner.ek(), runner.rational().model(), a_, b_, nullptr, guides)
     {
       stage.use_planes(pa, pb);
+    }
+    void start_span(Runner& runner, std::size_t i)
+    {
+      index = i;
+      span = spans.at(i);
+      A = moving_on(runner.rational().model(), a, span, {});
+      B = moving_on(runner.rational().model(), b, span, {});
       stage.start_span(i, A, B, span);
     }
   };
@@ -590,7 +599,7 @@ private:
 
   Convex_pair<EK>& exact_convex(int a, int b, std::size_t index)
   {
-    if (!exact_convex_ || exact_convex_->a != a || exact_convex_->b != b || exact_convex_->index != index) {
+    if (!exact_convex_ || exact_convex_->a != a || exact_convex_->b != b) {
       runner_->rational().need_motion(a);
       runner_->rational().need_motion(b);
       int ids[2] = {a, b};
@@ -598,8 +607,10 @@ private:
         if (!exact_planes_[o])
           exact_planes_[o] = std::make_unique<Primitive_planes<EK>>(
               runner_->ek(), runner_->scene().objects[static_cast<std::size_t>(ids[o])].shape);
-      exact_convex_ =
-          std::make_unique<Exact_convex>(*runner_, a, b, index, *exact_planes_[0], *exact_planes_[1], convex_guides_);
+      exact_convex_ = std::make_unique<Exact_convex>(*runner_, a, b, *exact_planes_[0], *exact_planes_[1], convex_guides_);
+      exact_convex_->start_span(*runner_, index);
+    } else if (exact_convex_->index != index) {
+      exact_convex_->start_span(*runner_, index);
     }
     return exact_convex_->stage;
   }

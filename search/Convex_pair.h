@@ -121,8 +121,10 @@ public:
   // primitives, by the same extrusions (most made by decide already).
   const std::vector<H>& world_rows()
   {
-    for (std::size_t j = 0; j < rows_.size(); ++j) row(j);
-    return rows_;
+    world_rows_.clear();
+    world_rows_.reserve(rows_.size());
+    for (std::size_t j = 0; j < rows_.size(); ++j) world_rows_.push_back(row(j));
+    return world_rows_;
   }
 
   // The rows' values at the point inside the goal holds, when decide took
@@ -188,8 +190,7 @@ public:
     count_b_ = plane_count(1);
     guide_rows_.push_back(time_at_least(nearest_double(*span.exact_lo)));
     guide_rows_.push_back(time_at_most(nearest_double(*span.exact_hi)));
-    rows_.resize(guide_rows_.size());
-    made_.assign(guide_rows_.size(), 0);
+    rows_.assign(guide_rows_.size(), std::nullopt);
     ring_rows_.assign(guide_rows_.size(), std::nullopt);
     guess_in_ = false;
     vertex_basis_.reset();
@@ -329,8 +330,10 @@ private:
   Convex_guides guides_;
   std::size_t index_ = 0;
   std::vector<G> guide_rows_;              // the sub-span's rows in doubles, in the order of rows_
-  std::vector<H> rows_;                    // A's planes, B's, t >= lo, t <= hi: extruded on first use
-  std::vector<char> made_;                 // which rows_ are made
+  // A's planes, B's, t >= lo, t <= hi: extruded on first use (none made
+  // up front: a rational stage asked one sign reads a few rows of many).
+  std::vector<std::optional<H>> rows_;
+  std::vector<H> world_rows_;              // all of them, as world_rows() hands them out
   std::vector<FT> guess_values_;           // rows at the guess, as in() found them
   bool guess_in_ = false;                  // in() found the guess strictly inside, every row valued
   std::vector<std::optional<Ring_row>> ring_rows_;   // the same in the kernel's ring (ring_row)
@@ -372,17 +375,17 @@ private:
   // Row j in the kernel's numbers (equation (4) on the sub-span's motion).
   const H& row(std::size_t j)
   {
-    if (!made_[j]) {
+    std::optional<H>& r = rows_[j];
+    if (!r) {
       if (j < count_a_ + count_b_) {
         const Moving& m = *moving_[j < count_a_ ? 0 : 1];
         std::size_t i = j < count_a_ ? j : j - count_a_;
-        rows_[j] = extrude(plane(j < count_a_ ? 0 : 1, i), m.v, m.o);
+        r = extrude(plane(j < count_a_ ? 0 : 1, i), m.v, m.o);
       } else {
-        rows_[j] = j == count_a_ + count_b_ ? time_at_least(lo_) : time_at_most(hi_);
+        r = j == count_a_ + count_b_ ? time_at_least(lo_) : time_at_most(hi_);
       }
-      made_[j] = 1;
     }
-    return rows_[j];
+    return *r;
   }
   // Row j in the kernel's ring (Kernel_base::in_ring: a positive multiple),
   // made once per sub-span: the determinants' and null vectors' rows.
