@@ -118,8 +118,7 @@ public:
       // The caller counts its own pairs and bounds: the piece scene's model
       // and sweep counts are not the query's.
       Check_stats made = stats.fresh();
-      const std::vector<std::pair<int, int>>* pairs = nullptr;
-      prepared_ = prepare(made, pairs, options.semantics);
+      prepared_ = prepare_model(made);
     }
     if (!*prepared_) return std::nullopt;
     // check_pair writes a pair's own counts (as run_pairs gives each pair),
@@ -550,7 +549,7 @@ private:
   const Scene& scene_;
   const bool use_sbounds_, reusable_;
   bool convex_lp_ = true;
-  std::optional<bool> prepared_;              // check_one: whether prepare could (none: not yet asked)
+  std::optional<bool> prepared_;              // check_one: whether prepare_model could (none: not yet asked)
   AK ak_;
   EK ek_;
   Rational_model<EK> rational_;               // EK's model, object by object as asked
@@ -673,19 +672,8 @@ private:
   bool prepare(Check_stats& stats, const std::vector<std::pair<int, int>>*& pairs,
                Semantics semantics = Semantics::regularised)
   {
-    if (!AK::encloses_here()) {   // AK's signs could be wrong on this machine (valgrind): EK alone
-      ++fallbacks_;
-      return false;
-    }
+    if (!prepare_model(stats)) return false;
     Prepared_sweep& sweep = sweeps_[semantics == Semantics::closed ? 1 : 0];
-    if (!model_.done) {
-      model_.ok = build_model(stats);
-      model_.done = true;
-      if (reusable_) model_.stats = stats;   // (a single check's runner copies nothing)
-    } else {
-      reuse_model(stats);
-    }
-    if (!model_.ok) return false;
     if (!sweep.done) {
       sweep_pairs(stats, sweep.pairs, semantics);
       sweep.done = true;
@@ -695,6 +683,23 @@ private:
     }
     pairs = &sweep.pairs;
     return true;
+  }
+  // AK's model and each object's S-bounds, made once: all a pair's check
+  // reads (check_one asks no sweep: its caller chose the pair).
+  bool prepare_model(Check_stats& stats)
+  {
+    if (!AK::encloses_here()) {   // AK's signs could be wrong on this machine (valgrind): EK alone
+      ++fallbacks_;
+      return false;
+    }
+    if (!model_.done) {
+      model_.ok = build_model(stats);
+      model_.done = true;
+      if (reusable_) model_.stats = stats;   // (a single check's runner copies nothing)
+    } else {
+      reuse_model(stats);
+    }
+    return model_.ok;
   }
   // A reused model's counts in stats, with no time (a later check of a
   // prepared scene), copied in place.
