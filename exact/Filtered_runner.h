@@ -132,6 +132,27 @@ public:
     return e;
   }
 
+  // The runner's own counters (its work in rationals, exact/ only) into
+  // stats: check does it at its end; a caller of check_one at its own
+  // (the piece pairs: exact/Exact_instantiation.cpp).
+  void finish(Check_stats& stats) const
+  {
+    stats.exact_fallbacks = fallbacks_.load();
+    stats.exact_witness_runs = witness_runs_.load();
+    stats.exact_regions = exact_regions_.load();
+    stats.exact_plane_tests = exact_planes_.load();
+    stats.exact_region_stages = exact_stages_.load();
+    stats.witnesses_by_intervals = witnesses_by_intervals_.load();
+    stats.earliest_by_intervals = earliest_by_intervals_.load();
+    stats.apart_proofs = apart_proofs_.load();
+    stats.apart_attempts = apart_attempts_.load();
+    stats.replay_stages_adopted = stages_adopted_.load();
+    stats.earliest_lines_rerun = lines_rerun_.load();
+    stats.witness_lines_rerun = witness_lines_.load();
+    stats.closed_cells_by_intervals = closed_cells_.load();
+    stats.witnesses_by_terms = witnesses_by_terms_.load();
+  }
+
   // A reusable runner's scene, whose objects in `changed` now have other
   // motions (exact/Exact_checker.h): what depends on motions is made again
   // by the next check, as a fresh runner would make it (each object's
@@ -814,23 +835,6 @@ private:
           &earliest_by_intervals_, &exact_stages_, &apart_proofs_, &apart_attempts_, &stages_adopted_, &lines_rerun_,
           &witness_lines_, &closed_cells_, &witnesses_by_terms_})
       c->store(0, std::memory_order_relaxed);   // no check is running: nothing to order against
-  }
-  void finish(Check_stats& stats) const
-  {
-    stats.exact_fallbacks = fallbacks_.load();
-    stats.exact_witness_runs = witness_runs_.load();
-    stats.exact_regions = exact_regions_.load();
-    stats.exact_plane_tests = exact_planes_.load();
-    stats.exact_region_stages = exact_stages_.load();
-    stats.witnesses_by_intervals = witnesses_by_intervals_.load();
-    stats.earliest_by_intervals = earliest_by_intervals_.load();
-    stats.apart_proofs = apart_proofs_.load();
-    stats.apart_attempts = apart_attempts_.load();
-    stats.replay_stages_adopted = stages_adopted_.load();
-    stats.earliest_lines_rerun = lines_rerun_.load();
-    stats.witness_lines_rerun = witness_lines_.load();
-    stats.closed_cells_by_intervals = closed_cells_.load();
-    stats.witnesses_by_terms = witnesses_by_terms_.load();
   }
 };
 

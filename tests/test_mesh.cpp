@@ -785,3 +785,30 @@ BOOST_AUTO_TEST_CASE(earliest_by_piece_pairs_is_the_cascades)
   BOOST_TEST_MESSAGE("piece pairs: " << colliding << " of " << 2 * seeds << " seeded queries collide");
   BOOST_TEST(colliding > 0);
 }
+
+// --stats on the piece pairs' path counts the filtered runner's own work,
+// as check does (Filtered_runner::finish): each colliding answer is made by
+// the interval run (witnesses_by_intervals), a convex pair's programs
+// (convex_exact_signs) or a rational run (exact_witness_runs,
+// exact_fallbacks) (docs/filtered-kernel.md, "The --stats counters"); the
+// L part's pieces are all made in intervals. Before, the runner's counters
+// were left at 0 on this path.
+BOOST_AUTO_TEST_CASE(piece_pairs_stats_count_the_filtered_runners_work)
+{
+  json expected = json::parse(file_text(meshes + "/expected.json"));
+  int colliding = 0;
+  for (const auto& [name, s] : expected["scenes"].items()) {
+    Scene scene = read_scene(read_json_text(scene_text({{"mesh", "l_part.off"}}, s["probe"], s.value("motion", "rest"))),
+                             meshes);
+    Check_options pieces;
+    pieces.earliest = true;
+    BOOST_TEST_REQUIRE(Piece_split::make(scene).has_value(), name);
+    Check_answer a = check_exact(scene, pieces);
+    if (!a.collide) continue;
+    ++colliding;
+    const Check_stats& st = a.stats;
+    BOOST_TEST(st.witnesses_by_intervals + st.convex_exact_signs + st.exact_witness_runs + st.exact_fallbacks > 0u,
+               name << ": the colliding pair's answer is counted");
+  }
+  BOOST_TEST(colliding > 0);
+}
