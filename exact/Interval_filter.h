@@ -570,7 +570,7 @@ private:
   // a few signs on each of ten).
   struct Exact_convex {
     int a, b;
-    std::size_t index = 0;
+    std::optional<std::size_t> index;   // the sub-span the stage is set on (none: not yet)
     typename Scene_model<EK>::Spans spans;
     Time_span<EFT> span;
     Moving_object<EFT> A, B;
@@ -608,10 +608,8 @@ private:
           exact_planes_[o] = std::make_unique<Primitive_planes<EK>>(
               runner_->ek(), runner_->scene().objects[static_cast<std::size_t>(ids[o])].shape);
       exact_convex_ = std::make_unique<Exact_convex>(*runner_, a, b, *exact_planes_[0], *exact_planes_[1], convex_guides_);
-      exact_convex_->start_span(*runner_, index);
-    } else if (exact_convex_->index != index) {
-      exact_convex_->start_span(*runner_, index);
     }
+    if (exact_convex_->index != index) exact_convex_->start_span(*runner_, index);
     return exact_convex_->stage;
   }
 
