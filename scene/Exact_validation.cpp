@@ -81,13 +81,17 @@ Polytope_combinatorics hull_facets(const std::vector<Rational3>& points)
 
   // The hull on the lazy exact kernel (its signs are exact), its vertices
   // found again among the input points; what follows uses the rationals.
+  // Tag_false keeps each plane as its three points, so a side test is one
+  // filtered orientation of four input points, not a lazy Plane_3 whose
+  // exact value (normalised rationals) coplanar vertices force (issue 58:
+  // most of a cached mesh read).
   std::vector<CGAL::Epeck::Point_3> lazy;
   for (const auto& p : points) lazy.push_back(lazy_point(p));
   std::map<CGAL::Epeck::Point_3, int> index;
   for (std::size_t i = 0; i < lazy.size(); ++i) index.emplace(lazy[i], static_cast<int>(i));
   using Mesh = CGAL::Surface_mesh<CGAL::Epeck::Point_3>;
   Mesh mesh;
-  CGAL::convex_hull_3(lazy.begin(), lazy.end(), mesh);
+  CGAL::convex_hull_3(lazy.begin(), lazy.end(), mesh, CGAL::Convex_hull_traits_3<CGAL::Epeck, Mesh, CGAL::Tag_false>());
   Polytope_combinatorics out;
   std::map<std::array<Rational, 4>, int> planes;
   std::map<Mesh::Face_index, int> plane_of;
