@@ -28,6 +28,7 @@
 
 #include "check/Check_answer.h"
 #include "check/Collision_checker.h"
+#include "geometry/Box_meeting.h"
 #include "search/Convex_guide.h"
 #include "search/S_bounds.h"
 #include "run/Work_budget.h"
@@ -82,6 +83,17 @@ struct Piece_split {
   }
 
   std::size_t pieces_of(std::size_t o) const { return first[o + 1] - first[o]; }
+
+  // The pairs of pieces of two objects of `scene` (this split's) not
+  // ignored: the piece pairs a query asks about.
+  std::size_t piece_pairs(const Scene& scene) const
+  {
+    std::size_t n = scene.objects.size(), count = 0;
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t b = a + 1; b < n; ++b)
+        if (!scene.ignored(static_cast<int>(a), static_cast<int>(b))) count += pieces_of(a) * pieces_of(b);
+    return count;
+  }
 
 private:
   static bool primitive(Solid::Kind k)
@@ -252,12 +264,12 @@ private:
   std::vector<Candidate> candidates(Check_stats& stats)
   {
     std::vector<Candidate> out;
+    stats.object_pairs += split_.piece_pairs(scene_);
     std::size_t n = scene_.objects.size(), object_pair = 0;
     for (std::size_t a = 0; a < n; ++a)
       for (std::size_t b = a + 1; b < n; ++b) {
         if (scene_.ignored(static_cast<int>(a), static_cast<int>(b))) continue;
         Work_budget::check();
-        stats.object_pairs += split_.pieces_of(a) * split_.pieces_of(b);
         for (const auto& span : model_.sub_spans({static_cast<int>(a), static_cast<int>(b)}))
           add_meeting(a, b, object_pair, span, out);
         ++object_pair;
@@ -286,37 +298,10 @@ private:
     const auto &ma = model_.objects[a].motion, &mb = model_.objects[b].motion;
     for (std::size_t i = split_.first[a]; i < split_.first[a + 1]; ++i)
       for (std::size_t j = split_.first[b]; j < split_.first[b + 1]; ++j) {
-        std::optional<FT> t0 = first_meeting(settled_[i][0], ma.velocity[sa], ma.offset[sa], settled_[j][0],
-                                             mb.velocity[sb], mb.offset[sb], span);
+        std::optional<FT> t0 = first_box_meeting(k_, settled_[i][0], ma.velocity[sa], ma.offset[sa], settled_[j][0],
+                                                 mb.velocity[sb], mb.offset[sb], span.lo, span.hi);
         if (t0) out.push_back({static_cast<int>(i), static_cast<int>(j), object_pair, std::move(*t0)});
       }
-  }
-
-  // The least t in the span at which box A moved by va t + oa and box B
-  // moved by vb t + ob meet (closed boxes: a lower bound in both
-  // semantics); none when they never do there.
-  std::optional<FT> first_meeting(const Box<FT, 3>& A, const Vector3<FT>& va, const Vector3<FT>& oa,
-                                  const Box<FT, 3>& B, const Vector3<FT>& vb, const Vector3<FT>& ob,
-                                  const Time_span<FT>& span) const
-  {
-    if (A.empty || B.empty) return std::nullopt;
-    FT lo = span.lo, hi = span.hi;
-    // w t <= c on the span: lo and hi narrowed, false when no t is left.
-    auto at_most = [&](const FT& w, const FT& c) {
-      CGAL::Sign s = k_.sign(w);
-      if (s == CGAL::ZERO) return k_.sign(c) != CGAL::NEGATIVE;
-      FT t = c / w;
-      if (s == CGAL::POSITIVE) { if (k_.less(t, hi)) hi = t; }
-      else if (k_.less(lo, t)) lo = t;
-      return !k_.less(hi, lo);
-    };
-    for (int q = 0; q < 3; ++q) {
-      FT w = va[q] - vb[q], d = ob[q] - oa[q];
-      // A.lo + va t + oa <= B.hi + vb t + ob and B.lo + vb t + ob <= A.hi + va t + oa.
-      if (A.has_lo[q] && B.has_hi[q] && !at_most(w, B.hi[q] - A.lo[q] + d)) return std::nullopt;
-      if (B.has_lo[q] && A.has_hi[q] && !at_most(-w, A.hi[q] - B.lo[q] - d)) return std::nullopt;
-    }
-    return lo;
   }
 
   // Object i of the model on a sub-span, as the witness stages read it

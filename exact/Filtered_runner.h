@@ -40,6 +40,7 @@
 #include "exact/Interval_filter.h"
 #include "exact/Rational_model.h"
 #include "exact/Sweep_tie.h"
+#include "geometry/Box_meeting.h"
 #include "search/Apart_pieces.h"
 #include "search/Witness.h"
 #include <CGAL/Uncertain.h>
@@ -130,6 +131,46 @@ public:
     Pair_result<EFT> e;
     if (r.points().collide) exact_copy(r.points(), e);
     return e;
+  }
+
+  // The pairs of the scene's objects whose boxes may meet in this
+  // semantics, as check's sweep finds them (its ties decided on EK's
+  // boxes); none when AK cannot build the model. Asked before check_one,
+  // whose model it makes: the piece pairs ask it first, so that pieces
+  // no sweep keeps are answered before anything is made in EK.
+  std::optional<std::vector<std::pair<int, int>>> swept_pairs(Semantics semantics)
+  {
+    if (prepared_) throw std::logic_error("Filtered_runner: swept_pairs asked after check_one");
+    Check_stats made;   // the piece scene's counts are not the query's (as check_one)
+    const std::vector<std::pair<int, int>>* pairs = nullptr;
+    prepared_ = prepare(made, pairs, semantics);
+    if (!*prepared_) return std::nullopt;
+    return *pairs;
+  }
+
+  // Whether the boxes of objects i and j, moving, may meet on some
+  // sub-span (first_box_meeting on AK's S-bounds and motions, as the piece
+  // pairs ask it in EK): false only when the intervals are certain, on
+  // every sub-span, that they never do. An object AK could not bound, or a
+  // sign the intervals cannot tell, counts as may meet. After swept_pairs.
+  bool boxes_may_meet(int i, int j) const
+  {
+    if (exact_only(i) || exact_only(j)) return true;
+    const Object_model<AFT>&a = amodel_.objects[static_cast<std::size_t>(i)],
+                            &b = amodel_.objects[static_cast<std::size_t>(j)];
+    try {
+      Protector protect;
+      for (const auto& span : amodel_.sub_spans({i, j})) {
+        std::size_t sa = amodel_.segment_on(i, span), sb = amodel_.segment_on(j, span);
+        if (first_box_meeting(ak_, asettled_[static_cast<std::size_t>(i)][0], a.motion.velocity[sa],
+                              a.motion.offset[sa], asettled_[static_cast<std::size_t>(j)][0], b.motion.velocity[sb],
+                              b.motion.offset[sb], span.lo, span.hi))
+          return true;
+      }
+      return false;
+    } catch (const CGAL::Uncertain_conversion_exception&) {   // this predicate's filter only
+      return true;
+    }
   }
 
   // The runner's own counters (its work in rationals, exact/ only) into

@@ -812,3 +812,38 @@ BOOST_AUTO_TEST_CASE(piece_pairs_stats_count_the_filtered_runners_work)
   }
   BOOST_TEST(colliding > 0);
 }
+
+// --earliest on unions whose pieces' boxes cannot meet is answered before
+// anything is made in rationals (no S-bound pass: the rational path settles
+// the pieces' S-bounds first), with expected.json's hand answer. The L's
+// pieces' boxes are [0,2]x[0,1]x[0,1] and [0,1]x[1,2]x[0,1]: pocket_miss and
+// clear_miss have a gap to both in x or y (both semantics); the four
+// touches' probes only touch them (so regularised semantics drops those
+// pairs, and closed keeps them); passing_by's moving box is never where
+// they are at the same time (the sweep keeps it, the moving boxes' bound,
+// asked in intervals, does not).
+BOOST_AUTO_TEST_CASE(earliest_on_pieces_whose_boxes_cannot_meet_is_answered_first)
+{
+  json expected = json::parse(file_text(meshes + "/expected.json"));
+  std::set<std::string> swept;
+  for (const auto& [name, s] : expected["scenes"].items()) {
+    Scene scene = read_scene(read_json_text(scene_text({{"mesh", "l_part.off"}}, s["probe"], s.value("motion", "rest"))),
+                             meshes);
+    for (Semantics semantics : {Semantics::regularised, Semantics::closed}) {
+      std::string key = semantics == Semantics::closed ? "closed" : "regularised";
+      Check_options o;
+      o.earliest = true;
+      o.semantics = semantics;
+      Check_answer a = check_exact(scene, o);
+      BOOST_TEST(a.collide == s[key]["collide"].get<bool>(), name << " " << key);
+      if (a.stats.sbound_passes > 0) continue;
+      swept.insert(name + " " + key);
+      BOOST_TEST(a.stats.object_pairs == 2u, name << " " << key << ": the L's two pieces against the probe");
+    }
+  }
+  std::set<std::string> by_hand{"pocket_miss regularised", "pocket_miss closed",   "clear_miss regularised",
+                                "clear_miss closed",       "face_touch regularised", "edge_touch regularised",
+                                "pocket_fill_touch regularised", "pocket_corner_touch regularised",
+                                "passing_by regularised",  "passing_by closed"};
+  BOOST_TEST((swept == by_hand));
+}
