@@ -39,7 +39,7 @@ namespace {
 // collision then, in either semantics (the boxes hold the pieces, closed).
 bool pieces_apart(const Scene& scene, const Piece_split& split, Filtered_exact& pieces, Semantics semantics)
 {
-  std::optional<std::vector<std::pair<int, int>>> pairs = pieces.swept_pairs(semantics);
+  const std::vector<std::pair<int, int>>* pairs = pieces.swept_pairs(semantics);
   if (!pairs) return false;
   for (auto [i, j] : *pairs) {
     int a = split.owner[static_cast<std::size_t>(i)], b = split.owner[static_cast<std::size_t>(j)];

@@ -135,17 +135,17 @@ public:
 
   // The pairs of the scene's objects whose boxes may meet in this
   // semantics, as check's sweep finds them (its ties decided on EK's
-  // boxes); none when AK cannot build the model. Asked before check_one,
-  // whose model it makes: the piece pairs ask it first, so that pieces
-  // no sweep keeps are answered before anything is made in EK.
-  std::optional<std::vector<std::pair<int, int>>> swept_pairs(Semantics semantics)
+  // boxes), the runner's own; null when AK cannot build the model. Asked
+  // before check_one, whose model it makes: the piece pairs ask it first,
+  // so that pieces no sweep keeps are answered before anything is made in
+  // EK.
+  const std::vector<std::pair<int, int>>* swept_pairs(Semantics semantics)
   {
     if (prepared_) throw std::logic_error("Filtered_runner: swept_pairs asked after check_one");
     Check_stats made;   // the piece scene's counts are not the query's (as check_one)
     const std::vector<std::pair<int, int>>* pairs = nullptr;
     prepared_ = prepare(made, pairs, semantics);
-    if (!*prepared_) return std::nullopt;
-    return *pairs;
+    return *prepared_ ? pairs : nullptr;
   }
 
   // Whether the boxes of objects i and j, moving, may meet on some
