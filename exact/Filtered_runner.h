@@ -156,15 +156,14 @@ public:
   bool boxes_may_meet(int i, int j) const
   {
     if (exact_only(i) || exact_only(j)) return true;
-    const Object_model<AFT>&a = amodel_.objects[static_cast<std::size_t>(i)],
-                            &b = amodel_.objects[static_cast<std::size_t>(j)];
+    std::size_t ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
+    const Motion_path<AFT>&a = amodel_.objects[ui].motion, &b = amodel_.objects[uj].motion;
     try {
       Protector protect;
       for (const auto& span : amodel_.sub_spans({i, j})) {
         std::size_t sa = amodel_.segment_on(i, span), sb = amodel_.segment_on(j, span);
-        if (first_box_meeting(ak_, asettled_[static_cast<std::size_t>(i)][0], a.motion.velocity[sa],
-                              a.motion.offset[sa], asettled_[static_cast<std::size_t>(j)][0], b.motion.velocity[sb],
-                              b.motion.offset[sb], span.lo, span.hi))
+        if (first_box_meeting(ak_, asettled_[ui][0], a.velocity[sa], a.offset[sa], asettled_[uj][0], b.velocity[sb],
+                              b.offset[sb], span.lo, span.hi))
           return true;
       }
       return false;
