@@ -271,13 +271,14 @@ std::vector<std::pair<int, int>> candidate_pairs(const K& k, const Scene_model<K
 template <class K>
 std::optional<Check_answer> piece_pairs_check(const K& k, const Scene& scene, const Scene_model<K>& model,
                                               const Check_options& options, const Piece_split& split,
-                                              typename Piece_pairs<K>::Pair_check pair_check = {})
+                                              typename Piece_pairs<K>::Pair_check pair_check = {},
+                                              const typename Piece_pairs<K>::Pair_list* may_meet = nullptr)
 {
   Check_answer answer;
   answer.number = K::name();
   answer.semantics = options.semantics;
   answer.stats.timed = options.stage_seconds;
-  std::optional<Pair_result<typename K::FT>> r = Piece_pairs<K>(k, scene, model, split, options, std::move(pair_check)).earliest(answer.stats);
+  std::optional<Pair_result<typename K::FT>> r = Piece_pairs<K>(k, scene, model, split, options, std::move(pair_check), may_meet).earliest(answer.stats);
   if (!r) return std::nullopt;
   if (r->collide) {
     answer.collide = true;

@@ -152,10 +152,16 @@ public:
   // Exact_instantiation.cpp); none: K checks the pair.
   using Pair_check = std::function<std::optional<Pair_result<FT>>(int, int, const FT*, Check_stats&)>;
 
+  using Pair_list = std::vector<std::pair<int, int>>;
+
   // model: the scene's, in K (its objects' primitives are the pieces').
+  // may_meet: piece pairs (i, j) among which are all whose moving boxes
+  // meet, the others' known never to (the filtered kernel's sweep and
+  // intervals, exact/Piece_prepass.h); none: every piece pair is asked.
   Piece_pairs(const K& k, const Scene& scene, const Scene_model<K>& model, const Piece_split& split,
-              const Check_options& options, Pair_check pair_check = {})
-    : k_(k), scene_(scene), model_(model), split_(split), options_(options), pair_check_(std::move(pair_check))
+              const Check_options& options, Pair_check pair_check = {}, const Pair_list* may_meet = nullptr)
+    : k_(k), scene_(scene), model_(model), split_(split), options_(options), pair_check_(std::move(pair_check)),
+      may_meet_(may_meet)
   {}
 
   // The earliest colliding pair in the objects' indices, its points made
@@ -206,6 +212,7 @@ private:
   const Piece_split& split_;
   const Check_options& options_;
   Pair_check pair_check_;
+  const Pair_list* may_meet_;
   Scene_model<K> pieces_;
   std::vector<Bounds> settled_;
   std::vector<std::shared_ptr<const Convex_guide>> guides_;
@@ -263,17 +270,22 @@ private:
   // `pairs` counts those searched.
   std::vector<Candidate> candidates(Check_stats& stats)
   {
-    std::vector<Candidate> out;
     stats.object_pairs += split_.piece_pairs(scene_);
-    std::size_t n = scene_.objects.size(), object_pair = 0;
-    for (std::size_t a = 0; a < n; ++a)
-      for (std::size_t b = a + 1; b < n; ++b) {
-        if (scene_.ignored(static_cast<int>(a), static_cast<int>(b))) continue;
-        Work_budget::check();
-        for (const auto& span : model_.sub_spans({static_cast<int>(a), static_cast<int>(b)}))
-          add_meeting(a, b, object_pair, span, out);
-        ++object_pair;
-      }
+    std::vector<Candidate> out;
+    std::vector<std::size_t> place = pair_places();
+    Pair_list asked = may_meet_ ? pairs_of_objects(*may_meet_, place) : every_piece_pair(place);
+    std::pair<int, int> owners{-1, -1};
+    typename Scene_model<K>::Spans spans;
+    for (std::size_t p = 0; p < asked.size(); ++p) {
+      auto [i, j] = asked[p];
+      std::pair<int, int> now{owner(i), owner(j)};
+      if (now != owners) spans = model_.sub_spans({now.first, now.second});
+      owners = now;
+      if (p % 4096 == 0) Work_budget::check();
+      std::size_t object_pair = place[static_cast<std::size_t>(now.first) * scene_.objects.size() +
+                                      static_cast<std::size_t>(now.second)];
+      for (const auto& span : spans) add_meeting(i, j, object_pair, span, out);
+    }
     std::sort(out.begin(), out.end(), [&](const Candidate& x, const Candidate& y) {
       if (k_.less(x.t0, y.t0)) return true;
       if (k_.less(y.t0, x.t0)) return false;
@@ -289,19 +301,65 @@ private:
     return once;
   }
 
-  // The piece pairs of objects a and b whose boxes meet on the sub-span,
-  // with the first time they do.
-  void add_meeting(std::size_t a, std::size_t b, std::size_t object_pair, const Time_span<FT>& span,
-                   std::vector<Candidate>& out)
+  int owner(int piece) const { return split_.owner[static_cast<std::size_t>(piece)]; }
+
+  // Objects (a, b), a < b, -> the place of their pair in pair order (the
+  // pairs not ignored, a then b ascending) at a * n + b; npos: ignored.
+  std::vector<std::size_t> pair_places() const
   {
-    std::size_t sa = model_.segment_on(static_cast<int>(a), span), sb = model_.segment_on(static_cast<int>(b), span);
-    const auto &ma = model_.objects[a].motion, &mb = model_.objects[b].motion;
-    for (std::size_t i = split_.first[a]; i < split_.first[a + 1]; ++i)
-      for (std::size_t j = split_.first[b]; j < split_.first[b + 1]; ++j) {
-        std::optional<FT> t0 = first_box_meeting(k_, settled_[i][0], ma.velocity[sa], ma.offset[sa], settled_[j][0],
-                                                 mb.velocity[sb], mb.offset[sb], span.lo, span.hi);
-        if (t0) out.push_back({static_cast<int>(i), static_cast<int>(j), object_pair, std::move(*t0)});
-      }
+    std::size_t n = scene_.objects.size(), next = 0;
+    std::vector<std::size_t> place(n * n, npos);
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t b = a + 1; b < n; ++b)
+        if (!scene_.ignored(static_cast<int>(a), static_cast<int>(b))) place[a * n + b] = next++;
+    return place;
+  }
+
+  // Every piece pair of two objects not ignored, in pair order.
+  Pair_list every_piece_pair(const std::vector<std::size_t>& place) const
+  {
+    Pair_list out;
+    std::size_t n = scene_.objects.size();
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t b = a + 1; b < n; ++b)
+        if (place[a * n + b] != npos)
+          for (std::size_t i = split_.first[a]; i < split_.first[a + 1]; ++i)
+            for (std::size_t j = split_.first[b]; j < split_.first[b + 1]; ++j)
+              out.push_back({static_cast<int>(i), static_cast<int>(j)});
+    return out;
+  }
+
+  // The pairs of `given` of two objects not ignored, the lower owner's
+  // piece first, grouped by their objects' pair.
+  Pair_list pairs_of_objects(const Pair_list& given, const std::vector<std::size_t>& place) const
+  {
+    Pair_list out;
+    std::size_t n = scene_.objects.size();
+    for (auto [i, j] : given) {
+      if (owner(j) < owner(i)) std::swap(i, j);
+      std::size_t a = static_cast<std::size_t>(owner(i)), b = static_cast<std::size_t>(owner(j));
+      if (a != b && place[a * n + b] != npos) out.push_back({i, j});
+    }
+    std::sort(out.begin(), out.end(), [&](const std::pair<int, int>& x, const std::pair<int, int>& y) {
+      return std::make_tuple(owner(x.first), owner(x.second), x) < std::make_tuple(owner(y.first), owner(y.second), y);
+    });
+    return out;
+  }
+
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+
+  // Piece pair (i, j) as a candidate on the sub-span when their boxes
+  // meet there, with the first time they do.
+  void add_meeting(int i, int j, std::size_t object_pair, const Time_span<FT>& span, std::vector<Candidate>& out)
+  {
+    int a = owner(i), b = owner(j);
+    std::size_t sa = model_.segment_on(a, span), sb = model_.segment_on(b, span);
+    const auto &ma = model_.objects[static_cast<std::size_t>(a)].motion,
+               &mb = model_.objects[static_cast<std::size_t>(b)].motion;
+    std::size_t ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
+    std::optional<FT> t0 = first_box_meeting(k_, settled_[ui][0], ma.velocity[sa], ma.offset[sa], settled_[uj][0],
+                                             mb.velocity[sb], mb.offset[sb], span.lo, span.hi);
+    if (t0) out.push_back({i, j, object_pair, std::move(*t0)});
   }
 
   // Object i of the model on a sub-span, as the witness stages read it

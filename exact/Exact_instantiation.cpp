@@ -3,6 +3,7 @@
 #include "exact/Filtered_exact_runner.h"
 #include "exact/Filtered_runner.h"
 #include "exact/Interval_kernel.h"
+#include "exact/Piece_prepass.h"
 #include "exact/Rational_kernel.h"
 #include <CGAL/FPU.h>
 
@@ -30,26 +31,6 @@ void Filtered_exact_runner::motions_changed(const std::vector<int>& changed) { i
 
 Skeleton_answer Filtered_exact_runner::skeleton() { return impl_->runner.skeleton(); }
 
-namespace {
-
-// Whether no piece of one object may meet a piece of another (not
-// ignored): the piece scene's sweep, as check runs it (ties decided
-// exactly), keeps no such pair, or the intervals are certain that the
-// moving boxes of each it keeps never meet (Piece_pairs' own bound). No
-// collision then, in either semantics (the boxes hold the pieces, closed).
-bool pieces_apart(const Scene& scene, const Piece_split& split, Filtered_exact& pieces, Semantics semantics)
-{
-  const std::vector<std::pair<int, int>>* pairs = pieces.swept_pairs(semantics);
-  if (!pairs) return false;
-  for (auto [i, j] : *pairs) {
-    int a = split.owner[static_cast<std::size_t>(i)], b = split.owner[static_cast<std::size_t>(j)];
-    if (a != b && !scene.ignored(a, b) && pieces.boxes_may_meet(i, j)) return false;
-  }
-  return true;
-}
-
-} // namespace
-
 // Mostly a few linear programs per piece pair (check/Piece_pairs.h).
 std::optional<Check_answer> check_exact_by_pieces(const Scene& scene, const Check_options& options,
                                                   std::shared_ptr<void>* kept)
@@ -63,22 +44,22 @@ std::optional<Check_answer> check_exact_by_pieces(const Scene& scene, const Chec
   // Each piece pair by the filtered kernel on the piece scene, whose
   // planes are the pieces' own (the answer is the rational run's).
   Filtered_exact pieces(split->scene, options.sbounds);
-  bool apart = pieces_apart(scene, *split, pieces, options.semantics);
-  double sweep_seconds = clock.lap();
-  if (apart) {
-    // No piece pair to search: the answer, before the scene is made in
-    // rationals (most of such a query's time: 5x double on random unions).
-    Check_answer a;
-    a.number = "exact";
-    a.semantics = options.semantics;
-    a.stats.timed = options.stage_seconds;
-    a.stats.object_pairs = split->piece_pairs(scene);
-    // The piece scene's model and sweep; none for a prepared scene, whose
-    // model is kept (the piece scene's runner, made per query, is counted
-    // nowhere on the path below either).
-    a.stats.seconds_model = kept ? 0.0 : sweep_seconds;
-    pieces.finish(a.stats);
-    return a;
+  std::optional<Piece_prepass<Filtered_exact>> first = Piece_prepass<Filtered_exact>::make(scene, *split, pieces, options);
+  // The piece scene's model and sweep, and the pass's searches; none for a
+  // prepared scene, whose model is kept (the piece scene's runner, made per
+  // query, is counted nowhere on the path below either).
+  double first_seconds = clock.lap();
+  Check_answer answer;
+  answer.number = "exact";
+  answer.semantics = options.semantics;
+  answer.stats.timed = options.stage_seconds;
+  if (first) answer.stats.add(first->stats());
+  if (first && first->apart()) {
+    answer.stats.object_pairs = split->piece_pairs(scene);
+    answer.stats.candidate_pairs = first->meeting().size();
+    answer.stats.seconds_model = kept ? 0.0 : first_seconds;
+    pieces.finish(answer.stats);
+    return answer;
   }
   std::shared_ptr<Model> model = kept ? std::static_pointer_cast<Model>(*kept) : nullptr;
   double model_seconds = 0;
@@ -87,15 +68,18 @@ std::optional<Check_answer> check_exact_by_pieces(const Scene& scene, const Chec
     model_seconds = clock.seconds();
     if (kept) *kept = model;
   }
-  auto pair_check = [&](int i, int j, const Rational_kernel::FT* ceiling, Check_stats& stats) {
+  auto pair_check = [&](int i, int j, const Rational* ceiling, Check_stats& stats) {
+    if (first)
+      if (std::optional<Pair_result<Rational>> r = first->answer(i, j, ceiling)) return r;
     return pieces.check_one(i, j, options, ceiling, stats);
   };
-  std::optional<Check_answer> a = piece_pairs_check(k, scene, *model, options, *split, pair_check);
-  if (a) {
-    a->number = "exact";
-    a->stats.seconds_model = model_seconds;
-    pieces.finish(a->stats);   // the runner's work in rationals, as check reports it
-  }
+  std::optional<Check_answer> a = piece_pairs_check(k, scene, *model, options, *split, pair_check,
+                                                    first ? &first->meeting() : nullptr);
+  if (!a) return std::nullopt;
+  a->number = "exact";
+  a->stats.add(answer.stats);
+  a->stats.seconds_model = model_seconds;
+  pieces.finish(a->stats);   // the runner's work in rationals, as check reports it
   return a;
 }
 

@@ -148,27 +148,30 @@ public:
     return *prepared_ ? pairs : nullptr;
   }
 
-  // Whether the boxes of objects i and j, moving, may meet on some
-  // sub-span (first_box_meeting on AK's S-bounds and motions, as the piece
-  // pairs ask it in EK): false only when the intervals are certain, on
-  // every sub-span, that they never do. An object AK could not bound, or a
-  // sign the intervals cannot tell, counts as may meet. After swept_pairs.
-  bool boxes_may_meet(int i, int j) const
+  // When the boxes of objects i and j, moving, may first meet (the least
+  // over sub-spans of first_box_meeting on AK's S-bounds and motions, as
+  // the piece pairs ask it in EK): an interval holding that time, none
+  // when the intervals are certain, on every sub-span, that they never do.
+  // An object AK could not bound, or a sign the intervals cannot tell: the
+  // whole span. After swept_pairs.
+  std::optional<AFT> box_meeting(int i, int j) const
   {
-    if (exact_only(i) || exact_only(j)) return true;
+    const AFT whole(amodel_.t_lo.inf(), amodel_.t_hi.sup());
+    if (exact_only(i) || exact_only(j)) return whole;
     std::size_t ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
     const Motion_path<AFT>&a = amodel_.objects[ui].motion, &b = amodel_.objects[uj].motion;
     try {
       Protector protect;
+      std::optional<AFT> first;
       for (const auto& span : amodel_.sub_spans({i, j})) {
         std::size_t sa = amodel_.segment_on(i, span), sb = amodel_.segment_on(j, span);
-        if (first_box_meeting(ak_, asettled_[ui][0], a.velocity[sa], a.offset[sa], asettled_[uj][0], b.velocity[sb],
-                              b.offset[sb], span.lo, span.hi))
-          return true;
+        std::optional<AFT> t = first_box_meeting(ak_, asettled_[ui][0], a.velocity[sa], a.offset[sa],
+                                                 asettled_[uj][0], b.velocity[sb], b.offset[sb], span.lo, span.hi);
+        if (t) first = first ? AFT(std::min(first->inf(), t->inf()), std::min(first->sup(), t->sup())) : *t;
       }
-      return false;
+      return first;
     } catch (const CGAL::Uncertain_conversion_exception&) {   // this predicate's filter only
-      return true;
+      return whole;
     }
   }
 
