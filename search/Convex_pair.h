@@ -399,6 +399,13 @@ private:
   // largest normal coordinate's units) makes the exact check fail; contact
   // scenes' overlaps go down to 1e-15 of their coordinates.
   static constexpr double guess_eps = 1e-13;
+  // A pivot tolerance that fine can leave the doubles pivoting on rounding
+  // where the rows' normals span many orders (a mesh piece's, 1e-12 to
+  // 1e-4 before scaling: the run does not settle, and the pair went to the
+  // cascade); a program that does not settle is solved again with the
+  // next of these. Only the guess changes: what is taken from it is
+  // checked as before.
+  static constexpr std::array<double, 3> pivot_eps{guess_eps, 1e-9, 1e-7};
 
   // Each row scaled by its largest normal coordinate, so that the margin
   // below is the same in every row's units.
@@ -417,13 +424,9 @@ private:
   std::optional<Double_simplex::Optimum> widest_margin() const
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-    Double_simplex lp(5, static_cast<int>(guide_rows_.size()), {0, 0, 0, 0, 1}, guess_eps);
-    for (std::size_t j = 0; j < guide_rows_.size(); ++j) {
-      const G& g = guide_rows_[j];
-      double big = scale_of(g), a[5] = {g.n[0] / big, g.n[1] / big, g.n[2] / big, g.n[3] / big, 1.0};
-      lp.column(static_cast<int>(j), a, g.c / big);
-    }
-    return lp.solve();
+    for (double eps : pivot_eps)
+      if (std::optional<Double_simplex::Optimum> o = guide_program(5, {0, 0, 0, 0, 1}, eps).solve()) return o;
+    return std::nullopt;
   }
 
   // The guide's  min t  over P as its dual: max sum y_j c_j / big_j  s.t.
@@ -431,15 +434,25 @@ private:
   std::optional<Basis> least_time_rows() const
   {
     CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-    Double_simplex lp(4, static_cast<int>(guide_rows_.size()), {0, 0, 0, -1, 0}, guess_eps);
+    for (double eps : pivot_eps) {
+      std::optional<Double_simplex::Optimum> o = guide_program(4, {0, 0, 0, -1, 0}, eps).solve();
+      if (o && o->basis.size() == 4) return Basis{o->basis[0], o->basis[1], o->basis[2], o->basis[3]};
+    }
+    return std::nullopt;
+  }
+
+  // A program whose columns are the guide's rows, each scaled by
+  // scale_of: y_j's column (n_j / big_j, then 1 in a fifth row) and cost
+  // c_j / big_j, with `rows` equality rows of right-hand side b.
+  Double_simplex guide_program(int rows, const Double_simplex::Row_vector& b, double eps) const
+  {
+    Double_simplex lp(rows, static_cast<int>(guide_rows_.size()), b, eps);
     for (std::size_t j = 0; j < guide_rows_.size(); ++j) {
       const G& g = guide_rows_[j];
-      double big = scale_of(g), a[4] = {g.n[0] / big, g.n[1] / big, g.n[2] / big, g.n[3] / big};
+      double big = scale_of(g), a[5] = {g.n[0] / big, g.n[1] / big, g.n[2] / big, g.n[3] / big, 1.0};
       lp.column(static_cast<int>(j), a, g.c / big);
     }
-    std::optional<Double_simplex::Optimum> o = lp.solve();
-    if (!o || o->basis.size() != 4) return std::nullopt;
-    return Basis{o->basis[0], o->basis[1], o->basis[2], o->basis[3]};
+    return lp;
   }
 
   static Point guess_point(const Double_simplex::Row_vector& pi) { return {-pi[0], -pi[1], -pi[2], -pi[3]}; }
