@@ -63,7 +63,11 @@ public:
 
   // Every pair that may meet was searched, and none collides: no pair of
   // pieces does.
-  bool apart() const { return !collide_ && searched_.size() == meeting_.size(); }
+  bool apart() const
+  {
+    return searched_.size() == meeting_.size() &&
+           std::none_of(searched_.begin(), searched_.end(), [](const auto& s) { return s.second.collide; });
+  }
 
   // The searches' counts.
   const Check_stats& stats() const { return stats_; }
@@ -81,7 +85,6 @@ private:
   Pair_list meeting_;
   std::map<std::pair<int, int>, Pair_result<Rational>> searched_;
   Check_stats stats_;
-  bool collide_ = false;
 
   // Each meeting pair in order, up to the first that collides.
   void search(Runner& runner, const Check_options& options)
@@ -90,9 +93,9 @@ private:
       if (searched_.size() % 64 == 63) Work_budget::check();
       std::optional<Pair_result<Rational>> r = runner.check_one(i, j, options, nullptr, stats_);
       if (!r) return;
-      collide_ = r->collide;
+      bool collide = r->collide;
       searched_.emplace(std::pair<int, int>{i, j}, std::move(*r));
-      if (collide_) return;
+      if (collide) return;
     }
   }
 };
