@@ -49,12 +49,12 @@ std::optional<Check_answer> check_exact_by_pieces(const Scene& scene, const Chec
   // prepared scene, whose model is kept (the piece scene's runner, made per
   // query, is counted nowhere on the path below either).
   double first_seconds = clock.lap();
-  Check_answer answer;
-  answer.number = "exact";
-  answer.semantics = options.semantics;
-  answer.stats.timed = options.stage_seconds;
-  if (first) answer.stats.add(first->stats());
   if (first && first->apart()) {
+    Check_answer answer;
+    answer.number = "exact";
+    answer.semantics = options.semantics;
+    answer.stats.timed = options.stage_seconds;
+    answer.stats.add(first->stats());
     answer.stats.object_pairs = split->piece_pairs(scene);
     answer.stats.candidate_pairs = first->meeting().size();
     answer.stats.seconds_model = kept ? 0.0 : first_seconds;
@@ -77,7 +77,7 @@ std::optional<Check_answer> check_exact_by_pieces(const Scene& scene, const Chec
                                                     first ? &first->meeting() : nullptr);
   if (!a) return std::nullopt;
   a->number = "exact";
-  a->stats.add(answer.stats);
+  if (first) a->stats.add(first->stats());   // the pass's searches, reused or not
   a->stats.seconds_model = model_seconds;
   pieces.finish(a->stats);   // the runner's work in rationals, as check reports it
   return a;
