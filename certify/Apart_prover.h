@@ -40,9 +40,6 @@ public:
 
   std::uint64_t steps() const { return steps_; }
   std::size_t conflicts() const { return conflicts_; }
-  // Pairs proved by split trees (certify/Split_prover.h): the writer then
-  // has the checker of verify/ check the certificate before writing it.
-  std::size_t split_pairs() const { return split_pairs_; }
   void set_split_limits(const Split_limits& limits) { split_limits_ = limits; }
 
 private:
@@ -52,10 +49,17 @@ private:
   std::optional<Scene_model<K>> model_;   // built at the first proof: a witness needs none
   Semantics semantics_;
   std::uint64_t limit_, steps_ = 0;
-  std::size_t conflicts_ = 0, split_pairs_ = 0;
+  std::size_t conflicts_ = 0;
   Split_limits split_limits_;
 
   const Scene_model<K>& model();
+
+  struct Term_proof {
+    nlohmann::ordered_json pieces;
+    std::size_t conflicts = 0;
+    std::uint64_t steps = 0;
+  };
+  std::optional<Term_proof> term_proof(int a, int b, const Rational& until, bool strict_end, bool optional);
 };
 
 // A literal's JSON form: five integers as strings.

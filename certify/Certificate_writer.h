@@ -2,9 +2,8 @@
 // (docs/certificate-format.md): witnesses and generic points from the
 // answer, apart proofs (certify/Apart_prover.h) for every pair the claim
 // says does not collide (or not before t*), written atomically within a
-// size limit. A certificate holding a split-tree proof of two unions of
-// convex pieces (certify/Split_prover.h) is first checked whole by the
-// checker of verify/: an error, never a file, if it were refused.
+// size limit. Every certificate is first checked whole by the checker of
+// verify/: an error, never a file, if it were refused.
 #ifndef CLASH4D_CERTIFY_CERTIFICATE_WRITER_H
 #define CLASH4D_CERTIFY_CERTIFICATE_WRITER_H
 

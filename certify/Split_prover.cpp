@@ -3,11 +3,9 @@
 #include "certify/Apart_prover.h"
 #include "model/Extrusion.h"
 #include "search/Apart_pieces.h"
+#include "search/Double_simplex.h"
 #include "search/Motzkin_lp.h"
 #include "run/Work_budget.h"
-#include <CGAL/Gmpzf.h>
-#include <CGAL/QP_functions.h>
-#include <CGAL/QP_models.h>
 #include <algorithm>
 #include <cmath>
 
@@ -32,6 +30,86 @@ bool union_of_bounded(const Csg_model<FT>& csg)
   for (const auto& p : csg.primitives)
     if (p.vertices.empty() || p.planes.empty()) return false;
   return !csg.primitives.empty();
+}
+
+// A plane w.p + c = 0 parting two sets of points, with margin delta.
+struct Parting {
+  Point4d w;
+  double c = 0, delta = 0;
+};
+
+// The widest margin delta, in doubles, over the rows listed:
+//   maximise delta  s.t.  w.p + c + delta <= 0 (A's points),
+//   -(w.q + c) + delta <= 0 (B's), |w_k| <= 1, delta <= 1,
+// asked of its dual in Double_simplex's form (six rows, b = e_6):
+//   maximise -(sum alpha + sum beta + gamma)  s.t.
+//   sum lambda_i (p_i, 1, 1) + sum mu_j (-q_j, -1, 1)
+//     + (alpha - beta, 0, 0) + gamma e_6 = e_6,
+// whose row multipliers are pi = -(w, c, delta) (pi . a_j >= cost_j is the
+// primal's row j). Always feasible (gamma = 1) and bounded (costs <= 0).
+std::optional<Parting> parting_on(const std::vector<Point4d> (&points)[2],
+                                  const std::vector<std::pair<int, std::size_t>>& rows, double eps)
+{
+  Double_simplex lp(6, static_cast<int>(rows.size()) + 9, {0, 0, 0, 0, 0, 1}, eps);
+  int j = 0;
+  for (const auto& [side, i] : rows) {
+    const Point4d& p = points[side][i];
+    double sign = side == 0 ? 1 : -1;
+    double a[6] = {sign * p[0], sign * p[1], sign * p[2], sign * p[3], sign, 1};
+    lp.column(j++, a, 0);
+  }
+  for (int k = 0; k < 5; ++k)
+    for (double sign : {1.0, -1.0}) {
+      if (k == 4 && sign < 0) break;
+      double a[6] = {0, 0, 0, 0, 0, 0};
+      a[k == 4 ? 5 : k] = sign;
+      lp.column(j++, a, -1);
+    }
+  std::optional<Double_simplex::Optimum> o = lp.solve();
+  if (!o) return std::nullopt;
+  Parting x;
+  for (int k = 0; k < 4; ++k) x.w[static_cast<std::size_t>(k)] = -o->pi[k];
+  x.c = -o->pi[4], x.delta = -o->pi[5];
+  return x;
+}
+
+// The widest parting of A's points (in [-1, 1]^4) from B's: over a few
+// points first, then those the answer violates added, until it holds for
+// all (the program's cost grows with its rows). Nothing when the sets do
+// not look apart.
+std::optional<Parting> widest_parting(const std::vector<Point4d> (&points)[2])
+{
+  auto value = [](const Point4d& p, const Parting& x) {
+    double v = x.c;
+    for (int k = 0; k < 4; ++k) v += x.w[static_cast<std::size_t>(k)] * p[k];
+    return v;
+  };
+  std::vector<std::pair<int, std::size_t>> rows;
+  std::vector<char> listed[2];
+  for (int side = 0; side < 2; ++side) {
+    listed[side].assign(points[side].size(), 0);
+    for (std::size_t i = 0; i < points[side].size(); i += std::max<std::size_t>(1, points[side].size() / 128))
+      rows.emplace_back(side, i), listed[side][i] = 1;
+  }
+  for (int round = 0; round < 30; ++round) {
+    std::optional<Parting> x;
+    for (double eps : {1e-9, 1e-7})
+      if ((x = parting_on(points, rows, eps))) break;
+    if (!x || !(x->delta > 1e-9)) return std::nullopt;
+    // The points not yet listed most violated, up to 256; within the
+    // simplex's tolerance (a listed point's slack) the plane is taken.
+    std::vector<std::pair<double, std::pair<int, std::size_t>>> worst;
+    for (int side = 0; side < 2; ++side)
+      for (std::size_t i = 0; i < points[side].size(); ++i) {
+        double v = (side == 0 ? value(points[side][i], *x) : -value(points[side][i], *x)) + x->delta;
+        if (v > 1e-8 && !listed[side][i]) worst.push_back({-v, {side, i}});
+      }
+    if (worst.empty()) return x;
+    std::sort(worst.begin(), worst.end());
+    for (std::size_t i = 0; i < worst.size() && i < 256; ++i)
+      rows.push_back(worst[i].second), listed[worst[i].second.first][worst[i].second.second] = 1;
+  }
+  return std::nullopt;
 }
 
 // One piece of time [lo, hi] of the pair: its tree.
@@ -135,8 +213,10 @@ private:
     if (++nodes_ > 4 * limits_.max_leaves) throw Giving_up();
     std::vector<int> pa = present(cell.absent[0]), pb = present(cell.absent[1]);
     std::size_t pairs = pa.size() * pb.size();
-    // Few pairs left near each other: a conflict for each.
-    if (pairs <= std::max<std::size_t>(4, std::min(lits_[0].size(), lits_[1].size()) / 4)) return leaf(path, cell, pa, pb);
+    // Few pairs left near each other: a conflict for each. A split would
+    // cost another leaf, which lists a conflict for about every piece, and
+    // a pair's conflict holds about two pieces' literals.
+    if (pairs <= std::max<std::size_t>(4, (lits_[0].size() + lits_[1].size()) / 2)) return leaf(path, cell, pa, pb);
     if (depth >= limits_.max_depth) {
       if (pairs > limits_.max_pair_conflicts) throw Giving_up();
       return leaf(path, cell, pa, pb);
@@ -152,11 +232,13 @@ private:
       if (present(side[0].absent[1]).size() < pb.size() || present(side[1].absent[0]).size() < pa.size())
         return split(path, below, side, depth);
     }
-    // No plane parts what is still present: cut space at the median of the
-    // present pieces' centres along their widest axis, when that leaves
-    // some piece wholly on one side (a kd-tree step), each side's pieces
-    // then tested against its half.
-    if (auto cut = median_cut(pa, pb, cell.t0, cell.t1)) {
+    // No plane parts what is still present: cut space at a face of one
+    // side's box, or at the median of the present pieces' centres along
+    // their widest axis (a kd-tree step), when that leaves some piece
+    // wholly on one side, each side's pieces then tested against its half.
+    std::optional<Literal_coefficients> cut = box_cut(pa, pb, cell.t0, cell.t1);
+    if (!cut) cut = median_cut(pa, pb, cell.t0, cell.t1);
+    if (cut) {
       Cell side[2] = {cell, cell};
       int below = table_.id(*cut);
       for (int h = 0; h < 2; ++h) {
@@ -166,8 +248,11 @@ private:
       }
       return split(path, below, side, depth);
     }
-    // Nor a cut in space: halve the time, where the pieces sweep less (the
+    // Nor a cut in space: a leaf while its pairs cost no more than a few
+    // leaves (halving the time towards a contact at t* makes a leaf per
+    // halving), else halve the time, where the pieces sweep less (the
     // literal t - tm: below t < tm).
+    if (pairs <= 2 * (lits_[0].size() + lits_[1].size())) return leaf(path, cell, pa, pb);
     Rational rm = (cell.r0 + cell.r1) / 2;
     double tm = round_to_nearest(rm);
     Cell side[2] = {cell, cell};
@@ -232,15 +317,68 @@ private:
     return b;
   }
 
+  // The present pieces' boxes over [t0, t1], A's then B's.
+  std::vector<std::array<double, 6>> boxes(const std::vector<int>& pa, const std::vector<int>& pb, double t0,
+                                           double t1) const
+  {
+    std::vector<std::array<double, 6>> out;
+    for (int i : pa) out.push_back(box(0, i, t0, t1));
+    for (int j : pb) out.push_back(box(1, j, t0, t1));
+    return out;
+  }
+
+  // The plane x_k = m just beyond a face of the box of one side's present
+  // pieces (m a step of 20 bits below the extent outside it), the face that
+  // leaves the most present pieces of the other side wholly beyond it:
+  // beyond it the side's pieces are all absent (a leaf), and before it
+  // those of the other side. Where the pieces of A and B interleave (a
+  // wrist entering the base's hollow), the pieces away from the other side
+  // go out a face at a time.
+  std::optional<Literal_coefficients> box_cut(const std::vector<int>& pa, const std::vector<int>& pb, double t0,
+                                              double t1) const
+  {
+    std::vector<std::array<double, 6>> all = boxes(pa, pb, t0, t1);
+    std::size_t split_at = pa.size();
+    std::size_t best = 0;
+    Literal_coefficients cut;
+    for (int side = 0; side < 2; ++side) {
+      std::size_t from = side == 0 ? 0 : split_at, to = side == 0 ? split_at : all.size();
+      std::size_t other_from = side == 0 ? split_at : 0, other_to = side == 0 ? all.size() : split_at;
+      for (int k = 0; k < 3; ++k) {
+        double lo = HUGE_VAL, hi = -HUGE_VAL, all_lo = HUGE_VAL, all_hi = -HUGE_VAL;
+        for (std::size_t i = 0; i < all.size(); ++i) {
+          all_lo = std::min(all_lo, all[i][static_cast<std::size_t>(k)]);
+          all_hi = std::max(all_hi, all[i][static_cast<std::size_t>(k + 3)]);
+          if (i >= from && i < to)
+            lo = std::min(lo, all[i][static_cast<std::size_t>(k)]), hi = std::max(hi, all[i][static_cast<std::size_t>(k + 3)]);
+        }
+        if (!(all_hi > all_lo) || !std::isfinite(all_hi - all_lo)) continue;
+        int e;
+        std::frexp(all_hi - all_lo, &e);
+        double unit = std::ldexp(1.0, e - 20);
+        double face[2] = {(std::floor(lo / unit) - 1) * unit, (std::ceil(hi / unit) + 1) * unit};
+        for (int f = 0; f < 2; ++f) {
+          std::size_t beyond = 0;
+          for (std::size_t i = other_from; i < other_to; ++i)
+            beyond += f == 0 ? all[i][static_cast<std::size_t>(k + 3)] < face[0] : all[i][static_cast<std::size_t>(k)] > face[1];
+          if (beyond <= best) continue;
+          best = beyond;
+          cut = {FT(0), FT(0), FT(0), FT(0), -exact_rational(face[f])};
+          cut[static_cast<std::size_t>(k)] = FT(1);
+        }
+      }
+    }
+    if (best == 0) return std::nullopt;
+    return cut;
+  }
+
   // The plane x_k = m (as x_k - m, m rounded to 20 bits below the extent)
   // at the median of the present pieces' box centres along the axis where
   // they spread most, when some present piece lies wholly on each side.
   std::optional<Literal_coefficients> median_cut(const std::vector<int>& pa, const std::vector<int>& pb, double t0,
                                                  double t1) const
   {
-    std::vector<std::array<double, 6>> boxes;
-    for (int i : pa) boxes.push_back(box(0, i, t0, t1));
-    for (int j : pb) boxes.push_back(box(1, j, t0, t1));
+    std::vector<std::array<double, 6>> boxes = this->boxes(pa, pb, t0, t1);
     int axis = -1;
     double spread = 0;
     for (int k = 0; k < 3; ++k) {
@@ -271,9 +409,9 @@ private:
   // A space-time plane with the present pieces of A on its negative side and
   // those of B on its positive side over [t0, t1], as small integers: the
   // largest margin over the pieces' corners at t0 and t1 (a piece moving with
-  // a constant velocity sweeps the hull of those), one LP over doubles solved
-  // exactly (CGAL's solver on double input). A guess: the exact LPs of the
-  // conflicts decide what it parts.
+  // a constant velocity sweeps the hull of those), in the box of those
+  // corners scaled to [-1, 1]^4. A guess: the exact LPs of the conflicts
+  // decide what it parts.
   std::optional<Literal_coefficients> separating_plane(const std::vector<int>& pa, const std::vector<int>& pb,
                                                        double t0, double t1) const
   {
@@ -294,55 +432,17 @@ private:
       centre[k] = (low[k] + high[k]) / 2;
       half[k] = std::max((high[k] - low[k]) / 2, 1e-9 * std::max(1.0, std::fabs(centre[k])));
     }
-    // Variables w (4), c, delta: A's corners w.p' + c + delta <= 0, B's
-    // -(w.p' + c) + delta <= 0, maximise delta; |w_k| <= 1, |delta| <= 1.
-    // Over a few corners first, then those the answer violates added, until
-    // it holds for all (the LP's cost grows with its rows).
-    auto value = [&](const Point4d& p, const std::vector<double>& x) {
-      double v = x[4];
-      for (int k = 0; k < 4; ++k) v += x[static_cast<std::size_t>(k)] * (p[k] - centre[k]) / half[k];
-      return v;
-    };
-    std::vector<std::pair<int, std::size_t>> rows;
-    for (int side = 0; side < 2; ++side)
-      for (std::size_t i = 0; i < points[side].size(); i += std::max<std::size_t>(1, points[side].size() / 128))
-        rows.emplace_back(side, i);
-    std::vector<double> x;
-    for (int round = 0; round < 30; ++round) {
-      CGAL::Quadratic_program<double> lp(CGAL::SMALLER, false, 0, false, 0);
-      for (int k = 0; k < 4; ++k) lp.set_l(k, true, -1), lp.set_u(k, true, 1);
-      lp.set_l(5, true, -1), lp.set_u(5, true, 1);
-      lp.set_c(5, -1);
-      for (int row = 0; row < static_cast<int>(rows.size()); ++row) {
-        const Point4d& p = points[rows[static_cast<std::size_t>(row)].first][rows[static_cast<std::size_t>(row)].second];
-        double sign = rows[static_cast<std::size_t>(row)].first == 0 ? 1 : -1;
-        for (int k = 0; k < 4; ++k) lp.set_a(k, row, sign * (p[k] - centre[k]) / half[k]);
-        lp.set_a(4, row, sign), lp.set_a(5, row, 1), lp.set_b(row, 0);
-      }
-      auto solution = CGAL::solve_linear_program(lp, CGAL::Gmpzf());
-      if (!solution.is_optimal()) return std::nullopt;
-      x.clear();
-      for (auto it = solution.variable_values_begin(); it != solution.variable_values_end(); ++it) x.push_back(CGAL::to_double(*it));
-      x.resize(6, 0);
-      if (!(x[5] > 1e-9)) return std::nullopt;
-      // The corners most violated, up to 128 a side.
-      std::vector<std::pair<double, std::pair<int, std::size_t>>> worst;
-      for (int side = 0; side < 2; ++side)
-        for (std::size_t i = 0; i < points[side].size(); ++i) {
-          double v = (side == 0 ? value(points[side][i], x) : -value(points[side][i], x)) + x[5];
-          if (v > 1e-12) worst.push_back({-v, {side, i}});
-        }
-      if (worst.empty()) break;
-      if (round == 29) return std::nullopt;
-      std::sort(worst.begin(), worst.end());
-      for (std::size_t i = 0; i < worst.size() && i < 256; ++i) rows.push_back(worst[i].second);
-    }
+    for (auto& list : points)
+      for (auto& p : list)
+        for (int k = 0; k < 4; ++k) p[k] = (p[k] - centre[k]) / half[k];
+    std::optional<Parting> x = widest_parting(points);
+    if (!x) return std::nullopt;
     // s(p) = sum w_k (p_k - centre_k) / half_k + c, in world coordinates,
     // rounded to integers of about 24 bits.
     double coef[5];
     double top = 0;
-    for (int k = 0; k < 4; ++k) coef[k] = x[static_cast<std::size_t>(k)] / half[k], top = std::max(top, std::fabs(coef[k]));
-    coef[4] = x[4];
+    for (int k = 0; k < 4; ++k) coef[k] = x->w[static_cast<std::size_t>(k)] / half[k], top = std::max(top, std::fabs(coef[k]));
+    coef[4] = x->c;
     for (int k = 0; k < 4; ++k) coef[4] -= coef[k] * centre[k];
     if (!(top > 0) || !std::isfinite(top)) return std::nullopt;
     double scale = std::ldexp(1.0, 24) / top;

@@ -1,13 +1,13 @@
 // Compact apart proofs for pairs of unions of convex pieces (meshes: issue
 // 58 item 5), in the certificate format as it is (docs/certificate-format.md
 // version 1: split trees and leaf conflicts). Per time piece, a tree of
-// splits on separating space-time planes (and on times where no plane
-// separates the pieces still present), whose every leaf closes off each
-// piece of A, or each piece of B, on its own: "this piece is not in the
-// leaf's cell" is one conflict over the piece's literals and the path. The
-// proof grows with the pieces times the leaves (a handful), not with the
-// pieces of A times the pieces of B. docs/meshes.md, "Certificates for
-// meshes".
+// splits on separating space-time planes (else on planes just beyond a
+// face of one side's box or at a median, else on times), whose every leaf
+// closes off each piece of A, or each piece of B, on its own: "this piece
+// is not in the leaf's cell" is one conflict over the piece's literals and
+// the path. The proof grows with the pieces times the leaves (a handful),
+// not with the pieces of A times the pieces of B. docs/meshes.md,
+// "Certificates for meshes".
 //
 // Why every term of F_A AND F_B is closed off at a leaf (both semantics).
 // A and B are unions of convex pieces (the CSG holds only unions of bounded
@@ -27,10 +27,10 @@
 // an open end), exactly as Motzkin's theorem is asked for them; in
 // regularised semantics all literals are strict. Every conflict's
 // multipliers come from the exact LP (search/Motzkin_lp.h, checked
-// exactly); the planes of the splits are guesses in doubles, rounded to
-// small integers: a wrong guess only leaves a piece present, never an
-// unproved leaf. And the certificate writer has the checker of verify/
-// check the whole certificate before it is written.
+// exactly); the planes of the splits are guesses in doubles (a double
+// simplex), rounded to small integers: a wrong guess only leaves a piece
+// present, never an unproved leaf. And the certificate writer has the
+// checker of verify/ check the whole certificate before it is written.
 #ifndef CLASH4D_CERTIFY_SPLIT_PROVER_H
 #define CLASH4D_CERTIFY_SPLIT_PROVER_H
 
@@ -47,6 +47,7 @@ struct Split_limits {
   std::size_t max_leaves = 16;   // per time piece (and 4 nodes per leaf)
   int max_depth = 12;
   std::size_t max_pair_conflicts = 4096;   // per leaf: present pieces of A times of B
+  std::size_t compare_pairs = 4096;        // up to this, the proof term by term too: the smaller is kept
 };
 
 struct Split_stats {

@@ -33,12 +33,13 @@ inline void eliminate_row(double* row, const double* with, int width, int column
   for (int c = 0; c < width; ++c) row[c] -= f * with[c];
 }
 
-// maximise cost . y  subject to  A y = b, y >= 0, with A of at most five
-// rows: a two-phase simplex on a dense tableau with Bland's rule. Only a
+// maximise cost . y  subject to  A y = b, y >= 0, with A of at most six
+// rows (five for a convex pair's programs and a Motzkin guess, six for a
+// plane parting two sets of points in space-time: certify/Split_prover.cpp): a two-phase simplex on a dense tableau with Bland's rule. Only a
 // guess: nothing here is exact, and a caller checks what it takes from it.
 class Double_simplex {
 public:
-  static constexpr int max_rows = 5;
+  static constexpr int max_rows = 6;
   using Row_vector = std::array<double, max_rows>;
   // An optimum's few entries without the heap (a program per query of a
   // convex pair). The tableau stays a std::vector: on the stack (boost's
@@ -133,7 +134,7 @@ private:
 
   static int checked_rows(int rows)
   {
-    if (rows < 1 || rows > max_rows) throw std::logic_error("Double_simplex: between 1 and 5 rows");
+    if (rows < 1 || rows > max_rows) throw std::logic_error("Double_simplex: between 1 and 6 rows");
     return rows;
   }
 

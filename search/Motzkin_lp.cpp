@@ -34,9 +34,16 @@ Lp dual_program(const std::vector<Motzkin_row>& rows)
   return lp;
 }
 
+// Bland's rule: CGAL's default pricing may cycle on a degenerate program
+// (its manual's cycling.cpp), and a split tree's conflicts are degenerate
+// (a star's arms through one vertex, cuts through a piece's corner): one
+// program of fixtures/certificates/split/star_into_bowl.json ran for
+// minutes. Bland's terminates.
 std::optional<std::vector<Rational>> solved(const Lp& lp, std::size_t n)
 {
-  CGAL::Quadratic_program_solution<CGAL::Gmpzf> s = CGAL::solve_linear_program(lp, CGAL::Gmpzf());
+  CGAL::Quadratic_program_options options;
+  options.set_pricing_strategy(CGAL::QP_BLAND);
+  CGAL::Quadratic_program_solution<CGAL::Gmpzf> s = CGAL::solve_linear_program(lp, CGAL::Gmpzf(), options);
   if (!s.is_optimal()) return std::nullopt;
   std::vector<Rational> lambda;
   for (auto it = s.variable_values_begin(); it != s.variable_values_end(); ++it)
