@@ -2,8 +2,8 @@
 #include "exact/Rational_kernel.h"
 #include "model/Point_classifier.h"
 #include "model/Scene_model.h"
+#include "numbers/Exact_lp.h"
 
-#include <CGAL/QP_functions.h>
 #include <CGAL/QP_models.h>
 #include <vector>
 
@@ -107,7 +107,7 @@ std::optional<Rational> deepest_cube(const std::vector<Literal>& cell)
   }
   lp.set_l(3, true, 0);
   lp.set_c(3, -1);
-  CGAL::Quadratic_program_solution<Rational> sol = CGAL::solve_linear_program(lp, Rational());
+  CGAL::Quadratic_program_solution<Rational> sol = solve_exact_lp(lp, Rational());
   if (!sol.is_optimal()) return std::nullopt;
   return -(sol.objective_value_numerator() / sol.objective_value_denominator());
 }

@@ -1,10 +1,9 @@
 #include "scene/Exact_validation.h"
 #include "geometry/Polytope_ft.h"
+#include "numbers/Exact_lp.h"
 #include "scene/Lazy_point.h"
 
 #include <CGAL/Cartesian.h>
-#include <CGAL/QP_functions.h>
-#include <CGAL/QP_models.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
 #include <map>
@@ -132,7 +131,7 @@ std::string convex_problem(const std::vector<Rational4>& planes)
   // the slack is not normalised, which is fine for a sign decision).
   Program interior = make_program(planes, Rational(1));
   interior.set_c(3, Rational(-1));
-  Solution sol = CGAL::solve_linear_program(interior, Rational());
+  Solution sol = solve_exact_lp(interior, Rational());
   if (sol.is_infeasible()) return "the half-spaces have no common point: the convex solid is empty";
   if (!CGAL::is_negative(sol.objective_value()))
     return "the convex solid has no interior (it is flat)";
@@ -143,7 +142,7 @@ std::string convex_problem(const std::vector<Rational4>& planes)
       Program extent = make_program(planes, Rational(0));
       extent.set_u(3, true, 0);
       extent.set_c(k, Rational(sign));
-      if (CGAL::solve_linear_program(extent, Rational()).is_unbounded())
+      if (solve_exact_lp(extent, Rational()).is_unbounded())
         return std::string("the convex solid is unbounded in the ") + (sign > 0 ? "-" : "+") + axis[k] + " direction";
     }
   return "";

@@ -1,10 +1,9 @@
 #include "search/Motzkin_lp.h"
 
+#include "numbers/Exact_lp.h"
 #include "search/Double_simplex.h"
 #include <CGAL/Gmpz.h>
 #include <CGAL/Gmpzf.h>
-#include <CGAL/QP_functions.h>
-#include <CGAL/QP_models.h>
 
 namespace clash4d {
 namespace {
@@ -34,16 +33,9 @@ Lp dual_program(const std::vector<Motzkin_row>& rows)
   return lp;
 }
 
-// Bland's rule: CGAL's default pricing may cycle on a degenerate program
-// (its manual's cycling.cpp), and a split tree's conflicts are degenerate
-// (a star's arms through one vertex, cuts through a piece's corner): one
-// program of fixtures/certificates/split/star_into_bowl.json ran for
-// minutes. Bland's terminates.
 std::optional<std::vector<Rational>> solved(const Lp& lp, std::size_t n)
 {
-  CGAL::Quadratic_program_options options;
-  options.set_pricing_strategy(CGAL::QP_BLAND);
-  CGAL::Quadratic_program_solution<CGAL::Gmpzf> s = CGAL::solve_linear_program(lp, CGAL::Gmpzf(), options);
+  CGAL::Quadratic_program_solution<CGAL::Gmpzf> s = solve_exact_lp(lp, CGAL::Gmpzf());
   if (!s.is_optimal()) return std::nullopt;
   std::vector<Rational> lambda;
   for (auto it = s.variable_values_begin(); it != s.variable_values_end(); ++it)
