@@ -121,21 +121,6 @@ private:
   }
 };
 
-// Every certificate is checked here by the independent checker of verify/
-// before anyone sees it: never an unproved certificate (a split tree's proof
-// is argued on paper, certify/Split_prover.h), nor one the checker would
-// refuse as too costly (its steps count conflicts' literal updates, which the
-// prover's term search does not: a UR5 pair's 95,398-conflict leaf passed
-// the prover's limit and not the checker's).
-void self_check(const Scene& scene, const json& certificate)
-{
-  verifier::Verify_result r = verifier::verify_certificate(scene, verifier::parse_certificate(certificate.dump()));
-  if (r.ok) return;
-  if (r.reason.find("10,000,000 steps") != std::string::npos)
-    throw Certificate_limit("certificate too costly to check: " + r.reason + " (docs/certificate-format.md section 4)");
-  throw std::logic_error("certificate: the checker rejects the proof at " + r.where + ": " + r.reason);
-}
-
 } // namespace
 
 json make_certificate(const Scene& scene, const Check_answer& answer, const Check_options& options, Certificate_stats* stats)
@@ -144,7 +129,7 @@ json make_certificate(const Scene& scene, const Check_answer& answer, const Chec
   try {
     Writer writer(scene, answer, options);
     json certificate = writer.run(stats);
-    self_check(scene, certificate);
+    check_before_writing(scene, certificate);
     return certificate;
   } catch (const Term_limit& e) {
     throw Certificate_limit(std::string("certificate too costly to check: ") + e.what() +
@@ -152,6 +137,21 @@ json make_certificate(const Scene& scene, const Check_answer& answer, const Chec
   } catch (const Term_feasible& e) {
     throw std::logic_error(std::string("certificate: ") + e.what());
   }
+}
+
+// Every certificate is checked here by the independent checker of verify/
+// before anyone sees it: never an unproved certificate (a split tree's proof
+// is argued on paper, certify/Split_prover.h), nor one the checker would
+// refuse as too costly (its steps count conflicts' literal updates, which the
+// prover's term search does not: a UR5 pair's 95,398-conflict leaf passed
+// the prover's limit and not the checker's).
+void check_before_writing(const Scene& scene, const json& certificate)
+{
+  verifier::Verify_result r = verifier::verify_certificate(scene, verifier::parse_certificate(certificate.dump()));
+  if (r.ok) return;
+  if (r.reason.find("10,000,000 steps") != std::string::npos)
+    throw Certificate_limit("certificate too costly to check: " + r.reason + " (docs/certificate-format.md section 4)");
+  throw std::logic_error("certificate: the checker rejects the proof at " + r.where + ": " + r.reason);
 }
 
 void write_certificate(const std::string& path, const json& certificate, std::size_t max_bytes, Certificate_stats* stats)

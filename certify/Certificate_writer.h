@@ -3,7 +3,8 @@
 // answer, apart proofs (certify/Apart_prover.h) for every pair the claim
 // says does not collide (or not before t*), written atomically within a
 // size limit. Every certificate is first checked whole by the checker of
-// verify/: an error, never a file, if it were refused.
+// verify/ (check_before_writing): an error, never a file, if it were
+// refused.
 #ifndef CLASH4D_CERTIFY_CERTIFICATE_WRITER_H
 #define CLASH4D_CERTIFY_CERTIFICATE_WRITER_H
 
@@ -31,6 +32,11 @@ struct Certificate_stats {
 // proved (a wrong answer or a certifier bug: never written).
 nlohmann::ordered_json make_certificate(const Scene& scene, const Check_answer& answer, const Check_options& options,
                                         Certificate_stats* stats = nullptr);
+
+// The checker of verify/ on the whole certificate, in the process: throws
+// Certificate_limit past its step limit, std::logic_error if it refuses a
+// proof. Both writers call it: no certificate is written unchecked.
+void check_before_writing(const Scene& scene, const nlohmann::ordered_json& certificate);
 
 // The certificate's text into path (temporary name, then rename); throws
 // Certificate_limit past max_bytes.

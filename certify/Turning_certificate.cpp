@@ -146,7 +146,9 @@ json make_turning_certificate(const Scene& scene, const Rotating_check_answer& a
 {
   if (answer.number == "double") throw std::logic_error("certificates come from an exact kernel (--number exact or rational)");
   try {
-    return Turning_writer(scene, answer, options).run(stats);
+    json certificate = Turning_writer(scene, answer, options).run(stats);
+    check_before_writing(scene, certificate);
+    return certificate;
   } catch (const Term_limit& e) {
     throw Certificate_limit(std::string("certificate too costly to check: ") + e.what() +
                             " (the checker's limit, docs/certificate-format.md section 4)");
