@@ -71,15 +71,19 @@ json Apart_prover::prove(int a, int b, const Rational& until, bool strict_end)
 }
 
 // The conflicts of every term, piece by piece (search/Apart_pieces.h), or
-// nothing when the search stops and `optional` (a tree stands instead).
+// nothing when they pass the step limit and `optional` (a tree stands
+// instead). A term with a point is an error either way: the pair is not
+// apart, or the tree and the terms disagree.
 std::optional<Apart_prover::Term_proof> Apart_prover::term_proof(int a, int b, const Rational& until, bool strict_end,
                                                                  bool optional)
 {
   Apart_pieces<K> pieces(model(), semantics_, limit_ - std::min(limit_, steps_));
   std::vector<Apart_piece> proven = pieces.prove(a, b, until, strict_end);
   if (const std::optional<Term_stop>& stop = pieces.stopped()) {
-    if (optional) return std::nullopt;
-    if (stop->why == Term_stop::Why::out_of_steps) throw Term_limit(stop->what);
+    if (stop->why == Term_stop::Why::out_of_steps) {
+      if (optional) return std::nullopt;
+      throw Term_limit(stop->what);
+    }
     throw Term_feasible(stop->what);
   }
   Term_proof out{json::array(), pieces.conflicts(), pieces.steps()};
