@@ -149,7 +149,7 @@ void check_before_writing(const Scene& scene, const json& certificate)
 {
   verifier::Verify_result r = verifier::verify_certificate(scene, verifier::parse_certificate(certificate.dump()));
   if (r.ok) return;
-  if (r.reason.find("10,000,000 steps") != std::string::npos)
+  if (r.past_step_limit)
     throw Certificate_limit("certificate too costly to check: " + r.reason + " (docs/certificate-format.md section 4)");
   throw std::logic_error("certificate: the checker rejects the proof at " + r.where + ": " + r.reason);
 }

@@ -7,6 +7,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "certify/Apart_prover.h"
+#include "certify/Certificate_writer.h"
 #include "exact/Rational_kernel.h"
 #include "scene/Json_reader.h"
 #include "scene/Scene_reader.h"
@@ -628,6 +629,41 @@ BOOST_AUTO_TEST_CASE(a_term_search_that_stops_says_why)
   BOOST_CHECK_THROW(prover.prove(0, 1, until, false), Term_feasible);
   Apart_prover tight(beside, Semantics::regularised, 0);
   BOOST_CHECK_THROW(tight.prove(0, 1, until, false), Term_limit);
+}
+
+// check_before_writing: what verify/'s checker says of a certificate decides
+// what check does with it. A proof it accepts is written; one it stops on at
+// its step limit (the checker's typed Verify_result::past_step_limit, not
+// its wording) is Certificate_limit, check's exit 3 and no file; one it
+// refutes is an internal error. a = [0,1]^3 minus 9 slots (6^9 terms, no
+// pruning: tests/test_verify.cpp, the_step_limit), b = [2,3] x [0,1]^2: the
+// conflict x - 1 < 0 (a's face), 2 - x < 0 (b's) parts them.
+BOOST_AUTO_TEST_CASE(a_certificate_is_written_only_as_its_checker_takes_it)
+{
+  auto scene_with = [](int slots) {
+    std::string a = R"({"name": "a", "shape": {"difference": [{"block": {"min": [0, 0, 0], "max": [1, 1, 1]}})";
+    for (int i = 0; i < slots; ++i)
+      a += R"(, {"block": {"min": [")" + std::to_string(2 * i + 2) + R"(/40", 0.25, 0.25], "max": [")" +
+           std::to_string(2 * i + 3) + R"(/40", 0.75, 0.75]}})";
+    return read_scene(read_json_text(R"({"format": "clash4d-scene/1", "time": [0, 10], "objects": [)" + a + R"(]}},
+        {"name": "b", "shape": {"block": {"min": [2, 0, 0], "max": [3, 1, 1]}}}]})"));
+  };
+  auto certificate = [](const char* lambda_b) {
+    return json::parse(std::string(R"({"format": "clash4d-certificate/1", "scene": "test", "semantics": "regularised",
+        "time": ["0", "10"], "claim": {"collide": false, "earliest": false, "all_pairs": false},
+        "pairs": [{"objects": ["a", "b"], "collide": false, "apart": {"until": "10", "pieces": [{"t": ["0", "10"],
+          "proof": {"conflicts": [{"literals": [["1", "0", "0", "0", "-1"], ["-1", "0", "0", "0", "2"]],
+                                   "lambda": ["1", ")") + lambda_b + R"("]}]}}]}}]})");
+  };
+  BOOST_CHECK_NO_THROW(check_before_writing(scene_with(2), certificate("1")));
+  BOOST_CHECK_THROW(check_before_writing(scene_with(9), certificate("1")), Certificate_limit);
+  // lambda 2 on 2 - x: x does not cancel, a refuted step (not the limit).
+  BOOST_CHECK_THROW(check_before_writing(scene_with(2), certificate("2")), std::logic_error);
+  try {
+    check_before_writing(scene_with(9), certificate("1"));
+  } catch (const Certificate_limit& e) {
+    BOOST_TEST(std::string(e.what()).find("too costly to check") != std::string::npos, e.what());
+  }
 }
 
 // verify refuses, unread, a certificate beyond its --certificate-max-mb

@@ -101,6 +101,7 @@ void expect_ok(const Verify_result& r, const std::string& claim)
 void expect_rejected(const Verify_result& r, const std::string& where, const std::string& reason, int exit_code = 1)
 {
   BOOST_TEST(!r.ok);
+  BOOST_TEST(!r.past_step_limit);   // every rejection here refutes a step
   BOOST_TEST(r.exit_code == exit_code, r.exit_code << " " << r.where << ": " << r.reason);
   BOOST_TEST(r.where == where, r.where << ": " << r.reason);
   BOOST_TEST(r.reason.find(reason) != std::string::npos, r.reason);

@@ -140,6 +140,11 @@ void reject(const std::string& where, const std::string& reason)
   throw Cert_failure(CLASH4D_VERIFY_REJECTED, where, reason);
 }
 
+void reject_past_step_limit(const std::string& where, const std::string& limit)
+{
+  throw Cert_failure(CLASH4D_VERIFY_REJECTED, where, limit + " (the limit for one certificate): not checked", true);
+}
+
 std::string key_at(const std::string& at, const std::string& key) { return at.empty() ? key : at + "." + key; }
 std::string index_at(const std::string& at, std::size_t i) { return at + "[" + std::to_string(i) + "]"; }
 

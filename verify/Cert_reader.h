@@ -23,13 +23,18 @@ constexpr std::size_t CLASH4D_VERIFY_MAX_NESTING = 5000;
 // The first failure: its exit status, its JSON path, the reason.
 class Cert_failure : public std::runtime_error {
 public:
-  Cert_failure(int exit_code, std::string where, const std::string& reason)
-    : std::runtime_error(reason), exit_code_(exit_code), where_(std::move(where)) {}
+  Cert_failure(int exit_code, std::string where, const std::string& reason, bool past_step_limit = false)
+    : std::runtime_error(reason), exit_code_(exit_code), where_(std::move(where)), past_step_limit_(past_step_limit) {}
   int exit_code() const { return exit_code_; }
   const std::string& where() const { return where_; }
+  // Stopped at the step limit of section 4: nothing was refuted, the rest
+  // was not checked (exit 1 all the same: a certificate must be provable
+  // within it).
+  bool past_step_limit() const { return past_step_limit_; }
 private:
   int exit_code_;
   std::string where_;
+  bool past_step_limit_;
 };
 
 // The certificate's text as JSON by section 1's reading rules: UTF-8, one
@@ -40,6 +45,8 @@ private:
 Json parse_certificate(const std::string& text);
 
 [[noreturn]] void reject(const std::string& where, const std::string& reason);
+// The term enumeration of a leaf at `where` passed its step limit (section 4).
+[[noreturn]] void reject_past_step_limit(const std::string& where, const std::string& limit);
 
 // JSON paths: "pairs[2].apart" and so on.
 std::string key_at(const std::string& at, const std::string& key);

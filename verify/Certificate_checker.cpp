@@ -326,7 +326,7 @@ void Certificate_checker::check_leaf(const Json& j, const std::string& at, const
   try {
     closed = terms_.all_closed(regularised_, fa, fb, path, piece.slab, conflicts, forms_.size());
   } catch (const Step_limit_reached& e) {
-    reject(at, std::string(e.what()) + " (the limit for one certificate): not checked");
+    reject_past_step_limit(at, e.what());
   }
   if (!closed) reject(at, "no conflict closes off the term " + describe(terms_.uncovered(), piece));
 }
@@ -349,6 +349,7 @@ Verify_result verify_certificate(const Scene& scene, const Json& certificate)
     r.ok = true;
   } catch (const Cert_failure& e) {
     r.exit_code = e.exit_code(), r.where = e.where(), r.reason = e.what();
+    r.past_step_limit = e.past_step_limit();
   } catch (const std::bad_alloc&) {   // section 6: a limit, nothing proved
     r.exit_code = CLASH4D_VERIFY_LIMIT, r.reason = "out of memory";
   } catch (const std::exception& e) {   // a flaw of the checker: nothing proved

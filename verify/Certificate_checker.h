@@ -13,10 +13,12 @@ namespace clash4d::verifier {
 
 // ok: claim is the line `verify` prints (section 5). Otherwise exit_code is 1
 // (rejected), 2 (unreadable), 3 (out of memory) or 4 (a flaw of the checker),
-// where the JSON path of the failure.
+// where the JSON path of the failure. past_step_limit: exit 1 because the
+// step limit of section 4 was passed, not because a step was refuted.
 struct Verify_result {
   bool ok = false;
   int exit_code = 0;
+  bool past_step_limit = false;
   std::string claim, where, reason;
 };
 

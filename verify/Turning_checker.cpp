@@ -478,7 +478,7 @@ void Turning_checker::check_leaf(const Json& j, const std::string& at, const Pie
   try {   // no path or slab literals: time is a parameter (8.3)
     closed = terms_.all_closed(regularised_, fa, fb, {}, {}, conflicts, forms_.size());
   } catch (const Step_limit_reached& e) {
-    reject(at, std::string(e.what()) + " (the limit for one certificate): not checked");
+    reject_past_step_limit(at, e.what());
   }
   if (!closed) reject(at, "no conflict closes off the term " + describe(terms_.uncovered(), piece));
 }
