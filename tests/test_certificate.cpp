@@ -656,14 +656,12 @@ BOOST_AUTO_TEST_CASE(a_certificate_is_written_only_as_its_checker_takes_it)
                                    "lambda": ["1", ")") + lambda_b + R"("]}]}}]}}]})");
   };
   BOOST_CHECK_NO_THROW(check_before_writing(scene_with(2), certificate("1")));
-  BOOST_CHECK_THROW(check_before_writing(scene_with(9), certificate("1")), Certificate_limit);
+  BOOST_CHECK_EXCEPTION(check_before_writing(scene_with(9), certificate("1")), Certificate_limit,
+                        [](const Certificate_limit& e) {
+                          return std::string(e.what()).find("too costly to check") != std::string::npos;
+                        });
   // lambda 2 on 2 - x: x does not cancel, a refuted step (not the limit).
   BOOST_CHECK_THROW(check_before_writing(scene_with(2), certificate("2")), std::logic_error);
-  try {
-    check_before_writing(scene_with(9), certificate("1"));
-  } catch (const Certificate_limit& e) {
-    BOOST_TEST(std::string(e.what()).find("too costly to check") != std::string::npos, e.what());
-  }
 }
 
 // verify refuses, unread, a certificate beyond its --certificate-max-mb
