@@ -6,7 +6,7 @@
 namespace clash4d {
 namespace {
 
-bool is_zero(const Rational& x) { return CGAL::sign(x) == CGAL::ZERO; }
+using CGAL::is_zero;   // exact on Rational
 bool is_zero(const Time_poly& p) { return is_zero_polynomial(p); }
 
 using Column = std::array<Time_poly, 4>;   // one literal's (n, e), or the slack's (0, 0, 0, -1)

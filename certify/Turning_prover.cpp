@@ -16,7 +16,7 @@ namespace {
 using json = nlohmann::ordered_json;
 using Vec4 = std::array<Rational, 4>;
 
-bool is_zero(const Rational& x) { return CGAL::sign(x) == CGAL::ZERO; }
+using CGAL::is_zero;   // exact on Rational
 
 // v divided by its first non-zero entry's absolute value: equal keys are
 // positive multiples of each other.

@@ -21,8 +21,8 @@ using Clock = std::chrono::steady_clock;
 
 // One subject's answer to the query, before it is held against exact; its
 // semantics is the closed one, the only question a query asks.
-struct Run : Subject_run {
-  Run() { semantics = "closed"; }
+struct Ccd_run : Subject_run {
+  Ccd_run() { semantics = "closed"; }
   bool collide = false;
   std::optional<Ccd_number> t;     // t*, when earliest was asked and it collides
 };
@@ -30,9 +30,9 @@ struct Run : Subject_run {
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 template <class F>
-Run timed(const std::string& subject, F f)
+Ccd_run timed(const std::string& subject, F f)
 {
-  Run r;
+  Ccd_run r;
   r.subject = subject;
   auto start = Clock::now();
   try {
@@ -48,10 +48,10 @@ Run timed(const std::string& subject, F f)
 }
 
 // An external subject's answer as a run: its t read exactly from its text.
-Run external_run(External_pool& pool, const Ccd_query& query, bool earliest)
+Ccd_run external_run(External_pool& pool, const Ccd_query& query, bool earliest)
 {
   External_pool::Lease subject = pool.acquire();
-  Run r;
+  Ccd_run r;
   r.subject = pool.spec().name;
   auto start = Clock::now();
   Subject_answer a = subject->ask(query, earliest);
@@ -69,11 +69,11 @@ Run external_run(External_pool& pool, const Ccd_query& query, bool earliest)
   return r;
 }
 
-std::vector<Run> builtin_runs(const Ccd_query& query, const Ccd_compare_options& o)
+std::vector<Ccd_run> builtin_runs(const Ccd_query& query, const Ccd_compare_options& o)
 {
   Ccd_options plain;
   plain.earliest = o.earliest;
-  std::vector<Run> runs;
+  std::vector<Ccd_run> runs;
   runs.push_back(timed("exact", [&] { return ccd_exact(query, plain); }));
   runs.push_back(timed("double", [&] { return ccd_double(query, plain); }));
   for (double tol : o.tolerances) {
@@ -101,25 +101,8 @@ std::string number_text(const Ccd_number& t)
   return std::get<Algebraic>(t).to_text();
 }
 
-// Whether |a - b| > bound, exactly. Irrational numbers are refined until
-// their isolating intervals (open) decide it; past the cap their distance
-// is within 2^-2000 of the bound, and a distance equal to the bound is not
-// above it.
-bool farther_than(const Algebraic& a, const Algebraic& b, const Rational& bound)
-{
-  if (a.is_rational() && b.is_rational()) return CGAL::abs(a.rational() - b.rational()) > bound;
-  if (b.is_rational()) return compare(a, b.rational() + bound) > 0 || compare(a, b.rational() - bound) < 0;
-  if (a.is_rational()) return farther_than(b, a, bound);
-  for (int i = 0; i < 2000; ++i, a.refine(), b.refine()) {
-    Rational lo = a.lower() - b.upper(), hi = a.upper() - b.lower();   // a - b lies strictly between
-    if (lo >= bound || hi <= -bound) return true;
-    if (lo >= -bound && hi <= bound) return false;
-  }
-  return false;
-}
-
 // |a - b| to about four digits, for the row's t error (shown only).
-Rational distance(const Algebraic& a, const Algebraic& b)
+Rational rounded_distance(const Algebraic& a, const Algebraic& b)
 {
   Rational lo, hi;
   for (int i = 0; i < 200; ++i, a.refine(), b.refine()) {
@@ -133,10 +116,10 @@ Rational distance(const Algebraic& a, const Algebraic& b)
 // The exact answers a query's subjects are held against: the plain one, and
 // on need the rounded query's (the exact-rounded run) and those with a
 // minimum separation EPS, one per tolerance.
-struct Reference {
+struct Ccd_reference {
   const Ccd_query& query;
-  const Run& exact;
-  const Run* rounded;
+  const Ccd_run& exact;
+  const Ccd_run* rounded;
   double time_bound;               // its exact value is the bound
   std::map<double, bool> within;   // the verdict with separation EPS, by EPS
 
@@ -153,7 +136,7 @@ struct Reference {
 const char* verdict(bool collide) { return collide ? "collision" : "no collision"; }
 
 // The cause of a verdict that differs from exact's, as defined in the header.
-std::string verdict_cause(const Run& r, Reference& ref, std::string& detail)
+std::string verdict_cause(const Ccd_run& r, Ccd_reference& ref, std::string& detail)
 {
   detail = r.subject + " says " + verdict(r.collide) + ", exact says " + verdict(ref.exact.collide);
   if (&r == ref.rounded || (ref.rounded && ref.rounded->ok && ref.rounded->collide == r.collide)) return "input rounding";
@@ -166,7 +149,7 @@ std::string verdict_cause(const Run& r, Reference& ref, std::string& detail)
 }
 
 // The cause of r's disagreement with exact (empty: none), with the detail.
-std::string classify(const Run& r, Reference& ref, std::string& detail)
+std::string classify(const Ccd_run& r, Ccd_reference& ref, std::string& detail)
 {
   if (&r == &ref.exact) return "";
   if (!r.fault.empty()) {
@@ -183,13 +166,13 @@ std::string classify(const Run& r, Reference& ref, std::string& detail)
   return "";
 }
 
-Subject_row row_of(const Run& r, Reference& ref, std::vector<Disagreement>& list)
+Subject_row row_of(const Ccd_run& r, Ccd_reference& ref, std::vector<Disagreement>& list)
 {
   Subject_row s = r.row(&r == &ref.exact);
   if (s.skipped) return s;
   if (r.ok) s.collide = r.collide;
   if (r.t) s.earliest = Located{{"", ""}, std::nullopt, number_text(*r.t)};
-  if (r.t && ref.exact.t) s.t_error = t_error_text(distance(exact_of(*r.t), exact_of(*ref.exact.t)));
+  if (r.t && ref.exact.t) s.t_error = t_error_text(rounded_distance(exact_of(*r.t), exact_of(*ref.exact.t)));
   std::string detail, cause = classify(r, ref, detail);
   s.agrees = r.ok && cause.empty();
   if (!cause.empty()) {
@@ -219,13 +202,13 @@ Ccd_comparison compare_query(const Ccd_query& query, const std::string& file, st
                              const Ccd_compare_options& options)
 {
   Work_budget::check();
-  std::vector<Run> runs = builtin_runs(query, options);
+  std::vector<Ccd_run> runs = builtin_runs(query, options);
   if (!runs[0].ok) throw std::runtime_error("the exact subject failed: " + runs[0].error);
   for (const auto& pool : options.externals) runs.push_back(external_run(*pool, query, options.earliest));
-  const Run* rounded = nullptr;
-  for (const Run& r : runs)
+  const Ccd_run* rounded = nullptr;
+  for (const Ccd_run& r : runs)
     if (r.subject == "exact-rounded") rounded = &r;
-  Reference ref{query, runs[0], rounded, options.time_bound, {}};
+  Ccd_reference ref{query, runs[0], rounded, options.time_bound, {}};
 
   Ccd_comparison out;
   out.index = index;
@@ -233,7 +216,7 @@ Ccd_comparison compare_query(const Ccd_query& query, const std::string& file, st
   out.query = query;
   out.comparison.file = file;
   out.comparison.name = ccd_query_name(index, query.line);
-  for (const Run& r : runs) out.comparison.subjects.push_back(row_of(r, ref, out.comparison.disagreements));
+  for (const Ccd_run& r : runs) out.comparison.subjects.push_back(row_of(r, ref, out.comparison.disagreements));
   Work_budget::check();   // a comparison finished past the budget is not shown (--max-seconds)
   return out;
 }

@@ -297,23 +297,6 @@ void fill_answer(Subject_row& s, const Run& r, const Reference& ref, const Witne
   }
 }
 
-// |a - b| > bound, decided exactly: by comparisons where one is rational,
-// else on isolating intervals refined until they decide. Equality at the
-// bound of two irrationals (a - b rational) is left undecided: not beyond.
-bool farther_than(const Algebraic& a, const Algebraic& b, const Rational& bound)
-{
-  if (b.is_rational()) return compare(a, b.rational() - bound) < 0 || compare(a, b.rational() + bound) > 0;
-  if (a.is_rational()) return farther_than(b, a, bound);
-  for (int i = 0; i < 200; ++i) {
-    Rational lo = a.lower() - b.upper(), hi = a.upper() - b.lower();   // a - b lies in [lo, hi]
-    if (lo > bound || hi < -bound) return true;
-    if (lo >= -bound && hi <= bound) return false;
-    a.refine();
-    b.refine();
-  }
-  return false;
-}
-
 // With earliest: the subject's t* is farther from exact's (in its
 // semantics) than the bound.
 bool beyond_time_bound(const Run& r, const Reference& ref)

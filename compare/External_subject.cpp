@@ -22,7 +22,7 @@ namespace clash4d {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-using Kind = Json_value::Kind;
+using Json_kind = Json_value::Kind;
 
 constexpr std::size_t max_line_bytes = 64u << 20;
 constexpr double grace_seconds = 2;   // for a subject to exit once its input is closed
@@ -86,8 +86,8 @@ std::string unknown_key(const Json_value& v, std::initializer_list<const char*> 
 // A number of the answer, read exactly from its text (JSON number or string).
 std::optional<std::string> exact_text(const Json_value& v)
 {
-  if (v.kind != Kind::Number && v.kind != Kind::String) return std::nullopt;
-  Number_parse p = parse_number_text(v.text, v.kind == Kind::String);
+  if (v.kind != Json_kind::Number && v.kind != Json_kind::String) return std::nullopt;
+  Number_parse p = parse_number_text(v.text, v.kind == Json_kind::String);
   if (!p.ok) return std::nullopt;
   return to_string(p.value);
 }
@@ -104,21 +104,21 @@ Subject_answer parse_answer(const std::string& line, long id, bool earliest, boo
     problem = std::string("the answer is not JSON (") + e.format("line") + ")";
     return a;
   }
-  if (v.kind != Kind::Object) return problem = "the answer is not a JSON object", a;
+  if (v.kind != Json_kind::Object) return problem = "the answer is not a JSON object", a;
   std::string extra = ccd ? unknown_key(v, {"id", "collide", "t", "unsupported"})
                           : unknown_key(v, {"id", "collide", "t", "witness", "unsupported"});
   if (!extra.empty()) return problem = "unknown key \"" + extra + "\" in the answer", a;
   const Json_value* got = v.find("id");
-  if (!got || got->kind != Kind::Number || got->text != std::to_string(id))
+  if (!got || got->kind != Json_kind::Number || got->text != std::to_string(id))
     return problem = "the answer's id is not " + std::to_string(id), a;
   if (const Json_value* u = v.find("unsupported")) {
-    if (u->kind != Kind::String || v.find("collide")) return problem = "\"unsupported\" must be a string, alone", a;
+    if (u->kind != Json_kind::String || v.find("collide")) return problem = "\"unsupported\" must be a string, alone", a;
     a.kind = Subject_answer::Kind::Unsupported;
     a.why = u->text;
     return a;
   }
   const Json_value* c = v.find("collide");
-  if (!c || c->kind != Kind::Boolean) return problem = "\"collide\" (true or false) is missing", a;
+  if (!c || c->kind != Json_kind::Boolean) return problem = "\"collide\" (true or false) is missing", a;
   a.collide = c->boolean;
   if (const Json_value* t = v.find("t")) {
     if (!(a.t = exact_text(*t))) return problem = "\"t\" is not a number", a;
@@ -126,7 +126,7 @@ Subject_answer parse_answer(const std::string& line, long id, bool earliest, boo
     return problem = "\"t\" is missing (the request asked for the earliest time)", a;
   }
   if (const Json_value* w = v.find("witness")) {
-    if (w->kind != Kind::Array || w->items.size() != 4) return problem = "\"witness\" must be 4 numbers", a;
+    if (w->kind != Json_kind::Array || w->items.size() != 4) return problem = "\"witness\" must be 4 numbers", a;
     std::array<std::string, 4> p;
     for (int i = 0; i < 4; ++i) {
       std::optional<std::string> x = exact_text(w->items[i]);
@@ -237,16 +237,16 @@ Subject_answer External_subject::read_hello()
   } catch (const Input_error& e) {
     return fault("protocol", "the hello line is not JSON (" + e.format("hello") + ")");
   }
-  const Json_value* semantics = hello.kind == Kind::Object ? hello.find("semantics") : nullptr;
-  const Json_value* name = hello.kind == Kind::Object ? hello.find("subject") : nullptr;
-  if (!semantics || semantics->kind != Kind::String || (semantics->text != "closed" && semantics->text != "regularised") ||
-      !name || name->kind != Kind::String || !unknown_key(hello, {"subject", "semantics", "tolerance"}).empty())
+  const Json_value* semantics = hello.kind == Json_kind::Object ? hello.find("semantics") : nullptr;
+  const Json_value* name = hello.kind == Json_kind::Object ? hello.find("subject") : nullptr;
+  if (!semantics || semantics->kind != Json_kind::String || (semantics->text != "closed" && semantics->text != "regularised") ||
+      !name || name->kind != Json_kind::String || !unknown_key(hello, {"subject", "semantics", "tolerance"}).empty())
     return fault("protocol", "the hello line must be {\"subject\": NAME, \"semantics\": \"closed\" or \"regularised\"[, "
                              "\"tolerance\": EPS]}, found: " + line.substr(0, 200));
   semantics_ = semantics->text;
   tolerance_.reset();
   if (const Json_value* tol = hello.find("tolerance")) {
-    if (tol->kind != Kind::Number) return fault("protocol", "the hello line's tolerance is not a number");
+    if (tol->kind != Json_kind::Number) return fault("protocol", "the hello line's tolerance is not a number");
     tolerance_ = std::strtod(tol->text.c_str(), nullptr);   // shown only, never computed with
   }
   return Subject_answer();

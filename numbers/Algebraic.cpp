@@ -909,4 +909,17 @@ std::string Algebraic::to_text() const
   return "root of [" + poly + "] in (" + to_string(lo) + ", " + to_string(hi) + ") ~ " + approx();
 }
 
+bool farther_than(const Algebraic& a, const Algebraic& b, const Rational& bound)
+{
+  if (a.is_rational() && b.is_rational()) return CGAL::abs(a.rational() - b.rational()) > bound;
+  if (b.is_rational()) return compare(a, b.rational() + bound) > 0 || compare(a, b.rational() - bound) < 0;
+  if (a.is_rational()) return farther_than(b, a, bound);
+  for (int i = 0; i < 2000; ++i, a.refine(), b.refine()) {
+    Rational lo = a.lower() - b.upper(), hi = a.upper() - b.lower();   // a - b lies strictly between
+    if (lo >= bound || hi <= -bound) return true;
+    if (lo >= -bound && hi <= bound) return false;
+  }
+  return false;
+}
+
 } // namespace clash4d

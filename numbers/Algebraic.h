@@ -139,6 +139,12 @@ private:
 int compare(const Algebraic& a, const Algebraic& b);
 int compare(const Algebraic& a, const Rational& q);
 
+// Whether |a - b| > bound, exactly (the comparer's time bound). Irrational
+// numbers are refined until their open isolating intervals decide it; past
+// the cap their distance is within 2^-2000 of the bound, and a distance
+// equal to the bound is not above it.
+bool farther_than(const Algebraic& a, const Algebraic& b, const Rational& bound);
+
 } // namespace clash4d
 
 #endif

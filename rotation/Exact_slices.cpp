@@ -17,7 +17,7 @@ namespace clash4d {
 
 namespace {
 
-bool is_zero(const Rational& x) { return CGAL::sign(x) == CGAL::ZERO; }
+using CGAL::is_zero;   // exact on Rational
 
 Algebraic quotient_at(const Time_poly& num, const Time_poly& den, const Algebraic& t)
 {

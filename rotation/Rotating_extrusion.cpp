@@ -13,7 +13,7 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-bool is_zero(const Rational& x) { return CGAL::sign(x) == CGAL::ZERO; }
+using CGAL::is_zero;   // exact on Rational
 
 int degree(const Time_poly& p)
 {

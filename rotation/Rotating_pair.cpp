@@ -14,7 +14,7 @@ namespace {
 
 using Point3 = std::array<Rational, 3>;
 
-bool is_zero(const Rational& x) { return CGAL::sign(x) == CGAL::ZERO; }
+using CGAL::is_zero;   // exact on Rational
 
 // w, made by the scene builder around s, with the path and approximations
 // the reader would give it.

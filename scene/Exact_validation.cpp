@@ -13,9 +13,9 @@
 namespace clash4d {
 namespace {
 
-using Exact_geometry = CGAL::Cartesian<Rational>;
-using Point_2 = Exact_geometry::Point_2;
-using Point_3 = Exact_geometry::Point_3;
+using Rational_geometry = CGAL::Cartesian<Rational>;
+using Point_2 = Rational_geometry::Point_2;
+using Point_3 = Rational_geometry::Point_3;
 using Program = CGAL::Quadratic_program<Rational>;
 using Solution = CGAL::Quadratic_program_solution<Rational>;
 
@@ -107,7 +107,7 @@ Polytope_combinatorics hull_facets(const std::vector<Rational3>& points)
     // One triple per facet plane: triangles of the same facet repeat it. The
     // plane, scaled so its first non-zero coefficient is +-1 (keeping its
     // orientation), is the key.
-    Exact_geometry::Plane_3 h(pts[t[0]], pts[t[1]], pts[t[2]]);
+    Rational_geometry::Plane_3 h(pts[t[0]], pts[t[1]], pts[t[2]]);
     std::array<Rational, 4> key{h.a(), h.b(), h.c(), h.d()};
     Rational lead = CGAL::is_zero(key[0]) ? (CGAL::is_zero(key[1]) ? key[2] : key[1]) : key[0];
     if (lead < 0) lead = -lead;

@@ -6,11 +6,6 @@
 namespace clash4d::verifier {
 namespace {
 
-[[noreturn]] void unreadable(const std::string& where, const std::string& reason)
-{
-  throw Cert_failure(CLASH4D_VERIFY_UNREADABLE, where, reason);
-}
-
 bool digits(const std::string& s, std::size_t from, std::size_t to)
 {
   return from < to && std::all_of(s.begin() + from, s.begin() + to, [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
@@ -135,6 +130,11 @@ Json parse_certificate(const std::string& text)
   return result;
 }
 
+void unreadable(const std::string& where, const std::string& reason)
+{
+  throw Cert_failure(CLASH4D_VERIFY_UNREADABLE, where, reason);
+}
+
 void reject(const std::string& where, const std::string& reason)
 {
   throw Cert_failure(CLASH4D_VERIFY_REJECTED, where, reason);
@@ -144,6 +144,10 @@ void reject_past_step_limit(const std::string& where, const std::string& limit)
 {
   throw Cert_failure(CLASH4D_VERIFY_REJECTED, where, limit + " (the limit for one certificate): not checked", true);
 }
+
+std::string plural(std::size_t n, const char* what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); }
+
+std::pair<int, int> pair_key(int a, int b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
 
 std::string key_at(const std::string& at, const std::string& key) { return at.empty() ? key : at + "." + key; }
 std::string index_at(const std::string& at, std::size_t i) { return at + "[" + std::to_string(i) + "]"; }

@@ -6,8 +6,10 @@
 #include "verify/Object_model.h"
 #include <nlohmann/json.hpp>
 #include <initializer_list>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace clash4d::verifier {
 
@@ -44,9 +46,15 @@ private:
 // Cert_failure (2, or 3 for the nesting) with the place.
 Json parse_certificate(const std::string& text);
 
+[[noreturn]] void unreadable(const std::string& where, const std::string& reason);   // exit 2
 [[noreturn]] void reject(const std::string& where, const std::string& reason);
 // The term enumeration of a leaf at `where` passed its step limit (section 4).
 [[noreturn]] void reject_past_step_limit(const std::string& where, const std::string& limit);
+
+// "1 term", "2 terms".
+std::string plural(std::size_t n, const char* what);
+// A pair of objects in a map, the lower index first.
+std::pair<int, int> pair_key(int a, int b);
 
 // JSON paths: "pairs[2].apart" and so on.
 std::string key_at(const std::string& at, const std::string& key);

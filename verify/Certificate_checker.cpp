@@ -11,10 +11,6 @@ std::array<mpq_class, 5> as_rationals(const std::array<mpz_class, 5>& l)
   return {mpq_class(l[0]), mpq_class(l[1]), mpq_class(l[2]), mpq_class(l[3]), mpq_class(l[4])};
 }
 
-std::string plural(std::size_t n, const char* what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); }
-
-std::pair<int, int> pair_key(int a, int b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
-
 } // namespace
 
 Certificate_checker::Certificate_checker(const Scene& scene)

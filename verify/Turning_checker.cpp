@@ -5,15 +5,6 @@
 namespace clash4d::verifier {
 namespace {
 
-[[noreturn]] void unreadable(const std::string& where, const std::string& reason)
-{
-  throw Cert_failure(CLASH4D_VERIFY_UNREADABLE, where, reason);
-}
-
-std::string plural(std::size_t n, const char* what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); }
-
-std::pair<int, int> pair_key(int a, int b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
-
 // "[c0, c1, ...]", each number in lowest terms (section 8.5).
 std::string list_text(const std::vector<mpq_class>& c)
 {
