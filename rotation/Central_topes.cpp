@@ -6,9 +6,25 @@ namespace clash4d {
 
 namespace {
 
-Time_direction cross(const Time_direction& a, const Time_direction& b)
+// Evaluation at r is a ring map from Q[t] to Q(r): p and p mod r's
+// minimal polynomial have one sign at r. So the normals, and each cross
+// product made of them, are kept below r's degree (a rational r: their
+// values), and a product never has the degree 8 of the normals' own.
+Time_poly reduced(const Time_poly& p, const Algebraic& r)
 {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  std::size_t degree = r.is_rational() ? 1 : r.polynomial().size() - 1;
+  if (static_cast<std::size_t>(p.size()) <= degree) return p;
+  return Time_poly(Algebraic::field_element(r, p.coefficients(), {Rational(1)}));
+}
+
+Time_direction reduced(const Time_direction& d, const Algebraic& r)
+{
+  return {reduced(d[0], r), reduced(d[1], r), reduced(d[2], r)};
+}
+
+Time_direction cross(const Time_direction& a, const Time_direction& b, const Algebraic& r)
+{
+  return reduced(Time_direction{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}, r);
 }
 
 int dot_sign(const Time_direction& a, const Time_direction& b, const Algebraic& r)
@@ -34,7 +50,7 @@ void cells_along(const std::vector<Time_direction>& normals, const Time_directio
   for (std::size_t a = 0; a < k; ++a) {
     along[a] = dot_sign(normals[a], v, r);
     if (along[a] != 0) continue;
-    Time_direction w = cross(v, normals[a]);
+    Time_direction w = cross(v, normals[a], r);
     rays.push_back(w);
     rays.push_back({-w[0], -w[1], -w[2]});
   }
@@ -56,13 +72,15 @@ CGAL::Sign sign_at(const Time_poly& p, const Algebraic& t)
   return t.sign_of(p.coefficients());
 }
 
-std::set<std::vector<int>> central_topes(const std::vector<Time_direction>& normals, const Algebraic& r)
+std::set<std::vector<int>> central_topes(const std::vector<Time_direction>& given, const Algebraic& r)
 {
+  std::vector<Time_direction> normals;
+  for (const Time_direction& n : given) normals.push_back(reduced(n, r));
   std::set<std::vector<int>> out;
   bool rank_one = true;
   for (std::size_t i = 0; i < normals.size(); ++i)
     for (std::size_t j = i + 1; j < normals.size(); ++j) {
-      Time_direction v = cross(normals[i], normals[j]);
+      Time_direction v = cross(normals[i], normals[j], r);
       if (vanishes_at(v, r)) continue;
       rank_one = false;
       cells_along(normals, v, r, out);

@@ -1812,14 +1812,36 @@ Time_direction constant_direction(long x, long y, long z)
   return {Time_poly(Rational(x)), Time_poly(Rational(y)), Time_poly(Rational(z))};
 }
 
-// The sides of the direction d at r, exactly; 0 where d is on a plane.
-std::vector<int> sides_of(const std::vector<Time_direction>& normals, const std::array<long, 3>& d, const Algebraic& r)
+// A normal whose coefficients are integers (the rounds below draw them
+// so), each coordinate's constant term first.
+using Integer_direction = std::array<std::vector<long>, 3>;
+
+Integer_direction integer_direction(const Time_direction& n)
+{
+  Integer_direction out;
+  for (int c = 0; c < 3; ++c)
+    for (int i = 0; i < n[c].size(); ++i) {
+      BOOST_REQUIRE(mpz_cmp_ui(n[c][i].denominator().mpz(), 1) == 0);
+      out[c].push_back(mpz_get_si(n[c][i].numerator().mpz()));
+    }
+  return out;
+}
+
+// The sides of the direction d at r, exactly; 0 where d is on a plane:
+// the sign at r of the integer polynomial n(t) . d (400 directions a
+// round), made in integers and asked of r by Algebraic::sign_of, not by
+// Central_topes.h's sign_at.
+std::vector<int> sides_of(const std::vector<Integer_direction>& normals, const std::array<long, 3>& d,
+                          const Algebraic& r)
 {
   std::vector<int> sides;
-  for (const Time_direction& n : normals)
-    sides.push_back(sign_at(n[0] * Time_poly(Rational(d[0])) + n[1] * Time_poly(Rational(d[1])) +
-                                n[2] * Time_poly(Rational(d[2])),
-                            r));
+  for (const Integer_direction& n : normals) {
+    std::vector<mpz_class> g(std::max({n[0].size(), n[1].size(), n[2].size()}), 0);
+    for (int c = 0; c < 3; ++c)
+      for (std::size_t i = 0; i < n[c].size(); ++i) g[i] += d[c] * n[c][i];
+    while (!g.empty() && g.back() == 0) g.pop_back();
+    sides.push_back(g.empty() ? 0 : r.sign_of(g));
+  }
   return sides;
 }
 
@@ -1914,8 +1936,10 @@ BOOST_AUTO_TEST_CASE(central_topes_are_the_cells_of_the_planes)
     std::set<std::vector<int>> cells = central_topes(normals, r);
     if (cells.size() < (std::size_t(1) << k)) ++dependent;
     for (const auto& c : cells) BOOST_TEST((c.size() == k && std::find(c.begin(), c.end(), 0) == c.end()));
+    std::vector<Integer_direction> integer_normals;
+    for (const auto& n : normals) integer_normals.push_back(integer_direction(n));
     for (int d = 0; d < 400; ++d) {
-      std::vector<int> sides = sides_of(normals, {small(20), small(20), small(20)}, r);
+      std::vector<int> sides = sides_of(integer_normals, {small(20), small(20), small(20)}, r);
       if (std::find(sides.begin(), sides.end(), 0) != sides.end()) continue;
       BOOST_TEST(cells.count(sides) == 1u, "round " << round << ": a sampled cell is missing");
     }
