@@ -17,7 +17,14 @@ using namespace clash4d::ccd_oracle;
 
 namespace {
 
-mpq_class Qn(const char* s) { return mpq_class(s); }
+// gmpxx keeps a fraction as written ("2/4", or (k, 16)), and GMP's
+// arithmetic and == want lowest terms: each one made here is reduced.
+mpq_class Qn(const char* s)
+{
+  mpq_class q(s);
+  q.canonicalize();
+  return q;
+}
 
 Point3 P(const mpq_class& x, const mpq_class& y, const mpq_class& z) { return {x, y, z}; }
 
@@ -533,7 +540,8 @@ mpq_class pick(std::mt19937& g, const std::vector<mpq_class>& from)
 Point3 random_point(std::mt19937& g, int lo, int hi)
 {
   std::uniform_int_distribution<int> d(lo, hi);
-  return P(d(g), d(g), d(g));
+  int x = d(g), y = d(g), z = d(g);   // in this order: a call's arguments have none
+  return P(x, y, z);
 }
 Point3 plus(const Point3& a, const Point3& b) { return P(a[0] + b[0], a[1] + b[1], a[2] + b[2]); }
 Point3 minus(const Point3& a, const Point3& b) { return P(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
@@ -616,6 +624,7 @@ BOOST_AUTO_TEST_CASE(moving_queries_first_time_and_invariances)
       if (D == 0) {
         for (int k = 0; k <= 16; ++k) {
           mpq_class s(k, 16);
+          s.canonicalize();
           bool c = alt::contact(type, q, s);
           if (c) BOOST_CHECK_MESSAGE(a.collide && compare(a.t_star, rat(s)) <= 0, "case " << n << " s " << s);
           if (a.collide && compare(rat(s), a.t_star) < 0) BOOST_CHECK_MESSAGE(!c, "case " << n << " s " << s);

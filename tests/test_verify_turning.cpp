@@ -598,7 +598,11 @@ BOOST_AUTO_TEST_CASE(random_gcds_against_construction)
   BOOST_TEST_MESSAGE("gcds: seed 20261205");
   auto product = [&](int first, int count, long scale) {   // roots first, first + 1, ... over 3
     Rational_poly p = Rational_poly::constant(mpq_class(scale, 7));
-    for (int k = 0; k < count; ++k) p = p * Rational_poly::linear(mpq_class(-(first + k), 3), 1);
+    for (int k = 0; k < count; ++k) {
+      mpq_class root(first + k, 3);
+      root.canonicalize();   // 3/3, 6/3: GMP wants lowest terms
+      p = p * Rational_poly::linear(-root, 1);
+    }
     return p;
   };
   for (int round = 0; round < 200; ++round) {
