@@ -111,6 +111,7 @@ json meshes_json(const std::vector<Mesh_record>& meshes)
                    {"scale", m.scale},
                    {"solid_rule", m.solid_rule},
                    {"repairs", m.repairs},
+                   {"decomposition", m.decomposition},
                    {"decomposition_seconds", m.decomposition_seconds},
                    {"cache", m.cache}});
   return out;
@@ -128,7 +129,8 @@ std::string meshes_text(const std::vector<Mesh_record>& meshes, const std::strin
     if (!m.cache.empty()) {
       char seconds[32];
       std::snprintf(seconds, sizeof seconds, "%.3f s", m.decomposition_seconds);
-      out << ", decomposition " << (m.cache == "hit" ? std::string("from the cache") : seconds) << " (cache " << m.cache
+      out << ", decomposition " << (m.decomposition.empty() ? "" : m.decomposition + " ")
+          << (m.cache == "hit" ? std::string("from the cache") : seconds) << " (cache " << m.cache
           << ")";
     }
     out << "\n";

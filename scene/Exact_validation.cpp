@@ -36,6 +36,63 @@ Program make_program(const std::vector<Rational4>& planes, const Rational& w)
   return lp;
 }
 
+// A rational point as integers over one positive denominator:
+// (x, y, z) = (X, Y, Z) / W. Hull keys and volumes are computed on these, as
+// products of integers, where rationals would reduce a fraction (a GCD) at
+// each step: the pieces of a mesh have long denominators (issue 58).
+struct Integer_point {
+  std::array<mpz_class, 3> x;
+  mpz_class w;
+};
+
+Integer_point integer_point(const Rational3& p)
+{
+  Integer_point q;
+  q.w = 1;
+  for (const Rational& c : p) mpz_lcm(q.w.get_mpz_t(), q.w.get_mpz_t(), mpq_denref(c.mpq()));
+  for (int k = 0; k < 3; ++k) {
+    mpz_divexact(q.x[k].get_mpz_t(), q.w.get_mpz_t(), mpq_denref(p[k].mpq()));
+    q.x[k] *= mpz_class(mpq_numref(p[k].mpq()));
+  }
+  return q;
+}
+
+// The oriented plane through p q r, normal (q - p) x (r - p), as its
+// primitive integer vector (a, b, c, d), a x + b y + c z + d = 0: a positive
+// multiple of every other vector of that plane and orientation, so two
+// triples give the same key exactly when they span the same oriented plane.
+// With u = (q - p) Wp Wq and v = (r - p) Wp Wr (integers), n = u x v is a
+// positive multiple of the normal, and (n Wp, -n . Xp) of the plane.
+std::array<mpz_class, 4> plane_key(const Integer_point& p, const Integer_point& q, const Integer_point& r)
+{
+  std::array<mpz_class, 3> u, v;
+  for (int k = 0; k < 3; ++k) {
+    u[k] = q.x[k] * p.w - p.x[k] * q.w;
+    v[k] = r.x[k] * p.w - p.x[k] * r.w;
+  }
+  std::array<mpz_class, 3> n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  std::array<mpz_class, 4> key{n[0] * p.w, n[1] * p.w, n[2] * p.w, -(n[0] * p.x[0] + n[1] * p.x[1] + n[2] * p.x[2])};
+  mpz_class g = 0;
+  for (const auto& c : key) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c.get_mpz_t());
+  if (g != 0)
+    for (auto& c : key) mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), g.get_mpz_t());
+  return key;
+}
+
+// det(a, b, c) of the three points' coordinates: (det of the integer rows)
+// / (Wa Wb Wc).
+Rational determinant_of(const Integer_point& a, const Integer_point& b, const Integer_point& c)
+{
+  mpz_class det = a.x[0] * (b.x[1] * c.x[2] - b.x[2] * c.x[1]) - a.x[1] * (b.x[0] * c.x[2] - b.x[2] * c.x[0]) +
+                  a.x[2] * (b.x[0] * c.x[1] - b.x[1] * c.x[0]);
+  mpz_class w = a.w * b.w * c.w;
+  Rational r;
+  mpz_set(mpq_numref(r.mpq()), det.get_mpz_t());
+  mpz_set(mpq_denref(r.mpq()), w.get_mpz_t());
+  mpq_canonicalize(r.mpq());
+  return r;
+}
+
 } // namespace
 
 std::string prism_base_problem(const std::vector<std::array<Rational, 2>>& base)
@@ -92,7 +149,9 @@ Polytope_combinatorics hull_facets(const std::vector<Rational3>& points)
   Mesh mesh;
   CGAL::convex_hull_3(lazy.begin(), lazy.end(), mesh, CGAL::Convex_hull_traits_3<CGAL::Epeck, Mesh, CGAL::Tag_false>());
   Polytope_combinatorics out;
-  std::map<std::array<Rational, 4>, int> planes;
+  std::vector<Integer_point> whole;
+  for (const auto& p : points) whole.push_back(integer_point(p));
+  std::map<std::array<mpz_class, 4>, int> planes;
   std::map<Mesh::Face_index, int> plane_of;
   for (auto f : mesh.faces()) {
     std::vector<int> around;
@@ -100,19 +159,11 @@ Polytope_combinatorics hull_facets(const std::vector<Rational3>& points)
     std::array<int, 3> t{around[0], around[1], around[2]};
     // The hull's faces are outward: each triangle of a face's fan adds six
     // times the volume of its tetrahedron with the origin.
-    for (std::size_t i = 1; i + 1 < around.size(); ++i) {
-      const Point_3 &a = pts[around[0]], &b = pts[around[i]], &c = pts[around[i + 1]];
-      out.six_volume += CGAL::determinant(a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z());
-    }
-    // One triple per facet plane: triangles of the same facet repeat it. The
-    // plane, scaled so its first non-zero coefficient is +-1 (keeping its
-    // orientation), is the key.
-    Rational_geometry::Plane_3 h(pts[t[0]], pts[t[1]], pts[t[2]]);
-    std::array<Rational, 4> key{h.a(), h.b(), h.c(), h.d()};
-    Rational lead = CGAL::is_zero(key[0]) ? (CGAL::is_zero(key[1]) ? key[2] : key[1]) : key[0];
-    if (lead < 0) lead = -lead;
-    for (auto& x : key) x /= lead;
-    auto [it, fresh] = planes.emplace(key, static_cast<int>(out.triples.size()));
+    for (std::size_t i = 1; i + 1 < around.size(); ++i)
+      out.six_volume += determinant_of(whole[around[0]], whole[around[i]], whole[around[i + 1]]);
+    // One triple per facet plane: triangles of the same facet repeat it.
+    // The plane's primitive integer vector (its orientation kept) is the key.
+    auto [it, fresh] = planes.emplace(plane_key(whole[t[0]], whole[t[1]], whole[t[2]]), static_cast<int>(out.triples.size()));
     if (fresh) out.triples.push_back(t);
     plane_of[f] = it->second;
   }

@@ -153,11 +153,11 @@ void write_entry(const fs::path& folder, const std::string& key, const Solid& pi
 // an entry's body, exact, and are rebuilt as hulls the same way. A slow
 // step says so (issue 58 item 3) under `note`'s text.
 Solid decomposed_within_budget(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits,
-                               const std::string& note)
+                               Mesh_decomposition method, const std::string& note)
 {
   if (!Work_budget::limited()) {
     Slow_step_note slow(note);
-    return decomposed_solid(mesh, file_name, limits);
+    return decomposed_solid(mesh, file_name, limits, method);
   }
   Work_budget::check();
   // The note's thread starts at the first poll, after fork(): a thread
@@ -165,7 +165,7 @@ Solid decomposed_within_budget(const Checked_mesh& mesh, const std::string& file
   // allocator locked, and the child then never ends (seen under
   // AddressSanitizer, whose allocator has no fork handler).
   std::optional<Slow_step_note> slow;
-  std::string body = text_of_child([&] { return body_text(decomposed_solid(mesh, file_name, limits)); },
+  std::string body = text_of_child([&] { return body_text(decomposed_solid(mesh, file_name, limits, method)); },
                                    [&] {
                                      if (!slow) slow.emplace(note);
                                      Work_budget::check();
@@ -241,10 +241,10 @@ void Mesh_cache::store(const std::string& key, const Solid& pieces) const
 }
 
 Solid Mesh_cache::decomposed(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits,
-                             const std::string& options_key, Mesh_record& record,
+                             Mesh_decomposition method, Mesh_record& record,
                              const std::function<void()>& before_decomposing) const
 {
-  std::string k = on() ? key(mesh, options_key) : "";
+  std::string k = on() ? key(mesh, decomposition_name(method)) : "";
   if (on())
     if (std::optional<Solid> hit = load(k, mesh, limits.pieces)) {
       record.cache = "hit";
@@ -255,7 +255,7 @@ Solid Mesh_cache::decomposed(const Checked_mesh& mesh, const std::string& file_n
   before_decomposing();
   auto began = std::chrono::steady_clock::now();
   Solid pieces = decomposed_within_budget(
-      mesh, file_name, limits,
+      mesh, file_name, limits, method,
       "decomposing " + file_name + " (" + std::to_string(mesh.triangles.size()) + " triangles)");
   record.decomposition_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   store(k, pieces);

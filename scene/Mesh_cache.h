@@ -54,7 +54,7 @@ public:
   // the pieces come from the cache, before_decomposing runs first (the
   // checks an entry stands for: mesh_solid's crossing test).
   Solid decomposed(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits,
-                   const std::string& options_key, Mesh_record& record,
+                   Mesh_decomposition method, Mesh_record& record,
                    const std::function<void()>& before_decomposing = [] {}) const;
 
 private:

@@ -70,7 +70,7 @@ using namespace json_field;
 
 Mesh_options read_mesh_options(const Json_value& solid, const std::string& path)
 {
-  expect_keys(solid, {"mesh", "scale", "units", "repair", "shells", "as", "max_pieces"}, path);
+  expect_keys(solid, {"mesh", "scale", "units", "repair", "shells", "as", "max_pieces", "decomposition"}, path);
   Mesh_options o;
   if (const Json_value* s = solid.find("scale")) {
     o.scale = read_number(*s, dot(path, "scale"));
@@ -80,8 +80,9 @@ Mesh_options read_mesh_options(const Json_value& solid, const std::string& path)
   if (const Json_value* r = solid.find("repair")) read_repairs(*r, dot(path, "repair"), o);
   if (const Json_value* m = solid.find("max_pieces")) o.max_pieces = max_pieces(*m, dot(path, "max_pieces"));
   if (second_word(solid, "shells", "odd", "union", path)) o.rule = Mesh_options::Solid_rule::Union_of_shells;
+  if (second_word(solid, "decomposition", "bsp", "nef", path)) o.decomposition = Mesh_decomposition::nef;
   if (second_word(solid, "as", "solid", "hull", path)) {
-    for (const char* key : {"repair", "shells"})
+    for (const char* key : {"repair", "shells", "decomposition"})
       if (solid.find(key))
         throw Input_error(dot(path, key), "has no effect with \"as\": \"hull\" (the hull is made from the vertices alone)");
     o.rule = Mesh_options::Solid_rule::Hull;

@@ -5,6 +5,7 @@
 #define CLASH4D_SCENE_MESH_OPTIONS_H
 
 #include "numbers/Rational.h"
+#include "scene/Mesh_check.h"
 #include "scene/Mesh_reader.h"
 #include <cstddef>
 #include <string>
@@ -23,6 +24,7 @@ struct Mesh_options {
   bool orient = false;            // each shell's facets turned to agree, and the shell outward
   bool split_pinched = false;     // a pinched vertex split into one vertex per fan of facets
   Solid_rule rule = Solid_rule::Odd_shells;
+  Mesh_decomposition decomposition = Mesh_decomposition::bsp;   // "decomposition": "bsp" or "nef"
   // "max_pieces": the most convex pieces the solid may have (exit 3 past
   // it). It bounds the work of a run, not the solid: a mesh read within
   // it has the same pieces under any larger bound.
@@ -34,7 +36,8 @@ struct Mesh_options {
   {
     return to_string(scale) + (triangulate ? " triangulate" : "") + (drop_zero_area ? " drop-zero-area" : "") + (orient ? " orient" : "") +
            (split_pinched ? " split-pinched" : "") +
-           " rule " + std::to_string(static_cast<int>(rule)) + " max_pieces " + std::to_string(max_pieces);
+           " rule " + std::to_string(static_cast<int>(rule)) + " max_pieces " + std::to_string(max_pieces) +
+           " decomposition " + decomposition_name(decomposition);
   }
 };
 

@@ -19,6 +19,7 @@ struct Mesh_record {
   std::string scale;                   // the exact factor applied ("1" when none)
   std::string solid_rule;              // "odd shells", "union of shells" or "hull of the vertices"
   std::vector<std::string> repairs;    // one line per repair that changed something
+  std::string decomposition;           // "bsp" or "nef" ("": none, a convex mesh or a hull)
   double decomposition_seconds = 0;    // the convex decomposition (0: convex, or cached)
   std::string cache;                   // "hit", "miss", "off" or "" (no decomposition)
 };

@@ -1,4 +1,5 @@
 #include "scene/Mesh_solid.h"
+#include "scene/Bsp_pieces.h"
 #include "scene/Hull_solid.h"
 #include "scene/Input_error.h"
 #include "scene/Lazy_point.h"
@@ -118,31 +119,40 @@ Nef shell_nef(const Checked_mesh& mesh, const Triangles& triangles)
 
 } // namespace
 
-Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits, Mesh_record* record)
+Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits, Mesh_record* record,
+                 Mesh_decomposition method)
 {
   if (record) record->triangles = static_cast<int>(mesh.triangles.size());
   if (record) record->pieces = 1;
+  if (record) record->decomposition.clear();
   auto crossings = [&] { check_no_crossing(mesh, file_name); };
   if (mesh.convex || !record) {   // no cache
     crossings();
-    return mesh.convex ? hull_of(mesh.vertices, file_name) : decomposed_solid(mesh, file_name, limits);
+    return mesh.convex ? hull_of(mesh.vertices, file_name) : decomposed_solid(mesh, file_name, limits, method);
   }
-  // The pieces depend on the checked mesh alone (the scale and the repairs
-  // are in it already), so no option is part of the key. An entry exists
-  // only for a mesh that passed the crossing test, so a hit skips it.
-  Solid s = Mesh_cache::from_environment().decomposed(mesh, file_name, limits, "", *record, crossings);
+  // The pieces depend on the checked mesh (the scale and the repairs are
+  // in it already) and the method alone, so no other option is part of
+  // the key. An entry exists only for a mesh that passed the crossing
+  // test, so a hit skips it.
+  record->decomposition = decomposition_name(method);
+  Solid s = Mesh_cache::from_environment().decomposed(mesh, file_name, limits, method, *record, crossings);
   record->pieces = static_cast<int>(s.children.size());
   return s;
 }
 
-Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits)
+namespace {
+
+// The convex pieces of CGAL's Nef polyhedron of the mesh, each as its
+// vertices (pieces_limit past limits.pieces).
+std::vector<std::vector<Rational3>> nef_pieces(const Checked_mesh& mesh, const std::string& file_name,
+                                              const Mesh_limits& limits)
 {
   // Each shell (connected surface) encloses a volume, whatever its
   // orientation: CGAL's Nef from a polygon mesh reads it so. The shells do
   // not cross (check_mesh; they may touch at the points of split pinched
   // vertices), so they nest, and the solid is the points inside
   // an odd number of them: the symmetric difference of their volumes. The
-  // volume test below then holds it to the facets' orientation.
+  // volume test of decomposed_solid then holds it to the facets' orientation.
   Nef nef;
   bool first = true;
   for (const auto& [r, triangles] : shells_by_vertices(mesh)) {
@@ -152,22 +162,36 @@ Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, c
   }
   nef.regularization();
   CGAL::convex_decomposition_3(nef);
-  Solid u;
-  u.kind = Solid::Kind::Union;
-  Rational total(0);
+  std::vector<std::vector<Rational3>> pieces;
   for (auto volume = ++nef.volumes_begin(); volume != nef.volumes_end(); ++volume) {
     if (!volume->mark()) continue;
-    if (u.children.size() >= limits.pieces)
-      throw Input_error(file_name, "the decomposition has more than the limit of " + pieces_limit(limits),
-                        CLASH4D_EXIT_LIMIT);
+    if (pieces.size() > limits.pieces) break;   // decomposed_solid refuses
     Piece piece;
     nef.convert_inner_shell_to_polyhedron(volume->shells_begin(), piece);
     // A piece is convex: the hull of its vertices is the piece itself.
     std::vector<Rational3> points;
     for (auto p = piece.vertices_begin(); p != piece.vertices_end(); ++p)
       points.push_back(rational_point(p->point()));
-    u.children.push_back(hull_of(points, file_name, &total));
+    pieces.push_back(std::move(points));
   }
+  return pieces;
+}
+
+} // namespace
+
+Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits,
+                       Mesh_decomposition method)
+{
+  std::vector<std::vector<Rational3>> pieces = method == Mesh_decomposition::bsp
+                                                   ? bsp_pieces(mesh, file_name, limits.pieces)
+                                                   : nef_pieces(mesh, file_name, limits);
+  if (pieces.size() > limits.pieces)
+    throw Input_error(file_name, "the decomposition has more than the limit of " + pieces_limit(limits),
+                      CLASH4D_EXIT_LIMIT);
+  Solid u;
+  u.kind = Solid::Kind::Union;
+  Rational total(0);
+  for (const auto& corners : pieces) u.children.push_back(hull_of(corners, file_name, &total));
   // The pieces fill the solid exactly once: their volumes add up to the
   // facets' signed volume (shells nested and oriented as a solid's are).
   if (total / Rational(6) != mesh.volume)
@@ -191,13 +215,14 @@ namespace {
 int piece_count(const Solid& s) { return s.kind == Solid::Kind::Union ? static_cast<int>(s.children.size()) : 1; }
 
 // The solid of one checked surface, its pieces added to u.
-void add_pieces(const Repaired_mesh& m, const std::string& name, const Mesh_limits& limits, Mesh_record& record,
-                Solid& u)
+void add_pieces(const Repaired_mesh& m, const std::string& name, const Mesh_limits& limits,
+                Mesh_decomposition method, Mesh_record& record, Solid& u)
 {
   Checked_mesh checked = check_mesh_surface(m.mesh, name, m.file_facet, Equal_points::keep);
   record.triangles += static_cast<int>(checked.triangles.size());
   Mesh_record shell;
-  Solid s = mesh_solid(checked, name, limits, &shell);
+  Solid s = mesh_solid(checked, name, limits, &shell, method);
+  record.decomposition = shell.decomposition.empty() ? record.decomposition : shell.decomposition;
   record.decomposition_seconds += shell.decomposition_seconds;
   // The union's status: a miss when any shell was decomposed, else off, else a hit.
   auto rank = [](const std::string& c) { return c == "miss" ? 3 : c == "off" ? 2 : c == "hit" ? 1 : 0; };
@@ -213,14 +238,14 @@ void add_pieces(const Repaired_mesh& m, const std::string& name, const Mesh_limi
 // "shells": "union": each shell a solid by itself (checked alone, so shells
 // may cross one another), the solid their union.
 Solid union_of_shells(const Repaired_mesh& m, const std::string& file_name, const Mesh_limits& limits,
-                      Mesh_record& record)
+                      Mesh_decomposition method, Mesh_record& record)
 {
   std::vector<Repaired_mesh> shells = shells_of(m);
   Solid u;
   u.kind = Solid::Kind::Union;
   for (std::size_t k = 0; k < shells.size(); ++k)
     add_pieces(shells[k], file_name + ": shell " + std::to_string(k) + " (with facet " +
-                              std::to_string(shells[k].file_facet.front()) + ")", limits, record, u);
+                              std::to_string(shells[k].file_facet.front()) + ")", limits, method, record, u);
   return u.children.size() == 1 ? u.children.front() : u;
 }
 
@@ -247,13 +272,13 @@ Solid repaired_solid(const Mesh& file, const std::string& file_name, const Mesh_
       break;
     case Mesh_options::Solid_rule::Union_of_shells:
       record.solid_rule = "union of shells";
-      s = union_of_shells(m, file_name, limits, record);
+      s = union_of_shells(m, file_name, limits, options.decomposition, record);
       break;
     case Mesh_options::Solid_rule::Odd_shells:
       record.solid_rule = "odd shells";
       Checked_mesh checked = check_mesh_surface(m.mesh, file_name, m.file_facet, Equal_points::keep);
       record.triangles = static_cast<int>(checked.triangles.size());
-      s = mesh_solid(checked, file_name, limits, &record);
+      s = mesh_solid(checked, file_name, limits, &record, options.decomposition);
       break;
   }
   record.pieces = piece_count(s);

@@ -21,12 +21,14 @@ namespace clash4d {
 // (scene/Mesh_cache.h) and the record gets triangles, pieces and what the
 // decomposition cost; without one, it is decomposed every time.
 Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits = Mesh_limits(),
-                 Mesh_record* record = nullptr);
+                 Mesh_record* record = nullptr, Mesh_decomposition method = Mesh_decomposition::bsp);
 
-// A non-convex mesh that passed check_mesh as the union of CGAL's convex
-// pieces, each the hull of its vertices (what mesh_solid does for a mesh
-// that is not convex).
-Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits = Mesh_limits());
+// A non-convex mesh that passed check_mesh as the union of its convex
+// pieces by `method`, each the hull of its vertices (what mesh_solid does
+// for a mesh that is not convex). The pieces' volumes are held to the
+// facets' signed volume: exit 2 where they differ.
+Solid decomposed_solid(const Checked_mesh& mesh, const std::string& file_name, const Mesh_limits& limits = Mesh_limits(),
+                       Mesh_decomposition method = Mesh_decomposition::bsp);
 
 // read_mesh_file, check_mesh and mesh_solid in turn (the record, when
 // given, also gets the file's facets).
