@@ -27,7 +27,7 @@ struct Plane {
   mpz_class a, b, c, d;   // a x + b y + c z + d w; > 0 outside a facet's solid
 };
 
-int sign_of(const mpz_class& v) { return sgn(v); }
+mpz_class value(const Plane& h, const Point& p) { return h.a * p.x + h.b * p.y + h.c * p.z + h.d * p.w; }
 
 // The side of p on plane h: sign(a x + b y + c z + d w) (w > 0). Decided on
 // doubles when the error bound tells (each integer read with relative error
@@ -37,10 +37,10 @@ int side(const Plane& h, const Point& p)
 {
   double t[4] = {h.a.get_d() * p.x.get_d(), h.b.get_d() * p.y.get_d(), h.c.get_d() * p.z.get_d(),
                  h.d.get_d() * p.w.get_d()};
-  double value = t[0] + t[1] + t[2] + t[3];
+  double guess = t[0] + t[1] + t[2] + t[3];
   double bound = 1e-14 * (std::abs(t[0]) + std::abs(t[1]) + std::abs(t[2]) + std::abs(t[3]));
-  if (std::isfinite(bound) && std::abs(value) > bound) return value > 0 ? 1 : -1;
-  return sign_of(h.a * p.x + h.b * p.y + h.c * p.z + h.d * p.w);
+  if (std::isfinite(bound) && std::abs(guess) > bound) return guess > 0 ? 1 : -1;
+  return sgn(value(h, p));
 }
 
 Point homogeneous(mpz_class x, mpz_class y, mpz_class z, mpz_class w)
@@ -71,8 +71,6 @@ Point cut_point(const Point& p, const Point& q, const mpz_class& sp, const mpz_c
 {
   return homogeneous(sq * p.x - sp * q.x, sq * p.y - sp * q.y, sq * p.z - sp * q.z, sq - sp);
 }
-
-mpz_class value(const Plane& h, const Point& p) { return h.a * p.x + h.b * p.y + h.c * p.z + h.d * p.w; }
 
 // A point and its double approximation: the approximation only ranks
 // candidate planes (a heuristic); every sign that decides is exact.
@@ -221,11 +219,15 @@ private:
 
   // The node's plane: the best guessed of a few fragments' planes, chosen
   // by a fixed rule so a mesh always gets the same pieces.
-  int node_plane(const std::vector<Fragment>& fragments) const
+  struct Ranked {
+    int plane;
+    long cost;   // guessed_cost
+  };
+  Ranked node_plane(const std::vector<Fragment>& fragments) const
   {
     constexpr std::size_t candidates = 6;
     std::size_t n = fragments.size();
-    if (n <= 2) return fragments.front().triangle;
+    if (n <= 2) return {fragments.front().triangle, 0};
     int best = -1;
     long best_cost = 0;
     std::uint64_t state = 0x9e3779b97f4a7c15ull ^ n;
@@ -235,7 +237,7 @@ private:
       long cost = guessed_cost(h, fragments);
       if (best < 0 || cost < best_cost) best = h, best_cost = cost;
     }
-    return best;
+    return {best, best_cost};
   }
 
   // The point where fragment f's edge i (its ends on both sides of h)
@@ -282,9 +284,9 @@ private:
     }
   }
 
-  // The cell cut by h into front and back; false when h leaves it whole
-  // (then `whole` is the side it lies on).
-  bool cut_cell(Cell cell, int h, Cell& front, Cell& back, int& whole) const
+  // The cell cut by h into front and back; when h leaves it whole, all of
+  // it goes to the side it lies on and the other stays empty.
+  void cut_cell(Cell cell, int h, Cell& front, Cell& back) const
   {
     std::vector<int> s;
     bool plus = false, minus = false;
@@ -294,9 +296,8 @@ private:
       minus = minus || s.back() < 0;
     }
     if (!(plus && minus)) {
-      whole = plus ? 1 : -1;
       (plus ? front : back) = std::move(cell);
-      return false;
+      return;
     }
     // A new corner on each edge that h crosses: two corners on two common
     // planes of the cell are the ends of an edge (both planes support the
@@ -331,7 +332,6 @@ private:
       if (s[i] <= 0) back.push_back(std::move(cell[i]));
       else front.push_back(std::move(cell[i]));
     }
-    return true;
   }
 
   // One node: its plane, its fragments sorted to the sides, each side a
@@ -362,11 +362,11 @@ private:
   // deep as the cap, and sorting there costs its square). Kept only when it
   // leaves fragments on both sides and none on it, so every leaf still
   // comes from a facet's plane.
-  bool axis_split(const std::vector<Fragment>& fragments, std::vector<Fragment>& front, std::vector<Fragment>& back)
+  bool axis_split(const std::vector<Fragment>& fragments, const Ranked& facet, std::vector<Fragment>& front,
+                  std::vector<Fragment>& back)
   {
     constexpr std::size_t many = 256;
-    if (fragments.size() < many || guessed_cost(node_plane(fragments), fragments) < static_cast<long>(fragments.size() / 2))
-      return false;
+    if (fragments.size() < many || facet.cost < static_cast<long>(fragments.size() / 2)) return false;
     std::array<std::vector<double>, 3> middles;
     for (const Fragment& f : fragments)
       for (int i = 0; i < 3; ++i) {
@@ -401,13 +401,13 @@ private:
     std::vector<Fragment> front, back;
     bool facing_out = false, facing_in = false;
     int h = static_cast<int>(planes_.size());
-    if (!axis_split(node.fragments, front, back)) {
-      h = node_plane(node.fragments);
+    Ranked facet = node_plane(node.fragments);
+    if (!axis_split(node.fragments, facet, front, back)) {
+      h = facet.plane;
       sort_fragments(node.fragments, h, front, back, facing_out, facing_in);
     }
     Node_work sides[2];
-    int whole = 0;
-    cut_cell(std::move(node.cell), h, sides[0].cell, sides[1].cell, whole);
+    cut_cell(std::move(node.cell), h, sides[0].cell, sides[1].cell);
     sides[0].fragments = std::move(front);
     sides[1].fragments = std::move(back);
     for (int k = 0; k < 2; ++k) {

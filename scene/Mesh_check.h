@@ -10,9 +10,6 @@
 
 namespace clash4d {
 
-// A mesh that bounds a solid: its distinct points (equal points of the
-// file merged, unused ones dropped) and its facets triangulated (fans of
-// the strictly convex facets), outward by the right-hand rule.
 // How a non-convex mesh is cut into convex pieces (docs/meshes.md, "The
 // solid"): the inside cells of a partition by its facets' planes
 // (scene/Bsp_pieces.h), or CGAL's Nef polyhedron convex_decomposition_3.
@@ -20,6 +17,9 @@ enum class Mesh_decomposition { bsp, nef };
 
 inline const char* decomposition_name(Mesh_decomposition d) { return d == Mesh_decomposition::bsp ? "bsp" : "nef"; }
 
+// A mesh that bounds a solid: its distinct points (equal points of the
+// file merged, unused ones dropped) and its facets triangulated (fans of
+// the strictly convex facets), outward by the right-hand rule.
 struct Checked_mesh {
   std::vector<std::array<Rational, 3>> vertices;
   std::vector<std::array<int, 3>> triangles;

@@ -143,7 +143,8 @@ Solid mesh_solid(const Checked_mesh& mesh, const std::string& file_name, const M
 namespace {
 
 // The convex pieces of CGAL's Nef polyhedron of the mesh, each as its
-// vertices (pieces_limit past limits.pieces).
+// vertices; past limits.pieces it stops, with more than that (the caller
+// refuses).
 std::vector<std::vector<Rational3>> nef_pieces(const Checked_mesh& mesh, const std::string& file_name,
                                               const Mesh_limits& limits)
 {
@@ -222,7 +223,7 @@ void add_pieces(const Repaired_mesh& m, const std::string& name, const Mesh_limi
   record.triangles += static_cast<int>(checked.triangles.size());
   Mesh_record shell;
   Solid s = mesh_solid(checked, name, limits, &shell, method);
-  record.decomposition = shell.decomposition.empty() ? record.decomposition : shell.decomposition;
+  if (!shell.decomposition.empty()) record.decomposition = shell.decomposition;
   record.decomposition_seconds += shell.decomposition_seconds;
   // The union's status: a miss when any shell was decomposed, else off, else a hit.
   auto rank = [](const std::string& c) { return c == "miss" ? 3 : c == "off" ? 2 : c == "hit" ? 1 : 0; };
